@@ -1,0 +1,120 @@
+// A loaded, validated layout (../shared/spec/layout-format.md, version 1).
+//
+// Plain data in double precision, in the file's own (virtual) coordinates:
+// metres, right-handed, +Y up. Everything here has already been checked by the
+// loader: ids are unique, portals are paired, vectors are unit length, colours
+// are in 0..1, and glTF paths are resolved against the layout file.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "math/portal.hpp"
+
+namespace impossible::layout {
+
+// Face order used everywhere (room colours, meshes, tracer hits).
+enum class Face : int { Floor = 0, Ceiling, NegX, PosX, NegZ, PosZ };
+inline constexpr int kFaceCount = 6;
+inline constexpr std::array<const char*, kFaceCount> kFaceNames = {"floor", "ceiling", "-x",
+                                                                   "+x",    "-z",      "+z"};
+
+struct BoxProp {
+    glm::dvec3 min{0.0};
+    glm::dvec3 max{0.0};
+    glm::dvec3 color{0.8};  // defaults to the room's `color`
+};
+
+// A triangle of a glTF model, in the model's own coordinates (before the
+// prop's scale, yaw and position).
+struct ModelTriangle {
+    std::array<glm::dvec3, 3> position;
+    std::array<glm::dvec3, 3> normal;  // unit
+    glm::dvec3 color{0.8};             // the material's base colour factor (rgb)
+};
+
+struct GltfProp {
+    std::string path;           // as written in the file
+    std::string resolved_path;  // resolved against the layout file's directory
+    glm::dvec3 position{0.0};
+    double yaw_deg = 0.0;
+    double scale = 1.0;
+    std::vector<ModelTriangle> triangles;  // read by the loader
+};
+
+// The prop's model → layout transform: scale, then yaw about +Y, then move.
+glm::dvec3 place_model_point(const GltfProp& prop, const glm::dvec3& p);
+glm::dvec3 place_model_normal(const GltfProp& prop, const glm::dvec3& n);
+
+using Prop = std::variant<BoxProp, GltfProp>;
+
+struct Room {
+    std::string id;
+    glm::dvec3 min{0.0};
+    glm::dvec3 max{0.0};
+    std::array<glm::dvec3, kFaceCount> face_color{};  // `color` with `face_colors` applied
+    double checker = 0.0;                             // 0: plain
+    std::vector<Prop> props;
+};
+
+struct Portal {
+    std::string id;
+    int room = -1;          // index into Layout::rooms
+    math::PortalRect rect;  // normal unit into the room; up made orthogonal
+    int target = -1;        // index into Layout::portals
+};
+
+struct PlayArea {
+    glm::dvec2 min{0.0};  // [x, z]
+    glm::dvec2 max{0.0};
+};
+
+struct Start {
+    int room = -1;
+    glm::dvec3 position{0.0};
+    double yaw_deg = 0.0;
+};
+
+struct Layout {
+    std::string source;  // file path, or a name such as "<default>"
+    std::string name;
+    std::optional<PlayArea> play_area;
+    Start start;
+    std::vector<Room> rooms;
+    std::vector<Portal> portals;
+};
+
+// One problem found in a layout. line/column are 1-based; 0 where unknown.
+struct Diagnostic {
+    std::string file;
+    int line = 0;
+    int column = 0;
+    std::string message;
+
+    // "FILE:LINE:COLUMN: message", or "FILE: message" without a position.
+    std::string str() const;
+};
+
+struct LoadResult {
+    std::optional<Layout> layout;         // set exactly when errors is empty
+    std::vector<Diagnostic> errors;       // every problem found, in file order
+};
+
+// Reads and validates a layout file. Never throws for bad input.
+LoadResult load_layout_file(const std::string& path);
+
+// Parses layout text; `source` names it in diagnostics and `base_dir`
+// resolves relative glTF paths (glTF files must exist and parse).
+LoadResult load_layout_text(const std::string& text, const std::string& source,
+                            const std::string& base_dir);
+
+// Finds a room by id; -1 if absent.
+int find_room(const Layout& layout, const std::string& id);
+
+}  // namespace impossible::layout

@@ -1,0 +1,47 @@
+// Head pose → eyes → view matrices (layout-format.md, "Head, eyes and walking").
+//
+// Orientation: yaw about +Y, then pitch about the head's right axis, then roll
+// about its forward axis: R = R_y(yaw) · R_x(pitch) · R_z(-roll). Positive yaw
+// turns left, positive pitch looks up, positive roll is right-handed about the
+// forward axis (-Z), which lowers the right eye.
+#pragma once
+
+#include <array>
+
+#include "math/conventions.hpp"
+
+namespace impossible::math {
+
+struct HeadPose {
+    dvec3 position{0.0};  // head centre
+    double yaw_deg = 0.0;
+    double pitch_deg = 0.0;
+    double roll_deg = 0.0;
+};
+
+// A camera: position and orientation whose columns are right, up, back
+// (forward = -column 2).
+struct Eye {
+    dvec3 position{0.0};
+    dmat3 rotation{1.0};
+};
+
+dmat3 head_rotation(const HeadPose& pose);
+
+// The left eye first, at head - ipd/2 · right; the right at head + ipd/2 · right.
+std::array<Eye, 2> eyes_of(const HeadPose& pose, double ipd);
+
+// World → eye space (inverse of the eye's rigid transform).
+dmat4 view_matrix(const Eye& eye);
+
+// Eye → world (the eye's rigid transform).
+dmat4 eye_to_world(const Eye& eye);
+
+// The same eye seen through a rigid transform M (e.g. a portal's transfer
+// matrix): position and axes mapped by M.
+Eye transform_eye(const dmat4& m, const Eye& eye);
+
+// Forward view direction of a rotation (-column 2).
+dvec3 forward_of(const dmat3& rotation);
+
+}  // namespace impossible::math

@@ -1,0 +1,50 @@
+// The one shading model shared by the rasteriser's fragment shader and the
+// reference tracer, so that both produce the same colour for the same surface:
+//
+//   colour = base * (kAmbient + kDiffuse * max(0, dot(normal, kLightDir)))
+//            * (checker dark square ? kCheckerDark : 1)
+//
+// The checker pattern uses the two world coordinates that lie in the face's
+// plane (the axes other than the normal's dominant axis), so a face's constant
+// coordinate never flips the parity by rounding: square (a, b) is dark when
+// floor(a / side) + floor(b / side) is odd.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+namespace impossible::scene {
+
+// Direction towards the light (unit): from above, slightly from +X and +Z.
+inline const glm::dvec3 kLightDir = glm::normalize(glm::dvec3(0.3, 0.9, 0.4));
+inline constexpr double kAmbient = 0.35;
+inline constexpr double kDiffuse = 0.65;
+inline constexpr double kCheckerDark = 0.75;
+
+// What a pixel shows when the recursion limit is reached (id 255).
+inline const glm::dvec3 kPortalFillColor{0.24, 0.22, 0.30};
+// What a pixel shows where no surface is hit (id 0).
+inline const glm::dvec3 kBackgroundColor{0.0, 0.0, 0.0};
+
+inline bool checker_dark(const glm::dvec3& position, const glm::dvec3& normal, double side) {
+    if (side <= 0.0) return false;
+    const glm::dvec3 a = glm::abs(normal);
+    double u = position.y, v = position.z;              // normal mostly along x
+    if (a.y >= a.x && a.y >= a.z) { u = position.x; v = position.z; }
+    else if (a.z >= a.x && a.z >= a.y) { u = position.x; v = position.y; }
+    const long long parity = static_cast<long long>(std::floor(u / side)) +
+                             static_cast<long long>(std::floor(v / side));
+    return (parity & 1) != 0;
+}
+
+inline glm::dvec3 shade(const glm::dvec3& base, const glm::dvec3& normal,
+                        const glm::dvec3& position, double checker) {
+    const double lambert = std::max(0.0, glm::dot(normal, kLightDir));
+    const double dark = checker_dark(position, normal, checker) ? kCheckerDark : 1.0;
+    return base * ((kAmbient + kDiffuse * lambert) * dark);
+}
+
+}  // namespace impossible::scene
