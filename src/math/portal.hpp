@@ -24,7 +24,8 @@ dvec3 portal_right(const PortalRect& p);  // u × n
 dmat4 portal_frame(const PortalRect& p);  // T_P
 dmat4 portal_frame_inverse(const PortalRect& p);
 
-// M_AB = T_B · R_y(180°) · T_A⁻¹.
+// M_AB = T_B · R_y(180°) · T_A⁻¹. Rigid. Exactly the identity for two
+// coincident portals with opposite normals and the same up.
 dmat4 transfer_matrix(const PortalRect& a, const PortalRect& b);
 
 double signed_distance(const PortalRect& p, const dvec3& point);

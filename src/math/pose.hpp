@@ -4,9 +4,15 @@
 // about its forward axis: R = R_y(yaw) · R_x(pitch) · R_z(-roll). Positive yaw
 // turns left, positive pitch looks up, positive roll is right-handed about the
 // forward axis (-Z), which lowers the right eye.
+//
+// Angles are degrees. Rotations are built from sin_cos_deg, which is exact at
+// multiples of 90° (yaw 90 looks exactly along -X), so axis-aligned poses
+// carry no rounding noise.
 #pragma once
 
 #include <array>
+
+#include <glm/vec2.hpp>
 
 #include "math/conventions.hpp"
 
@@ -26,6 +32,17 @@ struct Eye {
     dmat3 rotation{1.0};
 };
 
+// (sin, cos) of an angle in degrees: reduced to [-180°, 180°] first, exact at
+// multiples of 90°.
+glm::dvec2 sin_cos_deg(double deg);
+
+// Right-handed rotations about the axes (positive angles counter-clockwise
+// seen from the positive axis). rotation_y_deg(90) maps -Z onto -X.
+dmat3 rotation_x_deg(double deg);
+dmat3 rotation_y_deg(double deg);
+dmat3 rotation_z_deg(double deg);
+
+// R = R_y(yaw) · R_x(pitch) · R_z(-roll); columns right, up, back.
 dmat3 head_rotation(const HeadPose& pose);
 
 // The left eye first, at head - ipd/2 · right; the right at head + ipd/2 · right.

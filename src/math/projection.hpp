@@ -1,5 +1,11 @@
 // Perspective projections and pixel rays (cli.md: "Pixel (i, j) of an eye
 // image, row 0 at the top, is the ray through the pixel's centre").
+//
+// Eye space as in conventions.hpp: looking along -Z, +Y up, +X right.
+// Matrices map eye space to clip space (p_clip = P · p_eye, w_clip = -z_eye).
+// Pixel (i, j): i is the column (0 at the left), j the row (0 at the top).
+// The rays use aspect = width / height of the image itself (cli.md); a
+// renderer builds its Frustum with the same aspect so both agree.
 #pragma once
 
 #include "math/conventions.hpp"
@@ -21,6 +27,12 @@ dmat4 perspective_standard(const Frustum& f, double far);
 
 // Direction in eye space (not normalised; z = -1) of the ray through the
 // centre of pixel (i, j) of a width × height eye image, row 0 at the top.
+// Uses width / height as the aspect (f.aspect is not read).
 dvec3 pixel_ray_eye(const Frustum& f, int width, int height, int i, int j);
+
+// The same for any point of the image plane in pixel units: x from 0 (left
+// edge) to width, y from 0 (top edge) to height. The corner (0, 0) gives
+// (-tan(fov/2)·aspect, +tan(fov/2), -1).
+dvec3 image_point_ray_eye(const Frustum& f, int width, int height, double x, double y);
 
 }  // namespace impossible::math
