@@ -68,6 +68,10 @@ struct Portal {
     int room = -1;          // index into Layout::rooms
     math::PortalRect rect;  // normal unit into the room; up made orthogonal
     int target = -1;        // index into Layout::portals
+    // The face of its room in which the rectangle cuts a hole (a Face as int),
+    // or -1 for a portal standing free in the room (layout-format.md, "The
+    // portal box"). The hole has exactly the rectangle's size.
+    int hole_face = -1;
 };
 
 struct PlayArea {
@@ -104,6 +108,7 @@ struct Diagnostic {
 struct LoadResult {
     std::optional<Layout> layout;         // set exactly when errors is empty
     std::vector<Diagnostic> errors;       // every problem found, in file order
+    std::vector<Diagnostic> warnings;     // legal but suspicious, in file order
 };
 
 // Reads and validates a layout file. Never throws for bad input.
@@ -116,5 +121,23 @@ LoadResult load_layout_text(const std::string& text, const std::string& source,
 
 // Finds a room by id; -1 if absent.
 int find_room(const Layout& layout, const std::string& id);
+
+// What `impossible validate` reports about a valid layout (cli.md).
+struct Summary {
+    int rooms = 0;
+    int portals = 0;
+    int pairs = 0;  // linked portal pairs (portals / 2)
+    // Ids of the rooms whose floor rectangle [x, z] is not inside the play
+    // area, in file order; empty without a play area.
+    std::vector<std::string> rooms_outside_play_area;
+    double floor_area = 0.0;                // summed floor areas of the rooms, m²
+    std::optional<double> play_area_area;   // m², absent without a play area
+    std::optional<double> expansion_ratio;  // floor_area / play_area_area
+};
+
+Summary summarize(const Layout& layout);
+
+// A few lines of "key: value" text for the validate command.
+std::string summary_text(const Layout& layout, const Summary& summary);
 
 }  // namespace impossible::layout

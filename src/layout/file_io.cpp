@@ -1,0 +1,93 @@
+#include "layout/file_io.hpp"
+
+#include "layout/text_util.hpp"
+
+#include <cerrno>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+
+namespace impossible::layout::detail {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string too_large(std::uintmax_t size, std::size_t max_bytes, bool exact) {
+    return "is too large (" + std::string(exact ? "" : "more than ") + format_bytes(size) +
+           "; the limit is " + format_bytes(max_bytes) + ")";
+}
+
+}  // namespace
+
+bool check_readable_file(const std::string& path, std::size_t max_bytes, bool regular_only,
+                         std::string& error) {
+    if (path.empty()) {
+        error = "has an empty path";
+        return false;
+    }
+    if (path.find('\0') != std::string::npos) {
+        error = "has a NUL character in its path";
+        return false;
+    }
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (ec || !fs::exists(status)) {
+        error = ec && ec != std::errc::no_such_file_or_directory
+                    ? "cannot be opened: " + ec.message()
+                    : "does not exist";
+        return false;
+    }
+    if (fs::is_directory(status)) {
+        error = "is a directory";
+        return false;
+    }
+    const bool regular = fs::is_regular_file(status);
+    if (regular_only && !regular) {
+        error = "is not a regular file";
+        return false;
+    }
+    if (regular) {
+        const std::uintmax_t size = fs::file_size(path, ec);
+        if (!ec && size > max_bytes) {
+            error = too_large(size, max_bytes, true);
+            return false;
+        }
+    }
+    return true;
+}
+
+bool read_file_bytes(const std::string& path, std::size_t max_bytes, bool regular_only,
+                     std::vector<unsigned char>& out, std::string& error) {
+    out.clear();
+    if (!check_readable_file(path, max_bytes, regular_only, error)) return false;
+    errno = 0;
+    const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
+                                                                &std::fclose);
+    if (!file) {
+        error = std::string("cannot be opened: ") + (errno ? std::strerror(errno) : "unknown error");
+        return false;
+    }
+    // Read in chunks up to one byte past the limit (sizes of special files lie).
+    unsigned char chunk[1 << 16];
+    for (;;) {
+        const std::size_t n = std::fread(chunk, 1, sizeof chunk, file.get());
+        out.insert(out.end(), chunk, chunk + n);
+        if (out.size() > max_bytes) {
+            error = too_large(max_bytes, max_bytes, false);
+            out.clear();
+            return false;
+        }
+        if (n < sizeof chunk) break;
+    }
+    if (std::ferror(file.get())) {
+        error = std::string("cannot be read: ") + (errno ? std::strerror(errno) : "I/O error");
+        out.clear();
+        return false;
+    }
+    return true;
+}
+
+}  // namespace impossible::layout::detail

@@ -1,0 +1,387 @@
+#include "layout/gltf_model.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <new>
+
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
+#include <tiny_gltf.h>
+
+#include "layout/file_io.hpp"
+#include "layout/gltf_accessor.hpp"
+#include "layout/limits.hpp"
+#include "layout/text_util.hpp"
+
+namespace impossible::layout::detail {
+
+namespace {
+
+// --- tinygltf callbacks: no shell expansion of paths, no image decoding, no
+// writing, and file reads bounded like ours.
+bool fs_file_exists(const std::string& path, void*) {
+    std::error_code ec;
+    return std::filesystem::is_regular_file(path, ec);
+}
+std::string fs_expand_path(const std::string& path, void*) { return path; }
+bool fs_read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                        void*) {
+    std::string reason;
+    if (read_file_bytes(path, limits::kMaxModelBytes, true, *out, reason)) return true;
+    if (err != nullptr) *err += "file " + quote(path) + " " + reason + "\n";
+    return false;
+}
+bool fs_write_whole_file(std::string* err, const std::string&, const std::vector<unsigned char>&,
+                         void*) {
+    if (err != nullptr) *err += "writing is disabled\n";
+    return false;
+}
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
+                const unsigned char*, int, void*) {
+    return true;  // textures are not used: only base colour factors
+}
+
+std::string first_line(const std::string& text) {
+    std::string line = text.substr(0, text.find('\n'));
+    while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.pop_back();
+    if (line.size() > 200) line = line.substr(0, 200) + "...";
+    return printable(line.empty() ? "unknown reason" : line);
+}
+
+bool all_finite(const std::vector<double>& v) {
+    return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
+}
+
+// The node's local transform: its matrix, or translation · rotation · scale.
+bool local_transform(const tinygltf::Node& node, glm::dmat4& out, std::string& error) {
+    out = glm::dmat4(1.0);
+    if (!all_finite(node.matrix) || !all_finite(node.translation) || !all_finite(node.rotation) ||
+        !all_finite(node.scale)) {
+        error = "has a node with a non-finite transform";
+        return false;
+    }
+    if (!node.matrix.empty()) {
+        if (node.matrix.size() != 16) {
+            error = "has a node matrix without 16 numbers";
+            return false;
+        }
+        for (int i = 0; i < 16; ++i) out[i / 4][i % 4] = node.matrix[static_cast<std::size_t>(i)];
+        return true;
+    }
+    if ((!node.translation.empty() && node.translation.size() != 3) ||
+        (!node.rotation.empty() && node.rotation.size() != 4) ||
+        (!node.scale.empty() && node.scale.size() != 3)) {
+        error = "has a node translation, rotation or scale of the wrong size";
+        return false;
+    }
+    glm::dmat4 t(1.0), r(1.0), s(1.0);
+    if (!node.translation.empty()) {
+        t[3] = glm::dvec4(node.translation[0], node.translation[1], node.translation[2], 1.0);
+    }
+    if (!node.rotation.empty()) {
+        double x = node.rotation[0], y = node.rotation[1], z = node.rotation[2], w = node.rotation[3];
+        const double length = std::sqrt(x * x + y * y + z * z + w * w);
+        if (!(length > 1e-12)) {
+            error = "has a node rotation that is not a unit quaternion";
+            return false;
+        }
+        x /= length, y /= length, z /= length, w /= length;
+        // Columns of the rotation matrix of the quaternion (x, y, z, w).
+        r[0] = glm::dvec4(1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y), 0);
+        r[1] = glm::dvec4(2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x), 0);
+        r[2] = glm::dvec4(2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y), 0);
+    }
+    if (!node.scale.empty()) {
+        s[0][0] = node.scale[0], s[1][1] = node.scale[1], s[2][2] = node.scale[2];
+    }
+    out = t * r * s;
+    return true;
+}
+
+struct MeshInstance {
+    int mesh = -1;
+    glm::dmat4 world{1.0};
+};
+
+// Walks the default scene's node tree (iteratively, each node once).
+bool collect_instances(const tinygltf::Model& model, std::vector<MeshInstance>& out,
+                       std::string& error) {
+    const std::size_t node_count = model.nodes.size();
+    std::vector<int> roots;
+    if (!model.scenes.empty()) {
+        int scene = model.defaultScene < 0 ? 0 : model.defaultScene;
+        if (static_cast<std::size_t>(scene) >= model.scenes.size()) {
+            error = "names default scene " + std::to_string(scene) + ", which does not exist";
+            return false;
+        }
+        roots = model.scenes[static_cast<std::size_t>(scene)].nodes;
+    } else {
+        std::vector<bool> is_child(node_count, false);
+        for (const tinygltf::Node& node : model.nodes) {
+            for (int c : node.children) {
+                if (c >= 0 && static_cast<std::size_t>(c) < node_count) is_child[static_cast<std::size_t>(c)] = true;
+            }
+        }
+        for (std::size_t i = 0; i < node_count; ++i) {
+            if (!is_child[i]) roots.push_back(static_cast<int>(i));
+        }
+    }
+    struct Item {
+        int node;
+        glm::dmat4 parent;
+        std::size_t depth;
+    };
+    std::vector<Item> stack;
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({*it, glm::dmat4(1.0), 1});
+    std::vector<bool> visited(node_count, false);
+    while (!stack.empty()) {
+        const Item item = stack.back();
+        stack.pop_back();
+        if (item.node < 0 || static_cast<std::size_t>(item.node) >= node_count) {
+            error = "refers to node " + std::to_string(item.node) + ", which does not exist";
+            return false;
+        }
+        const auto index = static_cast<std::size_t>(item.node);
+        if (visited[index]) {
+            error = "reaches node " + std::to_string(item.node) +
+                    " twice (its nodes must form a tree)";
+            return false;
+        }
+        visited[index] = true;
+        if (item.depth > limits::kMaxNodeDepth) {
+            error = "has nodes nested deeper than " + std::to_string(limits::kMaxNodeDepth) + " levels";
+            return false;
+        }
+        const tinygltf::Node& node = model.nodes[index];
+        glm::dmat4 local;
+        if (!local_transform(node, local, error)) return false;
+        const glm::dmat4 world = item.parent * local;
+        if (node.mesh >= 0) {
+            if (static_cast<std::size_t>(node.mesh) >= model.meshes.size()) {
+                error = "refers to mesh " + std::to_string(node.mesh) + ", which does not exist";
+                return false;
+            }
+            out.push_back({node.mesh, world});
+        }
+        for (auto c = node.children.rbegin(); c != node.children.rend(); ++c) {
+            stack.push_back({*c, world, item.depth + 1});
+        }
+    }
+    return true;
+}
+
+glm::dvec3 base_colour(const tinygltf::Model& model, int material) {
+    const glm::dvec3 grey(0.8);
+    if (material < 0 || static_cast<std::size_t>(material) >= model.materials.size()) return grey;
+    const std::vector<double>& f =
+        model.materials[static_cast<std::size_t>(material)].pbrMetallicRoughness.baseColorFactor;
+    if (f.size() < 3 || !std::isfinite(f[0]) || !std::isfinite(f[1]) || !std::isfinite(f[2])) {
+        return grey;
+    }
+    return glm::clamp(glm::dvec3(f[0], f[1], f[2]), 0.0, 1.0);
+}
+
+struct PrimitiveData {
+    AccessorView positions;
+    AccessorView normals;  // count 0: none
+    AccessorView indices;  // count 0 with data null: not indexed
+    bool indexed = false;
+    std::size_t triangles = 0;
+    glm::dvec3 colour{0.8};
+};
+
+bool read_primitive(const tinygltf::Model& model, int mesh, std::size_t p, PrimitiveData& out,
+                    std::string& error) {
+    const tinygltf::Primitive& primitive = model.meshes[static_cast<std::size_t>(mesh)].primitives[p];
+    const std::string name = "mesh " + std::to_string(mesh) + " primitive " + std::to_string(p);
+    if (primitive.mode != -1 && primitive.mode != TINYGLTF_MODE_TRIANGLES) {
+        error = "has " + name + " in mode " + std::to_string(primitive.mode) +
+                "; only TRIANGLES (4) is supported";
+        return false;
+    }
+    const auto position = primitive.attributes.find("POSITION");
+    if (position == primitive.attributes.end()) {
+        error = "has " + name + " without POSITION";
+        return false;
+    }
+    std::string reason;
+    const auto fail = [&] {
+        error = "has " + name + " whose " + reason;
+        return false;
+    };
+    if (!accessor_view(model, position->second, TINYGLTF_TYPE_VEC3,
+                       {TINYGLTF_COMPONENT_TYPE_FLOAT}, "POSITION", out.positions, reason)) {
+        return fail();
+    }
+    const auto normal = primitive.attributes.find("NORMAL");
+    if (normal != primitive.attributes.end()) {
+        if (!accessor_view(model, normal->second, TINYGLTF_TYPE_VEC3,
+                           {TINYGLTF_COMPONENT_TYPE_FLOAT}, "NORMAL", out.normals, reason)) {
+            return fail();
+        }
+        if (out.normals.count != out.positions.count) {
+            error = "has " + name + " with a different number of normals and positions";
+            return false;
+        }
+    }
+    std::size_t corners = out.positions.count;
+    if (primitive.indices >= 0) {
+        if (!accessor_view(model, primitive.indices, TINYGLTF_TYPE_SCALAR,
+                           {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                            TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
+                           "index", out.indices, reason)) {
+            return fail();
+        }
+        out.indexed = true;
+        corners = out.indices.count;
+    }
+    if (corners % 3 != 0) {
+        error = "has " + name + " whose vertex count " + std::to_string(corners) +
+                " is not a multiple of 3";
+        return false;
+    }
+    out.triangles = corners / 3;
+    out.colour = base_colour(model, primitive.material);
+    return true;
+}
+
+bool finite(const glm::dvec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+bool emit_triangles(const PrimitiveData& data, const glm::dmat4& world,
+                    std::vector<ModelTriangle>& out, std::string& error) {
+    const glm::dmat3 linear(world);
+    const double det = glm::determinant(linear);
+    const bool mirrored = det < 0.0;
+    const bool normals_usable = std::abs(det) > 1e-300 && data.normals.count > 0;
+    const glm::dmat3 normal_matrix = normals_usable ? glm::transpose(glm::inverse(linear)) : linear;
+    for (std::size_t t = 0; t < data.triangles; ++t) {
+        std::size_t v[3];
+        for (std::size_t k = 0; k < 3; ++k) {
+            v[k] = data.indexed ? data.indices.index(3 * t + k) : 3 * t + k;
+            if (v[k] >= data.positions.count) {
+                error = "has an index " + std::to_string(v[k]) + " past the end of its " +
+                        std::to_string(data.positions.count) + " vertices";
+                return false;
+            }
+        }
+        if (mirrored) std::swap(v[1], v[2]);  // keep front faces counter-clockwise
+        ModelTriangle triangle;
+        for (std::size_t k = 0; k < 3; ++k) {
+            triangle.position[k] = glm::dvec3(world * glm::dvec4(data.positions.vec3(v[k]), 1.0));
+            if (!finite(triangle.position[k])) {
+                error = "has a vertex position that is not a finite number";
+                return false;
+            }
+        }
+        const glm::dvec3 cross = glm::cross(triangle.position[1] - triangle.position[0],
+                                            triangle.position[2] - triangle.position[0]);
+        const double area2 = glm::length(cross);
+        if (!(area2 > 1e-300) || !std::isfinite(area2)) continue;  // degenerate: invisible
+        const glm::dvec3 flat = cross / area2;
+        for (std::size_t k = 0; k < 3; ++k) {
+            glm::dvec3 n = flat;
+            if (normals_usable) {
+                const glm::dvec3 given = normal_matrix * data.normals.vec3(v[k]);
+                const double length = glm::length(given);
+                if (finite(given) && length > 1e-12 && std::isfinite(length)) n = given / length;
+            }
+            triangle.normal[k] = n;
+        }
+        triangle.color = data.colour;
+        out.push_back(triangle);
+    }
+    return true;
+}
+
+bool load_model(const std::string& path, std::size_t max_triangles,
+                std::vector<ModelTriangle>& out, std::string& error) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const bool binary = extension == ".glb";
+    if (!binary && extension != ".gltf") {
+        error = "is not a glTF model (expected a .glb or .gltf file)";
+        return false;
+    }
+    if (!check_readable_file(path, limits::kMaxModelBytes, true, error)) return false;
+    std::error_code ec;
+    if (std::filesystem::file_size(path, ec) == 0 && !ec) {
+        error = "is not a valid glTF 2.0 file: the file is empty";
+        return false;
+    }
+
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(&skip_image, nullptr);
+    loader.SetFsCallbacks({&fs_file_exists, &fs_expand_path, &fs_read_whole_file,
+                           &fs_write_whole_file, nullptr});
+    tinygltf::Model model;
+    std::string err, warn;
+    const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
+                           : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    if (!ok) {
+        error = "is not a valid glTF 2.0 file: " + first_line(err);
+        return false;
+    }
+    if (model.asset.version.rfind("2.", 0) != 0) {
+        error = "is glTF version " + quote(model.asset.version) + "; only 2.0 is supported";
+        return false;
+    }
+    if (!model.extensionsRequired.empty()) {
+        error = "requires the unsupported glTF extension " + quote(model.extensionsRequired.front());
+        return false;
+    }
+    std::vector<MeshInstance> instances;
+    if (!collect_instances(model, instances, error)) return false;
+
+    // Check every primitive and count triangles before reading any.
+    std::vector<std::pair<PrimitiveData, glm::dmat4>> work;
+    std::size_t triangles = 0;
+    for (const MeshInstance& instance : instances) {
+        const auto& primitives = model.meshes[static_cast<std::size_t>(instance.mesh)].primitives;
+        for (std::size_t p = 0; p < primitives.size(); ++p) {
+            PrimitiveData data;
+            if (!read_primitive(model, instance.mesh, p, data, error)) return false;
+            triangles += data.triangles;
+            if (triangles > max_triangles) {
+                error = "has more than " + std::to_string(max_triangles) + " triangles";
+                return false;
+            }
+            work.emplace_back(data, instance.world);
+        }
+    }
+    out.clear();
+    out.reserve(triangles);
+    for (const auto& [data, world] : work) {
+        if (!emit_triangles(data, world, out, error)) return false;
+    }
+    if (out.empty()) {
+        error = "has no triangles";
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+bool load_gltf_triangles(const std::string& path, std::size_t max_triangles,
+                         std::vector<ModelTriangle>& out, std::string& error) {
+    out.clear();
+    try {
+        if (load_model(path, max_triangles, out, error)) return true;
+    } catch (const std::bad_alloc&) {
+        error = "is too large to read (out of memory)";
+    } catch (const std::exception& e) {
+        // tinygltf throws on some malformed input (e.g. std::out_of_range).
+        error = "is not a valid glTF 2.0 file: " + printable(e.what());
+    }
+    out.clear();
+    return false;
+}
+
+}  // namespace impossible::layout::detail

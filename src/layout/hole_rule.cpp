@@ -1,0 +1,162 @@
+// The hole rule (layout-format.md, "The portal box"): a portal whose
+// rectangle lies in the plane of a face of its own room (all four corners
+// within 1e-4 of it, normal into the room) cuts a hole in that face if it is
+// wholly inside the face; wholly outside, it stands free; partly inside is an
+// error. Two holes in one face that overlap are an error too (the face
+// would have no defined shape between them).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include <glm/geometric.hpp>
+
+#include "layout/limits.hpp"
+#include "layout/readers.hpp"
+#include "layout/text_util.hpp"
+
+namespace impossible::layout::detail {
+
+namespace {
+
+using Quad = std::array<glm::dvec2, 4>;
+
+// A face of a room: the plane coordinate on `axis`, the inward direction
+// along it, and the face rectangle over axes (a, b).
+struct FaceFrame {
+    int axis = 0;
+    double coord = 0.0;
+    double inward = 1.0;
+    int a = 0;
+    int b = 0;
+    glm::dvec2 lo{0.0};
+    glm::dvec2 hi{0.0};
+};
+
+FaceFrame face_frame(const Room& room, Face face) {
+    FaceFrame f;
+    switch (face) {
+        case Face::Floor: f = {1, room.min.y, 1.0, 0, 2}; break;
+        case Face::Ceiling: f = {1, room.max.y, -1.0, 0, 2}; break;
+        case Face::NegX: f = {0, room.min.x, 1.0, 2, 1}; break;
+        case Face::PosX: f = {0, room.max.x, -1.0, 2, 1}; break;
+        case Face::NegZ: f = {2, room.min.z, 1.0, 0, 1}; break;
+        case Face::PosZ: f = {2, room.max.z, -1.0, 0, 1}; break;
+    }
+    f.lo = {room.min[f.a], room.min[f.b]};
+    f.hi = {room.max[f.a], room.max[f.b]};
+    return f;
+}
+
+std::array<glm::dvec3, 4> corners(const math::PortalRect& p) {
+    const glm::dvec3 right = glm::cross(p.up, p.normal) * (p.width / 2);
+    const glm::dvec3 up = p.up * (p.height / 2);
+    return {p.center - right - up, p.center + right - up, p.center + right + up,
+            p.center - right + up};
+}
+
+// The least overlap of the projections of two convex quads over their edge
+// normals: > 0 where their interiors overlap, <= 0 where they are apart or
+// touch (the separating axis theorem).
+double overlap(const Quad& p, const Quad& q) {
+    double least = std::numeric_limits<double>::infinity();
+    for (const Quad* shape : {&p, &q}) {
+        for (int e = 0; e < 2; ++e) {
+            const glm::dvec2 edge = (*shape)[static_cast<std::size_t>(e + 1)] - (*shape)[static_cast<std::size_t>(e)];
+            const double length = glm::length(edge);
+            if (!(length > 0.0)) continue;
+            const glm::dvec2 axis = edge / length;
+            const auto project = [&](const Quad& s) {
+                double lo = std::numeric_limits<double>::infinity();
+                double hi = -lo;
+                for (const glm::dvec2& v : s) {
+                    lo = std::min(lo, glm::dot(v, axis));
+                    hi = std::max(hi, glm::dot(v, axis));
+                }
+                return std::pair{lo, hi};
+            };
+            const auto [p_lo, p_hi] = project(p);
+            const auto [q_lo, q_hi] = project(q);
+            least = std::min(least, std::min(p_hi, q_hi) - std::max(p_lo, q_lo));
+        }
+    }
+    return least;
+}
+
+struct Hole {
+    std::size_t portal = 0;
+    Quad quad{};
+    double min_a = 0.0;
+    double max_a = 0.0;
+};
+
+}  // namespace
+
+void check_holes(Checker& check, std::vector<PortalDraft>& portals,
+                 const std::vector<RoomDraft>& rooms) {
+    const double eps = limits::kHolePlaneTolerance;
+    std::map<std::pair<int, int>, std::vector<Hole>> holes;  // (room, face) → holes
+    for (std::size_t i = 0; i < portals.size(); ++i) {
+        PortalDraft& draft = portals[i];
+        const int room_index = draft.portal.room;
+        if (!draft.rect_ok || room_index < 0) continue;
+        const RoomDraft& room = rooms[static_cast<std::size_t>(room_index)];
+        if (!room.box_ok) continue;
+        const math::PortalRect& rect = draft.portal.rect;
+        const std::array<glm::dvec3, 4> c = corners(rect);
+        for (int face = 0; face < kFaceCount; ++face) {
+            const FaceFrame f = face_frame(room.room, static_cast<Face>(face));
+            const bool in_plane = std::all_of(c.begin(), c.end(), [&](const glm::dvec3& v) {
+                return std::abs(v[f.axis] - f.coord) <= eps;
+            });
+            if (!in_plane || !(rect.normal[f.axis] * f.inward > 0.5)) continue;
+            Hole hole;
+            hole.portal = i;
+            for (std::size_t k = 0; k < 4; ++k) hole.quad[k] = {c[k][f.a], c[k][f.b]};
+            const bool inside = std::all_of(hole.quad.begin(), hole.quad.end(), [&](const glm::dvec2& v) {
+                return v.x >= f.lo.x - eps && v.x <= f.hi.x + eps && v.y >= f.lo.y - eps &&
+                       v.y <= f.hi.y + eps;
+            });
+            const Quad face_quad = {f.lo, glm::dvec2(f.hi.x, f.lo.y), f.hi, glm::dvec2(f.lo.x, f.hi.y)};
+            if (inside) {
+                draft.portal.hole_face = face;
+                hole.min_a = std::min({hole.quad[0].x, hole.quad[1].x, hole.quad[2].x, hole.quad[3].x});
+                hole.max_a = std::max({hole.quad[0].x, hole.quad[1].x, hole.quad[2].x, hole.quad[3].x});
+                holes[{room_index, face}].push_back(hole);
+            } else if (overlap(hole.quad, face_quad) > eps) {
+                check.error(draft.path / "center",
+                            "the rectangle lies in the plane of the " +
+                                std::string(kFaceNames[static_cast<std::size_t>(face)]) +
+                                " face of room " + quote(room.room.id) +
+                                " but is only partly inside that face (a portal in the plane of a "
+                                "face must lie wholly inside it, making a hole, or wholly outside)");
+            }
+            break;
+        }
+    }
+    // Overlapping holes in one face: sweep along the face's first axis.
+    // Each portal is reported once.
+    std::vector<bool> reported(portals.size(), false);
+    for (auto& [key, list] : holes) {
+        std::sort(list.begin(), list.end(), [](const Hole& x, const Hole& y) { return x.min_a < y.min_a; });
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            for (std::size_t j = i + 1; j < list.size() && list[j].min_a < list[i].max_a - eps; ++j) {
+                const std::size_t first = std::min(list[i].portal, list[j].portal);
+                const std::size_t later = std::max(list[i].portal, list[j].portal);
+                if (reported[later] || reported[first]) continue;
+                if (overlap(list[i].quad, list[j].quad) <= eps) continue;
+                reported[later] = true;
+                check.error(portals[later].path / "center",
+                            "its hole in the " +
+                                std::string(kFaceNames[static_cast<std::size_t>(key.second)]) +
+                                " face of room " +
+                                quote(rooms[static_cast<std::size_t>(key.first)].room.id) +
+                                " overlaps the hole of portal " + quote(portals[first].portal.id) +
+                                " (portals[" + std::to_string(first) + "])");
+            }
+        }
+    }
+}
+
+}  // namespace impossible::layout::detail

@@ -1,0 +1,45 @@
+// Small public helpers of layout.hpp: diagnostics, room lookup, prop placement.
+#include <cmath>
+
+#include "layout/layout.hpp"
+#include "math/conventions.hpp"
+
+namespace impossible::layout {
+
+std::string Diagnostic::str() const {
+    if (line > 0) return file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + message;
+    return file + ": " + message;
+}
+
+int find_room(const Layout& layout, const std::string& id) {
+    for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
+        if (layout.rooms[i].id == id) return static_cast<int>(i);
+    }
+    return -1;
+}
+
+namespace {
+
+// Yaw about +Y; positive turns counter-clockwise seen from above (-Z → -X),
+// like the head's yaw.
+glm::dvec3 yaw_about_y(const glm::dvec3& v, double yaw_deg) {
+    const double a = math::radians(yaw_deg);
+    const double c = std::cos(a);
+    const double s = std::sin(a);
+    return {c * v.x + s * v.z, v.y, -s * v.x + c * v.z};
+}
+
+}  // namespace
+
+glm::dvec3 place_model_point(const GltfProp& prop, const glm::dvec3& p) {
+    return yaw_about_y(p * prop.scale, prop.yaw_deg) + prop.position;
+}
+
+glm::dvec3 place_model_normal(const GltfProp& prop, const glm::dvec3& n) {
+    // A uniform positive scale and a rotation keep normals as they are, up to length.
+    const glm::dvec3 turned = yaw_about_y(n, prop.yaw_deg);
+    const double length = std::sqrt(turned.x * turned.x + turned.y * turned.y + turned.z * turned.z);
+    return length > 0.0 ? turned / length : turned;
+}
+
+}  // namespace impossible::layout

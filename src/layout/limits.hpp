@@ -1,0 +1,51 @@
+// Limits the loader enforces where layout-format.md is silent. They keep
+// absurd input (huge, deep, non-physical) from reaching the renderer, and are
+// documented for users in docs/layout-limits.md; keep the two in step.
+#pragma once
+
+#include <cstddef>
+
+namespace impossible::layout::limits {
+
+// The text of a layout file, and how deep and how many its JSON values may be.
+// A hand-written or generated layout is a few kilobytes; these leave a wide
+// margin while bounding memory and time.
+inline constexpr std::size_t kMaxFileBytes = 4u << 20;  // 4 MiB
+inline constexpr std::size_t kMaxDepth = 64;
+inline constexpr std::size_t kMaxValues = 200'000;
+
+inline constexpr std::size_t kMaxRooms = 10'000;
+inline constexpr std::size_t kMaxPortals = 20'000;
+inline constexpr std::size_t kMaxPropsPerRoom = 10'000;
+
+// Coordinates and lengths, in metres. Renderers draw in single precision, so
+// a coordinate beyond 100 km would lose millimetres; lengths below a
+// micrometre (widths, heights, depths, room and box extents, checker squares)
+// cannot be seen and only cause degenerate geometry.
+inline constexpr double kMaxCoordinate = 1e5;
+inline constexpr double kMinLength = 1e-6;
+inline constexpr double kMaxLength = 1e5;
+
+// Angles in degrees (yaw_deg).
+inline constexpr double kMaxAngleDeg = 1e6;
+
+// A glTF prop's scale factor.
+inline constexpr double kMinScale = 1e-6;
+inline constexpr double kMaxScale = 1e6;
+
+// Components of direction vectors (normal, up) before normalisation.
+inline constexpr double kMaxDirectionComponent = 1e5;
+
+// Portal vectors (from layout-format.md).
+inline constexpr double kUnitTolerance = 1e-3;  // | |normal| - 1 | allowed
+inline constexpr double kMinUpAngleDeg = 1.0;   // angle between up and normal
+inline constexpr double kPairSizeTolerance = 1e-6;
+inline constexpr double kHolePlaneTolerance = 1e-4;
+
+// glTF models.
+inline constexpr std::size_t kMaxModelBytes = 256u << 20;  // 256 MiB
+inline constexpr std::size_t kMaxModelTriangles = 1'000'000;
+inline constexpr std::size_t kMaxLayoutTriangles = 2'000'000;  // all props together
+inline constexpr std::size_t kMaxNodeDepth = 64;
+
+}  // namespace impossible::layout::limits

@@ -1,0 +1,91 @@
+// The parts of the layout reader (internal). Each reads its part of the
+// JSON, reports every problem through the Checker, and keeps what it could
+// read so later checks (pairs, holes) can run without cascading errors.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "layout/checker.hpp"
+#include "layout/layout.hpp"
+
+namespace impossible::layout::detail {
+
+struct RoomDraft {
+    Room room;
+    Path path;
+    bool has_id = false;
+    bool box_ok = false;  // min/max read and max > min
+};
+
+struct PortalDraft {
+    Portal portal;
+    Path path;
+    std::optional<std::string> room_id;
+    std::optional<std::string> target_id;
+    bool has_id = false;
+    bool rect_ok = false;  // center, normal, up, width, height, depth read
+};
+
+// glTF models, read once per file per layout, with a cap on all triangles.
+class ModelCache {
+public:
+    explicit ModelCache(std::string base_dir) : base_dir_(std::move(base_dir)) {}
+
+    // The path resolved against the layout's directory.
+    std::string resolve(const std::string& path) const;
+
+    // Reads the model at `resolved` (or returns it from the cache). On
+    // failure returns null and sets `error` (a reason, without the path).
+    const std::vector<ModelTriangle>* load(const std::string& resolved, std::string& error);
+
+    // Counts one more instance of `triangles` toward the layout's cap.
+    bool add_instance(std::size_t triangles, std::string& error);
+
+private:
+    struct Entry {
+        std::vector<ModelTriangle> triangles;
+        std::string error;
+    };
+    std::string base_dir_;
+    std::map<std::string, Entry> entries_;
+    std::size_t total_triangles_ = 0;
+};
+
+std::vector<RoomDraft> read_rooms(Checker& check, const Path& at, const json& rooms,
+                                  ModelCache& models);
+
+void read_props(Checker& check, const Path& at, const json& props, const glm::dvec3& room_colour,
+                ModelCache& models, std::vector<Prop>& out);
+
+std::vector<PortalDraft> read_portals(Checker& check, const Path& at, const json& portals);
+
+// Resolves each portal's room and target, and checks the pairs.
+void link_portals(Checker& check, std::vector<PortalDraft>& portals,
+                  const std::vector<RoomDraft>& rooms);
+
+// The hole rule (layout-format.md, "The portal box"): sets hole_face, and
+// reports rectangles partly inside a face, and overlapping holes.
+void check_holes(Checker& check, std::vector<PortalDraft>& portals,
+                 const std::vector<RoomDraft>& rooms);
+
+// Index of each id (the first, where ids repeat).
+template <class Draft>
+std::map<std::string, int> index_by_id(const std::vector<Draft>& drafts) {
+    std::map<std::string, int> out;
+    for (std::size_t i = 0; i < drafts.size(); ++i) {
+        const auto& item = drafts[i];
+        if (!item.has_id) continue;
+        if constexpr (std::is_same_v<Draft, RoomDraft>) {
+            out.emplace(item.room.id, static_cast<int>(i));
+        } else {
+            out.emplace(item.portal.id, static_cast<int>(i));
+        }
+    }
+    return out;
+}
+
+}  // namespace impossible::layout::detail

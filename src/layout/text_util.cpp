@@ -1,0 +1,139 @@
+#include "layout/text_util.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace impossible::layout::detail {
+
+std::string format_number(double value) {
+    if (std::isnan(value)) return "nan";
+    if (std::isinf(value)) return value < 0 ? "-inf" : "inf";
+    char buffer[40];
+    if (value == std::floor(value) && std::abs(value) < 1e15) {
+        std::snprintf(buffer, sizeof buffer, "%.0f", value);  // 100000, not 1e+05
+        return buffer;
+    }
+    for (int precision = 1; precision <= 17; ++precision) {
+        std::snprintf(buffer, sizeof buffer, "%.*g", precision, value);
+        if (std::strtod(buffer, nullptr) == value) break;
+    }
+    return buffer;
+}
+
+std::string format_bytes(std::uint64_t bytes) {
+    constexpr std::uint64_t mib = 1u << 20;
+    if (bytes >= mib && bytes % mib == 0) return std::to_string(bytes / mib) + " MiB";
+    return std::to_string(bytes) + " bytes";
+}
+
+namespace {
+
+// Length of the valid UTF-8 sequence at text[i], or 0 if it is not one.
+std::size_t utf8_sequence_length(std::string_view text, std::size_t i) {
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+    const unsigned char b0 = byte(i);
+    if (b0 < 0x80) return 1;
+    std::size_t length = 0;
+    unsigned min_code = 0;
+    unsigned code = 0;
+    if ((b0 & 0xE0) == 0xC0) {
+        length = 2, min_code = 0x80, code = b0 & 0x1Fu;
+    } else if ((b0 & 0xF0) == 0xE0) {
+        length = 3, min_code = 0x800, code = b0 & 0x0Fu;
+    } else if ((b0 & 0xF8) == 0xF0) {
+        length = 4, min_code = 0x10000, code = b0 & 0x07u;
+    } else {
+        return 0;
+    }
+    if (i + length > text.size()) return 0;
+    for (std::size_t k = 1; k < length; ++k) {
+        if ((byte(i + k) & 0xC0) != 0x80) return 0;
+        code = (code << 6) | (byte(i + k) & 0x3Fu);
+    }
+    if (code < min_code || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) return 0;
+    return length;
+}
+
+void append_hex_escape(std::string& out, unsigned char b) {
+    static const char digits[] = "0123456789abcdef";
+    out += "\\x";
+    out += digits[b >> 4];
+    out += digits[b & 0xF];
+}
+
+}  // namespace
+
+std::string quote(std::string_view text) {
+    std::string out = "\"";
+    for (std::size_t i = 0; i < text.size();) {
+        const unsigned char b = static_cast<unsigned char>(text[i]);
+        if (b == '"' || b == '\\') {
+            out += '\\';
+            out += static_cast<char>(b);
+            ++i;
+        } else if (b < 0x20 || b == 0x7F) {
+            append_hex_escape(out, b);
+            ++i;
+        } else if (const std::size_t n = utf8_sequence_length(text, i); n > 0) {
+            out.append(text.substr(i, n));
+            i += n;
+        } else {
+            append_hex_escape(out, b);
+            ++i;
+        }
+    }
+    out += '"';
+    return out;
+}
+
+std::string printable(std::string_view text) {
+    std::string out;
+    for (std::size_t i = 0; i < text.size();) {
+        const unsigned char b = static_cast<unsigned char>(text[i]);
+        if (b < 0x20 || b == 0x7F) {
+            append_hex_escape(out, b);
+            ++i;
+        } else if (const std::size_t n = utf8_sequence_length(text, i); n > 0) {
+            out.append(text.substr(i, n));
+            i += n;
+        } else {
+            append_hex_escape(out, b);
+            ++i;
+        }
+    }
+    return out;
+}
+
+std::vector<TextPosition> text_positions(std::string_view text,
+                                         const std::vector<std::size_t>& offsets) {
+    std::vector<TextPosition> out;
+    out.reserve(offsets.size());
+    const bool has_bom = text.substr(0, 3) == "\xEF\xBB\xBF";
+    int line = 1;
+    int column = 1;
+    std::size_t i = 0;
+    for (std::size_t wanted : offsets) {
+        if (wanted > text.size()) wanted = text.size();
+        for (; i < wanted; ++i) {
+            const auto b = static_cast<unsigned char>(text[i]);
+            if (b == '\n') {
+                ++line;
+                column = 1;
+            } else if ((b & 0xC0) != 0x80 && !(has_bom && i == 0)) {
+                // A byte that starts a code point (continuation bytes don't
+                // count, nor does the byte order mark: its bytes 1 and 2 are
+                // continuation bytes).
+                ++column;
+            }
+        }
+        out.push_back({line, column});
+    }
+    return out;
+}
+
+TextPosition text_position(std::string_view text, std::size_t offset) {
+    return text_positions(text, {offset}).front();
+}
+
+}  // namespace impossible::layout::detail

@@ -1,0 +1,39 @@
+// Small text helpers for diagnostics: numbers, quoted strings, positions.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace impossible::layout::detail {
+
+// The shortest decimal form that reads back as the same double ("0.1", "1e+308").
+std::string format_number(double value);
+
+// A size for messages: "5 MiB" when a whole number of MiB, else "123 bytes".
+std::string format_bytes(std::uint64_t bytes);
+
+// A string as a JSON string literal (quotes, escapes), safe to print.
+std::string quote(std::string_view text);
+
+// Text with bytes that are not valid UTF-8, and control characters, written as
+// \xNN, so that a message never carries raw binary.
+std::string printable(std::string_view text);
+
+struct TextPosition {
+    int line = 0;    // 1-based
+    int column = 0;  // 1-based, counted in Unicode code points
+};
+
+// Line and column of a byte offset (clamped to the text's end). A UTF-8 byte
+// order mark at the start does not count as a column.
+TextPosition text_position(std::string_view text, std::size_t offset);
+
+// The same for many offsets at once, in one pass over the text: `offsets`
+// must be sorted ascending.
+std::vector<TextPosition> text_positions(std::string_view text,
+                                         const std::vector<std::size_t>& offsets);
+
+}  // namespace impossible::layout::detail

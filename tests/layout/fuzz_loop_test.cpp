@@ -1,0 +1,202 @@
+// A deterministic fuzz loop: thousands of mutations of valid layouts (byte
+// flips, deletions, inserted JSON tokens, odd numbers, repeated keys). Each
+// result must be either errors (well-formed, in file order) or a layout that
+// keeps every promise of layout.hpp; nothing may crash or take long.
+#include <cctype>
+#include <chrono>
+#include <iterator>
+#include <cmath>
+#include <random>
+
+#include <glm/geometric.hpp>
+
+#include "layout_test_util.hpp"
+
+namespace layout_test {
+namespace {
+
+bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+bool in_unit_range(const glm::dvec3& c) {
+    return c.x >= 0 && c.x <= 1 && c.y >= 0 && c.y <= 1 && c.z >= 0 && c.z <= 1;
+}
+
+// The promises of a loaded layout (layout.hpp).
+void check_invariants(const Layout& layout) {
+    ASSERT_FALSE(layout.rooms.empty());
+    const int room_count = int(layout.rooms.size());
+    ASSERT_GE(layout.start.room, 0);
+    ASSERT_LT(layout.start.room, room_count);
+    EXPECT_TRUE(finite(layout.start.position));
+    EXPECT_TRUE(std::isfinite(layout.start.yaw_deg));
+    if (layout.play_area) {
+        EXPECT_LT(layout.play_area->min.x, layout.play_area->max.x);
+        EXPECT_LT(layout.play_area->min.y, layout.play_area->max.y);
+    }
+    for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
+        const Room& room = layout.rooms[i];
+        EXPECT_FALSE(room.id.empty());
+        EXPECT_EQ(find_room(layout, room.id), int(i)) << "ids are unique";
+        EXPECT_TRUE(finite(room.min) && finite(room.max));
+        EXPECT_TRUE(room.max.x > room.min.x && room.max.y > room.min.y && room.max.z > room.min.z);
+        for (const glm::dvec3& c : room.face_color) EXPECT_TRUE(in_unit_range(c));
+        EXPECT_GE(room.checker, 0.0);
+        for (const Prop& prop : room.props) {
+            if (const auto* box = std::get_if<BoxProp>(&prop)) {
+                EXPECT_TRUE(box->max.x > box->min.x && box->max.y > box->min.y && box->max.z > box->min.z);
+                EXPECT_TRUE(in_unit_range(box->color));
+            } else {
+                const auto& model = std::get<GltfProp>(prop);
+                EXPECT_FALSE(model.triangles.empty());
+                EXPECT_GT(model.scale, 0.0);
+                EXPECT_TRUE(finite(model.position));
+            }
+        }
+    }
+    for (std::size_t i = 0; i < layout.portals.size(); ++i) {
+        const Portal& p = layout.portals[i];
+        ASSERT_GE(p.room, 0);
+        ASSERT_LT(p.room, room_count);
+        ASSERT_GE(p.target, 0);
+        ASSERT_LT(p.target, int(layout.portals.size()));
+        EXPECT_NE(p.target, int(i));
+        EXPECT_EQ(layout.portals[std::size_t(p.target)].target, int(i));
+        EXPECT_NEAR(glm::length(p.rect.normal), 1.0, 1e-12);
+        EXPECT_NEAR(glm::length(p.rect.up), 1.0, 1e-12);
+        EXPECT_NEAR(glm::dot(p.rect.up, p.rect.normal), 0.0, 1e-12);
+        EXPECT_TRUE(finite(p.rect.center));
+        EXPECT_GT(p.rect.width, 0.0);
+        EXPECT_GT(p.rect.height, 0.0);
+        EXPECT_GT(p.rect.depth, 0.0);
+        EXPECT_NEAR(p.rect.width, layout.portals[std::size_t(p.target)].rect.width, 1e-6);
+        EXPECT_NEAR(p.rect.height, layout.portals[std::size_t(p.target)].rect.height, 1e-6);
+        EXPECT_GE(p.hole_face, -1);
+        EXPECT_LT(p.hole_face, kFaceCount);
+    }
+}
+
+void check_diagnostics(const std::vector<Diagnostic>& list, const std::string& text) {
+    int lines = 1;
+    for (const char c : text) lines += c == '\n';
+    std::pair<int, int> previous{0, 0};
+    for (const Diagnostic& d : list) {
+        EXPECT_EQ(d.file, "fuzz.json");
+        EXPECT_FALSE(d.message.empty());
+        for (const char c : d.message) EXPECT_GE(static_cast<unsigned char>(c), 0x20) << d.message;
+        if (d.line > 0) {
+            EXPECT_LE(d.line, lines);
+            EXPECT_GE(d.column, 1);
+        }
+        const std::pair<int, int> here{d.line, d.column};
+        EXPECT_LE(previous, here) << "errors in file order";
+        previous = here;
+    }
+}
+
+class Mutator {
+public:
+    explicit Mutator(std::uint32_t seed) : random_(seed) {}
+
+    std::string mutate(std::string text) {
+        const int count = 1 + pick(3);
+        for (int i = 0; i < count && !text.empty(); ++i) {
+            switch (pick(6)) {
+                case 0: text[pick(text.size())] = static_cast<char>(pick(256)); break;
+                case 1: text.erase(pick(text.size()), 1 + pick(16)); break;
+                case 2: text.insert(pick(text.size() + 1), kTokens[pick(std::size(kTokens))]); break;
+                case 3: replace_number(text); break;
+                case 4: repeat_member(text); break;
+                default: text = text.substr(0, pick(text.size() + 1)); break;  // truncate
+            }
+        }
+        return text;
+    }
+
+private:
+    static constexpr const char* kTokens[] = {
+        "{", "}", "[", "]", ",", ":", "\"", "null", "true", "false", "0", "-0", "1e308", "NaN",
+        "\"_c\": 1,", "\"id\": \"x\",", "\"rooms\": [],", "[[[[[[[[", "\xFF", "\\u0000", "\"\\ud800\"",
+        "\xEF\xBB\xBF", "\"room\": \"annex\",", "\"target\": \"hall_east\",", "\"up\": [0, 1, 0],", "\n",
+    };
+    static constexpr const char* kNumbers[] = {
+        "NaN", "Infinity", "-Infinity", "1e308", "-1e308", "1e400", "-0", "0", "4e-324", "1e-9",
+        "99999999999999999999999", "-1", "1.0009", "1.002", "2", "0.5", "-2.5", "1e5", "100001",
+    };
+
+    std::mt19937 random_;
+
+    std::size_t pick(std::size_t n) { return n == 0 ? 0 : std::uniform_int_distribution<std::size_t>(0, n - 1)(random_); }
+
+    void replace_number(std::string& text) {
+        std::vector<std::size_t> starts;
+        for (std::size_t i = 1; i < text.size(); ++i) {
+            const char c = text[i];
+            const char before = text[i - 1];
+            if ((c == '-' || (c >= '0' && c <= '9')) && (before == ' ' || before == '[' || before == ',' || before == ':')) {
+                starts.push_back(i);
+            }
+        }
+        if (starts.empty()) return;
+        const std::size_t at = starts[pick(starts.size())];
+        std::size_t end = at + 1;
+        while (end < text.size() && (std::isdigit(static_cast<unsigned char>(text[end])) || text[end] == '.' ||
+                                     text[end] == 'e' || text[end] == 'E' || text[end] == '-' || text[end] == '+')) {
+            ++end;
+        }
+        text.replace(at, end - at, kNumbers[pick(std::size(kNumbers))]);
+    }
+
+    // Copies `"key": value,` in place, so the key appears twice.
+    void repeat_member(std::string& text) {
+        const std::size_t quote = text.find('"', pick(text.size()));
+        if (quote == std::string::npos) return;
+        const std::size_t comma = text.find(',', quote);
+        if (comma == std::string::npos) return;
+        text.insert(quote, text.substr(quote, comma + 1 - quote));
+    }
+};
+
+TEST(LayoutFuzzLoop, MutatedLayoutsGiveErrorsOrValidLayouts) {
+    const std::vector<std::string> seeds = {two_rooms(), read_text(kLayoutDir + "/impossible.json"),
+                                            read_text(kLayoutDir + "/props.json")};
+    for (const std::string& seed : seeds) {
+        const LoadResult r = load_layout_text(seed, "fuzz.json", kLayoutDir);
+        ASSERT_TRUE(r.layout.has_value()) << all_messages(r.errors);
+    }
+    Mutator mutator(20240611);
+    using clock = std::chrono::steady_clock;
+    const auto start = clock::now();
+    double slowest = 0.0;
+    int valid = 0;
+    int invalid = 0;
+    const int rounds = 5000;
+    for (int round = 0; round < rounds; ++round) {
+        for (const std::string& seed : seeds) {
+            const std::string text = mutator.mutate(seed);
+            const auto before = clock::now();
+            const LoadResult r = load_layout_text(text, "fuzz.json", kLayoutDir);
+            slowest = std::max(slowest, std::chrono::duration<double>(clock::now() - before).count());
+            ASSERT_EQ(r.layout.has_value(), r.errors.empty()) << text;
+            check_diagnostics(r.errors, text);
+            if (r.layout) {
+                ++valid;
+                check_invariants(*r.layout);
+            } else {
+                ++invalid;
+            }
+            if (::testing::Test::HasFailure()) {
+                FAIL() << "round " << round << " input:\n" << text << "\n" << all_messages(r.errors);
+            }
+        }
+    }
+    const double total = std::chrono::duration<double>(clock::now() - start).count();
+    EXPECT_LT(slowest, 2.0) << "one load took " << slowest << " s";
+    EXPECT_LT(total, 60.0);
+    // Both outcomes occur: the loop exercises the validator, not only the parser.
+    EXPECT_GT(valid, rounds / 20);
+    EXPECT_GT(invalid, rounds);
+    std::printf("fuzz loop: %d valid, %d invalid, %.2f s, slowest %.3f s\n", valid, invalid, total, slowest);
+}
+
+}  // namespace
+}  // namespace layout_test

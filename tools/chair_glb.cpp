@@ -1,0 +1,179 @@
+#include "chair_glb.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+namespace impossible::tools {
+
+namespace {
+
+struct Box {
+    std::array<float, 3> min;
+    std::array<float, 3> max;
+};
+
+// One primitive's arrays: positions and normals (floats), 16-bit indices.
+struct Arrays {
+    std::vector<float> positions;
+    std::vector<float> normals;
+    std::vector<std::uint16_t> indices;
+};
+
+// Appends a box as 6 faces of 4 vertices, each face counter-clockwise seen
+// from outside, with its outward normal.
+void add_box(Arrays& out, const Box& box) {
+    for (int axis = 0; axis < 3; ++axis) {
+        // (b, c) span the face so that b × c points along +axis.
+        const int b = (axis + 1) % 3;
+        const int c = (axis + 2) % 3;
+        for (int side = 0; side < 2; ++side) {
+            const float sign = side == 0 ? -1.0f : 1.0f;
+            const float plane = side == 0 ? box.min[axis] : box.max[axis];
+            // Corners (b, c) in counter-clockwise order seen from the outside.
+            std::array<std::array<int, 2>, 4> order = {{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+            if (side == 0) order = {{{0, 0}, {0, 1}, {1, 1}, {1, 0}}};
+            const auto first = static_cast<std::uint16_t>(out.positions.size() / 3);
+            for (const auto& corner : order) {
+                std::array<float, 3> p{};
+                p[axis] = plane;
+                p[b] = corner[0] == 0 ? box.min[b] : box.max[b];
+                p[c] = corner[1] == 0 ? box.min[c] : box.max[c];
+                out.positions.insert(out.positions.end(), p.begin(), p.end());
+                std::array<float, 3> n{};
+                n[axis] = sign;
+                out.normals.insert(out.normals.end(), n.begin(), n.end());
+            }
+            for (const int k : {0, 1, 2, 0, 2, 3}) {
+                out.indices.push_back(static_cast<std::uint16_t>(first + k));
+            }
+        }
+    }
+}
+
+template <class T>
+void append_bytes(std::vector<unsigned char>& out, const std::vector<T>& values) {
+    const std::size_t begin = out.size();
+    out.resize(begin + values.size() * sizeof(T));
+    std::memcpy(out.data() + begin, values.data(), values.size() * sizeof(T));
+}
+
+void append_u32(std::vector<unsigned char>& out, std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) out.push_back(static_cast<unsigned char>(v >> (8 * i)));
+}
+
+std::string number(float v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.9g", static_cast<double>(v));
+    return buffer;
+}
+
+std::string vec3_json(const std::array<float, 3>& v) {
+    return "[" + number(v[0]) + "," + number(v[1]) + "," + number(v[2]) + "]";
+}
+
+}  // namespace
+
+std::vector<unsigned char> make_chair_glb() {
+    // Metres; the chair stands on y = 0, centred on x and z, its back at -z
+    // so that it faces +z (glTF's "front").
+    const float leg = 0.04f;
+    const float seat_height = 0.43f;
+    const float half = 0.22f;
+    Arrays wood;
+    for (const float x : {-half, half - leg}) {
+        for (const float z : {-half, half - leg}) {
+            add_box(wood, {{x, 0.0f, z}, {x + leg, seat_height, z + leg}});
+        }
+    }
+    add_box(wood, {{-half, seat_height, -half}, {half, seat_height + 0.04f, half}});    // seat
+    add_box(wood, {{-half, seat_height + 0.04f, -half}, {half, 0.92f, -half + 0.04f}});  // back
+    Arrays fabric;
+    add_box(fabric, {{-half + 0.02f, seat_height + 0.04f, -half + 0.04f},
+                     {half - 0.02f, seat_height + 0.09f, half - 0.02f}});  // cushion
+
+    // The binary chunk: each primitive's positions, normals, then indices.
+    std::vector<unsigned char> bin;
+    struct View {
+        std::size_t offset, length;
+        int target;
+    };
+    std::vector<View> views;
+    const auto add_view = [&](const auto& values, int target) {
+        const std::size_t offset = bin.size();
+        append_bytes(bin, values);
+        views.push_back({offset, bin.size() - offset, target});
+        while (bin.size() % 4 != 0) bin.push_back(0);  // keep every view 4-byte aligned
+    };
+    const Arrays* primitives[] = {&wood, &fabric};
+    for (const Arrays* a : primitives) {
+        add_view(a->positions, 34962);
+        add_view(a->normals, 34962);
+        add_view(a->indices, 34963);
+    }
+
+    std::string accessors;
+    std::string mesh_primitives;
+    for (int p = 0; p < 2; ++p) {
+        const Arrays& a = *primitives[p];
+        std::array<float, 3> lo = {a.positions[0], a.positions[1], a.positions[2]};
+        std::array<float, 3> hi = lo;
+        for (std::size_t i = 0; i < a.positions.size(); ++i) {
+            lo[i % 3] = std::min(lo[i % 3], a.positions[i]);
+            hi[i % 3] = std::max(hi[i % 3], a.positions[i]);
+        }
+        const std::string count = std::to_string(a.positions.size() / 3);
+        const int base = 3 * p;
+        if (p > 0) accessors += ",";
+        accessors += "{\"bufferView\":" + std::to_string(base) + ",\"componentType\":5126,\"count\":" +
+                     count + ",\"type\":\"VEC3\",\"min\":" + vec3_json(lo) + ",\"max\":" + vec3_json(hi) + "}";
+        accessors += ",{\"bufferView\":" + std::to_string(base + 1) +
+                     ",\"componentType\":5126,\"count\":" + count + ",\"type\":\"VEC3\"}";
+        accessors += ",{\"bufferView\":" + std::to_string(base + 2) +
+                     ",\"componentType\":5123,\"count\":" + std::to_string(a.indices.size()) +
+                     ",\"type\":\"SCALAR\"}";
+        if (p > 0) mesh_primitives += ",";
+        mesh_primitives += "{\"attributes\":{\"POSITION\":" + std::to_string(base) +
+                           ",\"NORMAL\":" + std::to_string(base + 1) + "},\"indices\":" +
+                           std::to_string(base + 2) + ",\"material\":" + std::to_string(p) + "}";
+    }
+    std::string buffer_views;
+    for (std::size_t i = 0; i < views.size(); ++i) {
+        if (i > 0) buffer_views += ",";
+        buffer_views += "{\"buffer\":0,\"byteOffset\":" + std::to_string(views[i].offset) +
+                        ",\"byteLength\":" + std::to_string(views[i].length) +
+                        ",\"target\":" + std::to_string(views[i].target) + "}";
+    }
+    std::string json =
+        "{\"asset\":{\"version\":\"2.0\",\"generator\":\"impossible tools/make_glb\"},"
+        "\"scene\":0,\"scenes\":[{\"nodes\":[0]}],"
+        "\"nodes\":[{\"name\":\"chair\",\"mesh\":0}],"
+        "\"meshes\":[{\"name\":\"chair\",\"primitives\":[" + mesh_primitives + "]}],"
+        "\"materials\":["
+        "{\"name\":\"wood\",\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.55,0.35,0.2,1],"
+        "\"metallicFactor\":0,\"roughnessFactor\":0.8}},"
+        "{\"name\":\"fabric\",\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.7,0.12,0.1,1],"
+        "\"metallicFactor\":0,\"roughnessFactor\":1}}],"
+        "\"accessors\":[" + accessors + "],"
+        "\"bufferViews\":[" + buffer_views + "],"
+        "\"buffers\":[{\"byteLength\":" + std::to_string(bin.size()) + "}]}";
+    while (json.size() % 4 != 0) json += ' ';  // chunks are 4-byte aligned
+
+    std::vector<unsigned char> glb;
+    const auto total = static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + bin.size());
+    append_u32(glb, 0x46546C67);  // "glTF"
+    append_u32(glb, 2);
+    append_u32(glb, total);
+    append_u32(glb, static_cast<std::uint32_t>(json.size()));
+    append_u32(glb, 0x4E4F534A);  // "JSON"
+    glb.insert(glb.end(), json.begin(), json.end());
+    append_u32(glb, static_cast<std::uint32_t>(bin.size()));
+    append_u32(glb, 0x004E4942);  // "BIN\0"
+    glb.insert(glb.end(), bin.begin(), bin.end());
+    return glb;
+}
+
+}  // namespace impossible::tools
