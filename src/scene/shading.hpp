@@ -20,8 +20,8 @@ namespace impossible::scene {
 
 // Direction towards the light (unit): from above, slightly from +X and +Z.
 inline const glm::dvec3 kLightDir = glm::normalize(glm::dvec3(0.3, 0.9, 0.4));
-inline constexpr double kAmbient = 0.35;
-inline constexpr double kDiffuse = 0.65;
+inline constexpr double kAmbient = 0.45;
+inline constexpr double kDiffuse = 0.55;
 inline constexpr double kCheckerDark = 0.75;
 
 // What a pixel shows when the recursion limit is reached (id 255).

@@ -1,0 +1,49 @@
+// build_scene: rooms first (each room's faces then its props, one contiguous
+// index range per cell), then every portal's box (front range, inner range).
+#include <optional>
+#include <type_traits>
+#include <variant>
+
+#include "scene/box_mesh.hpp"
+#include "scene/mesh_writer.hpp"
+#include "scene/portal_box.hpp"
+#include "scene/room_mesh.hpp"
+#include "scene/scene.hpp"
+
+namespace impossible::scene {
+
+Scene build_scene(const layout::Layout& layout) {
+    Scene scene;
+    MeshWriter out{scene};
+    // Fronts of portals that are holes in their room's faces, set while the
+    // room is built so that they share the wall's vertices.
+    std::vector<std::optional<FrontGrid>> fronts(layout.portals.size());
+
+    scene.cells.reserve(layout.rooms.size());
+    for (std::size_t r = 0; r < layout.rooms.size(); ++r) {
+        const std::uint32_t first = out.index_count();
+        append_room_faces(out, layout, static_cast<int>(r), fronts);
+        for (const layout::Prop& prop : layout.rooms[r].props) {
+            std::visit(
+                [&](const auto& p) {
+                    if constexpr (std::is_same_v<std::decay_t<decltype(p)>, layout::BoxProp>) {
+                        append_box_prop(out, p);
+                    } else {
+                        append_gltf_prop(out, p);
+                    }
+                },
+                prop);
+        }
+        scene.cells.push_back(out.range_since(first));
+    }
+
+    scene.portals.reserve(layout.portals.size());
+    for (std::size_t p = 0; p < layout.portals.size(); ++p) {
+        const math::PortalRect& rect = layout.portals[p].rect;
+        const FrontGrid front = fronts[p] ? *fronts[p] : corner_front(rect);
+        scene.portals.push_back(append_portal_box(out, rect, front));
+    }
+    return scene;
+}
+
+}  // namespace impossible::scene

@@ -1,0 +1,66 @@
+// Appends vertices and triangles to a Scene: the building block shared by the
+// parts of build_scene (room faces, props, portal boxes).
+//
+// Positions arrive as float already (vertices that several surfaces share must
+// be bitwise equal, so callers convert them once); normals and colours are
+// computed in double and converted here.
+#pragma once
+
+#include <cassert>
+#include <cstdint>
+#include <limits>
+
+#include <glm/vec3.hpp>
+
+#include "scene/scene.hpp"
+
+namespace impossible::scene {
+
+struct MeshWriter {
+    Scene& scene;
+
+    std::uint32_t vertex(const glm::vec3& position, const glm::dvec3& normal,
+                         const glm::dvec3& color, double checker) {
+        assert(scene.vertices.size() < std::numeric_limits<std::uint32_t>::max());
+        scene.vertices.push_back(
+            Vertex{position, glm::vec3(normal), glm::vec3(color), static_cast<float>(checker)});
+        return static_cast<std::uint32_t>(scene.vertices.size() - 1);
+    }
+
+    void triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        scene.indices.insert(scene.indices.end(), {a, b, c});
+    }
+
+    std::uint32_t index_count() const {
+        assert(scene.indices.size() <= std::numeric_limits<std::uint32_t>::max());
+        return static_cast<std::uint32_t>(scene.indices.size());
+    }
+
+    // The indices written since `first` (an earlier index_count()).
+    IndexRange range_since(std::uint32_t first) const { return {first, index_count() - first}; }
+};
+
+// The in-plane axes (a, b) of a plane with normal ±e_axis, ordered so that
+// e_a × e_b is the normal: a rectangle walked (a0,b0) → (a1,b0) → (a1,b1) →
+// (a0,b1) is then counter-clockwise seen from the normal's side.
+struct PlaneAxes {
+    int a = 0;
+    int b = 0;
+};
+
+inline PlaneAxes plane_axes(int axis, bool positive) {
+    const int next = (axis + 1) % 3;  // cyclic: x → (y, z), y → (z, x), z → (x, y)
+    const int last = (axis + 2) % 3;
+    return positive ? PlaneAxes{next, last} : PlaneAxes{last, next};
+}
+
+// A point of that plane from its in-plane coordinates, in float.
+inline glm::vec3 plane_point(int axis, float plane, PlaneAxes in, float a, float b) {
+    glm::vec3 p(0.0f);
+    p[axis] = plane;
+    p[in.a] = a;
+    p[in.b] = b;
+    return p;
+}
+
+}  // namespace impossible::scene

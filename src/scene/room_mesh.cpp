@@ -1,0 +1,211 @@
+#include "scene/room_mesh.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include <glm/common.hpp>
+#include <glm/vec2.hpp>
+
+#include "scene/face_slabs.hpp"
+
+namespace impossible::scene {
+
+namespace {
+
+// A rectangle whose corners all lie within this of its bounding rectangle's
+// corners counts as axis-aligned (below float resolution at room scale).
+constexpr double kAlignTolerance = 1e-6;
+
+struct FaceFrame {
+    int axis = 0;          // the normal's axis
+    double plane = 0.0;    // the face's coordinate on that axis
+    bool positive = true;  // the normal into the room is +e_axis
+    PlaneAxes in;          // e_a × e_b = normal into the room
+};
+
+FaceFrame face_frame(const layout::Room& room, int face) {
+    static constexpr std::array<int, layout::kFaceCount> kAxis = {1, 1, 0, 0, 2, 2};
+    FaceFrame f;
+    f.axis = kAxis[static_cast<std::size_t>(face)];
+    f.positive = face % 2 == 0;  // floor, -x and -z lie at the minimum and face +axis
+    f.plane = f.positive ? room.min[f.axis] : room.max[f.axis];
+    f.in = plane_axes(f.axis, f.positive);
+    return f;
+}
+
+glm::dvec3 inward_normal(const FaceFrame& f) {
+    glm::dvec3 n(0.0);
+    n[f.axis] = f.positive ? 1.0 : -1.0;
+    return n;
+}
+
+// A portal that is a hole in a face, in the face's (a, b) coordinates.
+struct FaceHole {
+    int portal = -1;
+    std::array<glm::dvec2, 4> corners;  // box_corners' front corners
+    glm::dvec2 lo{0.0}, hi{0.0};        // bounding rectangle, clamped to the face
+    bool aligned = true;
+};
+
+FaceHole make_hole(const layout::Room& room, const FaceFrame& f, int portal,
+                   const math::PortalRect& rect) {
+    math::dvec3 c[8];
+    math::box_corners(rect, c);
+    FaceHole h;
+    h.portal = portal;
+    const glm::dvec2 face_lo(room.min[f.in.a], room.min[f.in.b]);
+    const glm::dvec2 face_hi(room.max[f.in.a], room.max[f.in.b]);
+    h.lo = glm::dvec2(std::numeric_limits<double>::infinity());
+    h.hi = -h.lo;
+    for (std::size_t k = 0; k < 4; ++k) {
+        h.corners[k] = glm::clamp(glm::dvec2(c[k][f.in.a], c[k][f.in.b]), face_lo, face_hi);
+        h.lo = glm::min(h.lo, h.corners[k]);
+        h.hi = glm::max(h.hi, h.corners[k]);
+    }
+    const auto near = [](double x, double a, double b) {
+        return std::abs(x - a) <= kAlignTolerance || std::abs(x - b) <= kAlignTolerance;
+    };
+    for (const glm::dvec2& p : h.corners) {
+        h.aligned = h.aligned && near(p.x, h.lo.x, h.hi.x) && near(p.y, h.lo.y, h.hi.y);
+    }
+    return h;
+}
+
+std::size_t line_index(const std::vector<float>& lines, double value) {
+    const auto it = std::lower_bound(lines.begin(), lines.end(), static_cast<float>(value));
+    assert(it != lines.end() && *it == static_cast<float>(value));
+    return static_cast<std::size_t>(it - lines.begin());
+}
+
+using Lines = std::array<std::vector<float>, 3>;
+
+// One face on the room's grid; fills the fronts of its holes.
+void append_grid_face(MeshWriter& out, const layout::Room& room, int face, const Lines& lines,
+                      const std::vector<FaceHole>& holes,
+                      std::vector<std::optional<FrontGrid>>& fronts) {
+    const FaceFrame f = face_frame(room, face);
+    const std::vector<float>& as = lines[static_cast<std::size_t>(f.in.a)];
+    const std::vector<float>& bs = lines[static_cast<std::size_t>(f.in.b)];
+    const float plane = static_cast<float>(f.plane);
+    const auto point = [&](std::size_t i, std::size_t j) {
+        return plane_point(f.axis, plane, f.in, as[i], bs[j]);
+    };
+    const std::size_t na = as.size(), nb = bs.size();
+    std::vector<char> open((na - 1) * (nb - 1), 1);  // cell (i, j) at [j * (na - 1) + i]
+
+    for (const FaceHole& h : holes) {
+        const std::size_t i0 = line_index(as, h.lo.x), i1 = line_index(as, h.hi.x);
+        const std::size_t j0 = line_index(bs, h.lo.y), j1 = line_index(bs, h.hi.y);
+        for (std::size_t j = j0; j < j1; ++j) {
+            for (std::size_t i = i0; i < i1; ++i) open[j * (na - 1) + i] = 0;
+        }
+        // The portal's right and up along the face's axes, from its corners.
+        const glm::dvec2 along_r = h.corners[1] - h.corners[0];
+        const glm::dvec2 along_u = h.corners[3] - h.corners[0];
+        const bool r_on_a = std::abs(along_r.x) >= std::abs(along_r.y);
+        const bool r_up = (r_on_a ? along_r.x : along_r.y) > 0.0;  // r along +axis
+        const bool u_up = (r_on_a ? along_u.y : along_u.x) > 0.0;
+        const std::size_t r_lo = r_on_a ? i0 : j0, r_hi = r_on_a ? i1 : j1;
+        const std::size_t u_lo = r_on_a ? j0 : i0, u_hi = r_on_a ? j1 : i1;
+        FrontGrid g;
+        g.cols = static_cast<int>(r_hi - r_lo + 1);
+        g.rows = static_cast<int>(u_hi - u_lo + 1);
+        for (int j = 0; j < g.rows; ++j) {
+            for (int i = 0; i < g.cols; ++i) {
+                const std::size_t ri =
+                    r_up ? r_lo + static_cast<std::size_t>(i) : r_hi - static_cast<std::size_t>(i);
+                const std::size_t uj =
+                    u_up ? u_lo + static_cast<std::size_t>(j) : u_hi - static_cast<std::size_t>(j);
+                g.points.push_back(r_on_a ? point(ri, uj) : point(uj, ri));
+            }
+        }
+        fronts[static_cast<std::size_t>(h.portal)] = std::move(g);
+    }
+
+    const glm::dvec3 normal = inward_normal(f);
+    const glm::dvec3& color = room.face_color[static_cast<std::size_t>(face)];
+    constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+    std::vector<std::uint32_t> ids(na * nb, kNone);  // made when first used
+    const auto id = [&](std::size_t i, std::size_t j) {
+        std::uint32_t& v = ids[j * na + i];
+        if (v == kNone) v = out.vertex(point(i, j), normal, color, room.checker);
+        return v;
+    };
+    for (std::size_t j = 0; j + 1 < nb; ++j) {
+        for (std::size_t i = 0; i + 1 < na; ++i) {
+            if (!open[j * (na - 1) + i]) continue;
+            out.triangle(id(i, j), id(i + 1, j), id(i + 1, j + 1));
+            out.triangle(id(i, j), id(i + 1, j + 1), id(i, j + 1));
+        }
+    }
+}
+
+}  // namespace
+
+void append_room_faces(MeshWriter& out, const layout::Layout& layout, int room_index,
+                       std::vector<std::optional<FrontGrid>>& fronts) {
+    const layout::Room& room = layout.rooms[static_cast<std::size_t>(room_index)];
+    std::array<std::vector<FaceHole>, layout::kFaceCount> holes;
+    std::array<bool, layout::kFaceCount> slabs{};  // faces with a hole that is not axis-aligned
+    for (std::size_t p = 0; p < layout.portals.size(); ++p) {
+        const layout::Portal& portal = layout.portals[p];
+        if (portal.room != room_index || portal.hole_face < 0) continue;
+        const int fi = portal.hole_face;
+        assert(fi < layout::kFaceCount);
+        const FaceHole h = make_hole(room, face_frame(room, fi), static_cast<int>(p), portal.rect);
+        slabs[static_cast<std::size_t>(fi)] = slabs[static_cast<std::size_t>(fi)] || !h.aligned;
+        holes[static_cast<std::size_t>(fi)].push_back(h);
+    }
+
+    // The grid lines every face shares: the room's bounds and the hole edges.
+    Lines lines;
+    for (int axis = 0; axis < 3; ++axis) {
+        lines[static_cast<std::size_t>(axis)] = {static_cast<float>(room.min[axis]),
+                                                 static_cast<float>(room.max[axis])};
+    }
+    for (int face = 0; face < layout::kFaceCount; ++face) {
+        if (slabs[static_cast<std::size_t>(face)]) continue;
+        const PlaneAxes in = face_frame(room, face).in;
+        for (const FaceHole& h : holes[static_cast<std::size_t>(face)]) {
+            for (const double v : {h.lo.x, h.hi.x})
+                lines[static_cast<std::size_t>(in.a)].push_back(static_cast<float>(v));
+            for (const double v : {h.lo.y, h.hi.y})
+                lines[static_cast<std::size_t>(in.b)].push_back(static_cast<float>(v));
+        }
+    }
+    for (std::vector<float>& l : lines) {
+        std::sort(l.begin(), l.end());
+        l.erase(std::unique(l.begin(), l.end()), l.end());
+    }
+
+    for (int face = 0; face < layout::kFaceCount; ++face) {
+        const auto fi = static_cast<std::size_t>(face);
+        if (!slabs[fi]) {
+            append_grid_face(out, room, face, lines, holes[fi], fronts);
+            continue;
+        }
+        const FaceFrame f = face_frame(room, face);
+        SlabFace s;
+        s.axis = f.axis;
+        s.plane = f.plane;
+        s.in = f.in;
+        s.lo = {room.min[f.in.a], room.min[f.in.b]};
+        s.hi = {room.max[f.in.a], room.max[f.in.b]};
+        s.normal = inward_normal(f);
+        s.color = room.face_color[fi];
+        s.checker = room.checker;
+        for (const float v : lines[static_cast<std::size_t>(f.in.a)]) s.cuts.push_back(v);
+        for (const FaceHole& h : holes[fi]) {
+            s.holes.push_back(h.corners);
+            fronts[static_cast<std::size_t>(h.portal)] =
+                corner_front(layout.portals[static_cast<std::size_t>(h.portal)].rect);
+        }
+        append_face_slabs(out, s);
+    }
+}
+
+}  // namespace impossible::scene

@@ -1,0 +1,120 @@
+// The walker (see walk.hpp).
+#include "scene/walk.hpp"
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "math/crossing.hpp"
+#include "math/portal.hpp"
+#include "math/rigid.hpp"
+
+namespace impossible::scene {
+
+namespace {
+
+bool valid_index(int i, std::size_t n) { return i >= 0 && static_cast<std::size_t>(i) < n; }
+
+math::dvec3 apply(const math::dmat4& m, const math::dvec3& p) {
+    return math::dvec3(m * math::dvec4(p, 1.0));
+}
+
+}  // namespace
+
+PortalLinks link_portals(const layout::Layout& layout) {
+    PortalLinks links;
+    links.transfer.assign(layout.portals.size(), math::dmat4(1.0));
+    links.room_portals.resize(layout.rooms.size());
+    for (std::size_t i = 0; i < layout.portals.size(); ++i) {
+        const layout::Portal& p = layout.portals[i];
+        if (!valid_index(p.room, layout.rooms.size()) ||
+            !valid_index(p.target, layout.portals.size()) ||
+            !valid_index(layout.portals[p.target].room, layout.rooms.size()))
+            continue;
+        links.transfer[i] = math::transfer_matrix(p.rect, layout.portals[p.target].rect);
+        links.room_portals[p.room].push_back(static_cast<int>(i));
+    }
+    return links;
+}
+
+Walker::Walker(const layout::Layout& layout) : Walker(layout, layout.start.room) {}
+
+Walker::Walker(const layout::Layout& layout, int room)
+    : layout_(&layout), links_(link_portals(layout)), room_(room) {
+    head_ = layout.start.position;
+    physical_pose_.position = layout.start.position;
+    physical_pose_.yaw_deg = layout.start.yaw_deg;
+    physical_rotation_ = math::head_rotation(physical_pose_);
+}
+
+std::vector<int> Walker::step(const math::HeadPose& physical) {
+    std::vector<int> passed;
+    physical_pose_ = physical;
+    physical_rotation_ = math::head_rotation(physical);
+    math::dvec3 end = apply(w_, physical.position);
+    if (!started_) {
+        started_ = true;
+        head_ = end;
+        return passed;
+    }
+
+    math::dvec3 begin = head_;
+    int exclude = -1;  // the portal just come out of
+    while (static_cast<int>(passed.size()) < kMaxCrossingsPerFrame &&
+           valid_index(room_, links_.room_portals.size())) {
+        int best = -1;
+        math::SegmentCrossing best_crossing;
+        for (int i : links_.room_portals[room_]) {
+            if (i == exclude) continue;
+            const auto c = math::segment_crossing(layout_->portals[i].rect, begin, end);
+            // Strict '<': on an exact tie the portal listed first keeps it.
+            if (c && (best < 0 || c->t < best_crossing.t)) {
+                best = i;
+                best_crossing = *c;
+            }
+        }
+        if (best < 0) break;
+
+        const int target = layout_->portals[best].target;
+        const math::PortalRect& out = layout_->portals[target].rect;
+        teleport(best);
+        room_ = layout_->portals[target].room;
+        begin = apply(links_.transfer[best], best_crossing.point);
+        end = apply(w_, physical.position);
+        // Strictly in front of B, whatever rounding did (a couple of rounds
+        // at most: the first lands within a few ulps of the target distance).
+        const double margin = 1e-9 * (1.0 + glm::length(out.center));
+        for (int k = 0; k < 4; ++k) {
+            const double d = math::signed_distance(out, end);
+            if (d > 0.0) break;
+            w_[3] += math::dvec4((margin - d) * out.normal, 0.0);
+            end = apply(w_, physical.position);
+        }
+        passed.push_back(best);
+        exclude = target;
+    }
+    head_ = end;
+    return passed;
+}
+
+void Walker::teleport(int portal) {
+    if (!history_.empty() && layout_->portals[history_.back().portal].target == portal) {
+        w_ = history_.back().w_before;  // back through the pair just passed
+        history_.pop_back();
+        return;
+    }
+    history_.push_back(Passed{portal, w_});
+    if (history_.size() > kHistoryLength) history_.pop_front();
+    w_ = math::orthonormalize_rigid(links_.transfer[portal] * w_);
+}
+
+math::dmat3 Walker::rotation() const { return math::dmat3(w_) * physical_rotation_; }
+
+math::dvec3 Walker::forward() const { return math::forward_of(rotation()); }
+
+std::array<math::Eye, 2> Walker::eyes(double ipd) const {
+    const auto e = math::eyes_of(physical_pose_, ipd);
+    return {math::transform_eye(w_, e[0]), math::transform_eye(w_, e[1])};
+}
+
+}  // namespace impossible::scene
