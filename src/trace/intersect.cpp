@@ -1,0 +1,118 @@
+#include "trace/intersect.hpp"
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+namespace impossible::trace {
+
+namespace {
+
+dvec3 axis_normal(int axis, double sign) {
+    dvec3 n(0.0);
+    n[axis] = sign;
+    return n;
+}
+
+// Keeps the hit (t, normal) in `best` when it is nearer.
+void keep_nearest(std::optional<SurfaceHit>& best, double t, const dvec3& normal) {
+    if (!best || t < best->t) best = SurfaceHit{t, normal};
+}
+
+}  // namespace
+
+std::optional<double> hit_axis_rect(const AxisRect& rect, const dvec3& origin, const dvec3& dir) {
+    const double along = dir[rect.axis];
+    if (!(along * rect.sign < 0.0)) return std::nullopt;  // seen from behind, or edge-on
+    const double t = (rect.coord - origin[rect.axis]) / along;
+    if (!(t > 0.0)) return std::nullopt;
+    const dvec3 p = origin + t * dir;
+    for (int a = 0; a < 3; ++a) {
+        if (a == rect.axis) continue;
+        if (!(p[a] >= rect.lo[a] && p[a] <= rect.hi[a])) return std::nullopt;
+    }
+    return t;
+}
+
+std::optional<SurfaceHit> hit_room_face(const RoomFace& face, const Scene& scene, const dvec3& origin,
+                                        const dvec3& dir, const ClipPlane& clip) {
+    const std::optional<double> t = hit_axis_rect(face.rect, origin, dir);
+    if (!t) return std::nullopt;
+    const dvec3 p = origin + *t * dir;
+    for (int index : face.holes) {
+        const ScenePortal& portal = scene.portals[index];
+        const dvec3 v = p - portal.rect.center;
+        if (std::abs(glm::dot(v, portal.right)) <= 0.5 * portal.rect.width &&
+            std::abs(glm::dot(v, portal.rect.up)) <= 0.5 * portal.rect.height)
+            return std::nullopt;  // through the hole: the portal's front face is there instead
+    }
+    if (!clip.keeps(p)) return std::nullopt;
+    return SurfaceHit{*t, axis_normal(face.rect.axis, face.rect.sign)};
+}
+
+std::optional<SurfaceHit> hit_prop_box(const PropBox& box, const dvec3& origin, const dvec3& dir,
+                                       const ClipPlane& clip) {
+    // The six faces with outward normals; of a convex box only the face where
+    // the ray enters faces the ray.
+    std::optional<SurfaceHit> best;
+    for (int axis = 0; axis < 3; ++axis) {
+        for (double sign : {-1.0, 1.0}) {
+            const AxisRect face{axis, sign < 0.0 ? box.min[axis] : box.max[axis], sign, box.min, box.max};
+            const std::optional<double> t = hit_axis_rect(face, origin, dir);
+            if (t && clip.keeps(origin + *t * dir)) keep_nearest(best, *t, axis_normal(axis, sign));
+        }
+    }
+    return best;
+}
+
+std::optional<SurfaceHit> hit_triangle(const PropTriangle& tri, const dvec3& origin, const dvec3& dir,
+                                       const ClipPlane& clip) {
+    const dvec3 e1 = tri.position[1] - tri.position[0];
+    const dvec3 e2 = tri.position[2] - tri.position[0];
+    const dvec3 geometric = glm::cross(e1, e2);  // towards the counter-clockwise side
+    if (!(glm::dot(dir, geometric) < 0.0)) return std::nullopt;  // back face, edge-on or degenerate
+    // Möller–Trumbore: barycentrics (u, v) of vertices 1 and 2, and t.
+    const dvec3 pvec = glm::cross(dir, e2);
+    const double inv_det = 1.0 / glm::dot(e1, pvec);  // det = -dot(dir, geometric) > 0
+    const dvec3 tvec = origin - tri.position[0];
+    const double u = glm::dot(tvec, pvec) * inv_det;
+    if (!(u >= 0.0 && u <= 1.0)) return std::nullopt;
+    const dvec3 qvec = glm::cross(tvec, e1);
+    const double v = glm::dot(dir, qvec) * inv_det;
+    if (!(v >= 0.0 && u + v <= 1.0)) return std::nullopt;
+    const double t = glm::dot(e2, qvec) * inv_det;
+    if (!(t > 0.0) || !clip.keeps(origin + t * dir)) return std::nullopt;
+    const dvec3 blend = (1.0 - u - v) * tri.normal[0] + u * tri.normal[1] + v * tri.normal[2];
+    const double length = glm::length(blend);
+    return SurfaceHit{t, length > 0.0 ? blend / length : glm::normalize(geometric)};
+}
+
+std::optional<SurfaceHit> hit_portal_box(const ScenePortal& portal, const dvec3& origin, const dvec3& dir,
+                                         const ClipPlane& clip) {
+    // Work in the portal's frame, where the box is [-w/2, w/2] × [-h/2, h/2] × [-depth, 0]
+    // and the frame's axes are (right, up, normal). t is the same in both frames.
+    const math::PortalRect& r = portal.rect;
+    const dvec3 lo = dvec3(portal.to_local * dvec4(origin, 1.0));
+    const dvec3 ld = dmat3(portal.to_local) * dir;
+    const double hw = 0.5 * r.width, hh = 0.5 * r.height;
+    const dvec3 frame[3] = {portal.right, r.up, r.normal};
+
+    std::optional<SurfaceHit> best;
+    auto try_face = [&](int axis, double coord, double sign, const dvec3& min, const dvec3& max) {
+        const std::optional<double> t = hit_axis_rect(AxisRect{axis, coord, sign, min, max}, lo, ld);
+        if (t && clip.keeps(origin + *t * dir)) keep_nearest(best, *t, sign * frame[axis]);
+    };
+    const dvec3 box_min(-hw, -hh, -r.depth), box_max(hw, hh, 0.0);
+    try_face(2, 0.0, 1.0, box_min, box_max);  // the front rectangle, facing +n
+    if (math::in_column(r, origin)) {
+        // Inner faces, facing into the box.
+        try_face(0, hw, -1.0, box_min, box_max);
+        try_face(0, -hw, 1.0, box_min, box_max);
+        try_face(1, hh, -1.0, box_min, box_max);
+        try_face(1, -hh, 1.0, box_min, box_max);
+        try_face(2, -r.depth, 1.0, box_min, box_max);
+    }
+    return best;
+}
+
+}  // namespace impossible::trace

@@ -1,0 +1,104 @@
+#include "trace/trace_scene.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <variant>
+
+#include <glm/geometric.hpp>
+
+namespace impossible::trace {
+
+AxisRect room_face_rect(const dvec3& room_min, const dvec3& room_max, layout::Face face) {
+    AxisRect r;
+    r.lo = room_min;
+    r.hi = room_max;
+    switch (face) {
+        case layout::Face::Floor: r.axis = 1; r.coord = room_min.y; r.sign = 1.0; break;
+        case layout::Face::Ceiling: r.axis = 1; r.coord = room_max.y; r.sign = -1.0; break;
+        case layout::Face::NegX: r.axis = 0; r.coord = room_min.x; r.sign = 1.0; break;
+        case layout::Face::PosX: r.axis = 0; r.coord = room_max.x; r.sign = -1.0; break;
+        case layout::Face::NegZ: r.axis = 2; r.coord = room_min.z; r.sign = 1.0; break;
+        case layout::Face::PosZ: r.axis = 2; r.coord = room_max.z; r.sign = -1.0; break;
+    }
+    return r;
+}
+
+bool cuts_hole(const AxisRect& face, const math::PortalRect& rect) {
+    if (!(rect.normal[face.axis] * face.sign > 0.5)) return false;  // not facing into the room
+    dvec3 corners[8];
+    math::box_corners(rect, corners);  // the first four are the rectangle's
+    const double eps = kHolePlaneTolerance;
+    for (int k = 0; k < 4; ++k) {
+        const dvec3& c = corners[k];
+        if (std::abs(c[face.axis] - face.coord) > eps) return false;
+        for (int a = 0; a < 3; ++a) {
+            if (a == face.axis) continue;
+            if (c[a] < face.lo[a] - eps || c[a] > face.hi[a] + eps) return false;
+        }
+    }
+    return true;
+}
+
+namespace {
+
+void add_prop(SceneRoom& room, const layout::Prop& prop) {
+    if (const auto* box = std::get_if<layout::BoxProp>(&prop)) {
+        room.boxes.push_back({box->min, box->max, box->color});
+        return;
+    }
+    const auto& model = std::get<layout::GltfProp>(prop);
+    for (const layout::ModelTriangle& t : model.triangles) {
+        PropTriangle placed;
+        for (int k = 0; k < 3; ++k) {
+            placed.position[k] = layout::place_model_point(model, t.position[k]);
+            placed.normal[k] = layout::place_model_normal(model, t.normal[k]);
+        }
+        placed.color = t.color;
+        room.triangles.push_back(placed);
+    }
+}
+
+}  // namespace
+
+Scene prepare_scene(const layout::Layout& layout) {
+    Scene scene;
+    const int room_count = static_cast<int>(layout.rooms.size());
+    const int portal_count = static_cast<int>(layout.portals.size());
+    for (const layout::Room& room : layout.rooms) {
+        SceneRoom r;
+        for (int f = 0; f < layout::kFaceCount; ++f) {
+            r.faces[f].rect = room_face_rect(room.min, room.max, static_cast<layout::Face>(f));
+            r.faces[f].color = room.face_color[f];
+        }
+        for (const layout::Prop& prop : room.props) add_prop(r, prop);
+        r.checker = room.checker;
+        scene.rooms.push_back(std::move(r));
+    }
+    for (int i = 0; i < portal_count; ++i) {
+        const layout::Portal& p = layout.portals[i];
+        if (p.room < 0 || p.room >= room_count || p.target < 0 || p.target >= portal_count)
+            throw std::invalid_argument("portal '" + p.id + "' has no valid room or target");
+        ScenePortal sp;
+        sp.rect = p.rect;
+        sp.right = math::portal_right(p.rect);
+        sp.room = p.room;
+        sp.target = p.target;
+        sp.to_local = math::portal_frame_inverse(p.rect);
+        sp.transfer = math::transfer_matrix(p.rect, layout.portals[p.target].rect);
+        sp.clip_tolerance = 1e-9 * (1.0 + glm::length(p.rect.center));
+        scene.portals.push_back(sp);
+
+        SceneRoom& room = scene.rooms[p.room];
+        room.portals.push_back(i);
+        for (RoomFace& face : room.faces) {
+            if (cuts_hole(face.rect, p.rect)) {
+                face.holes.push_back(i);
+                break;  // a rectangle lies in one face's plane at most
+            }
+        }
+    }
+    return scene;
+}
+
+}  // namespace impossible::trace

@@ -1,0 +1,96 @@
+// The reference tracer's own view of a layout: per room, the surfaces a ray
+// can hit, in double precision and in the layout's coordinates, plus each
+// portal's frame and transfer matrix. Built once from a layout::Layout and
+// read-only afterwards (safe to share between threads).
+//
+// Deliberately independent of the rasteriser: nothing here comes from
+// src/scene's meshes or src/render. Surfaces are analytic (axis-aligned
+// rectangles, boxes, triangles), and the holes that portals cut in room faces
+// are found again here from the spec's rule rather than taken from the loader.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "layout/layout.hpp"
+#include "math/conventions.hpp"
+#include "math/portal.hpp"
+
+namespace impossible::trace {
+
+using math::dmat3;
+using math::dmat4;
+using math::dvec3;
+using math::dvec4;
+
+// A rectangle in the plane p[axis] == coord, spanning [lo, hi] on the other
+// two axes (lo[axis] and hi[axis] are not read). It is visible only from the
+// side its normal points to: normal = sign · unit(axis), sign = ±1.
+struct AxisRect {
+    int axis = 0;
+    double coord = 0.0;
+    double sign = 1.0;
+    dvec3 lo{0.0};
+    dvec3 hi{0.0};
+};
+
+// A face of a room, seen from inside (its normal points into the room).
+struct RoomFace {
+    AxisRect rect;
+    dvec3 color{0.8};
+    std::vector<int> holes;  // portals (indices into Scene::portals) cutting a hole here
+};
+
+// A prop box, visible from outside.
+struct PropBox {
+    dvec3 min{0.0};
+    dvec3 max{0.0};
+    dvec3 color{0.8};
+};
+
+// A glTF triangle placed in the layout: counter-clockwise seen from its front.
+struct PropTriangle {
+    std::array<dvec3, 3> position;
+    std::array<dvec3, 3> normal;  // unit vertex normals
+    dvec3 color{0.8};
+};
+
+struct ScenePortal {
+    math::PortalRect rect;
+    dvec3 right{0.0};          // u × n
+    int room = -1;             // the room it belongs to
+    int target = -1;           // the paired portal
+    dmat4 to_local{1.0};       // layout → portal frame (x right, y up, z normal)
+    dmat4 transfer{1.0};       // M_AB, onto the target portal
+    double clip_tolerance = 0.0;  // 1e-9 · (1 + |centre|): "strictly in front" of this plane
+};
+
+struct SceneRoom {
+    std::array<RoomFace, layout::kFaceCount> faces;  // in layout::Face order
+    std::vector<PropBox> boxes;
+    std::vector<PropTriangle> triangles;
+    std::vector<int> portals;  // indices into Scene::portals
+    double checker = 0.0;      // checker side for the faces, 0: plain
+};
+
+struct Scene {
+    std::vector<SceneRoom> rooms;
+    std::vector<ScenePortal> portals;
+};
+
+// Corners of a hole may be this far from the face's plane (layout-format.md).
+inline constexpr double kHolePlaneTolerance = 1e-4;
+
+// The face `face` of a room box, normal inwards.
+AxisRect room_face_rect(const dvec3& room_min, const dvec3& room_max, layout::Face face);
+
+// Whether the portal's rectangle cuts a hole in the face: all four corners
+// within kHolePlaneTolerance of the face's plane and inside the face (same
+// tolerance), and the normal pointing into the room.
+bool cuts_hole(const AxisRect& face, const math::PortalRect& rect);
+
+// Builds the tracer's scene. The layout must be valid (as the loader returns
+// it); portal targets and rooms out of range throw std::invalid_argument.
+Scene prepare_scene(const layout::Layout& layout);
+
+}  // namespace impossible::trace

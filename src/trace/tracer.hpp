@@ -1,0 +1,76 @@
+// The CPU reference ray tracer (cli.md `trace`): double precision, analytic
+// intersections, rays followed through portals exactly as layout-format.md,
+// "What a pixel shows", describes. It is the accuracy oracle for the OpenGL
+// rasteriser and shares with it only the layout, src/math and the shading
+// model (scene/shading.hpp). See docs/tracer.md.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "layout/layout.hpp"
+#include "math/pose.hpp"
+#include "trace/trace_scene.hpp"
+
+namespace impossible::trace {
+
+// Cell ids (layout-format.md, "Cell-id maps").
+inline constexpr std::uint8_t kIdNothing = 0;
+inline constexpr std::uint8_t kIdDepthLimit = 255;
+
+// What one ray shows.
+struct TraceHit {
+    int id = kIdNothing;     // 1 + room index, kIdNothing, or kIdDepthLimit
+    int room = -1;           // the room the ray ended in (-1 when nothing was hit)
+    dvec3 color{0.0};        // linear colour, 0..1
+    int portals_passed = 0;  // portals the ray went through
+    dvec3 point{0.0};        // the final hit, in the layout's coordinates (for the fill:
+                             // the point on the portal the ray could not pass)
+    dvec3 normal{0.0};       // front-facing normal at `point`
+    dvec3 origin{0.0};       // the final (possibly virtual) eye and direction
+    dvec3 dir{0.0};
+};
+
+// Follows the ray from `origin` (an eye in room `room`) along `dir` (any
+// length but not zero), through at most `max_depth` portals. `room` must be a
+// valid room index.
+TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, int room, int max_depth);
+
+struct TraceDesc {
+    math::HeadPose head;
+    int room = 0;  // the room the head is in
+    double ipd = 0.064;
+    double fov_y_deg = 90.0;
+    int eye_width = 1280;
+    int eye_height = 720;
+    int max_depth = 8;
+    int threads = 0;  // 0: std::thread::hardware_concurrency()
+};
+
+// The side-by-side image, laid out like render::Image: left eye in the left
+// half, rows from the top, rgb 3 bytes a pixel, one id byte a pixel.
+struct TraceImage {
+    int width = 0;  // 2 × eye width
+    int height = 0;
+    std::vector<std::uint8_t> rgb;
+    std::vector<std::uint8_t> ids;
+};
+
+// 0..1 → 0..255 as round(clamp(c, 0, 1) · 255).
+std::uint8_t to_byte(double c);
+
+// The direction (in the layout's coordinates, unit length) of pixel (i, j)
+// of an eye image, and the eye it starts from: eye 0 is the left eye.
+struct PixelRay {
+    dvec3 origin{0.0};
+    dvec3 dir{0.0};
+};
+PixelRay pixel_ray(const TraceDesc& desc, int eye, int i, int j);
+
+// Traces every pixel of both eyes. Rows are split across threads; the image
+// does not depend on the thread count. Throws std::invalid_argument for a bad
+// room index, size or negative depth.
+TraceImage trace_frame(const Scene& scene, const TraceDesc& desc);
+TraceImage trace_frame(const layout::Layout& layout, const TraceDesc& desc);
+
+}  // namespace impossible::trace

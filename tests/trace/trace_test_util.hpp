@@ -1,0 +1,91 @@
+// Layouts built in code and hand-written expectations for the tracer tests.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "layout/layout.hpp"
+#include "scene/shading.hpp"
+#include "trace/tracer.hpp"
+
+namespace impossible::trace::test {
+
+using glm::dvec3;
+
+// A room whose six faces have six different colours (so a test can tell which
+// face it sees): face f has colour (0.1 + 0.1·f, tint.y, tint.z).
+inline layout::Room make_room(const std::string& id, dvec3 min, dvec3 max, dvec3 tint = {0.0, 0.5, 0.9}) {
+    layout::Room room;
+    room.id = id;
+    room.min = min;
+    room.max = max;
+    for (int f = 0; f < layout::kFaceCount; ++f) room.face_color[f] = dvec3(0.1 + 0.1 * f, tint.y, tint.z);
+    return room;
+}
+
+inline dvec3 face_color(const layout::Room& room, layout::Face face) {
+    return room.face_color[static_cast<int>(face)];
+}
+
+// A portal of `room` (normal and up unit and orthogonal), target unset.
+inline layout::Portal make_portal(const std::string& id, int room, dvec3 center, dvec3 normal,
+                                  double width = 1.0, double height = 2.0, dvec3 up = {0.0, 1.0, 0.0},
+                                  double depth = 0.25) {
+    layout::Portal p;
+    p.id = id;
+    p.room = room;
+    p.rect.center = center;
+    p.rect.normal = normal;
+    p.rect.up = up;
+    p.rect.width = width;
+    p.rect.height = height;
+    p.rect.depth = depth;
+    return p;
+}
+
+// Appends the two portals and names each as the other's target.
+inline void add_pair(layout::Layout& l, layout::Portal a, layout::Portal b) {
+    const int ia = static_cast<int>(l.portals.size());
+    a.target = ia + 1;
+    b.target = ia;
+    l.portals.push_back(a);
+    l.portals.push_back(b);
+}
+
+// The shading model of scene/shading.hpp written out again by hand (with its
+// constants, which may be tuned), so that a test does not merely repeat the
+// tracer's own call: the test names the surface's base colour, normal and
+// checker square itself.
+inline dvec3 shade_by_hand(dvec3 base, dvec3 normal, bool dark) {
+    const double lambert = std::max(0.0, glm::dot(normal, scene::kLightDir));
+    return base * ((scene::kAmbient + scene::kDiffuse * lambert) * (dark ? scene::kCheckerDark : 1.0));
+}
+
+inline std::array<std::uint8_t, 3> bytes_of(dvec3 c) {
+    std::array<std::uint8_t, 3> out{};
+    for (int k = 0; k < 3; ++k)
+        out[k] = static_cast<std::uint8_t>(std::lround(std::clamp(c[k], 0.0, 1.0) * 255.0));
+    return out;
+}
+
+inline std::array<std::uint8_t, 3> pixel_rgb(const TraceImage& image, int x, int y) {
+    const size_t at = 3 * (static_cast<size_t>(y) * image.width + x);
+    return {image.rgb[at], image.rgb[at + 1], image.rgb[at + 2]};
+}
+
+inline int pixel_id(const TraceImage& image, int x, int y) {
+    return image.ids[static_cast<size_t>(y) * image.width + x];
+}
+
+// Counts the pixels of the id map equal to `id`.
+inline long count_id(const TraceImage& image, int id) {
+    return static_cast<long>(std::count(image.ids.begin(), image.ids.end(), static_cast<std::uint8_t>(id)));
+}
+
+}  // namespace impossible::trace::test
