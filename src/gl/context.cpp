@@ -1,0 +1,53 @@
+#include "gl/context.hpp"
+
+#include "gl/context_backends.hpp"
+#include "gl/gl.hpp"
+
+namespace impossible::gl {
+
+struct ContextImpl {
+    BackendContext backend;
+};
+
+void destroy_context(ContextImpl* impl) { delete impl; }
+
+const char* backend_name(Backend backend) { return backend == Backend::Egl ? "egl" : "osmesa"; }
+
+std::optional<Backend> parse_backend(const std::string& name) {
+    if (name == "egl") return Backend::Egl;
+    if (name == "osmesa") return Backend::OSMesa;
+    return std::nullopt;
+}
+
+ContextResult create_context(Backend backend) {
+    ContextResult out;
+    BackendContext made = backend == Backend::Egl ? create_egl_context() : create_osmesa_context();
+    if (!made.error.empty()) {
+        out.error = made.error;
+        return out;
+    }
+    const int version = gladLoadGL(reinterpret_cast<GLADloadfunc>(made.load));
+    if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < 45) {
+        out.error = std::string(backend_name(backend)) + ": OpenGL 4.5 core functions could not be loaded";
+        return out;
+    }
+    Context context;
+    context.backend = backend;
+    context.renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    context.version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    context.impl.reset(new ContextImpl{std::move(made)});
+    out.context = std::move(context);
+    return out;
+}
+
+ContextResult create_context_with_fallback(std::optional<Backend> requested, std::string* fallback_note) {
+    if (requested) return create_context(*requested);
+    ContextResult egl = create_context(Backend::Egl);
+    if (egl.context) return egl;
+    ContextResult osmesa = create_context(Backend::OSMesa);
+    if (osmesa.context && fallback_note) *fallback_note = egl.error + "; using osmesa";
+    if (!osmesa.context) osmesa.error = egl.error + "; " + osmesa.error;
+    return osmesa;
+}
+
+}  // namespace impossible::gl

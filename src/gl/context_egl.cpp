@@ -1,0 +1,67 @@
+// EGL surfaceless platform (EGL_MESA_platform_surfaceless): a 4.5 core
+// context with no window system and no surface (EGL_KHR_surfaceless_context).
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+
+#include "gl/context_backends.hpp"
+
+namespace impossible::gl {
+namespace {
+
+struct EglState {
+    EGLDisplay display = EGL_NO_DISPLAY;
+    EGLContext context = EGL_NO_CONTEXT;
+};
+
+void destroy(void* p) {
+    auto* s = static_cast<EglState*>(p);
+    if (s->display != EGL_NO_DISPLAY) {
+        eglMakeCurrent(s->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        if (s->context != EGL_NO_CONTEXT) eglDestroyContext(s->display, s->context);
+        eglTerminate(s->display);
+    }
+    delete s;
+}
+
+ProcAddress load(const char* name) { return reinterpret_cast<ProcAddress>(eglGetProcAddress(name)); }
+
+}  // namespace
+
+BackendContext create_egl_context() {
+    BackendContext out;
+    auto get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+        eglGetProcAddress("eglGetPlatformDisplayEXT"));
+    if (!get_platform_display) {
+        out.error = "EGL: eglGetPlatformDisplayEXT is not available";
+        return out;
+    }
+    auto* state = new EglState;
+    out.state = {state, destroy};
+    state->display = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    EGLint major = 0, minor = 0;
+    if (state->display == EGL_NO_DISPLAY || !eglInitialize(state->display, &major, &minor)) {
+        state->display = EGL_NO_DISPLAY;
+        out.error = "EGL: no surfaceless display (EGL_MESA_platform_surfaceless)";
+        return out;
+    }
+    if (!eglBindAPI(EGL_OPENGL_API)) {
+        out.error = "EGL: desktop OpenGL is not available";
+        return out;
+    }
+    const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+                              EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                              EGL_NONE};
+    state->context = eglCreateContext(state->display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attribs);
+    if (state->context == EGL_NO_CONTEXT) {
+        out.error = "EGL: cannot create an OpenGL 4.5 core context";
+        return out;
+    }
+    if (!eglMakeCurrent(state->display, EGL_NO_SURFACE, EGL_NO_SURFACE, state->context)) {
+        out.error = "EGL: cannot make the context current without a surface";
+        return out;
+    }
+    out.load = load;
+    return out;
+}
+
+}  // namespace impossible::gl

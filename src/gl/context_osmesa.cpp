@@ -1,0 +1,46 @@
+// OSMesa: Mesa's off-screen software context, 4.5 core through
+// OSMesaCreateContextAttribs. Its own colour buffer (bottom-up rows) is a
+// 1×1 placeholder: rendering goes to framebuffer objects.
+#include <GL/osmesa.h>
+
+#include "gl/context_backends.hpp"
+
+namespace impossible::gl {
+namespace {
+
+struct OSMesaState {
+    OSMesaContext context = nullptr;
+    unsigned char buffer[4] = {};
+};
+
+void destroy(void* p) {
+    auto* s = static_cast<OSMesaState*>(p);
+    if (s->context) OSMesaDestroyContext(s->context);
+    delete s;
+}
+
+ProcAddress load(const char* name) { return reinterpret_cast<ProcAddress>(OSMesaGetProcAddress(name)); }
+
+}  // namespace
+
+BackendContext create_osmesa_context() {
+    BackendContext out;
+    auto* state = new OSMesaState;
+    out.state = {state, destroy};
+    const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_STENCIL_BITS, 0,
+                           OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 4,
+                           OSMESA_CONTEXT_MINOR_VERSION, 5, 0};
+    state->context = OSMesaCreateContextAttribs(attribs, nullptr);
+    if (!state->context) {
+        out.error = "OSMesa: cannot create an OpenGL 4.5 core context";
+        return out;
+    }
+    if (!OSMesaMakeCurrent(state->context, state->buffer, GL_UNSIGNED_BYTE, 1, 1)) {
+        out.error = "OSMesa: cannot make the context current";
+        return out;
+    }
+    out.load = load;
+    return out;
+}
+
+}  // namespace impossible::gl

@@ -1,0 +1,55 @@
+#include "gl/shader.hpp"
+
+namespace impossible::gl {
+namespace {
+
+std::string info_log(GLuint object, bool is_program) {
+    GLint length = 0;
+    if (is_program) glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
+    else glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<size_t>(length > 0 ? length : 0), '\0');
+    if (length > 0) {
+        if (is_program) glGetProgramInfoLog(object, length, nullptr, log.data());
+        else glGetShaderInfoLog(object, length, nullptr, log.data());
+    }
+    while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
+    return log;
+}
+
+}  // namespace
+
+ProgramResult build_program(const std::vector<ShaderSource>& stages, const std::string& defines) {
+    ProgramResult out;
+    Program program(glCreateProgram());
+    std::vector<Shader> shaders;
+    for (const ShaderSource& stage : stages) {
+        // "#line 1" keeps the driver's line numbers those of the file.
+        const std::string text = "#version 450 core\n" + defines + "\n#line 1\n" + stage.text;
+        Shader shader(glCreateShader(stage.stage));
+        const char* ptr = text.c_str();
+        glShaderSource(shader.get(), 1, &ptr, nullptr);
+        glCompileShader(shader.get());
+        GLint ok = GL_FALSE;
+        glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &ok);
+        if (ok != GL_TRUE) {
+            out.error = stage.name + ": compile error: " + info_log(shader.get(), false);
+            return out;
+        }
+        glAttachShader(program.get(), shader.get());
+        shaders.push_back(std::move(shader));
+    }
+    glLinkProgram(program.get());
+    GLint ok = GL_FALSE;
+    glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        std::string names;
+        for (const ShaderSource& s : stages) names += (names.empty() ? "" : " + ") + s.name;
+        out.error = names + ": link error: " + info_log(program.get(), true);
+        return out;
+    }
+    for (const Shader& s : shaders) glDetachShader(program.get(), s.get());
+    out.program = std::move(program);
+    return out;
+}
+
+}  // namespace impossible::gl
