@@ -1,0 +1,34 @@
+// The shading model of src/scene/shading.hpp (constants injected as defines),
+// plus the cell id of the surface for the id map.
+in vec3 v_position;
+in vec3 v_normal;
+in vec3 v_color;
+in float v_checker;
+
+uniform uint u_cell_id;
+uniform bool u_unshaded;  // portal fill at the recursion limit: flat colour
+
+layout(location = 0) out vec4 o_color;
+layout(location = 1) out uint o_id;
+
+bool checker_dark(vec3 p, vec3 n, float side) {
+    if (side <= 0.0) return false;
+    vec3 a = abs(n);
+    vec2 uv = p.yz;
+    if (a.y >= a.x && a.y >= a.z) uv = p.xz;
+    else if (a.z >= a.x && a.z >= a.y) uv = p.xy;
+    ivec2 cell = ivec2(floor(uv / side));
+    return ((cell.x + cell.y) & 1) != 0;
+}
+
+void main() {
+    o_id = u_cell_id;
+    if (u_unshaded) {
+        o_color = vec4(v_color, 1.0);
+        return;
+    }
+    vec3 n = normalize(v_normal);
+    float lambert = max(0.0, dot(n, LIGHT_DIR));
+    float dark = checker_dark(v_position, n, v_checker) ? CHECKER_DARK : 1.0;
+    o_color = vec4(v_color * ((AMBIENT + DIFFUSE * lambert) * dark), 1.0);
+}

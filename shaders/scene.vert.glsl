@@ -1,0 +1,56 @@
+// Single-pass stereo: every draw has two instances, and the instance picks the
+// eye. STEREO_CLIP_SHIFT (default) squeezes each eye's clip-space x into its
+// half of the side-by-side target; STEREO_VIEWPORT_INDEX writes
+// gl_ViewportIndex instead (ARB_shader_viewport_layer_array); STEREO_SINGLE_EYE
+// draws one eye (u_single_eye) into the current viewport, for two-pass renders.
+#if defined(STEREO_VIEWPORT_INDEX)
+#extension GL_ARB_shader_viewport_layer_array : require
+#endif
+
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec3 a_color;
+layout(location = 3) in float a_checker;
+
+uniform mat4 u_view_proj[2];
+// Per eye: the part of the eye image this draw may touch, as an NDC rectangle
+// (x0, y0, x1, y1), clipped exactly with four clip distances; an empty
+// rectangle drops the draw for that eye.
+uniform vec4 u_eye_rect[2];
+// Per eye: a plane in this cell's coordinates; only points with
+// dot(plane, (p, 1)) >= 0 are drawn. (0, 0, 0, 1) clips nothing.
+uniform vec4 u_clip_plane[2];
+uniform int u_single_eye;
+
+out vec3 v_position;
+out vec3 v_normal;
+out vec3 v_color;
+out float v_checker;
+
+out float gl_ClipDistance[5];
+
+void main() {
+#if defined(STEREO_SINGLE_EYE)
+    int eye = u_single_eye;
+#else
+    int eye = gl_InstanceID & 1;
+#endif
+    vec4 clip = u_view_proj[eye] * vec4(a_position, 1.0);
+    vec4 rect = u_eye_rect[eye];
+    gl_ClipDistance[0] = clip.x - rect.x * clip.w;
+    gl_ClipDistance[1] = rect.z * clip.w - clip.x;
+    gl_ClipDistance[2] = clip.y - rect.y * clip.w;
+    gl_ClipDistance[3] = rect.w * clip.w - clip.y;
+    gl_ClipDistance[4] = dot(u_clip_plane[eye], vec4(a_position, 1.0));
+#if defined(STEREO_VIEWPORT_INDEX)
+    gl_ViewportIndex = eye;
+#elif !defined(STEREO_SINGLE_EYE)
+    // Left eye: x_ndc' = (x_ndc - 1) / 2; right eye: (x_ndc + 1) / 2.
+    clip.x = 0.5 * (clip.x + (eye == 0 ? -clip.w : clip.w));
+#endif
+    gl_Position = clip;
+    v_position = a_position;
+    v_normal = a_normal;
+    v_color = a_color;
+    v_checker = a_checker;
+}

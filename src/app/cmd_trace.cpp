@@ -1,0 +1,84 @@
+// impossible trace [LAYOUT] [options]: the same frame as `render`, computed by
+// the CPU reference ray tracer (src/trace, docs/tracer.md).
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+#include <set>
+#include <thread>
+
+#include "app/cli_args.hpp"
+#include "app/commands.hpp"
+#include "app/layout_source.hpp"
+#include "app/png_io.hpp"
+#include "app/view_options.hpp"
+#include "trace/tracer.hpp"
+
+namespace impossible::app {
+namespace {
+
+const char* kHelp =
+    "usage: impossible trace [LAYOUT] [options]\n"
+    "Computes one side-by-side stereo frame with the CPU reference ray tracer (double precision,\n"
+    "rays followed through portals) for the same view as `impossible render`, and writes it as\n"
+    "PNG. It is the accuracy oracle for the rasteriser: compare the two with `impossible compare`.\n"
+    "The options are render's; --backend, --stereo, --clip and --no-cull only matter to the\n"
+    "rasteriser and are accepted and ignored. --stats prints rays per second instead.\n\n";
+
+const char* kTraceOnlyHelp = "  --threads N                threads to trace with (default: every core)\n";
+
+std::set<std::string> trace_value_options() {
+    std::set<std::string> names = view_value_options();
+    names.insert("--threads");
+    return names;
+}
+
+}  // namespace
+
+int run_trace_command(const Args& args, std::ostream& out, std::ostream& err) {
+    const ParsedArgs parsed = parse_args(args, trace_value_options(), view_flag_options(), 1);
+    if (parsed.help) {
+        out << kHelp << view_options_help() << kTraceOnlyHelp;
+        return kExitOk;
+    }
+    const ViewOptions options = parse_view_options(parsed);
+    int threads = 0;
+    if (auto v = parsed.value("--threads")) threads = parse_int("--threads", *v, 1, 256);
+    const layout::Layout layout = load_layout_or_default(options.layout_path);
+    const render::FrameDesc frame = frame_for(layout, options);
+
+    trace::TraceDesc desc;
+    desc.head = frame.head;
+    desc.room = frame.room;
+    desc.ipd = frame.ipd;
+    desc.fov_y_deg = frame.fov_y_deg;
+    desc.eye_width = frame.eye_width;
+    desc.eye_height = frame.eye_height;
+    desc.max_depth = frame.max_depth;
+    desc.threads = threads;
+
+    const auto start = std::chrono::steady_clock::now();
+    const trace::Scene scene = trace::prepare_scene(layout);
+    const trace::TraceImage image = trace::trace_frame(scene, desc);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    if (std::string e = write_png(options.out, image.width, image.height, 3, image.rgb); !e.empty())
+        throw InputError(e);
+    if (options.ids)
+        if (std::string e = write_png(*options.ids, image.width, image.height, 1, image.ids); !e.empty())
+            throw InputError(e);
+    if (options.stats) {
+        const long rays = static_cast<long>(image.width) * image.height;
+        long fills = 0, nothing = 0;
+        for (std::uint8_t id : image.ids) {
+            fills += id == trace::kIdDepthLimit;
+            nothing += id == trace::kIdNothing;
+        }
+        const int used = threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+        err << "stats: rays=" << rays << " seconds=" << seconds
+            << " rays_per_s=" << (seconds > 0.0 ? static_cast<long>(rays / seconds) : 0) << " threads=" << used
+            << " fill_pixels=" << fills << " empty_pixels=" << nothing << "\n";
+    }
+    return kExitOk;
+}
+
+}  // namespace impossible::app

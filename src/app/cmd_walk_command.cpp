@@ -1,0 +1,27 @@
+// impossible walk LAYOUT --path FILE: argument handling around run_walk.
+#include <iostream>
+
+#include "app/cli_args.hpp"
+#include "app/cmd_walk.hpp"
+#include "app/commands.hpp"
+#include "app/layout_source.hpp"
+
+namespace impossible::app {
+
+int run_walk_command(const Args& args, std::ostream& out, std::ostream& err) {
+    const ParsedArgs parsed = parse_args(args, {"--path"}, {}, 1);
+    if (parsed.help) {
+        out << "usage: impossible walk LAYOUT --path FILE\n"
+               "Replays a walk: FILE holds one physical head pose a line, X Y Z YAW PITCH ROLL\n"
+               "(blank lines and lines starting with # are skipped). Prints one JSON object a line:\n"
+               "{\"frame\":0,\"room\":\"hall\",\"teleports\":[],\"position\":[0,1.6,1],\"forward\":[0,0,-1]}\n";
+        return kExitOk;
+    }
+    if (parsed.positional.empty()) throw UsageError("walk needs a LAYOUT file");
+    const std::optional<std::string> path = parsed.value("--path");
+    if (!path) throw UsageError("walk needs --path FILE");
+    const layout::Layout layout = load_layout_or_default(parsed.positional[0]);
+    return run_walk(layout, *path, out, err);
+}
+
+}  // namespace impossible::app

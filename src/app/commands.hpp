@@ -1,0 +1,22 @@
+// The program's commands (cli.md). Each takes its arguments after the command
+// name and returns the exit status; errors go to `err` as one line.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace impossible::app {
+
+using Args = std::vector<std::string>;
+
+int run_render_command(const Args& args, std::ostream& out, std::ostream& err);
+int run_validate_command(const Args& args, std::ostream& out, std::ostream& err);
+int run_walk_command(const Args& args, std::ostream& out, std::ostream& err);
+int run_trace_command(const Args& args, std::ostream& out, std::ostream& err);
+int run_compare_command(const Args& args, std::ostream& out, std::ostream& err);
+
+// Dispatches argv[1] to a command; prints the overview for --help or nothing.
+int run_main(const Args& args, std::ostream& out, std::ostream& err);
+
+}  // namespace impossible::app

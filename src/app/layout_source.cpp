@@ -1,0 +1,23 @@
+#include "app/layout_source.hpp"
+
+#include "app/cli_args.hpp"
+#include "embedded.hpp"
+
+namespace impossible::app {
+
+layout::Layout load_layout_or_default(const std::optional<std::string>& path) {
+    layout::LoadResult loaded =
+        path ? layout::load_layout_file(*path)
+             : layout::load_layout_text(std::string(embedded::find(kDefaultLayoutName)),
+                                        "<built-in " + std::string(kDefaultLayoutName) + ">", ".");
+    if (!loaded.errors.empty()) {
+        std::string message = loaded.errors.front().str();
+        if (loaded.errors.size() > 1)
+            message += " (and " + std::to_string(loaded.errors.size() - 1) +
+                       " more problems; 'impossible validate' lists them all)";
+        throw InputError(message);
+    }
+    return std::move(*loaded.layout);
+}
+
+}  // namespace impossible::app

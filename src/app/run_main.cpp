@@ -1,0 +1,47 @@
+#include <exception>
+#include <iostream>
+
+#include "app/cli_args.hpp"
+#include "app/commands.hpp"
+
+namespace impossible::app {
+namespace {
+
+const char* kOverview =
+    "usage: impossible COMMAND [options]   (impossible COMMAND --help for more)\n"
+    "  render [LAYOUT]          one side-by-side stereo frame with the OpenGL rasteriser\n"
+    "  trace [LAYOUT]           the same frame with the CPU reference ray tracer\n"
+    "  compare A.png B.png      compare two frames (cell ids, colour PSNR), e.g. render vs trace\n"
+    "  validate LAYOUT          check a layout file\n"
+    "  walk LAYOUT --path FILE  replay a walk and print where the head goes\n";
+
+}  // namespace
+
+int run_main(const Args& args, std::ostream& out, std::ostream& err) {
+    if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+        (args.empty() ? err : out) << kOverview;
+        return args.empty() ? kExitUsage : kExitOk;
+    }
+    const std::string& command = args[0];
+    const Args rest(args.begin() + 1, args.end());
+    try {
+        if (command == "render") return run_render_command(rest, out, err);
+        if (command == "validate") return run_validate_command(rest, out, err);
+        if (command == "walk") return run_walk_command(rest, out, err);
+        if (command == "trace") return run_trace_command(rest, out, err);
+        if (command == "compare") return run_compare_command(rest, out, err);
+        err << "impossible: unknown command '" << command << "'\n" << kOverview;
+        return kExitUsage;
+    } catch (const UsageError& e) {
+        err << "impossible " << command << ": " << e.what() << " (see impossible " << command << " --help)\n";
+        return kExitUsage;
+    } catch (const InputError& e) {
+        err << "impossible " << command << ": " << e.what() << "\n";
+        return kExitBadInput;
+    } catch (const std::exception& e) {
+        err << "impossible " << command << ": " << e.what() << "\n";
+        return kExitBadInput;
+    }
+}
+
+}  // namespace impossible::app

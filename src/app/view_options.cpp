@@ -1,0 +1,125 @@
+#include "app/view_options.hpp"
+
+#include <cmath>
+#include <tuple>
+
+namespace impossible::app {
+
+const std::set<std::string>& view_value_options() {
+    static const std::set<std::string> names = {"--pose", "--room",  "--ipd", "--fov",     "--size",
+                                                "--max-depth", "--out", "--ids", "--backend", "--stereo",
+                                                "--clip"};
+    return names;
+}
+
+const std::set<std::string>& view_flag_options() {
+    static const std::set<std::string> names = {"--no-cull", "--stats"};
+    return names;
+}
+
+const char* view_options_help() {
+    return "  --pose X,Y,Z,YAW,PITCH,ROLL  head centre and orientation (degrees); default: the layout's start\n"
+           "  --room ID                  the room the head is in; default: start.room, or with --pose the\n"
+           "                             one room whose box holds the head\n"
+           "  --ipd M                    distance between the eyes (default 0.064)\n"
+           "  --fov DEG                  vertical field of view of each eye (default 90)\n"
+           "  --size WxH                 size of each eye's image (default 1280x720); the image is 2W x H\n"
+           "  --max-depth N              portals one line of sight may pass (default 8, at most 250)\n"
+           "  --out FILE.png             side-by-side colour image (default stereo.png)\n"
+           "  --ids FILE.png             cell-id map: 1 + room index, 0 nothing, 255 recursion limit\n"
+           "  --backend egl|osmesa       headless OpenGL context (default egl, falling back to osmesa)\n"
+           "  --stereo MODE              clip-shift (default), viewport-index or two-pass\n"
+           "  --clip MODE                clip-distance (default) or oblique\n"
+           "  --no-cull                  draw every portal without per-eye culling and scissor\n"
+           "  --stats                    print draw calls, triangles and portal passes to stderr\n";
+}
+
+ViewOptions parse_view_options(const ParsedArgs& args) {
+    ViewOptions o;
+    if (!args.positional.empty()) o.layout_path = args.positional[0];
+    if (auto v = args.value("--pose")) {
+        const std::vector<double> n = parse_numbers("--pose", *v, 6);
+        math::HeadPose pose;
+        pose.position = {n[0], n[1], n[2]};
+        pose.yaw_deg = n[3];
+        pose.pitch_deg = n[4];
+        pose.roll_deg = n[5];
+        for (double x : n)
+            if (std::abs(x) > 1e7) throw InputError("--pose: " + *v + " has a value beyond 1e7");
+        o.pose = pose;
+    }
+    if (auto v = args.value("--room")) o.room = *v;
+    if (auto v = args.value("--ipd")) {
+        o.ipd = parse_number("--ipd", *v);
+        if (o.ipd < 0.0 || o.ipd > 10.0) throw InputError("--ipd: " + *v + " is not in 0..10 m");
+    }
+    if (auto v = args.value("--fov")) {
+        o.fov_y_deg = parse_number("--fov", *v);
+        if (!(o.fov_y_deg > 0.0 && o.fov_y_deg < 179.0)) throw InputError("--fov: " + *v + " is not in (0, 179) degrees");
+    }
+    if (auto v = args.value("--size")) std::tie(o.eye_width, o.eye_height) = parse_size("--size", *v);
+    if (auto v = args.value("--max-depth")) o.max_depth = parse_int("--max-depth", *v, 0, 250);
+    if (auto v = args.value("--out")) o.out = *v;
+    if (auto v = args.value("--ids")) o.ids = *v;
+    if (auto v = args.value("--backend")) {
+        o.backend = gl::parse_backend(*v);
+        if (!o.backend) throw InputError("--backend: '" + *v + "' is not egl or osmesa");
+    }
+    if (auto v = args.value("--stereo")) {
+        if (*v == "clip-shift") o.stereo = render::StereoMode::ClipShift;
+        else if (*v == "viewport-index") o.stereo = render::StereoMode::ViewportIndex;
+        else if (*v == "two-pass") o.stereo = render::StereoMode::TwoPass;
+        else throw InputError("--stereo: '" + *v + "' is not clip-shift, viewport-index or two-pass");
+    }
+    if (auto v = args.value("--clip")) {
+        if (*v == "clip-distance") o.clip = render::ClipMode::ClipDistance;
+        else if (*v == "oblique") o.clip = render::ClipMode::Oblique;
+        else throw InputError("--clip: '" + *v + "' is not clip-distance or oblique");
+    }
+    o.cull_portals = !args.flag("--no-cull");
+    o.stats = args.flag("--stats");
+    return o;
+}
+
+render::FrameDesc frame_for(const layout::Layout& layout, const ViewOptions& o) {
+    render::FrameDesc f;
+    if (o.pose) {
+        f.head = *o.pose;
+    } else {
+        f.head.position = layout.start.position;
+        f.head.yaw_deg = layout.start.yaw_deg;
+    }
+    if (o.room) {
+        f.room = layout::find_room(layout, *o.room);
+        if (f.room < 0) throw InputError("--room: there is no room '" + *o.room + "' in " + layout.source);
+    } else if (!o.pose) {
+        f.room = layout.start.room;
+    } else {
+        std::vector<int> holding;
+        const math::dvec3 p = f.head.position;
+        for (size_t i = 0; i < layout.rooms.size(); ++i) {
+            const layout::Room& r = layout.rooms[i];
+            if (p.x >= r.min.x && p.x <= r.max.x && p.y >= r.min.y && p.y <= r.max.y && p.z >= r.min.z &&
+                p.z <= r.max.z)
+                holding.push_back(static_cast<int>(i));
+        }
+        if (holding.size() != 1) {
+            std::string names;
+            for (int i : holding) names += (names.empty() ? "" : ", ") + layout.rooms[i].id;
+            throw InputError(holding.empty() ? "--pose: the head is in no room; give --room"
+                                             : "--pose: the head is in several rooms (" + names + "); give --room");
+        }
+        f.room = holding[0];
+    }
+    f.ipd = o.ipd;
+    f.fov_y_deg = o.fov_y_deg;
+    f.eye_width = o.eye_width;
+    f.eye_height = o.eye_height;
+    f.max_depth = o.max_depth;
+    f.stereo = o.stereo;
+    f.clip = o.clip;
+    f.cull_portals = o.cull_portals;
+    return f;
+}
+
+}  // namespace impossible::app

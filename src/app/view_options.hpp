@@ -1,0 +1,48 @@
+// The options that `render` and `trace` share (cli.md), parsed into plain data,
+// and how they become a frame description.
+#pragma once
+
+#include <optional>
+#include <set>
+#include <string>
+
+#include "app/cli_args.hpp"
+#include "gl/context.hpp"
+#include "layout/layout.hpp"
+#include "render/frame.hpp"
+
+namespace impossible::app {
+
+struct ViewOptions {
+    std::optional<std::string> layout_path;  // none: the built-in default
+    std::optional<math::HeadPose> pose;
+    std::optional<std::string> room;
+    double ipd = 0.064;
+    double fov_y_deg = 90.0;
+    int eye_width = 1280;
+    int eye_height = 720;
+    int max_depth = 8;
+    std::string out = "stereo.png";
+    std::optional<std::string> ids;
+    std::optional<gl::Backend> backend;  // none: EGL, falling back to OSMesa
+    render::StereoMode stereo = render::StereoMode::ClipShift;
+    render::ClipMode clip = render::ClipMode::ClipDistance;
+    bool cull_portals = true;
+    bool stats = false;
+};
+
+// Options that take a value / flags, for parse_args.
+const std::set<std::string>& view_value_options();
+const std::set<std::string>& view_flag_options();
+
+// Throws InputError for a bad value.
+ViewOptions parse_view_options(const ParsedArgs& args);
+
+// The head pose and room of the frame: the layout's start without --pose;
+// with --pose, --room or else the one room whose box holds the head.
+render::FrameDesc frame_for(const layout::Layout& layout, const ViewOptions& options);
+
+// The option table for --help texts.
+const char* view_options_help();
+
+}  // namespace impossible::app

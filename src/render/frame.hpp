@@ -1,0 +1,57 @@
+// Plain data in and out of the GL renderer: a frame description in, an image
+// (and counters) out.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "math/pose.hpp"
+
+namespace impossible::render {
+
+// How both eyes reach their halves of the side-by-side target.
+enum class StereoMode {
+    ClipShift,      // one instanced draw per mesh; clip-space x shifted per eye (default)
+    ViewportIndex,  // one instanced draw per mesh; gl_ViewportIndex from the vertex shader
+    TwoPass,        // one draw per mesh per eye, viewport per eye (the reference)
+};
+
+// How the target room is cut at the target portal's plane.
+enum class ClipMode {
+    ClipDistance,  // gl_ClipDistance with the plane (default)
+    Oblique,       // Lengyel's oblique near plane
+};
+
+struct FrameDesc {
+    math::HeadPose head;
+    int room = 0;              // index of the room the head is in
+    double ipd = 0.064;
+    double fov_y_deg = 90.0;
+    double near = 0.01;
+    int eye_width = 1280;
+    int eye_height = 720;
+    int max_depth = 8;         // portals one line of sight may pass
+    StereoMode stereo = StereoMode::ClipShift;
+    ClipMode clip = ClipMode::ClipDistance;
+    bool cull_portals = true;  // per-eye frustum/facing culling and scissor
+};
+
+// The side-by-side image: left eye in the left half, rows from the top.
+struct Image {
+    int width = 0;   // 2 × eye width
+    int height = 0;
+    std::vector<std::uint8_t> rgb;  // width × height × 3
+    std::vector<std::uint8_t> ids;  // width × height cell ids (layout-format.md)
+};
+
+struct FrameStats {
+    long draw_calls = 0;
+    long triangles = 0;             // scene and portal-box triangles submitted, all instances
+                                    // counted (not the full-screen depth-clear triangles)
+    int portal_passes_drawn = 0;    // portals whose target was drawn (both eyes count once)
+    int portal_passes_culled = 0;   // portals skipped as invisible to both eyes
+    int portal_fills = 0;           // portals shown as the flat fill at the depth limit
+    int max_level_reached = 0;
+};
+
+}  // namespace impossible::render

@@ -1,0 +1,45 @@
+// The fixed-function state of every pass of the portal renderer, one
+// immutable PassState each, kept in a table named by an enum. The stencil
+// reference of every pass is the recursion level (given when applied).
+//
+// Depth is reversed-Z (glClipControl ZERO_TO_ONE, cleared to 0): nearer
+// surfaces have greater depth.
+#pragma once
+
+#include <array>
+
+#include "gl/state.hpp"
+
+namespace impossible::render {
+
+enum class Pass {
+    Scene,         // the cell's rooms and props: colour, ids and depth where stencil == level
+    PortalDepth,   // portal boxes into depth only, so they occlude and are occluded
+    PortalMark,    // stencil level → level + 1 where the box is the visible surface
+    ClearDepth,    // depth → far where stencil == level + 1 (drawn with ref = level + 1)
+    PortalUnmark,  // stencil level + 1 → level, and the box's depth back (ref = level + 1)
+    PortalFill,    // the flat fill colour and id 255 at the recursion limit
+    Count
+};
+
+inline constexpr gl::StencilState stencil_equal(GLenum pass_op) {
+    gl::StencilState s;
+    s.enabled = true;
+    s.func = GL_EQUAL;
+    s.pass = pass_op;
+    return s;
+}
+
+inline constexpr std::array<gl::PassState, static_cast<size_t>(Pass::Count)> kPassStates = {{
+    // depth_test, depth_write, depth_func, color_write, cull_back_faces, stencil
+    {true, true, GL_GREATER, true, true, stencil_equal(GL_KEEP)},     // Scene
+    {true, true, GL_GREATER, false, true, stencil_equal(GL_KEEP)},    // PortalDepth
+    {true, false, GL_GEQUAL, false, true, stencil_equal(GL_INCR)},    // PortalMark
+    {true, true, GL_ALWAYS, false, false, stencil_equal(GL_KEEP)},    // ClearDepth
+    {true, true, GL_ALWAYS, false, true, stencil_equal(GL_DECR)},     // PortalUnmark
+    {true, false, GL_GEQUAL, true, true, stencil_equal(GL_KEEP)},     // PortalFill
+}};
+
+inline const gl::PassState& pass_state(Pass pass) { return kPassStates[static_cast<size_t>(pass)]; }
+
+}  // namespace impossible::render

@@ -1,0 +1,46 @@
+// Per-eye screen bounds of a portal box, for culling and for narrowing the
+// next level's view (the scissor rectangle and the clip-distance rectangle).
+#include <cmath>
+
+#include "render/view.hpp"
+
+namespace impossible::render {
+
+NdcRect portal_rect(const math::PortalRect& portal, const EyeView& view) {
+    if (!view.active || view.rect.empty()) return NdcRect::none();
+    // An eye in the box's column may see the inner faces (all eight
+    // corners); any other eye sees only the front face, and only from in front.
+    const bool column = math::in_column(portal, view.eye.position);
+    if (!column && math::signed_distance(portal, view.eye.position) <= 0.0) return NdcRect::none();
+
+    math::dvec3 corners[8];
+    math::box_corners(portal, corners);
+    math::dvec4 clip[8];
+    const int count = column ? 8 : 4;
+    for (int i = 0; i < count; ++i) clip[i] = view.view_proj * math::dvec4(corners[i], 1.0);
+
+    // Clip the outline's edges at w = eps (just in front of the eye) and bound
+    // what remains; edges that pass near the eye project far out and simply
+    // widen the bound (an eye inside the box gets the whole parent rect).
+    static constexpr int kEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                                          {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+    const int edge_count = column ? 12 : 4;
+    const double eps = 1e-9;
+    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+    auto add = [&](const math::dvec4& c) {
+        const double x = c.x / c.w, y = c.y / c.w;
+        x0 = std::min(x0, x); x1 = std::max(x1, x);
+        y0 = std::min(y0, y); y1 = std::max(y1, y);
+    };
+    for (int i = 0; i < count; ++i)
+        if (clip[i].w >= eps) add(clip[i]);
+    for (int k = 0; k < edge_count; ++k) {
+        const math::dvec4& a = clip[kEdges[k][0]];
+        const math::dvec4& b = clip[kEdges[k][1]];
+        if ((a.w >= eps) != (b.w >= eps)) add(a + (b - a) * ((eps - a.w) / (b.w - a.w)));
+    }
+    if (!(x0 <= x1)) return NdcRect::none();  // wholly behind the eye
+    return intersect(NdcRect{x0, y0, x1, y1}, view.rect);
+}
+
+}  // namespace impossible::render

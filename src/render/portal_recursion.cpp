@@ -1,0 +1,224 @@
+// Recursive portal rendering with the stencil buffer, both eyes at once.
+//
+// The scheme is the classic stencil-portal recursion (as in e.g. Kilgard,
+// "Improving Shadows and Reflections via the Stencil Buffer", NVIDIA 1999, and
+// the portal renderers that followed): the stencil value of a pixel is the
+// recursion level whose view it shows. Per portal: mark the pixels where its
+// box is the visible surface (level → level + 1), reset depth there, draw the
+// target room from the virtual cameras M_AB · eye clipped at the target
+// portal's plane, recurse, then unmark and put the box's depth back so that
+// it occludes what the rest of this level draws. Every draw is one instanced
+// draw for both eyes; an eye that cannot see a portal gets an empty
+// rectangle, which its clip distances turn into no work.
+#include "render/portal_recursion.hpp"
+
+#include <cmath>
+
+#include "math/oblique_projection.hpp"
+#include "render/passes.hpp"
+
+namespace impossible::render {
+namespace {
+
+// Uploads the per-eye uniforms of a draw: matrices, rectangles, planes.
+void set_eye_uniforms(const DrawContext& ctx, const LevelView& view,
+                      const std::array<NdcRect, 2>& rects) {
+    float vp[2][16];
+    float rect[2][4];
+    float plane[2][4];
+    const int eye_w = ctx.frame.eye_width, eye_h = ctx.frame.eye_height;
+    for (int e = 0; e < 2; ++e) {
+        const EyeView& ev = view.eyes[e];
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) vp[e][c * 4 + r] = static_cast<float>(ev.view_proj[c][r]);
+        NdcRect nr = ev.active ? rects[e] : NdcRect::none();
+        if (!nr.empty()) {
+            // One pixel of margin keeps float rounding from trimming a pixel
+            // whose centre the portal covers; the stencil bounds the rest.
+            // Never past the eye's own image: in clip-shift mode x = ±1 is
+            // the seam between the two eyes.
+            const double mx = 2.0 / eye_w, my = 2.0 / eye_h;
+            nr = intersect({nr.x0 - mx, nr.y0 - my, nr.x1 + mx, nr.y1 + my}, NdcRect{});
+        }
+        rect[e][0] = static_cast<float>(nr.x0);
+        rect[e][1] = static_cast<float>(nr.y0);
+        rect[e][2] = static_cast<float>(nr.x1);
+        rect[e][3] = static_cast<float>(nr.y1);
+        for (int c = 0; c < 4; ++c) plane[e][c] = static_cast<float>(ev.clip_plane[c]);
+    }
+    const GLuint p = ctx.program.program.get();
+    glProgramUniformMatrix4fv(p, ctx.program.view_proj, 2, GL_FALSE, &vp[0][0]);
+    glProgramUniform4fv(p, ctx.program.eye_rect, 2, &rect[0][0]);
+    glProgramUniform4fv(p, ctx.program.clip_plane, 2, &plane[0][0]);
+}
+
+// The pixel rectangle (GL window coordinates) covering both eyes' rects.
+gl::ScissorRect scissor_of(const DrawContext& ctx, const std::array<NdcRect, 2>& rects,
+                           const LevelView& view) {
+    const int w = ctx.frame.eye_width, h = ctx.frame.eye_height;
+    int x0 = 2 * w, y0 = h, x1 = 0, y1 = 0;
+    for (int e = 0; e < 2; ++e) {
+        if (!view.eyes[e].active || rects[e].empty()) continue;
+        const NdcRect& r = rects[e];
+        x0 = std::min(x0, e * w + static_cast<int>(std::floor((r.x0 + 1.0) * 0.5 * w)) - 1);
+        x1 = std::max(x1, e * w + static_cast<int>(std::ceil((r.x1 + 1.0) * 0.5 * w)) + 1);
+        y0 = std::min(y0, static_cast<int>(std::floor((r.y0 + 1.0) * 0.5 * h)) - 1);
+        y1 = std::max(y1, static_cast<int>(std::ceil((r.y1 + 1.0) * 0.5 * h)) + 1);
+    }
+    x0 = std::max(x0, 0); y0 = std::max(y0, 0);
+    x1 = std::min(x1, 2 * w); y1 = std::min(y1, h);
+    return {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
+}
+
+void draw_range(DrawContext& ctx, const scene::IndexRange& range) {
+    if (range.count == 0) return;
+    const int instances = ctx.frame.stereo == StereoMode::TwoPass ? 1 : 2;
+    glDrawElementsInstanced(GL_TRIANGLES, static_cast<GLsizei>(range.count), GL_UNSIGNED_INT,
+                            reinterpret_cast<const void*>(static_cast<uintptr_t>(range.first) * 4),
+                            instances);
+    ctx.stats.draw_calls += 1;
+    ctx.stats.triangles += static_cast<long>(range.count / 3) * instances;
+}
+
+void use_pass(DrawContext& ctx, Pass pass, int stencil_ref) {
+    ctx.renderer.state.apply(pass_state(pass), stencil_ref);
+}
+
+void set_cell_id(const DrawContext& ctx, unsigned id, bool unshaded) {
+    const GLuint p = ctx.program.program.get();
+    glProgramUniform1ui(p, ctx.program.cell_id, id);
+    glProgramUniform1i(p, ctx.program.unshaded, unshaded ? 1 : 0);
+}
+
+// Draws a portal's box for the eyes with a non-empty rect: the front face for
+// eyes in front of it, the inner faces for eyes in its column.
+void draw_portal_box(DrawContext& ctx, const LevelView& view, int portal,
+                     const std::array<NdcRect, 2>& rects) {
+    const math::PortalRect& rect = ctx.renderer.layout.portals[portal].rect;
+    const scene::PortalMesh& mesh = ctx.renderer.scene.portals[portal];
+    std::array<NdcRect, 2> front = rects, inner = rects;
+    bool any_inner = false;
+    for (int e = 0; e < 2; ++e) {
+        if (!math::in_column(rect, view.eyes[e].eye.position)) inner[e] = NdcRect::none();
+        else any_inner = true;
+    }
+    set_eye_uniforms(ctx, view, front);
+    draw_range(ctx, mesh.front);
+    if (any_inner) {
+        set_eye_uniforms(ctx, view, inner);
+        draw_range(ctx, mesh.inner);
+    }
+}
+
+void clear_depth_in_portal(DrawContext& ctx, int stencil_ref) {
+    use_pass(ctx, Pass::ClearDepth, stencil_ref);
+    glUseProgram(ctx.renderer.clear_depth.program.get());
+    glBindVertexArray(ctx.renderer.empty_vao.get());
+    // The clear triangle has no eye: with per-eye viewports it is drawn
+    // through viewport 0, widened to the whole target for the moment.
+    const bool indexed = ctx.frame.stereo == StereoMode::ViewportIndex;
+    const float w = static_cast<float>(ctx.frame.eye_width), h = static_cast<float>(ctx.frame.eye_height);
+    if (indexed) glViewportIndexedf(0, 0.0f, 0.0f, 2.0f * w, h);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    if (indexed) glViewportIndexedf(0, 0.0f, 0.0f, w, h);
+    ctx.stats.draw_calls += 1;
+    glBindVertexArray(ctx.renderer.gpu.vao.get());
+    glUseProgram(ctx.program.program.get());
+}
+
+// The view through `portal` (of view.cell) into its target's room.
+LevelView child_view(const DrawContext& ctx, const LevelView& view, int portal,
+                     const std::array<NdcRect, 2>& rects) {
+    const layout::Portal& a = ctx.renderer.layout.portals[portal];
+    const layout::Portal& b = ctx.renderer.layout.portals[a.target];
+    const math::dmat4& m = ctx.renderer.transfer[portal];
+    LevelView child;
+    child.cell = b.room;
+    child.level = view.level + 1;
+    child.entered_by = a.target;
+    for (int e = 0; e < 2; ++e) {
+        EyeView& ev = child.eyes[e];
+        ev.active = view.eyes[e].active && !rects[e].empty();
+        ev.eye = math::transform_eye(m, view.eyes[e].eye);
+        const math::dmat4 view_matrix = math::view_matrix(ev.eye);
+        ev.view_proj = ctx.projection * view_matrix;
+        ev.rect = rects[e];
+        // A virtual eye behind B sees B's room only in front of B's plane;
+        // one already in front of B (the real eye crossed A before the head)
+        // stands in B's room and needs no plane.
+        ev.behind_exit = math::signed_distance(b.rect, ev.eye.position) < 0.0;
+        if (!ev.behind_exit) continue;
+        const math::dvec4 plane = math::portal_plane(b.rect);
+        if (ctx.frame.clip == ClipMode::Oblique)
+            ev.view_proj = math::oblique_reversed_z(ctx.projection, math::transform_plane(view_matrix, plane)) *
+                           view_matrix;
+        else
+            ev.clip_plane = plane;
+    }
+    return child;
+}
+
+}  // namespace
+
+void draw_level(DrawContext& ctx, const LevelView& view) {
+    Renderer& r = ctx.renderer;
+    const int level = view.level;
+    ctx.stats.max_level_reached = std::max(ctx.stats.max_level_reached, level);
+    const std::array<NdcRect, 2> view_rects = {view.eyes[0].rect, view.eyes[1].rect};
+
+    // The cell's own surfaces.
+    use_pass(ctx, Pass::Scene, level);
+    set_eye_uniforms(ctx, view, view_rects);
+    set_cell_id(ctx, static_cast<unsigned>(view.cell + 1), false);
+    draw_range(ctx, r.scene.cells[view.cell]);
+
+    // Which portals each eye can see. The portal the view came out of lies
+    // behind a virtual eye that stands behind it, where the plane clips it.
+    const std::vector<int>& portals = r.portals_of_room[view.cell];
+    std::vector<std::array<NdcRect, 2>> visible(portals.size());
+    for (size_t k = 0; k < portals.size(); ++k) {
+        const int p = portals[k];
+        for (int e = 0; e < 2; ++e) {
+            const EyeView& ev = view.eyes[e];
+            const bool behind_exit = p == view.entered_by && ev.behind_exit;
+            if (behind_exit || !ev.active) visible[k][e] = NdcRect::none();
+            else if (ctx.frame.cull_portals) visible[k][e] = portal_rect(r.layout.portals[p].rect, ev);
+            else visible[k][e] = ev.rect;
+        }
+    }
+
+    // Portal boxes into depth, so that portals and surfaces occlude each other.
+    use_pass(ctx, Pass::PortalDepth, level);
+    for (size_t k = 0; k < portals.size(); ++k)
+        if (!visible[k][0].empty() || !visible[k][1].empty()) draw_portal_box(ctx, view, portals[k], visible[k]);
+
+    for (size_t k = 0; k < portals.size(); ++k) {
+        const int p = portals[k];
+        const std::array<NdcRect, 2>& rects = visible[k];
+        if (rects[0].empty() && rects[1].empty()) {
+            ctx.stats.portal_passes_culled += 1;
+            continue;
+        }
+        if (ctx.frame.cull_portals) r.state.scissor(scissor_of(ctx, rects, view));
+        if (level >= ctx.frame.max_depth) {
+            use_pass(ctx, Pass::PortalFill, level);
+            set_cell_id(ctx, 255, true);
+            draw_portal_box(ctx, view, p, rects);
+            ctx.stats.portal_fills += 1;
+            continue;
+        }
+        use_pass(ctx, Pass::PortalMark, level);
+        draw_portal_box(ctx, view, p, rects);
+        clear_depth_in_portal(ctx, level + 1);
+
+        ctx.stats.portal_passes_drawn += 1;
+        draw_level(ctx, child_view(ctx, view, p, rects));
+
+        if (ctx.frame.cull_portals) r.state.scissor(scissor_of(ctx, rects, view));
+        use_pass(ctx, Pass::PortalUnmark, level + 1);
+        draw_portal_box(ctx, view, p, rects);
+    }
+    r.state.no_scissor();
+}
+
+}  // namespace impossible::render

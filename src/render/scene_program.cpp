@@ -1,0 +1,64 @@
+#include "render/scene_program.hpp"
+
+#include <cstdio>
+
+#include "embedded.hpp"
+#include "gl/shader.hpp"
+#include "scene/shading.hpp"
+
+namespace impossible::render {
+namespace {
+
+std::string shading_defines() {
+    const glm::dvec3 l = scene::kLightDir;
+    char buf[512];
+    std::snprintf(buf, sizeof buf,
+                  "#define LIGHT_DIR vec3(%.9g, %.9g, %.9g)\n#define AMBIENT %.9g\n"
+                  "#define DIFFUSE %.9g\n#define CHECKER_DARK %.9g\n",
+                  l.x, l.y, l.z, scene::kAmbient, scene::kDiffuse, scene::kCheckerDark);
+    return buf;
+}
+
+gl::ShaderSource source(GLenum stage, const char* name) {
+    return {stage, name, std::string(embedded::find(name))};
+}
+
+}  // namespace
+
+SceneProgramResult build_scene_program(StereoMode mode) {
+    std::string defines = shading_defines();
+    if (mode == StereoMode::ViewportIndex) defines += "#define STEREO_VIEWPORT_INDEX\n";
+    if (mode == StereoMode::TwoPass) defines += "#define STEREO_SINGLE_EYE\n";
+    gl::ProgramResult built = gl::build_program(
+        {source(GL_VERTEX_SHADER, "shaders/scene.vert.glsl"),
+         source(GL_FRAGMENT_SHADER, "shaders/scene.frag.glsl")},
+        defines);
+    SceneProgramResult out;
+    if (!built.error.empty()) {
+        out.error = built.error;
+        return out;
+    }
+    SceneProgram& p = out.program;
+    p.program = std::move(built.program);
+    const GLuint name = p.program.get();
+    p.view_proj = glGetUniformLocation(name, "u_view_proj");
+    p.eye_rect = glGetUniformLocation(name, "u_eye_rect");
+    p.clip_plane = glGetUniformLocation(name, "u_clip_plane");
+    p.single_eye = glGetUniformLocation(name, "u_single_eye");
+    p.cell_id = glGetUniformLocation(name, "u_cell_id");
+    p.unshaded = glGetUniformLocation(name, "u_unshaded");
+    return out;
+}
+
+ClearDepthProgramResult build_clear_depth_program() {
+    gl::ProgramResult built = gl::build_program(
+        {source(GL_VERTEX_SHADER, "shaders/clear_depth.vert.glsl"),
+         source(GL_FRAGMENT_SHADER, "shaders/clear_depth.frag.glsl")},
+        "");
+    ClearDepthProgramResult out;
+    out.error = built.error;
+    out.program.program = std::move(built.program);
+    return out;
+}
+
+}  // namespace impossible::render

@@ -1,0 +1,42 @@
+// The scene shader program (shaders/scene.*.glsl) for one stereo mode, with
+// its uniform locations looked up once.
+#pragma once
+
+#include <string>
+
+#include "gl/handles.hpp"
+#include "render/frame.hpp"
+
+namespace impossible::render {
+
+struct SceneProgram {
+    gl::Program program;
+    GLint view_proj = -1;   // mat4[2]
+    GLint eye_rect = -1;    // vec4[2]
+    GLint clip_plane = -1;  // vec4[2]
+    GLint single_eye = -1;  // int
+    GLint cell_id = -1;     // uint
+    GLint unshaded = -1;    // bool
+};
+
+struct SceneProgramResult {
+    SceneProgram program;
+    std::string error;
+};
+
+SceneProgramResult build_scene_program(StereoMode mode);
+
+// A program that writes far depth (0 in reversed-Z) over the whole target and
+// nothing else; with the stencil test it clears depth inside a portal.
+struct ClearDepthProgram {
+    gl::Program program;
+};
+
+struct ClearDepthProgramResult {
+    ClearDepthProgram program;
+    std::string error;
+};
+
+ClearDepthProgramResult build_clear_depth_program();
+
+}  // namespace impossible::render

@@ -1,0 +1,63 @@
+#include "render/target.hpp"
+
+#include <cstring>
+
+namespace impossible::render {
+
+TargetResult create_target(int width, int height) {
+    TargetResult out;
+    Target& t = out.target;
+    t.width = width;
+    t.height = height;
+    t.color = gl::create_renderbuffer();
+    t.ids = gl::create_renderbuffer();
+    t.depth_stencil = gl::create_renderbuffer();
+    t.framebuffer = gl::create_framebuffer();
+    glNamedRenderbufferStorage(t.color.get(), GL_RGBA8, width, height);
+    glNamedRenderbufferStorage(t.ids.get(), GL_R8UI, width, height);
+    glNamedRenderbufferStorage(t.depth_stencil.get(), GL_DEPTH32F_STENCIL8, width, height);
+    const GLuint fb = t.framebuffer.get();
+    glNamedFramebufferRenderbuffer(fb, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, t.color.get());
+    glNamedFramebufferRenderbuffer(fb, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, t.ids.get());
+    glNamedFramebufferRenderbuffer(fb, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, t.depth_stencil.get());
+    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glNamedFramebufferDrawBuffers(fb, 2, buffers);
+    const GLenum status = glCheckNamedFramebufferStatus(fb, GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        out.error = "render target " + std::to_string(width) + "x" + std::to_string(height) +
+                    " is incomplete (status 0x" + [&] {
+                        char buf[16];
+                        std::snprintf(buf, sizeof buf, "%04x", status);
+                        return std::string(buf);
+                    }() + ")";
+    return out;
+}
+
+Image read_target(const Target& t) {
+    Image image;
+    image.width = t.width;
+    image.height = t.height;
+    const size_t w = static_cast<size_t>(t.width), h = static_cast<size_t>(t.height);
+    std::vector<std::uint8_t> rgba(w * h * 4);
+    std::vector<std::uint8_t> ids(w * h);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glNamedFramebufferReadBuffer(t.framebuffer.get(), GL_COLOR_ATTACHMENT0);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, t.framebuffer.get());
+    glReadPixels(0, 0, t.width, t.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    glNamedFramebufferReadBuffer(t.framebuffer.get(), GL_COLOR_ATTACHMENT1);
+    glReadPixels(0, 0, t.width, t.height, GL_RED_INTEGER, GL_UNSIGNED_BYTE, ids.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+
+    // GL rows start at the bottom; images start at the top.
+    image.rgb.resize(w * h * 3);
+    image.ids.resize(w * h);
+    for (size_t y = 0; y < h; ++y) {
+        const size_t src = (h - 1 - y) * w;
+        std::memcpy(&image.ids[y * w], &ids[src], w);
+        for (size_t x = 0; x < w; ++x)
+            for (int c = 0; c < 3; ++c) image.rgb[(y * w + x) * 3 + c] = rgba[(src + x) * 4 + c];
+    }
+    return image;
+}
+
+}  // namespace impossible::render

@@ -1,0 +1,31 @@
+// The side-by-side render target: RGBA8 colour, R8UI cell ids, and a
+// DEPTH32F_STENCIL8 buffer (reversed-Z float depth, stencil = portal level).
+#pragma once
+
+#include <string>
+
+#include "gl/handles.hpp"
+#include "render/frame.hpp"
+
+namespace impossible::render {
+
+struct Target {
+    int width = 0;
+    int height = 0;
+    gl::Renderbuffer color;
+    gl::Renderbuffer ids;
+    gl::Renderbuffer depth_stencil;
+    gl::Framebuffer framebuffer;
+};
+
+struct TargetResult {
+    Target target;
+    std::string error;  // an incomplete framebuffer is reported, never ignored
+};
+
+TargetResult create_target(int width, int height);
+
+// Reads colour and ids back, rows from the top.
+Image read_target(const Target& target);
+
+}  // namespace impossible::render

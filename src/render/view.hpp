@@ -1,0 +1,45 @@
+// One level of the portal recursion: the cell being drawn and, per eye, the
+// (virtual) camera, its clip plane and the part of the eye image it may touch.
+#pragma once
+
+#include <algorithm>
+#include <array>
+
+#include "math/pose.hpp"
+#include "math/portal.hpp"
+
+namespace impossible::render {
+
+// A rectangle in an eye's normalised device coordinates (-1..1, y up).
+struct NdcRect {
+    double x0 = -1, y0 = -1, x1 = 1, y1 = 1;
+    bool empty() const { return !(x0 < x1 && y0 < y1); }
+    static NdcRect none() { return {1, 1, -1, -1}; }
+};
+
+inline NdcRect intersect(const NdcRect& a, const NdcRect& b) {
+    return {std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
+}
+
+struct EyeView {
+    bool active = false;
+    math::Eye eye;                      // in the cell's coordinates
+    math::dmat4 view_proj{1.0};         // cell coordinates → clip space
+    math::dvec4 clip_plane{0, 0, 0, 1};  // keep dot(plane, (p, 1)) >= 0
+    NdcRect rect;                       // where this level is visible
+    bool behind_exit = false;           // the eye stands behind the portal it came out of
+};
+
+struct LevelView {
+    int cell = 0;
+    int level = 0;          // portals passed; also the stencil value
+    int entered_by = -1;    // the portal of this cell the view came out of, or -1
+    std::array<EyeView, 2> eyes;
+};
+
+// The part of an eye's image where a portal's box can be visible from that
+// eye, within `parent`; empty when the box is outside the frustum, faces
+// away, or lies behind the eye. Conservative (never too small).
+NdcRect portal_rect(const math::PortalRect& portal, const EyeView& eye);
+
+}  // namespace impossible::render

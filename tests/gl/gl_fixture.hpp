@@ -1,0 +1,83 @@
+// Helpers for tests that render: a context per backend, layouts from text,
+// and one-call frames.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "gl/context.hpp"
+#include "layout/layout.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene.hpp"
+
+namespace impossible::testing {
+
+inline layout::Layout layout_from_text(const std::string& text) {
+    layout::LoadResult r = layout::load_layout_text(text, "<test>", ".");
+    std::string all;
+    for (const auto& d : r.errors) all += d.str() + "\n";
+    EXPECT_TRUE(r.errors.empty()) << all;
+    return r.layout ? *r.layout : layout::Layout{};
+}
+
+inline layout::Layout layout_from_file(const std::string& path) {
+    layout::LoadResult r = layout::load_layout_file(path);
+    std::string all;
+    for (const auto& d : r.errors) all += d.str() + "\n";
+    EXPECT_TRUE(r.errors.empty()) << all;
+    return r.layout ? *r.layout : layout::Layout{};
+}
+
+// Renders one frame in a fresh context of the given backend.
+inline render::Image render_once(gl::Backend backend, const layout::Layout& layout,
+                                 const render::FrameDesc& frame, render::FrameStats* stats = nullptr) {
+    gl::ContextResult context = gl::create_context(backend);
+    EXPECT_TRUE(context.context.has_value()) << context.error;
+    if (!context.context) return {};
+    render::RendererResult renderer = render::create_renderer(layout, scene::build_scene(layout));
+    EXPECT_TRUE(renderer.renderer) << renderer.error;
+    if (!renderer.renderer) return {};
+    render::FrameResult result = render::render_frame(*renderer.renderer, frame);
+    EXPECT_EQ(result.error, "");
+    if (stats) *stats = result.stats;
+    return result.image;
+}
+
+// Number of pixels whose colour differs by more than `tolerance` in a channel.
+inline int count_colour_differences(const render::Image& a, const render::Image& b, int tolerance = 0) {
+    if (a.width != b.width || a.height != b.height) return -1;
+    int n = 0;
+    for (size_t i = 0; i < a.rgb.size(); i += 3)
+        for (int c = 0; c < 3; ++c)
+            if (std::abs(int(a.rgb[i + c]) - int(b.rgb[i + c])) > tolerance) {
+                ++n;
+                break;
+            }
+    return n;
+}
+
+inline int count_id_differences(const render::Image& a, const render::Image& b) {
+    if (a.width != b.width || a.height != b.height) return -1;
+    int n = 0;
+    for (size_t i = 0; i < a.ids.size(); ++i) n += a.ids[i] != b.ids[i];
+    return n;
+}
+
+inline const std::uint8_t* pixel(const render::Image& image, int x, int y) {
+    return &image.rgb[(static_cast<size_t>(y) * image.width + x) * 3];
+}
+inline std::uint8_t id_at(const render::Image& image, int x, int y) {
+    return image.ids[static_cast<size_t>(y) * image.width + x];
+}
+
+inline const char* kSingleRoom = R"({
+  "format": "impossible-layout", "version": 1,
+  "start": { "room": "box", "position": [0, 1.5, 0] },
+  "rooms": [ { "id": "box", "min": [-2, 0, -3], "max": [2, 3, 3],
+               "color": [0.6, 0.6, 0.6],
+               "face_colors": { "floor": [0.2, 0.4, 0.8], "-z": [0.9, 0.3, 0.1], "ceiling": [1, 1, 1] },
+               "props": [ { "box": { "min": [-0.5, 0, -2.0], "max": [0.5, 1.0, -1.0] }, "color": [0.1, 0.8, 0.2] } ] } ]
+})";
+
+}  // namespace impossible::testing
