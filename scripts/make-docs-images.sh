@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Renders the pictures in README.md and docs/ with the project's own program.
+# Usage: scripts/make-docs-images.sh [BUILD_DIR]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${1:-$root/build}
+bin="$build/impossible"
+out="$root/docs/images"
+mkdir -p "$out"
+size=640x360
+
+# The default layout from its start pose: what `impossible render` shows.
+"$bin" render --size $size --out "$out/default.png" --ids "$out/default-ids.png"
+
+render() {  # NAME LAYOUT [options...]
+  local name=$1 layout=$2
+  shift 2
+  "$bin" render "$root/layouts/$layout" --size $size --out "$out/$name.png" "$@"
+}
+render four_rooms four_rooms.json
+render tunnel tunnel.json
+render rotated rotated.json
+render corridor corridor.json
+render loop loop.json
+# The same corridor at two recursion limits: the flat fill marks where it stops.
+render corridor-depth2 corridor.json --max-depth 2 --pose 0,1.6,3,0,0,0
+echo "wrote $(ls "$out" | wc -l) images to $out"
