@@ -21,6 +21,7 @@ int run_validate_command(const Args& args, std::ostream& out, std::ostream& err)
         for (const layout::Diagnostic& d : loaded.errors) err << d.str() << "\n";
         return kExitBadInput;
     }
+    for (const layout::Diagnostic& d : loaded.warnings) err << "warning: " << d.str() << "\n";
     const layout::Layout& l = *loaded.layout;
     out << layout::summary_text(l, layout::summarize(l));
     return kExitOk;

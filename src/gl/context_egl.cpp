@@ -19,6 +19,7 @@ void destroy(void* p) {
         eglMakeCurrent(s->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         if (s->context != EGL_NO_CONTEXT) eglDestroyContext(s->display, s->context);
         eglTerminate(s->display);
+        eglReleaseThread();  // frees this thread's EGL state (else it leaks at exit)
     }
     delete s;
 }
