@@ -138,7 +138,7 @@ TEST_F(Cli, UsageErrorsExitTwo) {
 }
 
 TEST_F(Cli, EveryCommandHasHelp) {
-    for (const char* command : {"render", "validate", "walk"}) {
+    for (const char* command : {"render", "validate", "walk", "trace", "compare"}) {
         const ProgramRun run = run_program(std::string(command) + " --help", dir_);
         EXPECT_EQ(run.status, 0) << command;
         EXPECT_NE(run.out.find("usage: impossible " + std::string(command)), std::string::npos) << run.out;
@@ -163,6 +163,49 @@ TEST_F(Cli, StatsReportPortalPasses) {
     const ProgramRun run = run_program("render --size 64x36 --stats", dir_);
     EXPECT_EQ(run.status, 0) << run.err;
     EXPECT_NE(run.err.find("portal_passes_drawn=1"), std::string::npos) << run.err;
+}
+
+TEST_F(Cli, WalkThroughTheDefaultDoorTeleportsIntoTheAnnex) {
+    {
+        std::ofstream path(dir_ / "path.txt");
+        path << "# x y z yaw pitch roll\n0 1.6 1 0 0 0\n\n0 1.6 0.2 0 0 0\n0 1.6 -0.3 0 0 0\n0 1.6 0.5 0 0 0\n";
+    }
+    const ProgramRun run =
+        run_program("walk '" IMPOSSIBLE_SOURCE_DIR "/layouts/default.json' --path path.txt", dir_);
+    ASSERT_EQ(run.status, 0) << run.err;
+    std::istringstream lines(run.out);
+    std::string line;
+    std::vector<std::string> all;
+    while (std::getline(lines, line)) all.push_back(line);
+    ASSERT_EQ(all.size(), 4u) << run.out;
+    EXPECT_EQ(all[0], R"({"frame":0,"room":"hall","teleports":[],"position":[0,1.6,1],"forward":[0,0,-1]})");
+    EXPECT_NE(all[2].find(R"("room":"annex","teleports":["hall_door"])"), std::string::npos) << all[2];
+    EXPECT_NE(all[3].find(R"("room":"hall","teleports":["annex_door"])"), std::string::npos) << all[3];
+}
+
+TEST_F(Cli, TraceWritesTheSameFilesAsRenderAndAgreesWithIt) {
+    ASSERT_EQ(run_program("render --size 120x80 --out r.png --ids r-ids.png", dir_).status, 0);
+    const ProgramRun trace = run_program("trace --size 120x80 --out t.png --ids t-ids.png --threads 1", dir_);
+    ASSERT_EQ(trace.status, 0) << trace.err;
+    ASSERT_EQ(run_program("trace --size 120x80 --out t2.png --ids t2-ids.png --threads 2", dir_).status, 0);
+    EXPECT_EQ(bytes("t.png"), bytes("t2.png"));
+    EXPECT_EQ(bytes("t-ids.png"), bytes("t2-ids.png"));
+    const ProgramRun cmp =
+        run_program("compare r.png t.png --ids-a r-ids.png --ids-b t-ids.png --max-mismatch 0.01 --diff d.png", dir_);
+    EXPECT_EQ(cmp.status, 0) << cmp.out << cmp.err;
+    EXPECT_NE(cmp.out.find("id_mismatches=0"), std::string::npos) << cmp.out;
+    EXPECT_FALSE(bytes("d.png").empty());
+}
+
+TEST_F(Cli, CompareFailsPastTheLimitAndOnUsageErrors) {
+    ASSERT_EQ(run_program("render --size 60x40 --out a.png --ids a-ids.png", dir_).status, 0);
+    ASSERT_EQ(run_program("render --size 60x40 --out b.png --ids b-ids.png --pose 0,1.6,-1,180,0,0 --room annex", dir_)
+                  .status,
+              0);
+    EXPECT_EQ(run_program("compare a.png b.png --ids-a a-ids.png --ids-b b-ids.png --max-mismatch 1", dir_).status, 1);
+    EXPECT_EQ(run_program("compare a.png a.png --ids-a a-ids.png --ids-b a-ids.png --max-mismatch 0", dir_).status, 0);
+    EXPECT_EQ(run_program("compare a.png", dir_).status, 2);
+    EXPECT_EQ(run_program("compare a.png missing.png", dir_).status, 1);
 }
 
 }  // namespace

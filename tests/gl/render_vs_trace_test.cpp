@@ -40,7 +40,9 @@ const PoseCase kCases[] = {
     {"loop.json", "red", {0.3, 1.6, -4.5}, -70, 0, 0, "through the side door"},
 };
 
-TEST(RenderVsTrace, IdsAgreeOnEveryLayoutAndPose) {
+class RenderVsTrace : public ::testing::TestWithParam<render::ClipMode> {};
+
+TEST_P(RenderVsTrace, IdsAgreeOnEveryLayoutAndPose) {
     double worst = 0.0;
     for (const PoseCase& c : kCases) {
         const layout::Layout l =
@@ -50,6 +52,7 @@ TEST(RenderVsTrace, IdsAgreeOnEveryLayoutAndPose) {
         f.room = layout::find_room(l, c.room);
         f.eye_width = 200;
         f.eye_height = 120;
+        f.clip = GetParam();
         const render::Image raster = testing::render_once(gl::Backend::Egl, l, f);
 
         trace::TraceDesc t;
@@ -70,6 +73,12 @@ TEST(RenderVsTrace, IdsAgreeOnEveryLayoutAndPose) {
     }
     std::printf("  worst id mismatch: %.4f%%\n", worst);
 }
+
+INSTANTIATE_TEST_SUITE_P(ClipModes, RenderVsTrace,
+                         ::testing::Values(render::ClipMode::ClipDistance, render::ClipMode::Oblique),
+                         [](const auto& info) {
+                             return std::string(info.param == render::ClipMode::Oblique ? "oblique" : "clip_distance");
+                         });
 
 }  // namespace
 }  // namespace impossible
