@@ -8,7 +8,7 @@ namespace impossible::app {
 const std::set<std::string>& view_value_options() {
     static const std::set<std::string> names = {"--pose", "--room",  "--ipd", "--fov",     "--size",
                                                 "--max-depth", "--out", "--ids", "--backend", "--stereo",
-                                                "--clip"};
+                                                "--clip", "--depth"};
     return names;
 }
 
@@ -30,6 +30,8 @@ const char* view_options_help() {
            "  --backend egl|osmesa       headless OpenGL context (default egl, falling back to osmesa)\n"
            "  --stereo MODE              clip-shift (default), viewport-index or two-pass\n"
            "  --clip MODE                clip-distance (default) or oblique\n"
+           "  --depth MODE               reversed-z (default: float depth, infinite far plane) or standard\n"
+           "                             (24-bit depth, far plane at 200 km)\n"
            "  --no-cull                  draw every portal without per-eye culling and scissor\n"
            "  --stats                    print draw calls, triangles and portal passes to stderr\n";
 }
@@ -76,6 +78,11 @@ ViewOptions parse_view_options(const ParsedArgs& args) {
         else if (*v == "oblique") o.clip = render::ClipMode::Oblique;
         else throw InputError("--clip: '" + *v + "' is not clip-distance or oblique");
     }
+    if (auto v = args.value("--depth")) {
+        if (*v == "reversed-z") o.depth = render::DepthMode::ReversedZ;
+        else if (*v == "standard") o.depth = render::DepthMode::Standard;
+        else throw InputError("--depth: '" + *v + "' is not reversed-z or standard");
+    }
     o.cull_portals = !args.flag("--no-cull");
     o.stats = args.flag("--stats");
     return o;
@@ -118,6 +125,7 @@ render::FrameDesc frame_for(const layout::Layout& layout, const ViewOptions& o) 
     f.max_depth = o.max_depth;
     f.stereo = o.stereo;
     f.clip = o.clip;
+    f.depth = o.depth;
     f.cull_portals = o.cull_portals;
     return f;
 }

@@ -27,6 +27,7 @@ struct ViewOptions {
     std::optional<gl::Backend> backend;  // none: EGL, falling back to OSMesa
     render::StereoMode stereo = render::StereoMode::ClipShift;
     render::ClipMode clip = render::ClipMode::ClipDistance;
+    render::DepthMode depth = render::DepthMode::ReversedZ;
     bool cull_portals = true;
     bool stats = false;
 };

@@ -22,17 +22,25 @@ enum class ClipMode {
     Oblique,       // Lengyel's oblique near plane
 };
 
+// Depth buffer and projection.
+enum class DepthMode {
+    ReversedZ,  // DEPTH32F, glClipControl ZERO_TO_ONE, infinite far plane (default)
+    Standard,   // DEPTH24, classic -1..1 projection with a far plane at FrameDesc::far
+};
+
 struct FrameDesc {
     math::HeadPose head;
     int room = 0;              // index of the room the head is in
     double ipd = 0.064;
     double fov_y_deg = 90.0;
     double near = 0.01;
+    double far = 2e5;          // only for DepthMode::Standard: beyond any valid layout
     int eye_width = 1280;
     int eye_height = 720;
     int max_depth = 8;         // portals one line of sight may pass
     StereoMode stereo = StereoMode::ClipShift;
     ClipMode clip = ClipMode::ClipDistance;
+    DepthMode depth = DepthMode::ReversedZ;
     bool cull_portals = true;  // per-eye frustum/facing culling and scissor
 };
 

@@ -2,8 +2,8 @@
 // immutable PassState each, kept in a table named by an enum. The stencil
 // reference of every pass is the recursion level (given when applied).
 //
-// Depth is reversed-Z (glClipControl ZERO_TO_ONE, cleared to 0): nearer
-// surfaces have greater depth.
+// Depth is reversed-Z by default (glClipControl ZERO_TO_ONE, cleared to 0):
+// nearer surfaces have greater depth. DepthMode::Standard flips every test.
 #pragma once
 
 #include <array>
@@ -40,6 +40,22 @@ inline constexpr std::array<gl::PassState, static_cast<size_t>(Pass::Count)> kPa
     {true, false, GL_GEQUAL, true, true, stencil_equal(GL_KEEP)},     // PortalFill
 }};
 
-inline const gl::PassState& pass_state(Pass pass) { return kPassStates[static_cast<size_t>(pass)]; }
+// The table above is for reversed-Z; with standard depth (nearer is less)
+// every comparison flips.
+inline constexpr gl::PassState with_standard_depth(gl::PassState s) {
+    if (s.depth_func == GL_GREATER) s.depth_func = GL_LESS;
+    else if (s.depth_func == GL_GEQUAL) s.depth_func = GL_LEQUAL;
+    return s;
+}
+
+inline constexpr std::array<gl::PassState, static_cast<size_t>(Pass::Count)> kStandardDepthPassStates = [] {
+    std::array<gl::PassState, static_cast<size_t>(Pass::Count)> out{};
+    for (size_t i = 0; i < out.size(); ++i) out[i] = with_standard_depth(kPassStates[i]);
+    return out;
+}();
+
+inline const gl::PassState& pass_state(Pass pass, bool reversed_z) {
+    return (reversed_z ? kPassStates : kStandardDepthPassStates)[static_cast<size_t>(pass)];
+}
 
 }  // namespace impossible::render

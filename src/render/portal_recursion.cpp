@@ -81,7 +81,7 @@ void draw_range(DrawContext& ctx, const scene::IndexRange& range) {
 }
 
 void use_pass(DrawContext& ctx, Pass pass, int stencil_ref) {
-    ctx.renderer.state.apply(pass_state(pass), stencil_ref);
+    ctx.renderer.state.apply(pass_state(pass, ctx.frame.depth == DepthMode::ReversedZ), stencil_ref);
 }
 
 void set_cell_id(const DrawContext& ctx, unsigned id, bool unshaded) {
@@ -113,6 +113,8 @@ void draw_portal_box(DrawContext& ctx, const LevelView& view, int portal,
 void clear_depth_in_portal(DrawContext& ctx, int stencil_ref) {
     use_pass(ctx, Pass::ClearDepth, stencil_ref);
     glUseProgram(ctx.renderer.clear_depth.program.get());
+    glProgramUniform1f(ctx.renderer.clear_depth.program.get(), ctx.renderer.clear_depth.far_depth,
+                       ctx.frame.depth == DepthMode::ReversedZ ? 0.0f : 1.0f);
     glBindVertexArray(ctx.renderer.empty_vao.get());
     // The clear triangle has no eye: with per-eye viewports it is drawn
     // through viewport 0, widened to the whole target for the moment.
@@ -149,9 +151,13 @@ LevelView child_view(const DrawContext& ctx, const LevelView& view, int portal,
         ev.behind_exit = math::signed_distance(b.rect, ev.eye.position) < 0.0;
         if (!ev.behind_exit) continue;
         const math::dvec4 plane = math::portal_plane(b.rect);
-        if (ctx.frame.clip == ClipMode::Oblique)
-            ev.view_proj = math::oblique_reversed_z(ctx.projection, math::transform_plane(view_matrix, plane)) *
+        if (ctx.frame.clip == ClipMode::Oblique) {
+            const math::dvec4 plane_eye = math::transform_plane(view_matrix, plane);
+            ev.view_proj = (ctx.frame.depth == DepthMode::ReversedZ
+                                ? math::oblique_reversed_z(ctx.projection, plane_eye)
+                                : math::oblique_standard(ctx.projection, plane_eye)) *
                            view_matrix;
+        }
         else
             ev.clip_plane = plane;
     }

@@ -9,9 +9,10 @@ namespace {
 
 int mode_index(StereoMode mode) { return static_cast<int>(mode); }
 
-std::string ensure_target(Renderer& r, int width, int height) {
-    if (r.target.width == width && r.target.height == height && r.target.framebuffer) return {};
-    TargetResult made = create_target(width, height);
+std::string ensure_target(Renderer& r, int width, int height, DepthMode depth) {
+    if (r.target.width == width && r.target.height == height && r.target.depth == depth && r.target.framebuffer)
+        return {};
+    TargetResult made = create_target(width, height, depth);
     if (!made.error.empty()) return made.error;
     r.target = std::move(made.target);
     return {};
@@ -30,7 +31,7 @@ std::string ensure_program(Renderer& r, StereoMode mode) {
     return {};
 }
 
-void clear_target(Renderer& r) {
+void clear_target(Renderer& r, DepthMode depth) {
     // Colour, ids, depth (far = 0 in reversed-Z) and stencil (level 0).
     gl::PassState all_writes;
     all_writes.stencil.write_mask = 0xff;
@@ -43,7 +44,7 @@ void clear_target(Renderer& r) {
     const GLuint fb = r.target.framebuffer.get();
     glClearNamedFramebufferfv(fb, GL_COLOR, 0, color);
     glClearNamedFramebufferuiv(fb, GL_COLOR, 1, id);
-    glClearNamedFramebufferfi(fb, GL_DEPTH_STENCIL, 0, 0.0f, 0);
+    glClearNamedFramebufferfi(fb, GL_DEPTH_STENCIL, 0, depth == DepthMode::ReversedZ ? 0.0f : 1.0f, 0);
 }
 
 // Per-eye views of the head's room at level 0, restricted to `eye_mask`.
@@ -84,8 +85,6 @@ RendererResult create_renderer(const layout::Layout& layout, const scene::Scene&
         out.error = e;
         return out;
     }
-    // Reversed-Z: depth 1 at the near plane, 0 at infinity, in a float buffer.
-    glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
     for (int i = 0; i < 5; ++i) glEnable(GL_CLIP_DISTANCE0 + i);
     glFrontFace(GL_CCW);
     r->state.invalidate();
@@ -95,12 +94,15 @@ RendererResult create_renderer(const layout::Layout& layout, const scene::Scene&
 
 std::string draw_frame(Renderer& r, const FrameDesc& frame, FrameStats* stats_out) {
     const int width = 2 * frame.eye_width, height = frame.eye_height;
-    if (std::string e = ensure_target(r, width, height); !e.empty()) return e;
+    if (std::string e = ensure_target(r, width, height, frame.depth); !e.empty()) return e;
     if (std::string e = ensure_program(r, frame.stereo); !e.empty()) return e;
     const SceneProgram& program = *r.programs[mode_index(frame.stereo)];
 
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, r.target.framebuffer.get());
-    clear_target(r);
+    // Reversed-Z: depth 1 at the near plane, 0 at infinity, in a float buffer.
+    const bool reversed_z = frame.depth == DepthMode::ReversedZ;
+    glClipControl(GL_LOWER_LEFT, reversed_z ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
+    clear_target(r, frame.depth);
     glUseProgram(program.program.get());
     glBindVertexArray(r.gpu.vao.get());
 
@@ -109,7 +111,8 @@ std::string draw_frame(Renderer& r, const FrameDesc& frame, FrameStats* stats_ou
     frustum.aspect = static_cast<double>(frame.eye_width) / frame.eye_height;
     frustum.near = frame.near;
     FrameStats stats;
-    DrawContext ctx{r, program, frame, stats, math::perspective_reversed_z(frustum)};
+    DrawContext ctx{r, program, frame, stats,
+                    reversed_z ? math::perspective_reversed_z(frustum) : math::perspective_standard(frustum, frame.far)};
 
     const float w = static_cast<float>(frame.eye_width), h = static_cast<float>(frame.eye_height);
     switch (frame.stereo) {

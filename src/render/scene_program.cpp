@@ -58,6 +58,7 @@ ClearDepthProgramResult build_clear_depth_program() {
     ClearDepthProgramResult out;
     out.error = built.error;
     out.program.program = std::move(built.program);
+    if (out.error.empty()) out.program.far_depth = glGetUniformLocation(out.program.program.get(), "u_far_depth");
     return out;
 }
 

@@ -30,6 +30,7 @@ SceneProgramResult build_scene_program(StereoMode mode);
 // nothing else; with the stencil test it clears depth inside a portal.
 struct ClearDepthProgram {
     gl::Program program;
+    GLint far_depth = -1;  // float: clip-space z of the far plane (w = 1)
 };
 
 struct ClearDepthProgramResult {

@@ -4,18 +4,21 @@
 
 namespace impossible::render {
 
-TargetResult create_target(int width, int height) {
+TargetResult create_target(int width, int height, DepthMode depth) {
     TargetResult out;
     Target& t = out.target;
     t.width = width;
     t.height = height;
+    t.depth = depth;
     t.color = gl::create_renderbuffer();
     t.ids = gl::create_renderbuffer();
     t.depth_stencil = gl::create_renderbuffer();
     t.framebuffer = gl::create_framebuffer();
     glNamedRenderbufferStorage(t.color.get(), GL_RGBA8, width, height);
     glNamedRenderbufferStorage(t.ids.get(), GL_R8UI, width, height);
-    glNamedRenderbufferStorage(t.depth_stencil.get(), GL_DEPTH32F_STENCIL8, width, height);
+    glNamedRenderbufferStorage(t.depth_stencil.get(),
+                               depth == DepthMode::ReversedZ ? GL_DEPTH32F_STENCIL8 : GL_DEPTH24_STENCIL8, width,
+                               height);
     const GLuint fb = t.framebuffer.get();
     glNamedFramebufferRenderbuffer(fb, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, t.color.get());
     glNamedFramebufferRenderbuffer(fb, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, t.ids.get());

@@ -1,5 +1,6 @@
 // The side-by-side render target: RGBA8 colour, R8UI cell ids, and a
-// DEPTH32F_STENCIL8 buffer (reversed-Z float depth, stencil = portal level).
+// DEPTH32F_STENCIL8 buffer (reversed-Z float depth; DEPTH24_STENCIL8 for
+// standard depth); the stencil holds the portal level.
 #pragma once
 
 #include <string>
@@ -12,6 +13,7 @@ namespace impossible::render {
 struct Target {
     int width = 0;
     int height = 0;
+    DepthMode depth = DepthMode::ReversedZ;
     gl::Renderbuffer color;
     gl::Renderbuffer ids;
     gl::Renderbuffer depth_stencil;
@@ -23,7 +25,7 @@ struct TargetResult {
     std::string error;  // an incomplete framebuffer is reported, never ignored
 };
 
-TargetResult create_target(int width, int height);
+TargetResult create_target(int width, int height, DepthMode depth);
 
 // Reads colour and ids back, rows from the top.
 Image read_target(const Target& target);
