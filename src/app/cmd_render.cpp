@@ -4,7 +4,6 @@
 #include "app/cli_args.hpp"
 #include "app/commands.hpp"
 #include "app/layout_source.hpp"
-#include "app/png_io.hpp"
 #include "app/view_options.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
@@ -40,11 +39,7 @@ int run_render_command(const Args& args, std::ostream& out, std::ostream& err) {
     if (!result.error.empty()) throw InputError(result.error);
 
     const render::Image& image = result.image;
-    if (std::string e = write_png(options.out, image.width, image.height, 3, image.rgb); !e.empty())
-        throw InputError(e);
-    if (options.ids)
-        if (std::string e = write_png(*options.ids, image.width, image.height, 1, image.ids); !e.empty())
-            throw InputError(e);
+    write_frame_pngs(options, image.width, image.height, image.rgb, image.ids);
     if (options.stats) {
         const render::FrameStats& s = result.stats;
         err << "stats: draw_calls=" << s.draw_calls << " triangles=" << s.triangles

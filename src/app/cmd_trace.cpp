@@ -9,7 +9,6 @@
 #include "app/cli_args.hpp"
 #include "app/commands.hpp"
 #include "app/layout_source.hpp"
-#include "app/png_io.hpp"
 #include "app/view_options.hpp"
 #include "trace/tracer.hpp"
 
@@ -46,26 +45,14 @@ int run_trace_command(const Args& args, std::ostream& out, std::ostream& err) {
     const layout::Layout layout = load_layout_or_default(options.layout_path);
     const render::FrameDesc frame = frame_for(layout, options);
 
-    trace::TraceDesc desc;
-    desc.head = frame.head;
-    desc.room = frame.room;
-    desc.ipd = frame.ipd;
-    desc.fov_y_deg = frame.fov_y_deg;
-    desc.eye_width = frame.eye_width;
-    desc.eye_height = frame.eye_height;
-    desc.max_depth = frame.max_depth;
-    desc.threads = threads;
+    const trace::TraceDesc desc = trace_desc_for(frame, threads);
 
     const auto start = std::chrono::steady_clock::now();
     const trace::Scene scene = trace::prepare_scene(layout);
     const trace::TraceImage image = trace::trace_frame(scene, desc);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    if (std::string e = write_png(options.out, image.width, image.height, 3, image.rgb); !e.empty())
-        throw InputError(e);
-    if (options.ids)
-        if (std::string e = write_png(*options.ids, image.width, image.height, 1, image.ids); !e.empty())
-            throw InputError(e);
+    write_frame_pngs(options, image.width, image.height, image.rgb, image.ids);
     if (options.stats) {
         const long rays = static_cast<long>(image.width) * image.height;
         long fills = 0, nothing = 0;

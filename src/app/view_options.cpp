@@ -1,5 +1,7 @@
 #include "app/view_options.hpp"
 
+#include "app/png_io.hpp"
+
 #include <cmath>
 #include <tuple>
 
@@ -86,6 +88,26 @@ ViewOptions parse_view_options(const ParsedArgs& args) {
     o.cull_portals = !args.flag("--no-cull");
     o.stats = args.flag("--stats");
     return o;
+}
+
+trace::TraceDesc trace_desc_for(const render::FrameDesc& frame, int threads) {
+    trace::TraceDesc desc;
+    desc.head = frame.head;
+    desc.room = frame.room;
+    desc.ipd = frame.ipd;
+    desc.fov_y_deg = frame.fov_y_deg;
+    desc.eye_width = frame.eye_width;
+    desc.eye_height = frame.eye_height;
+    desc.max_depth = frame.max_depth;
+    desc.threads = threads;
+    return desc;
+}
+
+void write_frame_pngs(const ViewOptions& options, int width, int height, const std::vector<std::uint8_t>& rgb,
+                      const std::vector<std::uint8_t>& ids) {
+    if (std::string e = write_png(options.out, width, height, 3, rgb); !e.empty()) throw InputError(e);
+    if (options.ids)
+        if (std::string e = write_png(*options.ids, width, height, 1, ids); !e.empty()) throw InputError(e);
 }
 
 render::FrameDesc frame_for(const layout::Layout& layout, const ViewOptions& o) {

@@ -10,6 +10,7 @@
 #include "gl/context.hpp"
 #include "layout/layout.hpp"
 #include "render/frame.hpp"
+#include "trace/tracer.hpp"
 
 namespace impossible::app {
 
@@ -42,6 +43,14 @@ ViewOptions parse_view_options(const ParsedArgs& args);
 // The head pose and room of the frame: the layout's start without --pose;
 // with --pose, --room or else the one room whose box holds the head.
 render::FrameDesc frame_for(const layout::Layout& layout, const ViewOptions& options);
+
+// The same frame for the reference tracer (threads: 0 = all cores).
+trace::TraceDesc trace_desc_for(const render::FrameDesc& frame, int threads = 0);
+
+// Writes the colour image and, with --ids, the id map (atomic PNG writes);
+// throws InputError naming the file that could not be written.
+void write_frame_pngs(const ViewOptions& options, int width, int height, const std::vector<std::uint8_t>& rgb,
+                      const std::vector<std::uint8_t>& ids);
 
 // The option table for --help texts.
 const char* view_options_help();

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/view_options.hpp"
 #include "gl_fixture.hpp"
 #include "math/oblique_projection.hpp"
 #include "math/projection.hpp"
@@ -22,15 +23,7 @@ std::string shipped(const char* name) { return std::string(IMPOSSIBLE_SOURCE_DIR
 // Renders and traces the same frame; prints and returns the comparison.
 trace::Comparison render_against_trace(const layout::Layout& l, const render::FrameDesc& f, const char* what) {
     const render::Image raster = testing::render_once(gl::Backend::Egl, l, f);
-    trace::TraceDesc t;
-    t.head = f.head;
-    t.room = f.room;
-    t.ipd = f.ipd;
-    t.fov_y_deg = f.fov_y_deg;
-    t.eye_width = f.eye_width;
-    t.eye_height = f.eye_height;
-    t.max_depth = f.max_depth;
-    const trace::TraceImage traced = trace::trace_frame(l, t);
+    const trace::TraceImage traced = trace::trace_frame(l, app::trace_desc_for(f));
     const trace::Picture a{raster.width, raster.height, raster.rgb, raster.ids};
     const trace::Picture b{traced.width, traced.height, traced.rgb, traced.ids};
     EXPECT_FALSE(trace::incomparable(a, b));

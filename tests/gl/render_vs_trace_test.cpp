@@ -5,6 +5,7 @@
 // figures.
 #include <cstdio>
 
+#include "app/view_options.hpp"
 #include "gl_fixture.hpp"
 #include "trace/image_compare.hpp"
 #include "trace/tracer.hpp"
@@ -55,12 +56,7 @@ TEST_P(RenderVsTrace, IdsAgreeOnEveryLayoutAndPose) {
         f.clip = GetParam();
         const render::Image raster = testing::render_once(gl::Backend::Egl, l, f);
 
-        trace::TraceDesc t;
-        t.head = f.head;
-        t.room = f.room;
-        t.eye_width = f.eye_width;
-        t.eye_height = f.eye_height;
-        const trace::TraceImage traced = trace::trace_frame(l, t);
+        const trace::TraceImage traced = trace::trace_frame(l, app::trace_desc_for(f));
 
         const trace::Picture a{raster.width, raster.height, raster.rgb, raster.ids};
         const trace::Picture b{traced.width, traced.height, traced.rgb, traced.ids};
