@@ -62,13 +62,12 @@ void append_hex_escape(std::string& out, unsigned char b) {
     out += digits[b & 0xF];
 }
 
-}  // namespace
-
-std::string quote(std::string_view text) {
-    std::string out = "\"";
+// Control bytes and bytes that are not valid UTF-8 become \xNN; with
+// `quotes`, '"' and '\\' get a backslash too.
+void append_escaped(std::string& out, std::string_view text, bool quotes) {
     for (std::size_t i = 0; i < text.size();) {
         const unsigned char b = static_cast<unsigned char>(text[i]);
-        if (b == '"' || b == '\\') {
+        if (quotes && (b == '"' || b == '\\')) {
             out += '\\';
             out += static_cast<char>(b);
             ++i;
@@ -83,25 +82,20 @@ std::string quote(std::string_view text) {
             ++i;
         }
     }
+}
+
+}  // namespace
+
+std::string quote(std::string_view text) {
+    std::string out = "\"";
+    append_escaped(out, text, true);
     out += '"';
     return out;
 }
 
 std::string printable(std::string_view text) {
     std::string out;
-    for (std::size_t i = 0; i < text.size();) {
-        const unsigned char b = static_cast<unsigned char>(text[i]);
-        if (b < 0x20 || b == 0x7F) {
-            append_hex_escape(out, b);
-            ++i;
-        } else if (const std::size_t n = utf8_sequence_length(text, i); n > 0) {
-            out.append(text.substr(i, n));
-            i += n;
-        } else {
-            append_hex_escape(out, b);
-            ++i;
-        }
-    }
+    append_escaped(out, text, false);
     return out;
 }
 
