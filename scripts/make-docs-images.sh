@@ -24,4 +24,13 @@ render corridor corridor.json
 render loop loop.json
 # The same corridor at two recursion limits: the flat fill marks where it stops.
 render corridor-depth2 corridor.json --max-depth 2 --pose 0,1.6,3,0,0,0
+
+# The preview window (HUD, minimap, boundary grid) at the end of a scripted walk
+# into the tunnel, on a private X server. Only the HUD's frame time varies
+# between runs.
+shots=$(mktemp -d)
+xvfb-run -a -s "-screen 0 1280x1024x24" "$bin" preview "$root/layouts/tunnel.json" \
+  --path "$root/scripts/preview-tour.txt" --frames 7 --size 560x420 --screenshots "$shots"
+cp "$shots/window-0006.png" "$out/preview.png"
+rm -rf "$shots"
 echo "wrote $(ls "$out" | wc -l) images to $out"

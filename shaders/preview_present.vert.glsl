@@ -1,0 +1,7 @@
+// One triangle covering the viewport (one eye's rectangle of the window).
+out vec2 v_uv;
+void main() {
+    vec2 corner = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
+    v_uv = corner;
+    gl_Position = vec4(corner * 2.0 - 1.0, 0.5, 1.0);
+}

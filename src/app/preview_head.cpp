@@ -1,0 +1,57 @@
+#include "app/preview_head.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace impossible::app {
+
+math::HeadPose move_head(const math::HeadPose& head, const MoveInput& in,
+                         const std::optional<layout::PlayArea>& area) {
+    math::HeadPose out = head;
+    out.yaw_deg = std::remainder(head.yaw_deg - in.mouse_dx * kMouseDegPerPixel, 360.0);
+    out.pitch_deg = std::clamp(head.pitch_deg - in.mouse_dy * kMouseDegPerPixel, -kMaxPitch, kMaxPitch);
+
+    const glm::dvec2 sc = math::sin_cos_deg(out.yaw_deg);
+    const math::dvec3 forward{-sc.x, 0.0, -sc.y};  // yaw 0 looks along -Z, yaw 90 along -X
+    const math::dvec3 right{sc.y, 0.0, -sc.x};
+    const double speed = kWalkSpeed * (in.fast ? kFastFactor : 1.0);
+    out.position += (forward * double(in.forward) + right * double(in.right)) * (speed * in.dt);
+    out.position.y += double(in.up) * kClimbSpeed * (in.fast ? kFastFactor : 1.0) * in.dt;
+    out.position.y = std::clamp(out.position.y, std::min(kMinHeight, head.position.y),
+                                std::max(kMaxHeight, head.position.y));
+    if (area) {
+        out.position.x = std::clamp(out.position.x, std::min(area->min.x, head.position.x),
+                                    std::max(area->max.x, head.position.x));
+        out.position.z = std::clamp(out.position.z, std::min(area->min.y, head.position.z),
+                                    std::max(area->max.y, head.position.z));
+    }
+    return out;
+}
+
+math::HeadPose pose_of(const math::dvec3& position, const math::dmat3& r) {
+    // R = R_y(yaw) · R_x(pitch) · R_z(-roll): the back column is
+    // (sin yaw cos pitch, -sin pitch, cos yaw cos pitch) and the second row is
+    // (cos pitch · sin(-roll), cos pitch · cos(-roll), -sin pitch).
+    constexpr double deg = 180.0 / math::kPi;
+    math::HeadPose pose;
+    pose.position = position;
+    const double sp = std::clamp(-r[2].y, -1.0, 1.0);
+    pose.pitch_deg = std::asin(sp) * deg;
+    const double cp = std::hypot(r[0].y, r[1].y);
+    if (cp > 1e-12) {
+        pose.yaw_deg = std::atan2(r[2].x, r[2].z) * deg;
+        pose.roll_deg = -std::atan2(r[0].y, r[1].y) * deg;
+    } else {  // looking straight up or down: all turning is yaw
+        pose.yaw_deg = std::atan2(-r[0].z, r[0].x) * deg;
+        pose.roll_deg = 0.0;
+    }
+    return pose;
+}
+
+std::optional<std::array<double, 4>> edge_distances(const math::dvec3& p,
+                                                    const std::optional<layout::PlayArea>& area) {
+    if (!area) return std::nullopt;
+    return std::array<double, 4>{p.x - area->min.x, area->max.x - p.x, p.z - area->min.y, area->max.y - p.z};
+}
+
+}  // namespace impossible::app
