@@ -15,6 +15,7 @@ int run_validate_command(const Args& args, std::ostream& out, std::ostream& err)
 int run_walk_command(const Args& args, std::ostream& out, std::ostream& err);
 int run_trace_command(const Args& args, std::ostream& out, std::ostream& err);
 int run_compare_command(const Args& args, std::ostream& out, std::ostream& err);
+int run_bench_command(const Args& args, std::ostream& out, std::ostream& err);
 int run_preview_command(const Args& args, std::ostream& out, std::ostream& err);
 
 // Dispatches argv[1] to a command; prints the overview for --help or nothing.

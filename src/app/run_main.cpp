@@ -14,7 +14,8 @@ const char* kOverview =
     "  compare A.png B.png      compare two frames (cell ids, colour PSNR), e.g. render vs trace\n"
     "  validate LAYOUT          check a layout file\n"
     "  walk LAYOUT --path FILE  replay a walk and print where the head goes\n"
-    "  preview [LAYOUT]         a window to walk a layout in stereo (mouse look, WASD, minimap, HUD)\n";
+    "  preview [LAYOUT]         a window to walk a layout in stereo (mouse look, WASD, minimap, HUD)\n"
+    "  bench [LAYOUT]           frame time, per-portal cost, fragments and error of the renderer\n";
 
 }  // namespace
 
@@ -31,6 +32,7 @@ int run_main(const Args& args, std::ostream& out, std::ostream& err) {
         if (command == "walk") return run_walk_command(rest, out, err);
         if (command == "trace") return run_trace_command(rest, out, err);
         if (command == "compare") return run_compare_command(rest, out, err);
+        if (command == "bench") return run_bench_command(rest, out, err);
         if (command == "preview") return run_preview_command(rest, out, err);
         err << "impossible: unknown command '" << command << "'\n" << kOverview;
         return kExitUsage;

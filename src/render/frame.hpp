@@ -42,6 +42,11 @@ struct FrameDesc {
     ClipMode clip = ClipMode::ClipDistance;
     DepthMode depth = DepthMode::ReversedZ;
     bool cull_portals = true;  // per-eye frustum/facing culling and scissor
+    // Measure the frame (for `impossible bench`): GL_SAMPLES_PASSED queries
+    // around the colour passes, and glFinish + a monotonic clock around each
+    // level-0 portal's subtree. The glFinish calls perturb the frame's own
+    // time, so time frames with this off. Off: no queries, no extra work.
+    bool profile = false;
 };
 
 // The side-by-side image: left eye in the left half, rows from the top.
@@ -60,6 +65,16 @@ struct FrameStats {
     int portal_passes_culled = 0;   // portals skipped as invisible to both eyes
     int portal_fills = 0;           // portals shown as the flat fill at the depth limit
     int max_level_reached = 0;
+    // Only with FrameDesc::profile:
+    long colour_fragments = 0;      // samples that passed every test in the colour passes (Scene,
+                                    // PortalFill): fragments written to the colour buffer
+    struct PortalCost {
+        int portal = -1;            // index into the layout's portals (a portal of the head's room)
+        double ms = 0.0;            // its whole subtree (mark, depth reset, the view through it and
+                                    // everything visible in that view, unmark), glFinish to glFinish
+        long colour_fragments = 0;  // colour fragments written within the subtree
+    };
+    std::vector<PortalCost> portal_costs;  // level-0 portals drawn (culled ones are absent)
 };
 
 }  // namespace impossible::render

@@ -12,6 +12,8 @@
 // rectangle, which its clip distances turn into no work.
 #include "render/portal_recursion.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "math/oblique_projection.hpp"
@@ -90,6 +92,24 @@ void set_cell_id(const DrawContext& ctx, unsigned id, bool unshaded) {
     glProgramUniform1i(p, ctx.program.unshaded, unshaded ? 1 : 0);
 }
 
+// Brackets the colour draws of a pass with a GL_SAMPLES_PASSED query when
+// profiling; nothing otherwise.
+struct ColourQueryScope {
+    FrameProfiler* profiler;
+    explicit ColourQueryScope(FrameProfiler* p) : profiler(p) {
+        if (!profiler) return;
+        GLuint q = 0;
+        glCreateQueries(GL_SAMPLES_PASSED, 1, &q);
+        profiler->queries.push_back({q, profiler->top_portal});
+        glBeginQuery(GL_SAMPLES_PASSED, q);
+    }
+    ~ColourQueryScope() {
+        if (profiler) glEndQuery(GL_SAMPLES_PASSED);
+    }
+    ColourQueryScope(const ColourQueryScope&) = delete;
+    ColourQueryScope& operator=(const ColourQueryScope&) = delete;
+};
+
 // Draws a portal's box for the eyes with a non-empty rect: the front face for
 // eyes in front of it, the inner faces for eyes in its column.
 void draw_portal_box(DrawContext& ctx, const LevelView& view, int portal,
@@ -164,7 +184,63 @@ LevelView child_view(const DrawContext& ctx, const LevelView& view, int portal,
     return child;
 }
 
+// One visible portal of `view`: the fill at the depth limit, or mark, depth
+// reset, the view through it (recursively) and unmark.
+void draw_portal(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
+    Renderer& r = ctx.renderer;
+    const int level = view.level;
+    if (ctx.frame.cull_portals) r.state.scissor(scissor_of(ctx, rects, view));
+    if (level >= ctx.frame.max_depth) {
+        use_pass(ctx, Pass::PortalFill, level);
+        set_cell_id(ctx, 255, true);
+        const ColourQueryScope colour(ctx.profiler);
+        draw_portal_box(ctx, view, p, rects);
+        ctx.stats.portal_fills += 1;
+        return;
+    }
+    use_pass(ctx, Pass::PortalMark, level);
+    draw_portal_box(ctx, view, p, rects);
+    clear_depth_in_portal(ctx, level + 1);
+
+    ctx.stats.portal_passes_drawn += 1;
+    draw_level(ctx, child_view(ctx, view, p, rects));
+
+    if (ctx.frame.cull_portals) r.state.scissor(scissor_of(ctx, rects, view));
+    use_pass(ctx, Pass::PortalUnmark, level + 1);
+    draw_portal_box(ctx, view, p, rects);
+}
+
+// draw_portal for a portal of the head's cell, timed: glFinish before and
+// after, so the time is the GPU work of its whole subtree (and the CPU work
+// of submitting it). Two-pass stereo adds both eyes' times.
+void draw_top_portal_profiled(DrawContext& ctx, const LevelView& view, int p,
+                              const std::array<NdcRect, 2>& rects) {
+    glFinish();
+    const auto start = std::chrono::steady_clock::now();
+    ctx.profiler->top_portal = p;
+    draw_portal(ctx, view, p, rects);
+    glFinish();
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    ctx.profiler->top_portal = -1;
+    std::vector<FrameStats::PortalCost>& costs = ctx.stats.portal_costs;
+    auto it = std::find_if(costs.begin(), costs.end(), [p](const auto& c) { return c.portal == p; });
+    if (it == costs.end()) costs.push_back({p, ms, 0});
+    else it->ms += ms;
+}
+
 }  // namespace
+
+void collect_profile(FrameProfiler& profiler, FrameStats& stats) {
+    for (const FrameProfiler::ColourQuery& q : profiler.queries) {
+        GLuint64 samples = 0;
+        glGetQueryObjectui64v(q.query, GL_QUERY_RESULT, &samples);
+        glDeleteQueries(1, &q.query);
+        stats.colour_fragments += static_cast<long>(samples);
+        for (FrameStats::PortalCost& c : stats.portal_costs)
+            if (c.portal == q.top_portal) c.colour_fragments += static_cast<long>(samples);
+    }
+    profiler.queries.clear();
+}
 
 void draw_level(DrawContext& ctx, const LevelView& view) {
     Renderer& r = ctx.renderer;
@@ -176,7 +252,10 @@ void draw_level(DrawContext& ctx, const LevelView& view) {
     use_pass(ctx, Pass::Scene, level);
     set_eye_uniforms(ctx, view, view_rects);
     set_cell_id(ctx, static_cast<unsigned>(view.cell + 1), false);
-    draw_range(ctx, r.scene.cells[view.cell]);
+    {
+        const ColourQueryScope colour(ctx.profiler);
+        draw_range(ctx, r.scene.cells[view.cell]);
+    }
 
     // Which portals each eye can see. The portal the view came out of lies
     // behind a virtual eye that stands behind it, where the plane clips it.
@@ -199,30 +278,13 @@ void draw_level(DrawContext& ctx, const LevelView& view) {
         if (!visible[k][0].empty() || !visible[k][1].empty()) draw_portal_box(ctx, view, portals[k], visible[k]);
 
     for (size_t k = 0; k < portals.size(); ++k) {
-        const int p = portals[k];
         const std::array<NdcRect, 2>& rects = visible[k];
         if (rects[0].empty() && rects[1].empty()) {
             ctx.stats.portal_passes_culled += 1;
             continue;
         }
-        if (ctx.frame.cull_portals) r.state.scissor(scissor_of(ctx, rects, view));
-        if (level >= ctx.frame.max_depth) {
-            use_pass(ctx, Pass::PortalFill, level);
-            set_cell_id(ctx, 255, true);
-            draw_portal_box(ctx, view, p, rects);
-            ctx.stats.portal_fills += 1;
-            continue;
-        }
-        use_pass(ctx, Pass::PortalMark, level);
-        draw_portal_box(ctx, view, p, rects);
-        clear_depth_in_portal(ctx, level + 1);
-
-        ctx.stats.portal_passes_drawn += 1;
-        draw_level(ctx, child_view(ctx, view, p, rects));
-
-        if (ctx.frame.cull_portals) r.state.scissor(scissor_of(ctx, rects, view));
-        use_pass(ctx, Pass::PortalUnmark, level + 1);
-        draw_portal_box(ctx, view, p, rects);
+        if (ctx.profiler && level == 0) draw_top_portal_profiled(ctx, view, portals[k], rects);
+        else draw_portal(ctx, view, portals[k], rects);
     }
     r.state.no_scissor();
 }

@@ -6,13 +6,30 @@
 
 namespace impossible::render {
 
+// Per-frame measurements when FrameDesc::profile is set: one occlusion query
+// per colour draw, tagged with the level-0 portal whose subtree it belongs to
+// (-1: the head's own cell).
+struct FrameProfiler {
+    struct ColourQuery {
+        GLuint query = 0;
+        int top_portal = -1;
+    };
+    std::vector<ColourQuery> queries;
+    int top_portal = -1;
+};
+
 struct DrawContext {
     Renderer& renderer;
     const SceneProgram& program;
     const FrameDesc& frame;
     FrameStats& stats;
     math::dmat4 projection{1.0};
+    FrameProfiler* profiler = nullptr;  // null unless FrameDesc::profile
 };
+
+// Reads back and deletes the profiler's queries into stats (colour_fragments,
+// the portal_costs' fragments).
+void collect_profile(FrameProfiler& profiler, FrameStats& stats);
 
 // Draws `view` where the stencil equals view.level, then every portal of its
 // cell that either eye can see, recursively.

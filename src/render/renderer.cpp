@@ -111,8 +111,10 @@ std::string draw_frame(Renderer& r, const FrameDesc& frame, FrameStats* stats_ou
     frustum.aspect = static_cast<double>(frame.eye_width) / frame.eye_height;
     frustum.near = frame.near;
     FrameStats stats;
+    FrameProfiler profiler;
     DrawContext ctx{r, program, frame, stats,
-                    reversed_z ? math::perspective_reversed_z(frustum) : math::perspective_standard(frustum, frame.far)};
+                    reversed_z ? math::perspective_reversed_z(frustum) : math::perspective_standard(frustum, frame.far),
+                    frame.profile ? &profiler : nullptr};
 
     const float w = static_cast<float>(frame.eye_width), h = static_cast<float>(frame.eye_height);
     switch (frame.stereo) {
@@ -137,7 +139,8 @@ std::string draw_frame(Renderer& r, const FrameDesc& frame, FrameStats* stats_ou
     }
     glBindVertexArray(0);
     glUseProgram(0);
-    if (stats_out) *stats_out = stats;
+    if (frame.profile) collect_profile(profiler, stats);
+    if (stats_out) *stats_out = std::move(stats);
     return {};
 }
 

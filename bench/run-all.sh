@@ -1,0 +1,47 @@
+#!/bin/sh
+# Every measurement of bench/README.md, in one command:
+#   bench/run-all.sh [BUILD_DIR]      (default: build; RUNS=3 FRAMES=30 to change the repetitions)
+# Each set is run RUNS times; within a run its configurations are interleaved
+# frame by frame, so ratios are measured in one run. Writes bench/results/
+# (CSV, JSON and the printed tables per run), bench/results/summary.md
+# (medians over the runs) and the plots (bench/plot.sh).
+set -eu
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(dirname "$here")
+build=${1:-$root/build}
+bin=$build/impossible
+out=$here/results
+runs=${RUNS:-3}
+frames=${FRAMES:-30}
+[ -x "$bin" ] || { echo "run-all.sh: no $bin; build first (cmake --build $build --target impossible)" >&2; exit 1; }
+mkdir -p "$out"
+rm -f "$out"/*.csv "$out"/*.json "$out"/*.txt
+
+# run NAME ARGS...: one measurement set, RUNS times.
+run() {
+    name=$1
+    shift
+    i=1
+    while [ "$i" -le "$runs" ]; do
+        echo "== $name, run $i of $runs" >&2
+        "$bin" bench "$@" --frames "$frames" --csv "$out/$name.$i.csv" --json "$out/$name.$i.json" \
+            >"$out/$name.$i.txt"
+        i=$((i + 1))
+    done
+}
+
+L=$root/layouts
+# Speed against error: every technique, with its error against the tracer.
+run techniques_default "$L/default.json" --size 640x360 --sweep techniques
+run techniques_corridor "$L/corridor.json" --size 640x360 --sweep techniques
+run techniques_vr "$L/vr_study.json" --size 640x360 --sweep techniques
+# Scaling, on the VR-study layout: doors opened pair by pair, then resolution.
+run portals_vr "$L/vr_study.json" --size 1280x720 --max-depth 4 --sweep portals:0,2,4,6
+run size_vr "$L/vr_study.json" --max-depth 4 --size 1280x720 --sweep size:320x180,640x360,1280x720,1920x1080
+# Recursion depth: behind an occluding wall, and in the open corridor.
+run depth_wall "$L/corridor_wall.json" --size 1280x720 --sweep depth:1,2,4,8,16,64
+run depth_open "$L/corridor.json" --size 1280x720 --sweep depth:1,2,4,8,16,64
+
+sh "$here/summarise.sh" "$out" >"$out/summary.md"
+sh "$here/plot.sh" "$out"
+echo "wrote $out/summary.md and the plots in $out" >&2

@@ -1,0 +1,158 @@
+// `impossible bench` as scripts call it: a couple of tiny frames, the JSON
+// and CSV parsed back, keys present and counts consistent with the layout.
+// No timing is ever asserted (only that times are positive numbers).
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "app/bench_options.hpp"
+#include "math/pose.hpp"
+
+namespace impossible {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct BenchRun {
+    int status = -1;
+    std::string err;
+};
+
+class BenchCli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("impossible-bench-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    BenchRun run(const std::string& args) {
+        const std::string command = "cd '" + dir_.string() + "' && '" IMPOSSIBLE_BINARY "' bench " + args +
+                                    " >stdout.txt 2>stderr.txt";
+        const int raw = std::system(command.c_str());
+        return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text("stderr.txt")};
+    }
+    std::string text(const std::string& name) {
+        std::ifstream in(dir_ / name);
+        std::stringstream s;
+        s << in.rdbuf();
+        return s.str();
+    }
+    nlohmann::json json(const std::string& name) { return nlohmann::json::parse(text(name)); }
+    fs::path dir_;
+};
+
+const char* kQuick = "--size 64x36 --frames 2 --warmup 1 --profile-frames 1";
+
+TEST_F(BenchCli, WritesTheDocumentedKeysWithSaneCounts) {
+    const BenchRun r = run(std::string(kQuick) + " --json b.json --csv b.csv");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const nlohmann::json j = json("b.json");
+    for (const char* key : {"frame_ms_median", "frame_ms_p90", "fragments_per_pixel", "draw_calls",
+                            "portal_passes_drawn", "portal_passes_culled", "submit_ms_median", "triangles",
+                            "portals", "configs", "gl_renderer"})
+        EXPECT_TRUE(j.contains(key)) << key;
+    EXPECT_GT(j["frame_ms_median"].get<double>(), 0.0);
+    EXPECT_GE(j["frame_ms_p90"].get<double>(), j["frame_ms_median"].get<double>());
+    EXPECT_EQ(j["frames"].get<int>(), 2);
+    // The default layout from its start: the hall, one door seen (the annex
+    // door behind it is culled), one instanced draw per mesh.
+    EXPECT_EQ(j["portal_passes_drawn"].get<double>(), 1.0);
+    EXPECT_EQ(j["portal_passes_culled"].get<double>(), 1.0);
+    EXPECT_GT(j["draw_calls"].get<double>(), 2.0);
+    EXPECT_GT(j["triangles"].get<double>(), 12.0);
+    // Every output pixel is written at least once; overdraw stays small.
+    EXPECT_GE(j["fragments_per_pixel"].get<double>(), 1.0);
+    EXPECT_LT(j["fragments_per_pixel"].get<double>(), 3.0);
+    ASSERT_EQ(j["portals"].size(), 1u);
+    EXPECT_EQ(j["portals"][0]["portal"], "hall_door");
+    EXPECT_GT(j["portals"][0]["fragments_per_pixel"].get<double>(), 0.0);
+    EXPECT_LT(j["portals"][0]["fragments_per_pixel"].get<double>(), j["fragments_per_pixel"].get<double>());
+    const std::string csv = text("b.csv");
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 2) << csv;
+    EXPECT_EQ(csv.rfind("name,group,", 0), 0u) << csv;
+}
+
+TEST_F(BenchCli, TechniqueSweepMeasuresEveryConfigurationWithItsError) {
+    const BenchRun r = run(std::string(kQuick) + " --sweep techniques --json t.json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const nlohmann::json j = json("t.json");
+    std::map<std::string, nlohmann::json> by_name;
+    for (const nlohmann::json& c : j["configs"]) by_name[c["name"]] = c;
+    ASSERT_EQ(by_name.size(), 13u);
+    const nlohmann::json& base = by_name["base"];
+    // Two passes issue every draw once per eye.
+    EXPECT_EQ(by_name["stereo=two-pass"]["draw_calls"].get<double>(), 2 * base["draw_calls"].get<double>());
+    for (const auto& [name, c] : by_name) {
+        if (c.contains("error")) continue;  // a stereo mode the driver cannot do
+        ASSERT_TRUE(c.contains("id_mismatch_percent")) << name;
+        // Every configuration draws the right rooms (the one door is one
+        // level deep, so depth 1 is exact here too).
+        EXPECT_LE(c["id_mismatch_percent"].get<double>(), 2.0) << name;
+        EXPECT_GE(c["portal_passes_drawn"].get<double>(), 1.0) << name;
+    }
+}
+
+TEST_F(BenchCli, ClosedPortalsAndDepthSweep) {
+    const std::string corridor = "'" IMPOSSIBLE_SOURCE_DIR "/layouts/corridor.json'";
+    ASSERT_EQ(run(corridor + " " + kQuick + " --portals 0 --json c.json").status, 0);
+    const nlohmann::json closed = json("c.json");
+    EXPECT_EQ(closed["portal_passes_drawn"].get<double>(), 0.0);
+    EXPECT_EQ(closed["portals"].size(), 0u);
+
+    ASSERT_EQ(run(corridor + " " + kQuick + " --sweep depth:1,4 --json d.json").status, 0);
+    const nlohmann::json d = json("d.json");
+    ASSERT_EQ(d["configs"].size(), 3u);
+    EXPECT_EQ(d["configs"][1]["portal_passes_drawn"].get<double>(), 1.0);
+    EXPECT_EQ(d["configs"][2]["portal_passes_drawn"].get<double>(), 4.0);
+    EXPECT_EQ(d["configs"][1]["portal_fills"].get<double>(), 1.0);
+}
+
+TEST_F(BenchCli, ScriptedWalkMeasuresEveryPose) {
+    {
+        std::ofstream path(dir_ / "walk.txt");
+        path << "0 1.6 1 0 0 0\n0 1.6 0.2 0 0 0\n0 1.6 -0.3 0 0 0\n";
+    }
+    const BenchRun r = run(std::string(kQuick) + " --path walk.txt --json w.json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const nlohmann::json j = json("w.json");
+    EXPECT_EQ(j["poses"].get<int>(), 3);
+    EXPECT_EQ(j["frames"].get<int>(), 6);
+}
+
+TEST_F(BenchCli, BadInputAndUsageErrors) {
+    for (const char* args : {"--frames 0", "--sweep bogus", "--sweep depth:x", "--path missing.txt",
+                             "--portals -1", "missing.json"})
+        EXPECT_EQ(run(args).status, 1) << args;
+    for (const char* args : {"--out x.png", "--frames", "--bogus"}) EXPECT_EQ(run(args).status, 2) << args;
+    // Six doors without culling at depth 8: exponentially many passes, refused.
+    const BenchRun unculled = run("'" IMPOSSIBLE_SOURCE_DIR "/layouts/vr_study.json' --no-cull --frames 1");
+    EXPECT_EQ(unculled.status, 1);
+    EXPECT_NE(unculled.err.find("portal passes"), std::string::npos) << unculled.err;
+    EXPECT_EQ(run("--help").status, 0);
+    EXPECT_NE(text("stdout.txt").find("usage: impossible bench"), std::string::npos);
+}
+
+TEST(BenchPose, AnglesOfAHeadRotationReadBack) {
+    for (double yaw : {-170.0, -30.0, 0.0, 45.0, 120.0})
+        for (double pitch : {-60.0, 0.0, 20.0})
+            for (double roll : {-45.0, 0.0, 10.0}) {
+                const math::HeadPose pose{{1, 2, 3}, yaw, pitch, roll};
+                const math::HeadPose back = app::head_pose_of(pose.position, math::head_rotation(pose));
+                EXPECT_NEAR(back.yaw_deg, yaw, 1e-9);
+                EXPECT_NEAR(back.pitch_deg, pitch, 1e-9);
+                EXPECT_NEAR(back.roll_deg, roll, 1e-9);
+            }
+}
+
+}  // namespace
+}  // namespace impossible
