@@ -43,7 +43,7 @@ const std::set<std::string>& bench_value_options() {
 }
 
 const std::set<std::string>& bench_flag_options() {
-    static const std::set<std::string> names = {"--no-cull", "--error"};
+    static const std::set<std::string> names = {"--no-cull", "--occlusion-test", "--error"};
     return names;
 }
 
@@ -118,6 +118,7 @@ BenchPlan plan_bench(const layout::Layout& layout, const BenchOptions& o) {
         add("clip=clip-distance", "clip", [](BenchConfig& c) { c.frame.clip = render::ClipMode::ClipDistance; });
         add("cull=off", "cull", [](BenchConfig& c) { c.frame.cull_portals = false; });
         add("cull=on", "cull", [](BenchConfig& c) { c.frame.cull_portals = true; });
+        add("occlusion=on", "occlusion", [](BenchConfig& c) { c.frame.occlusion_test = true; });
         for (int d : {1, 2, 4, 8, 16, 64})
             add("depth=" + std::to_string(d), "depth", [d](BenchConfig& c) { c.frame.max_depth = d; });
         return plan;

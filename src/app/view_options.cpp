@@ -15,7 +15,7 @@ const std::set<std::string>& view_value_options() {
 }
 
 const std::set<std::string>& view_flag_options() {
-    static const std::set<std::string> names = {"--no-cull", "--stats"};
+    static const std::set<std::string> names = {"--no-cull", "--occlusion-test", "--stats"};
     return names;
 }
 
@@ -35,6 +35,8 @@ const char* view_options_help() {
            "  --depth MODE               reversed-z (default: float depth, infinite far plane) or standard\n"
            "                             (24-bit depth, far plane at 200 km)\n"
            "  --no-cull                  draw every portal without per-eye culling and scissor\n"
+           "  --occlusion-test           also skip portals hidden behind the room's props or walls (an\n"
+           "                             occlusion query and conditional rendering; costs one sync a frame)\n"
            "  --stats                    print draw calls, triangles and portal passes to stderr\n";
 }
 
@@ -86,6 +88,7 @@ ViewOptions parse_view_options(const ParsedArgs& args) {
         else throw InputError("--depth: '" + *v + "' is not reversed-z or standard");
     }
     o.cull_portals = !args.flag("--no-cull");
+    o.occlusion_test = args.flag("--occlusion-test");
     o.stats = args.flag("--stats");
     return o;
 }
@@ -149,6 +152,7 @@ render::FrameDesc frame_for(const layout::Layout& layout, const ViewOptions& o) 
     f.clip = o.clip;
     f.depth = o.depth;
     f.cull_portals = o.cull_portals;
+    f.occlusion_test = o.occlusion_test;
     return f;
 }
 

@@ -30,6 +30,7 @@ struct ViewOptions {
     render::ClipMode clip = render::ClipMode::ClipDistance;
     render::DepthMode depth = render::DepthMode::ReversedZ;
     bool cull_portals = true;
+    bool occlusion_test = false;
     bool stats = false;
 };
 

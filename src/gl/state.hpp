@@ -34,7 +34,10 @@ struct ScissorRect {
 class StateCache {
 public:
     // Forgets what GL holds, so that the next apply() sets everything.
-    void invalidate() { known_ = false; }
+    void invalidate() {
+        known_ = false;
+        scissor_known_ = false;
+    }
     void apply(const PassState& state, GLint stencil_ref);
     void scissor(const ScissorRect& rect);  // enables the scissor test
     void no_scissor();

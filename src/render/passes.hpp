@@ -15,6 +15,7 @@ namespace impossible::render {
 enum class Pass {
     Scene,         // the cell's rooms and props: colour, ids and depth where stencil == level
     PortalDepth,   // portal boxes into depth only, so they occlude and are occluded
+    PortalTest,    // nothing written: an occlusion query of where the box is visible
     PortalMark,    // stencil level → level + 1 where the box is the visible surface
     ClearDepth,    // depth → far where stencil == level + 1 (drawn with ref = level + 1)
     PortalUnmark,  // stencil level + 1 → level, and the box's depth back (ref = level + 1)
@@ -34,6 +35,7 @@ inline constexpr std::array<gl::PassState, static_cast<size_t>(Pass::Count)> kPa
     // depth_test, depth_write, depth_func, color_write, cull_back_faces, stencil
     {true, true, GL_GREATER, true, true, stencil_equal(GL_KEEP)},     // Scene
     {true, true, GL_GREATER, false, true, stencil_equal(GL_KEEP)},    // PortalDepth
+    {true, false, GL_GEQUAL, false, true, stencil_equal(GL_KEEP)},    // PortalTest
     {true, false, GL_GEQUAL, false, true, stencil_equal(GL_INCR)},    // PortalMark
     {true, true, GL_ALWAYS, false, false, stencil_equal(GL_KEEP)},    // ClearDepth
     {true, true, GL_ALWAYS, false, true, stencil_equal(GL_DECR)},     // PortalUnmark

@@ -210,6 +210,26 @@ void draw_portal(DrawContext& ctx, const LevelView& view, int p, const std::arra
     draw_portal_box(ctx, view, p, rects);
 }
 
+// One occlusion query per visible portal of this level, drawn after the
+// cell's surfaces: whether any pixel of the box is visible. Zero for every
+// portal that does not pass (no query there).
+std::vector<GLuint> test_portal_visibility(DrawContext& ctx, const LevelView& view, const std::vector<int>& portals,
+                                           const std::vector<std::array<NdcRect, 2>>& visible) {
+    Renderer& r = ctx.renderer;
+    std::vector<GLuint> queries(portals.size(), 0);
+    use_pass(ctx, Pass::PortalTest, view.level);
+    for (size_t k = 0; k < portals.size(); ++k) {
+        if (visible[k][0].empty() && visible[k][1].empty()) continue;
+        if (ctx.mark_queries_used == r.mark_queries.size())
+            r.mark_queries.push_back(gl::create_query(GL_ANY_SAMPLES_PASSED));
+        queries[k] = r.mark_queries[ctx.mark_queries_used++].get();
+        glBeginQuery(GL_ANY_SAMPLES_PASSED, queries[k]);
+        draw_portal_box(ctx, view, portals[k], visible[k]);
+        glEndQuery(GL_ANY_SAMPLES_PASSED);
+    }
+    return queries;
+}
+
 // draw_portal for a portal of the head's cell, timed: glFinish before and
 // after, so the time is the GPU work of its whole subtree (and the CPU work
 // of submitting it). Two-pass stereo adds both eyes' times.
@@ -248,15 +268,6 @@ void draw_level(DrawContext& ctx, const LevelView& view) {
     ctx.stats.max_level_reached = std::max(ctx.stats.max_level_reached, level);
     const std::array<NdcRect, 2> view_rects = {view.eyes[0].rect, view.eyes[1].rect};
 
-    // The cell's own surfaces.
-    use_pass(ctx, Pass::Scene, level);
-    set_eye_uniforms(ctx, view, view_rects);
-    set_cell_id(ctx, static_cast<unsigned>(view.cell + 1), false);
-    {
-        const ColourQueryScope colour(ctx.profiler);
-        draw_range(ctx, r.scene.cells[view.cell]);
-    }
-
     // Which portals each eye can see. The portal the view came out of lies
     // behind a virtual eye that stands behind it, where the plane clips it.
     const std::vector<int>& portals = r.portals_of_room[view.cell];
@@ -272,10 +283,31 @@ void draw_level(DrawContext& ctx, const LevelView& view) {
         }
     }
 
-    // Portal boxes into depth, so that portals and surfaces occlude each other.
+    // Portal boxes into depth first, so that portals and surfaces occlude each
+    // other, and the cell's surfaces behind a portal fail the depth test
+    // instead of being drawn and then covered by the view through it.
     use_pass(ctx, Pass::PortalDepth, level);
     for (size_t k = 0; k < portals.size(); ++k)
         if (!visible[k][0].empty() || !visible[k][1].empty()) draw_portal_box(ctx, view, portals[k], visible[k]);
+
+    // The cell's own surfaces.
+    use_pass(ctx, Pass::Scene, level);
+    set_eye_uniforms(ctx, view, view_rects);
+    set_cell_id(ctx, static_cast<unsigned>(view.cell + 1), false);
+    {
+        const ColourQueryScope colour(ctx.profiler);
+        draw_range(ctx, r.scene.cells[view.cell]);
+    }
+
+    // A portal hidden behind the cell's own surfaces (say, a wall) passes the
+    // frustum test but not this one: conditional rendering then drops every
+    // draw of its subtree, with no read-back on the CPU. Conditional
+    // rendering does not nest, so the outermost level decides for everything
+    // inside; all its queries are drawn before the first is waited on, so
+    // the driver synchronises once.
+    const bool occlusion = ctx.frame.occlusion_test && ctx.frame.cull_portals && !ctx.conditional;
+    const std::vector<GLuint> tests =
+        occlusion ? test_portal_visibility(ctx, view, portals, visible) : std::vector<GLuint>(portals.size(), 0);
 
     for (size_t k = 0; k < portals.size(); ++k) {
         const std::array<NdcRect, 2>& rects = visible[k];
@@ -283,8 +315,16 @@ void draw_level(DrawContext& ctx, const LevelView& view) {
             ctx.stats.portal_passes_culled += 1;
             continue;
         }
+        if (tests[k]) {
+            glBeginConditionalRender(tests[k], GL_QUERY_WAIT);
+            ctx.conditional = true;
+        }
         if (ctx.profiler && level == 0) draw_top_portal_profiled(ctx, view, portals[k], rects);
         else draw_portal(ctx, view, portals[k], rects);
+        if (tests[k]) {
+            glEndConditionalRender();
+            ctx.conditional = false;
+        }
     }
     r.state.no_scissor();
 }

@@ -25,6 +25,8 @@ struct DrawContext {
     FrameStats& stats;
     math::dmat4 projection{1.0};
     FrameProfiler* profiler = nullptr;  // null unless FrameDesc::profile
+    size_t mark_queries_used = 0;       // of Renderer::mark_queries, this frame
+    bool conditional = false;           // inside a portal's conditional rendering
 };
 
 // Reads back and deletes the profiler's queries into stats (colour_fragments,

@@ -102,6 +102,9 @@ std::string draw_frame(Renderer& r, const FrameDesc& frame, FrameStats* stats_ou
     // Reversed-Z: depth 1 at the near plane, 0 at infinity, in a float buffer.
     const bool reversed_z = frame.depth == DepthMode::ReversedZ;
     glClipControl(GL_LOWER_LEFT, reversed_z ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
+    // Other code (a second renderer, the preview's overlays) may have used the
+    // context since the last frame: the cache re-sends every state once.
+    r.state.invalidate();
     clear_target(r, frame.depth);
     glUseProgram(program.program.get());
     glBindVertexArray(r.gpu.vao.get());

@@ -31,6 +31,7 @@ struct Renderer {
     gl::VertexArray empty_vao;            // for the attribute-less clear triangle
     Target target;
     gl::StateCache state;
+    std::vector<gl::Query> mark_queries;  // occlusion queries of portal marks, reused every frame
 };
 
 struct RendererResult {

@@ -88,7 +88,8 @@ TEST_F(BenchCli, TechniqueSweepMeasuresEveryConfigurationWithItsError) {
     const nlohmann::json j = json("t.json");
     std::map<std::string, nlohmann::json> by_name;
     for (const nlohmann::json& c : j["configs"]) by_name[c["name"]] = c;
-    ASSERT_EQ(by_name.size(), 13u);
+    ASSERT_EQ(by_name.size(), 14u);
+    EXPECT_EQ(by_name["occlusion=on"]["id_mismatch_percent"], by_name["base"]["id_mismatch_percent"]);
     const nlohmann::json& base = by_name["base"];
     // Two passes issue every draw once per eye.
     EXPECT_EQ(by_name["stereo=two-pass"]["draw_calls"].get<double>(), 2 * base["draw_calls"].get<double>());

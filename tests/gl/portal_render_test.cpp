@@ -1,6 +1,10 @@
 // Portals in the rasteriser: boxes seen by crossed eyes, the near plane,
 // the recursion limit, culling, and rooms that overlap without bleeding.
+#include <cstdio>
 #include <set>
+
+#include "gl/gl.hpp"
+#include "gl/handles.hpp"
 
 #include "gl_fixture.hpp"
 
@@ -129,8 +133,46 @@ TEST(PortalCulling, CulledAndUnculledRendersAreEqual) {
         const render::Image unculled = testing::render_once(gl::Backend::Egl, l, f, &unculled_stats);
         EXPECT_EQ(testing::count_id_differences(culled, unculled), 0) << c.layout << " " << c.room;
         EXPECT_EQ(testing::count_colour_differences(culled, unculled, 1), 0) << c.layout << " " << c.room;
-        EXPECT_LE(culled_stats.triangles, unculled_stats.triangles) << c.layout;
+        EXPECT_LE(culled_stats.portal_passes_drawn, unculled_stats.portal_passes_drawn) << c.layout;
+        f.cull_portals = true;
+        f.occlusion_test = true;
+        const render::Image tested = testing::render_once(gl::Backend::Egl, l, f);
+        EXPECT_EQ(testing::count_id_differences(culled, tested), 0) << c.layout << " " << c.room;
+        EXPECT_EQ(testing::count_colour_differences(culled, tested, 0), 0) << c.layout << " " << c.room;
     }
+}
+
+// A portal hidden behind a wall: without the test its 16 levels are drawn
+// and rejected by the stencil; with it, conditional rendering drops them
+// before any primitive is assembled. Counted with GL_PRIMITIVES_GENERATED;
+// the image stays the same.
+TEST(PortalCulling, OcclusionTestDropsSubtreesBehindAWall) {
+    const layout::Layout l = load("corridor_wall.json");
+    render::FrameDesc f = pose(l, "corridor", l.start.position, l.start.yaw_deg);
+    f.max_depth = 16;
+    gl::ContextResult context = gl::create_context(gl::Backend::Egl);
+    ASSERT_TRUE(context.context) << context.error;
+    render::RendererResult r = render::create_renderer(l, scene::build_scene(l));
+    ASSERT_TRUE(r.renderer) << r.error;
+    auto primitives = [&](bool occlusion_test, render::Image* image) {
+        f.occlusion_test = occlusion_test;
+        gl::Query q = gl::create_query(GL_PRIMITIVES_GENERATED);
+        glBeginQuery(GL_PRIMITIVES_GENERATED, q.get());
+        render::FrameResult result = render::render_frame(*r.renderer, f);
+        glEndQuery(GL_PRIMITIVES_GENERATED);
+        EXPECT_EQ(result.error, "");
+        *image = result.image;
+        GLuint64 n = 0;
+        glGetQueryObjectui64v(q.get(), GL_QUERY_RESULT, &n);
+        return n;
+    };
+    render::Image a, b;
+    const GLuint64 plain = primitives(false, &a), tested = primitives(true, &b);
+    std::printf("  primitives generated at depth 16 behind a wall: %llu without, %llu with the occlusion test\n",
+                static_cast<unsigned long long>(plain), static_cast<unsigned long long>(tested));
+    EXPECT_LT(tested * 4, plain) << "the hidden subtree is most of the work";
+    EXPECT_EQ(testing::count_id_differences(a, b), 0);
+    EXPECT_EQ(testing::count_colour_differences(a, b, 0), 0);
 }
 
 TEST(PortalCulling, FourRoomsCullsPortalsOutOfView) {
