@@ -27,6 +27,7 @@ dat() {
 dat portals_vr portals >"$dir/portals.dat"
 dat size_vr size >"$dir/size.dat"
 dat depth_wall depth >"$dir/depth_wall.dat"
+dat depth_wall_occlusion depth >"$dir/depth_wall_occlusion.dat"
 dat depth_open depth >"$dir/depth_open.dat"
 # name vs_base id_mismatch, from run 1 of the technique sets (mismatch is deterministic).
 for s in corridor vr; do
@@ -52,7 +53,8 @@ set title "Endless corridor, 1280x720 per eye"
 set xlabel "max depth"; set ylabel "frame ms (median)"
 set logscale x 2
 plot "$dir/depth_open.dat" using 1:2 with linespoints pt 7 title "open", \
-     "$dir/depth_wall.dat" using 1:2 with linespoints pt 5 title "behind a wall"
+     "$dir/depth_wall.dat" using 1:2 with linespoints pt 5 title "behind a wall", \
+     "$dir/depth_wall_occlusion.dat" using 1:2 with linespoints pt 9 title "behind a wall, --occlusion-test"
 unset logscale x
 set output "$dir/speed_vs_error.svg"
 set title "Speed against error (640x360 per eye; error against the tracer at depth 64)"
