@@ -7,6 +7,7 @@
 #include <thread>
 #include <tuple>
 
+#include "app/view_options.hpp"
 #include "gl/gl.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
@@ -163,13 +164,7 @@ struct Measurer {
                 const render::FrameDesc f = frame_at(r.config, poses[p]);
                 const auto key = std::make_tuple(r.config.layout_variant, p, f.eye_width, f.eye_height);
                 if (!traced.count(key)) {
-                    trace::TraceDesc t;
-                    t.head = f.head;
-                    t.room = f.room;
-                    t.ipd = f.ipd;
-                    t.fov_y_deg = f.fov_y_deg;
-                    t.eye_width = f.eye_width;
-                    t.eye_height = f.eye_height;
+                    trace::TraceDesc t = trace_desc_for(f);
                     t.max_depth = options.reference_depth;
                     traced[key] = trace::trace_frame(scenes[r.config.layout_variant], t);
                 }

@@ -1,4 +1,5 @@
 #include "app/preview_options.hpp"
+#include "app/view_options.hpp"
 
 #include <tuple>
 
@@ -71,27 +72,11 @@ PreviewOptions parse_preview_options(const std::vector<std::string>& args, bool*
         if (o.eye_width > 4096 || o.eye_height > 4096)
             throw InputError("--size: " + *v + " is larger than a window can be (at most 4096x4096 per eye)");
     }
-    if (auto v = a.value("--ipd")) {
-        o.ipd = parse_number("--ipd", *v);
-        if (o.ipd < 0.0 || o.ipd > 10.0) throw InputError("--ipd: " + *v + " is not in 0..10 m");
-    }
-    if (auto v = a.value("--fov")) {
-        o.fov_y_deg = parse_number("--fov", *v);
-        if (!(o.fov_y_deg > 0.0 && o.fov_y_deg < 179.0))
-            throw InputError("--fov: " + *v + " is not in (0, 179) degrees");
-    }
+    if (auto v = a.value("--ipd")) o.ipd = parse_ipd(*v);
+    if (auto v = a.value("--fov")) o.fov_y_deg = parse_fov(*v);
     if (auto v = a.value("--max-depth")) o.max_depth = parse_int("--max-depth", *v, 0, 250);
-    if (auto v = a.value("--stereo")) {
-        if (*v == "clip-shift") o.stereo = render::StereoMode::ClipShift;
-        else if (*v == "viewport-index") o.stereo = render::StereoMode::ViewportIndex;
-        else if (*v == "two-pass") o.stereo = render::StereoMode::TwoPass;
-        else throw InputError("--stereo: '" + *v + "' is not clip-shift, viewport-index or two-pass");
-    }
-    if (auto v = a.value("--clip")) {
-        if (*v == "clip-distance") o.clip = render::ClipMode::ClipDistance;
-        else if (*v == "oblique") o.clip = render::ClipMode::Oblique;
-        else throw InputError("--clip: '" + *v + "' is not clip-distance or oblique");
-    }
+    if (auto v = a.value("--stereo")) o.stereo = parse_stereo(*v);
+    if (auto v = a.value("--clip")) o.clip = parse_clip(*v);
     o.cull_portals = !a.flag("--no-cull");
     o.hud = !a.flag("--no-hud");
     o.minimap = !a.flag("--no-minimap");

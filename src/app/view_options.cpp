@@ -40,6 +40,31 @@ const char* view_options_help() {
            "  --stats                    print draw calls, triangles and portal passes to stderr\n";
 }
 
+double parse_ipd(const std::string& text) {
+    const double ipd = parse_number("--ipd", text);
+    if (ipd < 0.0 || ipd > 10.0) throw InputError("--ipd: " + text + " is not in 0..10 m");
+    return ipd;
+}
+
+double parse_fov(const std::string& text) {
+    const double fov = parse_number("--fov", text);
+    if (!(fov > 0.0 && fov < 179.0)) throw InputError("--fov: " + text + " is not in (0, 179) degrees");
+    return fov;
+}
+
+render::StereoMode parse_stereo(const std::string& text) {
+    if (text == "clip-shift") return render::StereoMode::ClipShift;
+    if (text == "viewport-index") return render::StereoMode::ViewportIndex;
+    if (text == "two-pass") return render::StereoMode::TwoPass;
+    throw InputError("--stereo: '" + text + "' is not clip-shift, viewport-index or two-pass");
+}
+
+render::ClipMode parse_clip(const std::string& text) {
+    if (text == "clip-distance") return render::ClipMode::ClipDistance;
+    if (text == "oblique") return render::ClipMode::Oblique;
+    throw InputError("--clip: '" + text + "' is not clip-distance or oblique");
+}
+
 ViewOptions parse_view_options(const ParsedArgs& args) {
     ViewOptions o;
     if (!args.positional.empty()) o.layout_path = args.positional[0];
@@ -55,14 +80,8 @@ ViewOptions parse_view_options(const ParsedArgs& args) {
         o.pose = pose;
     }
     if (auto v = args.value("--room")) o.room = *v;
-    if (auto v = args.value("--ipd")) {
-        o.ipd = parse_number("--ipd", *v);
-        if (o.ipd < 0.0 || o.ipd > 10.0) throw InputError("--ipd: " + *v + " is not in 0..10 m");
-    }
-    if (auto v = args.value("--fov")) {
-        o.fov_y_deg = parse_number("--fov", *v);
-        if (!(o.fov_y_deg > 0.0 && o.fov_y_deg < 179.0)) throw InputError("--fov: " + *v + " is not in (0, 179) degrees");
-    }
+    if (auto v = args.value("--ipd")) o.ipd = parse_ipd(*v);
+    if (auto v = args.value("--fov")) o.fov_y_deg = parse_fov(*v);
     if (auto v = args.value("--size")) std::tie(o.eye_width, o.eye_height) = parse_size("--size", *v);
     if (auto v = args.value("--max-depth")) o.max_depth = parse_int("--max-depth", *v, 0, 250);
     if (auto v = args.value("--out")) o.out = *v;
@@ -71,17 +90,8 @@ ViewOptions parse_view_options(const ParsedArgs& args) {
         o.backend = gl::parse_backend(*v);
         if (!o.backend) throw InputError("--backend: '" + *v + "' is not egl or osmesa");
     }
-    if (auto v = args.value("--stereo")) {
-        if (*v == "clip-shift") o.stereo = render::StereoMode::ClipShift;
-        else if (*v == "viewport-index") o.stereo = render::StereoMode::ViewportIndex;
-        else if (*v == "two-pass") o.stereo = render::StereoMode::TwoPass;
-        else throw InputError("--stereo: '" + *v + "' is not clip-shift, viewport-index or two-pass");
-    }
-    if (auto v = args.value("--clip")) {
-        if (*v == "clip-distance") o.clip = render::ClipMode::ClipDistance;
-        else if (*v == "oblique") o.clip = render::ClipMode::Oblique;
-        else throw InputError("--clip: '" + *v + "' is not clip-distance or oblique");
-    }
+    if (auto v = args.value("--stereo")) o.stereo = parse_stereo(*v);
+    if (auto v = args.value("--clip")) o.clip = parse_clip(*v);
     if (auto v = args.value("--depth")) {
         if (*v == "reversed-z") o.depth = render::DepthMode::ReversedZ;
         else if (*v == "standard") o.depth = render::DepthMode::Standard;

@@ -41,6 +41,12 @@ const std::set<std::string>& view_flag_options();
 // Throws InputError for a bad value.
 ViewOptions parse_view_options(const ParsedArgs& args);
 
+// The values of single options, shared with `preview`; InputError if bad.
+double parse_ipd(const std::string& text);
+double parse_fov(const std::string& text);
+render::StereoMode parse_stereo(const std::string& text);
+render::ClipMode parse_clip(const std::string& text);
+
 // The head pose and room of the frame: the layout's start without --pose;
 // with --pose, --room or else the one room whose box holds the head.
 render::FrameDesc frame_for(const layout::Layout& layout, const ViewOptions& options);
