@@ -1,5 +1,7 @@
 #include "app/bench_options.hpp"
 
+#include <cstdio>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -119,6 +121,11 @@ BenchPlan plan_bench(const layout::Layout& layout, const BenchOptions& o) {
         add("cull=off", "cull", [](BenchConfig& c) { c.frame.cull_portals = false; });
         add("cull=on", "cull", [](BenchConfig& c) { c.frame.cull_portals = true; });
         add("occlusion=on", "occlusion", [](BenchConfig& c) { c.frame.occlusion_test = true; });
+        for (double scale : {0.25, 0.5, 1.0}) {
+            char name[32];
+            std::snprintf(name, sizeof name, "texture=%g", scale);
+            add(name, "technique", [scale](BenchConfig& c) { c.frame.portal_texture_scale = scale; });
+        }
         for (int d : {1, 2, 4, 8, 16, 64})
             add("depth=" + std::to_string(d), "depth", [d](BenchConfig& c) { c.frame.max_depth = d; });
         return plan;

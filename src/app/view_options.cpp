@@ -10,7 +10,7 @@ namespace impossible::app {
 const std::set<std::string>& view_value_options() {
     static const std::set<std::string> names = {"--pose", "--room",  "--ipd", "--fov",     "--size",
                                                 "--max-depth", "--out", "--ids", "--backend", "--stereo",
-                                                "--clip", "--depth"};
+                                                "--clip", "--depth", "--portal-texture"};
     return names;
 }
 
@@ -35,6 +35,8 @@ const char* view_options_help() {
            "  --depth MODE               reversed-z (default: float depth, infinite far plane) or standard\n"
            "                             (24-bit depth, far plane at 200 km)\n"
            "  --no-cull                  draw every portal without per-eye culling and scissor\n"
+           "  --portal-texture SCALE     render-to-texture portals (the classic technique, for comparison):\n"
+           "                             each portal's view at SCALE x the eye size, e.g. 0.25, 0.5, 1\n"
            "  --occlusion-test           also skip portals hidden behind the room's props or walls (an\n"
            "                             occlusion query and conditional rendering; costs one sync a frame)\n"
            "  --stats                    print draw calls, triangles and portal passes to stderr\n";
@@ -99,6 +101,11 @@ ViewOptions parse_view_options(const ParsedArgs& args) {
     }
     o.cull_portals = !args.flag("--no-cull");
     o.occlusion_test = args.flag("--occlusion-test");
+    if (auto v = args.value("--portal-texture")) {
+        o.portal_texture_scale = parse_number("--portal-texture", *v);
+        if (!(o.portal_texture_scale > 0.0 && o.portal_texture_scale <= 4.0))
+            throw InputError("--portal-texture: " + *v + " is not in (0, 4]");
+    }
     o.stats = args.flag("--stats");
     return o;
 }
@@ -163,6 +170,7 @@ render::FrameDesc frame_for(const layout::Layout& layout, const ViewOptions& o) 
     f.depth = o.depth;
     f.cull_portals = o.cull_portals;
     f.occlusion_test = o.occlusion_test;
+    f.portal_texture_scale = o.portal_texture_scale;
     return f;
 }
 

@@ -31,6 +31,7 @@ struct ViewOptions {
     render::DepthMode depth = render::DepthMode::ReversedZ;
     bool cull_portals = true;
     bool occlusion_test = false;
+    double portal_texture_scale = 0.0;
     bool stats = false;
 };
 

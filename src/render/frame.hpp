@@ -48,6 +48,12 @@ struct FrameDesc {
     // synchronise once a frame (about 1 ms on llvmpipe), so it pays only
     // where portals hide behind props; rooms are convex, so off by default.
     bool occlusion_test = false;
+    // Render-to-texture portals, the classic technique, for comparison: with a
+    // scale > 0, each portal of the head's cell is drawn by rendering its view
+    // (both eyes side by side, recursion inside by stencil) into a texture of
+    // scale × the eye size, which the portal's box then shows. 0: stencil
+    // portals all the way (the default). Needs StereoMode::ClipShift.
+    double portal_texture_scale = 0.0;
     // Measure the frame (for `impossible bench`): GL_SAMPLES_PASSED queries
     // around the colour passes, and glFinish + a monotonic clock around each
     // level-0 portal's subtree. The glFinish calls perturb the frame's own

@@ -20,6 +20,7 @@ enum class Pass {
     ClearDepth,    // depth → far where stencil == level + 1 (drawn with ref = level + 1)
     PortalUnmark,  // stencil level + 1 → level, and the box's depth back (ref = level + 1)
     PortalFill,    // the flat fill colour and id 255 at the recursion limit
+    PortalTexture, // render-to-texture portals: the box shows its texture
     Count
 };
 
@@ -40,6 +41,7 @@ inline constexpr std::array<gl::PassState, static_cast<size_t>(Pass::Count)> kPa
     {true, true, GL_ALWAYS, false, false, stencil_equal(GL_KEEP)},    // ClearDepth
     {true, true, GL_ALWAYS, false, true, stencil_equal(GL_DECR)},     // PortalUnmark
     {true, false, GL_GEQUAL, true, true, stencil_equal(GL_KEEP)},     // PortalFill
+    {true, false, GL_GEQUAL, true, true, stencil_equal(GL_KEEP)},     // PortalTexture
 }};
 
 // The table above is for reversed-Z; with standard depth (nearer is less)

@@ -18,6 +18,7 @@
 
 #include "math/oblique_projection.hpp"
 #include "render/passes.hpp"
+#include "scene/shading.hpp"
 
 namespace impossible::render {
 namespace {
@@ -210,6 +211,65 @@ void draw_portal(DrawContext& ctx, const LevelView& view, int p, const std::arra
     draw_portal_box(ctx, view, p, rects);
 }
 
+// Render-to-texture (the classic technique, for comparison): the view
+// through portal `p` of the head's cell is drawn into a texture of scale ×
+// the eye size, both eyes side by side (recursion inside it by stencil), and
+// the box then shows that texture where it is the visible surface.
+void draw_portal_via_texture(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects,
+                             size_t slot) {
+    Renderer& r = ctx.renderer;
+    const FrameDesc& f = ctx.frame;
+    FrameDesc inner = f;
+    inner.eye_width = std::max(1, static_cast<int>(std::lround(f.eye_width * f.portal_texture_scale)));
+    inner.eye_height = std::max(1, static_cast<int>(std::lround(f.eye_height * f.portal_texture_scale)));
+    inner.portal_texture_scale = 0.0;
+    if (r.portal_textures.size() <= slot) r.portal_textures.resize(slot + 1);
+    Target& texture = r.portal_textures[slot];
+    if (texture.width != 2 * inner.eye_width || texture.height != inner.eye_height || texture.depth != f.depth ||
+        !texture.framebuffer) {
+        TargetResult made = create_sampled_target(2 * inner.eye_width, inner.eye_height, f.depth);
+        if (!made.error.empty()) return;  // an incomplete target shows nothing through this portal
+        texture = std::move(made.target);
+    }
+
+    // The view through the portal, at level + 1 everywhere in the texture.
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, texture.framebuffer.get());
+    glViewport(0, 0, texture.width, texture.height);
+    gl::PassState all_writes;
+    r.state.apply(all_writes, 0);
+    r.state.no_scissor();
+    const glm::dvec3 bg = scene::kBackgroundColor;
+    const GLfloat color[4] = {float(bg.r), float(bg.g), float(bg.b), 1.0f};
+    const GLuint id[4] = {0, 0, 0, 0};
+    glClearNamedFramebufferfv(texture.framebuffer.get(), GL_COLOR, 0, color);
+    glClearNamedFramebufferuiv(texture.framebuffer.get(), GL_COLOR, 1, id);
+    glClearNamedFramebufferfi(texture.framebuffer.get(), GL_DEPTH_STENCIL, 0,
+                              f.depth == DepthMode::ReversedZ ? 0.0f : 1.0f, view.level + 1);
+    DrawContext inside{r, ctx.program, inner, ctx.stats, ctx.projection, ctx.profiler};
+    ctx.stats.portal_passes_drawn += 1;
+    draw_level(inside, child_view(ctx, view, p, rects));
+
+    // The box shows the texture where it is the visible surface.
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, r.target.framebuffer.get());
+    glViewport(0, 0, 2 * f.eye_width, f.eye_height);
+    if (f.cull_portals) r.state.scissor(scissor_of(ctx, rects, view));
+    else r.state.no_scissor();
+    const SceneProgram& shows = *r.portal_texture_program;
+    glUseProgram(shows.program.get());
+    glProgramUniform2f(shows.program.get(), shows.target_size, float(2 * f.eye_width), float(f.eye_height));
+    glBindTextureUnit(0, texture.color_texture.get());
+    glBindTextureUnit(1, texture.ids_texture.get());
+    DrawContext outside{r, shows, f, ctx.stats, ctx.projection, nullptr};
+    use_pass(outside, Pass::PortalTexture, view.level);
+    {
+        const ColourQueryScope colour(ctx.profiler);
+        draw_portal_box(outside, view, p, rects);
+    }
+    glBindTextureUnit(0, 0);
+    glBindTextureUnit(1, 0);
+    glUseProgram(ctx.program.program.get());
+}
+
 // One occlusion query per visible portal of this level, drawn after the
 // cell's surfaces: whether any pixel of the box is visible. Zero for every
 // portal that does not pass (no query there).
@@ -319,7 +379,8 @@ void draw_level(DrawContext& ctx, const LevelView& view) {
             glBeginConditionalRender(tests[k], GL_QUERY_WAIT);
             ctx.conditional = true;
         }
-        if (ctx.profiler && level == 0) draw_top_portal_profiled(ctx, view, portals[k], rects);
+        if (level == 0 && ctx.frame.portal_texture_scale > 0.0) draw_portal_via_texture(ctx, view, portals[k], rects, k);
+        else if (ctx.profiler && level == 0) draw_top_portal_profiled(ctx, view, portals[k], rects);
         else draw_portal(ctx, view, portals[k], rects);
         if (tests[k]) {
             glEndConditionalRender();

@@ -96,6 +96,14 @@ std::string draw_frame(Renderer& r, const FrameDesc& frame, FrameStats* stats_ou
     const int width = 2 * frame.eye_width, height = frame.eye_height;
     if (std::string e = ensure_target(r, width, height, frame.depth); !e.empty()) return e;
     if (std::string e = ensure_program(r, frame.stereo); !e.empty()) return e;
+    if (frame.portal_texture_scale > 0.0) {
+        if (frame.stereo != StereoMode::ClipShift) return "render-to-texture portals need --stereo clip-shift";
+        if (!r.portal_texture_program) {
+            SceneProgramResult built = build_portal_texture_program();
+            if (!built.error.empty()) return built.error;
+            r.portal_texture_program = std::move(built.program);
+        }
+    }
     const SceneProgram& program = *r.programs[mode_index(frame.stereo)];
 
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, r.target.framebuffer.get());

@@ -32,6 +32,8 @@ struct Renderer {
     Target target;
     gl::StateCache state;
     std::vector<gl::Query> mark_queries;  // occlusion queries of portal marks, reused every frame
+    std::optional<SceneProgram> portal_texture_program;  // render-to-texture portals, built on first use
+    std::vector<Target> portal_textures;  // one per portal of the head's cell, reused every frame
 };
 
 struct RendererResult {

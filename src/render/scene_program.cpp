@@ -25,14 +25,11 @@ gl::ShaderSource source(GLenum stage, const char* name) {
 
 }  // namespace
 
-SceneProgramResult build_scene_program(StereoMode mode) {
-    std::string defines = shading_defines();
-    if (mode == StereoMode::ViewportIndex) defines += "#define STEREO_VIEWPORT_INDEX\n";
-    if (mode == StereoMode::TwoPass) defines += "#define STEREO_SINGLE_EYE\n";
+namespace {
+
+SceneProgramResult link_scene_program(const char* fragment, const std::string& defines) {
     gl::ProgramResult built = gl::build_program(
-        {source(GL_VERTEX_SHADER, "shaders/scene.vert.glsl"),
-         source(GL_FRAGMENT_SHADER, "shaders/scene.frag.glsl")},
-        defines);
+        {source(GL_VERTEX_SHADER, "shaders/scene.vert.glsl"), source(GL_FRAGMENT_SHADER, fragment)}, defines);
     SceneProgramResult out;
     if (!built.error.empty()) {
         out.error = built.error;
@@ -47,6 +44,26 @@ SceneProgramResult build_scene_program(StereoMode mode) {
     p.single_eye = glGetUniformLocation(name, "u_single_eye");
     p.cell_id = glGetUniformLocation(name, "u_cell_id");
     p.unshaded = glGetUniformLocation(name, "u_unshaded");
+    p.target_size = glGetUniformLocation(name, "u_target_size");
+    return out;
+}
+
+}  // namespace
+
+SceneProgramResult build_scene_program(StereoMode mode) {
+    std::string defines = shading_defines();
+    if (mode == StereoMode::ViewportIndex) defines += "#define STEREO_VIEWPORT_INDEX\n";
+    if (mode == StereoMode::TwoPass) defines += "#define STEREO_SINGLE_EYE\n";
+    return link_scene_program("shaders/scene.frag.glsl", defines);
+}
+
+SceneProgramResult build_portal_texture_program() {
+    SceneProgramResult out = link_scene_program("shaders/portal_texture.frag.glsl", "");
+    if (out.error.empty()) {
+        const GLuint name = out.program.program.get();
+        glProgramUniform1i(name, glGetUniformLocation(name, "u_color_texture"), 0);
+        glProgramUniform1i(name, glGetUniformLocation(name, "u_id_texture"), 1);
+    }
     return out;
 }
 

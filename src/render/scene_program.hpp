@@ -17,6 +17,7 @@ struct SceneProgram {
     GLint single_eye = -1;  // int
     GLint cell_id = -1;     // uint
     GLint unshaded = -1;    // bool
+    GLint target_size = -1;  // vec2, only in the portal-texture program
 };
 
 struct SceneProgramResult {
@@ -25,6 +26,10 @@ struct SceneProgramResult {
 };
 
 SceneProgramResult build_scene_program(StereoMode mode);
+
+// The scene's vertex shader with shaders/portal_texture.frag.glsl: a portal
+// box that shows a render-to-texture view (clip-shift stereo only).
+SceneProgramResult build_portal_texture_program();
 
 // A program that writes far depth (0 in reversed-Z) over the whole target and
 // nothing else; with the stencil test it clears depth inside a portal.

@@ -1,39 +1,65 @@
 #include "render/target.hpp"
 
+#include <cstdio>
 #include <cstring>
 
 namespace impossible::render {
 
-TargetResult create_target(int width, int height, DepthMode depth) {
+namespace {
+
+TargetResult make_target(int width, int height, DepthMode depth, bool sampled) {
     TargetResult out;
     Target& t = out.target;
     t.width = width;
     t.height = height;
     t.depth = depth;
-    t.color = gl::create_renderbuffer();
-    t.ids = gl::create_renderbuffer();
     t.depth_stencil = gl::create_renderbuffer();
     t.framebuffer = gl::create_framebuffer();
-    glNamedRenderbufferStorage(t.color.get(), GL_RGBA8, width, height);
-    glNamedRenderbufferStorage(t.ids.get(), GL_R8UI, width, height);
+    const GLuint fb = t.framebuffer.get();
+    if (sampled) {
+        t.color_texture = gl::create_texture(GL_TEXTURE_2D);
+        t.ids_texture = gl::create_texture(GL_TEXTURE_2D);
+        glTextureStorage2D(t.color_texture.get(), 1, GL_RGBA8, width, height);
+        glTextureStorage2D(t.ids_texture.get(), 1, GL_R8UI, width, height);
+        for (GLuint tex : {t.color_texture.get(), t.ids_texture.get()}) {
+            const GLint filter = tex == t.color_texture.get() ? GL_LINEAR : GL_NEAREST;
+            glTextureParameteri(tex, GL_TEXTURE_MIN_FILTER, filter);
+            glTextureParameteri(tex, GL_TEXTURE_MAG_FILTER, filter);
+            glTextureParameteri(tex, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+            glTextureParameteri(tex, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        }
+        glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT0, t.color_texture.get(), 0);
+        glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT1, t.ids_texture.get(), 0);
+    } else {
+        t.color = gl::create_renderbuffer();
+        t.ids = gl::create_renderbuffer();
+        glNamedRenderbufferStorage(t.color.get(), GL_RGBA8, width, height);
+        glNamedRenderbufferStorage(t.ids.get(), GL_R8UI, width, height);
+        glNamedFramebufferRenderbuffer(fb, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, t.color.get());
+        glNamedFramebufferRenderbuffer(fb, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, t.ids.get());
+    }
     glNamedRenderbufferStorage(t.depth_stencil.get(),
                                depth == DepthMode::ReversedZ ? GL_DEPTH32F_STENCIL8 : GL_DEPTH24_STENCIL8, width,
                                height);
-    const GLuint fb = t.framebuffer.get();
-    glNamedFramebufferRenderbuffer(fb, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, t.color.get());
-    glNamedFramebufferRenderbuffer(fb, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, t.ids.get());
     glNamedFramebufferRenderbuffer(fb, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, t.depth_stencil.get());
     const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
     glNamedFramebufferDrawBuffers(fb, 2, buffers);
     const GLenum status = glCheckNamedFramebufferStatus(fb, GL_FRAMEBUFFER);
-    if (status != GL_FRAMEBUFFER_COMPLETE)
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        char buf[16];
+        std::snprintf(buf, sizeof buf, "%04x", status);
         out.error = "render target " + std::to_string(width) + "x" + std::to_string(height) +
-                    " is incomplete (status 0x" + [&] {
-                        char buf[16];
-                        std::snprintf(buf, sizeof buf, "%04x", status);
-                        return std::string(buf);
-                    }() + ")";
+                    " is incomplete (status 0x" + buf + ")";
+    }
     return out;
+}
+
+}  // namespace
+
+TargetResult create_target(int width, int height, DepthMode depth) { return make_target(width, height, depth, false); }
+
+TargetResult create_sampled_target(int width, int height, DepthMode depth) {
+    return make_target(width, height, depth, true);
 }
 
 Image read_target(const Target& t) {

@@ -14,6 +14,8 @@ struct Target {
     int width = 0;
     int height = 0;
     DepthMode depth = DepthMode::ReversedZ;
+    gl::Texture color_texture;  // instead of the renderbuffers, for a target that is sampled
+    gl::Texture ids_texture;
     gl::Renderbuffer color;
     gl::Renderbuffer ids;
     gl::Renderbuffer depth_stencil;
@@ -26,6 +28,10 @@ struct TargetResult {
 };
 
 TargetResult create_target(int width, int height, DepthMode depth);
+
+// The same, with colour and ids in textures that shaders can sample (colour
+// filtered linearly, ids by nearest texel).
+TargetResult create_sampled_target(int width, int height, DepthMode depth);
 
 // Reads colour and ids back, rows from the top.
 Image read_target(const Target& target);

@@ -3,6 +3,8 @@
 // No timing is ever asserted (only that times are positive numbers).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -88,7 +90,11 @@ TEST_F(BenchCli, TechniqueSweepMeasuresEveryConfigurationWithItsError) {
     const nlohmann::json j = json("t.json");
     std::map<std::string, nlohmann::json> by_name;
     for (const nlohmann::json& c : j["configs"]) by_name[c["name"]] = c;
-    ASSERT_EQ(by_name.size(), 14u);
+    ASSERT_EQ(by_name.size(), 17u);
+    // Render-to-texture at full scale is exact; a quarter-size texture blurs.
+    EXPECT_EQ(by_name["texture=1"]["id_mismatch_percent"], by_name["base"]["id_mismatch_percent"]);
+    auto psnr = [](const nlohmann::json& v) { return v.is_null() ? HUGE_VAL : v.get<double>(); };  // null: identical
+    EXPECT_LT(psnr(by_name["texture=0.25"]["psnr_db"]), psnr(by_name["texture=1"]["psnr_db"]));
     EXPECT_EQ(by_name["occlusion=on"]["id_mismatch_percent"], by_name["base"]["id_mismatch_percent"]);
     const nlohmann::json& base = by_name["base"];
     // Two passes issue every draw once per eye.

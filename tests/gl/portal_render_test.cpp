@@ -211,3 +211,43 @@ TEST(Cells, OverlappingRoomsNeverBleed) {
 
 }  // namespace
 }  // namespace impossible
+
+namespace impossible {
+namespace {
+
+// Render-to-texture portals (for comparison): at scale 1 the texture holds
+// exactly the pixels stencil portals draw; smaller textures lose detail.
+TEST(PortalTexture, FullScaleEqualsStencilPortalsAndSmallerScalesBlur) {
+    for (const char* name : {"default.json", "corridor.json", "four_rooms.json"}) {
+        const layout::Layout l = load(name);
+        render::FrameDesc f = pose(l, layout::find_room(l, "hall") >= 0 ? "hall" : "corridor", l.start.position,
+                                   l.start.yaw_deg);
+        f.eye_width = 160;
+        f.eye_height = 90;
+        const render::Image stencil = testing::render_once(gl::Backend::Egl, l, f);
+        f.portal_texture_scale = 1.0;
+        render::FrameStats stats;
+        const render::Image full = testing::render_once(gl::Backend::Egl, l, f, &stats);
+        EXPECT_EQ(testing::count_id_differences(stencil, full), 0) << name;
+        EXPECT_EQ(testing::count_colour_differences(stencil, full, 0), 0) << name;
+        EXPECT_GE(stats.portal_passes_drawn, 1) << name;
+        f.portal_texture_scale = 0.25;
+        const render::Image quarter = testing::render_once(gl::Backend::Egl, l, f);
+        EXPECT_GT(testing::count_colour_differences(stencil, quarter, 2), 0) << name << ": a quarter-size texture blurs";
+    }
+}
+
+TEST(PortalTexture, NeedsClipShiftStereo) {
+    const layout::Layout l = load("default.json");
+    render::FrameDesc f = pose(l, "hall", l.start.position, l.start.yaw_deg);
+    f.portal_texture_scale = 0.5;
+    f.stereo = render::StereoMode::TwoPass;
+    gl::ContextResult context = gl::create_context(gl::Backend::Egl);
+    ASSERT_TRUE(context.context) << context.error;
+    render::RendererResult r = render::create_renderer(l, scene::build_scene(l));
+    ASSERT_TRUE(r.renderer) << r.error;
+    EXPECT_NE(render::render_frame(*r.renderer, f).error.find("clip-shift"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace impossible
