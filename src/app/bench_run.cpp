@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <map>
+#include <random>
 #include <memory>
 #include <thread>
 #include <tuple>
@@ -80,13 +81,19 @@ struct Measurer {
     }
 
     // Timed frames, configurations interleaved frame by frame so that machine
-    // noise hits all of them alike; the order rotates every repetition, so
-    // that no configuration always follows the same one.
+    // noise hits all of them alike. The order is shuffled every repetition
+    // (fixed seed): a frame is slower right after a heavy one (llvmpipe's
+    // memory and caches), so a fixed cyclic order would always charge the
+    // configuration that follows the heaviest.
     void time_frames() {
+        std::vector<size_t> order(results.size());
+        for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+        std::mt19937 shuffle_rng(20261122u);
         for (int rep = -options.warmup; rep < options.frames; ++rep)
-            for (size_t p = 0; p < poses.size(); ++p)
+            for (size_t p = 0; p < poses.size(); ++p) {
+                std::shuffle(order.begin(), order.end(), shuffle_rng);
                 for (size_t k = 0; k < results.size(); ++k) {
-                    ConfigResult& r = results[(k + static_cast<size_t>(rep + options.warmup)) % results.size()];
+                    ConfigResult& r = results[order[k]];
                     if (!r.error.empty()) continue;
                     render::FrameStats stats;
                     glFinish();
@@ -106,6 +113,7 @@ struct Measurer {
                     r.portal_passes_culled += stats.portal_passes_culled / n;
                     r.portal_fills += stats.portal_fills / n;
                 }
+            }
     }
 
     // Profiled frames: colour fragments and per-portal subtree times.
