@@ -38,6 +38,7 @@ run techniques_vr "$L/vr_study.json" --size 640x360 --sweep techniques
 # Scaling, on the VR-study layout: doors opened pair by pair, then resolution.
 run portals_vr "$L/vr_study.json" --size 1280x720 --max-depth 4 --sweep portals:0,2,4,6
 run size_vr "$L/vr_study.json" --max-depth 4 --size 1280x720 --sweep size:320x180,640x360,1280x720,1920x1080
+run triangles_vr "$L/vr_study.json" --max-depth 4 --size 1280x720 --sweep boxes:0,100,1000,4000
 # Recursion depth: behind an occluding wall, and in the open corridor.
 run depth_wall "$L/corridor_wall.json" --size 1280x720 --sweep depth:1,2,4,8,16,64
 run depth_wall_occlusion "$L/corridor_wall.json" --size 1280x720 --occlusion-test --sweep depth:1,2,4,8,16,64

@@ -24,9 +24,10 @@ void check_sweep(const std::string& sweep) {
     if (sweep.empty() || sweep == "techniques") return;
     const size_t colon = sweep.find(':');
     const std::string kind = sweep.substr(0, colon);
-    if (colon == std::string::npos || (kind != "portals" && kind != "depth" && kind != "size") ||
+    if (colon == std::string::npos || (kind != "portals" && kind != "depth" && kind != "size" && kind != "boxes") ||
         colon + 1 == sweep.size())
-        throw InputError("--sweep: '" + sweep + "' is not techniques, portals:N,..., depth:N,... or size:WxH,...");
+        throw InputError("--sweep: '" + sweep +
+                         "' is not techniques, portals:N,..., boxes:N,..., depth:N,... or size:WxH,...");
 }
 
 }  // namespace
@@ -59,6 +60,7 @@ const char* bench_options_help() {
            "  --sweep WHAT               configurations measured in one run, interleaved frame by frame:\n"
            "                             techniques (stereo, clip, culling, depth 1..64; implies --error),\n"
            "                             portals:0,2,4,6  depth:1,16  size:320x180,640x360\n"
+           "                             boxes:0,1000 (that many 12-triangle boxes on every room's floor)\n"
            "  --error                    compare each configuration with the tracer (ids, PSNR)\n"
            "  --reference-depth N        the tracer's recursion depth for --error (default 64)\n"
            "  --json FILE                write the results as JSON (schema: bench/README.md)\n"
@@ -95,6 +97,27 @@ layout::Layout keep_first_portals(const layout::Layout& layout, int n) {
         }
     }
     for (layout::Portal& p : out.portals) p.target = renumbered[p.target];
+    return out;
+}
+
+// The layout with `n` small boxes (12 triangles each) added on the floor of
+// every room, in a grid: scene triangles without changing which rooms show.
+layout::Layout with_extra_boxes(const layout::Layout& layout, int n) {
+    layout::Layout out = layout;
+    const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
+    for (layout::Room& room : out.rooms) {
+        const glm::dvec3 extent = room.max - room.min;
+        const double size = 0.4 * std::min(extent.x, extent.z) / std::max(side, 1);
+        for (int i = 0; i < n; ++i) {
+            layout::BoxProp box;
+            const double x = room.min.x + (i % side + 0.5) * extent.x / side;
+            const double z = room.min.z + (i / side + 0.5) * extent.z / side;
+            box.min = {x - 0.5 * size, room.min.y, z - 0.5 * size};
+            box.max = {x + 0.5 * size, room.min.y + size, z + 0.5 * size};
+            box.color = {0.7, 0.5, 0.3};
+            room.props.push_back(box);
+        }
+    }
     return out;
 }
 
@@ -138,6 +161,10 @@ BenchPlan plan_bench(const layout::Layout& layout, const BenchOptions& o) {
         if (kind == "portals") {
             const int n = parse_int("--sweep portals", item, 0, 1000000);
             plan.layouts.push_back(keep_first_portals(layout, n));
+            add(name, kind, [&](BenchConfig& c) { c.layout_variant = static_cast<int>(plan.layouts.size()) - 1; });
+        } else if (kind == "boxes") {
+            const int n = parse_int("--sweep boxes", item, 0, 100000);
+            plan.layouts.push_back(with_extra_boxes(plan.layouts[0], n));
             add(name, kind, [&](BenchConfig& c) { c.layout_variant = static_cast<int>(plan.layouts.size()) - 1; });
         } else if (kind == "depth") {
             const int d = parse_int("--sweep depth", item, 0, 250);

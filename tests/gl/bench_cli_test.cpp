@@ -122,6 +122,13 @@ TEST_F(BenchCli, ClosedPortalsAndDepthSweep) {
     EXPECT_EQ(d["configs"][1]["portal_passes_drawn"].get<double>(), 1.0);
     EXPECT_EQ(d["configs"][2]["portal_passes_drawn"].get<double>(), 4.0);
     EXPECT_EQ(d["configs"][1]["portal_fills"].get<double>(), 1.0);
+
+    // Scene triangles: 10 extra boxes on the floor add 12 triangles each to
+    // the head's room, drawn for both eyes.
+    ASSERT_EQ(run(std::string(kQuick) + " --portals 0 --sweep boxes:0,10 --json b.json").status, 0);
+    const nlohmann::json b = json("b.json");
+    ASSERT_EQ(b["configs"].size(), 3u);
+    EXPECT_EQ(b["configs"][2]["triangles"].get<double>() - b["configs"][1]["triangles"].get<double>(), 10 * 12 * 2);
 }
 
 TEST_F(BenchCli, ScriptedWalkMeasuresEveryPose) {
