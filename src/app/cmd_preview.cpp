@@ -198,8 +198,13 @@ int run_preview_command(const Args& args, std::ostream& out, std::ostream& err) 
             if (r.kind == ReloadResult::Failed) reload_errors = r.errors;
             if (r.kind == ReloadResult::Reloaded) {
                 const std::string room_id = shown.layout->rooms[shown.walker->room()].id;
+                const bool walking = shown.walker->started();
+                const math::dmat4 w = shown.walker->physical_to_virtual();
                 Shown next = build_shown(std::move(*r.layout), room_id, error);
                 if (next.renderer) {
+                    // Walk on where the head was: same room (if it still
+                    // exists) and the same physical-to-virtual mapping.
+                    if (walking && layout::find_room(*next.layout, room_id) >= 0) next.walker->resume(w, physical);
                     shown = std::move(next);
                     reload_errors.clear();
                 } else {

@@ -47,6 +47,15 @@ Walker::Walker(const layout::Layout& layout, int room)
     physical_rotation_ = math::head_rotation(physical_pose_);
 }
 
+void Walker::resume(const math::dmat4& physical_to_virtual, const math::HeadPose& physical) {
+    w_ = physical_to_virtual;
+    physical_pose_ = physical;
+    physical_rotation_ = math::head_rotation(physical);
+    head_ = apply(w_, physical.position);
+    started_ = true;
+    history_.clear();
+}
+
 std::vector<int> Walker::step(const math::HeadPose& physical) {
     std::vector<int> passed;
     physical_pose_ = physical;

@@ -65,6 +65,12 @@ public:
     // during this frame, in order (empty for the first pose).
     std::vector<int> step(const math::HeadPose& physical);
 
+    // Continues a walk begun by another walker (e.g. before the layout was
+    // reloaded): its W and last physical pose, in this walker's room. The
+    // next step tests the segment from W · physical on, as the other walker
+    // would have. The teleport history starts empty.
+    void resume(const math::dmat4& physical_to_virtual, const math::HeadPose& physical);
+
     int room() const { return room_; }
     bool started() const { return started_; }
     const math::dmat4& physical_to_virtual() const { return w_; }

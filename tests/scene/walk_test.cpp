@@ -67,6 +67,28 @@ TEST(Walker, OnThePlaneIsInFront) {
     EXPECT_EQ(w.room(), 1);
 }
 
+TEST(Walker, ResumedWalkContinuesExactlyAsTheOriginal) {
+    // After a teleport through the skewed pair, a new walker resumed with the
+    // old one's W and pose walks on exactly as the old one does.
+    const layout::Layout l = skewed_pair();
+    Walker original(l);
+    const math::PortalRect& a = l.portals[0].rect;
+    const math::HeadPose before = at(a.center + 0.3 * a.normal), after = at(a.center - 0.3 * a.normal);
+    original.step(before);
+    ASSERT_EQ(original.step(after), std::vector<int>{0});
+    Walker resumed(l, original.room());
+    resumed.resume(original.physical_to_virtual(), after);
+    EXPECT_EQ(resumed.position(), original.position());
+    // Walking on: exactly the same. Walking back: the same teleports; the
+    // original restores its remembered W while the resumed walker (no
+    // history) multiplies by M_BA, so positions agree to rounding.
+    for (const math::HeadPose& next : {at(a.center - 0.6 * a.normal), before, after}) {
+        EXPECT_EQ(resumed.step(next), original.step(next));
+        EXPECT_EQ(resumed.room(), original.room());
+        EXPECT_LT(glm::length(resumed.position() - original.position()), 1e-12);
+    }
+}
+
 TEST(Walker, RotatedPairMapsPositionAndForward) {
     // A in r0 at the origin facing +Z; B in r1 at (5, 0, 0) facing +X:
     // M maps (x, y, z) to (5 - z, y, x).
