@@ -2,8 +2,7 @@
 
 #include <cstddef>
 
-#include "embedded.hpp"
-#include "gl/shader.hpp"
+#include "render/scene_program.hpp"
 
 namespace impossible::app {
 
@@ -34,11 +33,8 @@ void OverlayBatch::clip_line(glm::vec4 a, glm::vec4 b, glm::vec4 color) {
 
 OverlayProgram build_overlay_program(std::string& error) {
     OverlayProgram out;
-    auto source = [](GLenum stage, const char* name) {
-        return gl::ShaderSource{stage, name, std::string(embedded::find(name))};
-    };
-    gl::ProgramResult built = gl::build_program({source(GL_VERTEX_SHADER, "shaders/preview_overlay.vert.glsl"),
-                                                 source(GL_FRAGMENT_SHADER, "shaders/preview_overlay.frag.glsl")},
+    gl::ProgramResult built = gl::build_program({render::embedded_shader(GL_VERTEX_SHADER, "shaders/preview_overlay.vert.glsl"),
+                                                 render::embedded_shader(GL_FRAGMENT_SHADER, "shaders/preview_overlay.frag.glsl")},
                                                 "");
     if (!built.error.empty()) {
         error = built.error;

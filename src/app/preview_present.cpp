@@ -4,8 +4,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "embedded.hpp"
-#include "gl/shader.hpp"
+#include "render/scene_program.hpp"
 
 namespace impossible::app {
 
@@ -26,11 +25,8 @@ WindowLayout window_layout(int fb_width, int fb_height, double aspect, PreviewVi
 
 Presenter build_presenter(std::string& error) {
     Presenter p;
-    auto source = [](GLenum stage, const char* name) {
-        return gl::ShaderSource{stage, name, std::string(embedded::find(name))};
-    };
-    gl::ProgramResult built = gl::build_program({source(GL_VERTEX_SHADER, "shaders/preview_present.vert.glsl"),
-                                                 source(GL_FRAGMENT_SHADER, "shaders/preview_present.frag.glsl")},
+    gl::ProgramResult built = gl::build_program({render::embedded_shader(GL_VERTEX_SHADER, "shaders/preview_present.vert.glsl"),
+                                                 render::embedded_shader(GL_FRAGMENT_SHADER, "shaders/preview_present.frag.glsl")},
                                                 "");
     if (!built.error.empty()) {
         error = built.error;

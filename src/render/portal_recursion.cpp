@@ -18,7 +18,6 @@
 
 #include "math/oblique_projection.hpp"
 #include "render/passes.hpp"
-#include "scene/shading.hpp"
 
 namespace impossible::render {
 namespace {
@@ -235,16 +234,7 @@ void draw_portal_via_texture(DrawContext& ctx, const LevelView& view, int p, con
     // The view through the portal, at level + 1 everywhere in the texture.
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, texture.framebuffer.get());
     glViewport(0, 0, texture.width, texture.height);
-    gl::PassState all_writes;
-    r.state.apply(all_writes, 0);
-    r.state.no_scissor();
-    const glm::dvec3 bg = scene::kBackgroundColor;
-    const GLfloat color[4] = {float(bg.r), float(bg.g), float(bg.b), 1.0f};
-    const GLuint id[4] = {0, 0, 0, 0};
-    glClearNamedFramebufferfv(texture.framebuffer.get(), GL_COLOR, 0, color);
-    glClearNamedFramebufferuiv(texture.framebuffer.get(), GL_COLOR, 1, id);
-    glClearNamedFramebufferfi(texture.framebuffer.get(), GL_DEPTH_STENCIL, 0,
-                              f.depth == DepthMode::ReversedZ ? 0.0f : 1.0f, view.level + 1);
+    clear_target(r, texture, view.level + 1);
     DrawContext inside{r, ctx.program, inner, ctx.stats, ctx.projection, ctx.profiler};
     ctx.stats.portal_passes_drawn += 1;
     draw_level(inside, child_view(ctx, view, p, rects));

@@ -31,22 +31,6 @@ std::string ensure_program(Renderer& r, StereoMode mode) {
     return {};
 }
 
-void clear_target(Renderer& r, DepthMode depth) {
-    // Colour, ids, depth (far = 0 in reversed-Z) and stencil (level 0).
-    gl::PassState all_writes;
-    all_writes.stencil.write_mask = 0xff;
-    r.state.apply(all_writes, 0);
-    r.state.no_scissor();
-    const glm::dvec3 bg = scene::kBackgroundColor;
-    const GLfloat color[4] = {static_cast<GLfloat>(bg.r), static_cast<GLfloat>(bg.g),
-                              static_cast<GLfloat>(bg.b), 1.0f};
-    const GLuint id[4] = {0, 0, 0, 0};
-    const GLuint fb = r.target.framebuffer.get();
-    glClearNamedFramebufferfv(fb, GL_COLOR, 0, color);
-    glClearNamedFramebufferuiv(fb, GL_COLOR, 1, id);
-    glClearNamedFramebufferfi(fb, GL_DEPTH_STENCIL, 0, depth == DepthMode::ReversedZ ? 0.0f : 1.0f, 0);
-}
-
 // Per-eye views of the head's room at level 0, restricted to `eye_mask`.
 LevelView root_view(const FrameDesc& frame, const math::dmat4& projection, unsigned eye_mask) {
     LevelView view;
@@ -61,6 +45,21 @@ LevelView root_view(const FrameDesc& frame, const math::dmat4& projection, unsig
 }
 
 }  // namespace
+
+void clear_target(Renderer& r, const Target& target, int stencil) {
+    // Clears obey the write masks and the scissor: all writes on, no scissor.
+    r.state.apply(gl::PassState{}, 0);
+    r.state.no_scissor();
+    const glm::dvec3 bg = scene::kBackgroundColor;
+    const GLfloat color[4] = {static_cast<GLfloat>(bg.r), static_cast<GLfloat>(bg.g),
+                              static_cast<GLfloat>(bg.b), 1.0f};
+    const GLuint id[4] = {0, 0, 0, 0};
+    const GLuint fb = target.framebuffer.get();
+    glClearNamedFramebufferfv(fb, GL_COLOR, 0, color);
+    glClearNamedFramebufferuiv(fb, GL_COLOR, 1, id);
+    glClearNamedFramebufferfi(fb, GL_DEPTH_STENCIL, 0, target.depth == DepthMode::ReversedZ ? 0.0f : 1.0f,
+                              stencil);
+}
 
 RendererResult create_renderer(const layout::Layout& layout, const scene::Scene& scene) {
     RendererResult out;
@@ -113,7 +112,7 @@ std::string draw_frame(Renderer& r, const FrameDesc& frame, FrameStats* stats_ou
     // Other code (a second renderer, the preview's overlays) may have used the
     // context since the last frame: the cache re-sends every state once.
     r.state.invalidate();
-    clear_target(r, frame.depth);
+    clear_target(r, r.target, 0);
     glUseProgram(program.program.get());
     glBindVertexArray(r.gpu.vao.get());
 

@@ -51,6 +51,10 @@ struct FrameResult {
 
 FrameResult render_frame(Renderer& renderer, const FrameDesc& frame);
 
+// Clears a target to the background colour, id 0, far depth (for its depth
+// mode) and the given stencil value, through the renderer's state cache.
+void clear_target(Renderer& renderer, const Target& target, int stencil);
+
 // Draws without reading back (for timing); same state as render_frame.
 std::string draw_frame(Renderer& renderer, const FrameDesc& frame, FrameStats* stats);
 

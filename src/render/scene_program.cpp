@@ -19,17 +19,18 @@ std::string shading_defines() {
     return buf;
 }
 
-gl::ShaderSource source(GLenum stage, const char* name) {
+}  // namespace
+
+gl::ShaderSource embedded_shader(GLenum stage, const char* name) {
     return {stage, name, std::string(embedded::find(name))};
 }
-
-}  // namespace
 
 namespace {
 
 SceneProgramResult link_scene_program(const char* fragment, const std::string& defines) {
     gl::ProgramResult built = gl::build_program(
-        {source(GL_VERTEX_SHADER, "shaders/scene.vert.glsl"), source(GL_FRAGMENT_SHADER, fragment)}, defines);
+        {embedded_shader(GL_VERTEX_SHADER, "shaders/scene.vert.glsl"), embedded_shader(GL_FRAGMENT_SHADER, fragment)},
+        defines);
     SceneProgramResult out;
     if (!built.error.empty()) {
         out.error = built.error;
@@ -69,8 +70,8 @@ SceneProgramResult build_portal_texture_program() {
 
 ClearDepthProgramResult build_clear_depth_program() {
     gl::ProgramResult built = gl::build_program(
-        {source(GL_VERTEX_SHADER, "shaders/clear_depth.vert.glsl"),
-         source(GL_FRAGMENT_SHADER, "shaders/clear_depth.frag.glsl")},
+        {embedded_shader(GL_VERTEX_SHADER, "shaders/clear_depth.vert.glsl"),
+         embedded_shader(GL_FRAGMENT_SHADER, "shaders/clear_depth.frag.glsl")},
         "");
     ClearDepthProgramResult out;
     out.error = built.error;

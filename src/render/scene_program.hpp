@@ -5,9 +5,13 @@
 #include <string>
 
 #include "gl/handles.hpp"
+#include "gl/shader.hpp"
 #include "render/frame.hpp"
 
 namespace impossible::render {
+
+// A shader stage compiled into the binary (embedded.hpp), named by its path.
+gl::ShaderSource embedded_shader(GLenum stage, const char* name);
 
 struct SceneProgram {
     gl::Program program;
