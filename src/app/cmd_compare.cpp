@@ -9,8 +9,8 @@
 
 #include "app/cli_args.hpp"
 #include "app/commands.hpp"
-#include "app/png_io.hpp"
-#include "trace/image_compare.hpp"
+#include "image/png.hpp"
+#include "image/compare.hpp"
 
 namespace impossible::app {
 namespace {
@@ -37,7 +37,7 @@ const char* kHelp =
 
 // Reads a colour PNG (grey is widened to rgb).
 std::vector<std::uint8_t> read_colour(const std::string& path, int& width, int& height) {
-    PngImage png = read_png(path);
+    image::PngImage png = image::read_png(path);
     if (!png.error.empty()) throw InputError(png.error);
     width = png.width;
     height = png.height;
@@ -49,7 +49,7 @@ std::vector<std::uint8_t> read_colour(const std::string& path, int& width, int& 
 }
 
 std::vector<std::uint8_t> read_ids(const std::string& path, int width, int height) {
-    PngImage png = read_png(path);
+    image::PngImage png = image::read_png(path);
     if (!png.error.empty()) throw InputError(png.error);
     if (png.channels != 1) throw InputError(path + ": a cell-id map must be an 8-bit greyscale PNG");
     if (png.width != width || png.height != height)
@@ -79,7 +79,7 @@ int run_compare_command(const Args& args, std::ostream& out, std::ostream& err) 
     }
     if (auto v = parsed.value("--min-psnr")) min_psnr = parse_number("--min-psnr", *v);
 
-    trace::Picture a, b;
+    image::Image a, b;
     a.rgb = read_colour(parsed.positional[0], a.width, a.height);
     b.rgb = read_colour(parsed.positional[1], b.width, b.height);
     if (a.width != b.width || a.height != b.height)
@@ -90,12 +90,12 @@ int run_compare_command(const Args& args, std::ostream& out, std::ostream& err) 
         a.ids = read_ids(*ids_a, a.width, a.height);
         b.ids = read_ids(*ids_b, b.width, b.height);
     }
-    if (auto why = trace::incomparable(a, b)) throw InputError(*why);
+    if (auto why = image::incomparable(a, b)) throw InputError(*why);
 
-    const trace::Comparison c = trace::compare_pictures(a, b);
-    out << trace::summary_line(c) << "\n";
+    const image::Comparison c = image::compare_pictures(a, b);
+    out << image::summary_line(c) << "\n";
     if (auto path = parsed.value("--diff"))
-        if (std::string e = write_png(*path, a.width, a.height, 3, trace::diff_picture(a, b)); !e.empty())
+        if (std::string e = image::write_png(*path, a.width, a.height, 3, image::diff_picture(a, b)); !e.empty())
             throw InputError(e);
     if (max_mismatch && c.id_mismatch_percent > *max_mismatch) {
         err << "impossible compare: " << c.id_mismatch_percent

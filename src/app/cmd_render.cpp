@@ -38,7 +38,7 @@ int run_render_command(const Args& args, std::ostream& out, std::ostream& err) {
     render::FrameResult result = render::render_frame(*renderer.renderer, frame);
     if (!result.error.empty()) throw InputError(result.error);
 
-    const render::Image& image = result.image;
+    const image::Image& image = result.image;
     write_frame_pngs(options, image.width, image.height, image.rgb, image.ids);
     if (options.stats) {
         const render::FrameStats& s = result.stats;

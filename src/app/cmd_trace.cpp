@@ -49,7 +49,7 @@ int run_trace_command(const Args& args, std::ostream& out, std::ostream& err) {
 
     const auto start = std::chrono::steady_clock::now();
     const trace::Scene scene = trace::prepare_scene(layout);
-    const trace::TraceImage image = trace::trace_frame(scene, desc);
+    const image::Image image = trace::trace_frame(scene, desc);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     write_frame_pngs(options, image.width, image.height, image.rgb, image.ids);

@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/preview_path.hpp"
+#include "layout/path_file.hpp"
 #include "math/pose.hpp"
 #include "scene/walk.hpp"
 
@@ -38,7 +38,7 @@ std::string format_number(double value) {
 
 int run_walk_stream(const layout::Layout& layout, std::istream& in, const std::string& name,
                     std::ostream& out, std::ostream& err) {
-    const PathFile path = read_path_stream(in, name);
+    const layout::PathFile path = layout::read_path_stream(in, name);
     if (!path.error.empty()) {
         err << path.error << '\n';
         return 1;

@@ -1,4 +1,5 @@
-// The program's commands (cli.md). Each takes its arguments after the command
+// The program's commands (cli.md); `bench` is in bench/bench_command.hpp and
+// `preview` in preview/preview_command.hpp. Each takes its arguments after the command
 // name and returns the exit status; errors go to `err` as one line.
 #pragma once
 
@@ -15,8 +16,6 @@ int run_validate_command(const Args& args, std::ostream& out, std::ostream& err)
 int run_walk_command(const Args& args, std::ostream& out, std::ostream& err);
 int run_trace_command(const Args& args, std::ostream& out, std::ostream& err);
 int run_compare_command(const Args& args, std::ostream& out, std::ostream& err);
-int run_bench_command(const Args& args, std::ostream& out, std::ostream& err);
-int run_preview_command(const Args& args, std::ostream& out, std::ostream& err);
 
 // Dispatches argv[1] to a command; prints the overview for --help or nothing.
 int run_main(const Args& args, std::ostream& out, std::ostream& err);

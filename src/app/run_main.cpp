@@ -3,6 +3,8 @@
 
 #include "app/cli_args.hpp"
 #include "app/commands.hpp"
+#include "bench/bench_command.hpp"
+#include "preview/preview_command.hpp"
 
 namespace impossible::app {
 namespace {
@@ -32,8 +34,8 @@ int run_main(const Args& args, std::ostream& out, std::ostream& err) {
         if (command == "walk") return run_walk_command(rest, out, err);
         if (command == "trace") return run_trace_command(rest, out, err);
         if (command == "compare") return run_compare_command(rest, out, err);
-        if (command == "bench") return run_bench_command(rest, out, err);
-        if (command == "preview") return run_preview_command(rest, out, err);
+        if (command == "bench") return bench::run_bench_command(rest, out, err);
+        if (command == "preview") return preview::run_preview_command(rest, out, err);
         err << "impossible: unknown command '" << command << "'\n" << kOverview;
         return kExitUsage;
     } catch (const UsageError& e) {

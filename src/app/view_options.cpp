@@ -1,6 +1,6 @@
 #include "app/view_options.hpp"
 
-#include "app/png_io.hpp"
+#include "image/png.hpp"
 
 #include <cmath>
 #include <tuple>
@@ -125,9 +125,9 @@ trace::TraceDesc trace_desc_for(const render::FrameDesc& frame, int threads) {
 
 void write_frame_pngs(const ViewOptions& options, int width, int height, const std::vector<std::uint8_t>& rgb,
                       const std::vector<std::uint8_t>& ids) {
-    if (std::string e = write_png(options.out, width, height, 3, rgb); !e.empty()) throw InputError(e);
+    if (std::string e = image::write_png(options.out, width, height, 3, rgb); !e.empty()) throw InputError(e);
     if (options.ids)
-        if (std::string e = write_png(*options.ids, width, height, 1, ids); !e.empty()) throw InputError(e);
+        if (std::string e = image::write_png(*options.ids, width, height, 1, ids); !e.empty()) throw InputError(e);
 }
 
 render::FrameDesc frame_for(const layout::Layout& layout, const ViewOptions& o) {

@@ -1,6 +1,7 @@
 // Head pose → eyes → view matrices (see pose.hpp for the conventions).
 #include "math/pose.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace impossible::math {
@@ -46,6 +47,26 @@ dmat3 rotation_z_deg(double deg) {
 dmat3 head_rotation(const HeadPose& pose) {
     return rotation_y_deg(pose.yaw_deg) * rotation_x_deg(pose.pitch_deg) *
            rotation_z_deg(-pose.roll_deg);
+}
+
+HeadPose head_pose_from(const dvec3& position, const dmat3& r) {
+    // R = R_y(yaw) · R_x(pitch) · R_z(-roll): the back column is
+    // (sin yaw cos pitch, -sin pitch, cos yaw cos pitch) and the second row is
+    // (cos pitch · sin(-roll), cos pitch · cos(-roll), -sin pitch).
+    constexpr double deg = 180.0 / kPi;
+    HeadPose pose;
+    pose.position = position;
+    const double sp = std::clamp(-r[2].y, -1.0, 1.0);
+    pose.pitch_deg = std::asin(sp) * deg;
+    const double cp = std::hypot(r[0].y, r[1].y);
+    if (cp > 1e-12) {
+        pose.yaw_deg = std::atan2(r[2].x, r[2].z) * deg;
+        pose.roll_deg = -std::atan2(r[0].y, r[1].y) * deg;
+    } else {  // looking straight up or down: all turning is yaw
+        pose.yaw_deg = std::atan2(-r[0].z, r[0].x) * deg;
+        pose.roll_deg = 0.0;
+    }
+    return pose;
 }
 
 std::array<Eye, 2> eyes_of(const HeadPose& pose, double ipd) {

@@ -45,6 +45,11 @@ dmat3 rotation_z_deg(double deg);
 // R = R_y(yaw) · R_x(pitch) · R_z(-roll); columns right, up, back.
 dmat3 head_rotation(const HeadPose& pose);
 
+// The inverse of head_rotation: yaw, pitch and roll of a head rotation, at
+// `position`. Looking straight up or down (pitch ±90°), yaw and roll turn the
+// same way; all of it is given to yaw (roll 0).
+HeadPose head_pose_from(const dvec3& position, const dmat3& rotation);
+
 // The left eye first, at head - ipd/2 · right; the right at head + ipd/2 · right.
 std::array<Eye, 2> eyes_of(const HeadPose& pose, double ipd);
 

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "image/image.hpp"
 #include "math/pose.hpp"
 
 namespace impossible::render {
@@ -59,14 +60,6 @@ struct FrameDesc {
     // level-0 portal's subtree. The glFinish calls perturb the frame's own
     // time, so time frames with this off. Off: no queries, no extra work.
     bool profile = false;
-};
-
-// The side-by-side image: left eye in the left half, rows from the top.
-struct Image {
-    int width = 0;   // 2 × eye width
-    int height = 0;
-    std::vector<std::uint8_t> rgb;  // width × height × 3
-    std::vector<std::uint8_t> ids;  // width × height cell ids (layout-format.md)
 };
 
 struct FrameStats {

@@ -44,7 +44,7 @@ struct RendererResult {
 RendererResult create_renderer(const layout::Layout& layout, const scene::Scene& scene);
 
 struct FrameResult {
-    Image image;
+    image::Image image;
     FrameStats stats;
     std::string error;  // e.g. a stereo mode the driver cannot do
 };

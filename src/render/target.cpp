@@ -62,8 +62,8 @@ TargetResult create_sampled_target(int width, int height, DepthMode depth) {
     return make_target(width, height, depth, true);
 }
 
-Image read_target(const Target& t) {
-    Image image;
+image::Image read_target(const Target& t) {
+    image::Image image;
     image.width = t.width;
     image.height = t.height;
     const size_t w = static_cast<size_t>(t.width), h = static_cast<size_t>(t.height);

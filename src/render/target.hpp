@@ -34,6 +34,6 @@ TargetResult create_target(int width, int height, DepthMode depth);
 TargetResult create_sampled_target(int width, int height, DepthMode depth);
 
 // Reads colour and ids back, rows from the top.
-Image read_target(const Target& target);
+image::Image read_target(const Target& target);
 
 }  // namespace impossible::render

@@ -118,14 +118,14 @@ PixelRay pixel_ray(const TraceDesc& desc, int eye, int i, int j) {
     return eye_pixel_ray(desc, frustum_of(desc), math::eyes_of(desc.head, desc.ipd)[eye], i, j);
 }
 
-TraceImage trace_frame(const Scene& scene, const TraceDesc& desc) {
+image::Image trace_frame(const Scene& scene, const TraceDesc& desc) {
     if (desc.room < 0 || desc.room >= static_cast<int>(scene.rooms.size()))
         throw std::invalid_argument("trace: room index " + std::to_string(desc.room) + " is out of range");
     if (desc.eye_width <= 0 || desc.eye_height <= 0 || desc.eye_width > 1 << 15 || desc.eye_height > 1 << 15)
         throw std::invalid_argument("trace: bad eye image size");
     if (desc.max_depth < 0) throw std::invalid_argument("trace: max_depth is negative");
 
-    TraceImage image;
+    image::Image image;
     image.width = 2 * desc.eye_width;
     image.height = desc.eye_height;
     const size_t pixels = static_cast<size_t>(image.width) * image.height;
@@ -167,7 +167,7 @@ TraceImage trace_frame(const Scene& scene, const TraceDesc& desc) {
     return image;
 }
 
-TraceImage trace_frame(const layout::Layout& layout, const TraceDesc& desc) {
+image::Image trace_frame(const layout::Layout& layout, const TraceDesc& desc) {
     return trace_frame(prepare_scene(layout), desc);
 }
 

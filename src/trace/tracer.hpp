@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "layout/layout.hpp"
+#include "image/image.hpp"
 #include "math/pose.hpp"
 #include "trace/trace_scene.hpp"
 
@@ -47,15 +48,6 @@ struct TraceDesc {
     int threads = 0;  // 0: std::thread::hardware_concurrency()
 };
 
-// The side-by-side image, laid out like render::Image: left eye in the left
-// half, rows from the top, rgb 3 bytes a pixel, one id byte a pixel.
-struct TraceImage {
-    int width = 0;  // 2 × eye width
-    int height = 0;
-    std::vector<std::uint8_t> rgb;
-    std::vector<std::uint8_t> ids;
-};
-
 // 0..1 → 0..255 as round(clamp(c, 0, 1) · 255).
 std::uint8_t to_byte(double c);
 
@@ -70,7 +62,7 @@ PixelRay pixel_ray(const TraceDesc& desc, int eye, int i, int j);
 // Traces every pixel of both eyes. Rows are split across threads; the image
 // does not depend on the thread count. Throws std::invalid_argument for a bad
 // room index, size or negative depth.
-TraceImage trace_frame(const Scene& scene, const TraceDesc& desc);
-TraceImage trace_frame(const layout::Layout& layout, const TraceDesc& desc);
+image::Image trace_frame(const Scene& scene, const TraceDesc& desc);
+image::Image trace_frame(const layout::Layout& layout, const TraceDesc& desc);
 
 }  // namespace impossible::trace

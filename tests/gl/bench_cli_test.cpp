@@ -14,7 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/bench_options.hpp"
+#include "bench/options.hpp"
 #include "math/pose.hpp"
 
 namespace impossible {
@@ -154,18 +154,6 @@ TEST_F(BenchCli, BadInputAndUsageErrors) {
     EXPECT_NE(unculled.err.find("portal passes"), std::string::npos) << unculled.err;
     EXPECT_EQ(run("--help").status, 0);
     EXPECT_NE(text("stdout.txt").find("usage: impossible bench"), std::string::npos);
-}
-
-TEST(BenchPose, AnglesOfAHeadRotationReadBack) {
-    for (double yaw : {-170.0, -30.0, 0.0, 45.0, 120.0})
-        for (double pitch : {-60.0, 0.0, 20.0})
-            for (double roll : {-45.0, 0.0, 10.0}) {
-                const math::HeadPose pose{{1, 2, 3}, yaw, pitch, roll};
-                const math::HeadPose back = app::head_pose_of(pose.position, math::head_rotation(pose));
-                EXPECT_NEAR(back.yaw_deg, yaw, 1e-9);
-                EXPECT_NEAR(back.pitch_deg, pitch, 1e-9);
-                EXPECT_NEAR(back.roll_deg, roll, 1e-9);
-            }
 }
 
 }  // namespace

@@ -30,7 +30,7 @@ inline layout::Layout layout_from_file(const std::string& path) {
 }
 
 // Renders one frame in a fresh context of the given backend.
-inline render::Image render_once(gl::Backend backend, const layout::Layout& layout,
+inline image::Image render_once(gl::Backend backend, const layout::Layout& layout,
                                  const render::FrameDesc& frame, render::FrameStats* stats = nullptr) {
     gl::ContextResult context = gl::create_context(backend);
     EXPECT_TRUE(context.context.has_value()) << context.error;
@@ -45,7 +45,7 @@ inline render::Image render_once(gl::Backend backend, const layout::Layout& layo
 }
 
 // Number of pixels whose colour differs by more than `tolerance` in a channel.
-inline int count_colour_differences(const render::Image& a, const render::Image& b, int tolerance = 0) {
+inline int count_colour_differences(const image::Image& a, const image::Image& b, int tolerance = 0) {
     if (a.width != b.width || a.height != b.height) return -1;
     int n = 0;
     for (size_t i = 0; i < a.rgb.size(); i += 3)
@@ -57,17 +57,17 @@ inline int count_colour_differences(const render::Image& a, const render::Image&
     return n;
 }
 
-inline int count_id_differences(const render::Image& a, const render::Image& b) {
+inline int count_id_differences(const image::Image& a, const image::Image& b) {
     if (a.width != b.width || a.height != b.height) return -1;
     int n = 0;
     for (size_t i = 0; i < a.ids.size(); ++i) n += a.ids[i] != b.ids[i];
     return n;
 }
 
-inline const std::uint8_t* pixel(const render::Image& image, int x, int y) {
+inline const std::uint8_t* pixel(const image::Image& image, int x, int y) {
     return &image.rgb[(static_cast<size_t>(y) * image.width + x) * 3];
 }
-inline std::uint8_t id_at(const render::Image& image, int x, int y) {
+inline std::uint8_t id_at(const image::Image& image, int x, int y) {
     return image.ids[static_cast<size_t>(y) * image.width + x];
 }
 

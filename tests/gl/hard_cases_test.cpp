@@ -11,7 +11,7 @@
 #include "gl_fixture.hpp"
 #include "math/oblique_projection.hpp"
 #include "math/projection.hpp"
-#include "trace/image_compare.hpp"
+#include "image/compare.hpp"
 #include "trace/tracer.hpp"
 
 namespace impossible {
@@ -21,14 +21,14 @@ std::string hard(const char* name) { return std::string(IMPOSSIBLE_TEST_DATA) + 
 std::string shipped(const char* name) { return std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/" + name; }
 
 // Renders and traces the same frame; prints and returns the comparison.
-trace::Comparison render_against_trace(const layout::Layout& l, const render::FrameDesc& f, const char* what) {
-    const render::Image raster = testing::render_once(gl::Backend::Egl, l, f);
-    const trace::TraceImage traced = trace::trace_frame(l, app::trace_desc_for(f));
-    const trace::Picture a{raster.width, raster.height, raster.rgb, raster.ids};
-    const trace::Picture b{traced.width, traced.height, traced.rgb, traced.ids};
-    EXPECT_FALSE(trace::incomparable(a, b));
-    const trace::Comparison c = trace::compare_pictures(a, b);
-    std::printf("  %-58s %s\n", what, trace::summary_line(c).c_str());
+image::Comparison render_against_trace(const layout::Layout& l, const render::FrameDesc& f, const char* what) {
+    const image::Image raster = testing::render_once(gl::Backend::Egl, l, f);
+    const image::Image traced = trace::trace_frame(l, app::trace_desc_for(f));
+    const image::Image a{raster.width, raster.height, raster.rgb, raster.ids};
+    const image::Image b{traced.width, traced.height, traced.rgb, traced.ids};
+    EXPECT_FALSE(image::incomparable(a, b));
+    const image::Comparison c = image::compare_pictures(a, b);
+    std::printf("  %-58s %s\n", what, image::summary_line(c).c_str());
     return c;
 }
 
@@ -50,7 +50,7 @@ TEST(HardCases, EyeAHairFromThePortalPlane) {
     for (double d : {1e-3, 1e-4, 1e-6}) {
         char what[80];
         std::snprintf(what, sizeof what, "default: head %g m in front of the door", d);
-        const trace::Comparison c = render_against_trace(l, frame(l, "hall", {0, 1.6, d}, 0), what);
+        const image::Comparison c = render_against_trace(l, frame(l, "hall", {0, 1.6, d}, 0), what);
         EXPECT_EQ(c.id_mismatches, 0) << what;
     }
     // Head 2 mm in front, looking sideways: one eye is 30 mm behind the plane.
@@ -69,7 +69,7 @@ TEST(HardCases, GrazingAndEdgeOnViews) {
                   .id_mismatch_percent,
               0.01);
     // Exactly in the door's plane: the door is edge-on and shows nothing.
-    const trace::Comparison edge =
+    const image::Comparison edge =
         render_against_trace(l, frame(l, "hall", {1.5, 1.1, 0.0}, 90), "default: door edge-on (eye in its plane)");
     EXPECT_EQ(edge.id_mismatches, 0);
     const layout::Layout corridor = testing::layout_from_file(shipped("corridor.json"));

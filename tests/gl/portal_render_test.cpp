@@ -28,7 +28,7 @@ render::FrameDesc pose(const layout::Layout& l, const char* room, math::dvec3 p,
     return f;
 }
 
-int centre_id(const render::Image& image, int eye) { return id_at(image, eye * 81 + 40, 30); }
+int centre_id(const image::Image& image, int eye) { return id_at(image, eye * 81 + 40, 30); }
 
 // Default layout: hall_door at z = 0 faces +z (hall side), annex_door at the
 // same place faces -z; the transfer matrix is the identity.
@@ -36,12 +36,12 @@ TEST(PortalBox, EyeBehindThePlaneInsideTheBoxSeesTheTargetRoom) {
     const layout::Layout l = load("default.json");
     // Head 2 mm in front of hall_door, looking -x: the right eye (at +z... no,
     // with yaw 90 the right axis is -z) stands 30 mm behind the plane.
-    const render::Image image = testing::render_once(gl::Backend::Egl, l, pose(l, "hall", {0, 1.6, 0.002}, 90));
+    const image::Image image = testing::render_once(gl::Backend::Egl, l, pose(l, "hall", {0, 1.6, 0.002}, 90));
     EXPECT_EQ(centre_id(image, 0), 1) << "left eye, in front of the plane, sees the hall";
     EXPECT_EQ(centre_id(image, 1), 2) << "right eye, inside the box, sees the annex on the inner face";
     // Looking back out of the box (+z, towards the hall) the right eye sees
     // its own room through the open front.
-    const render::Image back = testing::render_once(gl::Backend::Egl, l, pose(l, "hall", {0, 1.6, -0.01}, 180));
+    const image::Image back = testing::render_once(gl::Backend::Egl, l, pose(l, "hall", {0, 1.6, -0.01}, 180));
     EXPECT_EQ(centre_id(back, 0), 1);
     EXPECT_EQ(centre_id(back, 1), 1);
 }
@@ -50,7 +50,7 @@ TEST(PortalBox, CrossedEyeWorksInTheOtherDirectionToo) {
     const layout::Layout l = load("default.json");
     // In the annex, 2 mm in front of annex_door (which faces -z), looking +x:
     // the right axis is +z, so the right eye is 30 mm behind annex_door.
-    const render::Image image = testing::render_once(gl::Backend::Egl, l, pose(l, "annex", {0, 1.6, -0.002}, -90));
+    const image::Image image = testing::render_once(gl::Backend::Egl, l, pose(l, "annex", {0, 1.6, -0.002}, -90));
     EXPECT_EQ(centre_id(image, 0), 2) << "left eye sees the annex";
     EXPECT_EQ(centre_id(image, 1), 1) << "right eye, inside annex_door's box, sees the hall";
 }
@@ -58,7 +58,7 @@ TEST(PortalBox, CrossedEyeWorksInTheOtherDirectionToo) {
 TEST(PortalBox, EyeCloserThanTheNearPlaneStillSeesTheTargetRoom) {
     const layout::Layout l = load("default.json");
     for (double d : {0.005, 0.001, 0.0001, 1e-6}) {
-        const render::Image image = testing::render_once(gl::Backend::Egl, l, pose(l, "hall", {0, 1.6, d}, 0));
+        const image::Image image = testing::render_once(gl::Backend::Egl, l, pose(l, "hall", {0, 1.6, d}, 0));
         std::set<int> ids(image.ids.begin(), image.ids.end());
         EXPECT_EQ(ids, std::set<int>{2}) << "head " << d << " m in front of the door";
     }
@@ -67,7 +67,7 @@ TEST(PortalBox, EyeCloserThanTheNearPlaneStillSeesTheTargetRoom) {
 TEST(PortalBox, FreeStandingPortalIsInvisibleFromBehindAndBeside) {
     const layout::Layout l = load("default.json");
     // Behind hall_door (z < -depth), looking at its back: the hall only.
-    render::Image image = testing::render_once(gl::Backend::Egl, l, pose(l, "hall", {0, 1.6, -1.5}, 180));
+    image::Image image = testing::render_once(gl::Backend::Egl, l, pose(l, "hall", {0, 1.6, -1.5}, 180));
     EXPECT_EQ(std::set<int>(image.ids.begin(), image.ids.end()), std::set<int>{1});
     // Beside it, looking along its plane.
     image = testing::render_once(gl::Backend::Egl, l, pose(l, "hall", {1.5, 1.6, -0.1}, 90));
@@ -80,7 +80,7 @@ TEST(PortalRecursion, RecursionLimitShowsTheFillAndId255) {
         render::FrameDesc f = pose(l, "corridor", {0, 1.2, 3.5}, 0);
         f.max_depth = depth;
         render::FrameStats stats;
-        const render::Image image = testing::render_once(gl::Backend::Egl, l, f, &stats);
+        const image::Image image = testing::render_once(gl::Backend::Egl, l, f, &stats);
         EXPECT_EQ(centre_id(image, 0), 255) << "depth " << depth;
         EXPECT_EQ(stats.max_level_reached, depth);
         EXPECT_EQ(stats.portal_passes_drawn, depth) << "one portal per level straight ahead";
@@ -96,7 +96,7 @@ TEST(PortalRecursion, DeeperLimitMovesTheFillFurtherAway) {
     auto fill_pixels = [&](int depth) {
         render::FrameDesc f = pose(l, "corridor", {0, 1.2, 3.5}, 0);
         f.max_depth = depth;
-        const render::Image image = testing::render_once(gl::Backend::Egl, l, f);
+        const image::Image image = testing::render_once(gl::Backend::Egl, l, f);
         return std::count(image.ids.begin(), image.ids.end(), 255);
     };
     const long d1 = fill_pixels(1), d2 = fill_pixels(2), d4 = fill_pixels(4);
@@ -128,15 +128,15 @@ TEST(PortalCulling, CulledAndUnculledRendersAreEqual) {
         f.eye_width = 160;
         f.eye_height = 90;
         render::FrameStats culled_stats, unculled_stats;
-        const render::Image culled = testing::render_once(gl::Backend::Egl, l, f, &culled_stats);
+        const image::Image culled = testing::render_once(gl::Backend::Egl, l, f, &culled_stats);
         f.cull_portals = false;
-        const render::Image unculled = testing::render_once(gl::Backend::Egl, l, f, &unculled_stats);
+        const image::Image unculled = testing::render_once(gl::Backend::Egl, l, f, &unculled_stats);
         EXPECT_EQ(testing::count_id_differences(culled, unculled), 0) << c.layout << " " << c.room;
         EXPECT_EQ(testing::count_colour_differences(culled, unculled, 1), 0) << c.layout << " " << c.room;
         EXPECT_LE(culled_stats.portal_passes_drawn, unculled_stats.portal_passes_drawn) << c.layout;
         f.cull_portals = true;
         f.occlusion_test = true;
-        const render::Image tested = testing::render_once(gl::Backend::Egl, l, f);
+        const image::Image tested = testing::render_once(gl::Backend::Egl, l, f);
         EXPECT_EQ(testing::count_id_differences(culled, tested), 0) << c.layout << " " << c.room;
         EXPECT_EQ(testing::count_colour_differences(culled, tested, 0), 0) << c.layout << " " << c.room;
     }
@@ -154,7 +154,7 @@ TEST(PortalCulling, OcclusionTestDropsSubtreesBehindAWall) {
     ASSERT_TRUE(context.context) << context.error;
     render::RendererResult r = render::create_renderer(l, scene::build_scene(l));
     ASSERT_TRUE(r.renderer) << r.error;
-    auto primitives = [&](bool occlusion_test, render::Image* image) {
+    auto primitives = [&](bool occlusion_test, image::Image* image) {
         f.occlusion_test = occlusion_test;
         gl::Query q = gl::create_query(GL_PRIMITIVES_GENERATED);
         glBeginQuery(GL_PRIMITIVES_GENERATED, q.get());
@@ -166,7 +166,7 @@ TEST(PortalCulling, OcclusionTestDropsSubtreesBehindAWall) {
         glGetQueryObjectui64v(q.get(), GL_QUERY_RESULT, &n);
         return n;
     };
-    render::Image a, b;
+    image::Image a, b;
     const GLuint64 plain = primitives(false, &a), tested = primitives(true, &b);
     std::printf("  primitives generated at depth 16 behind a wall: %llu without, %llu with the occlusion test\n",
                 static_cast<unsigned long long>(plain), static_cast<unsigned long long>(tested));
@@ -195,7 +195,7 @@ TEST(Cells, OverlappingRoomsNeverBleed) {
     render::FrameDesc f = pose(l, "hall", {0.8, 1.2, 1.5}, 25, -13);
     f.eye_width = 160;
     f.eye_height = 90;
-    const render::Image image = testing::render_once(gl::Backend::Egl, l, f);
+    const image::Image image = testing::render_once(gl::Backend::Egl, l, f);
     // No blue-box colour (0.2, 0.35, 0.85 shaded) may appear outside pixels
     // whose id is the annex's.
     int blue_in_hall = 0, blue_in_annex = 0;
@@ -224,15 +224,15 @@ TEST(PortalTexture, FullScaleEqualsStencilPortalsAndSmallerScalesBlur) {
                                    l.start.yaw_deg);
         f.eye_width = 160;
         f.eye_height = 90;
-        const render::Image stencil = testing::render_once(gl::Backend::Egl, l, f);
+        const image::Image stencil = testing::render_once(gl::Backend::Egl, l, f);
         f.portal_texture_scale = 1.0;
         render::FrameStats stats;
-        const render::Image full = testing::render_once(gl::Backend::Egl, l, f, &stats);
+        const image::Image full = testing::render_once(gl::Backend::Egl, l, f, &stats);
         EXPECT_EQ(testing::count_id_differences(stencil, full), 0) << name;
         EXPECT_EQ(testing::count_colour_differences(stencil, full, 0), 0) << name;
         EXPECT_GE(stats.portal_passes_drawn, 1) << name;
         f.portal_texture_scale = 0.25;
-        const render::Image quarter = testing::render_once(gl::Backend::Egl, l, f);
+        const image::Image quarter = testing::render_once(gl::Backend::Egl, l, f);
         EXPECT_GT(testing::count_colour_differences(stencil, quarter, 2), 0) << name << ": a quarter-size texture blurs";
     }
 }

@@ -12,15 +12,15 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "app/preview_grid.hpp"
-#include "app/preview_head.hpp"
-#include "app/preview_hud.hpp"
-#include "app/preview_minimap.hpp"
-#include "app/preview_path.hpp"
-#include "app/preview_present.hpp"
-#include "app/preview_reload.hpp"
+#include "preview/grid.hpp"
+#include "preview/head.hpp"
+#include "preview/hud.hpp"
+#include "preview/minimap.hpp"
+#include "layout/path_file.hpp"
+#include "preview/present.hpp"
+#include "preview/reload.hpp"
 
-namespace impossible::app {
+namespace impossible::preview {
 namespace {
 
 namespace fs = std::filesystem;
@@ -49,24 +49,6 @@ TEST(PreviewWindowLayout, KeepsTheEyeAspectAndCentres) {
     EXPECT_EQ(a.eye_rects[0].width, 800);
     EXPECT_EQ(a.eye_rects[0].height, 600);
     EXPECT_EQ(a.eye_rects[0].x, a.eye_rects[1].x);
-}
-
-TEST(PreviewHead, PoseOfInvertsHeadRotation) {
-    std::mt19937 rng(7);
-    std::uniform_real_distribution<double> yaw(-179.0, 179.0), pitch(-89.0, 89.0), roll(-179.0, 179.0);
-    for (int i = 0; i < 200; ++i) {
-        const math::HeadPose p{{1.0, 2.0, 3.0}, yaw(rng), pitch(rng), roll(rng)};
-        const math::HeadPose back = pose_of(p.position, math::head_rotation(p));
-        EXPECT_NEAR(back.yaw_deg, p.yaw_deg, 1e-9);
-        EXPECT_NEAR(back.pitch_deg, p.pitch_deg, 1e-9);
-        EXPECT_NEAR(back.roll_deg, p.roll_deg, 1e-9);
-    }
-    // Straight down: the rotation is still reproduced (roll folded into yaw).
-    const math::HeadPose down{{0.0, 0.0, 0.0}, 30.0, -90.0, 20.0};
-    const math::dmat3 r = math::head_rotation(down);
-    const math::dmat3 again = math::head_rotation(pose_of(down.position, r));
-    for (int c = 0; c < 3; ++c)
-        for (int k = 0; k < 3; ++k) EXPECT_NEAR(again[c][k], r[c][k], 1e-9);
 }
 
 TEST(PreviewHead, MovesAlongTheYawAndStaysInThePlayArea) {
@@ -138,17 +120,17 @@ TEST(PreviewMinimap, BoundsHoldThePlayAreaTheRoomAndTheHead) {
 
 TEST(PreviewPath, ReadsPosesAndReportsTheBadLine) {
     std::istringstream good("# comment\n\n1 1.6 2 90 0 0\r\n+0 1.5 -1 0 -5 3\n");
-    const PathFile ok = read_path_stream(good, "p.txt");
+    const layout::PathFile ok = layout::read_path_stream(good, "p.txt");
     EXPECT_EQ(ok.error, "");
     ASSERT_EQ(ok.poses.size(), 2u);
     EXPECT_EQ(ok.poses[0].yaw_deg, 90.0);
     EXPECT_EQ(ok.poses[1].roll_deg, 3.0);
     std::istringstream bad("1 2 3 0 0 0\n1 2 x 0 0 0\n");
-    EXPECT_EQ(read_path_stream(bad, "p.txt").error, "p.txt:2: Z: 'x' is not a finite number");
+    EXPECT_EQ(layout::read_path_stream(bad, "p.txt").error, "p.txt:2: Z: 'x' is not a finite number");
     std::istringstream empty("# nothing\n");
-    EXPECT_EQ(read_path_stream(empty, "p.txt").error, "");
-    EXPECT_TRUE(read_path_stream(empty, "p.txt").poses.empty());
-    EXPECT_NE(read_path_file("/nonexistent/p.txt").error, "");
+    EXPECT_EQ(layout::read_path_stream(empty, "p.txt").error, "");
+    EXPECT_TRUE(layout::read_path_stream(empty, "p.txt").poses.empty());
+    EXPECT_NE(layout::read_path_file("/nonexistent/p.txt").error, "");
 }
 
 const char* kLayout = R"({ "format": "impossible-layout", "version": 1,
@@ -189,4 +171,4 @@ TEST(PreviewReload, ReloadsGoodEditsAndReportsBadOnes) {
 }
 
 }  // namespace
-}  // namespace impossible::app
+}  // namespace impossible::preview

@@ -18,7 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/png_io.hpp"
+#include "image/png.hpp"
 
 namespace impossible {
 namespace {
@@ -177,10 +177,10 @@ TEST_F(Preview, ScriptedWalkThroughAPortalMatchesRenderAndWalk) {
         ASSERT_EQ(r.status, 0) << r.err;
         char name[32];
         std::snprintf(name, sizeof name, "frame-%04zu", i);
-        const app::PngImage colour = app::read_png((shots / (std::string(name) + ".png")).string());
-        const app::PngImage ids = app::read_png((shots / (std::string(name) + "-ids.png")).string());
-        const app::PngImage ref_colour = app::read_png((dir_ / "r.png").string());
-        const app::PngImage ref_ids = app::read_png((dir_ / "r-ids.png").string());
+        const image::PngImage colour = image::read_png((shots / (std::string(name) + ".png")).string());
+        const image::PngImage ids = image::read_png((shots / (std::string(name) + "-ids.png")).string());
+        const image::PngImage ref_colour = image::read_png((dir_ / "r.png").string());
+        const image::PngImage ref_ids = image::read_png((dir_ / "r-ids.png").string());
         ASSERT_EQ(colour.error + ids.error + ref_colour.error + ref_ids.error, "");
         ASSERT_EQ(colour.width, 2 * kEyeW);
         ASSERT_EQ(colour.height, kEyeH);
@@ -208,12 +208,12 @@ TEST_F(Preview, ScriptedWalkThroughAPortalMatchesRenderAndWalk) {
         EXPECT_LE(colour_diffs, 0);
     }
     // The last frame looks into the gallery (room 2) through both eyes.
-    const app::PngImage last = app::read_png((shots / "frame-0006-ids.png").string());
+    const image::PngImage last = image::read_png((shots / "frame-0006-ids.png").string());
     EXPECT_EQ(last.pixels[static_cast<size_t>(kEyeH / 2) * (2 * kEyeW) + kEyeW / 2], 2);
 
     // The window shot is the whole window: both eyes plus the HUD over them.
-    const app::PngImage window = app::read_png((shots / "window-0006.png").string());
-    const app::PngImage frame = app::read_png((shots / "frame-0006.png").string());
+    const image::PngImage window = image::read_png((shots / "window-0006.png").string());
+    const image::PngImage frame = image::read_png((shots / "frame-0006.png").string());
     ASSERT_EQ(window.error, "");
     EXPECT_EQ(window.width, 2 * kEyeW);
     EXPECT_EQ(window.height, kEyeH);
@@ -228,9 +228,9 @@ TEST_F(Preview, CrossSwapsTheEyesInTheWindow) {
     ASSERT_EQ(parallel.status, 0) << parallel.err;
     const ProgramRun cross = run_program("DISPLAY=" + x.display, "preview --cross" + common + q(dir_ / "c"), dir_);
     ASSERT_EQ(cross.status, 0) << cross.err;
-    const app::PngImage p = app::read_png((dir_ / "p/window-0000.png").string());
-    const app::PngImage c = app::read_png((dir_ / "c/window-0000.png").string());
-    const app::PngImage f = app::read_png((dir_ / "p/frame-0000.png").string());
+    const image::PngImage p = image::read_png((dir_ / "p/window-0000.png").string());
+    const image::PngImage c = image::read_png((dir_ / "c/window-0000.png").string());
+    const image::PngImage f = image::read_png((dir_ / "p/frame-0000.png").string());
     ASSERT_EQ(p.width, 160);
     ASSERT_EQ(c.width, 160);
     // The default layout's start is near the play area's edge (grid shown), so

@@ -35,7 +35,7 @@ render::FrameDesc centred_frame(double pitch_deg) {
 
 TEST(RenderSingleRoom, EveryPixelShowsTheRoom) {
     const layout::Layout l = testing::layout_from_text(testing::kSingleRoom);
-    const render::Image image = testing::render_once(gl::Backend::Egl, l, centred_frame(10));
+    const image::Image image = testing::render_once(gl::Backend::Egl, l, centred_frame(10));
     ASSERT_EQ(image.width, 130);
     ASSERT_EQ(image.height, 49);
     for (std::uint8_t id : image.ids) ASSERT_EQ(id, 1);
@@ -44,7 +44,7 @@ TEST(RenderSingleRoom, EveryPixelShowsTheRoom) {
 TEST(RenderSingleRoom, CentreColoursMatchHandComputedShading) {
     const layout::Layout l = testing::layout_from_text(testing::kSingleRoom);
     // Straight ahead: the -z wall, normal (0, 0, 1).
-    render::Image image = testing::render_once(gl::Backend::Egl, l, centred_frame(0));
+    image::Image image = testing::render_once(gl::Backend::Egl, l, centred_frame(0));
     for (int eye = 0; eye < 2; ++eye)
         expect_colour_near(pixel(image, eye * 65 + 32, 24), expected_colour({0.9, 0.3, 0.1}, {0, 0, 1}), "-z wall");
     // Straight down: the floor, normal (0, 1, 0).
@@ -67,7 +67,7 @@ TEST(RenderSingleRoom, LeftEyeIsOnTheLeft) {
     const layout::Layout l = testing::layout_from_text(testing::kSingleRoom);
     render::FrameDesc f = centred_frame(-std::atan(0.5 / 1.5) * 180.0 / M_PI);
     f.ipd = 0.3;  // exaggerated so the shift is several pixels
-    const render::Image image = testing::render_once(gl::Backend::Egl, l, f);
+    const image::Image image = testing::render_once(gl::Backend::Egl, l, f);
     auto first_green = [&](int eye) {
         for (int x = 0; x < 65; ++x)
             if (pixel(image, eye * 65 + x, 24)[1] > 150) return x;

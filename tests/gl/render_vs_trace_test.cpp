@@ -7,7 +7,7 @@
 
 #include "app/view_options.hpp"
 #include "gl_fixture.hpp"
-#include "trace/image_compare.hpp"
+#include "image/compare.hpp"
 #include "trace/tracer.hpp"
 
 namespace impossible {
@@ -54,15 +54,15 @@ TEST_P(RenderVsTrace, IdsAgreeOnEveryLayoutAndPose) {
         f.eye_width = 200;
         f.eye_height = 120;
         f.clip = GetParam();
-        const render::Image raster = testing::render_once(gl::Backend::Egl, l, f);
+        const image::Image raster = testing::render_once(gl::Backend::Egl, l, f);
 
-        const trace::TraceImage traced = trace::trace_frame(l, app::trace_desc_for(f));
+        const image::Image traced = trace::trace_frame(l, app::trace_desc_for(f));
 
-        const trace::Picture a{raster.width, raster.height, raster.rgb, raster.ids};
-        const trace::Picture b{traced.width, traced.height, traced.rgb, traced.ids};
-        ASSERT_FALSE(trace::incomparable(a, b)) << c.layout;
-        const trace::Comparison cmp = trace::compare_pictures(a, b);
-        std::printf("  %-16s %-32s %s\n", c.layout, c.what, trace::summary_line(cmp).c_str());
+        const image::Image a{raster.width, raster.height, raster.rgb, raster.ids};
+        const image::Image b{traced.width, traced.height, traced.rgb, traced.ids};
+        ASSERT_FALSE(image::incomparable(a, b)) << c.layout;
+        const image::Comparison cmp = image::compare_pictures(a, b);
+        std::printf("  %-16s %-32s %s\n", c.layout, c.what, image::summary_line(cmp).c_str());
         EXPECT_LE(cmp.id_mismatch_percent, 0.01) << c.layout << ": " << c.what;
         EXPECT_GE(cmp.interior_psnr_db, 40.0) << c.layout << ": " << c.what;
         worst = std::max(worst, cmp.id_mismatch_percent);

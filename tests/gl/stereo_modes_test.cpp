@@ -24,9 +24,9 @@ layout::Layout default_layout() {
 
 TEST(StereoModes, ClipShiftEqualsTwoPass) {
     const layout::Layout l = default_layout();
-    const render::Image two = testing::render_once(gl::Backend::Egl, l, frame_of(l, render::StereoMode::TwoPass));
+    const image::Image two = testing::render_once(gl::Backend::Egl, l, frame_of(l, render::StereoMode::TwoPass));
     render::FrameStats stats;
-    const render::Image one =
+    const image::Image one =
         testing::render_once(gl::Backend::Egl, l, frame_of(l, render::StereoMode::ClipShift), &stats);
     EXPECT_EQ(testing::count_id_differences(one, two), 0);
     EXPECT_EQ(testing::count_colour_differences(one, two, 1), 0);
@@ -35,8 +35,8 @@ TEST(StereoModes, ClipShiftEqualsTwoPass) {
 
 TEST(StereoModes, ViewportIndexEqualsTwoPass) {
     const layout::Layout l = default_layout();
-    const render::Image two = testing::render_once(gl::Backend::Egl, l, frame_of(l, render::StereoMode::TwoPass));
-    const render::Image one =
+    const image::Image two = testing::render_once(gl::Backend::Egl, l, frame_of(l, render::StereoMode::TwoPass));
+    const image::Image one =
         testing::render_once(gl::Backend::Egl, l, frame_of(l, render::StereoMode::ViewportIndex));
     EXPECT_EQ(testing::count_id_differences(one, two), 0);
     EXPECT_EQ(testing::count_colour_differences(one, two, 0), 0);
@@ -53,8 +53,8 @@ TEST(StereoModes, SinglePassHalvesTheDrawCalls) {
 
 TEST(Backends, EglAndOSMesaGiveTheSameImage) {
     const layout::Layout l = default_layout();
-    const render::Image egl = testing::render_once(gl::Backend::Egl, l, frame_of(l, render::StereoMode::ClipShift));
-    const render::Image osmesa =
+    const image::Image egl = testing::render_once(gl::Backend::Egl, l, frame_of(l, render::StereoMode::ClipShift));
+    const image::Image osmesa =
         testing::render_once(gl::Backend::OSMesa, l, frame_of(l, render::StereoMode::ClipShift));
     ASSERT_FALSE(egl.rgb.empty());
     EXPECT_EQ(egl.rgb, osmesa.rgb);

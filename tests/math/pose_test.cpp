@@ -1,4 +1,6 @@
 // Head pose conventions, eyes and view matrices.
+#include <random>
+
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
@@ -122,6 +124,36 @@ TEST(TransformEye, MapsPositionAndAxes) {
     EXPECT_TRUE(near_vec(t.position, dvec3(13.0, 2.0, -1.0), 0.0));
     EXPECT_TRUE(near_vec(forward_of(t.rotation), dvec3(-1, 0, 0), 0.0));
     EXPECT_TRUE(near_mat(view_matrix(t) * m, view_matrix(e), 32 * kEps));
+}
+
+TEST(HeadPoseFrom, InvertsHeadRotation) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> yaw(-179.0, 179.0), pitch(-89.0, 89.0), roll(-179.0, 179.0);
+    for (int i = 0; i < 200; ++i) {
+        const HeadPose p{{1.0, 2.0, 3.0}, yaw(rng), pitch(rng), roll(rng)};
+        const HeadPose back = head_pose_from(p.position, head_rotation(p));
+        EXPECT_NEAR(back.yaw_deg, p.yaw_deg, 1e-9);
+        EXPECT_NEAR(back.pitch_deg, p.pitch_deg, 1e-9);
+        EXPECT_NEAR(back.roll_deg, p.roll_deg, 1e-9);
+    }
+    // Straight down: the rotation is still reproduced (roll folded into yaw).
+    const HeadPose down{{0.0, 0.0, 0.0}, 30.0, -90.0, 20.0};
+    const dmat3 r = head_rotation(down);
+    const dmat3 again = head_rotation(head_pose_from(down.position, r));
+    for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(again[c][k], r[c][k], 1e-9);
+}
+
+TEST(HeadPoseFrom, ReadsBackAGridOfAngles) {
+    for (double yaw : {-170.0, -30.0, 0.0, 45.0, 120.0})
+        for (double pitch : {-60.0, 0.0, 20.0})
+            for (double roll : {-45.0, 0.0, 10.0}) {
+                const HeadPose pose{{1, 2, 3}, yaw, pitch, roll};
+                const HeadPose back = head_pose_from(pose.position, head_rotation(pose));
+                EXPECT_NEAR(back.yaw_deg, yaw, 1e-9);
+                EXPECT_NEAR(back.pitch_deg, pitch, 1e-9);
+                EXPECT_NEAR(back.roll_deg, roll, 1e-9);
+            }
 }
 
 }  // namespace

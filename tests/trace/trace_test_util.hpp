@@ -74,17 +74,17 @@ inline std::array<std::uint8_t, 3> bytes_of(dvec3 c) {
     return out;
 }
 
-inline std::array<std::uint8_t, 3> pixel_rgb(const TraceImage& image, int x, int y) {
+inline std::array<std::uint8_t, 3> pixel_rgb(const image::Image& image, int x, int y) {
     const size_t at = 3 * (static_cast<size_t>(y) * image.width + x);
     return {image.rgb[at], image.rgb[at + 1], image.rgb[at + 2]};
 }
 
-inline int pixel_id(const TraceImage& image, int x, int y) {
+inline int pixel_id(const image::Image& image, int x, int y) {
     return image.ids[static_cast<size_t>(y) * image.width + x];
 }
 
 // Counts the pixels of the id map equal to `id`.
-inline long count_id(const TraceImage& image, int id) {
+inline long count_id(const image::Image& image, int id) {
     return static_cast<long>(std::count(image.ids.begin(), image.ids.end(), static_cast<std::uint8_t>(id)));
 }
 

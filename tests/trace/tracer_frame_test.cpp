@@ -34,10 +34,10 @@ TEST(TracerFrame, ThreadCountDoesNotChangeTheImage) {
     desc.head.pitch_deg = -10.0;
     desc.head.roll_deg = 5.0;
     desc.threads = 1;
-    const TraceImage one = trace_frame(scene, desc);
+    const image::Image one = trace_frame(scene, desc);
     for (int threads : {2, 3, 7}) {
         desc.threads = threads;
-        const TraceImage many = trace_frame(scene, desc);
+        const image::Image many = trace_frame(scene, desc);
         EXPECT_EQ(many.rgb, one.rgb) << threads;
         EXPECT_EQ(many.ids, one.ids) << threads;
     }
@@ -45,7 +45,7 @@ TEST(TracerFrame, ThreadCountDoesNotChangeTheImage) {
 
 TEST(TracerFrame, DefaultLayoutShowsTheHallAndTheAnnexThroughTheDoor) {
     const layout::Layout l = load_default();
-    const TraceImage image = trace_frame(l, start_view(l));
+    const image::Image image = trace_frame(l, start_view(l));
     const std::set<std::uint8_t> ids(image.ids.begin(), image.ids.end());
     EXPECT_EQ(ids, (std::set<std::uint8_t>{1, 2}));
     // The door (x in [-0.5, 0.5], y in [0, 2.2] at z = 0) is ahead and a bit

@@ -202,7 +202,7 @@ TEST(TracerPortal, AnEyeOneMillimetreInFrontSeesOnlyTheTarget) {
     desc.head.position = {0, 1.5, -0.999};
     desc.eye_width = 16;
     desc.eye_height = 9;
-    const TraceImage image = trace_frame(scene, desc);
+    const image::Image image = trace_frame(scene, desc);
     EXPECT_EQ(test::count_id(image, 2), 32 * 9);
 }
 
@@ -307,7 +307,7 @@ TEST(TracerPortal, FrameShowsTheFillWhereTheRecursionEnds) {
     desc.eye_width = 9;
     desc.eye_height = 9;
     desc.max_depth = 3;
-    const TraceImage image = trace_frame(scene, desc);
+    const image::Image image = trace_frame(scene, desc);
     EXPECT_EQ(test::pixel_id(image, 4, 4), 255);
     EXPECT_EQ(test::pixel_rgb(image, 4, 4), test::bytes_of(::impossible::scene::kPortalFillColor));
     EXPECT_EQ(test::pixel_id(image, 0, 0), 1);  // the corner looks past the portals

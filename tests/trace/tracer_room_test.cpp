@@ -30,7 +30,7 @@ TEST(TracerRoom, EveryPixelOfAClosedRoomShowsIt) {
     desc.head.pitch_deg = -20.0;
     desc.eye_width = 24;
     desc.eye_height = 16;
-    const TraceImage image = trace_frame(l, desc);
+    const image::Image image = trace_frame(l, desc);
     ASSERT_EQ(image.width, 48);
     ASSERT_EQ(image.height, 16);
     ASSERT_EQ(image.rgb.size(), 48u * 16u * 3u);
@@ -43,7 +43,7 @@ TEST(TracerRoom, CentrePixelsHaveTheWallsShadeComputedByHand) {
     desc.head.position = {0.0, 1.5, 0.0};
     desc.eye_width = 9;  // odd: the centre pixel looks straight ahead, along -Z
     desc.eye_height = 9;
-    const TraceImage image = trace_frame(l, desc);
+    const image::Image image = trace_frame(l, desc);
     // The -z wall, normal +Z, no checker; both eyes see the same colour.
     const auto expected = bytes_of(shade_by_hand(face_color(l.rooms[0], layout::Face::NegZ), {0, 0, 1}, false));
     EXPECT_EQ(test::pixel_rgb(image, 4, 4), expected);

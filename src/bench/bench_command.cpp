@@ -1,0 +1,65 @@
+// impossible bench [LAYOUT] [options]: frame time, per-portal cost, colour
+// fragments, draw calls and portal passes, and optionally the error against
+// the tracer, of one or several configurations (bench/README.md).
+#include <fstream>
+#include <iostream>
+
+#include "bench/options.hpp"
+#include "bench/report.hpp"
+#include "bench/run.hpp"
+#include "app/cli_args.hpp"
+#include "bench/bench_command.hpp"
+#include "app/layout_source.hpp"
+#include "gl/context.hpp"
+
+namespace impossible::bench {
+
+using app::InputError;
+using app::ParsedArgs;
+using app::kExitOk;
+using app::load_layout_or_default;
+using app::parse_args;
+using app::view_options_help;
+namespace {
+
+const char* kHelp =
+    "usage: impossible bench [LAYOUT] [options]\n"
+    "Measures the OpenGL renderer at fixed poses (or along a scripted walk): wall-clock frame time\n"
+    "(glFinish and a monotonic clock; medians and 10th-90th percentiles), CPU submission time, the\n"
+    "time of each visible portal's subtree, colour fragments per output pixel (GL_SAMPLES_PASSED\n"
+    "over the colour passes), draw calls, triangles and portal passes. Configurations of a sweep are\n"
+    "measured in one run, interleaved frame by frame. Prints a table; see bench/README.md.\n\n";
+
+void write_file(const std::string& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    if (!out) throw InputError(path + ": cannot write the file");
+    out << text;
+    if (!out.flush()) throw InputError(path + ": cannot write the file");
+}
+
+}  // namespace
+
+int run_bench_command(const app::Args& args, std::ostream& out, std::ostream& err) {
+    const ParsedArgs parsed = parse_args(args, bench_value_options(), bench_flag_options(), 1);
+    if (parsed.help) {
+        out << kHelp << view_options_help() << bench_options_help();
+        return kExitOk;
+    }
+    const BenchOptions options = parse_bench_options(parsed);
+    const layout::Layout layout = load_layout_or_default(options.view.layout_path);
+    const std::vector<BenchPose> poses = bench_poses(layout, options);
+    const BenchPlan plan = plan_bench(layout, options);
+
+    std::string fallback_note;
+    gl::ContextResult context = gl::create_context_with_fallback(options.view.backend, &fallback_note);
+    if (!context.context) throw InputError("no OpenGL 4.5 context: " + context.error);
+    if (!fallback_note.empty()) err << "note: " << fallback_note << "\n";
+
+    const BenchResult result = run_bench(plan, poses, options, context.context->renderer);
+    write_bench_table(result, options, out);
+    if (options.json) write_file(*options.json, bench_json(result, options));
+    if (options.csv) write_file(*options.csv, bench_csv(result));
+    return kExitOk;
+}
+
+}  // namespace impossible::bench

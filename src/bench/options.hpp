@@ -1,0 +1,39 @@
+// The options of `impossible bench` (bench/README.md): render's view options
+// plus repetitions, outputs, a scripted walk, closed portals and sweeps; and
+// the configurations and poses they stand for.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/cli_args.hpp"
+#include "app/view_options.hpp"
+#include "layout/layout.hpp"
+#include "render/frame.hpp"
+
+namespace impossible::bench {
+
+
+struct BenchOptions {
+    app::ViewOptions view;
+    int frames = 20;          // timed frames per configuration and pose
+    int warmup = 3;           // untimed frames first
+    int profile_frames = 3;   // profiled frames (per-portal times, fragments) per configuration and pose
+    std::optional<std::string> json;
+    std::optional<std::string> csv;
+    std::optional<std::string> path;  // a walk file: physical poses, one a line (as `walk`)
+    std::optional<int> portals;       // keep only the first N portals (pairs within them)
+    std::string sweep;                // "", "techniques", "portals:0,2,4,6", "depth:1,4", "size:WxH,..."
+    bool error = false;               // compare every configuration with the tracer
+    int reference_depth = 64;         // the tracer's recursion depth for the error
+};
+
+const std::set<std::string>& bench_value_options();
+const std::set<std::string>& bench_flag_options();
+const char* bench_options_help();
+
+// Throws InputError for a bad value.
+BenchOptions parse_bench_options(const app::ParsedArgs& args);
+
+}  // namespace impossible::bench

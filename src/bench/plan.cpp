@@ -1,0 +1,143 @@
+#include "bench/plan.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "layout/path_file.hpp"
+#include "scene/walk.hpp"
+
+namespace impossible::bench {
+
+using app::ViewOptions;
+using app::frame_for;
+using app::parse_int;
+using app::parse_size;
+
+using app::InputError;
+
+namespace {
+
+std::vector<std::string> split(const std::string& text, char sep) {
+    std::vector<std::string> parts;
+    std::stringstream in(text);
+    std::string part;
+    while (std::getline(in, part, sep)) parts.push_back(part);
+    return parts;
+}
+
+}  // namespace
+
+layout::Layout keep_first_portals(const layout::Layout& layout, int n) {
+    layout::Layout out = layout;
+    out.portals.clear();
+    std::vector<int> renumbered(layout.portals.size(), -1);
+    for (size_t i = 0; i < layout.portals.size(); ++i) {
+        const int target = layout.portals[i].target;
+        if (static_cast<int>(i) < n && target < n) {
+            renumbered[i] = static_cast<int>(out.portals.size());
+            out.portals.push_back(layout.portals[i]);
+        }
+    }
+    for (layout::Portal& p : out.portals) p.target = renumbered[p.target];
+    return out;
+}
+
+// The layout with `n` small boxes (12 triangles each) added on the floor of
+// every room, in a grid: scene triangles without changing which rooms show.
+layout::Layout with_extra_boxes(const layout::Layout& layout, int n) {
+    layout::Layout out = layout;
+    const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
+    for (layout::Room& room : out.rooms) {
+        const glm::dvec3 extent = room.max - room.min;
+        const double size = 0.4 * std::min(extent.x, extent.z) / std::max(side, 1);
+        for (int i = 0; i < n; ++i) {
+            layout::BoxProp box;
+            const double x = room.min.x + (i % side + 0.5) * extent.x / side;
+            const double z = room.min.z + (i / side + 0.5) * extent.z / side;
+            box.min = {x - 0.5 * size, room.min.y, z - 0.5 * size};
+            box.max = {x + 0.5 * size, room.min.y + size, z + 0.5 * size};
+            box.color = {0.7, 0.5, 0.3};
+            room.props.push_back(box);
+        }
+    }
+    return out;
+}
+
+BenchPlan plan_bench(const layout::Layout& layout, const BenchOptions& o) {
+    BenchPlan plan;
+    plan.layouts.push_back(o.portals ? keep_first_portals(layout, *o.portals) : layout);
+    // Head and room come per pose; frame_for only needs a valid room here.
+    ViewOptions view = o.view;
+    view.pose.reset();
+    view.room.reset();
+    render::FrameDesc base = frame_for(plan.layouts[0], view);
+    plan.configs.push_back({"base", "base", 0, base});
+    auto add = [&](const std::string& name, const std::string& group, auto change) {
+        BenchConfig c{name, group, 0, base};
+        change(c);
+        plan.configs.push_back(c);
+    };
+    if (o.sweep == "techniques") {
+        add("stereo=two-pass", "stereo", [](BenchConfig& c) { c.frame.stereo = render::StereoMode::TwoPass; });
+        add("stereo=viewport-index", "stereo",
+            [](BenchConfig& c) { c.frame.stereo = render::StereoMode::ViewportIndex; });
+        add("clip=oblique", "clip", [](BenchConfig& c) { c.frame.clip = render::ClipMode::Oblique; });
+        add("clip=clip-distance", "clip", [](BenchConfig& c) { c.frame.clip = render::ClipMode::ClipDistance; });
+        add("cull=off", "cull", [](BenchConfig& c) { c.frame.cull_portals = false; });
+        add("cull=on", "cull", [](BenchConfig& c) { c.frame.cull_portals = true; });
+        add("occlusion=on", "occlusion", [](BenchConfig& c) { c.frame.occlusion_test = true; });
+        for (double scale : {0.25, 0.5, 1.0}) {
+            char name[32];
+            std::snprintf(name, sizeof name, "texture=%g", scale);
+            add(name, "technique", [scale](BenchConfig& c) { c.frame.portal_texture_scale = scale; });
+        }
+        for (int d : {1, 2, 4, 8, 16, 64})
+            add("depth=" + std::to_string(d), "depth", [d](BenchConfig& c) { c.frame.max_depth = d; });
+        return plan;
+    }
+    if (o.sweep.empty()) return plan;
+    const size_t colon = o.sweep.find(':');
+    const std::string kind = o.sweep.substr(0, colon);
+    for (const std::string& item : split(o.sweep.substr(colon + 1), ',')) {
+        const std::string name = kind + "=" + item;
+        if (kind == "portals") {
+            const int n = parse_int("--sweep portals", item, 0, 1000000);
+            plan.layouts.push_back(keep_first_portals(layout, n));
+            add(name, kind, [&](BenchConfig& c) { c.layout_variant = static_cast<int>(plan.layouts.size()) - 1; });
+        } else if (kind == "boxes") {
+            const int n = parse_int("--sweep boxes", item, 0, 100000);
+            plan.layouts.push_back(with_extra_boxes(plan.layouts[0], n));
+            add(name, kind, [&](BenchConfig& c) { c.layout_variant = static_cast<int>(plan.layouts.size()) - 1; });
+        } else if (kind == "depth") {
+            const int d = parse_int("--sweep depth", item, 0, 250);
+            add(name, kind, [d](BenchConfig& c) { c.frame.max_depth = d; });
+        } else {
+            const auto [w, h] = parse_size("--sweep size", item);
+            add(name, kind, [w = w, h = h](BenchConfig& c) {
+                c.frame.eye_width = w;
+                c.frame.eye_height = h;
+            });
+        }
+    }
+    return plan;
+}
+
+std::vector<BenchPose> bench_poses(const layout::Layout& layout, const BenchOptions& o) {
+    if (!o.path) {
+        const render::FrameDesc f = frame_for(layout, o.view);
+        return {{f.head, f.room}};
+    }
+    const layout::PathFile file = layout::read_path_file(*o.path);
+    if (!file.error.empty()) throw InputError(file.error);
+    if (file.poses.empty()) throw InputError(*o.path + ": the path holds no pose");
+    scene::Walker walker(layout);
+    std::vector<BenchPose> poses;
+    for (const math::HeadPose& physical : file.poses) {
+        walker.step(physical);
+        poses.push_back({math::head_pose_from(walker.position(), walker.rotation()), walker.room()});
+    }
+    return poses;
+}
+
+}  // namespace impossible::bench

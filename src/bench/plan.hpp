@@ -1,0 +1,45 @@
+// What `impossible bench` measures: the configurations of a sweep (layout
+// variants and frame settings) and the head poses they are measured at.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "bench/options.hpp"
+#include "layout/layout.hpp"
+#include "render/frame.hpp"
+
+namespace impossible::bench {
+
+// The layout with only portals[0..n) kept whose targets are also among them;
+// the others are closed (removed). Targets are renumbered.
+layout::Layout keep_first_portals(const layout::Layout& layout, int n);
+
+// One configuration measured: a layout variant (index into the bench's
+// layouts), and the frame settings (head and room are set per pose).
+struct BenchConfig {
+    std::string name;   // e.g. "base", "stereo=two-pass", "portals=4"
+    std::string group;  // "base", "stereo", "clip", "cull", "depth", "portals", "size"
+    int layout_variant = 0;
+    render::FrameDesc frame;
+};
+
+struct BenchPlan {
+    std::vector<layout::Layout> layouts;  // [0]: the layout as loaded (and --portals applied)
+    std::vector<BenchConfig> configs;     // [0]: the base configuration (the options as given)
+};
+
+// The configurations of the options' sweep over `layout`. Throws InputError.
+BenchPlan plan_bench(const layout::Layout& layout, const BenchOptions& options);
+
+// The virtual head and room of each frame: the options' pose (or the
+// layout's start) once, or every pose of the --path walk replayed through
+// the portals. Throws InputError.
+struct BenchPose {
+    math::HeadPose head;
+    int room = 0;
+};
+std::vector<BenchPose> bench_poses(const layout::Layout& layout, const BenchOptions& options);
+
+
+}  // namespace impossible::bench

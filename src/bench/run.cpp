@@ -1,0 +1,229 @@
+#include "bench/run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <random>
+#include <memory>
+#include <thread>
+#include <tuple>
+
+#include "app/view_options.hpp"
+#include "gl/gl.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene.hpp"
+#include "image/compare.hpp"
+#include "trace/tracer.hpp"
+
+namespace impossible::bench {
+
+using app::InputError;
+using app::trace_desc_for;
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_between(Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+render::FrameDesc frame_at(const BenchConfig& config, const BenchPose& pose) {
+    render::FrameDesc f = config.frame;
+    f.head = pose.head;
+    f.room = pose.room;
+    return f;
+}
+
+double pixels_of(const render::FrameDesc& f) { return 2.0 * f.eye_width * f.eye_height; }
+
+// Without culling every portal of a cell is drawn at every level: the passes
+// of a frame are the paths of up to `depth` portals from `room` (fewer where
+// the portal a view came out of lies behind it). An upper bound, capped.
+constexpr double kMaxUnculledPasses = 20000;
+
+double unculled_pass_bound(const layout::Layout& layout, int room, int depth) {
+    std::vector<double> paths(layout.rooms.size(), 0.0);  // passes from each room with d levels left
+    for (int d = 1; d <= depth; ++d) {
+        std::vector<double> next(layout.rooms.size(), 0.0);
+        for (const layout::Portal& p : layout.portals)
+            next[p.room] = std::min(1e18, next[p.room] + 1.0 + paths[layout.portals[p.target].room]);
+        paths = next;
+        if (paths[room] > kMaxUnculledPasses) break;
+    }
+    return paths[room];
+}
+
+struct Measurer {
+    const BenchPlan& plan;
+    const std::vector<BenchPose>& poses;
+    const BenchOptions& options;
+    std::vector<std::unique_ptr<render::Renderer>> renderers;  // per layout variant
+    std::vector<ConfigResult> results;
+
+    render::Renderer& renderer_of(const BenchConfig& c) { return *renderers[c.layout_variant]; }
+
+    // Draws every configuration once, marking those the driver cannot do,
+    // and those that would take too long.
+    void probe() {
+        for (ConfigResult& r : results) {
+            if (!r.config.frame.cull_portals) {
+                const layout::Layout& l = plan.layouts[r.config.layout_variant];
+                double worst = 0;
+                for (const BenchPose& p : poses)
+                    worst = std::max(worst, unculled_pass_bound(l, p.room, r.config.frame.max_depth));
+                if (worst > kMaxUnculledPasses) {
+                    r.error = "culling off would draw up to " + std::to_string(static_cast<long long>(worst)) +
+                              " portal passes (every portal at every level)";
+                    continue;
+                }
+            }
+            render::FrameStats stats;
+            r.error = render::draw_frame(renderer_of(r.config), frame_at(r.config, poses[0]), &stats);
+        }
+        if (!results[0].error.empty()) throw InputError(results[0].error);
+    }
+
+    // Timed frames, configurations interleaved frame by frame so that machine
+    // noise hits all of them alike. The order is shuffled every repetition
+    // (fixed seed): a frame is slower right after a heavy one (llvmpipe's
+    // memory and caches), so a fixed cyclic order would always charge the
+    // configuration that follows the heaviest.
+    void time_frames() {
+        std::vector<size_t> order(results.size());
+        for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+        std::mt19937 shuffle_rng(20261122u);
+        for (int rep = -options.warmup; rep < options.frames; ++rep)
+            for (size_t p = 0; p < poses.size(); ++p) {
+                std::shuffle(order.begin(), order.end(), shuffle_rng);
+                for (size_t k = 0; k < results.size(); ++k) {
+                    ConfigResult& r = results[order[k]];
+                    if (!r.error.empty()) continue;
+                    render::FrameStats stats;
+                    glFinish();
+                    const Clock::time_point t0 = Clock::now();
+                    r.error = render::draw_frame(renderer_of(r.config), frame_at(r.config, poses[p]), &stats);
+                    const Clock::time_point t1 = Clock::now();
+                    glFinish();
+                    const Clock::time_point t2 = Clock::now();
+                    if (rep < 0) continue;
+                    r.submit_ms.push_back(ms_between(t0, t1));
+                    r.frame_ms.push_back(ms_between(t0, t2));
+                    if (rep > 0) continue;
+                    const double n = static_cast<double>(poses.size());
+                    r.draw_calls += stats.draw_calls / n;
+                    r.triangles += stats.triangles / n;
+                    r.portal_passes_drawn += stats.portal_passes_drawn / n;
+                    r.portal_passes_culled += stats.portal_passes_culled / n;
+                    r.portal_fills += stats.portal_fills / n;
+                }
+            }
+    }
+
+    // Profiled frames: colour fragments and per-portal subtree times.
+    void profile_frames() {
+        using Key = std::pair<int, int>;  // pose, portal
+        std::vector<std::map<Key, std::vector<double>>> portal_ms(results.size());
+        std::vector<std::map<Key, double>> portal_fragments(results.size());
+        std::vector<std::vector<double>> frame_ms(results.size());
+        for (int rep = 0; rep < options.profile_frames; ++rep)
+            for (size_t p = 0; p < poses.size(); ++p)
+                for (size_t c = 0; c < results.size(); ++c) {
+                    ConfigResult& r = results[c];
+                    if (!r.error.empty()) continue;
+                    render::FrameDesc f = frame_at(r.config, poses[p]);
+                    f.profile = true;
+                    render::FrameStats stats;
+                    glFinish();
+                    const Clock::time_point t0 = Clock::now();
+                    r.error = render::draw_frame(renderer_of(r.config), f, &stats);
+                    glFinish();
+                    frame_ms[c].push_back(ms_between(t0, Clock::now()));
+                    for (const render::FrameStats::PortalCost& cost : stats.portal_costs) {
+                        const Key key{static_cast<int>(p), cost.portal};
+                        portal_ms[c][key].push_back(cost.ms);
+                        portal_fragments[c][key] = cost.colour_fragments / pixels_of(f);
+                    }
+                    // Fragment counts do not change between repetitions.
+                    if (rep == 0)
+                        r.fragments_per_pixel +=
+                            stats.colour_fragments / pixels_of(f) / static_cast<double>(poses.size());
+                }
+        for (size_t c = 0; c < results.size(); ++c) {
+            ConfigResult& r = results[c];
+            if (!frame_ms[c].empty()) r.profiled_frame_ms = spread_of(frame_ms[c]).median;
+            for (const auto& [key, times] : portal_ms[c]) {
+                PortalResult pr;
+                pr.pose = key.first;
+                pr.portal = plan.layouts[r.config.layout_variant].portals[key.second].id;
+                pr.ms_median = spread_of(times).median;
+                pr.fragments_per_pixel = portal_fragments[c][key];
+                r.portals.push_back(pr);
+            }
+        }
+    }
+
+    // Each configuration's picture against the tracer's at the same pose and
+    // size, with the reference depth: ids and colour PSNR, mean over poses.
+    void compare_with_tracer() {
+        std::vector<trace::Scene> scenes;
+        for (const layout::Layout& l : plan.layouts) scenes.push_back(trace::prepare_scene(l));
+        std::map<std::tuple<int, size_t, int, int>, image::Image> traced;
+        const double n = static_cast<double>(poses.size());
+        for (size_t p = 0; p < poses.size(); ++p)
+            for (ConfigResult& r : results) {
+                if (!r.error.empty()) continue;
+                const render::FrameDesc f = frame_at(r.config, poses[p]);
+                const auto key = std::make_tuple(r.config.layout_variant, p, f.eye_width, f.eye_height);
+                if (!traced.count(key)) {
+                    trace::TraceDesc t = trace_desc_for(f);
+                    t.max_depth = options.reference_depth;
+                    traced[key] = trace::trace_frame(scenes[r.config.layout_variant], t);
+                }
+                const image::Image& t = traced[key];
+                render::FrameResult raster = render::render_frame(renderer_of(r.config), f);
+                if (!raster.error.empty()) {
+                    r.error = raster.error;
+                    continue;
+                }
+                const image::Image a{raster.image.width, raster.image.height, raster.image.rgb, raster.image.ids};
+                const image::Image b{t.width, t.height, t.rgb, t.ids};
+                const image::Comparison cmp = image::compare_pictures(a, b);
+                r.has_error = true;
+                r.id_mismatch_percent += cmp.id_mismatch_percent / n;
+                r.worst_id_mismatch_percent = std::max(r.worst_id_mismatch_percent, cmp.id_mismatch_percent);
+                r.psnr_db += cmp.psnr_db / n;
+            }
+    }
+};
+
+}  // namespace
+
+Spread spread_of(std::vector<double> v) {
+    if (v.empty()) return {};
+    std::sort(v.begin(), v.end());
+    auto at = [&](double q) { return v[static_cast<size_t>(q * (v.size() - 1) + 0.5)]; };
+    return {at(0.5), at(0.1), at(0.9)};
+}
+
+BenchResult run_bench(const BenchPlan& plan, const std::vector<BenchPose>& poses, const BenchOptions& options,
+                      const std::string& gl_renderer) {
+    Measurer m{plan, poses, options, {}, {}};
+    for (const layout::Layout& l : plan.layouts) {
+        render::RendererResult r = render::create_renderer(l, scene::build_scene(l));
+        if (!r.renderer) throw InputError(r.error);
+        m.renderers.push_back(std::move(r.renderer));
+    }
+    for (const BenchConfig& c : plan.configs) m.results.push_back({c, {}, {}, {}, 0, 0, 0, 0, 0, 0, 0, {}, false, 0, 0, 0});
+    m.probe();
+    m.time_frames();
+    m.profile_frames();
+    if (options.error) m.compare_with_tracer();
+    BenchResult out;
+    out.gl_renderer = gl_renderer;
+    out.cores = std::thread::hardware_concurrency();
+    out.poses = static_cast<int>(poses.size());
+    out.configs = std::move(m.results);
+    return out;
+}
+
+}  // namespace impossible::bench

@@ -1,0 +1,25 @@
+// The path file of `walk`, `preview --path` and `bench --path`: physical head
+// poses, one a line: `X Y Z YAW PITCH ROLL`, blank lines and
+// `#` comments skipped, six finite numbers a line, positions within ±1e6 m and
+// angles within ±1e6°.
+#pragma once
+
+#include <istream>
+#include <string>
+#include <vector>
+
+#include "math/pose.hpp"
+
+namespace impossible::layout {
+
+struct PathFile {
+    std::vector<math::HeadPose> poses;
+    std::string error;  // "FILE:LINE: message" or "FILE: message"; empty on success
+};
+
+// Reads a file for a replay: at least one pose is required.
+PathFile read_path_file(const std::string& path);
+// Reads a stream; no poses is not an error here (`walk` then prints nothing).
+PathFile read_path_stream(std::istream& in, const std::string& name);
+
+}  // namespace impossible::layout

@@ -1,0 +1,47 @@
+// Options of `impossible preview` (docs/preview.md), parsed into plain data.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "app/cli_args.hpp"
+#include "render/frame.hpp"
+
+namespace impossible::preview {
+
+// How the two eyes reach the window.
+enum class PreviewView {
+    Parallel,   // left eye in the left half (parallel viewing)
+    Cross,      // halves swapped, for cross-eyed viewing
+    Anaglyph,   // one picture: red = left eye, cyan = right eye
+};
+
+const char* view_name(PreviewView view);
+PreviewView next_view(PreviewView view);
+
+struct PreviewOptions {
+    std::optional<std::string> layout_path;  // none: the built-in default (no reload)
+    int eye_width = 640;
+    int eye_height = 480;
+    double ipd = 0.064;
+    double fov_y_deg = 90.0;
+    int max_depth = 8;
+    render::StereoMode stereo = render::StereoMode::ClipShift;
+    render::ClipMode clip = render::ClipMode::ClipDistance;
+    bool cull_portals = true;
+    PreviewView view = PreviewView::Parallel;
+    std::optional<std::string> path_file;    // --path: physical poses, one a frame
+    std::optional<std::string> screenshots;  // --screenshots DIR: every frame saved
+    std::optional<long> frames;              // --frames N: quit after N frames
+    bool hud = true;
+    bool minimap = true;
+    bool vsync = true;
+};
+
+// Throws UsageError (exit 2) for unknown or conflicting options and
+// InputError (exit 1) for bad values.
+PreviewOptions parse_preview_options(const std::vector<std::string>& args, bool* help);
+
+const char* preview_help();
+
+}  // namespace impossible::preview

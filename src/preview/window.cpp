@@ -1,0 +1,116 @@
+#include "preview/window.hpp"
+
+#include <cstdlib>
+
+#include "gl/gl.hpp"
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+namespace impossible::preview {
+namespace {
+
+std::string glfw_error() {
+    const char* description = nullptr;
+    const int code = glfwGetError(&description);
+    if (code == GLFW_NO_ERROR) return "unknown GLFW error";
+    return description ? description : "GLFW error " + std::to_string(code);
+}
+
+WindowInput& input_of(GLFWwindow* w) { return static_cast<PreviewWindow*>(glfwGetWindowUserPointer(w))->input; }
+
+void on_key(GLFWwindow* w, int key, int, int action, int) {
+    if (action == GLFW_PRESS) input_of(w).keys_pressed.push_back(key);  // a held key toggles once
+}
+
+void on_cursor(GLFWwindow* w, double x, double y) {
+    WindowInput& in = input_of(w);
+    if (in.have_cursor) {
+        in.mouse_dx += x - in.last_x;
+        in.mouse_dy += y - in.last_y;
+    }
+    in.have_cursor = true;
+    in.last_x = x;
+    in.last_y = y;
+}
+
+void on_button(GLFWwindow* w, int button, int action, int) {
+    if (button == GLFW_MOUSE_BUTTON_LEFT && action == GLFW_PRESS) input_of(w).clicked = true;
+}
+
+}  // namespace
+
+PreviewWindow::~PreviewWindow() {
+    if (window) glfwDestroyWindow(window);
+    glfwTerminate();
+}
+
+WindowResult open_window(int width, int height, const std::string& title, bool vsync) {
+    WindowResult out;
+    const char* display = std::getenv("DISPLAY");
+    const char* wayland = std::getenv("WAYLAND_DISPLAY");
+    if ((!display || !*display) && (!wayland || !*wayland)) {
+        out.error = "no display: DISPLAY is not set (run it in a desktop session, or under 'xvfb-run -a')";
+        return out;
+    }
+    if (!glfwInit()) {
+        out.error = "no display: " + glfw_error();
+        glfwTerminate();
+        return out;
+    }
+    auto made = std::make_unique<PreviewWindow>();  // from here on, its destructor ends GLFW
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
+    glfwWindowHint(GLFW_DEPTH_BITS, 0);
+    glfwWindowHint(GLFW_STENCIL_BITS, 0);
+    made->window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+    if (!made->window) {
+        out.error = "no OpenGL 4.5 core window: " + glfw_error();
+        return out;
+    }
+    glfwMakeContextCurrent(made->window);
+    const int version = gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress));
+    if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < 45) {
+        out.error = "the window's OpenGL context lacks 4.5 core functions";
+        return out;
+    }
+    made->gl_renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    made->gl_version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    glfwSwapInterval(vsync ? 1 : 0);
+    glfwSetWindowUserPointer(made->window, made.get());
+    glfwSetKeyCallback(made->window, on_key);
+    glfwSetCursorPosCallback(made->window, on_cursor);
+    glfwSetMouseButtonCallback(made->window, on_button);
+    out.window = std::move(made);
+    return out;
+}
+
+void capture_cursor(PreviewWindow& w, bool capture) {
+    glfwSetInputMode(w.window, GLFW_CURSOR, capture ? GLFW_CURSOR_DISABLED : GLFW_CURSOR_NORMAL);
+    if (capture && glfwRawMouseMotionSupported()) glfwSetInputMode(w.window, GLFW_RAW_MOUSE_MOTION, GLFW_TRUE);
+    w.input.have_cursor = false;  // no jump from the old cursor position
+}
+
+bool cursor_captured(const PreviewWindow& w) {
+    return glfwGetInputMode(w.window, GLFW_CURSOR) == GLFW_CURSOR_DISABLED;
+}
+
+void poll_input(PreviewWindow& w) {
+    w.input.keys_pressed.clear();
+    w.input.mouse_dx = w.input.mouse_dy = 0.0;
+    w.input.clicked = false;
+    glfwPollEvents();
+}
+
+bool key_down(const PreviewWindow& w, int key) { return glfwGetKey(w.window, key) == GLFW_PRESS; }
+bool should_close(const PreviewWindow& w) { return glfwWindowShouldClose(w.window); }
+void request_close(PreviewWindow& w) { glfwSetWindowShouldClose(w.window, GLFW_TRUE); }
+void framebuffer_size(const PreviewWindow& w, int& width, int& height) {
+    glfwGetFramebufferSize(w.window, &width, &height);
+}
+void swap_buffers(PreviewWindow& w) { glfwSwapBuffers(w.window); }
+void set_title(PreviewWindow& w, const std::string& title) { glfwSetWindowTitle(w.window, title.c_str()); }
+
+}  // namespace impossible::preview

@@ -1,0 +1,55 @@
+// The preview's GLFW window with an OpenGL 4.5 core context, GL loaded with
+// glad through glfwGetProcAddress, and the input of each frame collected from
+// GLFW's callbacks.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+struct GLFWwindow;
+
+namespace impossible::preview {
+
+struct WindowInput {
+    std::vector<int> keys_pressed;  // GLFW key codes pressed since the last frame, in order (no repeats)
+    double mouse_dx = 0.0, mouse_dy = 0.0;
+    bool clicked = false;
+    bool have_cursor = false;  // last_x/last_y are valid
+    double last_x = 0.0, last_y = 0.0;
+};
+
+struct PreviewWindow {
+    GLFWwindow* window = nullptr;
+    WindowInput input;
+    std::string gl_renderer, gl_version;
+    PreviewWindow() = default;
+    PreviewWindow(const PreviewWindow&) = delete;
+    PreviewWindow& operator=(const PreviewWindow&) = delete;
+    ~PreviewWindow();  // destroys the window and ends GLFW
+};
+
+struct WindowResult {
+    std::unique_ptr<PreviewWindow> window;
+    std::string error;  // one line: no display, no 4.5 core context, ...
+};
+
+// Opens a visible, resizable window of width × height with a current 4.5 core
+// context. Fails with a clear message when there is no display.
+WindowResult open_window(int width, int height, const std::string& title, bool vsync);
+
+// Captures (hides and locks) the cursor for mouse look, or releases it.
+void capture_cursor(PreviewWindow& window, bool capture);
+bool cursor_captured(const PreviewWindow& window);
+
+// Polls events into window.input (cleared first).
+void poll_input(PreviewWindow& window);
+
+bool key_down(const PreviewWindow& window, int key);
+bool should_close(const PreviewWindow& window);
+void request_close(PreviewWindow& window);
+void framebuffer_size(const PreviewWindow& window, int& width, int& height);
+void swap_buffers(PreviewWindow& window);
+void set_title(PreviewWindow& window, const std::string& title);
+
+}  // namespace impossible::preview
