@@ -82,28 +82,28 @@ ViewOptions parse_view_options(const ParsedArgs& args) {
         o.pose = pose;
     }
     if (auto v = args.value("--room")) o.room = *v;
-    if (auto v = args.value("--ipd")) o.ipd = parse_ipd(*v);
-    if (auto v = args.value("--fov")) o.fov_y_deg = parse_fov(*v);
-    if (auto v = args.value("--size")) std::tie(o.eye_width, o.eye_height) = parse_size("--size", *v);
-    if (auto v = args.value("--max-depth")) o.max_depth = parse_int("--max-depth", *v, 0, 250);
+    if (auto v = args.value("--ipd")) o.frame.ipd = parse_ipd(*v);
+    if (auto v = args.value("--fov")) o.frame.fov_y_deg = parse_fov(*v);
+    if (auto v = args.value("--size")) std::tie(o.frame.eye_width, o.frame.eye_height) = parse_size("--size", *v);
+    if (auto v = args.value("--max-depth")) o.frame.max_depth = parse_int("--max-depth", *v, 0, 250);
     if (auto v = args.value("--out")) o.out = *v;
     if (auto v = args.value("--ids")) o.ids = *v;
     if (auto v = args.value("--backend")) {
         o.backend = gl::parse_backend(*v);
         if (!o.backend) throw InputError("--backend: '" + *v + "' is not egl or osmesa");
     }
-    if (auto v = args.value("--stereo")) o.stereo = parse_stereo(*v);
-    if (auto v = args.value("--clip")) o.clip = parse_clip(*v);
+    if (auto v = args.value("--stereo")) o.frame.stereo = parse_stereo(*v);
+    if (auto v = args.value("--clip")) o.frame.clip = parse_clip(*v);
     if (auto v = args.value("--depth")) {
-        if (*v == "reversed-z") o.depth = render::DepthMode::ReversedZ;
-        else if (*v == "standard") o.depth = render::DepthMode::Standard;
+        if (*v == "reversed-z") o.frame.depth = render::DepthMode::ReversedZ;
+        else if (*v == "standard") o.frame.depth = render::DepthMode::Standard;
         else throw InputError("--depth: '" + *v + "' is not reversed-z or standard");
     }
-    o.cull_portals = !args.flag("--no-cull");
-    o.occlusion_test = args.flag("--occlusion-test");
+    o.frame.cull_portals = !args.flag("--no-cull");
+    o.frame.occlusion_test = args.flag("--occlusion-test");
     if (auto v = args.value("--portal-texture")) {
-        o.portal_texture_scale = parse_number("--portal-texture", *v);
-        if (!(o.portal_texture_scale > 0.0 && o.portal_texture_scale <= 4.0))
+        o.frame.portal_texture_scale = parse_number("--portal-texture", *v);
+        if (!(o.frame.portal_texture_scale > 0.0 && o.frame.portal_texture_scale <= 4.0))
             throw InputError("--portal-texture: " + *v + " is not in (0, 4]");
     }
     o.stats = args.flag("--stats");
@@ -131,7 +131,7 @@ void write_frame_pngs(const ViewOptions& options, int width, int height, const s
 }
 
 render::FrameDesc frame_for(const layout::Layout& layout, const ViewOptions& o) {
-    render::FrameDesc f;
+    render::FrameDesc f = o.frame;
     if (o.pose) {
         f.head = *o.pose;
     } else {
@@ -160,17 +160,6 @@ render::FrameDesc frame_for(const layout::Layout& layout, const ViewOptions& o) 
         }
         f.room = holding[0];
     }
-    f.ipd = o.ipd;
-    f.fov_y_deg = o.fov_y_deg;
-    f.eye_width = o.eye_width;
-    f.eye_height = o.eye_height;
-    f.max_depth = o.max_depth;
-    f.stereo = o.stereo;
-    f.clip = o.clip;
-    f.depth = o.depth;
-    f.cull_portals = o.cull_portals;
-    f.occlusion_test = o.occlusion_test;
-    f.portal_texture_scale = o.portal_texture_scale;
     return f;
 }
 

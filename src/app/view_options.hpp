@@ -18,20 +18,12 @@ struct ViewOptions {
     std::optional<std::string> layout_path;  // none: the built-in default
     std::optional<math::HeadPose> pose;
     std::optional<std::string> room;
-    double ipd = 0.064;
-    double fov_y_deg = 90.0;
-    int eye_width = 1280;
-    int eye_height = 720;
-    int max_depth = 8;
     std::string out = "stereo.png";
     std::optional<std::string> ids;
     std::optional<gl::Backend> backend;  // none: EGL, falling back to OSMesa
-    render::StereoMode stereo = render::StereoMode::ClipShift;
-    render::ClipMode clip = render::ClipMode::ClipDistance;
-    render::DepthMode depth = render::DepthMode::ReversedZ;
-    bool cull_portals = true;
-    bool occlusion_test = false;
-    double portal_texture_scale = 0.0;
+    // Every frame setting but the head and room, which frame_for resolves
+    // against the layout.
+    render::FrameDesc frame;
     bool stats = false;
 };
 
