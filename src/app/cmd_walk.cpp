@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/format.hpp"
 #include "layout/path_file.hpp"
 #include "math/pose.hpp"
 #include "scene/walk.hpp"
@@ -27,14 +28,6 @@ void write_vec(std::string& s, const math::dvec3& v) {
 }
 
 }  // namespace
-
-std::string format_number(double value) {
-    if (value == 0.0) return "0";  // also -0
-    char buf[64];
-    const auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, value);
-    if (ec != std::errc() || !std::isfinite(value)) return "null";  // never for finite input
-    return std::string(buf, ptr);
-}
 
 int run_walk_stream(const layout::Layout& layout, std::istream& in, const std::string& name,
                     std::ostream& out, std::ostream& err) {

@@ -11,9 +11,9 @@
 //
 // Output: one JSON object a line per pose, frame numbered from 0:
 //   {"frame":0,"room":"hall","teleports":[],"position":[0,1.6,1],"forward":[0,0,-1]}
-// Numbers are written as the shortest decimal that reads back to the same
-// double (std::to_chars): integers without a fraction ("1", not "1.0"), 1.6
-// as "1.6", 6.1e-17 as "6.1e-17"; -0 is written as 0.
+// Numbers are written by impossible::format_number (base/format.hpp): the
+// shortest decimal that reads back to the same double, integers without a
+// fraction ("1", not "1.0"), 1.6 as "1.6", 6.1e-17 as "6.1e-17"; -0 as 0.
 #pragma once
 
 #include <istream>
@@ -33,7 +33,5 @@ int run_walk(const layout::Layout& layout, const std::string& path_file, std::os
 int run_walk_stream(const layout::Layout& layout, std::istream& in, const std::string& name,
                     std::ostream& out, std::ostream& err);
 
-// One number as written in the JSON lines (see above).
-std::string format_number(double value);
 
 }  // namespace impossible::app

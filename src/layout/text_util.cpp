@@ -6,21 +6,6 @@
 
 namespace impossible::layout::detail {
 
-std::string format_number(double value) {
-    if (std::isnan(value)) return "nan";
-    if (std::isinf(value)) return value < 0 ? "-inf" : "inf";
-    char buffer[40];
-    if (value == std::floor(value) && std::abs(value) < 1e15) {
-        std::snprintf(buffer, sizeof buffer, "%.0f", value);  // 100000, not 1e+05
-        return buffer;
-    }
-    for (int precision = 1; precision <= 17; ++precision) {
-        std::snprintf(buffer, sizeof buffer, "%.*g", precision, value);
-        if (std::strtod(buffer, nullptr) == value) break;
-    }
-    return buffer;
-}
-
 std::string format_bytes(std::uint64_t bytes) {
     constexpr std::uint64_t mib = 1u << 20;
     if (bytes >= mib && bytes % mib == 0) return std::to_string(bytes / mib) + " MiB";

@@ -4,13 +4,14 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+
+#include "base/format.hpp"
 #include <string_view>
 #include <vector>
 
 namespace impossible::layout::detail {
 
-// The shortest decimal form that reads back as the same double ("0.1", "1e+308").
-std::string format_number(double value);
+using impossible::format_number;  // base/format.hpp
 
 // A size for messages: "5 MiB" when a whole number of MiB, else "123 bytes".
 std::string format_bytes(std::uint64_t bytes);

@@ -15,6 +15,7 @@
 
 #include "app/cli_args.hpp"
 #include "app/cmd_walk.hpp"
+#include "base/format.hpp"
 #include "preview/preview_command.hpp"
 #include "app/layout_source.hpp"
 #include "image/png.hpp"
@@ -36,7 +37,6 @@
 namespace impossible::preview {
 
 using app::InputError;
-using app::format_number;
 using app::kExitOk;
 using app::load_layout_or_default;
 namespace {
