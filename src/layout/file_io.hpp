@@ -5,19 +5,20 @@
 #include <string>
 #include <vector>
 
+#include "base/result.hpp"
+
 namespace impossible::layout::detail {
 
-// Reads the file at `path` (at most `max_bytes`). On failure returns false and
-// sets `error` to a short reason that follows the file's name ("does not
+// Reads the file at `path` (at most `max_bytes`). On failure the error is a
+// short reason that follows the file's name ("does not
 // exist", "is a directory", "is too large (...)", "cannot be opened:
 // Permission denied").
 // `regular_only` refuses devices and pipes (which could block or never end).
-bool read_file_bytes(const std::string& path, std::size_t max_bytes, bool regular_only,
-                     std::vector<unsigned char>& out, std::string& error);
+Result<std::vector<unsigned char>> read_file_bytes(const std::string& path, std::size_t max_bytes,
+                                                  bool regular_only);
 
 // The same checks without reading (size, kind), for a clear message before
 // handing the path to a library.
-bool check_readable_file(const std::string& path, std::size_t max_bytes, bool regular_only,
-                         std::string& error);
+Result<void> check_readable_file(const std::string& path, std::size_t max_bytes, bool regular_only);
 
 }  // namespace impossible::layout::detail

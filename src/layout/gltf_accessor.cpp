@@ -67,66 +67,56 @@ std::uint32_t AccessorView::index(std::size_t i) const {
     }
 }
 
-bool accessor_view(const tinygltf::Model& model, int index, int type,
-                   std::initializer_list<int> component_types, const char* what,
-                   AccessorView& out, std::string& error) {
+Result<AccessorView> accessor_view(const tinygltf::Model& model, int index, int type,
+                                   std::initializer_list<int> component_types, const char* what) {
     const std::string name = std::string(what) + " accessor " + std::to_string(index);
     if (index < 0 || static_cast<std::size_t>(index) >= model.accessors.size()) {
-        error = name + " does not exist";
-        return false;
+        return Error{name + " does not exist"};
     }
     const tinygltf::Accessor& accessor = model.accessors[static_cast<std::size_t>(index)];
     if (accessor.sparse.isSparse) {
-        error = name + " is sparse, which is not supported";
-        return false;
+        return Error{name + " is sparse, which is not supported"};
     }
     if (accessor.type != type) {
-        error = name + " must be " + type_name(type) + ", not " + type_name(accessor.type);
-        return false;
+        return Error{name + " must be " + type_name(type) + ", not " + type_name(accessor.type)};
     }
     if (std::find(component_types.begin(), component_types.end(), accessor.componentType) ==
         component_types.end()) {
-        error = name + " has the unsupported component type " +
-                std::to_string(accessor.componentType);
-        return false;
+        return Error{name + " has the unsupported component type " +
+                std::to_string(accessor.componentType)};
     }
     if (accessor.bufferView < 0 ||
         static_cast<std::size_t>(accessor.bufferView) >= model.bufferViews.size()) {
-        error = name + " has no buffer view (not supported)";
-        return false;
+        return Error{name + " has no buffer view (not supported)"};
     }
     const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(accessor.bufferView)];
     if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size()) {
-        error = name + ": its buffer view names a buffer that does not exist";
-        return false;
+        return Error{name + ": its buffer view names a buffer that does not exist"};
     }
     const std::vector<unsigned char>& buffer = model.buffers[static_cast<std::size_t>(view.buffer)].data;
     const std::size_t element = component_size(accessor.componentType) * component_count(type);
     const std::size_t stride = view.byteStride == 0 ? element : view.byteStride;
     if (stride < element) {
-        error = name + ": byte stride " + std::to_string(stride) + " is smaller than an element";
-        return false;
+        return Error{name + ": byte stride " + std::to_string(stride) + " is smaller than an element"};
     }
     if (view.byteLength > buffer.size() || view.byteOffset > buffer.size() - view.byteLength) {
-        error = name + ": its buffer view reaches past the end of its buffer";
-        return false;
+        return Error{name + ": its buffer view reaches past the end of its buffer"};
     }
-    out = {};
+    AccessorView out;
     out.stride = stride;
     out.count = accessor.count;
     out.component_type = accessor.componentType;
-    if (accessor.count == 0) return true;
+    if (accessor.count == 0) return out;
     // accessor.byteOffset + stride * (count - 1) + element <= view.byteLength,
     // without overflow.
     const bool fits = accessor.byteOffset <= view.byteLength &&
                       element <= view.byteLength - accessor.byteOffset &&
                       accessor.count - 1 <= (view.byteLength - accessor.byteOffset - element) / stride;
     if (!fits) {
-        error = name + " reaches past the end of its buffer view";
-        return false;
+        return Error{name + " reaches past the end of its buffer view"};
     }
     out.data = buffer.data() + view.byteOffset + accessor.byteOffset;
-    return true;
+    return out;
 }
 
 }  // namespace impossible::layout::detail

@@ -9,6 +9,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "base/result.hpp"
+
 namespace tinygltf {
 class Model;
 }
@@ -28,8 +30,7 @@ struct AccessorView {
 // Checks accessor `index` (`what` names it in errors: "POSITION") against
 // the wanted type (TINYGLTF_TYPE_*) and component types, and that every
 // element lies inside its buffer view and buffer.
-bool accessor_view(const tinygltf::Model& model, int index, int type,
-                   std::initializer_list<int> component_types, const char* what,
-                   AccessorView& out, std::string& error);
+Result<AccessorView> accessor_view(const tinygltf::Model& model, int index, int type,
+                                   std::initializer_list<int> component_types, const char* what);
 
 }  // namespace impossible::layout::detail

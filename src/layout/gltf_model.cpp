@@ -30,9 +30,12 @@ bool fs_file_exists(const std::string& path, void*) {
 std::string fs_expand_path(const std::string& path, void*) { return path; }
 bool fs_read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path,
                         void*) {
-    std::string reason;
-    if (read_file_bytes(path, limits::kMaxModelBytes, true, *out, reason)) return true;
-    if (err != nullptr) *err += "file " + quote(path) + " " + reason + "\n";
+    Result<std::vector<unsigned char>> bytes = read_file_bytes(path, limits::kMaxModelBytes, true);
+    if (bytes) {
+        *out = std::move(*bytes);
+        return true;
+    }
+    if (err != nullptr) *err += "file " + quote(path) + " " + bytes.error() + "\n";
     return false;
 }
 bool fs_write_whole_file(std::string* err, const std::string&, const std::vector<unsigned char>&,
@@ -57,26 +60,23 @@ bool all_finite(const std::vector<double>& v) {
 }
 
 // The node's local transform: its matrix, or translation · rotation · scale.
-bool local_transform(const tinygltf::Node& node, glm::dmat4& out, std::string& error) {
-    out = glm::dmat4(1.0);
+Result<glm::dmat4> local_transform(const tinygltf::Node& node) {
     if (!all_finite(node.matrix) || !all_finite(node.translation) || !all_finite(node.rotation) ||
         !all_finite(node.scale)) {
-        error = "has a node with a non-finite transform";
-        return false;
+        return Error{"has a node with a non-finite transform"};
     }
     if (!node.matrix.empty()) {
         if (node.matrix.size() != 16) {
-            error = "has a node matrix without 16 numbers";
-            return false;
+            return Error{"has a node matrix without 16 numbers"};
         }
-        for (int i = 0; i < 16; ++i) out[i / 4][i % 4] = node.matrix[static_cast<std::size_t>(i)];
-        return true;
+        glm::dmat4 m(1.0);
+        for (int i = 0; i < 16; ++i) m[i / 4][i % 4] = node.matrix[static_cast<std::size_t>(i)];
+        return m;
     }
     if ((!node.translation.empty() && node.translation.size() != 3) ||
         (!node.rotation.empty() && node.rotation.size() != 4) ||
         (!node.scale.empty() && node.scale.size() != 3)) {
-        error = "has a node translation, rotation or scale of the wrong size";
-        return false;
+        return Error{"has a node translation, rotation or scale of the wrong size"};
     }
     glm::dmat4 t(1.0), r(1.0), s(1.0);
     if (!node.translation.empty()) {
@@ -86,8 +86,7 @@ bool local_transform(const tinygltf::Node& node, glm::dmat4& out, std::string& e
         double x = node.rotation[0], y = node.rotation[1], z = node.rotation[2], w = node.rotation[3];
         const double length = std::sqrt(x * x + y * y + z * z + w * w);
         if (!(length > 1e-12)) {
-            error = "has a node rotation that is not a unit quaternion";
-            return false;
+            return Error{"has a node rotation that is not a unit quaternion"};
         }
         x /= length, y /= length, z /= length, w /= length;
         // Columns of the rotation matrix of the quaternion (x, y, z, w).
@@ -98,8 +97,7 @@ bool local_transform(const tinygltf::Node& node, glm::dmat4& out, std::string& e
     if (!node.scale.empty()) {
         s[0][0] = node.scale[0], s[1][1] = node.scale[1], s[2][2] = node.scale[2];
     }
-    out = t * r * s;
-    return true;
+    return t * r * s;
 }
 
 struct MeshInstance {
@@ -108,15 +106,14 @@ struct MeshInstance {
 };
 
 // Walks the default scene's node tree (iteratively, each node once).
-bool collect_instances(const tinygltf::Model& model, std::vector<MeshInstance>& out,
-                       std::string& error) {
+Result<std::vector<MeshInstance>> collect_instances(const tinygltf::Model& model) {
+    std::vector<MeshInstance> out;
     const std::size_t node_count = model.nodes.size();
     std::vector<int> roots;
     if (!model.scenes.empty()) {
         int scene = model.defaultScene < 0 ? 0 : model.defaultScene;
         if (static_cast<std::size_t>(scene) >= model.scenes.size()) {
-            error = "names default scene " + std::to_string(scene) + ", which does not exist";
-            return false;
+            return Error{"names default scene " + std::to_string(scene) + ", which does not exist"};
         }
         roots = model.scenes[static_cast<std::size_t>(scene)].nodes;
     } else {
@@ -142,28 +139,24 @@ bool collect_instances(const tinygltf::Model& model, std::vector<MeshInstance>& 
         const Item item = stack.back();
         stack.pop_back();
         if (item.node < 0 || static_cast<std::size_t>(item.node) >= node_count) {
-            error = "refers to node " + std::to_string(item.node) + ", which does not exist";
-            return false;
+            return Error{"refers to node " + std::to_string(item.node) + ", which does not exist"};
         }
         const auto index = static_cast<std::size_t>(item.node);
         if (visited[index]) {
-            error = "reaches node " + std::to_string(item.node) +
-                    " twice (its nodes must form a tree)";
-            return false;
+            return Error{"reaches node " + std::to_string(item.node) +
+                    " twice (its nodes must form a tree)"};
         }
         visited[index] = true;
         if (item.depth > limits::kMaxNodeDepth) {
-            error = "has nodes nested deeper than " + std::to_string(limits::kMaxNodeDepth) + " levels";
-            return false;
+            return Error{"has nodes nested deeper than " + std::to_string(limits::kMaxNodeDepth) + " levels"};
         }
         const tinygltf::Node& node = model.nodes[index];
-        glm::dmat4 local;
-        if (!local_transform(node, local, error)) return false;
-        const glm::dmat4 world = item.parent * local;
+        const Result<glm::dmat4> local = local_transform(node);
+        if (!local) return Error{local.error()};
+        const glm::dmat4 world = item.parent * *local;
         if (node.mesh >= 0) {
             if (static_cast<std::size_t>(node.mesh) >= model.meshes.size()) {
-                error = "refers to mesh " + std::to_string(node.mesh) + ", which does not exist";
-                return false;
+                return Error{"refers to mesh " + std::to_string(node.mesh) + ", which does not exist"};
             }
             out.push_back({node.mesh, world});
         }
@@ -171,7 +164,7 @@ bool collect_instances(const tinygltf::Model& model, std::vector<MeshInstance>& 
             stack.push_back({*c, world, item.depth + 1});
         }
     }
-    return true;
+    return out;
 }
 
 glm::dvec3 base_colour(const tinygltf::Model& model, int material) {
@@ -194,67 +187,64 @@ struct PrimitiveData {
     glm::dvec3 colour{0.8};
 };
 
-bool read_primitive(const tinygltf::Model& model, int mesh, std::size_t p, PrimitiveData& out,
-                    std::string& error) {
+Result<PrimitiveData> read_primitive(const tinygltf::Model& model, int mesh, std::size_t p) {
+    PrimitiveData out;
     const tinygltf::Primitive& primitive = model.meshes[static_cast<std::size_t>(mesh)].primitives[p];
     const std::string name = "mesh " + std::to_string(mesh) + " primitive " + std::to_string(p);
     if (primitive.mode != -1 && primitive.mode != TINYGLTF_MODE_TRIANGLES) {
-        error = "has " + name + " in mode " + std::to_string(primitive.mode) +
-                "; only TRIANGLES (4) is supported";
-        return false;
+        return Error{"has " + name + " in mode " + std::to_string(primitive.mode) +
+                "; only TRIANGLES (4) is supported"};
     }
     const auto position = primitive.attributes.find("POSITION");
     if (position == primitive.attributes.end()) {
-        error = "has " + name + " without POSITION";
-        return false;
+        return Error{"has " + name + " without POSITION"};
     }
-    std::string reason;
-    const auto fail = [&] {
-        error = "has " + name + " whose " + reason;
-        return false;
-    };
-    if (!accessor_view(model, position->second, TINYGLTF_TYPE_VEC3,
-                       {TINYGLTF_COMPONENT_TYPE_FLOAT}, "POSITION", out.positions, reason)) {
-        return fail();
+    const auto fail = [&](const std::string& reason) { return Error{"has " + name + " whose " + reason}; };
+    if (Result<AccessorView> view = accessor_view(model, position->second, TINYGLTF_TYPE_VEC3,
+                       {TINYGLTF_COMPONENT_TYPE_FLOAT}, "POSITION")) {
+        out.positions = *view;
+    } else {
+        return fail(view.error());
     }
     const auto normal = primitive.attributes.find("NORMAL");
     if (normal != primitive.attributes.end()) {
-        if (!accessor_view(model, normal->second, TINYGLTF_TYPE_VEC3,
-                           {TINYGLTF_COMPONENT_TYPE_FLOAT}, "NORMAL", out.normals, reason)) {
-            return fail();
-        }
+        if (Result<AccessorView> view = accessor_view(model, normal->second, TINYGLTF_TYPE_VEC3,
+                           {TINYGLTF_COMPONENT_TYPE_FLOAT}, "NORMAL")) {
+        out.normals = *view;
+    } else {
+        return fail(view.error());
+    }
         if (out.normals.count != out.positions.count) {
-            error = "has " + name + " with a different number of normals and positions";
-            return false;
+            return Error{"has " + name + " with a different number of normals and positions"};
         }
     }
     std::size_t corners = out.positions.count;
     if (primitive.indices >= 0) {
-        if (!accessor_view(model, primitive.indices, TINYGLTF_TYPE_SCALAR,
+        if (Result<AccessorView> view = accessor_view(model, primitive.indices, TINYGLTF_TYPE_SCALAR,
                            {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
                             TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
-                           "index", out.indices, reason)) {
-            return fail();
-        }
+                           "index")) {
+        out.indices = *view;
+    } else {
+        return fail(view.error());
+    }
         out.indexed = true;
         corners = out.indices.count;
     }
     if (corners % 3 != 0) {
-        error = "has " + name + " whose vertex count " + std::to_string(corners) +
-                " is not a multiple of 3";
-        return false;
+        return Error{"has " + name + " whose vertex count " + std::to_string(corners) +
+                " is not a multiple of 3"};
     }
     out.triangles = corners / 3;
     out.colour = base_colour(model, primitive.material);
-    return true;
+    return out;
 }
 
 bool finite(const glm::dvec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-bool emit_triangles(const PrimitiveData& data, const glm::dmat4& world,
-                    std::vector<ModelTriangle>& out, std::string& error) {
+Result<void> emit_triangles(const PrimitiveData& data, const glm::dmat4& world, std::vector<ModelTriangle>& out) {
     const glm::dmat3 linear(world);
     const double det = glm::determinant(linear);
     const bool mirrored = det < 0.0;
@@ -265,9 +255,8 @@ bool emit_triangles(const PrimitiveData& data, const glm::dmat4& world,
         for (std::size_t k = 0; k < 3; ++k) {
             v[k] = data.indexed ? data.indices.index(3 * t + k) : 3 * t + k;
             if (v[k] >= data.positions.count) {
-                error = "has an index " + std::to_string(v[k]) + " past the end of its " +
-                        std::to_string(data.positions.count) + " vertices";
-                return false;
+                return Error{"has an index " + std::to_string(v[k]) + " past the end of its " +
+                        std::to_string(data.positions.count) + " vertices"};
             }
         }
         if (mirrored) std::swap(v[1], v[2]);  // keep front faces counter-clockwise
@@ -275,8 +264,7 @@ bool emit_triangles(const PrimitiveData& data, const glm::dmat4& world,
         for (std::size_t k = 0; k < 3; ++k) {
             triangle.position[k] = glm::dvec3(world * glm::dvec4(data.positions.vec3(v[k]), 1.0));
             if (!finite(triangle.position[k])) {
-                error = "has a vertex position that is not a finite number";
-                return false;
+                return Error{"has a vertex position that is not a finite number"};
             }
         }
         const glm::dvec3 cross = glm::cross(triangle.position[1] - triangle.position[0],
@@ -296,24 +284,22 @@ bool emit_triangles(const PrimitiveData& data, const glm::dmat4& world,
         triangle.color = data.colour;
         out.push_back(triangle);
     }
-    return true;
+    return {};
 }
 
-bool load_model(const std::string& path, std::size_t max_triangles,
-                std::vector<ModelTriangle>& out, std::string& error) {
+Result<std::vector<ModelTriangle>> load_model(const std::string& path, std::size_t max_triangles) {
     std::string extension = std::filesystem::path(path).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     const bool binary = extension == ".glb";
     if (!binary && extension != ".gltf") {
-        error = "is not a glTF model (expected a .glb or .gltf file)";
-        return false;
+        return Error{"is not a glTF model (expected a .glb or .gltf file)"};
     }
-    if (!check_readable_file(path, limits::kMaxModelBytes, true, error)) return false;
+    if (Result<void> readable = check_readable_file(path, limits::kMaxModelBytes, true); !readable)
+        return Error{readable.error()};
     std::error_code ec;
     if (std::filesystem::file_size(path, ec) == 0 && !ec) {
-        error = "is not a valid glTF 2.0 file: the file is empty";
-        return false;
+        return Error{"is not a valid glTF 2.0 file: the file is empty"};
     }
 
     tinygltf::TinyGLTF loader;
@@ -325,63 +311,54 @@ bool load_model(const std::string& path, std::size_t max_triangles,
     const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
                            : loader.LoadASCIIFromFile(&model, &err, &warn, path);
     if (!ok) {
-        error = "is not a valid glTF 2.0 file: " + first_line(err);
-        return false;
+        return Error{"is not a valid glTF 2.0 file: " + first_line(err)};
     }
     if (model.asset.version.rfind("2.", 0) != 0) {
-        error = "is glTF version " + quote(model.asset.version) + "; only 2.0 is supported";
-        return false;
+        return Error{"is glTF version " + quote(model.asset.version) + "; only 2.0 is supported"};
     }
     if (!model.extensionsRequired.empty()) {
-        error = "requires the unsupported glTF extension " + quote(model.extensionsRequired.front());
-        return false;
+        return Error{"requires the unsupported glTF extension " + quote(model.extensionsRequired.front())};
     }
-    std::vector<MeshInstance> instances;
-    if (!collect_instances(model, instances, error)) return false;
+    const Result<std::vector<MeshInstance>> instances = collect_instances(model);
+    if (!instances) return Error{instances.error()};
 
     // Check every primitive and count triangles before reading any.
     std::vector<std::pair<PrimitiveData, glm::dmat4>> work;
     std::size_t triangles = 0;
-    for (const MeshInstance& instance : instances) {
+    for (const MeshInstance& instance : *instances) {
         const auto& primitives = model.meshes[static_cast<std::size_t>(instance.mesh)].primitives;
         for (std::size_t p = 0; p < primitives.size(); ++p) {
-            PrimitiveData data;
-            if (!read_primitive(model, instance.mesh, p, data, error)) return false;
-            triangles += data.triangles;
+            Result<PrimitiveData> data = read_primitive(model, instance.mesh, p);
+            if (!data) return Error{data.error()};
+            triangles += data->triangles;
             if (triangles > max_triangles) {
-                error = "has more than " + std::to_string(max_triangles) + " triangles";
-                return false;
+                return Error{"has more than " + std::to_string(max_triangles) + " triangles"};
             }
-            work.emplace_back(data, instance.world);
+            work.emplace_back(*data, instance.world);
         }
     }
-    out.clear();
+    std::vector<ModelTriangle> out;
     out.reserve(triangles);
     for (const auto& [data, world] : work) {
-        if (!emit_triangles(data, world, out, error)) return false;
+        if (Result<void> emitted = emit_triangles(data, world, out); !emitted) return Error{emitted.error()};
     }
     if (out.empty()) {
-        error = "has no triangles";
-        return false;
+        return Error{"has no triangles"};
     }
-    return true;
+    return out;
 }
 
 }  // namespace
 
-bool load_gltf_triangles(const std::string& path, std::size_t max_triangles,
-                         std::vector<ModelTriangle>& out, std::string& error) {
-    out.clear();
+Result<std::vector<ModelTriangle>> load_gltf_triangles(const std::string& path, std::size_t max_triangles) {
     try {
-        if (load_model(path, max_triangles, out, error)) return true;
+        return load_model(path, max_triangles);
     } catch (const std::bad_alloc&) {
-        error = "is too large to read (out of memory)";
+        return Error{"is too large to read (out of memory)"};
     } catch (const std::exception& e) {
         // tinygltf throws on some malformed input (e.g. std::out_of_range).
-        error = "is not a valid glTF 2.0 file: " + printable(e.what());
+        return Error{"is not a valid glTF 2.0 file: " + printable(e.what())};
     }
-    out.clear();
-    return false;
 }
 
 }  // namespace impossible::layout::detail

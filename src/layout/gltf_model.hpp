@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "base/result.hpp"
 #include "layout/layout.hpp"
 
 namespace impossible::layout::detail {
@@ -18,10 +19,9 @@ namespace impossible::layout::detail {
 // counter-clockwise seen from their front (mirroring nodes are turned back).
 // Zero-area triangles are dropped.
 //
-// Returns false with `error` set (a sentence, without the file name) for a
+// Returns an error (a sentence, without the file name) for a
 // file that is missing, unreadable, not glTF, uses what is not supported, or
 // has more than `max_triangles` triangles. Never throws for bad input.
-bool load_gltf_triangles(const std::string& path, std::size_t max_triangles,
-                         std::vector<ModelTriangle>& out, std::string& error);
+Result<std::vector<ModelTriangle>> load_gltf_triangles(const std::string& path, std::size_t max_triangles);
 
 }  // namespace impossible::layout::detail

@@ -225,14 +225,11 @@ LoadResult load_layout_text(const std::string& text, const std::string& source,
 }
 
 LoadResult load_layout_file(const std::string& path) {
-    std::vector<unsigned char> bytes;
-    std::string reason;
     try {
-        if (!detail::read_file_bytes(path, limits::kMaxFileBytes, false, bytes, reason)) {
-            return {std::nullopt, {{path, 0, 0, "the file " + reason}}, {}};
-        }
+        const Result<std::vector<unsigned char>> bytes = detail::read_file_bytes(path, limits::kMaxFileBytes, false);
+        if (!bytes) return {std::nullopt, {{path, 0, 0, "the file " + bytes.error()}}, {}};
         const std::string base_dir = std::filesystem::path(path).parent_path().string();
-        return load_layout_text(std::string(bytes.begin(), bytes.end()), path, base_dir);
+        return load_layout_text(std::string(bytes->begin(), bytes->end()), path, base_dir);
     } catch (const std::exception& e) {
         return {std::nullopt, {{path, 0, 0, "cannot read the file: " + detail::printable(e.what())}}, {}};
     }

@@ -14,30 +14,19 @@ std::string ModelCache::resolve(const std::string& path) const {
     return (std::filesystem::path(base_dir_) / p).lexically_normal().string();
 }
 
-const std::vector<ModelTriangle>* ModelCache::load(const std::string& resolved, std::string& error) {
+const Result<std::vector<ModelTriangle>>& ModelCache::load(const std::string& resolved) {
     auto it = entries_.find(resolved);
-    if (it == entries_.end()) {
-        Entry entry;
-        if (!load_gltf_triangles(resolved, limits::kMaxModelTriangles, entry.triangles, entry.error)) {
-            entry.triangles.clear();
-        }
-        it = entries_.emplace(resolved, std::move(entry)).first;
-    }
-    if (!it->second.error.empty()) {
-        error = it->second.error;
-        return nullptr;
-    }
-    return &it->second.triangles;
+    if (it == entries_.end())
+        it = entries_.emplace(resolved, load_gltf_triangles(resolved, limits::kMaxModelTriangles)).first;
+    return it->second;
 }
 
-bool ModelCache::add_instance(std::size_t triangles, std::string& error) {
+Result<void> ModelCache::add_instance(std::size_t triangles) {
     total_triangles_ += triangles;
-    if (total_triangles_ > limits::kMaxLayoutTriangles) {
-        error = "the glTF props of the layout have more than " +
-                std::to_string(limits::kMaxLayoutTriangles) + " triangles together";
-        return false;
-    }
-    return true;
+    if (total_triangles_ > limits::kMaxLayoutTriangles)
+        return Error{"the glTF props of the layout have more than " + std::to_string(limits::kMaxLayoutTriangles) +
+                     " triangles together"};
+    return {};
 }
 
 namespace {
@@ -132,14 +121,13 @@ std::optional<GltfProp> read_gltf_prop(Checker& check, const Path& at, const jso
     }
     prop.path = *path;
     prop.resolved_path = models.resolve(*path);
-    std::string error;
-    const std::vector<ModelTriangle>* triangles = models.load(prop.resolved_path, error);
-    if (triangles == nullptr) {
-        check.error(gltf_at, "the model " + quote(prop.resolved_path) + " " + error);
+    const Result<std::vector<ModelTriangle>>& triangles = models.load(prop.resolved_path);
+    if (!triangles) {
+        check.error(gltf_at, "the model " + quote(prop.resolved_path) + " " + triangles.error());
         return std::nullopt;
     }
-    if (!models.add_instance(triangles->size(), error)) {
-        check.error(gltf_at, error);
+    if (Result<void> counted = models.add_instance(triangles->size()); !counted) {
+        check.error(gltf_at, counted.error());
         return std::nullopt;
     }
     prop.triangles = *triangles;

@@ -9,6 +9,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "base/result.hpp"
 #include "layout/checker.hpp"
 #include "layout/layout.hpp"
 
@@ -38,20 +39,16 @@ public:
     // The path resolved against the layout's directory.
     std::string resolve(const std::string& path) const;
 
-    // Reads the model at `resolved` (or returns it from the cache). On
-    // failure returns null and sets `error` (a reason, without the path).
-    const std::vector<ModelTriangle>* load(const std::string& resolved, std::string& error);
+    // Reads the model at `resolved` (or returns it from the cache); the
+    // error is a reason, without the path.
+    const Result<std::vector<ModelTriangle>>& load(const std::string& resolved);
 
     // Counts one more instance of `triangles` toward the layout's cap.
-    bool add_instance(std::size_t triangles, std::string& error);
+    Result<void> add_instance(std::size_t triangles);
 
 private:
-    struct Entry {
-        std::vector<ModelTriangle> triangles;
-        std::string error;
-    };
     std::string base_dir_;
-    std::map<std::string, Entry> entries_;
+    std::map<std::string, Result<std::vector<ModelTriangle>>> entries_;
     std::size_t total_triangles_ = 0;
 };
 

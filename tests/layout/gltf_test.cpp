@@ -102,17 +102,14 @@ protected:
     std::string path(const std::string& name) const { return (dir / name).string(); }
 
     std::vector<ModelTriangle> load_ok(const std::string& file) {
-        std::vector<ModelTriangle> out;
-        std::string error;
-        EXPECT_TRUE(impossible::layout::detail::load_gltf_triangles(file, 1000000, out, error)) << error;
-        return out;
+        auto loaded = impossible::layout::detail::load_gltf_triangles(file, 1000000);
+        EXPECT_TRUE(loaded) << (loaded ? "" : loaded.error());
+        return loaded ? *loaded : std::vector<ModelTriangle>{};
     }
     std::string load_error(const std::string& file, std::size_t max_triangles = 1000000) {
-        std::vector<ModelTriangle> out;
-        std::string error;
-        EXPECT_FALSE(impossible::layout::detail::load_gltf_triangles(file, max_triangles, out, error));
-        EXPECT_TRUE(out.empty());
-        return error;
+        const auto loaded = impossible::layout::detail::load_gltf_triangles(file, max_triangles);
+        EXPECT_FALSE(loaded);
+        return loaded ? "" : loaded.error();
     }
     // One node holding one triangle primitive, then written out.
     std::string one_triangle(const std::string& name, json node_fields = json::object(),
@@ -346,9 +343,7 @@ TEST_F(GltfTest, FilesThatAreNotGltf) {
 
 TEST_F(GltfTest, AModelIsNotLoadedFromADevice) {
     EXPECT_EQ(load_error("/dev/zero.glb"), "does not exist");
-    std::vector<ModelTriangle> out;
-    std::string error;
-    EXPECT_FALSE(impossible::layout::detail::load_gltf_triangles("/dev/null", 10, out, error));
+    EXPECT_FALSE(impossible::layout::detail::load_gltf_triangles("/dev/null", 10));
 }
 
 // A layout with one glTF prop: `fields` go inside the prop.
