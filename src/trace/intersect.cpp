@@ -39,15 +39,16 @@ std::optional<SurfaceHit> hit_room_face(const RoomFace& face, const Scene& scene
     const std::optional<double> t = hit_axis_rect(face.rect, origin, dir);
     if (!t) return std::nullopt;
     const dvec3 p = origin + *t * dir;
+    if (!clip.keeps(p)) return std::nullopt;
+    const dvec3 normal = axis_normal(face.rect.axis, face.rect.sign);
     for (int index : face.holes) {
         const ScenePortal& portal = scene.portals[index];
         const dvec3 v = p - portal.rect.center;
         if (std::abs(glm::dot(v, portal.right)) <= 0.5 * portal.rect.width &&
             std::abs(glm::dot(v, portal.rect.up)) <= 0.5 * portal.rect.height)
-            return std::nullopt;  // through the hole: the portal's front face is there instead
+            return SurfaceHit{*t, normal, index};  // through the hole: the portal's front face
     }
-    if (!clip.keeps(p)) return std::nullopt;
-    return SurfaceHit{*t, axis_normal(face.rect.axis, face.rect.sign)};
+    return SurfaceHit{*t, normal};
 }
 
 std::optional<SurfaceHit> hit_prop_box(const PropBox& box, const dvec3& origin, const dvec3& dir,
@@ -103,7 +104,7 @@ std::optional<SurfaceHit> hit_portal_box(const ScenePortal& portal, const dvec3&
         if (t && clip.keeps(origin + *t * dir)) keep_nearest(best, *t, sign * frame[axis]);
     };
     const dvec3 box_min(-hw, -hh, -r.depth), box_max(hw, hh, 0.0);
-    try_face(2, 0.0, 1.0, box_min, box_max);  // the front rectangle, facing +n
+    if (!portal.in_hole) try_face(2, 0.0, 1.0, box_min, box_max);  // the front rectangle, facing +n
     if (math::in_column(r, origin)) {
         // Inner faces, facing into the box.
         try_face(0, hw, -1.0, box_min, box_max);

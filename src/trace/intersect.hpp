@@ -15,6 +15,7 @@ namespace impossible::trace {
 struct SurfaceHit {
     double t = 0.0;
     dvec3 normal{0.0};
+    int portal = -1;  // ≥ 0: the front face of this portal, met in its hole
 };
 
 // "Only the part of the ray strictly in front of the plane counts"
@@ -33,8 +34,13 @@ struct ClipPlane {
 // The rectangle, seen from the side its normal points to.
 std::optional<double> hit_axis_rect(const AxisRect& rect, const dvec3& origin, const dvec3& dir);
 
-// A room face minus its holes (each hole tested in its portal's own frame:
-// |x| ≤ width/2 and |y| ≤ height/2 is inside the hole).
+// A room face with its holes (each hole tested in its portal's own frame:
+// |x| ≤ width/2 and |y| ≤ height/2 is inside the hole). A hit inside a hole
+// is a hit on that portal's front face (SurfaceHit::portal), in the face's
+// plane: wall and door then share one test, so no ray slips between the
+// hole's edge and the door's edge, even where the door lies up to the hole
+// tolerance off the face's plane. The rasteriser draws the front face in the
+// face's plane too (scene/room_mesh.cpp).
 std::optional<SurfaceHit> hit_room_face(const RoomFace& face, const Scene& scene, const dvec3& origin,
                                         const dvec3& dir, const ClipPlane& clip);
 
@@ -49,8 +55,9 @@ std::optional<SurfaceHit> hit_triangle(const PropTriangle& tri, const dvec3& ori
                                        const ClipPlane& clip);
 
 // A portal's box for a ray from `origin`, which is the (possibly virtual)
-// eye: the front rectangle (facing +n) always; the four side faces and the
-// back face (facing inwards) only when the eye is in the box's column.
+// eye: the front rectangle (facing +n) always, unless the portal fills a
+// room face's hole (then hit_room_face meets it); the four side faces and
+// the back face (facing inwards) only when the eye is in the box's column.
 // The nearest such face that the clip plane keeps.
 std::optional<SurfaceHit> hit_portal_box(const ScenePortal& portal, const dvec3& origin, const dvec3& dir,
                                          const ClipPlane& clip);

@@ -94,6 +94,7 @@ Scene prepare_scene(const layout::Layout& layout) {
         for (RoomFace& face : room.faces) {
             if (cuts_hole(face.rect, p.rect)) {
                 face.holes.push_back(i);
+                scene.portals[i].in_hole = true;
                 break;  // a rectangle lies in one face's plane at most
             }
         }

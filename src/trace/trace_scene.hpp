@@ -63,6 +63,7 @@ struct ScenePortal {
     dmat4 to_local{1.0};       // layout → portal frame (x right, y up, z normal)
     dmat4 transfer{1.0};       // M_AB, onto the target portal
     double clip_tolerance = 0.0;  // 1e-9 · (1 + |centre|): "strictly in front" of this plane
+    bool in_hole = false;      // fills a hole of one of its room's faces
 };
 
 struct SceneRoom {

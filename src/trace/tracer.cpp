@@ -44,8 +44,10 @@ Nearest nearest_in_room(const Scene& scene, int room_index, const dvec3& origin,
                         const ClipPlane& clip) {
     const SceneRoom& room = scene.rooms[room_index];
     Nearest nearest;
-    for (const RoomFace& face : room.faces)
-        nearest.offer(hit_room_face(face, scene, origin, dir, clip), -1, face.color, room.checker);
+    for (const RoomFace& face : room.faces) {
+        const std::optional<SurfaceHit> hit = hit_room_face(face, scene, origin, dir, clip);
+        nearest.offer(hit, hit ? hit->portal : -1, face.color, room.checker);
+    }
     for (const PropBox& box : room.boxes)
         nearest.offer(hit_prop_box(box, origin, dir, clip), -1, box.color, 0.0);
     for (const PropTriangle& tri : room.triangles)
