@@ -1,6 +1,7 @@
 // `impossible generate`: a random, valid layout of N rooms on a given floor,
 // in the spirit of Vasylevska and Kaufmann's procedural "Flexible Spaces"
-// (IEEE VR 2013; here rooms are boxes and doors are portals, not corridors).
+// (Vasylevska, Kaufmann, Bolas and Suma, IEEE 3DUI 2013; here rooms are
+// boxes and doors are portals, not corridors).
 //
 // Rooms are axis-aligned boxes on a 0.1 m grid, each inside the play area.
 // The first room is placed at random; each further room B grows out of a
