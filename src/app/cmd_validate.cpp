@@ -1,29 +1,42 @@
-// impossible validate LAYOUT: every problem, or a short summary.
+// impossible validate LAYOUT [--json]: every problem, or a short summary and
+// the designer's report (design/report.hpp).
 #include <iostream>
 
 #include "app/cli_args.hpp"
 #include "app/commands.hpp"
+#include "design/report.hpp"
 #include "layout/layout.hpp"
 
 namespace impossible::app {
 
 int run_validate_command(const Args& args, std::ostream& out, std::ostream& err) {
-    const ParsedArgs parsed = parse_args(args, {}, {}, 1);
+    const ParsedArgs parsed = parse_args(args, {}, {"--json"}, 1);
     if (parsed.help) {
-        out << "usage: impossible validate LAYOUT\n"
+        out << "usage: impossible validate LAYOUT [--json]\n"
                "Checks a layout file; prints a summary (rooms, portals, pairs, rooms outside the play\n"
-               "area, expansion ratio) or every problem as FILE:LINE:COLUMN: message (exit 1).\n";
+               "area, expansion ratio) and the designer's report (room overlaps against Suma et al. 2012,\n"
+               "rooms no door leads to, rooms and doors outside the play area as walked), or every\n"
+               "problem as FILE:LINE:COLUMN: message (exit 1). Findings are warnings (exit 0).\n"
+               "  --json  the whole report (or the errors) as one JSON document on standard output\n";
         return kExitOk;
     }
     if (parsed.positional.empty()) throw UsageError("validate needs a LAYOUT file");
+    const bool json = parsed.flag("--json");
     const layout::LoadResult loaded = layout::load_layout_file(parsed.positional[0]);
     if (!loaded.errors.empty()) {
         for (const layout::Diagnostic& d : loaded.errors) err << d.str() << "\n";
+        if (json) out << design::errors_json(parsed.positional[0], loaded.errors).dump(2) << "\n";
         return kExitBadInput;
     }
     for (const layout::Diagnostic& d : loaded.warnings) err << "warning: " << d.str() << "\n";
     const layout::Layout& l = *loaded.layout;
-    out << layout::summary_text(l, layout::summarize(l));
+    const design::Report report = design::make_report(l);
+    for (const std::string& f : report.findings) err << "warning: " << l.source << ": " << f << "\n";
+    if (json) {
+        out << design::report_json(l, report, loaded.warnings).dump(2) << "\n";
+    } else {
+        out << layout::summary_text(l, report.summary) << design::report_text(l, report);
+    }
     return kExitOk;
 }
 

@@ -16,6 +16,9 @@ int run_validate_command(const Args& args, std::ostream& out, std::ostream& err)
 int run_walk_command(const Args& args, std::ostream& out, std::ostream& err);
 int run_trace_command(const Args& args, std::ostream& out, std::ostream& err);
 int run_compare_command(const Args& args, std::ostream& out, std::ostream& err);
+int run_plan_command(const Args& args, std::ostream& out, std::ostream& err);
+int run_tour_command(const Args& args, std::ostream& out, std::ostream& err);
+int run_generate_command(const Args& args, std::ostream& out, std::ostream& err);
 
 // Dispatches argv[1] to a command; prints the overview for --help or nothing.
 int run_main(const Args& args, std::ostream& out, std::ostream& err);

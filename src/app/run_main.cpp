@@ -14,10 +14,13 @@ const char* kOverview =
     "  render [LAYOUT]          one side-by-side stereo frame with the OpenGL rasteriser\n"
     "  trace [LAYOUT]           the same frame with the CPU reference ray tracer\n"
     "  compare A.png B.png      compare two frames (cell ids, colour PSNR), e.g. render vs trace\n"
-    "  validate LAYOUT          check a layout file\n"
+    "  validate LAYOUT          check a layout file; the designer's report (--json for JSON)\n"
     "  walk LAYOUT --path FILE  replay a walk and print where the head goes\n"
     "  preview [LAYOUT]         a window to walk a layout in stereo (mouse look, WASD, minimap, HUD)\n"
-    "  bench [LAYOUT]           frame time, per-portal cost, fragments and error of the renderer\n";
+    "  bench [LAYOUT]           frame time, per-portal cost, fragments and error of the renderer\n"
+    "  plan LAYOUT --out F.svg  a top-down drawing of the physical floor (SVG or PNG)\n"
+    "  tour LAYOUT --out P.txt  a walk through every reachable room, as a path file\n"
+    "  generate --play-area WxD --rooms N --seed S   a random valid layout\n";
 
 }  // namespace
 
@@ -36,6 +39,9 @@ int run_main(const Args& args, std::ostream& out, std::ostream& err) {
         if (command == "compare") return run_compare_command(rest, out, err);
         if (command == "bench") return bench::run_bench_command(rest, out, err);
         if (command == "preview") return preview::run_preview_command(rest, out, err);
+        if (command == "plan") return run_plan_command(rest, out, err);
+        if (command == "tour") return run_tour_command(rest, out, err);
+        if (command == "generate") return run_generate_command(rest, out, err);
         err << "impossible: unknown command '" << command << "'\n" << kOverview;
         return kExitUsage;
     } catch (const UsageError& e) {

@@ -74,10 +74,18 @@ struct Portal {
     int hole_face = -1;
 };
 
+// The tracked floor: a rectangle, or a simple polygon (layout-format.md, top
+// level). `min`/`max` are always its bounding box ([x, z]); `polygon` holds
+// the outline as written (either winding), or is empty for a rectangle.
 struct PlayArea {
     glm::dvec2 min{0.0};  // [x, z]
     glm::dvec2 max{0.0};
+    std::vector<glm::dvec2> polygon{};  // empty: the rectangle min..max
 };
+
+// The outline of a play area: its polygon, or the rectangle's four corners
+// (counter-clockwise in x, z).
+std::vector<glm::dvec2> outline(const PlayArea& area);
 
 struct Start {
     int room = -1;

@@ -3,12 +3,18 @@
 
 #include "layout/layout.hpp"
 #include "math/conventions.hpp"
+#include "math/polygon.hpp"
 
 namespace impossible::layout {
 
 std::string Diagnostic::str() const {
     if (line > 0) return file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + message;
     return file + ": " + message;
+}
+
+std::vector<glm::dvec2> outline(const PlayArea& area) {
+    if (!area.polygon.empty()) return area.polygon;
+    return math::rectangle(area.min, area.max);
 }
 
 int find_room(const Layout& layout, const std::string& id) {

@@ -17,6 +17,7 @@ inline constexpr std::size_t kMaxValues = 200'000;
 inline constexpr std::size_t kMaxRooms = 10'000;
 inline constexpr std::size_t kMaxPortals = 20'000;
 inline constexpr std::size_t kMaxPropsPerRoom = 10'000;
+inline constexpr std::size_t kMaxPlayAreaCorners = 10'000;
 
 // Coordinates and lengths, in metres. Renderers draw in single precision, so
 // a coordinate beyond 100 km would lose millimetres; lengths below a

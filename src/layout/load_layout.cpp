@@ -9,6 +9,7 @@
 #include "layout/limits.hpp"
 #include "layout/readers.hpp"
 #include "layout/text_util.hpp"
+#include "math/polygon.hpp"
 
 namespace impossible::layout {
 
@@ -47,8 +48,45 @@ Path path_of_pointer(const json& root, const std::string& pointer) {
     return path;
 }
 
+// The polygon form: {"polygon": [[x, z], ...]}, at least 3 corners, no
+// repeated corner, no self-intersection (math/polygon.hpp).
+std::optional<PlayArea> read_play_polygon(Checker& check, const Path& at, const json& value) {
+    check.check_fields(at, value, {"polygon"}, {"polygon"});
+    const Path list = at / "polygon";
+    const json& corners = value.at("polygon");
+    if (!check.expect_array(list, corners, limits::kMaxPlayAreaCorners)) return std::nullopt;
+    PlayArea area;
+    bool ok = true;
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+        if (const auto p = check.read_vec2(list / i, corners[i], NumberKind::Coordinate)) {
+            area.polygon.push_back(*p);
+        } else {
+            ok = false;
+        }
+    }
+    if (!ok) return std::nullopt;
+    if (const auto problem = math::simple_polygon_problem(area.polygon)) {
+        const bool at_corner = area.polygon.size() >= 3 && problem->corner > 0;
+        check.error(at_corner ? list / static_cast<std::size_t>(problem->corner) : list,
+                    "the play area must be a simple polygon: " + problem->message);
+        return std::nullopt;
+    }
+    if (math::area(area.polygon) < limits::kMinLength * limits::kMinLength) {
+        check.error(list, "the play area is too small (its area is " +
+                              detail::format_number(math::area(area.polygon)) + " m2)");
+        return std::nullopt;
+    }
+    area.min = area.max = area.polygon[0];
+    for (const glm::dvec2& p : area.polygon) {
+        area.min = glm::min(area.min, p);
+        area.max = glm::max(area.max, p);
+    }
+    return area;
+}
+
 std::optional<PlayArea> read_play_area(Checker& check, const Path& at, const json& value) {
     if (!check.expect_object(at, value)) return std::nullopt;
+    if (field(value, "polygon") != nullptr) return read_play_polygon(check, at, value);
     check.check_fields(at, value, {"min", "max"}, {"min", "max"});
     std::optional<glm::dvec2> min, max;
     if (const json* v = field(value, "min")) min = check.read_vec2(at / "min", *v, NumberKind::Coordinate);
@@ -70,7 +108,7 @@ std::optional<PlayArea> read_play_area(Checker& check, const Path& at, const jso
             return std::nullopt;
         }
     }
-    return PlayArea{*min, *max};
+    return PlayArea{*min, *max, {}};
 }
 
 struct StartDraft {

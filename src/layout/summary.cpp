@@ -2,6 +2,7 @@
 #include <cstdio>
 
 #include "layout/layout.hpp"
+#include "math/polygon.hpp"
 
 namespace impossible::layout {
 
@@ -18,15 +19,14 @@ Summary summarize(const Layout& layout) {
         s.floor_area += (room.max.x - room.min.x) * (room.max.z - room.min.z);
     }
     if (layout.play_area) {
-        const PlayArea& area = *layout.play_area;
-        s.play_area_area = (area.max.x - area.min.x) * (area.max.y - area.min.y);
+        const std::vector<glm::dvec2> area = outline(*layout.play_area);
+        s.play_area_area = math::area(area);
         s.expansion_ratio = s.floor_area / *s.play_area_area;
-        const double eps = 1e-9;
         for (const Room& room : layout.rooms) {
-            // PlayArea's glm::dvec2 holds [x, z] as (x, y).
-            const bool inside = room.min.x >= area.min.x - eps && room.max.x <= area.max.x + eps &&
-                                room.min.z >= area.min.y - eps && room.max.z <= area.max.y + eps;
-            if (!inside) s.rooms_outside_play_area.push_back(room.id);
+            const math::Polygon2 floor = math::rectangle({room.min.x, room.min.z}, {room.max.x, room.max.z});
+            // A tolerance relative to the floor, so rooms exactly on the edge fit.
+            if (!math::convex_inside(floor, area, 1e-9 * (1.0 + math::area(floor))))
+                s.rooms_outside_play_area.push_back(room.id);
         }
     }
     return s;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "math/polygon.hpp"
+
 namespace impossible::preview {
 
 math::HeadPose move_head(const math::HeadPose& head, const MoveInput& in,
@@ -24,6 +26,12 @@ math::HeadPose move_head(const math::HeadPose& head, const MoveInput& in,
                                     std::max(area->max.x, head.position.x));
         out.position.z = std::clamp(out.position.z, std::min(area->min.y, head.position.z),
                                     std::max(area->max.y, head.position.z));
+        // A polygon: a step that would leave it is not taken.
+        if (!area->polygon.empty() && !math::contains(area->polygon, {out.position.x, out.position.z}) &&
+            math::contains(area->polygon, {head.position.x, head.position.z})) {
+            out.position.x = head.position.x;
+            out.position.z = head.position.z;
+        }
     }
     return out;
 }

@@ -106,8 +106,9 @@ void add_minimap(OverlayBatch& batch, const MinimapInput& in, glm::vec2 corner, 
         glm::vec2 p0 = glm::clamp(view.to_pixel(a.min), view.lo, view.hi);
         glm::vec2 p1 = glm::clamp(view.to_pixel(a.max), view.lo, view.hi);
         batch.rect(p0, p1, {0.2f, 0.8f, 0.3f, 0.15f});
-        view.loop(batch, {a.min, glm::dvec2{a.max.x, a.min.y}, a.max, glm::dvec2{a.min.x, a.max.y}},
-                  {0.3f, 0.9f, 0.4f, 1.0f});
+        const std::vector<glm::dvec2> poly = layout::outline(a);  // the rectangle, or the polygon
+        for (std::size_t i = 0; i < poly.size(); ++i)
+            view.segment(batch, poly[i], poly[(i + 1) % poly.size()], {0.3f, 0.9f, 0.4f, 1.0f});
     }
     const bool room_ok = in.room >= 0 && static_cast<std::size_t>(in.room) < layout.rooms.size();
     if (room_ok && in.transfer) {

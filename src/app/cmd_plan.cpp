@@ -1,0 +1,62 @@
+// impossible plan LAYOUT --out FILE.svg|FILE.png [--path FILE] [--png FILE.png]:
+// the top-down plan of the physical floor (design/plan.hpp).
+#include <iostream>
+
+#include "app/cli_args.hpp"
+#include "app/commands.hpp"
+#include "app/layout_source.hpp"
+#include "image/png.hpp"
+#include "app/text_file.hpp"
+#include "design/path_text.hpp"
+#include "design/plan.hpp"
+
+namespace impossible::app {
+namespace {
+
+bool ends_with(const std::string& s, const std::string& tail) {
+    return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+}  // namespace
+
+int run_plan_command(const Args& args, std::ostream& out, std::ostream& err) {
+    const ParsedArgs parsed = parse_args(args, {"--out", "--path", "--png", "--max-size"}, {}, 1);
+    if (parsed.help) {
+        out << "usage: impossible plan LAYOUT --out FILE.svg [--path FILE] [--png FILE.png] [--max-size PX]\n"
+               "Draws the physical floor from above: the play area, each room's floor in its own colour,\n"
+               "overlaps shaded (red where likely noticed), doors with arrows to their partners, the start,\n"
+               "and with --path a walk (a path file of physical head poses). An --out ending in .png writes\n"
+               "a PNG instead of SVG; --png writes one as well. --max-size caps the picture (default 1200 px).\n";
+        return kExitOk;
+    }
+    if (parsed.positional.empty()) throw UsageError("plan needs a LAYOUT file");
+    const std::optional<std::string> out_file = parsed.value("--out");
+    if (!out_file) throw UsageError("plan needs --out FILE.svg");
+    const int max_size = parsed.value("--max-size") ? parse_int("--max-size", *parsed.value("--max-size"), 64, 8192) : 1200;
+    const layout::Layout layout = load_layout_or_default(parsed.positional[0]);
+    std::vector<math::HeadPose> path;
+    if (const auto file = parsed.value("--path")) {
+        auto read = design::read_path(*file);
+        if (!read) throw InputError(read.error());
+        path = std::move(*read);
+    }
+    const design::Report report = design::make_report(layout);
+    const design::Drawing drawing = design::plan_drawing(layout, report, path);
+    const double scale = design::plan_scale(drawing, max_size);
+    std::vector<std::string> pngs;
+    if (const auto png = parsed.value("--png")) pngs.push_back(*png);
+    if (ends_with(*out_file, ".png")) {
+        pngs.push_back(*out_file);
+    } else if (const std::string e = write_text_file(*out_file, design::plan_svg(drawing, scale)); !e.empty()) {
+        throw InputError(e);
+    }
+    for (const std::string& png : pngs) {
+        const design::Image image = design::plan_raster(drawing, scale);
+        if (const std::string e = image::write_png(png, image.width, image.height, 3, image.rgb); !e.empty()) throw InputError(e);
+    }
+    err << "plan: " << layout.rooms.size() << " rooms, " << report.overlaps.size() << " overlapping pairs, "
+        << drawing.shapes.size() << " shapes\n";
+    return kExitOk;
+}
+
+}  // namespace impossible::app

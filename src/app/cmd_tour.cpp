@@ -1,0 +1,78 @@
+// impossible tour LAYOUT --out PATH.txt: a walk through every reachable room
+// (design/tour.hpp), written as a path file for walk, preview and bench.
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+#include "app/cli_args.hpp"
+#include "app/commands.hpp"
+#include "app/layout_source.hpp"
+#include "app/text_file.hpp"
+#include "design/path_text.hpp"
+#include "design/tour.hpp"
+
+namespace impossible::app {
+namespace {
+
+std::string summary(const layout::Layout& layout, const design::TourResult& t, std::size_t reachable) {
+    char line[512];
+    std::string out;
+    std::snprintf(line, sizeof line, "poses: %zu\nteleports: %d\nphysical distance: %.2f m\nvirtual distance: %.2f m\n",
+                  t.poses.size(), t.teleports, t.physical_distance, t.virtual_distance);
+    out += line;
+    out += "rooms visited: " + std::to_string(t.visited.size()) + " of " + std::to_string(reachable) + " reachable:";
+    for (const int r : t.visited) out += " " + layout.rooms[r].id;
+    out += "\nrooms missed:";
+    if (t.missed.empty()) out += " none";
+    for (const int r : t.missed) out += " " + layout.rooms[r].id;
+    out += "\n";
+    if (std::isfinite(t.closest_edge)) {
+        std::snprintf(line, sizeof line, "closest approach to the play area's edge: %.2f m\n", t.closest_edge);
+        out += line;
+    } else {
+        out += "closest approach to the play area's edge: n/a (no play area)\n";
+    }
+    return out;
+}
+
+}  // namespace
+
+int run_tour_command(const Args& args, std::ostream& out, std::ostream& err) {
+    const ParsedArgs parsed = parse_args(args, {"--out", "--step", "--head-height"}, {}, 1);
+    if (parsed.help) {
+        out << "usage: impossible tour LAYOUT --out PATH.txt [--step M] [--head-height M]\n"
+               "Plans a walk through every room a door leads to, inside the play area and around props,\n"
+               "and writes it as a path file of physical head poses (the walk format) for walk,\n"
+               "preview --path and bench --path. Prints the physical and virtual distance walked, the\n"
+               "rooms visited (replayed with the walker) and the closest approach to the play area's edge.\n"
+               "  --step M         metres between poses (default 0.05)\n"
+               "  --head-height M  eye height of the walk (default 1.6)\n";
+        return kExitOk;
+    }
+    if (parsed.positional.empty()) throw UsageError("tour needs a LAYOUT file");
+    const std::optional<std::string> out_file = parsed.value("--out");
+    if (!out_file) throw UsageError("tour needs --out PATH.txt");
+    design::TourOptions options;
+    if (const auto v = parsed.value("--step")) {
+        options.step = parse_number("--step", *v);
+        if (!(options.step >= 0.005 && options.step <= 1.0)) throw InputError("--step must be in 0.005..1 m");
+    }
+    if (const auto v = parsed.value("--head-height")) {
+        options.grid.head_height = parse_number("--head-height", *v);
+        if (!(options.grid.head_height >= 0.2 && options.grid.head_height <= 3.0))
+            throw InputError("--head-height must be in 0.2..3 m");
+    }
+    const layout::Layout layout = load_layout_or_default(parsed.positional[0]);
+    auto tour = design::plan_tour(layout, options);
+    if (!tour) throw InputError(tour.error());
+    const std::size_t reachable = tour->visited.size() + tour->missed.size();
+    const std::string report = summary(layout, *tour, reachable);
+    const std::string header = "impossible tour of " + layout.source + "\n" + report;
+    if (const std::string e = write_text_file(*out_file, design::path_text(tour->poses, header)); !e.empty())
+        throw InputError(e);
+    out << report;
+    for (const int r : tour->missed) err << "warning: the tour could not reach room \"" << layout.rooms[r].id << "\"\n";
+    return kExitOk;
+}
+
+}  // namespace impossible::app

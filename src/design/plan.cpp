@@ -1,0 +1,152 @@
+// The plan's shapes; see plan.hpp.
+#include "design/plan.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <variant>
+
+namespace impossible::design {
+namespace {
+
+Rgba hue(int index, double s, double v, double a) {
+    double h = 0.13 + 0.618034 * index;
+    h = (h - std::floor(h)) * 6.0;
+    const int k = static_cast<int>(h) % 6;
+    const double f = h - std::floor(h), p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
+    const double c[6][3] = {{v, t, p}, {q, v, p}, {p, v, t}, {p, q, v}, {t, p, v}, {v, p, q}};
+    return {c[k][0], c[k][1], c[k][2], a};
+}
+
+Shape fill(const std::string& group, const std::string& name, math::Polygon2 points, Rgba colour) {
+    Shape s;
+    s.group = group, s.name = name, s.points = std::move(points), s.colour = colour;
+    return s;
+}
+
+Shape stroke(const std::string& group, const std::string& name, math::Polygon2 points, Rgba colour, double width,
+             bool closed = false, bool dashed = false) {
+    Shape s = fill(group, name, std::move(points), colour);
+    s.kind = Shape::Kind::Stroke, s.width = width, s.closed = closed, s.dashed = dashed;
+    return s;
+}
+
+// A line with a filled arrowhead at `to`.
+void arrow(Drawing& d, const std::string& group, const std::string& name, glm::dvec2 from, glm::dvec2 to, Rgba c,
+           double width, bool dashed) {
+    const double length = glm::distance(from, to);
+    if (length < 1e-6) return;
+    const glm::dvec2 dir = (to - from) / length, side{-dir.y, dir.x};
+    const double head = std::min(0.18, 0.6 * length);
+    d.shapes.push_back(stroke(group, name, {from, to - dir * head}, c, width, false, dashed));
+    d.shapes.push_back(fill(group, name, {to, to - dir * head + side * (0.45 * head), to - dir * head - side * (0.45 * head)}, c));
+}
+
+math::Polygon2 circle(glm::dvec2 c, double r) {
+    math::Polygon2 out;
+    for (int i = 0; i < 24; ++i) out.push_back(c + r * glm::dvec2(std::cos(i * math::kPi / 12), std::sin(i * math::kPi / 12)));
+    return out;
+}
+
+void add_doors(Drawing& d, const layout::Layout& layout, const Report& r) {
+    for (std::size_t i = 0; i < layout.portals.size(); ++i) {
+        const layout::Portal& p = layout.portals[i];
+        const math::dmat4& m = r.placement.rooms[p.room].to_physical;
+        const Rgba c = hue(p.room, 0.8, 0.55, 1.0);
+        const auto line = door_line(p, m);
+        d.shapes.push_back(stroke("doors", p.id, {line[0], line[1]}, c, 0.07));
+        const glm::dvec2 centre = 0.5 * (line[0] + line[1]);
+        const glm::dvec2 n = to_floor(m, p.rect.center + p.rect.normal) - to_floor(m, p.rect.center);
+        if (glm::length(n) > 1e-6) {
+            const glm::dvec2 u = glm::normalize(n);
+            arrow(d, "doors", p.id, centre + u * 0.3, centre - u * 0.15, c, 0.025, false);
+        }
+        const layout::Portal& t = layout.portals[p.target];
+        const auto other = door_line(t, r.placement.rooms[t.room].to_physical);
+        arrow(d, "doors", p.id, centre, 0.5 * (other[0] + other[1]), c, 0.02, true);
+    }
+}
+
+void add_labels(Drawing& d, const layout::Layout& layout, const Report& r) {
+    std::vector<glm::dvec2> used;
+    for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
+        glm::dvec2 at{0.0};
+        for (const glm::dvec2& p : r.floors[i]) at += 0.25 * p;
+        while (std::any_of(used.begin(), used.end(), [&](glm::dvec2 u) { return glm::distance(u, at) < 0.25; }))
+            at.y += 0.3;
+        used.push_back(at);
+        Shape s = fill("labels", layout.rooms[i].id, {at}, hue(static_cast<int>(i), 0.9, 0.35, 1.0));
+        s.kind = Shape::Kind::Text;
+        s.text = layout.rooms[i].id + (r.placement.rooms[i].reachable ? "" : " (unreachable)");
+        d.shapes.push_back(s);
+    }
+}
+
+void add_floor(Drawing& d, const layout::Layout& layout, const Report& r) {
+    if (layout.play_area) {
+        const math::Polygon2 area = layout::outline(*layout.play_area);
+        d.shapes.push_back(fill("play-area", "", area, {0.90, 0.95, 0.88, 1.0}));
+        d.shapes.push_back(stroke("play-area", "", area, {0.15, 0.45, 0.2, 1.0}, 0.04, true));
+    }
+    for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
+        const bool reachable = r.placement.rooms[i].reachable;
+        const int h = static_cast<int>(i);
+        d.shapes.push_back(fill("rooms", layout.rooms[i].id, r.floors[i], hue(h, 0.6, 0.9, 0.22)));
+        d.shapes.push_back(stroke("rooms", layout.rooms[i].id, r.floors[i], hue(h, 0.8, 0.6, 1.0), 0.03, true, !reachable));
+    }
+    for (const Overlap& o : r.overlaps) {
+        // Light, so that several pairs stacked on one spot still show the rooms under them.
+        const Rgba c = o.noticeable ? Rgba{0.85, 0.1, 0.1, 0.08} : Rgba{0.1, 0.1, 0.1, 0.08};
+        d.shapes.push_back(fill("overlaps", layout.rooms[o.a].id + "/" + layout.rooms[o.b].id, o.shared, c));
+    }
+    for (std::size_t i = 0; i < layout.rooms.size(); ++i)
+        for (const layout::Prop& prop : layout.rooms[i].props)
+            if (const auto* box = std::get_if<layout::BoxProp>(&prop)) {
+                const layout::Room footprint{"", box->min, box->max, {}, 0.0, {}};
+                d.shapes.push_back(fill("props", layout.rooms[i].id,
+                                        physical_floor(footprint, r.placement.rooms[i].to_physical),
+                                        hue(static_cast<int>(i), 0.7, 0.5, 0.55)));
+            }
+}
+
+}  // namespace
+
+Drawing plan_drawing(const layout::Layout& layout, const Report& r, const std::vector<math::HeadPose>& path) {
+    Drawing d;
+    d.title = (layout.name.empty() ? layout.source : layout.name) + " - the physical floor (1 m grid)";
+    bool any = false;
+    auto grow = [&](glm::dvec2 p) {
+        d.min = any ? glm::min(d.min, p) : p;
+        d.max = any ? glm::max(d.max, p) : p;
+        any = true;
+    };
+    if (layout.play_area)
+        for (const glm::dvec2& p : layout::outline(*layout.play_area)) grow(p);
+    for (const math::Polygon2& f : r.floors)
+        for (const glm::dvec2& p : f) grow(p);
+    for (const math::HeadPose& p : path) grow({p.position.x, p.position.z});
+    d.min = glm::floor(d.min - 0.5), d.max = glm::ceil(d.max + 0.5);
+    for (double x = d.min.x; x <= d.max.x + 1e-9; x += 1.0)
+        d.shapes.push_back(stroke("grid", "", {{x, d.min.y}, {x, d.max.y}}, {0.8, 0.8, 0.8, 1.0}, 0.01));
+    for (double z = d.min.y; z <= d.max.y + 1e-9; z += 1.0)
+        d.shapes.push_back(stroke("grid", "", {{d.min.x, z}, {d.max.x, z}}, {0.8, 0.8, 0.8, 1.0}, 0.01));
+    add_floor(d, layout, r);
+    add_doors(d, layout, r);
+    const glm::dvec2 s{layout.start.position.x, layout.start.position.z};
+    const double yaw = math::radians(layout.start.yaw_deg);
+    d.shapes.push_back(fill("start", "start", circle(s, 0.12), {0.85, 0.1, 0.1, 1.0}));
+    arrow(d, "start", "start", s, s + 0.45 * glm::dvec2(-std::sin(yaw), -std::cos(yaw)), {0.85, 0.1, 0.1, 1.0}, 0.035, false);
+    if (!path.empty()) {
+        math::Polygon2 line;
+        for (const math::HeadPose& p : path) line.push_back({p.position.x, p.position.z});
+        d.shapes.push_back(stroke("path", "walk", line, {0.1, 0.25, 0.85, 0.85}, 0.03));
+    }
+    add_labels(d, layout, r);
+    return d;
+}
+
+double plan_scale(const Drawing& d, int max_pixels) {
+    const glm::dvec2 extent = d.max - d.min;
+    return std::min(100.0, max_pixels / std::max({extent.x, extent.y, 1.0}));
+}
+
+}  // namespace impossible::design

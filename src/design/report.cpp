@@ -1,0 +1,102 @@
+// The designer's report: findings about a valid layout; see report.hpp.
+#include "design/report.hpp"
+
+#include <cstdio>
+
+namespace impossible::design {
+namespace {
+
+std::string fixed(double v, int digits) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", digits, v);
+    return text;
+}
+
+std::string ids(const layout::Layout& layout, const std::vector<int>& rooms) {
+    if (rooms.empty()) return " none";
+    std::string out;
+    for (const int r : rooms) out += " " + layout.rooms[r].id;
+    return out;
+}
+
+void find_outside(const layout::Layout& layout, Report& r) {
+    if (!layout.play_area) return;
+    const math::Polygon2 area = layout::outline(*layout.play_area);
+    for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
+        const double room_area = math::area(r.floors[i]);
+        const double outside = room_area - math::intersection_area(area, r.floors[i]);
+        if (outside > 1e-9 * (1.0 + room_area)) r.rooms_outside.push_back({static_cast<int>(i), outside});
+    }
+    for (std::size_t p = 0; p < layout.portals.size(); ++p) {
+        const layout::Portal& portal = layout.portals[p];
+        const auto line = door_line(portal, r.placement.rooms[portal.room].to_physical);
+        if (!math::segment_inside(area, line[0], line[1], 1e-9)) r.doors_outside.push_back(static_cast<int>(p));
+    }
+}
+
+void write_findings(const layout::Layout& layout, Report& r) {
+    for (const int room : r.unreachable)
+        r.findings.push_back("no door leads from the start to room \"" + layout.rooms[room].id + "\"");
+    for (const Overlap& o : r.overlaps) {
+        if (!o.noticeable) continue;
+        r.findings.push_back("rooms \"" + layout.rooms[o.a].id + "\" and \"" + layout.rooms[o.b].id +
+                             "\" overlap by " + fixed(o.percent, 1) + " % of the smaller floor (more than " +
+                             fixed(o.limit, 0) + " % is likely to be noticed)");
+    }
+    for (const RoomFinding& f : r.rooms_outside)
+        r.findings.push_back("room \"" + layout.rooms[f.room].id + "\" reaches " + fixed(f.outside_area, 2) +
+                             " m2 outside the play area");
+    for (const int p : r.doors_outside)
+        r.findings.push_back("door \"" + layout.portals[p].id + "\" is not inside the play area");
+    for (std::size_t i = 0; i < r.placement.rooms.size(); ++i)
+        if (r.placement.rooms[i].inconsistent)
+            r.findings.push_back("room \"" + layout.rooms[i].id +
+                                 "\" is reached at different places on the floor by different doors"
+                                 " (the first way is reported)");
+}
+
+}  // namespace
+
+Report make_report(const layout::Layout& layout) {
+    Report r;
+    r.summary = layout::summarize(layout);
+    r.placement = place_rooms(layout);
+    for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
+        r.floors.push_back(physical_floor(layout.rooms[i], r.placement.rooms[i].to_physical));
+        if (!r.placement.rooms[i].reachable) r.unreachable.push_back(static_cast<int>(i));
+    }
+    r.overlaps = room_overlaps(r.floors);
+    find_outside(layout, r);
+    write_findings(layout, r);
+    return r;
+}
+
+std::string report_text(const layout::Layout& layout, const Report& r) {
+    std::string out;
+    out += "start room: " + layout.rooms[layout.start.room].id + "\n";
+    out += "reachable rooms: " + std::to_string(r.placement.order.size()) + " of " +
+           std::to_string(layout.rooms.size()) + "\n";
+    out += "unreachable rooms:" + ids(layout, r.unreachable) + "\n";
+    out += "overlaps (% of the smaller floor; unnoticed up to " + fixed(kSmallRoomLimit, 0) + " % for rooms up to " +
+           fixed(kSmallRoomArea, 0) + " m2, " + fixed(kLargeRoomLimit, 0) + " % for larger, Suma et al. 2012):";
+    if (r.overlaps.empty()) out += " none";
+    out += "\n";
+    for (const Overlap& o : r.overlaps) {
+        out += "  " + layout.rooms[o.a].id + " / " + layout.rooms[o.b].id + ": " + fixed(o.area, 2) + " m2, " +
+               fixed(o.percent, 1) + " % (limit " + fixed(o.limit, 0) + " %)" +
+               (o.noticeable ? " noticeable" : " ok") + "\n";
+    }
+    if (layout.play_area) {
+        std::vector<int> rooms;
+        for (const RoomFinding& f : r.rooms_outside) rooms.push_back(f.room);
+        out += "rooms outside the play area as walked:" + ids(layout, rooms) + "\n";
+        out += "doors outside the play area:";
+        if (r.doors_outside.empty()) out += " none";
+        for (const int p : r.doors_outside) out += " " + layout.portals[p].id;
+        out += "\n";
+    }
+    out += "findings: " + std::to_string(r.findings.size()) + "\n";
+    return out;
+}
+
+}  // namespace impossible::design

@@ -1,0 +1,48 @@
+// The designer's report of `impossible validate` (cli.md, "Designer
+// commands"): besides the summary, where each room lies on the physical
+// floor, which rooms overlap and by how much (design/overlap.hpp), which
+// rooms no door leads to from the start, and which rooms and doors reach
+// outside the play area there. Every finding is a warning: the layout is
+// valid, but a walker would notice or could not get there.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "design/overlap.hpp"
+#include "design/placement.hpp"
+#include "layout/layout.hpp"
+
+namespace impossible::design {
+
+struct RoomFinding {
+    int room = -1;
+    double outside_area = 0.0;  // m² of its physical floor outside the play area
+};
+
+struct Report {
+    layout::Summary summary;
+    Placement placement;
+    std::vector<math::Polygon2> floors;   // physical floor of each room
+    std::vector<Overlap> overlaps;
+    std::vector<int> unreachable;          // rooms, file order
+    std::vector<RoomFinding> rooms_outside;  // with a play area: physical floors not inside it
+    std::vector<int> doors_outside;        // portals whose floor line is not inside the play area
+    std::vector<std::string> findings;     // one line each, for people
+};
+
+Report make_report(const layout::Layout& layout);
+
+// The lines `validate` prints after the summary.
+std::string report_text(const layout::Layout& layout, const Report& report);
+
+// The whole report as one JSON document; `warnings` are the loader's.
+nlohmann::ordered_json report_json(const layout::Layout& layout, const Report& report,
+                                   const std::vector<layout::Diagnostic>& warnings);
+
+// A list of problems as JSON, for `validate --json` on an invalid layout.
+nlohmann::ordered_json errors_json(const std::string& file, const std::vector<layout::Diagnostic>& errors);
+
+}  // namespace impossible::design

@@ -1,0 +1,124 @@
+// The designer's report as one JSON document (`validate --json`).
+#include <cmath>
+
+#include "design/report.hpp"
+
+namespace impossible::design {
+namespace {
+
+using nlohmann::ordered_json;
+
+// Rounded to a micrometre (or a thousandth of a percent), so that the
+// document reads well and does not change with the last bits of rounding.
+double rounded(double v) {
+    const double r = std::round(v * 1e6) / 1e6;
+    return r == 0.0 ? 0.0 : r;
+}
+
+ordered_json points(const math::Polygon2& poly) {
+    ordered_json out = ordered_json::array();
+    for (const glm::dvec2& p : poly) out.push_back({rounded(p.x), rounded(p.y)});
+    return out;
+}
+
+ordered_json summary_json(const layout::Layout& layout, const Report& r) {
+    const layout::Summary& s = r.summary;
+    ordered_json j;
+    j["rooms"] = s.rooms;
+    j["portals"] = s.portals;
+    j["pairs"] = s.pairs;
+    j["floor_area"] = rounded(s.floor_area);
+    if (layout.play_area) {
+        ordered_json area;
+        area["shape"] = layout.play_area->polygon.empty() ? "rectangle" : "polygon";
+        area["corners"] = points(layout::outline(*layout.play_area));
+        area["area"] = rounded(*s.play_area_area);
+        j["play_area"] = area;
+        j["expansion_ratio"] = rounded(*s.expansion_ratio);
+    } else {
+        j["play_area"] = nullptr;
+        j["expansion_ratio"] = nullptr;
+    }
+    ordered_json outside = ordered_json::array();
+    for (const std::string& id : s.rooms_outside_play_area) outside.push_back(id);
+    j["rooms_outside_play_area"] = outside;  // in the rooms' own coordinates, as the summary says
+    return j;
+}
+
+ordered_json rooms_json(const layout::Layout& layout, const Report& r) {
+    ordered_json rooms = ordered_json::array();
+    for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
+        const RoomPlacement& p = r.placement.rooms[i];
+        ordered_json room;
+        room["id"] = layout.rooms[i].id;
+        room["reachable"] = p.reachable;
+        room["doors_from_start"] = p.reachable ? ordered_json(p.doors) : ordered_json(nullptr);
+        room["entered_through"] = p.via >= 0 ? ordered_json(layout.portals[p.via].id) : ordered_json(nullptr);
+        room["floor_area"] = rounded(math::area(r.floors[i]));
+        room["physical_floor"] = points(r.floors[i]);
+        double outside = 0.0;
+        for (const RoomFinding& f : r.rooms_outside)
+            if (f.room == static_cast<int>(i)) outside = f.outside_area;
+        room["area_outside_play_area"] = rounded(outside);
+        room["placed_consistently"] = !p.inconsistent;
+        rooms.push_back(room);
+    }
+    return rooms;
+}
+
+}  // namespace
+
+ordered_json report_json(const layout::Layout& layout, const Report& r,
+                         const std::vector<layout::Diagnostic>& warnings) {
+    ordered_json j;
+    j["file"] = layout.source;
+    j["name"] = layout.name;
+    j["valid"] = true;
+    j["summary"] = summary_json(layout, r);
+    j["start_room"] = layout.rooms[layout.start.room].id;
+    j["rooms"] = rooms_json(layout, r);
+    ordered_json overlaps = ordered_json::array();
+    for (const Overlap& o : r.overlaps) {
+        ordered_json e;
+        e["rooms"] = {layout.rooms[o.a].id, layout.rooms[o.b].id};
+        e["area"] = rounded(o.area);
+        e["percent"] = rounded(o.percent);
+        e["limit_percent"] = o.limit;
+        e["noticeable"] = o.noticeable;
+        overlaps.push_back(e);
+    }
+    j["overlaps"] = overlaps;
+    ordered_json unreachable = ordered_json::array();
+    for (const int room : r.unreachable) unreachable.push_back(layout.rooms[room].id);
+    j["unreachable_rooms"] = unreachable;
+    ordered_json rooms_outside = ordered_json::array();
+    for (const RoomFinding& f : r.rooms_outside) rooms_outside.push_back(layout.rooms[f.room].id);
+    j["rooms_outside_play_area"] = rooms_outside;
+    ordered_json doors_outside = ordered_json::array();
+    for (const int p : r.doors_outside) doors_outside.push_back(layout.portals[p].id);
+    j["doors_outside_play_area"] = doors_outside;
+    ordered_json lines = ordered_json::array();
+    for (const layout::Diagnostic& d : warnings) lines.push_back(d.str());
+    for (const std::string& f : r.findings) lines.push_back(layout.source + ": " + f);
+    j["warnings"] = lines;
+    return j;
+}
+
+ordered_json errors_json(const std::string& file, const std::vector<layout::Diagnostic>& errors) {
+    ordered_json j;
+    j["file"] = file;
+    j["valid"] = false;
+    ordered_json list = ordered_json::array();
+    for (const layout::Diagnostic& d : errors) {
+        ordered_json e;
+        e["file"] = d.file;
+        e["line"] = d.line;
+        e["column"] = d.column;
+        e["message"] = d.message;
+        list.push_back(e);
+    }
+    j["errors"] = list;
+    return j;
+}
+
+}  // namespace impossible::design

@@ -1,0 +1,163 @@
+// The occupancy grid and A* of one room; see room_grid.hpp.
+#include "design/room_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+#include <variant>
+
+#include "design/placement.hpp"
+
+namespace impossible::design {
+namespace {
+
+// Distance from p to the axis-aligned rectangle lo..hi (0 inside).
+double rect_distance(const glm::dvec2& p, const glm::dvec2& lo, const glm::dvec2& hi) {
+    const double dx = std::max({lo.x - p.x, 0.0, p.x - hi.x});
+    const double dz = std::max({lo.y - p.y, 0.0, p.y - hi.y});
+    return std::hypot(dx, dz);
+}
+
+struct Footprint {
+    glm::dvec2 lo, hi;
+};
+
+// The floor rectangles of the props that reach below the head.
+std::vector<Footprint> prop_footprints(const layout::Room& room, double head_height) {
+    std::vector<Footprint> out;
+    for (const layout::Prop& prop : room.props) {
+        glm::dvec3 lo(INFINITY), hi(-INFINITY);
+        if (const auto* box = std::get_if<layout::BoxProp>(&prop)) {
+            lo = box->min;
+            hi = box->max;
+        } else {
+            const auto& model = std::get<layout::GltfProp>(prop);
+            for (const layout::ModelTriangle& t : model.triangles)
+                for (const glm::dvec3& v : t.position) {
+                    const glm::dvec3 p = layout::place_model_point(model, v);
+                    lo = glm::min(lo, p);
+                    hi = glm::max(hi, p);
+                }
+        }
+        if (lo.x > hi.x || lo.y > head_height + 0.2) continue;
+        out.push_back({{lo.x, lo.z}, {hi.x, hi.z}});
+    }
+    return out;
+}
+
+}  // namespace
+
+RoomGrid::RoomGrid(const layout::Layout& layout, int room_index, const math::dmat4& to_physical,
+                   const math::Polygon2& play_area, const GridOptions& o) {
+    const layout::Room& room = layout.rooms[room_index];
+    origin_ = {room.min.x, room.min.z};
+    const glm::dvec2 extent{room.max.x - room.min.x, room.max.z - room.min.z};
+    cell_ = std::max(o.cell, std::max(extent.x, extent.y) / kMaxCells);
+    nx_ = std::max(1, static_cast<int>(std::ceil(extent.x / cell_)));
+    nz_ = std::max(1, static_cast<int>(std::ceil(extent.y / cell_)));
+    const std::vector<Footprint> props = prop_footprints(room, o.head_height);
+    std::vector<std::array<glm::dvec2, 2>> doors;
+    for (const layout::Portal& p : layout.portals)
+        if (p.room == room_index) doors.push_back(door_line(p, math::dmat4(1.0)));
+    free_.assign(static_cast<std::size_t>(nx_) * nz_, 0);
+    for (int k = 0; k < nz_; ++k) {
+        for (int i = 0; i < nx_; ++i) {
+            const glm::dvec2 c = centre(i, k);
+            bool ok = c.x >= room.min.x + o.body_radius && c.x <= room.max.x - o.body_radius &&
+                      c.y >= room.min.z + o.body_radius && c.y <= room.max.z - o.body_radius;
+            for (std::size_t n = 0; ok && n < props.size(); ++n)
+                ok = rect_distance(c, props[n].lo, props[n].hi) >= o.body_radius;
+            for (std::size_t n = 0; ok && n < doors.size(); ++n)
+                ok = math::distance_to_segment(c, doors[n][0], doors[n][1]) >= o.body_radius;
+            if (ok && !play_area.empty()) {
+                const glm::dvec2 p = to_floor(to_physical, {c.x, 0.0, c.y});
+                ok = math::contains(play_area, p, 0.0) && math::distance_to_boundary(play_area, p) >= o.edge_margin;
+            }
+            free_[index(i, k)] = ok ? 1 : 0;
+        }
+    }
+}
+
+bool RoomGrid::cell_of(const glm::dvec2& p, int& i, int& k) const {
+    const glm::dvec2 f = (p - origin_) / cell_;
+    if (!(f.x >= 0.0 && f.y >= 0.0)) return false;
+    i = static_cast<int>(f.x);
+    k = static_cast<int>(f.y);
+    return i < nx_ && k < nz_;
+}
+
+bool RoomGrid::free(const glm::dvec2& p) const {
+    int i = 0, k = 0;
+    return cell_of(p, i, k) && free_[index(i, k)] != 0;
+}
+
+std::optional<glm::dvec2> RoomGrid::nearest_free(const glm::dvec2& p) const {
+    if (free(p)) return p;
+    std::optional<glm::dvec2> best;
+    double best_d = INFINITY;
+    for (int k = 0; k < nz_; ++k)
+        for (int i = 0; i < nx_; ++i) {
+            if (!free_[index(i, k)]) continue;
+            const double d = glm::distance(centre(i, k), p);
+            if (d < best_d) best_d = d, best = centre(i, k);
+        }
+    return best;
+}
+
+bool RoomGrid::clear(const glm::dvec2& a, const glm::dvec2& b) const {
+    const int steps = std::max(1, static_cast<int>(std::ceil(glm::distance(a, b) / (0.25 * cell_))));
+    for (int s = 0; s <= steps; ++s)
+        if (!free(a + (b - a) * (double(s) / steps))) return false;
+    return true;
+}
+
+std::vector<glm::dvec2> RoomGrid::straighten(const std::vector<glm::dvec2>& path) const {
+    std::vector<glm::dvec2> out{path.front()};
+    std::size_t at = 0;
+    while (at + 1 < path.size()) {
+        std::size_t next = path.size() - 1;
+        while (next > at + 1 && !clear(path[at], path[next])) --next;
+        out.push_back(path[next]);
+        at = next;
+    }
+    return out;
+}
+
+std::optional<std::vector<glm::dvec2>> RoomGrid::find_path(const glm::dvec2& from, const glm::dvec2& to) const {
+    int si = 0, sk = 0, gi = 0, gk = 0;
+    if (!free(from) || !free(to) || !cell_of(from, si, sk) || !cell_of(to, gi, gk)) return std::nullopt;
+    if (clear(from, to)) return std::vector<glm::dvec2>{from, to};
+    const int goal = index(gi, gk);
+    std::vector<double> cost(free_.size(), INFINITY);
+    std::vector<int> came(free_.size(), -1);
+    using Entry = std::pair<double, int>;  // (cost + heuristic, cell)
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+    cost[index(si, sk)] = 0.0;
+    open.push({0.0, index(si, sk)});
+    while (!open.empty()) {
+        const int at = open.top().second;
+        open.pop();
+        if (at == goal) break;
+        const int i = at % nx_, k = at / nx_;
+        for (int dk = -1; dk <= 1; ++dk)
+            for (int di = -1; di <= 1; ++di) {
+                const int ni = i + di, nk = k + dk;
+                if ((di == 0 && dk == 0) || ni < 0 || nk < 0 || ni >= nx_ || nk >= nz_) continue;
+                const int n = index(ni, nk);
+                if (!free_[n] || (di != 0 && dk != 0 && (!free_[index(ni, k)] || !free_[index(i, nk)]))) continue;
+                const double c = cost[at] + (di != 0 && dk != 0 ? std::sqrt(2.0) : 1.0) * cell_;
+                if (c >= cost[n]) continue;
+                cost[n] = c;
+                came[n] = at;
+                open.push({c + glm::distance(centre(ni, nk), to), n});
+            }
+    }
+    if (came[goal] < 0 && goal != index(si, sk)) return std::nullopt;
+    std::vector<glm::dvec2> path{to};
+    for (int at = came[goal]; at >= 0 && at != index(si, sk); at = came[at]) path.push_back(centre(at % nx_, at / nx_));
+    path.push_back(from);
+    std::reverse(path.begin(), path.end());
+    return straighten(path);
+}
+
+}  // namespace impossible::design
