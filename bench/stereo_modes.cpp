@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "app/layout_source.hpp"
+#include "bench/stats.hpp"
 #include "gl/context.hpp"
 #include "gl/gl.hpp"
 #include "render/renderer.hpp"
@@ -20,15 +21,7 @@
 
 using namespace impossible;
 
-namespace {
-
-double percentile(std::vector<double> v, double p) {
-    std::sort(v.begin(), v.end());
-    const size_t i = static_cast<size_t>(p * (v.size() - 1) + 0.5);
-    return v[i];
-}
-
-}  // namespace
+using bench::percentile;
 
 int main(int argc, char** argv) {
     std::optional<std::string> path;

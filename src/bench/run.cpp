@@ -198,13 +198,6 @@ struct Measurer {
 
 }  // namespace
 
-Spread spread_of(std::vector<double> v) {
-    if (v.empty()) return {};
-    std::sort(v.begin(), v.end());
-    auto at = [&](double q) { return v[static_cast<size_t>(q * (v.size() - 1) + 0.5)]; };
-    return {at(0.5), at(0.1), at(0.9)};
-}
-
 BenchResult run_bench(const BenchPlan& plan, const std::vector<BenchPose>& poses, const BenchOptions& options,
                       const std::string& gl_renderer) {
     Measurer m{plan, poses, options, {}, {}};

@@ -6,14 +6,9 @@
 #include <vector>
 
 #include "bench/plan.hpp"
+#include "bench/stats.hpp"
 
 namespace impossible::bench {
-
-// Statistics of a sample: median, 10th and 90th percentile (nearest rank).
-struct Spread {
-    double median = 0.0, p10 = 0.0, p90 = 0.0;
-};
-Spread spread_of(std::vector<double> values);
 
 struct PortalResult {
     int pose = 0;

@@ -34,6 +34,13 @@ PreviewView next_view(PreviewView view) {
     return PreviewView::Parallel;
 }
 
+render::FrameDesc default_preview_frame() {
+    render::FrameDesc f;
+    f.eye_width = 640;
+    f.eye_height = 480;
+    return f;
+}
+
 const char* preview_help() {
     return "usage: impossible preview [LAYOUT] [options]\n"
            "A window showing the side-by-side stereo view of a layout (the built-in default without\n"
@@ -79,16 +86,16 @@ PreviewOptions parse_preview_options(const std::vector<std::string>& args, bool*
     if (a.flag("--cross")) o.view = PreviewView::Cross;
     if (a.flag("--anaglyph")) o.view = PreviewView::Anaglyph;
     if (auto v = a.value("--size")) {
-        std::tie(o.eye_width, o.eye_height) = parse_size("--size", *v);
-        if (o.eye_width > 4096 || o.eye_height > 4096)
+        std::tie(o.frame.eye_width, o.frame.eye_height) = parse_size("--size", *v);
+        if (o.frame.eye_width > 4096 || o.frame.eye_height > 4096)
             throw InputError("--size: " + *v + " is larger than a window can be (at most 4096x4096 per eye)");
     }
-    if (auto v = a.value("--ipd")) o.ipd = parse_ipd(*v);
-    if (auto v = a.value("--fov")) o.fov_y_deg = parse_fov(*v);
-    if (auto v = a.value("--max-depth")) o.max_depth = parse_int("--max-depth", *v, 0, 250);
-    if (auto v = a.value("--stereo")) o.stereo = parse_stereo(*v);
-    if (auto v = a.value("--clip")) o.clip = parse_clip(*v);
-    o.cull_portals = !a.flag("--no-cull");
+    if (auto v = a.value("--ipd")) o.frame.ipd = parse_ipd(*v);
+    if (auto v = a.value("--fov")) o.frame.fov_y_deg = parse_fov(*v);
+    if (auto v = a.value("--max-depth")) o.frame.max_depth = parse_int("--max-depth", *v, 0, 250);
+    if (auto v = a.value("--stereo")) o.frame.stereo = parse_stereo(*v);
+    if (auto v = a.value("--clip")) o.frame.clip = parse_clip(*v);
+    o.frame.cull_portals = !a.flag("--no-cull");
     o.hud = !a.flag("--no-hud");
     o.minimap = !a.flag("--no-minimap");
     o.vsync = !a.flag("--no-vsync");

@@ -19,16 +19,15 @@ enum class PreviewView {
 const char* view_name(PreviewView view);
 PreviewView next_view(PreviewView view);
 
+// The renderer's defaults with eyes of 640 × 480.
+render::FrameDesc default_preview_frame();
+
 struct PreviewOptions {
     std::optional<std::string> layout_path;  // none: the built-in default (no reload)
-    int eye_width = 640;
-    int eye_height = 480;
-    double ipd = 0.064;
-    double fov_y_deg = 90.0;
-    int max_depth = 8;
-    render::StereoMode stereo = render::StereoMode::ClipShift;
-    render::ClipMode clip = render::ClipMode::ClipDistance;
-    bool cull_portals = true;
+    // Every frame setting (eye size, ipd, fov, max_depth, stereo, clip,
+    // cull_portals); the head, the room and, in the window, the eye size are
+    // set each frame.
+    render::FrameDesc frame = default_preview_frame();
     PreviewView view = PreviewView::Parallel;
     std::optional<std::string> path_file;    // --path: physical poses, one a frame
     std::optional<std::string> screenshots;  // --screenshots DIR: every frame saved

@@ -3,361 +3,208 @@
 // Each frame: input → physical head → walker (teleports as `walk`) → the
 // virtual pose → the renderer's side-by-side frame → the window (parallel,
 // cross or anaglyph) with the boundary grid, HUD and minimap drawn over it.
-#include <chrono>
-#include <cstdio>
-#include <deque>
-#include <filesystem>
-#include <fstream>
+// The state lives in a PreviewSession (session.hpp); this file holds the
+// steps of one frame.
+#include "preview/preview_command.hpp"
 
-#include "gl/gl.hpp"  // before GLFW, which must not include GL itself
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <ostream>
+#include <string>
+#include <vector>
 
 #include "app/cli_args.hpp"
-#include "app/cmd_walk.hpp"
-#include "base/format.hpp"
-#include "preview/preview_command.hpp"
-#include "app/layout_source.hpp"
-#include "image/png.hpp"
-#include "preview/grid.hpp"
-#include "preview/head.hpp"
-#include "preview/hud.hpp"
-#include "preview/minimap.hpp"
-#include "preview/options.hpp"
-#include "preview/overlay.hpp"
-#include "layout/path_file.hpp"
-#include "preview/present.hpp"
-#include "preview/reload.hpp"
-#include "preview/window.hpp"
+#include "gl/gl.hpp"
 #include "math/projection.hpp"
-#include "render/renderer.hpp"
-#include "scene/scene.hpp"
-#include "scene/walk.hpp"
+#include "preview/grid.hpp"
+#include "preview/hud.hpp"
+#include "preview/hud_text.hpp"
+#include "preview/keys.hpp"
+#include "preview/minimap.hpp"
+#include "preview/session.hpp"
 
 namespace impossible::preview {
 
 using app::InputError;
 using app::kExitOk;
-using app::load_layout_or_default;
+
 namespace {
 
-namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
-constexpr std::size_t kTimedFrames = 60;
-constexpr double kReloadPollSeconds = 0.25;
+double eye_aspect(const PreviewOptions& o) { return double(o.frame.eye_width) / o.frame.eye_height; }
 
-// The layout being shown and what is built from it. The walker points into
-// the layout, so both live on the heap and are replaced together.
-struct Shown {
-    std::unique_ptr<layout::Layout> layout;
-    std::unique_ptr<render::Renderer> renderer;
-    std::unique_ptr<scene::Walker> walker;
-};
+// The frame's key presses and clicks: options toggled, the cursor captured or
+// released. What is left to do is returned.
+KeyEffects apply_keys(PreviewSession& s) {
+    PreviewWindow& window = *s.window;
+    const KeyEffects keys = apply_actions(window.input.actions, cursor_captured(window), s.options);
+    if (keys.release_cursor) capture_cursor(window, false);
+    if (!keys.quit && window.input.clicked && !cursor_captured(window)) capture_cursor(window, true);
+    return keys;
+}
 
-// Builds the renderer and a walker for `layout`, in the room named `room_id`
-// if it still exists (else the start room). Empty renderer and `error` on failure.
-Shown build_shown(layout::Layout layout, const std::string& room_id, std::string& error) {
-    Shown s;
-    s.layout = std::make_unique<layout::Layout>(std::move(layout));
-    render::RendererResult made = render::create_renderer(*s.layout, scene::build_scene(*s.layout));
-    if (!made.renderer) {
-        error = made.error;
-        return {};
+// The physical head: the path while it lasts, then the keys and mouse.
+math::HeadPose next_physical_head(const PreviewSession& s, long frame, double dt) {
+    if (static_cast<std::size_t>(frame) < s.path.poses.size()) return s.path.poses[static_cast<std::size_t>(frame)];
+    const WindowInput& in = s.window->input;
+    const MoveInput move = move_input(in.held, dt, cursor_captured(*s.window), in.mouse_dx, in.mouse_dy);
+    return move_head(s.physical, move, s.shown.layout->play_area);
+}
+
+// The options' frame with the walker's head and room. Screenshots are taken
+// at --size, as `render --size` draws; otherwise the eyes are drawn at the
+// size they have in the window.
+render::FrameDesc frame_desc(const PreviewSession& s, const PixelRect& eye) {
+    render::FrameDesc desc = s.options.frame;
+    const scene::Walker& walker = *s.shown.walker;
+    desc.head = math::head_pose_from(walker.position(), walker.rotation());
+    desc.room = walker.room();
+    if (!s.options.screenshots) {
+        desc.eye_width = eye.width;
+        desc.eye_height = eye.height;
     }
-    s.renderer = std::move(made.renderer);
-    const int room = layout::find_room(*s.layout, room_id);
-    s.walker = room >= 0 ? std::make_unique<scene::Walker>(*s.layout, room) : std::make_unique<scene::Walker>(*s.layout);
-    return s;
+    return desc;
 }
 
-math::HeadPose start_pose(const layout::Layout& layout) {
-    math::HeadPose p;
-    p.position = layout.start.position;
-    p.yaw_deg = layout.start.yaw_deg;
-    return p;
+FrameRecord frame_record(const PreviewSession& s, long frame, const render::FrameDesc& desc,
+                         const std::vector<int>& passed) {
+    const layout::Layout& lay = *s.shown.layout;
+    FrameRecord r;
+    r.frame = frame;
+    r.room = lay.rooms[desc.room].id;
+    for (int p : passed) r.teleports.push_back(lay.portals[p].id);
+    r.pose = desc.head;
+    r.physical = s.physical;
+    r.position = s.shown.walker->position();
+    r.forward = s.shown.walker->forward();
+    r.eye_width = desc.eye_width;
+    r.eye_height = desc.eye_height;
+    return r;
 }
 
-std::string numbered(const fs::path& dir, const char* stem, long n, const char* suffix = ".png") {
-    char name[64];
-    std::snprintf(name, sizeof name, "%s-%04ld%s", stem, n, suffix);
-    return (dir / name).string();
+// With --screenshots: the renderer's image and the frame's line. Returns the
+// seconds spent saving (not part of the frame time; the drawing it waits for is).
+double save_rendered_frame(PreviewSession& s, long frame, const render::FrameDesc& desc,
+                           const std::vector<int>& passed) {
+    if (!s.files.every_frame) return 0.0;
+    glFinish();
+    const Clock::time_point start = Clock::now();
+    save_frame(s.files, render::read_target(s.shown.renderer->target), frame_record(s, frame, desc, passed));
+    return seconds_since(start);
 }
 
-std::string json_numbers(std::initializer_list<double> values) {
-    std::string s = "[";
-    for (double v : values) s += (s.size() > 1 ? "," : "") + format_number(v);
-    return s + "]";
+// The boundary grid, per eye, seen by the physical eyes.
+void draw_boundary_grids(PreviewSession& s, const WindowLayout& places, int fb_w, int fb_h) {
+    const std::optional<layout::PlayArea>& area = s.shown.layout->play_area;
+    if (!area) return;
+    math::Frustum frustum;
+    frustum.fov_y_deg = s.options.frame.fov_y_deg;
+    frustum.aspect = eye_aspect(s.options);
+    const math::dmat4 projection = math::perspective_reversed_z(frustum);
+    const std::array<math::Eye, 2> eyes = math::eyes_of(s.physical, s.options.frame.ipd);
+    for (int e = 0; e < 2; ++e) {
+        OverlayBatch grid;
+        if (add_boundary_grid(grid, *area, s.physical.position, eyes[e], projection) == 0) break;
+        const PixelRect& r = places.eye_rects[e];
+        glViewport(r.x, r.y, r.width, r.height);
+        if (s.options.view == PreviewView::Anaglyph) glColorMask(e == 0, e == 1, e == 1, GL_TRUE);
+        draw_overlay(s.overlay, grid);
+    }
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glViewport(0, 0, fb_w, fb_h);
 }
 
-std::string pose_json(const math::HeadPose& p) {
-    return json_numbers({p.position.x, p.position.y, p.position.z, p.yaw_deg, p.pitch_deg, p.roll_deg});
+HudFacts hud_facts(const PreviewSession& s, const render::FrameDesc& desc) {
+    HudFacts f;
+    f.title = s.title;
+    f.median_ms = median_ms(s.clock.frame_ms);
+    f.timed_frames = s.clock.frame_ms.size();
+    f.eye_width = desc.eye_width;
+    f.eye_height = desc.eye_height;
+    f.room = s.shown.layout->rooms[desc.room].id;
+    f.portal_passes_drawn = s.stats.portal_passes_drawn;
+    f.portal_passes_culled = s.stats.portal_passes_culled;
+    f.max_level_reached = s.stats.max_level_reached;
+    f.physical = s.physical;
+    f.cursor_captured = cursor_captured(*s.window);
+    return f;
 }
 
-std::string fixed(double v, int decimals) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-    return buf;
+// The renderer's image in the window, then the grid, HUD and minimap over it.
+void draw_window(PreviewSession& s, const WindowLayout& places, const render::FrameDesc& desc, int fb_w, int fb_h) {
+    OverlayGlState guard;
+    present(s.presenter, s.shown.renderer->target, places, s.options.view, fb_w, fb_h);
+    draw_boundary_grids(s, places, fb_w, fb_h);
+
+    OverlayBatch batch;
+    batch.width = fb_w;
+    batch.height = fb_h;
+    const float scale = fb_h < 400 ? 1.0f : fb_h < 800 ? 1.5f : 2.0f;
+    add_hud(batch, hud_text(s.options, hud_facts(s, desc), s.reload_errors), scale);
+    if (s.options.minimap) {
+        const float side = std::min(0.42f * float(fb_h), 0.3f * float(fb_w));
+        const scene::Walker& walker = *s.shown.walker;
+        const MinimapInput map{s.shown.layout.get(), desc.room, walker.physical_to_virtual(),
+                               &walker.links().transfer, s.physical};
+        add_minimap(batch, map, {float(fb_w) - side - 8.0f, float(fb_h) - side - 8.0f}, side);
+    }
+    draw_overlay(s.overlay, batch);
 }
 
-void write_or_throw(const std::string& path, int w, int h, int channels, const std::vector<std::uint8_t>& pixels) {
-    if (std::string e = image::write_png(path, w, h, channels, pixels); !e.empty()) throw InputError(e);
+// window-NNNN.png with --screenshots, screenshot-NNNN.png after P or F12.
+// Returns the seconds spent.
+double save_window_files(PreviewSession& s, long frame, bool screenshot, int fb_w, int fb_h, std::ostream& err) {
+    if (s.files.every_frame) glFinish();
+    const Clock::time_point start = Clock::now();
+    if (s.files.every_frame) save_window(s.files, frame, fb_w, fb_h, read_window(fb_w, fb_h));
+    if (screenshot) err << "saved " << save_screenshot(s.files, fb_w, fb_h, read_window(fb_w, fb_h)) << "\n";
+    return seconds_since(start);
+}
+
+// One frame; false when the preview ends.
+bool run_frame(PreviewSession& s, long frame, std::ostream& err) {
+    poll_input(*s.window);
+    if (should_close(*s.window)) return false;
+    const KeyEffects keys = apply_keys(s);
+    if (keys.quit) return false;
+    const Clock::time_point now = Clock::now();
+    const double dt = tick(s.clock, frame, now);
+    poll_reload(s, now);
+    if (keys.reset) reset_walk(s);
+    s.physical = next_physical_head(s, frame, dt);
+    const std::vector<int> passed = s.shown.walker->step(s.physical);
+
+    int fb_w = 0, fb_h = 0;
+    framebuffer_size(*s.window, fb_w, fb_h);
+    if (fb_w <= 0 || fb_h <= 0) return true;  // minimised
+    const WindowLayout places = window_layout(fb_w, fb_h, eye_aspect(s.options), s.options.view);
+    const render::FrameDesc desc = frame_desc(s, places.eye_rects[0]);
+    if (std::string e = render::draw_frame(*s.shown.renderer, desc, &s.stats); !e.empty()) throw InputError(e);
+    s.clock.io_seconds = save_rendered_frame(s, frame, desc, passed);
+    draw_window(s, places, desc, fb_w, fb_h);
+    s.shown.renderer->state.invalidate();
+    s.clock.io_seconds += save_window_files(s, frame, keys.screenshot, fb_w, fb_h, err);
+    swap_buffers(*s.window);
+    return true;
 }
 
 }  // namespace
 
 int run_preview_command(const app::Args& args, std::ostream& out, std::ostream& err) {
     bool help = false;
-    PreviewOptions o = parse_preview_options(args, &help);
+    PreviewOptions options = parse_preview_options(args, &help);
     if (help) {
         out << preview_help();
         return kExitOk;
     }
-    // Everything that can be checked without a window is checked first.
-    const layout::Layout first = load_layout_or_default(o.layout_path);
-    layout::PathFile path;
-    if (o.path_file) {
-        path = layout::read_path_file(*o.path_file);
-        if (!path.error.empty()) throw InputError(path.error);
-    }
-    const fs::path shots = o.screenshots ? fs::path(*o.screenshots) : fs::path(".");
-    std::ofstream frames_log;
-    if (o.screenshots) {
-        std::error_code ec;
-        fs::create_directories(shots, ec);
-        if (!fs::is_directory(shots)) throw InputError(*o.screenshots + ": cannot create the screenshot directory");
-        frames_log.open(shots / "frames.jsonl", std::ios::binary | std::ios::trunc);
-        if (!frames_log) throw InputError((shots / "frames.jsonl").string() + ": cannot write");
-    }
-
-    const double aspect = double(o.eye_width) / o.eye_height;
-    const std::string title = "impossible preview - " + (first.name.empty() ? first.source : first.name);
-    WindowResult opened = open_window(o.view == PreviewView::Anaglyph ? o.eye_width : 2 * o.eye_width,
-                                      o.eye_height, title, o.vsync && !o.screenshots);
-    if (!opened.window) throw InputError(opened.error);
-    PreviewWindow& window = *opened.window;
-
-    std::string error;
-    Shown shown = build_shown(first, "", error);
-    if (!shown.renderer) throw InputError(error);
-    OverlayProgram overlay = build_overlay_program(error);
-    if (!error.empty()) throw InputError(error);
-    Presenter presenter = build_presenter(error);
-    if (!error.empty()) throw InputError(error);
-
-    std::optional<LayoutWatcher> watcher;
-    if (o.layout_path) watcher = watch_layout(*o.layout_path);
-    std::vector<std::string> reload_errors;
-
-    math::HeadPose physical = start_pose(*shown.layout);
-    if (!o.path_file) capture_cursor(window, true);
-    std::deque<double> frame_ms;
-    render::FrameStats stats;
-    Clock::time_point last = Clock::now(), last_poll = last;
-    long shot_number = 0;
-    double io_seconds = 0.0;  // spent writing screenshots last frame: not part of the frame time
-
-    for (long frame = 0; !o.frames || frame < *o.frames; ++frame) {
-        poll_input(window);
-        if (should_close(window)) break;
-        const WindowInput& in = window.input;
-        bool quit = false, screenshot = false, reset = false;
-        for (int key : in.keys_pressed) {
-            switch (key) {
-                case GLFW_KEY_ESCAPE:
-                    if (cursor_captured(window)) capture_cursor(window, false);
-                    else quit = true;
-                    break;
-                case GLFW_KEY_H: o.hud = !o.hud; break;
-                case GLFW_KEY_M: o.minimap = !o.minimap; break;
-                case GLFW_KEY_V: o.view = next_view(o.view); break;
-                case GLFW_KEY_LEFT_BRACKET: o.max_depth = std::max(0, o.max_depth - 1); break;
-                case GLFW_KEY_RIGHT_BRACKET: o.max_depth = std::min(250, o.max_depth + 1); break;
-                case GLFW_KEY_MINUS: case GLFW_KEY_KP_SUBTRACT: o.ipd = std::max(0.0, o.ipd - 0.002); break;
-                case GLFW_KEY_EQUAL: case GLFW_KEY_KP_ADD: o.ipd = std::min(10.0, o.ipd + 0.002); break;
-                case GLFW_KEY_C:
-                    o.clip = o.clip == render::ClipMode::ClipDistance ? render::ClipMode::Oblique
-                                                                      : render::ClipMode::ClipDistance;
-                    break;
-                case GLFW_KEY_X: o.cull_portals = !o.cull_portals; break;
-                case GLFW_KEY_P: case GLFW_KEY_F12: screenshot = true; break;
-                case GLFW_KEY_R: reset = true; break;
-                default: break;
-            }
-        }
-        if (quit) break;
-        if (in.clicked && !cursor_captured(window)) capture_cursor(window, true);
-
-        const Clock::time_point now = Clock::now();
-        const double dt = std::chrono::duration<double>(now - last).count();
-        last = now;
-        if (frame > 0) {
-            frame_ms.push_back(std::max(0.0, dt - io_seconds) * 1000.0);
-            if (frame_ms.size() > kTimedFrames) frame_ms.pop_front();
-        }
-
-        // Live reload: a good edit replaces the layout, a bad one is listed in the HUD.
-        if (watcher && std::chrono::duration<double>(now - last_poll).count() >= kReloadPollSeconds) {
-            last_poll = now;
-            ReloadResult r = poll_layout(*watcher);
-            if (r.kind == ReloadResult::Failed) reload_errors = r.errors;
-            if (r.kind == ReloadResult::Reloaded) {
-                const std::string room_id = shown.layout->rooms[shown.walker->room()].id;
-                const bool walking = shown.walker->started();
-                const math::dmat4 w = shown.walker->physical_to_virtual();
-                Shown next = build_shown(std::move(*r.layout), room_id, error);
-                if (next.renderer) {
-                    // Walk on where the head was: same room (if it still
-                    // exists) and the same physical-to-virtual mapping.
-                    if (walking && layout::find_room(*next.layout, room_id) >= 0) next.walker->resume(w, physical);
-                    shown = std::move(next);
-                    reload_errors.clear();
-                } else {
-                    reload_errors = {"the reloaded layout cannot be drawn: " + error};
-                }
-            }
-        }
-        if (reset) {
-            shown.walker = std::make_unique<scene::Walker>(*shown.layout);
-            physical = start_pose(*shown.layout);
-        }
-
-        // The physical head: the path while it lasts, then the keys and mouse.
-        if (o.path_file && static_cast<std::size_t>(frame) < path.poses.size()) {
-            physical = path.poses[static_cast<std::size_t>(frame)];
-        } else {
-            MoveInput move;
-            move.dt = std::min(dt, 0.1);
-            auto held = [&](int a, int b) { return key_down(window, a) || key_down(window, b); };
-            move.forward = int(held(GLFW_KEY_W, GLFW_KEY_UP)) - int(held(GLFW_KEY_S, GLFW_KEY_DOWN));
-            move.right = int(held(GLFW_KEY_D, GLFW_KEY_RIGHT)) - int(held(GLFW_KEY_A, GLFW_KEY_LEFT));
-            move.up = int(key_down(window, GLFW_KEY_E)) - int(key_down(window, GLFW_KEY_Q));
-            move.fast = held(GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT);
-            if (cursor_captured(window)) {
-                move.mouse_dx = in.mouse_dx;
-                move.mouse_dy = in.mouse_dy;
-            }
-            physical = move_head(physical, move, shown.layout->play_area);
-        }
-        const std::vector<int> passed = shown.walker->step(physical);
-        const layout::Layout& lay = *shown.layout;
-        const math::HeadPose pose = math::head_pose_from(shown.walker->position(), shown.walker->rotation());
-
-        int fb_w = 0, fb_h = 0;
-        framebuffer_size(window, fb_w, fb_h);
-        if (fb_w <= 0 || fb_h <= 0) continue;  // minimised
-        const WindowLayout places = window_layout(fb_w, fb_h, aspect, o.view);
-
-        render::FrameDesc desc;
-        desc.head = pose;
-        desc.room = shown.walker->room();
-        desc.ipd = o.ipd;
-        desc.fov_y_deg = o.fov_y_deg;
-        // Screenshots are taken at --size, as `render --size` draws; otherwise
-        // the eyes are drawn at the size they have in the window.
-        desc.eye_width = o.screenshots ? o.eye_width : places.eye_rects[0].width;
-        desc.eye_height = o.screenshots ? o.eye_height : places.eye_rects[0].height;
-        desc.max_depth = o.max_depth;
-        desc.stereo = o.stereo;
-        desc.clip = o.clip;
-        desc.cull_portals = o.cull_portals;
-        if (std::string e = render::draw_frame(*shown.renderer, desc, &stats); !e.empty()) throw InputError(e);
-
-        // Saving frames is not part of the frame time (the drawing it waits for is).
-        if (o.screenshots) glFinish();
-        const Clock::time_point io_start = Clock::now();
-        if (o.screenshots) {
-            const image::Image image = render::read_target(shown.renderer->target);
-            write_or_throw(numbered(shots, "frame", frame), image.width, image.height, 3, image.rgb);
-            write_or_throw(numbered(shots, "frame", frame, "-ids.png"), image.width, image.height, 1, image.ids);
-            std::string line = "{\"frame\":" + std::to_string(frame) + ",\"room\":\"" + lay.rooms[desc.room].id +
-                               "\",\"teleports\":[";
-            for (std::size_t k = 0; k < passed.size(); ++k)
-                line += (k ? ",\"" : "\"") + lay.portals[passed[k]].id + "\"";
-            const math::dvec3 p = shown.walker->position(), f = shown.walker->forward();
-            line += "],\"pose\":" + pose_json(pose) + ",\"physical\":" + pose_json(physical) +
-                    ",\"position\":" + json_numbers({p.x, p.y, p.z}) + ",\"forward\":" + json_numbers({f.x, f.y, f.z}) +
-                    ",\"eye_size\":[" + std::to_string(desc.eye_width) + "," + std::to_string(desc.eye_height) + "]}\n";
-            frames_log << line << std::flush;
-        }
-        io_seconds = std::chrono::duration<double>(Clock::now() - io_start).count();
-
-        {
-            OverlayGlState guard;
-            present(presenter, shown.renderer->target, places, o.view, fb_w, fb_h);
-
-            // The boundary grid, per eye, seen by the physical eyes.
-            if (lay.play_area) {
-                math::Frustum frustum;
-                frustum.fov_y_deg = o.fov_y_deg;
-                frustum.aspect = aspect;
-                const math::dmat4 projection = math::perspective_reversed_z(frustum);
-                const std::array<math::Eye, 2> eyes = math::eyes_of(physical, o.ipd);
-                for (int e = 0; e < 2; ++e) {
-                    OverlayBatch grid;
-                    if (add_boundary_grid(grid, *lay.play_area, physical.position, eyes[e], projection) == 0) break;
-                    const PixelRect& r = places.eye_rects[e];
-                    glViewport(r.x, r.y, r.width, r.height);
-                    if (o.view == PreviewView::Anaglyph)
-                        glColorMask(e == 0, e == 1, e == 1, GL_TRUE);
-                    draw_overlay(overlay, grid);
-                }
-                glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-                glViewport(0, 0, fb_w, fb_h);
-            }
-
-            OverlayBatch batch;
-            batch.width = fb_w;
-            batch.height = fb_h;
-            const float scale = fb_h < 400 ? 1.0f : fb_h < 800 ? 1.5f : 2.0f;
-            HudText hud;
-            if (o.hud) {
-                const math::dvec3 h = physical.position;
-                hud.lines = {
-                    title + "   view: " + view_name(o.view),
-                    "frame " + fixed(median_ms(frame_ms), 1) + " ms (median of " + std::to_string(frame_ms.size()) +
-                        ")   eye " + std::to_string(desc.eye_width) + "x" + std::to_string(desc.eye_height),
-                    "room " + lay.rooms[desc.room].id + "   portal passes " + std::to_string(stats.portal_passes_drawn) +
-                        " drawn, " + std::to_string(stats.portal_passes_culled) + " culled",
-                    "recursion depth " + std::to_string(o.max_depth) + " (reached " +
-                        std::to_string(stats.max_level_reached) + ")   IPD " + fixed(o.ipd * 1000.0, 0) + " mm",
-                    std::string("clip ") + (o.clip == render::ClipMode::ClipDistance ? "clip-distance" : "oblique") +
-                        "   culling " + (o.cull_portals ? "on" : "off"),
-                    "physical head " + fixed(h.x, 2) + " " + fixed(h.y, 2) + " " + fixed(h.z, 2) + "  yaw " +
-                        fixed(physical.yaw_deg, 0) + "  pitch " + fixed(physical.pitch_deg, 0),
-                    cursor_captured(window) ? "Esc releases the mouse" : "click to look around, Esc quits",
-                    "WASD/arrows Q/E move  H hud  M map  V view  [ ] depth  - = IPD  C clip  X cull  P shot  R reset",
-                };
-            }
-            if (!reload_errors.empty()) {
-                hud.errors.push_back("layout reload failed; still showing the last good layout:");
-                for (std::size_t i = 0; i < reload_errors.size() && i < 8; ++i) hud.errors.push_back(reload_errors[i]);
-                if (reload_errors.size() > 8)
-                    hud.errors.push_back("... and " + std::to_string(reload_errors.size() - 8) + " more");
-            }
-            add_hud(batch, hud, scale);
-            if (o.minimap) {
-                const float side = std::min(0.42f * float(fb_h), 0.3f * float(fb_w));
-                MinimapInput map{&lay, desc.room, shown.walker->physical_to_virtual(), &shown.walker->links().transfer,
-                                 physical};
-                add_minimap(batch, map, {float(fb_w) - side - 8.0f, float(fb_h) - side - 8.0f}, side);
-            }
-            draw_overlay(overlay, batch);
-        }
-        shown.renderer->state.invalidate();
-
-        if (o.screenshots) glFinish();
-        const Clock::time_point io_resume = Clock::now();
-        if (o.screenshots) write_or_throw(numbered(shots, "window", frame), fb_w, fb_h, 3, read_window(fb_w, fb_h));
-        if (screenshot) {
-            while (fs::exists(numbered(shots, "screenshot", shot_number))) ++shot_number;
-            const std::string name = numbered(shots, "screenshot", shot_number);
-            write_or_throw(name, fb_w, fb_h, 3, read_window(fb_w, fb_h));
-            err << "saved " << name << "\n";
-        }
-        io_seconds += std::chrono::duration<double>(Clock::now() - io_resume).count();
-        swap_buffers(window);
-    }
+    PreviewSession session;
+    open_session(session, std::move(options));
+    for (long frame = 0; !session.options.frames || frame < *session.options.frames; ++frame)
+        if (!run_frame(session, frame, err)) break;
     return kExitOk;
 }
 

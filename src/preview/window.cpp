@@ -1,6 +1,7 @@
 #include "preview/window.hpp"
 
 #include <cstdlib>
+#include <optional>
 
 #include "gl/gl.hpp"
 #define GLFW_INCLUDE_NONE
@@ -18,8 +19,40 @@ std::string glfw_error() {
 
 WindowInput& input_of(GLFWwindow* w) { return static_cast<PreviewWindow*>(glfwGetWindowUserPointer(w))->input; }
 
+std::optional<Action> action_of_key(int key) {
+    switch (key) {
+        case GLFW_KEY_ESCAPE: return Action::Escape;
+        case GLFW_KEY_H: return Action::ToggleHud;
+        case GLFW_KEY_M: return Action::ToggleMinimap;
+        case GLFW_KEY_V: return Action::NextView;
+        case GLFW_KEY_LEFT_BRACKET: return Action::DepthDown;
+        case GLFW_KEY_RIGHT_BRACKET: return Action::DepthUp;
+        case GLFW_KEY_MINUS: case GLFW_KEY_KP_SUBTRACT: return Action::IpdDown;
+        case GLFW_KEY_EQUAL: case GLFW_KEY_KP_ADD: return Action::IpdUp;
+        case GLFW_KEY_C: return Action::NextClip;
+        case GLFW_KEY_X: return Action::ToggleCulling;
+        case GLFW_KEY_P: case GLFW_KEY_F12: return Action::Screenshot;
+        case GLFW_KEY_R: return Action::Reset;
+        default: return std::nullopt;
+    }
+}
+
 void on_key(GLFWwindow* w, int key, int, int action, int) {
-    if (action == GLFW_PRESS) input_of(w).keys_pressed.push_back(key);  // a held key toggles once
+    if (action != GLFW_PRESS) return;  // a held key toggles once
+    if (const std::optional<Action> a = action_of_key(key)) input_of(w).actions.push_back(*a);
+}
+
+HeldKeys held_keys(GLFWwindow* w) {
+    auto down = [&](int key) { return glfwGetKey(w, key) == GLFW_PRESS; };
+    auto axis = [&](int plus_a, int plus_b, int minus_a, int minus_b) {
+        return int(down(plus_a) || down(plus_b)) - int(down(minus_a) || down(minus_b));
+    };
+    HeldKeys held;
+    held.forward = axis(GLFW_KEY_W, GLFW_KEY_UP, GLFW_KEY_S, GLFW_KEY_DOWN);
+    held.right = axis(GLFW_KEY_D, GLFW_KEY_RIGHT, GLFW_KEY_A, GLFW_KEY_LEFT);
+    held.up = int(down(GLFW_KEY_E)) - int(down(GLFW_KEY_Q));
+    held.fast = down(GLFW_KEY_LEFT_SHIFT) || down(GLFW_KEY_RIGHT_SHIFT);
+    return held;
 }
 
 void on_cursor(GLFWwindow* w, double x, double y) {
@@ -98,13 +131,13 @@ bool cursor_captured(const PreviewWindow& w) {
 }
 
 void poll_input(PreviewWindow& w) {
-    w.input.keys_pressed.clear();
+    w.input.actions.clear();
     w.input.mouse_dx = w.input.mouse_dy = 0.0;
     w.input.clicked = false;
     glfwPollEvents();
+    w.input.held = held_keys(w.window);
 }
 
-bool key_down(const PreviewWindow& w, int key) { return glfwGetKey(w.window, key) == GLFW_PRESS; }
 bool should_close(const PreviewWindow& w) { return glfwWindowShouldClose(w.window); }
 void request_close(PreviewWindow& w) { glfwSetWindowShouldClose(w.window, GLFW_TRUE); }
 void framebuffer_size(const PreviewWindow& w, int& width, int& height) {

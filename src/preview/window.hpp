@@ -1,18 +1,22 @@
 // The preview's GLFW window with an OpenGL 4.5 core context, GL loaded with
 // glad through glfwGetProcAddress, and the input of each frame collected from
-// GLFW's callbacks.
+// GLFW's callbacks. GLFW's key codes stay in window.cpp: the input holds the
+// preview's actions and held movement keys (actions.hpp).
 #pragma once
 
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "preview/actions.hpp"
+
 struct GLFWwindow;
 
 namespace impossible::preview {
 
 struct WindowInput {
-    std::vector<int> keys_pressed;  // GLFW key codes pressed since the last frame, in order (no repeats)
+    std::vector<Action> actions;  // keys pressed since the last frame, in order (no repeats)
+    HeldKeys held;                // the movement keys down after the last poll
     double mouse_dx = 0.0, mouse_dy = 0.0;
     bool clicked = false;
     bool have_cursor = false;  // last_x/last_y are valid
@@ -45,7 +49,6 @@ bool cursor_captured(const PreviewWindow& window);
 // Polls events into window.input (cleared first).
 void poll_input(PreviewWindow& window);
 
-bool key_down(const PreviewWindow& window, int key);
 bool should_close(const PreviewWindow& window);
 void request_close(PreviewWindow& window);
 void framebuffer_size(const PreviewWindow& window, int& width, int& height);

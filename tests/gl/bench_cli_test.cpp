@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench/options.hpp"
+#include "common/temp_dir.hpp"
 #include "math/pose.hpp"
 
 namespace impossible {
@@ -27,15 +28,8 @@ struct BenchRun {
     std::string err;
 };
 
-class BenchCli : public ::testing::Test {
+class BenchCli : public test::TempDirTest {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("impossible-bench-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
 
     BenchRun run(const std::string& args) {
         const std::string command = "cd '" + dir_.string() + "' && '" IMPOSSIBLE_BINARY "' bench " + args +
@@ -50,7 +44,6 @@ protected:
         return s.str();
     }
     nlohmann::json json(const std::string& name) { return nlohmann::json::parse(text(name)); }
-    fs::path dir_;
 };
 
 const char* kQuick = "--size 64x36 --frames 2 --warmup 1 --profile-frames 1";

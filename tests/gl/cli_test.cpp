@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "common/temp_dir.hpp"
 #include "image/png.hpp"
 
 namespace impossible {
@@ -43,15 +44,8 @@ ProgramRun run_program(const std::string& args, const fs::path& cwd) {
     return run;
 }
 
-class Cli : public ::testing::Test {
+class Cli : public test::TempDirTest {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("impossible-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
     std::string bytes(const std::string& name) {
         std::ifstream in(dir_ / name, std::ios::binary);
         std::stringstream s;
@@ -60,7 +54,6 @@ protected:
     }
     // Files in the directory, to check nothing partial was left behind.
     size_t file_count() { return static_cast<size_t>(std::distance(fs::directory_iterator(dir_), {})); }
-    fs::path dir_;
 };
 
 TEST_F(Cli, RenderWithoutArgumentsWritesStereoPngOfTheDefaultLayout) {

@@ -18,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/temp_dir.hpp"
 #include "image/png.hpp"
 
 namespace impossible {
@@ -100,17 +101,7 @@ struct Xvfb {
     }
 };
 
-class Preview : public ::testing::Test {
-protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("impossible-preview-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    fs::path dir_;
-};
+using Preview = test::TempDirTest;
 
 std::vector<nlohmann::json> json_lines(const std::string& text) {
     std::vector<nlohmann::json> lines;

@@ -4,13 +4,12 @@
 
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
+#include "common/temp_dir.hpp"
 #include "layout/layout.hpp"
 
 namespace layout_test {
@@ -20,12 +19,8 @@ using namespace impossible::layout;
 inline const std::string kLayoutDir = std::string(IMPOSSIBLE_TEST_DATA) + "/layouts";
 inline const std::string kChairGlb = std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/models/chair.glb";
 
-// A path in the temporary directory, unique to this process (tests of
-// several build trees may run at once).
-inline std::string temp_path(const std::string& name) {
-    return (std::filesystem::temp_directory_path() /
-            ("impossible_" + std::to_string(::getpid()) + "_" + name)).string();
-}
+// A path in the temporary directory, unique to this process.
+inline std::string temp_path(const std::string& name) { return impossible::test::temp_path(name).string(); }
 
 inline std::string read_text(const std::string& path) {
     std::ifstream in(path, std::ios::binary);

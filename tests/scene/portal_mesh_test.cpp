@@ -56,7 +56,7 @@ bool has_position(const std::vector<Triangle>& ts, const glm::vec3& p) {
 
 TEST(PortalMesh, FreeStandingBox) {
     layout::Layout l = one_room_layout();
-    l.portals.push_back(make_portal(0, {0.25, 1.25, 0.5}, {0, 0, 1}, {0, 1, 0}, 1.0, 2.0, 0.5));
+    l.portals.push_back(make_portal("p0", 0, {0.25, 1.25, 0.5}, {0, 0, 1}, 1.0, 2.0, {0, 1, 0}, 0.5));
     const Scene s = build_scene(l);
     ASSERT_EQ(s.portals.size(), 1u);
     const PortalMesh& m = s.portals[0];
@@ -74,7 +74,7 @@ TEST(PortalMesh, TiltedFreeStandingBox) {
     const double h = std::sqrt(0.5);
     const glm::dvec3 n = glm::normalize(glm::dvec3(1.0, 0.5, -0.25));
     const glm::dvec3 up = glm::normalize(glm::dvec3(0, 1, 0) - n.y * n);
-    l.portals.push_back(make_portal(0, {0.1, 1.3, -0.2}, n, up, 0.75, 1.5, h));
+    l.portals.push_back(make_portal("p0", 0, {0.1, 1.3, -0.2}, n, 0.75, 1.5, up, h));
     const Scene s = build_scene(l);
     EXPECT_EQ(s.cells[0].count, 36u);
     expect_portal_box(s, s.portals[0], l.portals[0].rect);
@@ -84,11 +84,11 @@ TEST(PortalMesh, HoleFrontMatchesTheWall) {
     layout::Layout l = one_room_layout();
     const auto wall = layout::Face::NegZ;
     l.portals.push_back(
-        in_face(make_portal(0, {0.0, 1.0, -2.0}, {0, 0, 1}, {0, 1, 0}, 1.0, 2.0), wall));
+        in_face(make_portal("p0", 0, {0.0, 1.0, -2.0}, {0, 0, 1}, 1.0, 2.0, {0, 1, 0}), wall));
     l.portals.push_back(
-        in_face(make_portal(0, {0.0, 1.0, -2.0}, {0, 0, 1}, {1, 0, 0}, 2.0, 1.0), wall));
+        in_face(make_portal("p0", 0, {0.0, 1.0, -2.0}, {0, 0, 1}, 2.0, 1.0, {1, 0, 0}), wall));
     l.portals.push_back(
-        in_face(make_portal(0, {0.0, 1.0, -2.0}, {0, 0, 1}, {0, -1, 0}, 1.0, 2.0), wall));
+        in_face(make_portal("p0", 0, {0.0, 1.0, -2.0}, {0, 0, 1}, 1.0, 2.0, {0, -1, 0}), wall));
     for (std::size_t p = 0; p < 3; ++p) {  // the door; the same hole with up = +x, and upside down
         layout::Layout one = l;
         one.portals = {l.portals[p]};
@@ -127,11 +127,11 @@ TEST(PortalMesh, RangesPartitionTheIndices) {
     box.min = {2.5, 0.0, -0.5};
     box.max = {3.5, 1.0, 0.5};
     l.rooms[1].props.push_back(box);
-    l.portals.push_back(in_face(make_portal(0, {2.0, 1.0, 0.0}, {-1, 0, 0}, {0, 1, 0}, 1.0, 2.0),
+    l.portals.push_back(in_face(make_portal("p0", 0, {2.0, 1.0, 0.0}, {-1, 0, 0}, 1.0, 2.0, {0, 1, 0}),
                                 layout::Face::PosX));
-    l.portals.push_back(in_face(make_portal(1, {2.0, 1.0, 0.0}, {1, 0, 0}, {0, 1, 0}, 1.0, 2.0),
+    l.portals.push_back(in_face(make_portal("p1", 1, {2.0, 1.0, 0.0}, {1, 0, 0}, 1.0, 2.0, {0, 1, 0}),
                                 layout::Face::NegX));
-    l.portals.push_back(make_portal(0, {0.0, 1.0, 1.0}, {0, 0, -1}, {0, 1, 0}, 0.5, 0.5));
+    l.portals.push_back(make_portal("p0", 0, {0.0, 1.0, 1.0}, {0, 0, -1}, 0.5, 0.5, {0, 1, 0}));
     const Scene s = build_scene(l);
     ASSERT_EQ(s.cells.size(), 2u);
     ASSERT_EQ(s.portals.size(), 3u);

@@ -64,6 +64,17 @@ bool any_covers(const std::vector<Triangle>& ts, const glm::dvec3& q) {
 
 constexpr double kRoomArea = 2 * 16.0 + 4 * 12.0;  // 4 × 3 × 4
 
+// What every room with holes shows: `count` triangles covering its faces
+// less `hole_area`, facing inward, closed by the fronts of `portals`.
+void expect_holed_room(const Scene& s, const layout::Room& room, std::size_t count, double hole_area,
+                       const std::vector<int>& portals) {
+    const auto ts = triangles(s, s.cells[0]);
+    EXPECT_EQ(ts.size(), count);
+    EXPECT_DOUBLE_EQ(total_area(ts), kRoomArea - hole_area);
+    expect_inward_faces(room, ts);
+    EXPECT_TRUE(closed_and_consistent(walls_and_fronts(s, portals)));
+}
+
 TEST(RoomMesh, PlainRoomIsTwelveInwardTriangles) {
     layout::Layout l = one_room_layout();
     l.rooms[0].checker = 0.5;
@@ -91,7 +102,7 @@ TEST(RoomMesh, EveryFaceHasItsOwnColour) {
 
 // A door in the -z wall, standing on the floor: x in [-0.5, 0.5], y in [0, 2].
 layout::Portal door(double x = 0.0, double width = 1.0) {
-    return in_face(make_portal(0, {x, 1.0, -2.0}, {0, 0, 1}, {0, 1, 0}, width, 2.0),
+    return in_face(make_portal("p0", 0, {x, 1.0, -2.0}, {0, 0, 1}, width, 2.0, {0, 1, 0}),
                    layout::Face::NegZ);
 }
 
@@ -115,23 +126,19 @@ TEST(RoomMesh, DoorHoleIsExact) {
 TEST(RoomMesh, WindowHoleInTheMiddleOfAWall) {
     layout::Layout l = one_room_layout();
     // In the +x wall: r = up × normal = +z; z in [-0.5, 0.5], y in [1, 2].
-    l.portals.push_back(in_face(make_portal(0, {2.0, 1.5, 0.0}, {-1, 0, 0}, {0, 1, 0}, 1.0, 1.0),
+    l.portals.push_back(in_face(make_portal("p0", 0, {2.0, 1.5, 0.0}, {-1, 0, 0}, 1.0, 1.0, {0, 1, 0}),
                                 layout::Face::PosX));
     const Scene s = build_scene(l);
-    const auto ts = triangles(s, s.cells[0]);
     // Lines x: -2 2, y: 0 1 2 3, z: -2 -0.5 0.5 2. Floor, ceiling, ±z: 3 cells
     // each; -x wall 9, +x wall 8.
-    EXPECT_EQ(ts.size(), 2u * (4 * 3 + 9 + 8));
-    EXPECT_DOUBLE_EQ(total_area(ts), kRoomArea - 1.0);
-    expect_inward_faces(l.rooms[0], ts);
-    EXPECT_FALSE(any_covers(ts, l.portals[0].rect.center));
-    EXPECT_TRUE(closed_and_consistent(walls_and_fronts(s, {0})));
+    expect_holed_room(s, l.rooms[0], 2u * (4 * 3 + 9 + 8), 1.0, {0});
+    EXPECT_FALSE(any_covers(triangles(s, s.cells[0]), l.portals[0].rect.center));
 }
 
 TEST(RoomMesh, TwoHolesInOneWall) {
     layout::Layout l = one_room_layout();
     l.portals.push_back(door(-1.0));  // x in [-1.5, -0.5], y in [0, 2]
-    l.portals.push_back(in_face(make_portal(0, {1.0, 1.375, -2.0}, {0, 0, 1}, {0, 1, 0}, 1.0, 0.75),
+    l.portals.push_back(in_face(make_portal("p0", 0, {1.0, 1.375, -2.0}, {0, 0, 1}, 1.0, 0.75, {0, 1, 0}),
                                 layout::Face::NegZ));
     const Scene s = build_scene(l);
     const auto ts = triangles(s, s.cells[0]);
@@ -155,57 +162,41 @@ TEST(RoomMesh, TwoHolesInOneWall) {
 
 TEST(RoomMesh, TrapdoorInTheCeiling) {
     layout::Layout l = one_room_layout();
-    l.portals.push_back(in_face(make_portal(0, {0.0, 3.0, 0.0}, {0, -1, 0}, {0, 0, 1}, 1.0, 1.0),
+    l.portals.push_back(in_face(make_portal("p0", 0, {0.0, 3.0, 0.0}, {0, -1, 0}, 1.0, 1.0, {0, 0, 1}),
                                 layout::Face::Ceiling));
     const Scene s = build_scene(l);
-    const auto ts = triangles(s, s.cells[0]);
     // Lines x: 3 cells, y: 1, z: 3. Floor 9, ceiling 8, the walls 3 each.
-    EXPECT_EQ(ts.size(), 2u * (9 + 8 + 4 * 3));
-    EXPECT_DOUBLE_EQ(total_area(ts), kRoomArea - 1.0);
-    expect_inward_faces(l.rooms[0], ts);
-    EXPECT_FALSE(any_covers(ts, l.portals[0].rect.center));
-    EXPECT_TRUE(closed_and_consistent(walls_and_fronts(s, {0})));
+    expect_holed_room(s, l.rooms[0], 2u * (9 + 8 + 4 * 3), 1.0, {0});
+    EXPECT_FALSE(any_covers(triangles(s, s.cells[0]), l.portals[0].rect.center));
 }
 
 TEST(RoomMesh, HolesInTwoWalls) {
     layout::Layout l = one_room_layout();
     l.portals.push_back(door());
-    l.portals.push_back(in_face(make_portal(0, {2.0, 1.5, 0.0}, {-1, 0, 0}, {0, 1, 0}, 1.0, 1.0),
+    l.portals.push_back(in_face(make_portal("p0", 0, {2.0, 1.5, 0.0}, {-1, 0, 0}, 1.0, 1.0, {0, 1, 0}),
                                 layout::Face::PosX));
     const Scene s = build_scene(l);
-    const auto ts = triangles(s, s.cells[0]);
     // Lines x: 3 cells, y: 0 1 2 3 (3), z: 3. Floor, ceiling, -x, +z: 9 cells;
     // +x 8; -z 9 - 2 (the door spans two rows).
-    EXPECT_EQ(ts.size(), 2u * (4 * 9 + 8 + 7));
-    EXPECT_DOUBLE_EQ(total_area(ts), kRoomArea - 3.0);
-    expect_inward_faces(l.rooms[0], ts);
-    EXPECT_TRUE(closed_and_consistent(walls_and_fronts(s, {0, 1})));
+    expect_holed_room(s, l.rooms[0], 2u * (4 * 9 + 8 + 7), 3.0, {0, 1});
 }
 
 TEST(RoomMesh, RotatedRectangleMakesTheSameHole) {
     layout::Layout l = one_room_layout();
     // up = +x, so right = up × normal = -y: width runs along y, height along x.
-    l.portals.push_back(in_face(make_portal(0, {0.0, 1.0, -2.0}, {0, 0, 1}, {1, 0, 0}, 2.0, 1.0),
+    l.portals.push_back(in_face(make_portal("p0", 0, {0.0, 1.0, -2.0}, {0, 0, 1}, 2.0, 1.0, {1, 0, 0}),
                                 layout::Face::NegZ));
     const Scene s = build_scene(l);
-    const auto ts = triangles(s, s.cells[0]);
-    EXPECT_EQ(ts.size(), 42u);
-    EXPECT_DOUBLE_EQ(total_area(ts), kRoomArea - 2.0);
-    expect_inward_faces(l.rooms[0], ts);
-    EXPECT_FALSE(any_covers(ts, l.portals[0].rect.center));
-    EXPECT_TRUE(closed_and_consistent(walls_and_fronts(s, {0})));
+    expect_holed_room(s, l.rooms[0], 42u, 2.0, {0});
+    EXPECT_FALSE(any_covers(triangles(s, s.cells[0]), l.portals[0].rect.center));
 }
 
 TEST(RoomMesh, HoleFillingAWholeWallLeavesItEmpty) {
     layout::Layout l = one_room_layout();
-    l.portals.push_back(in_face(make_portal(0, {-2.0, 1.5, 0.0}, {1, 0, 0}, {0, 1, 0}, 4.0, 3.0),
+    l.portals.push_back(in_face(make_portal("p0", 0, {-2.0, 1.5, 0.0}, {1, 0, 0}, 4.0, 3.0, {0, 1, 0}),
                                 layout::Face::NegX));
     const Scene s = build_scene(l);
-    const auto ts = triangles(s, s.cells[0]);
-    EXPECT_EQ(ts.size(), 10u);
-    EXPECT_DOUBLE_EQ(total_area(ts), kRoomArea - 12.0);
-    expect_inward_faces(l.rooms[0], ts);
-    EXPECT_TRUE(closed_and_consistent(walls_and_fronts(s, {0})));
+    expect_holed_room(s, l.rooms[0], 10u, 12.0, {0});
 }
 
 TEST(RoomMesh, RectangleSlightlyOffThePlaneIsStillAHole) {
@@ -214,17 +205,13 @@ TEST(RoomMesh, RectangleSlightlyOffThePlaneIsStillAHole) {
     p.rect.center.z += 5e-5;  // within the spec's 1e-4
     l.portals.push_back(p);
     const Scene s = build_scene(l);
-    const auto ts = triangles(s, s.cells[0]);
-    EXPECT_EQ(ts.size(), 42u);
-    EXPECT_DOUBLE_EQ(total_area(ts), kRoomArea - 2.0);
-    expect_inward_faces(l.rooms[0], ts);
-    EXPECT_TRUE(closed_and_consistent(walls_and_fronts(s, {0})));
+    expect_holed_room(s, l.rooms[0], 42u, 2.0, {0});
 }
 
 TEST(RoomMesh, PortalsStandingFreeLeaveTheRoomWhole) {
     layout::Layout l = one_room_layout();
     l.rooms.push_back(make_room("other", {-2, 0, -6}, {2, 3, -2}));
-    l.portals.push_back(make_portal(0, {0, 1, 0}, {0, 0, 1}, {0, 1, 0}, 1, 2));  // mid-room
+    l.portals.push_back(make_portal("p0", 0, {0, 1, 0}, {0, 0, 1}, 1, 2, {0, 1, 0}));  // mid-room
     layout::Portal out = door();
     out.rect.normal = {0, 0, -1};  // in the wall's plane but facing out of room 0:
     out.hole_face = -1;            // the loader makes it stand free
@@ -269,7 +256,7 @@ TEST(RoomMesh, TiltedHoleFallsBackToExactSlabs) {
     layout::Layout l = one_room_layout();
     // A unit square turned 45° in the +z wall.
     const double h = std::sqrt(0.5);
-    l.portals.push_back(in_face(make_portal(0, {0.0, 1.5, 2.0}, {0, 0, -1}, {h, h, 0}, 1.0, 1.0),
+    l.portals.push_back(in_face(make_portal("p0", 0, {0.0, 1.5, 2.0}, {0, 0, -1}, 1.0, 1.0, {h, h, 0}),
                                 layout::Face::PosZ));
     const Scene s = build_scene(l);
     const auto ts = triangles(s, s.cells[0]);

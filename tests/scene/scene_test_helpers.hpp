@@ -11,36 +11,15 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "common/layouts.hpp"
 #include "layout/layout.hpp"
 #include "scene/scene.hpp"
 
 namespace impossible::scene::test {
 
-inline layout::Room make_room(const std::string& id, glm::dvec3 min, glm::dvec3 max) {
-    layout::Room room;
-    room.id = id;
-    room.min = min;
-    room.max = max;
-    for (std::size_t f = 0; f < layout::kFaceCount; ++f) {
-        room.face_color[f] = glm::dvec3(0.1 + 0.1 * static_cast<double>(f), 0.5, 0.9);
-    }
-    return room;
-}
+using impossible::test::make_room;
 
-// A portal of `room`; `up` must be unit and orthogonal to the unit `normal`.
-inline layout::Portal make_portal(int room, glm::dvec3 center, glm::dvec3 normal, glm::dvec3 up,
-                                  double width, double height, double depth = 0.25) {
-    layout::Portal p;
-    p.id = "p" + std::to_string(room);
-    p.room = room;
-    p.rect.center = center;
-    p.rect.normal = normal;
-    p.rect.up = up;
-    p.rect.width = width;
-    p.rect.height = height;
-    p.rect.depth = depth;
-    return p;
-}
+using impossible::test::make_portal;
 
 // The portal as the loader marks a hole in a face of its room.
 inline layout::Portal in_face(layout::Portal p, layout::Face face) {

@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "common/layouts.hpp"
 #include "layout/layout.hpp"
 #include "scene/shading.hpp"
 #include "trace/tracer.hpp"
@@ -18,44 +19,12 @@ namespace impossible::trace::test {
 
 using glm::dvec3;
 
-// A room whose six faces have six different colours (so a test can tell which
-// face it sees): face f has colour (0.1 + 0.1·f, tint.y, tint.z).
-inline layout::Room make_room(const std::string& id, dvec3 min, dvec3 max, dvec3 tint = {0.0, 0.5, 0.9}) {
-    layout::Room room;
-    room.id = id;
-    room.min = min;
-    room.max = max;
-    for (int f = 0; f < layout::kFaceCount; ++f) room.face_color[f] = dvec3(0.1 + 0.1 * f, tint.y, tint.z);
-    return room;
-}
+using impossible::test::add_pair;
+using impossible::test::make_portal;
+using impossible::test::make_room;
 
 inline dvec3 face_color(const layout::Room& room, layout::Face face) {
     return room.face_color[static_cast<int>(face)];
-}
-
-// A portal of `room` (normal and up unit and orthogonal), target unset.
-inline layout::Portal make_portal(const std::string& id, int room, dvec3 center, dvec3 normal,
-                                  double width = 1.0, double height = 2.0, dvec3 up = {0.0, 1.0, 0.0},
-                                  double depth = 0.25) {
-    layout::Portal p;
-    p.id = id;
-    p.room = room;
-    p.rect.center = center;
-    p.rect.normal = normal;
-    p.rect.up = up;
-    p.rect.width = width;
-    p.rect.height = height;
-    p.rect.depth = depth;
-    return p;
-}
-
-// Appends the two portals and names each as the other's target.
-inline void add_pair(layout::Layout& l, layout::Portal a, layout::Portal b) {
-    const int ia = static_cast<int>(l.portals.size());
-    a.target = ia + 1;
-    b.target = ia;
-    l.portals.push_back(a);
-    l.portals.push_back(b);
 }
 
 // The shading model of scene/shading.hpp written out again by hand (with its

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cmd_walk.hpp"
+#include "common/temp_dir.hpp"
 #include "scene/walk.hpp"
 #include "scene/walk_test_layouts.hpp"
 
@@ -148,8 +149,7 @@ TEST(RunWalk, EmptyPathPrintsNothing) {
 }
 
 TEST(RunWalk, ReadsAFileAndReportsMissingOnes) {
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "impossible_cmd_walk_test";
-    std::filesystem::create_directories(dir);
+    const test::TempDir dir("cmd_walk_test");
     const std::string file = (dir / "path.txt").string();
     {
         std::ofstream f(file);
@@ -166,10 +166,9 @@ TEST(RunWalk, ReadsAFileAndReportsMissingOnes) {
     EXPECT_NE(err2.str().find("missing.txt: cannot open"), std::string::npos) << err2.str();
 
     std::ostringstream out3, err3;
-    EXPECT_EQ(run_walk(doorway(), dir.string(), out3, err3), 1);
+    EXPECT_EQ(run_walk(doorway(), dir.path().string(), out3, err3), 1);
     EXPECT_EQ(out3.str(), "");
     EXPECT_NE(err3.str().find("directory"), std::string::npos) << err3.str();
-    std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "common/temp_dir.hpp"
 #include "preview/grid.hpp"
 #include "preview/head.hpp"
 #include "preview/hud.hpp"
@@ -138,9 +139,7 @@ const char* kLayout = R"({ "format": "impossible-layout", "version": 1,
   "rooms": [ { "id": "a", "min": [-1, 0, -1], "max": [1, 3, 1] } ] })";
 
 TEST(PreviewReload, ReloadsGoodEditsAndReportsBadOnes) {
-    const fs::path dir = fs::temp_directory_path() / "impossible-preview-reload";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const test::TempDir dir("preview-reload");
     const fs::path file = dir / "l.json";
     std::ofstream(file) << kLayout;
     LayoutWatcher w = watch_layout(file.string());
@@ -167,7 +166,6 @@ TEST(PreviewReload, ReloadsGoodEditsAndReportsBadOnes) {
     EXPECT_EQ(poll_layout(w).kind, ReloadResult::Unchanged);
     std::ofstream(file) << kLayout;
     EXPECT_EQ(poll_layout(w).kind, ReloadResult::Reloaded);  // back
-    fs::remove_all(dir);
 }
 
 }  // namespace

@@ -1,0 +1,54 @@
+#include "preview/hud_text.hpp"
+
+#include <cstdio>
+
+namespace impossible::preview {
+
+std::string fixed(double v, int decimals) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    return buf;
+}
+
+namespace {
+
+std::vector<std::string> status_lines(const PreviewOptions& o, const HudFacts& f) {
+    using std::to_string;
+    const render::FrameDesc& s = o.frame;
+    const math::dvec3 h = f.physical.position;
+    return {
+        f.title + "   view: " + view_name(o.view),
+        "frame " + fixed(f.median_ms, 1) + " ms (median of " + to_string(f.timed_frames) + ")   eye " +
+            to_string(f.eye_width) + "x" + to_string(f.eye_height),
+        "room " + f.room + "   portal passes " + to_string(f.portal_passes_drawn) + " drawn, " +
+            to_string(f.portal_passes_culled) + " culled",
+        "recursion depth " + to_string(s.max_depth) + " (reached " + to_string(f.max_level_reached) + ")   IPD " +
+            fixed(s.ipd * 1000.0, 0) + " mm",
+        std::string("clip ") + (s.clip == render::ClipMode::ClipDistance ? "clip-distance" : "oblique") +
+            "   culling " + (s.cull_portals ? "on" : "off"),
+        "physical head " + fixed(h.x, 2) + " " + fixed(h.y, 2) + " " + fixed(h.z, 2) + "  yaw " +
+            fixed(f.physical.yaw_deg, 0) + "  pitch " + fixed(f.physical.pitch_deg, 0),
+        f.cursor_captured ? "Esc releases the mouse" : "click to look around, Esc quits",
+        "WASD/arrows Q/E move  H hud  M map  V view  [ ] depth  - = IPD  C clip  X cull  P shot  R reset",
+    };
+}
+
+}  // namespace
+
+std::vector<std::string> reload_error_lines(const std::vector<std::string>& errors) {
+    if (errors.empty()) return {};
+    std::vector<std::string> lines = {"layout reload failed; still showing the last good layout:"};
+    for (std::size_t i = 0; i < errors.size() && i < kMaxReloadErrors; ++i) lines.push_back(errors[i]);
+    if (errors.size() > kMaxReloadErrors)
+        lines.push_back("... and " + std::to_string(errors.size() - kMaxReloadErrors) + " more");
+    return lines;
+}
+
+HudText hud_text(const PreviewOptions& o, const HudFacts& f, const std::vector<std::string>& reload_errors) {
+    HudText hud;
+    if (o.hud) hud.lines = status_lines(o, f);
+    hud.errors = reload_error_lines(reload_errors);
+    return hud;
+}
+
+}  // namespace impossible::preview

@@ -1,0 +1,40 @@
+// The words of the preview's HUD: what the frame shows and how it was drawn,
+// the keys, and the errors of a failed reload. Plain strings, no GL.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "math/pose.hpp"
+#include "preview/hud.hpp"
+#include "preview/options.hpp"
+#include "render/frame.hpp"
+
+namespace impossible::preview {
+
+// What the HUD reports of one frame besides the options.
+struct HudFacts {
+    std::string title;
+    double median_ms = 0.0;          // of the last timed frames
+    std::size_t timed_frames = 0;    // how many
+    int eye_width = 0, eye_height = 0;  // as drawn this frame
+    std::string room;                // the room's id
+    int portal_passes_drawn = 0, portal_passes_culled = 0, max_level_reached = 0;
+    math::HeadPose physical;
+    bool cursor_captured = false;
+};
+
+inline constexpr std::size_t kMaxReloadErrors = 8;
+
+// The HUD's lines (none with options.hud off) and, after a failed reload, its
+// first errors in red.
+HudText hud_text(const PreviewOptions& options, const HudFacts& facts, const std::vector<std::string>& reload_errors);
+
+// The red lines for the errors of a failed reload (none without errors).
+std::vector<std::string> reload_error_lines(const std::vector<std::string>& errors);
+
+// printf's %.*f.
+std::string fixed(double value, int decimals);
+
+}  // namespace impossible::preview

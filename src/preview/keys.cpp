@@ -1,0 +1,53 @@
+#include "preview/keys.hpp"
+
+#include <algorithm>
+
+namespace impossible::preview {
+
+KeyEffects apply_actions(const std::vector<Action>& actions, bool cursor_captured, PreviewOptions& o) {
+    KeyEffects e;
+    render::FrameDesc& f = o.frame;
+    for (Action a : actions) {
+        switch (a) {
+            case Action::Escape:
+                if (cursor_captured) {
+                    e.release_cursor = true;
+                    cursor_captured = false;
+                } else {
+                    e.quit = true;
+                }
+                break;
+            case Action::ToggleHud: o.hud = !o.hud; break;
+            case Action::ToggleMinimap: o.minimap = !o.minimap; break;
+            case Action::NextView: o.view = next_view(o.view); break;
+            case Action::DepthDown: f.max_depth = std::max(0, f.max_depth - 1); break;
+            case Action::DepthUp: f.max_depth = std::min(kMaxPreviewDepth, f.max_depth + 1); break;
+            case Action::IpdDown: f.ipd = std::max(0.0, f.ipd - kIpdStep); break;
+            case Action::IpdUp: f.ipd = std::min(kMaxIpd, f.ipd + kIpdStep); break;
+            case Action::NextClip:
+                f.clip = f.clip == render::ClipMode::ClipDistance ? render::ClipMode::Oblique
+                                                                  : render::ClipMode::ClipDistance;
+                break;
+            case Action::ToggleCulling: f.cull_portals = !f.cull_portals; break;
+            case Action::Screenshot: e.screenshot = true; break;
+            case Action::Reset: e.reset = true; break;
+        }
+    }
+    return e;
+}
+
+MoveInput move_input(const HeldKeys& held, double dt, bool cursor_captured, double mouse_dx, double mouse_dy) {
+    MoveInput move;
+    move.dt = std::min(dt, 0.1);
+    move.forward = held.forward;
+    move.right = held.right;
+    move.up = held.up;
+    move.fast = held.fast;
+    if (cursor_captured) {
+        move.mouse_dx = mouse_dx;
+        move.mouse_dy = mouse_dy;
+    }
+    return move;
+}
+
+}  // namespace impossible::preview

@@ -1,0 +1,110 @@
+#include "preview/session.hpp"
+
+#include <algorithm>
+
+#include "app/cli_args.hpp"
+#include "app/layout_source.hpp"
+#include "scene/scene.hpp"
+
+namespace impossible::preview {
+
+using app::InputError;
+
+Shown build_shown(layout::Layout layout, const std::string& room_id, std::string& error) {
+    Shown s;
+    s.layout = std::make_unique<layout::Layout>(std::move(layout));
+    render::RendererResult made = render::create_renderer(*s.layout, scene::build_scene(*s.layout));
+    if (!made.renderer) {
+        error = made.error;
+        return {};
+    }
+    s.renderer = std::move(made.renderer);
+    const int room = layout::find_room(*s.layout, room_id);
+    s.walker = room >= 0 ? std::make_unique<scene::Walker>(*s.layout, room) : std::make_unique<scene::Walker>(*s.layout);
+    return s;
+}
+
+math::HeadPose start_pose(const layout::Layout& layout) {
+    math::HeadPose p;
+    p.position = layout.start.position;
+    p.yaw_deg = layout.start.yaw_deg;
+    return p;
+}
+
+double tick(FrameClock& clock, long frame, Clock::time_point now) {
+    const double dt = std::chrono::duration<double>(now - clock.last).count();
+    clock.last = now;
+    if (frame > 0) {
+        clock.frame_ms.push_back(std::max(0.0, dt - clock.io_seconds) * 1000.0);
+        if (clock.frame_ms.size() > kTimedFrames) clock.frame_ms.pop_front();
+    }
+    return dt;
+}
+
+namespace {
+
+std::unique_ptr<PreviewWindow> open_preview_window(const PreviewOptions& o, const std::string& title) {
+    const render::FrameDesc& f = o.frame;
+    const int width = o.view == PreviewView::Anaglyph ? f.eye_width : 2 * f.eye_width;
+    WindowResult opened = open_window(width, f.eye_height, title, o.vsync && !o.screenshots);
+    if (!opened.window) throw InputError(opened.error);
+    return std::move(opened.window);
+}
+
+}  // namespace
+
+void open_session(PreviewSession& s, PreviewOptions options) {
+    s.options = std::move(options);
+    const PreviewOptions& o = s.options;
+    layout::Layout first = app::load_layout_or_default(o.layout_path);
+    if (o.path_file) {
+        s.path = layout::read_path_file(*o.path_file);
+        if (!s.path.error.empty()) throw InputError(s.path.error);
+    }
+    s.files = open_frame_files(o.screenshots);
+
+    s.title = "impossible preview - " + (first.name.empty() ? first.source : first.name);
+    s.window = open_preview_window(o, s.title);
+    std::string error;
+    s.shown = build_shown(std::move(first), "", error);
+    if (!s.shown.renderer) throw InputError(error);
+    s.overlay = build_overlay_program(error);
+    if (!error.empty()) throw InputError(error);
+    s.presenter = build_presenter(error);
+    if (!error.empty()) throw InputError(error);
+
+    if (o.layout_path) s.watcher = watch_layout(*o.layout_path);
+    s.physical = start_pose(*s.shown.layout);
+    if (!o.path_file) capture_cursor(*s.window, true);
+    s.clock.last = s.clock.last_poll = Clock::now();
+}
+
+void poll_reload(PreviewSession& s, Clock::time_point now) {
+    if (!s.watcher || std::chrono::duration<double>(now - s.clock.last_poll).count() < kReloadPollSeconds) return;
+    s.clock.last_poll = now;
+    ReloadResult r = poll_layout(*s.watcher);
+    if (r.kind == ReloadResult::Failed) s.reload_errors = r.errors;
+    if (r.kind != ReloadResult::Reloaded) return;
+    const scene::Walker& walker = *s.shown.walker;
+    const std::string room_id = s.shown.layout->rooms[walker.room()].id;
+    const bool walking = walker.started();
+    const math::dmat4 w = walker.physical_to_virtual();
+    std::string error;
+    Shown next = build_shown(std::move(*r.layout), room_id, error);
+    if (!next.renderer) {
+        s.reload_errors = {"the reloaded layout cannot be drawn: " + error};
+        return;
+    }
+    // Walk on where the head was: same room (if it still exists) and the
+    // same physical-to-virtual mapping.
+    if (walking && layout::find_room(*next.layout, room_id) >= 0) next.walker->resume(w, s.physical);
+    s.shown = std::move(next);
+    s.reload_errors.clear();
+}
+
+void reset_walk(PreviewSession& s) {
+    s.shown.walker = std::make_unique<scene::Walker>(*s.shown.layout);
+    s.physical = start_pose(*s.shown.layout);
+}
+
+}  // namespace impossible::preview

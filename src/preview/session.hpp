@@ -1,0 +1,89 @@
+// The preview's state while it runs: the options as the keys change them,
+// the window, the layout shown and what draws it, live reload, the physical
+// head and the frame clock; and the steps that open it and keep the layout
+// current. run_preview_command (preview_command.cpp) drives it frame by frame.
+#pragma once
+
+#include <chrono>
+#include <deque>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "layout/layout.hpp"
+#include "layout/path_file.hpp"
+#include "math/pose.hpp"
+#include "preview/frames_log.hpp"
+#include "preview/options.hpp"
+#include "preview/overlay.hpp"
+#include "preview/present.hpp"
+#include "preview/reload.hpp"
+#include "preview/window.hpp"
+#include "render/frame.hpp"
+#include "render/renderer.hpp"
+#include "scene/walk.hpp"
+
+namespace impossible::preview {
+
+using Clock = std::chrono::steady_clock;
+
+inline constexpr std::size_t kTimedFrames = 60;  // frames in the HUD's median
+inline constexpr double kReloadPollSeconds = 0.25;
+
+// The layout being shown and what is built from it. The walker points into
+// the layout, so both live on the heap and are replaced together.
+struct Shown {
+    std::unique_ptr<layout::Layout> layout;
+    std::unique_ptr<render::Renderer> renderer;
+    std::unique_ptr<scene::Walker> walker;
+};
+
+// Builds the renderer and a walker for `layout`, in the room named `room_id`
+// if it still exists (else the start room). Empty renderer and `error` on
+// failure. Needs a current GL context.
+Shown build_shown(layout::Layout layout, const std::string& room_id, std::string& error);
+
+// The layout's start as a physical head pose.
+math::HeadPose start_pose(const layout::Layout& layout);
+
+// Frame times for the HUD, without the time spent saving files.
+struct FrameClock {
+    Clock::time_point last{}, last_poll{};
+    std::deque<double> frame_ms;  // the last kTimedFrames frames
+    double io_seconds = 0.0;      // spent writing files last frame
+};
+
+// Seconds since the last tick; from frame 1 on, also records the frame time.
+double tick(FrameClock& clock, long frame, Clock::time_point now);
+
+struct PreviewSession {
+    PreviewOptions options;
+    std::string title;
+    layout::PathFile path;                  // --path: one physical pose a frame
+    FrameFiles files;
+    std::unique_ptr<PreviewWindow> window;  // declared before the GL objects: outlives them
+    Shown shown;
+    OverlayProgram overlay;
+    Presenter presenter;
+    std::optional<LayoutWatcher> watcher;   // with a layout file
+    std::vector<std::string> reload_errors;  // of the last failed reload
+    math::HeadPose physical;
+    FrameClock clock;
+    render::FrameStats stats;
+};
+
+// Checks what can be checked without a window (the layout, the path file, the
+// screenshot directory), then opens the window and builds what draws.
+// Throws InputError.
+void open_session(PreviewSession& session, PreviewOptions options);
+
+// Every kReloadPollSeconds: a good edit of the layout replaces what is shown
+// (the walk goes on in the same room with the same mapping), a bad one
+// leaves its errors in session.reload_errors.
+void poll_reload(PreviewSession& session, Clock::time_point now);
+
+// R: a new walk from the layout's start.
+void reset_walk(PreviewSession& session);
+
+}  // namespace impossible::preview

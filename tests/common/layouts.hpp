@@ -1,0 +1,49 @@
+// Rooms and portals built in code, shared by the test programs (no loader).
+#pragma once
+
+#include <string>
+
+#include <glm/vec3.hpp>
+
+#include "layout/layout.hpp"
+
+namespace impossible::test {
+
+// A room whose six faces have six different colours (so a test can tell which
+// face it sees): face f has colour (0.1 + 0.1·f, tint.y, tint.z).
+inline layout::Room make_room(const std::string& id, glm::dvec3 min, glm::dvec3 max,
+                              glm::dvec3 tint = {0.0, 0.5, 0.9}) {
+    layout::Room room;
+    room.id = id;
+    room.min = min;
+    room.max = max;
+    for (int f = 0; f < layout::kFaceCount; ++f) room.face_color[f] = glm::dvec3(0.1 + 0.1 * f, tint.y, tint.z);
+    return room;
+}
+
+// A portal of `room` (normal and up unit and orthogonal), target unset.
+inline layout::Portal make_portal(const std::string& id, int room, glm::dvec3 center, glm::dvec3 normal,
+                                  double width = 1.0, double height = 2.0, glm::dvec3 up = {0.0, 1.0, 0.0},
+                                  double depth = 0.25) {
+    layout::Portal p;
+    p.id = id;
+    p.room = room;
+    p.rect.center = center;
+    p.rect.normal = normal;
+    p.rect.up = up;
+    p.rect.width = width;
+    p.rect.height = height;
+    p.rect.depth = depth;
+    return p;
+}
+
+// Appends the two portals and names each as the other's target.
+inline void add_pair(layout::Layout& l, layout::Portal a, layout::Portal b) {
+    const int ia = static_cast<int>(l.portals.size());
+    a.target = ia + 1;
+    b.target = ia;
+    l.portals.push_back(a);
+    l.portals.push_back(b);
+}
+
+}  // namespace impossible::test

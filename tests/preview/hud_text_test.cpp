@@ -1,0 +1,53 @@
+// The HUD's words without a window.
+#include <gtest/gtest.h>
+
+#include "preview/hud_text.hpp"
+
+namespace impossible::preview {
+namespace {
+
+TEST(PreviewHudText, ReportsTheFrameAndTheSettings) {
+    PreviewOptions o;
+    o.frame.ipd = 0.07;
+    o.frame.clip = render::ClipMode::Oblique;
+    HudFacts f;
+    f.title = "impossible preview - t";
+    f.median_ms = 16.66;
+    f.timed_frames = 60;
+    f.eye_width = 320;
+    f.eye_height = 240;
+    f.room = "hall";
+    f.portal_passes_drawn = 3;
+    f.portal_passes_culled = 1;
+    f.max_level_reached = 2;
+    f.physical = {{1.0, 1.6, -0.5}, 12.4, -3.0, 0.0};
+    const HudText hud = hud_text(o, f, {});
+    ASSERT_EQ(hud.lines.size(), 8u);
+    EXPECT_EQ(hud.lines[0], "impossible preview - t   view: parallel");
+    EXPECT_EQ(hud.lines[1], "frame 16.7 ms (median of 60)   eye 320x240");
+    EXPECT_EQ(hud.lines[2], "room hall   portal passes 3 drawn, 1 culled");
+    EXPECT_EQ(hud.lines[3], "recursion depth 8 (reached 2)   IPD 70 mm");
+    EXPECT_EQ(hud.lines[4], "clip oblique   culling on");
+    EXPECT_EQ(hud.lines[5], "physical head 1.00 1.60 -0.50  yaw 12  pitch -3");
+    EXPECT_EQ(hud.lines[6], "click to look around, Esc quits");
+    EXPECT_TRUE(hud.errors.empty());
+    o.hud = false;
+    EXPECT_TRUE(hud_text(o, f, {}).lines.empty());
+}
+
+TEST(PreviewHudText, ListsTheFirstReloadErrors) {
+    EXPECT_TRUE(reload_error_lines({}).empty());
+    const std::vector<std::string> two = reload_error_lines({"a", "b"});
+    ASSERT_EQ(two.size(), 3u);
+    EXPECT_EQ(two[0], "layout reload failed; still showing the last good layout:");
+    EXPECT_EQ(two[2], "b");
+    const std::vector<std::string> many = reload_error_lines(std::vector<std::string>(11, "e"));
+    ASSERT_EQ(many.size(), 1 + kMaxReloadErrors + 1);
+    EXPECT_EQ(many.back(), "... and 3 more");
+    PreviewOptions o;
+    o.hud = false;
+    EXPECT_EQ(hud_text(o, HudFacts{}, {"x"}).errors.size(), 2u);  // errors show without the HUD
+}
+
+}  // namespace
+}  // namespace impossible::preview

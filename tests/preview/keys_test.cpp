@@ -1,0 +1,75 @@
+// The preview's keys without a window: actions change the options in order,
+// Esc releases the cursor before it quits, held keys become head movement.
+#include <gtest/gtest.h>
+
+#include "preview/keys.hpp"
+
+namespace impossible::preview {
+namespace {
+
+TEST(PreviewKeys, TogglesAndStepsTheOptions) {
+    PreviewOptions o;
+    const KeyEffects e = apply_actions({Action::ToggleHud, Action::ToggleMinimap, Action::NextView,
+                                        Action::DepthUp, Action::DepthUp, Action::IpdDown, Action::NextClip,
+                                        Action::ToggleCulling},
+                                       false, o);
+    EXPECT_FALSE(e.quit || e.release_cursor || e.screenshot || e.reset);
+    EXPECT_FALSE(o.hud);
+    EXPECT_FALSE(o.minimap);
+    EXPECT_EQ(o.view, PreviewView::Cross);
+    EXPECT_EQ(o.frame.max_depth, 10);
+    EXPECT_DOUBLE_EQ(o.frame.ipd, 0.064 - kIpdStep);
+    EXPECT_EQ(o.frame.clip, render::ClipMode::Oblique);
+    EXPECT_FALSE(o.frame.cull_portals);
+    // Eye size and the other frame settings are untouched.
+    EXPECT_EQ(o.frame.eye_width, 640);
+    EXPECT_EQ(o.frame.eye_height, 480);
+}
+
+TEST(PreviewKeys, StepsStopAtTheirLimits) {
+    PreviewOptions o;
+    o.frame.max_depth = 0;
+    o.frame.ipd = 0.001;
+    apply_actions({Action::DepthDown, Action::IpdDown}, false, o);
+    EXPECT_EQ(o.frame.max_depth, 0);
+    EXPECT_EQ(o.frame.ipd, 0.0);
+    o.frame.max_depth = kMaxPreviewDepth;
+    o.frame.ipd = kMaxIpd;
+    apply_actions({Action::DepthUp, Action::IpdUp}, false, o);
+    EXPECT_EQ(o.frame.max_depth, kMaxPreviewDepth);
+    EXPECT_EQ(o.frame.ipd, kMaxIpd);
+}
+
+TEST(PreviewKeys, EscapeReleasesTheCursorThenQuits) {
+    PreviewOptions o;
+    KeyEffects e = apply_actions({Action::Escape}, true, o);
+    EXPECT_TRUE(e.release_cursor);
+    EXPECT_FALSE(e.quit);
+    e = apply_actions({Action::Escape}, false, o);
+    EXPECT_FALSE(e.release_cursor);
+    EXPECT_TRUE(e.quit);
+    e = apply_actions({Action::Escape, Action::Screenshot, Action::Escape, Action::Reset}, true, o);
+    EXPECT_TRUE(e.release_cursor && e.quit && e.screenshot && e.reset);
+}
+
+TEST(PreviewKeys, MoveInputTakesTheMouseOnlyWhenCaptured) {
+    HeldKeys held;
+    held.forward = 1;
+    held.right = -1;
+    held.up = 1;
+    held.fast = true;
+    MoveInput m = move_input(held, 0.5, false, 3.0, 4.0);
+    EXPECT_EQ(m.dt, 0.1);  // capped
+    EXPECT_EQ(m.forward, 1);
+    EXPECT_EQ(m.right, -1);
+    EXPECT_EQ(m.up, 1);
+    EXPECT_TRUE(m.fast);
+    EXPECT_EQ(m.mouse_dx, 0.0);
+    m = move_input(held, 0.02, true, 3.0, 4.0);
+    EXPECT_EQ(m.dt, 0.02);
+    EXPECT_EQ(m.mouse_dx, 3.0);
+    EXPECT_EQ(m.mouse_dy, 4.0);
+}
+
+}  // namespace
+}  // namespace impossible::preview
