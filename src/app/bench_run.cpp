@@ -31,6 +31,9 @@ render::FrameDesc frame_at(const BenchConfig& config, const BenchPose& pose) {
     return f;
 }
 
+// A configuration's error text: empty when the frame was drawn.
+std::string error_of(const Result<void>& drawn) { return drawn ? std::string() : drawn.error(); }
+
 double pixels_of(const render::FrameDesc& f) { return 2.0 * f.eye_width * f.eye_height; }
 
 // Without culling every portal of a cell is drawn at every level: the passes
@@ -75,7 +78,7 @@ struct Measurer {
                 }
             }
             render::FrameStats stats;
-            r.error = render::draw_frame(renderer_of(r.config), frame_at(r.config, poses[0]), &stats);
+            r.error = error_of(renderer_of(r.config).draw(frame_at(r.config, poses[0]), &stats));
         }
         if (!results[0].error.empty()) throw InputError(results[0].error);
     }
@@ -98,7 +101,7 @@ struct Measurer {
                     render::FrameStats stats;
                     glFinish();
                     const Clock::time_point t0 = Clock::now();
-                    r.error = render::draw_frame(renderer_of(r.config), frame_at(r.config, poses[p]), &stats);
+                    r.error = error_of(renderer_of(r.config).draw(frame_at(r.config, poses[p]), &stats));
                     const Clock::time_point t1 = Clock::now();
                     glFinish();
                     const Clock::time_point t2 = Clock::now();
@@ -132,7 +135,7 @@ struct Measurer {
                     render::FrameStats stats;
                     glFinish();
                     const Clock::time_point t0 = Clock::now();
-                    r.error = render::draw_frame(renderer_of(r.config), f, &stats);
+                    r.error = error_of(renderer_of(r.config).draw(f, &stats));
                     glFinish();
                     frame_ms[c].push_back(ms_between(t0, Clock::now()));
                     for (const render::FrameStats::PortalCost& cost : stats.portal_costs) {
@@ -177,12 +180,12 @@ struct Measurer {
                     traced[key] = trace::trace_frame(scenes[r.config.layout_variant], t);
                 }
                 const trace::TraceImage& t = traced[key];
-                render::FrameResult raster = render::render_frame(renderer_of(r.config), f);
-                if (!raster.error.empty()) {
-                    r.error = raster.error;
+                Result<render::RenderedFrame> raster = renderer_of(r.config).render(f);
+                if (!raster) {
+                    r.error = raster.error();
                     continue;
                 }
-                const trace::Picture a{raster.image.width, raster.image.height, raster.image.rgb, raster.image.ids};
+                const trace::Picture a{raster->image.width, raster->image.height, raster->image.rgb, raster->image.ids};
                 const trace::Picture b{t.width, t.height, t.rgb, t.ids};
                 const trace::Comparison cmp = trace::compare_pictures(a, b);
                 r.has_error = true;
@@ -203,12 +206,12 @@ Spread spread_of(std::vector<double> v) {
 }
 
 BenchResult run_bench(const BenchPlan& plan, const std::vector<BenchPose>& poses, const BenchOptions& options,
-                      const std::string& gl_renderer) {
+                      gl::StateCache& state, const std::string& gl_renderer) {
     Measurer m{plan, poses, options, {}, {}};
     for (const layout::Layout& l : plan.layouts) {
-        render::RendererResult r = render::create_renderer(l, scene::build_scene(l));
-        if (!r.renderer) throw InputError(r.error);
-        m.renderers.push_back(std::move(r.renderer));
+        Result<render::Renderer> r = render::Renderer::create(state, l, scene::build_scene(l));
+        if (!r) throw InputError(r.error());
+        m.renderers.push_back(std::make_unique<render::Renderer>(std::move(*r)));
     }
     for (const BenchConfig& c : plan.configs) m.results.push_back({c, {}, {}, {}, 0, 0, 0, 0, 0, 0, 0, {}, false, 0, 0, 0});
     m.probe();

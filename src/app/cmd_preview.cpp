@@ -52,15 +52,15 @@ struct Shown {
 
 // Builds the renderer and a walker for `layout`, in the room named `room_id`
 // if it still exists (else the start room). Empty renderer and `error` on failure.
-Shown build_shown(layout::Layout layout, const std::string& room_id, std::string& error) {
+Shown build_shown(gl::StateCache& state, layout::Layout layout, const std::string& room_id, std::string& error) {
     Shown s;
     s.layout = std::make_unique<layout::Layout>(std::move(layout));
-    render::RendererResult made = render::create_renderer(*s.layout, scene::build_scene(*s.layout));
-    if (!made.renderer) {
-        error = made.error;
+    Result<render::Renderer> made = render::Renderer::create(state, *s.layout, scene::build_scene(*s.layout));
+    if (!made) {
+        error = made.error();
         return {};
     }
-    s.renderer = std::move(made.renderer);
+    s.renderer = std::make_unique<render::Renderer>(std::move(*made));
     const int room = layout::find_room(*s.layout, room_id);
     s.walker = room >= 0 ? std::make_unique<scene::Walker>(*s.layout, room) : std::make_unique<scene::Walker>(*s.layout);
     return s;
@@ -132,8 +132,11 @@ int run_preview_command(const Args& args, std::ostream& out, std::ostream& err) 
     if (!opened.window) throw InputError(opened.error);
     PreviewWindow& window = *opened.window;
 
+    // The window context's one state cache, for the renderer and the
+    // overlays alike; declared before everything that draws with it.
+    gl::StateCache state;
     std::string error;
-    Shown shown = build_shown(first, "", error);
+    Shown shown = build_shown(state, first, "", error);
     if (!shown.renderer) throw InputError(error);
     OverlayProgram overlay = build_overlay_program(error);
     if (!error.empty()) throw InputError(error);
@@ -200,7 +203,7 @@ int run_preview_command(const Args& args, std::ostream& out, std::ostream& err) 
                 const std::string room_id = shown.layout->rooms[shown.walker->room()].id;
                 const bool walking = shown.walker->started();
                 const math::dmat4 w = shown.walker->physical_to_virtual();
-                Shown next = build_shown(std::move(*r.layout), room_id, error);
+                Shown next = build_shown(state, std::move(*r.layout), room_id, error);
                 if (next.renderer) {
                     // Walk on where the head was: same room (if it still
                     // exists) and the same physical-to-virtual mapping.
@@ -256,13 +259,13 @@ int run_preview_command(const Args& args, std::ostream& out, std::ostream& err) 
         desc.stereo = o.stereo;
         desc.clip = o.clip;
         desc.cull_portals = o.cull_portals;
-        if (std::string e = render::draw_frame(*shown.renderer, desc, &stats); !e.empty()) throw InputError(e);
+        if (Result<void> drawn = shown.renderer->draw(desc, &stats); !drawn) throw InputError(drawn.error());
 
         // Saving frames is not part of the frame time (the drawing it waits for is).
         if (o.screenshots) glFinish();
         const Clock::time_point io_start = Clock::now();
         if (o.screenshots) {
-            const render::Image image = render::read_target(shown.renderer->target);
+            const render::Image image = render::read_target(shown.renderer->target());
             write_or_throw(numbered(shots, "frame", frame), image.width, image.height, 3, image.rgb);
             write_or_throw(numbered(shots, "frame", frame, "-ids.png"), image.width, image.height, 1, image.ids);
             std::string line = "{\"frame\":" + std::to_string(frame) + ",\"room\":\"" + lay.rooms[desc.room].id +
@@ -278,8 +281,7 @@ int run_preview_command(const Args& args, std::ostream& out, std::ostream& err) 
         io_seconds = std::chrono::duration<double>(Clock::now() - io_start).count();
 
         {
-            OverlayGlState guard;
-            present(presenter, shown.renderer->target, places, o.view, fb_w, fb_h);
+            present(presenter, state, shown.renderer->target(), places, o.view, fb_w, fb_h);
 
             // The boundary grid, per eye, seen by the physical eyes.
             if (lay.play_area) {
@@ -292,13 +294,12 @@ int run_preview_command(const Args& args, std::ostream& out, std::ostream& err) 
                     OverlayBatch grid;
                     if (add_boundary_grid(grid, *lay.play_area, physical.position, eyes[e], projection) == 0) break;
                     const PixelRect& r = places.eye_rects[e];
-                    glViewport(r.x, r.y, r.width, r.height);
-                    if (o.view == PreviewView::Anaglyph)
-                        glColorMask(e == 0, e == 1, e == 1, GL_TRUE);
-                    draw_overlay(overlay, grid);
+                    state.viewport({r.x, r.y, r.width, r.height});
+                    draw_overlay(overlay, state, grid,
+                                 o.view == PreviewView::Anaglyph ? gl::color_channels(e == 0, e == 1, e == 1, true)
+                                                                 : gl::kColorAll);
                 }
-                glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-                glViewport(0, 0, fb_w, fb_h);
+                state.viewport({0, 0, fb_w, fb_h});
             }
 
             OverlayBatch batch;
@@ -337,9 +338,8 @@ int run_preview_command(const Args& args, std::ostream& out, std::ostream& err) 
                                  physical};
                 add_minimap(batch, map, {float(fb_w) - side - 8.0f, float(fb_h) - side - 8.0f}, side);
             }
-            draw_overlay(overlay, batch);
+            draw_overlay(overlay, state, batch);
         }
-        shown.renderer->state.invalidate();
 
         if (o.screenshots) glFinish();
         const Clock::time_point io_resume = Clock::now();
