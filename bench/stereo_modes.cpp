@@ -34,10 +34,10 @@ int main(int argc, char** argv) {
     }
     try {
         const layout::Layout l = app::load_layout_or_default(path);
-        gl::ContextResult context = gl::create_context(gl::Backend::Egl);
-        if (!context.context) throw std::runtime_error(context.error);
-        render::RendererResult r = render::create_renderer(l, scene::build_scene(l));
-        if (!r.renderer) throw std::runtime_error(r.error);
+        Result<gl::Context> context = gl::create_context(gl::Backend::Egl);
+        if (!context) throw std::runtime_error(context.error());
+        Result<render::Renderer> r = render::Renderer::create(context->state(), l, scene::build_scene(l));
+        if (!r) throw std::runtime_error(r.error());
 
         const render::StereoMode modes[] = {render::StereoMode::ClipShift, render::StereoMode::ViewportIndex,
                                             render::StereoMode::TwoPass};
@@ -55,11 +55,11 @@ int main(int argc, char** argv) {
                 frame.stereo = modes[m];
                 glFinish();
                 const auto t0 = std::chrono::steady_clock::now();
-                const std::string error = render::draw_frame(*r.renderer, frame, &stats[m]);
+                const Result<void> drawn = r->draw(frame, &stats[m]);
                 const auto t1 = std::chrono::steady_clock::now();
                 glFinish();
                 const auto t2 = std::chrono::steady_clock::now();
-                if (!error.empty()) throw std::runtime_error(error);
+                if (!drawn) throw std::runtime_error(drawn.error());
                 if (f >= 0) {
                     submit_ms[m].push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
                     ms[m].push_back(std::chrono::duration<double, std::milli>(t2 - t0).count());
@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
             }
         }
         std::printf("%s, %dx%d per eye, %d frames per mode, %s\n", l.source.c_str(), width, height, frames,
-                    context.context->renderer.c_str());
+                    context->renderer.c_str());
         std::printf("%-15s %10s %10s %10s %12s %10s %10s\n", "mode", "median ms", "p10 ms", "p90 ms",
                     "submit ms", "draws", "vs clip");
         const double base = percentile(ms[0], 0.5);

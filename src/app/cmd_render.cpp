@@ -29,19 +29,19 @@ int run_render_command(const Args& args, std::ostream& out, std::ostream& err) {
     const render::FrameDesc frame = frame_for(layout, options);
 
     std::string fallback_note;
-    gl::ContextResult context = gl::create_context_with_fallback(options.backend, &fallback_note);
-    if (!context.context) throw InputError("no OpenGL 4.5 context: " + context.error);
+    Result<gl::Context> context = gl::create_context_with_fallback(options.backend, &fallback_note);
+    if (!context) throw InputError("no OpenGL 4.5 context: " + context.error());
     if (!fallback_note.empty()) err << "note: " << fallback_note << "\n";
 
-    render::RendererResult renderer = render::create_renderer(layout, scene::build_scene(layout));
-    if (!renderer.renderer) throw InputError(renderer.error);
-    render::FrameResult result = render::render_frame(*renderer.renderer, frame);
-    if (!result.error.empty()) throw InputError(result.error);
+    Result<render::Renderer> renderer = render::Renderer::create(context->state(), layout, scene::build_scene(layout));
+    if (!renderer) throw InputError(renderer.error());
+    Result<render::RenderedFrame> result = renderer->render(frame);
+    if (!result) throw InputError(result.error());
 
-    const image::Image& image = result.image;
+    const image::Image& image = result->image;
     write_frame_pngs(options, image.width, image.height, image.rgb, image.ids);
     if (options.stats) {
-        const render::FrameStats& s = result.stats;
+        const render::FrameStats& s = result->stats;
         err << "stats: draw_calls=" << s.draw_calls << " triangles=" << s.triangles
             << " portal_passes_drawn=" << s.portal_passes_drawn << " portal_passes_culled=" << s.portal_passes_culled
             << " portal_fills=" << s.portal_fills << " max_level=" << s.max_level_reached << "\n";

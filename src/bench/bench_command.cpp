@@ -51,11 +51,11 @@ int run_bench_command(const app::Args& args, std::ostream& out, std::ostream& er
     const BenchPlan plan = plan_bench(layout, options);
 
     std::string fallback_note;
-    gl::ContextResult context = gl::create_context_with_fallback(options.view.backend, &fallback_note);
-    if (!context.context) throw InputError("no OpenGL 4.5 context: " + context.error);
+    Result<gl::Context> context = gl::create_context_with_fallback(options.view.backend, &fallback_note);
+    if (!context) throw InputError("no OpenGL 4.5 context: " + context.error());
     if (!fallback_note.empty()) err << "note: " << fallback_note << "\n";
 
-    const BenchResult result = run_bench(plan, poses, options, context.context->renderer);
+    const BenchResult result = run_bench(plan, poses, options, context->state(), context->renderer);
     write_bench_table(result, options, out);
     if (options.json) write_file(*options.json, bench_json(result, options));
     if (options.csv) write_file(*options.csv, bench_csv(result));

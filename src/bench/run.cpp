@@ -34,6 +34,9 @@ render::FrameDesc frame_at(const BenchConfig& config, const BenchPose& pose) {
     return f;
 }
 
+// A configuration's error text: empty when the frame was drawn.
+std::string error_of(const Result<void>& drawn) { return drawn ? std::string() : drawn.error(); }
+
 double pixels_of(const render::FrameDesc& f) { return 2.0 * f.eye_width * f.eye_height; }
 
 // Without culling every portal of a cell is drawn at every level: the passes
@@ -78,7 +81,7 @@ struct Measurer {
                 }
             }
             render::FrameStats stats;
-            r.error = render::draw_frame(renderer_of(r.config), frame_at(r.config, poses[0]), &stats);
+            r.error = error_of(renderer_of(r.config).draw(frame_at(r.config, poses[0]), &stats));
         }
         if (!results[0].error.empty()) throw InputError(results[0].error);
     }
@@ -101,7 +104,7 @@ struct Measurer {
                     render::FrameStats stats;
                     glFinish();
                     const Clock::time_point t0 = Clock::now();
-                    r.error = render::draw_frame(renderer_of(r.config), frame_at(r.config, poses[p]), &stats);
+                    r.error = error_of(renderer_of(r.config).draw(frame_at(r.config, poses[p]), &stats));
                     const Clock::time_point t1 = Clock::now();
                     glFinish();
                     const Clock::time_point t2 = Clock::now();
@@ -135,7 +138,7 @@ struct Measurer {
                     render::FrameStats stats;
                     glFinish();
                     const Clock::time_point t0 = Clock::now();
-                    r.error = render::draw_frame(renderer_of(r.config), f, &stats);
+                    r.error = error_of(renderer_of(r.config).draw(f, &stats));
                     glFinish();
                     frame_ms[c].push_back(ms_between(t0, Clock::now()));
                     for (const render::FrameStats::PortalCost& cost : stats.portal_costs) {
@@ -180,12 +183,12 @@ struct Measurer {
                     traced[key] = trace::trace_frame(scenes[r.config.layout_variant], t);
                 }
                 const image::Image& t = traced[key];
-                render::FrameResult raster = render::render_frame(renderer_of(r.config), f);
-                if (!raster.error.empty()) {
-                    r.error = raster.error;
+                Result<render::RenderedFrame> raster = renderer_of(r.config).render(f);
+                if (!raster) {
+                    r.error = raster.error();
                     continue;
                 }
-                const image::Image a{raster.image.width, raster.image.height, raster.image.rgb, raster.image.ids};
+                const image::Image a{raster->image.width, raster->image.height, raster->image.rgb, raster->image.ids};
                 const image::Image b{t.width, t.height, t.rgb, t.ids};
                 const image::Comparison cmp = image::compare_pictures(a, b);
                 r.has_error = true;
@@ -199,12 +202,12 @@ struct Measurer {
 }  // namespace
 
 BenchResult run_bench(const BenchPlan& plan, const std::vector<BenchPose>& poses, const BenchOptions& options,
-                      const std::string& gl_renderer) {
+                      gl::StateCache& state, const std::string& gl_renderer) {
     Measurer m{plan, poses, options, {}, {}};
     for (const layout::Layout& l : plan.layouts) {
-        render::RendererResult r = render::create_renderer(l, scene::build_scene(l));
-        if (!r.renderer) throw InputError(r.error);
-        m.renderers.push_back(std::move(r.renderer));
+        Result<render::Renderer> r = render::Renderer::create(state, l, scene::build_scene(l));
+        if (!r) throw InputError(r.error());
+        m.renderers.push_back(std::make_unique<render::Renderer>(std::move(*r)));
     }
     for (const BenchConfig& c : plan.configs) m.results.push_back({c, {}, {}, {}, 0, 0, 0, 0, 0, 0, 0, {}, false, 0, 0, 0});
     m.probe();

@@ -7,6 +7,7 @@
 
 #include "bench/plan.hpp"
 #include "bench/stats.hpp"
+#include "gl/state.hpp"
 
 namespace impossible::bench {
 
@@ -39,9 +40,9 @@ struct BenchResult {
     std::vector<ConfigResult> configs;
 };
 
-// Needs a current GL context. Throws InputError when the base configuration
-// cannot be drawn.
+// Needs a current GL context and its state cache. Throws InputError when the
+// base configuration cannot be drawn.
 BenchResult run_bench(const BenchPlan& plan, const std::vector<BenchPose>& poses, const BenchOptions& options,
-                      const std::string& gl_renderer);
+                      gl::StateCache& state, const std::string& gl_renderer);
 
 }  // namespace impossible::bench

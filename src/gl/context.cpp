@@ -2,12 +2,16 @@
 
 #include "gl/context_backends.hpp"
 #include "gl/gl.hpp"
+#include "gl/state.hpp"
 
 namespace impossible::gl {
 
 struct ContextImpl {
     BackendContext backend;
+    StateCache state;
 };
+
+StateCache& Context::state() const { return impl->state; }
 
 void destroy_context(ContextImpl* impl) { delete impl; }
 
@@ -19,34 +23,27 @@ std::optional<Backend> parse_backend(const std::string& name) {
     return std::nullopt;
 }
 
-ContextResult create_context(Backend backend) {
-    ContextResult out;
+Result<Context> create_context(Backend backend) {
     BackendContext made = backend == Backend::Egl ? create_egl_context() : create_osmesa_context();
-    if (!made.error.empty()) {
-        out.error = made.error;
-        return out;
-    }
+    if (!made.error.empty()) return Error{made.error};
     const int version = gladLoadGL(reinterpret_cast<GLADloadfunc>(made.load));
-    if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < 45) {
-        out.error = std::string(backend_name(backend)) + ": OpenGL 4.5 core functions could not be loaded";
-        return out;
-    }
+    if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < 45)
+        return Error{std::string(backend_name(backend)) + ": OpenGL 4.5 core functions could not be loaded"};
     Context context;
     context.backend = backend;
     context.renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     context.version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
-    context.impl.reset(new ContextImpl{std::move(made)});
-    out.context = std::move(context);
-    return out;
+    context.impl.reset(new ContextImpl{std::move(made), {}});
+    return context;
 }
 
-ContextResult create_context_with_fallback(std::optional<Backend> requested, std::string* fallback_note) {
+Result<Context> create_context_with_fallback(std::optional<Backend> requested, std::string* fallback_note) {
     if (requested) return create_context(*requested);
-    ContextResult egl = create_context(Backend::Egl);
-    if (egl.context) return egl;
-    ContextResult osmesa = create_context(Backend::OSMesa);
-    if (osmesa.context && fallback_note) *fallback_note = egl.error + "; using osmesa";
-    if (!osmesa.context) osmesa.error = egl.error + "; " + osmesa.error;
+    Result<Context> egl = create_context(Backend::Egl);
+    if (egl) return egl;
+    Result<Context> osmesa = create_context(Backend::OSMesa);
+    if (!osmesa) return Error{egl.error() + "; " + osmesa.error()};
+    if (fallback_note) *fallback_note = egl.error() + "; using osmesa";
     return osmesa;
 }
 

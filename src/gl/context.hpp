@@ -11,6 +11,8 @@
 #include <optional>
 #include <string>
 
+#include "base/result.hpp"
+
 namespace impossible::gl {
 
 enum class Backend { Egl, OSMesa };
@@ -18,6 +20,7 @@ enum class Backend { Egl, OSMesa };
 const char* backend_name(Backend backend);
 std::optional<Backend> parse_backend(const std::string& name);
 
+class StateCache;
 struct ContextImpl;
 void destroy_context(ContextImpl* impl);
 
@@ -28,19 +31,19 @@ struct Context {
     std::string renderer;  // GL_RENDERER
     std::string version;   // GL_VERSION
     std::unique_ptr<ContextImpl, void (*)(ContextImpl*)> impl{nullptr, destroy_context};
-};
 
-struct ContextResult {
-    std::optional<Context> context;
-    std::string error;  // why it failed, for humans
+    // The context's one state cache (gl/state.hpp), for every renderer drawn
+    // with it. Stays at its address when the context is moved.
+    StateCache& state() const;
 };
 
 // Creates a GL 4.5 core context with the given backend and makes it current.
-ContextResult create_context(Backend backend);
+// The error says why it failed, for humans.
+Result<Context> create_context(Backend backend);
 
-// The CLI's default: EGL, falling back to OSMesa when EGL fails. `errors`
-// receives the EGL failure when the fallback was taken.
-ContextResult create_context_with_fallback(std::optional<Backend> requested,
-                                           std::string* fallback_note = nullptr);
+// The CLI's default: EGL, falling back to OSMesa when EGL fails.
+// `fallback_note` receives the EGL failure when the fallback was taken.
+Result<Context> create_context_with_fallback(std::optional<Backend> requested,
+                                             std::string* fallback_note = nullptr);
 
 }  // namespace impossible::gl

@@ -18,8 +18,7 @@ std::string info_log(GLuint object, bool is_program) {
 
 }  // namespace
 
-ProgramResult build_program(const std::vector<ShaderSource>& stages, const std::string& defines) {
-    ProgramResult out;
+Result<Program> build_program(const std::vector<ShaderSource>& stages, const std::string& defines) {
     Program program(glCreateProgram());
     std::vector<Shader> shaders;
     for (const ShaderSource& stage : stages) {
@@ -31,10 +30,7 @@ ProgramResult build_program(const std::vector<ShaderSource>& stages, const std::
         glCompileShader(shader.get());
         GLint ok = GL_FALSE;
         glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &ok);
-        if (ok != GL_TRUE) {
-            out.error = stage.name + ": compile error: " + info_log(shader.get(), false);
-            return out;
-        }
+        if (ok != GL_TRUE) return Error{stage.name + ": compile error: " + info_log(shader.get(), false)};
         glAttachShader(program.get(), shader.get());
         shaders.push_back(std::move(shader));
     }
@@ -44,12 +40,10 @@ ProgramResult build_program(const std::vector<ShaderSource>& stages, const std::
     if (ok != GL_TRUE) {
         std::string names;
         for (const ShaderSource& s : stages) names += (names.empty() ? "" : " + ") + s.name;
-        out.error = names + ": link error: " + info_log(program.get(), true);
-        return out;
+        return Error{names + ": link error: " + info_log(program.get(), true)};
     }
     for (const Shader& s : shaders) glDetachShader(program.get(), s.get());
-    out.program = std::move(program);
-    return out;
+    return program;
 }
 
 }  // namespace impossible::gl

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "base/result.hpp"
 #include "gl/handles.hpp"
 
 namespace impossible::gl {
@@ -15,12 +16,7 @@ struct ShaderSource {
     std::string text;    // the source, without the #version line
 };
 
-struct ProgramResult {
-    Program program;
-    std::string error;  // empty on success
-};
-
 // Compiles each stage as "#version 450 core" + `defines` + text and links.
-ProgramResult build_program(const std::vector<ShaderSource>& stages, const std::string& defines);
+Result<Program> build_program(const std::vector<ShaderSource>& stages, const std::string& defines);
 
 }  // namespace impossible::gl

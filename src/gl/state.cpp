@@ -1,5 +1,7 @@
 #include "gl/state.hpp"
 
+#include <cassert>
+
 namespace impossible::gl {
 namespace {
 
@@ -7,14 +9,24 @@ void enable(GLenum cap, bool on) { on ? glEnable(cap) : glDisable(cap); }
 
 }  // namespace
 
+void StateCache::invalidate() {
+    known_ = false;
+    blend_func_set_ = false;
+    scissor_known_ = false;
+    viewport_known_ = false;
+    program_ = vertex_array_ = draw_framebuffer_ = clip_depth_ = kUnknown;
+}
+
 void StateCache::apply(const PassState& s, GLint stencil_ref) {
+    assert(s.clip_distances >= 0 && s.clip_distances <= kMaxClipDistances);
     const bool all = !known_;
+    if (all) glFrontFace(GL_CCW);
     if (all || s.depth_test != state_.depth_test) enable(GL_DEPTH_TEST, s.depth_test);
     if (all || s.depth_write != state_.depth_write) glDepthMask(s.depth_write ? GL_TRUE : GL_FALSE);
     if (all || s.depth_func != state_.depth_func) glDepthFunc(s.depth_func);
-    if (all || s.color_write != state_.color_write) {
-        const GLboolean c = s.color_write ? GL_TRUE : GL_FALSE;
-        glColorMask(c, c, c, c);
+    if (all || s.color_mask != state_.color_mask) {
+        const GLuint m = s.color_mask;
+        glColorMask((m & 1u) != 0, (m & 2u) != 0, (m & 4u) != 0, (m & 8u) != 0);
     }
     if (all || s.cull_back_faces != state_.cull_back_faces) {
         enable(GL_CULL_FACE, s.cull_back_faces);
@@ -29,12 +41,21 @@ void StateCache::apply(const PassState& s, GLint stencil_ref) {
         t.pass != state_.stencil.pass)
         glStencilOp(t.fail, t.depth_fail, t.pass);
     if (all || t.write_mask != state_.stencil.write_mask) glStencilMask(t.write_mask);
+    for (int i = 0; i < kMaxClipDistances; ++i) {
+        const bool on = i < s.clip_distances, was = i < state_.clip_distances;
+        if (all || on != was) enable(GL_CLIP_DISTANCE0 + i, on);
+    }
+    if (all || s.blend != state_.blend) enable(GL_BLEND, s.blend);
+    if (s.blend && !blend_func_set_) {
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+        blend_func_set_ = true;
+    }
     state_ = s;
     stencil_ref_ = stencil_ref;
     known_ = true;
 }
 
-void StateCache::scissor(const ScissorRect& rect) {
+void StateCache::scissor(const WindowRect& rect) {
     if (!scissor_known_ || !scissor_on_) glEnable(GL_SCISSOR_TEST);
     if (!scissor_known_ || !(rect == scissor_)) glScissor(rect.x, rect.y, rect.width, rect.height);
     scissor_on_ = true;
@@ -46,6 +67,42 @@ void StateCache::no_scissor() {
     if (!scissor_known_ || scissor_on_) glDisable(GL_SCISSOR_TEST);
     scissor_on_ = false;
     scissor_known_ = true;
+}
+
+void StateCache::viewport(const WindowRect& rect) {
+    if (viewport_known_ && rect == viewport_) return;
+    glViewport(rect.x, rect.y, rect.width, rect.height);
+    viewport_ = rect;
+    viewport_known_ = true;
+}
+
+void StateCache::viewport_indexed(GLuint index, float x, float y, float width, float height) {
+    glViewportIndexedf(index, x, y, width, height);
+    viewport_known_ = false;  // the indices no longer all hold one rectangle
+}
+
+void StateCache::program(GLuint program) {
+    if (program == program_) return;
+    glUseProgram(program);
+    program_ = program;
+}
+
+void StateCache::vertex_array(GLuint vertex_array) {
+    if (vertex_array == vertex_array_) return;
+    glBindVertexArray(vertex_array);
+    vertex_array_ = vertex_array;
+}
+
+void StateCache::draw_framebuffer(GLuint framebuffer) {
+    if (framebuffer == draw_framebuffer_) return;
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
+    draw_framebuffer_ = framebuffer;
+}
+
+void StateCache::clip_control(GLenum depth) {
+    if (depth == clip_depth_) return;
+    glClipControl(GL_LOWER_LEFT, depth);
+    clip_depth_ = depth;
 }
 
 }  // namespace impossible::gl

@@ -1,11 +1,31 @@
 // Fixed-function state as plain data, applied through one shadow cache that
 // compares before it calls GL. Render code describes each pass with one
-// immutable PassState and never calls glEnable/glDepthFunc/... itself.
+// immutable PassState and never calls glEnable/glDepthFunc/... itself; the
+// bindings (program, vertex array, draw framebuffer), the viewport and the
+// clip control go through the same cache.
+//
+// One cache per GL context, shared by everything that draws with it (every
+// renderer, the preview's present and overlays): the cache then always knows
+// what GL holds, and nothing saves or restores state with glGet. Code that
+// changes any of this state behind the cache's back must call invalidate()
+// before the cache is used again. Objects must not be deleted while the cache
+// thinks them bound (a new object may get the same name): users bind 0
+// through the cache when they are done, as the renderer does after each frame.
 #pragma once
 
 #include "gl/gl.hpp"
 
 namespace impossible::gl {
+
+// Colour write masks: bit i is channel i (R, G, B, A) of every attachment.
+inline constexpr GLuint kColorAll = 0xF;
+inline constexpr GLuint kColorNone = 0x0;
+inline constexpr GLuint color_channels(bool r, bool g, bool b, bool a) {
+    return (r ? 1u : 0u) | (g ? 2u : 0u) | (b ? 4u : 0u) | (a ? 8u : 0u);
+}
+
+// Enough for every user here (the scene shader writes five).
+inline constexpr int kMaxClipDistances = 8;
 
 struct StencilState {
     bool enabled = false;
@@ -20,35 +40,71 @@ struct PassState {
     bool depth_test = true;
     bool depth_write = true;
     GLenum depth_func = GL_GREATER;  // reversed-Z: nearer is greater
-    bool color_write = true;         // all colour attachments
-    bool cull_back_faces = true;
+    GLuint color_mask = kColorAll;   // all colour attachments
+    bool cull_back_faces = true;     // counter-clockwise fronts
     StencilState stencil;
+    int clip_distances = 0;          // GL_CLIP_DISTANCE0 .. n - 1 enabled
+    bool blend = false;              // straight alpha "over" (overlays); off: replace
     bool operator==(const PassState&) const = default;
 };
 
-struct ScissorRect {
-    int x = 0, y = 0, width = 0, height = 0;  // GL window coordinates (origin bottom-left)
-    bool operator==(const ScissorRect&) const = default;
+// Plain 2D drawing (overlays, an image shown in a window): no depth,
+// stencil, culling or clip distances; the given colour channels; straight
+// alpha blending or none.
+inline constexpr PassState plain_2d_state(bool blend, GLuint color_mask = kColorAll) {
+    PassState s;
+    s.depth_test = false;
+    s.depth_write = false;
+    s.color_mask = color_mask;
+    s.cull_back_faces = false;
+    s.blend = blend;
+    return s;
+}
+
+// A rectangle in GL window coordinates (origin bottom-left).
+struct WindowRect {
+    int x = 0, y = 0, width = 0, height = 0;
+    bool operator==(const WindowRect&) const = default;
 };
+using ScissorRect = WindowRect;
 
 class StateCache {
 public:
-    // Forgets what GL holds, so that the next apply() sets everything.
-    void invalidate() {
-        known_ = false;
-        scissor_known_ = false;
-    }
+    // Forgets what GL holds, so that the next call of each kind sets it. Only
+    // for when code outside the cache has changed state on this context.
+    void invalidate();
+
     void apply(const PassState& state, GLint stencil_ref);
-    void scissor(const ScissorRect& rect);  // enables the scissor test
+    void scissor(const WindowRect& rect);  // enables the scissor test
     void no_scissor();
+    // Every viewport index at once (glViewport).
+    void viewport(const WindowRect& rect);
+    // One viewport index (per-eye viewports); the next viewport() call sets
+    // all of them again.
+    void viewport_indexed(GLuint index, float x, float y, float width, float height);
+    void program(GLuint program);
+    void vertex_array(GLuint vertex_array);
+    void draw_framebuffer(GLuint framebuffer);
+    // glClipControl with a lower-left origin and the given depth mode
+    // (GL_ZERO_TO_ONE or GL_NEGATIVE_ONE_TO_ONE).
+    void clip_control(GLenum depth);
 
 private:
-    bool known_ = false;
+    static constexpr GLuint kUnknown = ~GLuint{0};
+
+    bool known_ = false;  // state_ and stencil_ref_ are what GL holds
     PassState state_;
     GLint stencil_ref_ = 0;
-    bool scissor_on_ = false;
+    bool blend_func_set_ = false;
     bool scissor_known_ = false;
-    ScissorRect scissor_;
+    bool scissor_on_ = false;
+    WindowRect scissor_;
+    bool viewport_known_ = false;
+    WindowRect viewport_;
+    GLuint program_ = kUnknown;
+    GLuint vertex_array_ = kUnknown;
+    GLuint draw_framebuffer_ = kUnknown;
+    GLenum clip_depth_ = kUnknown;
 };
 
 }  // namespace impossible::gl

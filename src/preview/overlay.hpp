@@ -1,10 +1,10 @@
 // Overlays of the preview window (HUD, minimap, boundary grid): coloured
 // triangles and lines collected on the CPU, drawn with one small program.
 //
-// The renderer keeps GL state in a StateCache and enables the clip distances
-// and reversed-Z clip control globally; OverlayGlState saves what overlays
-// change, sets plain 2D state, and restores it, so the renderer's cache stays
-// true (cmd_preview also calls renderer.state.invalidate() after each frame).
+// All GL state goes through the window context's StateCache, which the
+// renderer shares: overlays set their own state through it (no depth,
+// stencil, culling, scissor or clip distances; alpha blending) and need not
+// save or restore anything.
 #pragma once
 
 #include <string>
@@ -13,7 +13,9 @@
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
+#include "base/result.hpp"
 #include "gl/handles.hpp"
+#include "gl/state.hpp"
 
 namespace impossible::preview {
 
@@ -45,23 +47,11 @@ struct OverlayProgram {
 };
 
 // Needs a current GL 4.5 context; `error` names the failing shader.
-OverlayProgram build_overlay_program(std::string& error);
+Result<OverlayProgram> build_overlay_program();
 
-// Draws the batch (triangles first, then lines) into the current viewport.
-void draw_overlay(OverlayProgram& program, const OverlayBatch& batch);
-
-// Saves the fixed-function state overlays touch, and sets: no depth, stencil,
-// culling, scissor or clip distances; alpha blending; all colour channels.
-struct OverlayGlState {
-    OverlayGlState();
-    ~OverlayGlState();
-    OverlayGlState(const OverlayGlState&) = delete;
-    OverlayGlState& operator=(const OverlayGlState&) = delete;
-
-private:
-    bool depth_, stencil_, cull_, scissor_, blend_, clip_[5];
-    GLboolean color_mask_[4];
-    GLint viewport_[4];
-};
+// Draws the batch (triangles first, then lines) into the current framebuffer
+// and viewport, alpha-blended, writing the given colour channels.
+void draw_overlay(OverlayProgram& program, gl::StateCache& state, const OverlayBatch& batch,
+                  GLuint color_mask = gl::kColorAll);
 
 }  // namespace impossible::preview

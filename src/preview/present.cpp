@@ -23,23 +23,20 @@ WindowLayout window_layout(int fb_width, int fb_height, double aspect, PreviewVi
     return out;
 }
 
-Presenter build_presenter(std::string& error) {
+Result<Presenter> build_presenter() {
     Presenter p;
-    gl::ProgramResult built = gl::build_program({render::embedded_shader(GL_VERTEX_SHADER, "shaders/preview_present.vert.glsl"),
-                                                 render::embedded_shader(GL_FRAGMENT_SHADER, "shaders/preview_present.frag.glsl")},
-                                                "");
-    if (!built.error.empty()) {
-        error = built.error;
-        return p;
-    }
-    p.program = std::move(built.program);
+    Result<gl::Program> built = gl::build_program({render::embedded_shader(GL_VERTEX_SHADER, "shaders/preview_present.vert.glsl"),
+                                                   render::embedded_shader(GL_FRAGMENT_SHADER, "shaders/preview_present.frag.glsl")},
+                                                  "");
+    if (!built) return Error{built.error()};
+    p.program = std::move(*built);
     p.u_eye = glGetUniformLocation(p.program.get(), "u_eye");
     glProgramUniform1i(p.program.get(), glGetUniformLocation(p.program.get(), "u_view"), 0);
     p.empty_vao = gl::create_vertex_array();
     return p;
 }
 
-void present(Presenter& p, const render::Target& target, const WindowLayout& layout, PreviewView view,
+void present(Presenter& p, gl::StateCache& state, const render::Target& target, const WindowLayout& layout, PreviewView view,
              int fb_width, int fb_height) {
     if (p.width != target.width || p.height != target.height || !p.texture) {
         p.texture = gl::create_texture(GL_TEXTURE_2D);
@@ -57,26 +54,26 @@ void present(Presenter& p, const render::Target& target, const WindowLayout& lay
     glBlitNamedFramebuffer(target.framebuffer.get(), p.framebuffer.get(), 0, 0, target.width, target.height, 0, 0,
                            target.width, target.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    glViewport(0, 0, fb_width, fb_height);
+    state.draw_framebuffer(0);
+    // The clear obeys the colour mask and the scissor.
+    state.apply(gl::plain_2d_state(false), 0);
+    state.no_scissor();
     const GLfloat grey[4] = {0.12f, 0.12f, 0.13f, 1.0f};
     glClearNamedFramebufferfv(0, GL_COLOR, 0, grey);
-    glDisable(GL_BLEND);
-    glUseProgram(p.program.get());
+    state.program(p.program.get());
     glBindTextureUnit(0, p.texture.get());
-    glBindVertexArray(p.empty_vao.get());
+    state.vertex_array(p.empty_vao.get());
     const int draws = view == PreviewView::Anaglyph ? 1 : 2;
     for (int e = 0; e < draws; ++e) {
         const PixelRect& r = layout.eye_rects[e];
-        glViewport(r.x, r.y, r.width, r.height);
+        state.viewport({r.x, r.y, r.width, r.height});
         glProgramUniform1i(p.program.get(), p.u_eye, view == PreviewView::Anaglyph ? -1 : e);
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
-    glBindVertexArray(0);
+    state.vertex_array(0);
     glBindTextureUnit(0, 0);
-    glUseProgram(0);
-    glEnable(GL_BLEND);
-    glViewport(0, 0, fb_width, fb_height);
+    state.program(0);
+    state.viewport({0, 0, fb_width, fb_height});
 }
 
 std::vector<std::uint8_t> read_window(int w, int h) {

@@ -9,7 +9,9 @@
 #include <vector>
 
 #include "preview/options.hpp"
+#include "base/result.hpp"
 #include "gl/handles.hpp"
+#include "gl/state.hpp"
 #include "render/target.hpp"
 
 namespace impossible::preview {
@@ -36,11 +38,12 @@ struct Presenter {
     GLint u_eye = -1;
 };
 
-Presenter build_presenter(std::string& error);
+Result<Presenter> build_presenter();
 
 // Clears the default framebuffer and draws the renderer's colour image into
-// the eye rectangles. Call inside an OverlayGlState.
-void present(Presenter& presenter, const render::Target& target, const WindowLayout& layout, PreviewView view,
+// the eye rectangles, through the window context's state cache; leaves the
+// default framebuffer bound with the whole window as the viewport.
+void present(Presenter& presenter, gl::StateCache& state, const render::Target& target, const WindowLayout& layout, PreviewView view,
              int fb_width, int fb_height);
 
 // The default framebuffer's back buffer as RGB rows from the top.

@@ -93,7 +93,7 @@ double save_rendered_frame(PreviewSession& s, long frame, const render::FrameDes
     if (!s.files.every_frame) return 0.0;
     glFinish();
     const Clock::time_point start = Clock::now();
-    save_frame(s.files, render::read_target(s.shown.renderer->target), frame_record(s, frame, desc, passed));
+    save_frame(s.files, render::read_target(s.shown.renderer->target()), frame_record(s, frame, desc, passed));
     return seconds_since(start);
 }
 
@@ -110,12 +110,12 @@ void draw_boundary_grids(PreviewSession& s, const WindowLayout& places, int fb_w
         OverlayBatch grid;
         if (add_boundary_grid(grid, *area, s.physical.position, eyes[e], projection) == 0) break;
         const PixelRect& r = places.eye_rects[e];
-        glViewport(r.x, r.y, r.width, r.height);
-        if (s.options.view == PreviewView::Anaglyph) glColorMask(e == 0, e == 1, e == 1, GL_TRUE);
-        draw_overlay(s.overlay, grid);
+        s.state->viewport({r.x, r.y, r.width, r.height});
+        draw_overlay(s.overlay, *s.state, grid,
+                     s.options.view == PreviewView::Anaglyph ? gl::color_channels(e == 0, e == 1, e == 1, true)
+                                                             : gl::kColorAll);
     }
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glViewport(0, 0, fb_w, fb_h);
+    s.state->viewport({0, 0, fb_w, fb_h});
 }
 
 HudFacts hud_facts(const PreviewSession& s, const render::FrameDesc& desc) {
@@ -136,8 +136,7 @@ HudFacts hud_facts(const PreviewSession& s, const render::FrameDesc& desc) {
 
 // The renderer's image in the window, then the grid, HUD and minimap over it.
 void draw_window(PreviewSession& s, const WindowLayout& places, const render::FrameDesc& desc, int fb_w, int fb_h) {
-    OverlayGlState guard;
-    present(s.presenter, s.shown.renderer->target, places, s.options.view, fb_w, fb_h);
+    present(s.presenter, *s.state, s.shown.renderer->target(), places, s.options.view, fb_w, fb_h);
     draw_boundary_grids(s, places, fb_w, fb_h);
 
     OverlayBatch batch;
@@ -152,7 +151,7 @@ void draw_window(PreviewSession& s, const WindowLayout& places, const render::Fr
                                &walker.links().transfer, s.physical};
         add_minimap(batch, map, {float(fb_w) - side - 8.0f, float(fb_h) - side - 8.0f}, side);
     }
-    draw_overlay(s.overlay, batch);
+    draw_overlay(s.overlay, *s.state, batch);
 }
 
 // window-NNNN.png with --screenshots, screenshot-NNNN.png after P or F12.
@@ -183,10 +182,9 @@ bool run_frame(PreviewSession& s, long frame, std::ostream& err) {
     if (fb_w <= 0 || fb_h <= 0) return true;  // minimised
     const WindowLayout places = window_layout(fb_w, fb_h, eye_aspect(s.options), s.options.view);
     const render::FrameDesc desc = frame_desc(s, places.eye_rects[0]);
-    if (std::string e = render::draw_frame(*s.shown.renderer, desc, &s.stats); !e.empty()) throw InputError(e);
+    if (Result<void> drawn = s.shown.renderer->draw(desc, &s.stats); !drawn) throw InputError(drawn.error());
     s.clock.io_seconds = save_rendered_frame(s, frame, desc, passed);
     draw_window(s, places, desc, fb_w, fb_h);
-    s.shown.renderer->state.invalidate();
     s.clock.io_seconds += save_window_files(s, frame, keys.screenshot, fb_w, fb_h, err);
     swap_buffers(*s.window);
     return true;

@@ -10,15 +10,12 @@ namespace impossible::preview {
 
 using app::InputError;
 
-Shown build_shown(layout::Layout layout, const std::string& room_id, std::string& error) {
+Result<Shown> build_shown(gl::StateCache& state, layout::Layout layout, const std::string& room_id) {
     Shown s;
     s.layout = std::make_unique<layout::Layout>(std::move(layout));
-    render::RendererResult made = render::create_renderer(*s.layout, scene::build_scene(*s.layout));
-    if (!made.renderer) {
-        error = made.error;
-        return {};
-    }
-    s.renderer = std::move(made.renderer);
+    Result<render::Renderer> made = render::Renderer::create(state, *s.layout, scene::build_scene(*s.layout));
+    if (!made) return Error{made.error()};
+    s.renderer = std::make_unique<render::Renderer>(std::move(*made));
     const int room = layout::find_room(*s.layout, room_id);
     s.walker = room >= 0 ? std::make_unique<scene::Walker>(*s.layout, room) : std::make_unique<scene::Walker>(*s.layout);
     return s;
@@ -65,13 +62,16 @@ void open_session(PreviewSession& s, PreviewOptions options) {
 
     s.title = "impossible preview - " + (first.name.empty() ? first.source : first.name);
     s.window = open_preview_window(o, s.title);
-    std::string error;
-    s.shown = build_shown(std::move(first), "", error);
-    if (!s.shown.renderer) throw InputError(error);
-    s.overlay = build_overlay_program(error);
-    if (!error.empty()) throw InputError(error);
-    s.presenter = build_presenter(error);
-    if (!error.empty()) throw InputError(error);
+    s.state = std::make_unique<gl::StateCache>();
+    Result<Shown> shown = build_shown(*s.state, std::move(first), "");
+    if (!shown) throw InputError(shown.error());
+    s.shown = std::move(*shown);
+    Result<OverlayProgram> overlay = build_overlay_program();
+    if (!overlay) throw InputError(overlay.error());
+    s.overlay = std::move(*overlay);
+    Result<Presenter> presenter = build_presenter();
+    if (!presenter) throw InputError(presenter.error());
+    s.presenter = std::move(*presenter);
 
     if (o.layout_path) s.watcher = watch_layout(*o.layout_path);
     s.physical = start_pose(*s.shown.layout);
@@ -89,12 +89,12 @@ void poll_reload(PreviewSession& s, Clock::time_point now) {
     const std::string room_id = s.shown.layout->rooms[walker.room()].id;
     const bool walking = walker.started();
     const math::dmat4 w = walker.physical_to_virtual();
-    std::string error;
-    Shown next = build_shown(std::move(*r.layout), room_id, error);
-    if (!next.renderer) {
-        s.reload_errors = {"the reloaded layout cannot be drawn: " + error};
+    Result<Shown> built = build_shown(*s.state, std::move(*r.layout), room_id);
+    if (!built) {
+        s.reload_errors = {"the reloaded layout cannot be drawn: " + built.error()};
         return;
     }
+    Shown& next = *built;
     // Walk on where the head was: same room (if it still exists) and the
     // same physical-to-virtual mapping.
     if (walking && layout::find_room(*next.layout, room_id) >= 0) next.walker->resume(w, s.physical);

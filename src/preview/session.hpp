@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "base/result.hpp"
+#include "gl/state.hpp"
 #include "layout/layout.hpp"
 #include "layout/path_file.hpp"
 #include "math/pose.hpp"
@@ -40,9 +42,9 @@ struct Shown {
 };
 
 // Builds the renderer and a walker for `layout`, in the room named `room_id`
-// if it still exists (else the start room). Empty renderer and `error` on
-// failure. Needs a current GL context.
-Shown build_shown(layout::Layout layout, const std::string& room_id, std::string& error);
+// if it still exists (else the start room). Needs a current GL context, whose
+// state cache is `state`.
+Result<Shown> build_shown(gl::StateCache& state, layout::Layout layout, const std::string& room_id);
 
 // The layout's start as a physical head pose.
 math::HeadPose start_pose(const layout::Layout& layout);
@@ -63,6 +65,9 @@ struct PreviewSession {
     layout::PathFile path;                  // --path: one physical pose a frame
     FrameFiles files;
     std::unique_ptr<PreviewWindow> window;  // declared before the GL objects: outlives them
+    // The window context's one state cache, for the renderer, the present
+    // and the overlays alike; declared before everything that draws with it.
+    std::unique_ptr<gl::StateCache> state;
     Shown shown;
     OverlayProgram overlay;
     Presenter presenter;

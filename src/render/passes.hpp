@@ -24,25 +24,48 @@ enum class Pass {
     Count
 };
 
-inline constexpr gl::StencilState stencil_equal(GLenum pass_op) {
-    gl::StencilState s;
-    s.enabled = true;
-    s.func = GL_EQUAL;
-    s.pass = pass_op;
+// Every pass of the scene shader writes gl_ClipDistance[0..4]: the eye's
+// rectangle (four) and the portal plane.
+inline constexpr int kSceneClipDistances = 5;
+
+// A pass of the portal renderer: depth test on, stencil == reference, clip
+// distances on, no blending.
+inline constexpr gl::PassState portal_pass(bool depth_write, GLenum depth_func, GLuint color_mask, bool cull,
+                                           GLenum stencil_pass_op) {
+    gl::PassState s;
+    s.depth_test = true;
+    s.depth_write = depth_write;
+    s.depth_func = depth_func;
+    s.color_mask = color_mask;
+    s.cull_back_faces = cull;
+    s.stencil.enabled = true;
+    s.stencil.func = GL_EQUAL;
+    s.stencil.pass = stencil_pass_op;
+    s.clip_distances = kSceneClipDistances;
     return s;
 }
 
+inline constexpr GLuint kColor = gl::kColorAll, kNoColor = gl::kColorNone;
+
 inline constexpr std::array<gl::PassState, static_cast<size_t>(Pass::Count)> kPassStates = {{
-    // depth_test, depth_write, depth_func, color_write, cull_back_faces, stencil
-    {true, true, GL_GREATER, true, true, stencil_equal(GL_KEEP)},     // Scene
-    {true, true, GL_GREATER, false, true, stencil_equal(GL_KEEP)},    // PortalDepth
-    {true, false, GL_GEQUAL, false, true, stencil_equal(GL_KEEP)},    // PortalTest
-    {true, false, GL_GEQUAL, false, true, stencil_equal(GL_INCR)},    // PortalMark
-    {true, true, GL_ALWAYS, false, false, stencil_equal(GL_KEEP)},    // ClearDepth
-    {true, true, GL_ALWAYS, false, true, stencil_equal(GL_DECR)},     // PortalUnmark
-    {true, false, GL_GEQUAL, true, true, stencil_equal(GL_KEEP)},     // PortalFill
-    {true, false, GL_GEQUAL, true, true, stencil_equal(GL_KEEP)},     // PortalTexture
+    // depth_write, depth_func, colour, cull_back_faces, stencil pass op
+    portal_pass(true, GL_GREATER, kColor, true, GL_KEEP),     // Scene
+    portal_pass(true, GL_GREATER, kNoColor, true, GL_KEEP),   // PortalDepth
+    portal_pass(false, GL_GEQUAL, kNoColor, true, GL_KEEP),   // PortalTest
+    portal_pass(false, GL_GEQUAL, kNoColor, true, GL_INCR),   // PortalMark
+    portal_pass(true, GL_ALWAYS, kNoColor, false, GL_KEEP),   // ClearDepth
+    portal_pass(true, GL_ALWAYS, kNoColor, true, GL_DECR),    // PortalUnmark
+    portal_pass(false, GL_GEQUAL, kColor, true, GL_KEEP),     // PortalFill
+    portal_pass(false, GL_GEQUAL, kColor, true, GL_KEEP),     // PortalTexture
 }};
+
+// Clearing a target (glClearNamedFramebuffer* obeys the write masks and the
+// scissor): every write on. The clip distances stay as the passes want them.
+inline constexpr gl::PassState kClearState = [] {
+    gl::PassState s;
+    s.clip_distances = kSceneClipDistances;
+    return s;
+}();
 
 // The table above is for reversed-Z; with standard depth (nearer is less)
 // every comparison flips.

@@ -1,34 +1,57 @@
 #include "render/renderer.hpp"
 
+#include <cassert>
+
 #include "math/projection.hpp"
+#include "render/passes.hpp"
 #include "render/portal_recursion.hpp"
+#include "render/renderer_data.hpp"
 #include "scene/shading.hpp"
 
 namespace impossible::render {
 namespace {
 
-int mode_index(StereoMode mode) { return static_cast<int>(mode); }
+int mode_index(StereoMode mode) {
+    const int i = static_cast<int>(mode);
+    assert(i >= 0 && i < kStereoModeCount);
+    return i;
+}
 
-std::string ensure_target(Renderer& r, int width, int height, DepthMode depth) {
+Result<void> ensure_target(RendererData& r, int width, int height, DepthMode depth) {
     if (r.target.width == width && r.target.height == height && r.target.depth == depth && r.target.framebuffer)
         return {};
-    TargetResult made = create_target(width, height, depth);
-    if (!made.error.empty()) return made.error;
-    r.target = std::move(made.target);
+    Result<Target> made = create_target(width, height, depth);
+    if (!made) return Error{made.error()};
+    r.target = std::move(*made);
     return {};
 }
 
-std::string ensure_program(Renderer& r, StereoMode mode) {
+Result<void> ensure_program(RendererData& r, StereoMode mode) {
     std::optional<SceneProgram>& slot = r.programs[mode_index(mode)];
     if (slot) return {};
-    SceneProgramResult built = build_scene_program(mode);
-    if (!built.error.empty()) {
+    Result<SceneProgram> built = build_scene_program(mode);
+    if (!built) {
         if (mode == StereoMode::ViewportIndex)
-            return "stereo mode 'viewport-index' needs GL_ARB_shader_viewport_layer_array: " + built.error;
-        return built.error;
+            return Error{"stereo mode 'viewport-index' needs GL_ARB_shader_viewport_layer_array: " + built.error()};
+        return Error{built.error()};
     }
-    slot = std::move(built.program);
+    slot = std::move(*built);
     return {};
+}
+
+// What a frame needs beyond the default program: its target, its stereo
+// mode's program and, for render-to-texture portals, their program and targets.
+Result<void> prepare_frame(RendererData& r, const FrameDesc& frame) {
+    if (Result<void> made = ensure_target(r, 2 * frame.eye_width, frame.eye_height, frame.depth); !made) return made;
+    if (Result<void> made = ensure_program(r, frame.stereo); !made) return made;
+    if (frame.portal_texture_scale <= 0.0) return {};
+    if (frame.stereo != StereoMode::ClipShift) return Error{"render-to-texture portals need --stereo clip-shift"};
+    if (!r.portal_texture_program) {
+        Result<SceneProgram> built = build_portal_texture_program();
+        if (!built) return Error{built.error()};
+        r.portal_texture_program = std::move(*built);
+    }
+    return ensure_portal_textures(r, frame);
 }
 
 // Per-eye views of the head's room at level 0, restricted to `eye_mask`.
@@ -44,12 +67,48 @@ LevelView root_view(const FrameDesc& frame, const math::dmat4& projection, unsig
     return view;
 }
 
+math::dmat4 projection_of(const FrameDesc& frame) {
+    math::Frustum frustum;
+    frustum.fov_y_deg = frame.fov_y_deg;
+    frustum.aspect = static_cast<double>(frame.eye_width) / frame.eye_height;
+    frustum.near = frame.near;
+    return frame.depth == DepthMode::ReversedZ ? math::perspective_reversed_z(frustum)
+                                               : math::perspective_standard(frustum, frame.far);
+}
+
+// Both eyes' views of the frame into the bound target, as the stereo mode draws them.
+void draw_stereo(DrawContext& ctx) {
+    const FrameDesc& frame = ctx.frame;
+    gl::StateCache& state = *ctx.renderer.state;
+    const gl::WindowRect whole{0, 0, 2 * frame.eye_width, frame.eye_height};
+    const float w = static_cast<float>(frame.eye_width), h = static_cast<float>(frame.eye_height);
+    switch (frame.stereo) {
+        case StereoMode::ClipShift:
+            state.viewport(whole);
+            draw_level(ctx, root_view(frame, ctx.projection, 3u));
+            break;
+        case StereoMode::ViewportIndex:
+            state.viewport_indexed(0, 0.0f, 0.0f, w, h);
+            state.viewport_indexed(1, w, 0.0f, w, h);
+            draw_level(ctx, root_view(frame, ctx.projection, 3u));
+            state.viewport(whole);
+            break;
+        case StereoMode::TwoPass:
+            for (int e = 0; e < 2; ++e) {
+                state.viewport({e * frame.eye_width, 0, frame.eye_width, frame.eye_height});
+                glProgramUniform1i(ctx.program.program.get(), ctx.program.single_eye, e);
+                draw_level(ctx, root_view(frame, ctx.projection, 1u << e));
+            }
+            state.viewport(whole);
+            break;
+    }
+}
+
 }  // namespace
 
-void clear_target(Renderer& r, const Target& target, int stencil) {
-    // Clears obey the write masks and the scissor: all writes on, no scissor.
-    r.state.apply(gl::PassState{}, 0);
-    r.state.no_scissor();
+void clear_target(RendererData& r, const Target& target, int stencil) {
+    r.state->apply(kClearState, 0);
+    r.state->no_scissor();
     const glm::dvec3 bg = scene::kBackgroundColor;
     const GLfloat color[4] = {static_cast<GLfloat>(bg.r), static_cast<GLfloat>(bg.g),
                               static_cast<GLfloat>(bg.b), 1.0f};
@@ -61,103 +120,65 @@ void clear_target(Renderer& r, const Target& target, int stencil) {
                               stencil);
 }
 
-RendererResult create_renderer(const layout::Layout& layout, const scene::Scene& scene) {
-    RendererResult out;
-    auto r = std::make_unique<Renderer>();
-    r->layout = layout;
-    r->scene = scene;
-    r->portals_of_room.resize(layout.rooms.size());
+Result<Renderer> Renderer::create(gl::StateCache& state, const layout::Layout& layout, const scene::Scene& scene) {
+    auto r = std::make_unique<RendererData>();
+    r->state = &state;
+    r->cells = scene.cells;
+    r->links = scene.links;
+    r->portals.reserve(layout.portals.size());
     for (size_t i = 0; i < layout.portals.size(); ++i) {
-        const layout::Portal& a = layout.portals[i];
-        r->transfer.push_back(math::transfer_matrix(a.rect, layout.portals[a.target].rect));
-        r->portals_of_room[a.room].push_back(static_cast<int>(i));
+        const layout::Portal& p = layout.portals[i];
+        r->portals.push_back({p.rect, p.room, p.target, scene.portals[i]});
     }
     r->gpu = upload_scene(scene);
     r->empty_vao = gl::create_vertex_array();
-    ClearDepthProgramResult clear = build_clear_depth_program();
-    if (!clear.error.empty()) {
-        out.error = clear.error;
-        return out;
-    }
-    r->clear_depth = std::move(clear.program);
-    if (std::string e = ensure_program(*r, StereoMode::ClipShift); !e.empty()) {
-        out.error = e;
-        return out;
-    }
-    for (int i = 0; i < 5; ++i) glEnable(GL_CLIP_DISTANCE0 + i);
-    glFrontFace(GL_CCW);
-    r->state.invalidate();
-    out.renderer = std::move(r);
-    return out;
+    Result<ClearDepthProgram> clear = build_clear_depth_program();
+    if (!clear) return Error{clear.error()};
+    r->clear_depth = std::move(*clear);
+    if (Result<void> made = ensure_program(*r, StereoMode::ClipShift); !made) return Error{made.error()};
+    return Renderer(std::move(r));
 }
 
-std::string draw_frame(Renderer& r, const FrameDesc& frame, FrameStats* stats_out) {
-    const int width = 2 * frame.eye_width, height = frame.eye_height;
-    if (std::string e = ensure_target(r, width, height, frame.depth); !e.empty()) return e;
-    if (std::string e = ensure_program(r, frame.stereo); !e.empty()) return e;
-    if (frame.portal_texture_scale > 0.0) {
-        if (frame.stereo != StereoMode::ClipShift) return "render-to-texture portals need --stereo clip-shift";
-        if (!r.portal_texture_program) {
-            SceneProgramResult built = build_portal_texture_program();
-            if (!built.error.empty()) return built.error;
-            r.portal_texture_program = std::move(built.program);
-        }
-    }
+Renderer::Renderer(std::unique_ptr<RendererData> data) : data_(std::move(data)) {}
+Renderer::Renderer(Renderer&&) noexcept = default;
+Renderer& Renderer::operator=(Renderer&&) noexcept = default;
+Renderer::~Renderer() = default;
+
+const Target& Renderer::target() const { return data_->target; }
+
+Result<void> Renderer::draw(const FrameDesc& frame, FrameStats* stats_out) {
+    RendererData& r = *data_;
+    assert(frame.room >= 0 && static_cast<size_t>(frame.room) < r.cells.size());
+    if (Result<void> ready = prepare_frame(r, frame); !ready) return ready;
     const SceneProgram& program = *r.programs[mode_index(frame.stereo)];
+    gl::StateCache& state = *r.state;
 
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, r.target.framebuffer.get());
+    state.draw_framebuffer(r.target.framebuffer.get());
     // Reversed-Z: depth 1 at the near plane, 0 at infinity, in a float buffer.
-    const bool reversed_z = frame.depth == DepthMode::ReversedZ;
-    glClipControl(GL_LOWER_LEFT, reversed_z ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
-    // Other code (a second renderer, the preview's overlays) may have used the
-    // context since the last frame: the cache re-sends every state once.
-    r.state.invalidate();
+    state.clip_control(frame.depth == DepthMode::ReversedZ ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
     clear_target(r, r.target, 0);
-    glUseProgram(program.program.get());
-    glBindVertexArray(r.gpu.vao.get());
+    state.program(program.program.get());
+    state.vertex_array(r.gpu.vao.get());
 
-    math::Frustum frustum;
-    frustum.fov_y_deg = frame.fov_y_deg;
-    frustum.aspect = static_cast<double>(frame.eye_width) / frame.eye_height;
-    frustum.near = frame.near;
     FrameStats stats;
     FrameProfiler profiler;
-    DrawContext ctx{r, program, frame, stats,
-                    reversed_z ? math::perspective_reversed_z(frustum) : math::perspective_standard(frustum, frame.far),
-                    frame.profile ? &profiler : nullptr};
-
-    const float w = static_cast<float>(frame.eye_width), h = static_cast<float>(frame.eye_height);
-    switch (frame.stereo) {
-        case StereoMode::ClipShift:
-            glViewport(0, 0, width, height);
-            draw_level(ctx, root_view(frame, ctx.projection, 3u));
-            break;
-        case StereoMode::ViewportIndex:
-            glViewportIndexedf(0, 0.0f, 0.0f, w, h);
-            glViewportIndexedf(1, w, 0.0f, w, h);
-            draw_level(ctx, root_view(frame, ctx.projection, 3u));
-            glViewport(0, 0, width, height);
-            break;
-        case StereoMode::TwoPass:
-            for (int e = 0; e < 2; ++e) {
-                glViewport(e * frame.eye_width, 0, frame.eye_width, frame.eye_height);
-                glProgramUniform1i(program.program.get(), program.single_eye, e);
-                draw_level(ctx, root_view(frame, ctx.projection, 1u << e));
-            }
-            glViewport(0, 0, width, height);
-            break;
-    }
-    glBindVertexArray(0);
-    glUseProgram(0);
-    if (frame.profile) collect_profile(profiler, stats);
+    DrawContext ctx{r, program, frame, stats, projection_of(frame), frame.profile ? &profiler : nullptr};
+    draw_stereo(ctx);
+    // Nothing of this renderer stays bound: the cache is the context's, and
+    // a name GL reuses after this renderer's objects are deleted must not
+    // look bound already.
+    state.vertex_array(0);
+    state.program(0);
+    state.draw_framebuffer(0);
+    if (frame.profile) profiler.collect(stats);
     if (stats_out) *stats_out = std::move(stats);
     return {};
 }
 
-FrameResult render_frame(Renderer& r, const FrameDesc& frame) {
-    FrameResult out;
-    out.error = draw_frame(r, frame, &out.stats);
-    if (out.error.empty()) out.image = read_target(r.target);
+Result<RenderedFrame> Renderer::render(const FrameDesc& frame) {
+    RenderedFrame out;
+    if (Result<void> drawn = draw(frame, &out.stats); !drawn) return Error{drawn.error()};
+    out.image = read_target(data_->target);
     return out;
 }
 

@@ -1,61 +1,58 @@
 // The GL renderer: one side-by-side stereo frame of a layout, drawn with
 // single-pass instanced stereo and recursive stencil portals.
 //
-// Needs a current GL 4.5 context (gl/context.hpp). Talks to the rest of the
-// program through plain data: a FrameDesc in, an Image and FrameStats out.
+// Needs a current GL 4.5 context (gl/context.hpp) and that context's state
+// cache, which every user of the context shares (gl/state.hpp). Talks to the
+// rest of the program through plain data: a FrameDesc in, an Image and
+// FrameStats out. The scene's vertex arrays are uploaded once and not kept;
+// the renderer keeps index ranges, the portal links and the portal
+// rectangles.
 #pragma once
 
 #include <memory>
-#include <optional>
-#include <string>
-#include <vector>
 
+#include "base/result.hpp"
 #include "gl/state.hpp"
 #include "layout/layout.hpp"
 #include "render/frame.hpp"
-#include "render/gpu_scene.hpp"
-#include "render/scene_program.hpp"
 #include "render/target.hpp"
 #include "scene/scene.hpp"
 
 namespace impossible::render {
 
-struct Renderer {
-    layout::Layout layout;
-    scene::Scene scene;                   // index ranges of cells and portal boxes
-    std::vector<math::dmat4> transfer;    // M_AB per portal A, computed once
-    std::vector<std::vector<int>> portals_of_room;
-    GpuScene gpu;
-    std::optional<SceneProgram> programs[3];  // per StereoMode, built on first use
-    ClearDepthProgram clear_depth;
-    gl::VertexArray empty_vao;            // for the attribute-less clear triangle
-    Target target;
-    gl::StateCache state;
-    std::vector<gl::Query> mark_queries;  // occlusion queries of portal marks, reused every frame
-    std::optional<SceneProgram> portal_texture_program;  // render-to-texture portals, built on first use
-    std::vector<Target> portal_textures;  // one per portal of the head's cell, reused every frame
-};
+struct RendererData;
 
-struct RendererResult {
-    std::unique_ptr<Renderer> renderer;
-    std::string error;
-};
-
-RendererResult create_renderer(const layout::Layout& layout, const scene::Scene& scene);
-
-struct FrameResult {
+// A frame drawn and read back.
+struct RenderedFrame {
     image::Image image;
     FrameStats stats;
-    std::string error;  // e.g. a stereo mode the driver cannot do
 };
 
-FrameResult render_frame(Renderer& renderer, const FrameDesc& frame);
+class Renderer {
+public:
+    // Uploads the scene and builds the default (clip-shift) program. `state`
+    // is the cache of the current context and must outlive the renderer.
+    static Result<Renderer> create(gl::StateCache& state, const layout::Layout& layout, const scene::Scene& scene);
 
-// Clears a target to the background colour, id 0, far depth (for its depth
-// mode) and the given stencil value, through the renderer's state cache.
-void clear_target(Renderer& renderer, const Target& target, int stencil);
+    Renderer(Renderer&&) noexcept;
+    Renderer& operator=(Renderer&&) noexcept;
+    ~Renderer();
 
-// Draws without reading back (for timing); same state as render_frame.
-std::string draw_frame(Renderer& renderer, const FrameDesc& frame, FrameStats* stats);
+    // Draws a frame and reads it back. Fails for what the driver cannot do
+    // (e.g. a stereo mode it lacks) or an incomplete render target.
+    Result<RenderedFrame> render(const FrameDesc& frame);
+
+    // Draws without reading back (for timing and for the preview); same
+    // state as render(). `stats` may be null.
+    Result<void> draw(const FrameDesc& frame, FrameStats* stats = nullptr);
+
+    // The target the last frame was drawn into (e.g. for a window to show or
+    // read back); empty before the first frame.
+    const Target& target() const;
+
+private:
+    explicit Renderer(std::unique_ptr<RendererData> data);
+    std::unique_ptr<RendererData> data_;
+};
 
 }  // namespace impossible::render

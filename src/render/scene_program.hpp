@@ -2,8 +2,7 @@
 // its uniform locations looked up once.
 #pragma once
 
-#include <string>
-
+#include "base/result.hpp"
 #include "gl/handles.hpp"
 #include "gl/shader.hpp"
 #include "render/frame.hpp"
@@ -24,16 +23,11 @@ struct SceneProgram {
     GLint target_size = -1;  // vec2, only in the portal-texture program
 };
 
-struct SceneProgramResult {
-    SceneProgram program;
-    std::string error;
-};
-
-SceneProgramResult build_scene_program(StereoMode mode);
+Result<SceneProgram> build_scene_program(StereoMode mode);
 
 // The scene's vertex shader with shaders/portal_texture.frag.glsl: a portal
 // box that shows a render-to-texture view (clip-shift stereo only).
-SceneProgramResult build_portal_texture_program();
+Result<SceneProgram> build_portal_texture_program();
 
 // A program that writes far depth (0 in reversed-Z) over the whole target and
 // nothing else; with the stencil test it clears depth inside a portal.
@@ -42,11 +36,6 @@ struct ClearDepthProgram {
     GLint far_depth = -1;  // float: clip-space z of the far plane (w = 1)
 };
 
-struct ClearDepthProgramResult {
-    ClearDepthProgram program;
-    std::string error;
-};
-
-ClearDepthProgramResult build_clear_depth_program();
+Result<ClearDepthProgram> build_clear_depth_program();
 
 }  // namespace impossible::render

@@ -2,14 +2,14 @@
 
 #include <cstdio>
 #include <cstring>
+#include <string>
 
 namespace impossible::render {
 
 namespace {
 
-TargetResult make_target(int width, int height, DepthMode depth, bool sampled) {
-    TargetResult out;
-    Target& t = out.target;
+Result<Target> make_target(int width, int height, DepthMode depth, bool sampled) {
+    Target t;
     t.width = width;
     t.height = height;
     t.depth = depth;
@@ -48,17 +48,19 @@ TargetResult make_target(int width, int height, DepthMode depth, bool sampled) {
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         char buf[16];
         std::snprintf(buf, sizeof buf, "%04x", status);
-        out.error = "render target " + std::to_string(width) + "x" + std::to_string(height) +
-                    " is incomplete (status 0x" + buf + ")";
+        return Error{"render target " + std::to_string(width) + "x" + std::to_string(height) +
+                     " is incomplete (status 0x" + buf + ")"};
     }
-    return out;
+    return t;
 }
 
 }  // namespace
 
-TargetResult create_target(int width, int height, DepthMode depth) { return make_target(width, height, depth, false); }
+Result<Target> create_target(int width, int height, DepthMode depth) {
+    return make_target(width, height, depth, false);
+}
 
-TargetResult create_sampled_target(int width, int height, DepthMode depth) {
+Result<Target> create_sampled_target(int width, int height, DepthMode depth) {
     return make_target(width, height, depth, true);
 }
 

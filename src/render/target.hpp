@@ -3,8 +3,7 @@
 // standard depth); the stencil holds the portal level.
 #pragma once
 
-#include <string>
-
+#include "base/result.hpp"
 #include "gl/handles.hpp"
 #include "render/frame.hpp"
 
@@ -22,16 +21,12 @@ struct Target {
     gl::Framebuffer framebuffer;
 };
 
-struct TargetResult {
-    Target target;
-    std::string error;  // an incomplete framebuffer is reported, never ignored
-};
-
-TargetResult create_target(int width, int height, DepthMode depth);
+// An incomplete framebuffer is an error, never ignored.
+Result<Target> create_target(int width, int height, DepthMode depth);
 
 // The same, with colour and ids in textures that shaders can sample (colour
 // filtered linearly, ids by nearest texel).
-TargetResult create_sampled_target(int width, int height, DepthMode depth);
+Result<Target> create_sampled_target(int width, int height, DepthMode depth);
 
 // Reads colour and ids back, rows from the top.
 image::Image read_target(const Target& target);

@@ -1,5 +1,6 @@
 // build_scene: rooms first (each room's faces then its props, one contiguous
-// index range per cell), then every portal's box (front range, inner range).
+// index range per cell), then every portal's box (front range, inner range),
+// then the portal links.
 #include <optional>
 #include <type_traits>
 #include <variant>
@@ -43,6 +44,7 @@ Scene build_scene(const layout::Layout& layout) {
         const FrontGrid front = fronts[p] ? *fronts[p] : corner_front(rect);
         scene.portals.push_back(append_portal_box(out, rect, front));
     }
+    scene.links = link_portals(layout);
     return scene;
 }
 

@@ -13,6 +13,7 @@
 #include <glm/vec3.hpp>
 
 #include "layout/layout.hpp"
+#include "scene/portal_links.hpp"
 
 namespace impossible::scene {
 
@@ -38,10 +39,12 @@ struct Scene {
     std::vector<std::uint32_t> indices;
     std::vector<IndexRange> cells;     // per room: faces (with holes) and props
     std::vector<PortalMesh> portals;   // per portal, in the portal's room coordinates
+    PortalLinks links;                 // M_AB per portal and the portals of each room, linked once
 };
 
-// Builds the meshes of every room and portal box. The layout must be valid
-// (from the loader); glTF props use the triangles the loader read.
+// Builds the meshes of every room and portal box, and links the portals. The
+// layout must be valid (from the loader); glTF props use the triangles the
+// loader read.
 Scene build_scene(const layout::Layout& layout);
 
 }  // namespace impossible::scene

@@ -21,22 +21,6 @@ math::dvec3 apply(const math::dmat4& m, const math::dvec3& p) {
 
 }  // namespace
 
-PortalLinks link_portals(const layout::Layout& layout) {
-    PortalLinks links;
-    links.transfer.assign(layout.portals.size(), math::dmat4(1.0));
-    links.room_portals.resize(layout.rooms.size());
-    for (std::size_t i = 0; i < layout.portals.size(); ++i) {
-        const layout::Portal& p = layout.portals[i];
-        if (!valid_index(p.room, layout.rooms.size()) ||
-            !valid_index(p.target, layout.portals.size()) ||
-            !valid_index(layout.portals[p.target].room, layout.rooms.size()))
-            continue;
-        links.transfer[i] = math::transfer_matrix(p.rect, layout.portals[p.target].rect);
-        links.room_portals[p.room].push_back(static_cast<int>(i));
-    }
-    return links;
-}
-
 Walker::Walker(const layout::Layout& layout) : Walker(layout, layout.start.room) {}
 
 Walker::Walker(const layout::Layout& layout, int room)

@@ -33,19 +33,9 @@
 
 #include "layout/layout.hpp"
 #include "math/pose.hpp"
+#include "scene/portal_links.hpp"
 
 namespace impossible::scene {
-
-// The portal pairs of a layout, linked once: transfer[i] is M from portal i
-// to its target; room_portals[r] lists the portals of room r in file order.
-// A portal whose room or target index is out of range is left out of
-// room_portals (the loader never produces one).
-struct PortalLinks {
-    std::vector<math::dmat4> transfer;
-    std::vector<std::vector<int>> room_portals;
-};
-
-PortalLinks link_portals(const layout::Layout& layout);
 
 inline constexpr int kMaxCrossingsPerFrame = 64;
 inline constexpr std::size_t kHistoryLength = 256;

@@ -12,13 +12,13 @@ namespace {
 class ContextTest : public ::testing::TestWithParam<gl::Backend> {};
 
 TEST_P(ContextTest, CreatesACurrentGl45CoreContext) {
-    gl::ContextResult result = gl::create_context(GetParam());
-    ASSERT_TRUE(result.context) << result.error;
+    Result<gl::Context> result = gl::create_context(GetParam());
+    ASSERT_TRUE(result) << result.error();
     GLint major = 0, minor = 0, profile = 0;
     glGetIntegerv(GL_MAJOR_VERSION, &major);
     glGetIntegerv(GL_MINOR_VERSION, &minor);
     glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &profile);
-    EXPECT_GE(major * 10 + minor, 45) << result.context->version;
+    EXPECT_GE(major * 10 + minor, 45) << result->version;
     EXPECT_TRUE(profile & GL_CONTEXT_CORE_PROFILE_BIT);
     // Entry points that libOSMesa does not export must still be loaded.
     EXPECT_NE(glad_glClipControl, nullptr);
@@ -31,8 +31,8 @@ TEST_P(ContextTest, CreatesACurrentGl45CoreContext) {
 
 TEST_P(ContextTest, CanBeCreatedAgainAfterDestruction) {
     for (int i = 0; i < 3; ++i) {
-        gl::ContextResult result = gl::create_context(GetParam());
-        ASSERT_TRUE(result.context) << result.error;
+        Result<gl::Context> result = gl::create_context(GetParam());
+        ASSERT_TRUE(result) << result.error();
     }
 }
 
@@ -43,8 +43,8 @@ TEST(Handles, AreMoveOnlyAndEmptyAfterMove) {
     static_assert(!std::is_copy_constructible_v<gl::Buffer>);
     static_assert(!std::is_copy_assignable_v<gl::Framebuffer>);
     static_assert(std::is_nothrow_move_constructible_v<gl::Program>);
-    gl::ContextResult result = gl::create_context(gl::Backend::Egl);
-    ASSERT_TRUE(result.context) << result.error;
+    Result<gl::Context> result = gl::create_context(gl::Backend::Egl);
+    ASSERT_TRUE(result) << result.error();
     gl::Buffer a = gl::create_buffer();
     const GLuint name = a.get();
     ASSERT_TRUE(glIsBuffer(name));

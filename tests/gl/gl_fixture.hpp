@@ -32,16 +32,17 @@ inline layout::Layout layout_from_file(const std::string& path) {
 // Renders one frame in a fresh context of the given backend.
 inline image::Image render_once(gl::Backend backend, const layout::Layout& layout,
                                  const render::FrameDesc& frame, render::FrameStats* stats = nullptr) {
-    gl::ContextResult context = gl::create_context(backend);
-    EXPECT_TRUE(context.context.has_value()) << context.error;
-    if (!context.context) return {};
-    render::RendererResult renderer = render::create_renderer(layout, scene::build_scene(layout));
-    EXPECT_TRUE(renderer.renderer) << renderer.error;
-    if (!renderer.renderer) return {};
-    render::FrameResult result = render::render_frame(*renderer.renderer, frame);
-    EXPECT_EQ(result.error, "");
-    if (stats) *stats = result.stats;
-    return result.image;
+    Result<gl::Context> context = gl::create_context(backend);
+    EXPECT_TRUE(context.has_value()) << context.error();
+    if (!context) return {};
+    Result<render::Renderer> renderer = render::Renderer::create(context->state(), layout, scene::build_scene(layout));
+    EXPECT_TRUE(renderer.has_value()) << renderer.error();
+    if (!renderer) return {};
+    Result<render::RenderedFrame> result = renderer->render(frame);
+    EXPECT_TRUE(result.has_value()) << result.error();
+    if (!result) return {};
+    if (stats) *stats = result->stats;
+    return result->image;
 }
 
 // Number of pixels whose colour differs by more than `tolerance` in a channel.

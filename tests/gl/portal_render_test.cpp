@@ -150,18 +150,18 @@ TEST(PortalCulling, OcclusionTestDropsSubtreesBehindAWall) {
     const layout::Layout l = load("corridor_wall.json");
     render::FrameDesc f = pose(l, "corridor", l.start.position, l.start.yaw_deg);
     f.max_depth = 16;
-    gl::ContextResult context = gl::create_context(gl::Backend::Egl);
-    ASSERT_TRUE(context.context) << context.error;
-    render::RendererResult r = render::create_renderer(l, scene::build_scene(l));
-    ASSERT_TRUE(r.renderer) << r.error;
+    Result<gl::Context> context = gl::create_context(gl::Backend::Egl);
+    ASSERT_TRUE(context) << context.error();
+    Result<render::Renderer> r = render::Renderer::create(context->state(), l, scene::build_scene(l));
+    ASSERT_TRUE(r) << r.error();
     auto primitives = [&](bool occlusion_test, image::Image* image) {
         f.occlusion_test = occlusion_test;
         gl::Query q = gl::create_query(GL_PRIMITIVES_GENERATED);
         glBeginQuery(GL_PRIMITIVES_GENERATED, q.get());
-        render::FrameResult result = render::render_frame(*r.renderer, f);
+        Result<render::RenderedFrame> result = r->render(f);
         glEndQuery(GL_PRIMITIVES_GENERATED);
-        EXPECT_EQ(result.error, "");
-        *image = result.image;
+        EXPECT_TRUE(result) << result.error();
+        if (result) *image = result->image;
         GLuint64 n = 0;
         glGetQueryObjectui64v(q.get(), GL_QUERY_RESULT, &n);
         return n;
@@ -242,11 +242,13 @@ TEST(PortalTexture, NeedsClipShiftStereo) {
     render::FrameDesc f = pose(l, "hall", l.start.position, l.start.yaw_deg);
     f.portal_texture_scale = 0.5;
     f.stereo = render::StereoMode::TwoPass;
-    gl::ContextResult context = gl::create_context(gl::Backend::Egl);
-    ASSERT_TRUE(context.context) << context.error;
-    render::RendererResult r = render::create_renderer(l, scene::build_scene(l));
-    ASSERT_TRUE(r.renderer) << r.error;
-    EXPECT_NE(render::render_frame(*r.renderer, f).error.find("clip-shift"), std::string::npos);
+    Result<gl::Context> context = gl::create_context(gl::Backend::Egl);
+    ASSERT_TRUE(context) << context.error();
+    Result<render::Renderer> r = render::Renderer::create(context->state(), l, scene::build_scene(l));
+    ASSERT_TRUE(r) << r.error();
+    Result<render::RenderedFrame> result = r->render(f);
+    ASSERT_FALSE(result);
+    EXPECT_NE(result.error().find("clip-shift"), std::string::npos);
 }
 
 }  // namespace

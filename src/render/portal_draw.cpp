@@ -1,0 +1,121 @@
+// The drawing steps a portal level is made of (see portal_recursion.cpp):
+// per-eye uniforms, the scissor of a portal, its box, the view through it.
+#include <algorithm>
+#include <cmath>
+
+#include "math/oblique_projection.hpp"
+#include "render/portal_recursion.hpp"
+
+namespace impossible::render {
+
+void use_pass(DrawContext& ctx, Pass pass, int stencil_ref) {
+    ctx.renderer.state->apply(pass_state(pass, ctx.frame.depth == DepthMode::ReversedZ), stencil_ref);
+}
+
+void set_eye_uniforms(const DrawContext& ctx, const LevelView& view, const std::array<NdcRect, 2>& rects) {
+    float vp[2][16];
+    float rect[2][4];
+    float plane[2][4];
+    const int eye_w = ctx.frame.eye_width, eye_h = ctx.frame.eye_height;
+    for (int e = 0; e < 2; ++e) {
+        const EyeView& ev = view.eyes[e];
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) vp[e][c * 4 + r] = static_cast<float>(ev.view_proj[c][r]);
+        NdcRect nr = ev.active ? rects[e] : NdcRect::none();
+        if (!nr.empty()) {
+            // One pixel of margin keeps float rounding from trimming a pixel
+            // whose centre the portal covers; the stencil bounds the rest.
+            // Never past the eye's own image: in clip-shift mode x = ±1 is
+            // the seam between the two eyes.
+            const double mx = 2.0 / eye_w, my = 2.0 / eye_h;
+            nr = intersect({nr.x0 - mx, nr.y0 - my, nr.x1 + mx, nr.y1 + my}, NdcRect{});
+        }
+        rect[e][0] = static_cast<float>(nr.x0);
+        rect[e][1] = static_cast<float>(nr.y0);
+        rect[e][2] = static_cast<float>(nr.x1);
+        rect[e][3] = static_cast<float>(nr.y1);
+        for (int c = 0; c < 4; ++c) plane[e][c] = static_cast<float>(ev.clip_plane[c]);
+    }
+    const GLuint p = ctx.program.program.get();
+    glProgramUniformMatrix4fv(p, ctx.program.view_proj, 2, GL_FALSE, &vp[0][0]);
+    glProgramUniform4fv(p, ctx.program.eye_rect, 2, &rect[0][0]);
+    glProgramUniform4fv(p, ctx.program.clip_plane, 2, &plane[0][0]);
+}
+
+gl::ScissorRect scissor_of(const DrawContext& ctx, const std::array<NdcRect, 2>& rects, const LevelView& view) {
+    const int w = ctx.frame.eye_width, h = ctx.frame.eye_height;
+    int x0 = 2 * w, y0 = h, x1 = 0, y1 = 0;
+    for (int e = 0; e < 2; ++e) {
+        if (!view.eyes[e].active || rects[e].empty()) continue;
+        const NdcRect& r = rects[e];
+        x0 = std::min(x0, e * w + static_cast<int>(std::floor((r.x0 + 1.0) * 0.5 * w)) - 1);
+        x1 = std::max(x1, e * w + static_cast<int>(std::ceil((r.x1 + 1.0) * 0.5 * w)) + 1);
+        y0 = std::min(y0, static_cast<int>(std::floor((r.y0 + 1.0) * 0.5 * h)) - 1);
+        y1 = std::max(y1, static_cast<int>(std::ceil((r.y1 + 1.0) * 0.5 * h)) + 1);
+    }
+    x0 = std::max(x0, 0); y0 = std::max(y0, 0);
+    x1 = std::min(x1, 2 * w); y1 = std::min(y1, h);
+    return {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
+}
+
+void draw_range(DrawContext& ctx, const scene::IndexRange& range) {
+    if (range.count == 0) return;
+    const int instances = ctx.frame.stereo == StereoMode::TwoPass ? 1 : 2;
+    glDrawElementsInstanced(GL_TRIANGLES, static_cast<GLsizei>(range.count), GL_UNSIGNED_INT,
+                            reinterpret_cast<const void*>(static_cast<uintptr_t>(range.first) * 4),
+                            instances);
+    ctx.stats.draw_calls += 1;
+    ctx.stats.triangles += static_cast<long>(range.count / 3) * instances;
+}
+
+void draw_portal_box(DrawContext& ctx, const LevelView& view, int portal, const std::array<NdcRect, 2>& rects) {
+    const PortalInfo& info = ctx.renderer.portals[portal];
+    std::array<NdcRect, 2> front = rects, inner = rects;
+    bool any_inner = false;
+    for (int e = 0; e < 2; ++e) {
+        if (!math::in_column(info.rect, view.eyes[e].eye.position)) inner[e] = NdcRect::none();
+        else any_inner = true;
+    }
+    set_eye_uniforms(ctx, view, front);
+    draw_range(ctx, info.mesh.front);
+    if (any_inner) {
+        set_eye_uniforms(ctx, view, inner);
+        draw_range(ctx, info.mesh.inner);
+    }
+}
+
+LevelView child_view(const DrawContext& ctx, const LevelView& view, int portal, const std::array<NdcRect, 2>& rects) {
+    const PortalInfo& a = ctx.renderer.portals[portal];
+    const PortalInfo& b = ctx.renderer.portals[a.target];
+    const math::dmat4& m = ctx.renderer.links.transfer[portal];
+    LevelView child;
+    child.cell = b.room;
+    child.level = view.level + 1;
+    child.entered_by = a.target;
+    for (int e = 0; e < 2; ++e) {
+        EyeView& ev = child.eyes[e];
+        ev.active = view.eyes[e].active && !rects[e].empty();
+        ev.eye = math::transform_eye(m, view.eyes[e].eye);
+        const math::dmat4 view_matrix = math::view_matrix(ev.eye);
+        ev.view_proj = ctx.projection * view_matrix;
+        ev.rect = rects[e];
+        // A virtual eye behind B sees B's room only in front of B's plane;
+        // one already in front of B (the real eye crossed A before the head)
+        // stands in B's room and needs no plane.
+        ev.behind_exit = math::signed_distance(b.rect, ev.eye.position) < 0.0;
+        if (!ev.behind_exit) continue;
+        const math::dvec4 plane = math::portal_plane(b.rect);
+        if (ctx.frame.clip == ClipMode::Oblique) {
+            const math::dvec4 plane_eye = math::transform_plane(view_matrix, plane);
+            ev.view_proj = (ctx.frame.depth == DepthMode::ReversedZ
+                                ? math::oblique_reversed_z(ctx.projection, plane_eye)
+                                : math::oblique_standard(ctx.projection, plane_eye)) *
+                           view_matrix;
+        }
+        else
+            ev.clip_plane = plane;
+    }
+    return child;
+}
+
+}  // namespace impossible::render

@@ -1,0 +1,48 @@
+// Internal to src/render: what a Renderer keeps between frames, shared by the
+// files that draw a frame (renderer.cpp, portal_*.cpp).
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "gl/handles.hpp"
+#include "gl/state.hpp"
+#include "math/portal.hpp"
+#include "render/gpu_scene.hpp"
+#include "render/scene_program.hpp"
+#include "render/target.hpp"
+#include "scene/portal_links.hpp"
+#include "scene/scene.hpp"
+
+namespace impossible::render {
+
+// What drawing needs of a layout portal (no ids, no vertex data).
+struct PortalInfo {
+    math::PortalRect rect;
+    int room = -1;        // the room it stands in
+    int target = -1;      // the portal it leads to
+    scene::PortalMesh mesh;  // index ranges of its box
+};
+
+inline constexpr int kStereoModeCount = 3;
+
+struct RendererData {
+    gl::StateCache* state = nullptr;  // the context's; outlives the renderer
+    std::vector<scene::IndexRange> cells;  // per room, into gpu's index buffer
+    std::vector<PortalInfo> portals;       // per layout portal
+    scene::PortalLinks links;              // M_AB per portal, the portals of each room
+    GpuScene gpu;
+    std::optional<SceneProgram> programs[kStereoModeCount];  // per StereoMode, built on first use
+    ClearDepthProgram clear_depth;
+    gl::VertexArray empty_vao;            // for the attribute-less clear triangle
+    Target target;
+    std::vector<gl::Query> mark_queries;  // occlusion queries of portal marks, reused every frame
+    std::optional<SceneProgram> portal_texture_program;  // render-to-texture portals, built on first use
+    std::vector<Target> portal_textures;  // one per portal of the head's cell, reused every frame
+};
+
+// Clears a target to the background colour, id 0, far depth (for its depth
+// mode) and the given stencil value, through the state cache.
+void clear_target(RendererData& r, const Target& target, int stencil);
+
+}  // namespace impossible::render

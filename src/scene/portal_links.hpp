@@ -1,0 +1,23 @@
+// The portal pairs of a layout, linked once: the transfer matrix M_AB of
+// every portal and the portals of every room. build_scene keeps them in the
+// Scene for the renderer; the walker links with the same function.
+#pragma once
+
+#include <vector>
+
+#include "layout/layout.hpp"
+#include "math/portal.hpp"
+
+namespace impossible::scene {
+
+// transfer[i] is M from portal i to its target; room_portals[r] lists the
+// portals of room r in file order. A portal whose room or target index is
+// out of range is left out of room_portals (the loader never produces one).
+struct PortalLinks {
+    std::vector<math::dmat4> transfer;
+    std::vector<std::vector<int>> room_portals;
+};
+
+PortalLinks link_portals(const layout::Layout& layout);
+
+}  // namespace impossible::scene
