@@ -37,8 +37,9 @@ const char* kHelp =
 
 // Reads a colour PNG (grey is widened to rgb).
 std::vector<std::uint8_t> read_colour(const std::string& path, int& width, int& height) {
-    image::PngImage png = image::read_png(path);
-    if (!png.error.empty()) throw InputError(png.error);
+    Result<image::PngImage> read = image::read_png(path);
+    if (!read) throw InputError(read.error());
+    image::PngImage& png = *read;
     width = png.width;
     height = png.height;
     if (png.channels == 3) return std::move(png.pixels);
@@ -49,8 +50,9 @@ std::vector<std::uint8_t> read_colour(const std::string& path, int& width, int& 
 }
 
 std::vector<std::uint8_t> read_ids(const std::string& path, int width, int height) {
-    image::PngImage png = image::read_png(path);
-    if (!png.error.empty()) throw InputError(png.error);
+    Result<image::PngImage> read = image::read_png(path);
+    if (!read) throw InputError(read.error());
+    image::PngImage& png = *read;
     if (png.channels != 1) throw InputError(path + ": a cell-id map must be an 8-bit greyscale PNG");
     if (png.width != width || png.height != height)
         throw InputError(path + ": the id map is " + std::to_string(png.width) + "x" + std::to_string(png.height) +
@@ -95,8 +97,8 @@ int run_compare_command(const Args& args, std::ostream& out, std::ostream& err) 
     const image::Comparison c = image::compare_pictures(a, b);
     out << image::summary_line(c) << "\n";
     if (auto path = parsed.value("--diff"))
-        if (std::string e = image::write_png(*path, a.width, a.height, 3, image::diff_picture(a, b)); !e.empty())
-            throw InputError(e);
+        if (Result<void> written = image::write_png(*path, a.width, a.height, 3, image::diff_picture(a, b)); !written)
+            throw InputError(written.error());
     if (max_mismatch && c.id_mismatch_percent > *max_mismatch) {
         err << "impossible compare: " << c.id_mismatch_percent
             << "% of the pixels have mismatched ids, more than --max-mismatch " << *max_mismatch << "%\n";

@@ -7,7 +7,7 @@
 #include "app/layout_source.hpp"
 #include "image/png.hpp"
 #include "app/text_file.hpp"
-#include "design/path_text.hpp"
+#include "layout/path_file.hpp"
 #include "design/plan.hpp"
 
 namespace impossible::app {
@@ -36,7 +36,7 @@ int run_plan_command(const Args& args, std::ostream& out, std::ostream& err) {
     const layout::Layout layout = load_layout_or_default(parsed.positional[0]);
     std::vector<math::HeadPose> path;
     if (const auto file = parsed.value("--path")) {
-        auto read = design::read_path(*file);
+        auto read = layout::read_path_file(*file);
         if (!read) throw InputError(read.error());
         path = std::move(*read);
     }
@@ -52,7 +52,7 @@ int run_plan_command(const Args& args, std::ostream& out, std::ostream& err) {
     }
     for (const std::string& png : pngs) {
         const design::Image image = design::plan_raster(drawing, scale);
-        if (const std::string e = image::write_png(png, image.width, image.height, 3, image.rgb); !e.empty()) throw InputError(e);
+        if (Result<void> written = image::write_png(png, image.width, image.height, 3, image.rgb); !written) throw InputError(written.error());
     }
     err << "plan: " << layout.rooms.size() << " rooms, " << report.overlaps.size() << " overlapping pairs, "
         << drawing.shapes.size() << " shapes\n";

@@ -32,11 +32,11 @@ void write_vec(std::string& s, const math::dvec3& v) {
 int run_walk_stream(const layout::Layout& layout, std::istream& in, const std::string& name,
                     std::ostream& out, std::ostream& err) {
     const layout::PathFile path = layout::read_path_stream(in, name);
-    if (!path.error.empty()) {
-        err << path.error << '\n';
+    if (!path) {
+        err << path.error() << '\n';
         return 1;
     }
-    const std::vector<math::HeadPose>& poses = path.poses;
+    const std::vector<math::HeadPose>& poses = *path;
     scene::Walker walker(layout);
     std::string line;
     for (std::size_t frame = 0; frame < poses.size(); ++frame) {

@@ -125,9 +125,9 @@ trace::TraceDesc trace_desc_for(const render::FrameDesc& frame, int threads) {
 
 void write_frame_pngs(const ViewOptions& options, int width, int height, const std::vector<std::uint8_t>& rgb,
                       const std::vector<std::uint8_t>& ids) {
-    if (std::string e = image::write_png(options.out, width, height, 3, rgb); !e.empty()) throw InputError(e);
+    if (Result<void> written = image::write_png(options.out, width, height, 3, rgb); !written) throw InputError(written.error());
     if (options.ids)
-        if (std::string e = image::write_png(*options.ids, width, height, 1, ids); !e.empty()) throw InputError(e);
+        if (Result<void> written = image::write_png(*options.ids, width, height, 1, ids); !written) throw InputError(written.error());
 }
 
 render::FrameDesc frame_for(const layout::Layout& layout, const ViewOptions& o) {

@@ -129,11 +129,10 @@ std::vector<BenchPose> bench_poses(const layout::Layout& layout, const BenchOpti
         return {{f.head, f.room}};
     }
     const layout::PathFile file = layout::read_path_file(*o.path);
-    if (!file.error.empty()) throw InputError(file.error);
-    if (file.poses.empty()) throw InputError(*o.path + ": the path holds no pose");
+    if (!file) throw InputError(file.error());
     scene::Walker walker(layout);
     std::vector<BenchPose> poses;
-    for (const math::HeadPose& physical : file.poses) {
+    for (const math::HeadPose& physical : *file) {
         walker.step(physical);
         poses.push_back({math::head_pose_from(walker.position(), walker.rotation()), walker.room()});
     }

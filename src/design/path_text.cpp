@@ -31,27 +31,4 @@ std::string path_text(const std::vector<math::HeadPose>& poses, const std::strin
     return out;
 }
 
-Result<std::vector<math::HeadPose>> read_path(const std::string& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return Error{file + ": cannot open the path file"};
-    std::vector<math::HeadPose> poses;
-    std::string line;
-    for (int number = 1; std::getline(in, line); ++number) {
-        std::istringstream fields(line);
-        std::string first;
-        if (!(fields >> first) || first[0] == '#') continue;
-        fields.str(line);
-        fields.clear();
-        double v[6];
-        std::string extra;
-        for (double& x : v) fields >> x;
-        if (fields.fail() || (fields >> extra) || !std::isfinite(v[0] + v[1] + v[2] + v[3] + v[4] + v[5]))
-            return Error{file + ":" + std::to_string(number) + ": expected 6 numbers X Y Z YAW PITCH ROLL"};
-        poses.push_back(math::HeadPose{{v[0], v[1], v[2]}, v[3], v[4], v[5]});
-    }
-    if (in.bad()) return Error{file + ": read error"};
-    if (poses.empty()) return Error{file + ": the path file holds no poses"};
-    return poses;
-}
-
 }  // namespace impossible::design

@@ -1,6 +1,6 @@
 // Path files (cli.md, `walk`): one physical head pose a line, `X Y Z YAW
-// PITCH ROLL`, `#` comments and blank lines skipped. The tour writes them;
-// `plan --path` reads them to draw a walk.
+// PITCH ROLL`, `#` comments and blank lines skipped. The tour writes them
+// (layout/path_file.hpp reads them).
 #pragma once
 
 #include <string>
@@ -14,8 +14,5 @@ namespace impossible::design {
 // The text of a path file: a comment header, then one pose a line, each
 // number with 4 decimals (0.1 mm, 0.0001°).
 std::string path_text(const std::vector<math::HeadPose>& poses, const std::string& header);
-
-// Reads a path file; an error names FILE:LINE.
-Result<std::vector<math::HeadPose>> read_path(const std::string& file);
 
 }  // namespace impossible::design

@@ -22,26 +22,26 @@ void append_bytes(void* context, void* data, int size) {
 
 }  // namespace
 
-std::string write_png(const std::string& path, int width, int height, int channels,
+Result<void> write_png(const std::string& path, int width, int height, int channels,
                       const std::vector<std::uint8_t>& pixels) {
     if (width <= 0 || height <= 0 || (channels != 1 && channels != 3) ||
         pixels.size() != static_cast<size_t>(width) * height * channels)
-        return path + ": internal error: bad image size";
+        return Error{path + ": internal error: bad image size"};
     std::vector<unsigned char> encoded;
     if (!stbi_write_png_to_func(append_bytes, &encoded, width, height, channels, pixels.data(),
                                 width * channels))
-        return path + ": cannot encode PNG";
+        return Error{path + ": cannot encode PNG"};
 
     const std::string temp = path + ".tmp-" + std::to_string(::getpid());
     {
         std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        if (!out) return path + ": cannot write: " + std::strerror(errno);
+        if (!out) return Error{path + ": cannot write: " + std::strerror(errno)};
         out.write(reinterpret_cast<const char*>(encoded.data()), static_cast<std::streamsize>(encoded.size()));
         out.close();
         if (!out) {
             std::error_code ignored;
             std::filesystem::remove(temp, ignored);
-            return path + ": cannot write: " + std::strerror(errno);
+            return Error{path + ": cannot write: " + std::strerror(errno)};
         }
     }
     std::error_code ec;
@@ -49,23 +49,21 @@ std::string write_png(const std::string& path, int width, int height, int channe
     if (ec) {
         std::error_code ignored;
         std::filesystem::remove(temp, ignored);
-        return path + ": cannot write: " + ec.message();
+        return Error{path + ": cannot write: " + ec.message()};
     }
     return {};
 }
 
-PngImage read_png(const std::string& path) {
+Result<PngImage> read_png(const std::string& path) {
     PngImage image;
     int w = 0, h = 0, n = 0;
     if (!stbi_info(path.c_str(), &w, &h, &n)) {
-        image.error = path + ": cannot read PNG: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown");
-        return image;
+        return Error{path + ": cannot read PNG: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown")};
     }
     const int want = (n == 1 || n == 2) ? 1 : 3;
     unsigned char* data = stbi_load(path.c_str(), &w, &h, &n, want);
     if (!data) {
-        image.error = path + ": cannot read PNG: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown");
-        return image;
+        return Error{path + ": cannot read PNG: " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown")};
     }
     image.width = w;
     image.height = h;

@@ -5,12 +5,14 @@
 #include <string>
 #include <vector>
 
+#include "base/result.hpp"
+
 namespace impossible::image {
 
 // Writes an 8-bit PNG with 1 (grey) or 3 (RGB) channels, rows from the top.
 // The file appears whole or not at all: it is written under a temporary name
-// in the same directory and renamed. Returns an error message, or "".
-std::string write_png(const std::string& path, int width, int height, int channels,
+// in the same directory and renamed.
+Result<void> write_png(const std::string& path, int width, int height, int channels,
                       const std::vector<std::uint8_t>& pixels);
 
 struct PngImage {
@@ -18,10 +20,9 @@ struct PngImage {
     int height = 0;
     int channels = 0;
     std::vector<std::uint8_t> pixels;
-    std::string error;
 };
 
 // Reads a PNG, keeping it as 1 or 3 channels (grey stays grey).
-PngImage read_png(const std::string& path);
+Result<PngImage> read_png(const std::string& path);
 
 }  // namespace impossible::image

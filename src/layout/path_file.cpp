@@ -26,14 +26,10 @@ std::vector<std::string> fields_of(const std::string& line) {
 
 PathFile read_path_stream(std::istream& in, const std::string& name) {
     static const char* const kNames[6] = {"X", "Y", "Z", "YAW", "PITCH", "ROLL"};
-    PathFile out;
+    std::vector<math::HeadPose> poses;
     std::string line;
     int number = 0;
-    auto fail = [&](const std::string& message) {
-        out.poses.clear();
-        out.error = name + ":" + std::to_string(number) + ": " + message;
-        return out;
-    };
+    auto fail = [&](const std::string& message) { return Error{name + ":" + std::to_string(number) + ": " + message}; };
     while (std::getline(in, line)) {
         ++number;
         if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -53,22 +49,22 @@ PathFile read_path_stream(std::istream& in, const std::string& name) {
                 return fail(std::string(kNames[k]) + ": " + f[k] + " is out of range (|" + kNames[k] +
                             "| <= " + (k < 3 ? "1e6 m" : "1e6 degrees") + ")");
         }
-        out.poses.push_back(math::HeadPose{{v[0], v[1], v[2]}, v[3], v[4], v[5]});
+        poses.push_back(math::HeadPose{{v[0], v[1], v[2]}, v[3], v[4], v[5]});
     }
     if (in.bad()) {
         ++number;
         return fail("read error");
     }
-    return out;
+    return poses;
 }
 
 PathFile read_path_file(const std::string& path) {
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) return {{}, path + ": is a directory, not a path file"};
+    if (std::filesystem::is_directory(path, ec)) return Error{path + ": is a directory, not a path file"};
     std::ifstream in(path, std::ios::binary);
-    if (!in) return {{}, path + ": cannot open the path file"};
+    if (!in) return Error{path + ": cannot open the path file"};
     PathFile file = read_path_stream(in, path);
-    if (file.error.empty() && file.poses.empty()) file.error = path + ": the path file holds no poses";
+    if (file && file->empty()) return Error{path + ": the path file holds no poses"};
     return file;
 }
 

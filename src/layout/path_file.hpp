@@ -8,14 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "base/result.hpp"
 #include "math/pose.hpp"
 
 namespace impossible::layout {
 
-struct PathFile {
-    std::vector<math::HeadPose> poses;
-    std::string error;  // "FILE:LINE: message" or "FILE: message"; empty on success
-};
+// The poses, or an error "FILE:LINE: message" or "FILE: message".
+using PathFile = Result<std::vector<math::HeadPose>>;
 
 // Reads a file for a replay: at least one pose is required.
 PathFile read_path_file(const std::string& path);

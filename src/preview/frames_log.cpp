@@ -85,7 +85,7 @@ std::string numbered(const fs::path& dir, const char* stem, long n, const char* 
 }
 
 void write_png_or_throw(const std::string& path, int w, int h, int channels, const std::vector<std::uint8_t>& pixels) {
-    if (std::string e = image::write_png(path, w, h, channels, pixels); !e.empty()) throw InputError(e);
+    if (Result<void> written = image::write_png(path, w, h, channels, pixels); !written) throw InputError(written.error());
 }
 
 void save_frame(FrameFiles& files, const image::Image& image, const FrameRecord& record) {

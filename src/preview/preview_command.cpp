@@ -49,7 +49,7 @@ KeyEffects apply_keys(PreviewSession& s) {
 
 // The physical head: the path while it lasts, then the keys and mouse.
 math::HeadPose next_physical_head(const PreviewSession& s, long frame, double dt) {
-    if (static_cast<std::size_t>(frame) < s.path.poses.size()) return s.path.poses[static_cast<std::size_t>(frame)];
+    if (static_cast<std::size_t>(frame) < s.path.size()) return s.path[static_cast<std::size_t>(frame)];
     const WindowInput& in = s.window->input;
     const MoveInput move = move_input(in.held, dt, cursor_captured(*s.window), in.mouse_dx, in.mouse_dy);
     return move_head(s.physical, move, s.shown.layout->play_area);

@@ -55,8 +55,9 @@ void open_session(PreviewSession& s, PreviewOptions options) {
     const PreviewOptions& o = s.options;
     layout::Layout first = app::load_layout_or_default(o.layout_path);
     if (o.path_file) {
-        s.path = layout::read_path_file(*o.path_file);
-        if (!s.path.error.empty()) throw InputError(s.path.error);
+        layout::PathFile path = layout::read_path_file(*o.path_file);
+        if (!path) throw InputError(path.error());
+        s.path = std::move(*path);
     }
     s.files = open_frame_files(o.screenshots);
 

@@ -62,7 +62,7 @@ double tick(FrameClock& clock, long frame, Clock::time_point now);
 struct PreviewSession {
     PreviewOptions options;
     std::string title;
-    layout::PathFile path;                  // --path: one physical pose a frame
+    std::vector<math::HeadPose> path;       // --path: one physical pose a frame
     FrameFiles files;
     std::unique_ptr<PreviewWindow> window;  // declared before the GL objects: outlives them
     // The window context's one state cache, for the renderer, the present

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "design/path_text.hpp"
+#include "layout/path_file.hpp"
 #include "design/tour.hpp"
 #include "scene/walk.hpp"
 
@@ -73,7 +74,7 @@ TEST(Tour, PathTextReadsBack) {
         std::ofstream out(file);
         out << design::path_text(tour->poses, "a test\nof two lines");
     }
-    const auto back = design::read_path(file);
+    const auto back = layout::read_path_file(file);
     ASSERT_TRUE(back.has_value()) << back.error();
     ASSERT_EQ(back->size(), tour->poses.size());
     EXPECT_NEAR((*back)[5].position.x, tour->poses[5].position.x, 1e-4);

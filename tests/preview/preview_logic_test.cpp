@@ -119,21 +119,6 @@ TEST(PreviewMinimap, BoundsHoldThePlayAreaTheRoomAndTheHead) {
     EXPECT_LT(moved.max.x, 6.0);
 }
 
-TEST(PreviewPath, ReadsPosesAndReportsTheBadLine) {
-    std::istringstream good("# comment\n\n1 1.6 2 90 0 0\r\n+0 1.5 -1 0 -5 3\n");
-    const layout::PathFile ok = layout::read_path_stream(good, "p.txt");
-    EXPECT_EQ(ok.error, "");
-    ASSERT_EQ(ok.poses.size(), 2u);
-    EXPECT_EQ(ok.poses[0].yaw_deg, 90.0);
-    EXPECT_EQ(ok.poses[1].roll_deg, 3.0);
-    std::istringstream bad("1 2 3 0 0 0\n1 2 x 0 0 0\n");
-    EXPECT_EQ(layout::read_path_stream(bad, "p.txt").error, "p.txt:2: Z: 'x' is not a finite number");
-    std::istringstream empty("# nothing\n");
-    EXPECT_EQ(layout::read_path_stream(empty, "p.txt").error, "");
-    EXPECT_TRUE(layout::read_path_stream(empty, "p.txt").poses.empty());
-    EXPECT_NE(layout::read_path_file("/nonexistent/p.txt").error, "");
-}
-
 const char* kLayout = R"({ "format": "impossible-layout", "version": 1,
   "start": { "room": "a", "position": [0, 1.6, 0] },
   "rooms": [ { "id": "a", "min": [-1, 0, -1], "max": [1, 3, 1] } ] })";
