@@ -13,6 +13,25 @@ namespace impossible::layout::detail {
 
 namespace {
 
+// A box too shallow for an eye half an IPD behind the door's plane (see
+// limits::kHalfTypicalIpd): a warning, since a larger-headed layout may want it.
+void warn_if_shallow(Checker& check, const Path& at, double depth) {
+    // Suggested depths, rounded up to whole millimetres.
+    const double needed = std::ceil((limits::kHalfTypicalIpd + limits::kNearReversedZ) * 1e3) / 1e3;
+    const double needed_standard = std::ceil((limits::kHalfTypicalIpd + limits::kNearStandard) * 1e3) / 1e3;
+    if (depth < limits::kHalfTypicalIpd + limits::kNearReversedZ) {
+        check.warning(at / "depth", "the box is " + format_number(depth) + " m deep: an eye half an IPD (" +
+                                        format_number(limits::kHalfTypicalIpd) +
+                                        " m) behind the door's plane sees out of its back; make it at least " +
+                                        format_number(needed) + " m");
+    } else if (depth < limits::kHalfTypicalIpd + limits::kNearStandard) {
+        check.warning(at / "depth", "the box is " + format_number(depth) + " m deep: with --depth standard (near plane " +
+                                        format_number(limits::kNearStandard) + " m) an eye half an IPD behind the "
+                                        "door's plane sees through its back; make it at least " +
+                                        format_number(needed_standard) + " m");
+    }
+}
+
 // A non-zero vector, read for normalisation.
 std::optional<glm::dvec3> read_direction(Checker& check, const Path& at, const json& value) {
     const auto v = check.read_vec3(at, value, NumberKind::Direction);
@@ -61,7 +80,12 @@ PortalDraft read_portal(Checker& check, const Path& at, const json& value) {
     if (height) take(check.read_number(at / "height", *height, NumberKind::Length), rect.height);
     rect.depth = 0.25;
     if (const json* v = field(value, "depth")) {
-        take(check.read_number(at / "depth", *v, NumberKind::Length), rect.depth);
+        if (const std::optional<double> depth = check.read_number(at / "depth", *v, NumberKind::Length)) {
+            rect.depth = *depth;
+            warn_if_shallow(check, at, *depth);
+        } else {
+            ok = false;
+        }
     }
     std::optional<glm::dvec3> n;
     if (normal) {
