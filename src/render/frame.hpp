@@ -8,6 +8,7 @@
 #include "image/image.hpp"
 #include "layout/limits.hpp"
 #include "math/pose.hpp"
+#include "scene/view.hpp"
 
 namespace impossible::render {
 
@@ -40,16 +41,10 @@ enum class DepthMode {
 inline constexpr double kNearReversedZ = layout::limits::kNearReversedZ;  // 10 µm
 inline constexpr double kNearStandard = layout::limits::kNearStandard;    // 1 cm
 
-struct FrameDesc {
-    math::HeadPose head;
-    int room = 0;              // index of the room the head is in
-    double ipd = 0.064;
-    double fov_y_deg = 90.0;
+// The view (scene/view.hpp) and how the rasteriser draws it.
+struct FrameDesc : scene::View {
     double near = 0.0;         // 0: the depth mode's own (kNearReversedZ, kNearStandard)
     double far = 2e5;          // only for DepthMode::Standard: beyond any valid layout
-    int eye_width = 1280;
-    int eye_height = 720;
-    int max_depth = 8;         // portals one line of sight may pass
     StereoMode stereo = StereoMode::ClipShift;
     ClipMode clip = ClipMode::ClipDistance;
     DepthMode depth = DepthMode::ReversedZ;
