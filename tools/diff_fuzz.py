@@ -114,7 +114,9 @@ class Case:
         lo, hi = self.room_box(o, hx, hz, h)
         yaw = r.uniform(0, 2 * math.pi) if r.random() < 0.5 else r.choice([0, 0.5, 1, 1.5]) * math.pi
         n = [math.sin(yaw), 0.0, math.cos(yaw)]
-        w = min(log_uniform(r, 0.01, 20), 2 * hx)
+        w = log_uniform(r, 0.01, 20)
+        if r.random() < 0.7:
+            w = min(w, 2 * hx)  # else the door may reach through the walls
         ph = min(r.uniform(0.01, h), h - 0.02) if w < 0.5 else r.uniform(min(1.0, h / 2), h - 0.01)
         c = [o[0] + r.uniform(-hx / 2, hx / 2), o[1] + ph / 2 + r.uniform(0, h - ph), o[2] + r.uniform(-hz / 2, hz / 2)]
         self.room("a", lo, hi, self.props_near(c, lo, hi, r.randint(0, 4)))
