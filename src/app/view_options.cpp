@@ -10,7 +10,7 @@ namespace impossible::app {
 const std::set<std::string>& view_value_options() {
     static const std::set<std::string> names = {"--pose", "--room",  "--ipd", "--fov",     "--size",
                                                 "--max-depth", "--out", "--ids", "--backend", "--stereo",
-                                                "--clip", "--depth", "--portal-texture"};
+                                                "--clip", "--depth", "--portal-texture", "--samples"};
     return names;
 }
 
@@ -39,6 +39,9 @@ const char* view_options_help() {
            "                             each portal's view at SCALE x the eye size, e.g. 0.25, 0.5, 1\n"
            "  --occlusion-test           also skip portals hidden behind the room's props or walls (an\n"
            "                             occlusion query and conditional rendering; costs one sync a frame)\n"
+           "  --samples N                anti-aliasing: 1 (default), 2, 4, 8 or 16 samples per pixel;\n"
+           "                             render: multisampling (the counts the driver offers; llvmpipe: 4);\n"
+           "                             trace: supersampling at the standard sample positions\n"
            "  --stats                    print draw calls, triangles and portal passes to stderr\n";
 }
 
@@ -59,6 +62,13 @@ render::StereoMode parse_stereo(const std::string& text) {
     if (text == "viewport-index") return render::StereoMode::ViewportIndex;
     if (text == "two-pass") return render::StereoMode::TwoPass;
     throw InputError("--stereo: '" + text + "' is not clip-shift, viewport-index or two-pass");
+}
+
+int parse_samples(const std::string& text) {
+    const int n = parse_int("--samples", text, 1, 16);
+    if (n != 1 && n != 2 && n != 4 && n != 8 && n != 16)
+        throw InputError("--samples: " + text + " is not 1, 2, 4, 8 or 16");
+    return n;
 }
 
 render::ClipMode parse_clip(const std::string& text) {
@@ -106,6 +116,7 @@ ViewOptions parse_view_options(const ParsedArgs& args) {
         if (!(o.frame.portal_texture_scale > 0.0 && o.frame.portal_texture_scale <= 4.0))
             throw InputError("--portal-texture: " + *v + " is not in (0, 4]");
     }
+    if (auto v = args.value("--samples")) o.frame.samples = parse_samples(*v);
     o.stats = args.flag("--stats");
     return o;
 }
@@ -114,6 +125,7 @@ trace::TraceDesc trace_desc_for(const render::FrameDesc& frame, int threads) {
     trace::TraceDesc desc;
     static_cast<scene::View&>(desc) = frame;
     desc.threads = threads;
+    desc.samples = frame.samples;
     return desc;
 }
 

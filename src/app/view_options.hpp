@@ -39,6 +39,7 @@ double parse_ipd(const std::string& text);
 double parse_fov(const std::string& text);
 render::StereoMode parse_stereo(const std::string& text);
 render::ClipMode parse_clip(const std::string& text);
+int parse_samples(const std::string& text);  // 1, 2, 4, 8 or 16
 
 // The head pose and room of the frame: the layout's start without --pose;
 // with --pose, --room or else the one room whose box holds the head.

@@ -21,10 +21,11 @@ void check_sweep(const std::string& sweep) {
     if (sweep.empty() || sweep == "techniques") return;
     const size_t colon = sweep.find(':');
     const std::string kind = sweep.substr(0, colon);
-    if (colon == std::string::npos || (kind != "portals" && kind != "depth" && kind != "size" && kind != "boxes") ||
+    if (colon == std::string::npos || (kind != "portals" && kind != "depth" && kind != "size" && kind != "boxes" &&
+                                   kind != "samples") ||
         colon + 1 == sweep.size())
         throw InputError("--sweep: '" + sweep +
-                         "' is not techniques, portals:N,..., boxes:N,..., depth:N,... or size:WxH,...");
+                         "' is not techniques, portals:N,..., boxes:N,..., depth:N,..., size:WxH,... or samples:N,...");
 }
 
 }  // namespace
@@ -35,7 +36,7 @@ const std::set<std::string>& bench_value_options() {
         n.erase("--out");
         n.erase("--ids");
         for (const char* o : {"--frames", "--warmup", "--profile-frames", "--json", "--csv", "--path", "--portals",
-                              "--sweep", "--reference-depth"})
+                              "--sweep", "--reference-depth", "--reference-samples"})
             n.insert(o);
         return n;
     }();
@@ -58,8 +59,11 @@ const char* bench_options_help() {
            "                             techniques (stereo, clip, culling, depth 1..64; implies --error),\n"
            "                             portals:0,2,4,6  depth:1,16  size:320x180,640x360\n"
            "                             boxes:0,1000 (that many 12-triangle boxes on every room's floor)\n"
+           "                             samples:1,4 (multisampling; counts the driver lacks are reported)\n"
            "  --error                    compare each configuration with the tracer (ids, PSNR)\n"
            "  --reference-depth N        the tracer's recursion depth for --error (default 64)\n"
+           "  --reference-samples N      the tracer's samples per pixel for --error (default 1; 16 for\n"
+           "                             the anti-aliased ideal)\n"
            "  --json FILE                write the results as JSON (schema: bench/README.md)\n"
            "  --csv FILE                 write one CSV row per configuration\n";
 }
@@ -76,6 +80,7 @@ BenchOptions parse_bench_options(const ParsedArgs& args) {
     if (auto v = args.value("--portals")) o.portals = parse_int("--portals", *v, 0, 1000000);
     if (auto v = args.value("--sweep")) o.sweep = *v;
     if (auto v = args.value("--reference-depth")) o.reference_depth = parse_int("--reference-depth", *v, 0, 250);
+    if (auto v = args.value("--reference-samples")) o.reference_samples = app::parse_samples(*v);
     check_sweep(o.sweep);
     o.error = args.flag("--error") || o.sweep == "techniques";
     if (o.path && o.view.pose) throw InputError("--path and --pose: give one of them");

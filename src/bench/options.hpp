@@ -24,9 +24,10 @@ struct BenchOptions {
     std::optional<std::string> csv;
     std::optional<std::string> path;  // a walk file: physical poses, one a line (as `walk`)
     std::optional<int> portals;       // keep only the first N portals (pairs within them)
-    std::string sweep;                // "", "techniques", "portals:0,2,4,6", "depth:1,4", "size:WxH,..."
+    std::string sweep;                // "", "techniques", "portals:0,2,4,6", "depth:1,4", "size:WxH,...", "samples:1,4"
     bool error = false;               // compare every configuration with the tracer
     int reference_depth = 64;         // the tracer's recursion depth for the error
+    int reference_samples = 1;        // the tracer's samples per pixel for the error
 };
 
 const std::set<std::string>& bench_value_options();

@@ -109,6 +109,9 @@ BenchPlan plan_bench(const layout::Layout& layout, const BenchOptions& o) {
             const int n = parse_int("--sweep boxes", item, 0, 100000);
             plan.layouts.push_back(with_extra_boxes(plan.layouts[0], n));
             add(name, kind, [&](BenchConfig& c) { c.layout_variant = static_cast<int>(plan.layouts.size()) - 1; });
+        } else if (kind == "samples") {
+            const int n = app::parse_samples(item);
+            add(name, kind, [n](BenchConfig& c) { c.frame.samples = n; });
         } else if (kind == "depth") {
             const int d = parse_int("--sweep depth", item, 0, 250);
             add(name, kind, [d](BenchConfig& c) { c.frame.max_depth = d; });

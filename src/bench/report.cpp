@@ -26,6 +26,7 @@ json config_json(const ConfigResult& r, double base_median) {
     j["eye_width"] = f.eye_width;
     j["eye_height"] = f.eye_height;
     j["max_depth"] = f.max_depth;
+    j["samples"] = f.samples;
     j["frames"] = r.frame_ms.size();
     j["frame_ms_median"] = frame.median;
     j["frame_ms_p10"] = frame.p10;
@@ -71,6 +72,7 @@ std::string bench_json(const BenchResult& result, const BenchOptions& options) {
     j["warmup"] = options.warmup;
     j["profile_frames"] = options.profile_frames;
     if (options.error) j["reference_depth"] = options.reference_depth;
+    if (options.error) j["reference_samples"] = options.reference_samples;
     json configs = json::array();
     for (const ConfigResult& r : result.configs) configs.push_back(config_json(r, base));
     j["configs"] = configs;

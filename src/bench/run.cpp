@@ -37,7 +37,8 @@ render::FrameDesc frame_at(const BenchConfig& config, const BenchPose& pose) {
 // A configuration's error text: empty when the frame was drawn.
 std::string error_of(const Result<void>& drawn) { return drawn ? std::string() : drawn.error(); }
 
-double pixels_of(const render::FrameDesc& f) { return 2.0 * f.eye_width * f.eye_height; }
+// Passed samples per pixel sample: with multisampling, a query counts samples.
+double pixels_of(const render::FrameDesc& f) { return 2.0 * f.eye_width * f.eye_height * f.samples; }
 
 // Without culling every portal of a cell is drawn at every level: the passes
 // of a frame are the paths of up to `depth` portals from `room` (fewer where
@@ -180,6 +181,7 @@ struct Measurer {
                 if (!traced.count(key)) {
                     trace::TraceDesc t = trace_desc_for(f);
                     t.max_depth = options.reference_depth;
+                    t.samples = options.reference_samples;
                     traced[key] = trace::trace_frame(scenes[r.config.layout_variant], t);
                 }
                 const image::Image& t = traced[key];

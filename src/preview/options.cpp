@@ -14,6 +14,7 @@ using app::parse_fov;
 using app::parse_int;
 using app::parse_ipd;
 using app::parse_size;
+using app::parse_samples;
 using app::parse_stereo;
 
 const char* view_name(PreviewView view) {
@@ -57,6 +58,8 @@ const char* preview_help() {
            "  --stereo MODE           clip-shift (default), viewport-index or two-pass\n"
            "  --clip MODE             clip-distance (default) or oblique\n"
            "  --no-cull               draw every portal without per-eye culling and scissor\n"
+           "  --samples N             multisampling: 1 (default), 2, 4, 8 or 16 samples per pixel (the\n"
+           "                          counts the driver offers; llvmpipe: 4)\n"
            "  --no-hud, --no-minimap  start with the HUD / minimap hidden\n"
            "  --no-vsync              do not wait for the display between frames\n"
            "Scripted mode (tests, demos):\n"
@@ -76,7 +79,8 @@ const char* preview_help() {
 
 PreviewOptions parse_preview_options(const std::vector<std::string>& args, bool* help) {
     const ParsedArgs a = parse_args(
-        args, {"--size", "--ipd", "--fov", "--max-depth", "--stereo", "--clip", "--path", "--screenshots", "--frames"},
+        args, {"--size", "--ipd", "--fov", "--max-depth", "--stereo", "--clip", "--samples", "--path", "--screenshots",
+               "--frames"},
         {"--cross", "--anaglyph", "--no-cull", "--no-hud", "--no-minimap", "--no-vsync"}, 1);
     PreviewOptions o;
     *help = a.help;
@@ -95,6 +99,7 @@ PreviewOptions parse_preview_options(const std::vector<std::string>& args, bool*
     if (auto v = a.value("--max-depth")) o.frame.max_depth = parse_int("--max-depth", *v, 0, 250);
     if (auto v = a.value("--stereo")) o.frame.stereo = parse_stereo(*v);
     if (auto v = a.value("--clip")) o.frame.clip = parse_clip(*v);
+    if (auto v = a.value("--samples")) o.frame.samples = parse_samples(*v);
     o.frame.cull_portals = !a.flag("--no-cull");
     o.hud = !a.flag("--no-hud");
     o.minimap = !a.flag("--no-minimap");

@@ -66,6 +66,14 @@ struct FrameDesc : scene::View {
     // level-0 portal's subtree. The glFinish calls perturb the frame's own
     // time, so time frames with this off. Off: no queries, no extra work.
     bool profile = false;
+    // Multisampling: 1 draws into single-sample buffers exactly as before;
+    // N > 1 draws into N-sample colour, id and depth-stencil buffers (the
+    // stencil portals then work per sample) and resolves them into the
+    // single-sample target at the end of the frame: colour by averaging
+    // (glBlitNamedFramebuffer), ids by a majority vote over the samples
+    // (docs/accuracy.md, "Anti-aliasing"). A count the driver does not offer
+    // is an error.
+    int samples = 1;
 };
 
 inline double near_distance(const FrameDesc& frame) {

@@ -58,7 +58,7 @@ void draw_portal_via_texture(DrawContext& ctx, const LevelView& view, int p, con
     draw_level(inside, child_view(ctx, view, p, rects));
 
     // The box shows the texture where it is the visible surface.
-    state.draw_framebuffer(r.target.framebuffer.get());
+    state.draw_framebuffer(drawing_target(r, f).framebuffer.get());
     state.viewport({0, 0, 2 * f.eye_width, f.eye_height});
     if (f.cull_portals) state.scissor(scissor_of(ctx, rects, view));
     else state.no_scissor();

@@ -23,6 +23,9 @@ Result<void> ensure_target(RendererData& r, int width, int height, DepthMode dep
     Result<Target> made = create_target(width, height, depth);
     if (!made) return Error{made.error()};
     r.target = std::move(*made);
+    // The resolve's framebuffers hold the old target's buffers.
+    r.multisampling.colour_out = {};
+    r.multisampling.ids_out = {};
     return {};
 }
 
@@ -44,6 +47,7 @@ Result<void> ensure_program(RendererData& r, StereoMode mode) {
 Result<void> prepare_frame(RendererData& r, const FrameDesc& frame) {
     if (Result<void> made = ensure_target(r, 2 * frame.eye_width, frame.eye_height, frame.depth); !made) return made;
     if (Result<void> made = ensure_program(r, frame.stereo); !made) return made;
+    if (Result<void> made = ensure_multisampled(r, frame); !made) return made;
     if (frame.portal_texture_scale <= 0.0) return {};
     if (frame.stereo != StereoMode::ClipShift) return Error{"render-to-texture portals need --stereo clip-shift"};
     if (!r.portal_texture_program) {
@@ -153,10 +157,11 @@ Result<void> Renderer::draw(const FrameDesc& frame, FrameStats* stats_out) {
     const SceneProgram& program = *r.programs[mode_index(frame.stereo)];
     gl::StateCache& state = *r.state;
 
-    state.draw_framebuffer(r.target.framebuffer.get());
+    Target& target = drawing_target(r, frame);
+    state.draw_framebuffer(target.framebuffer.get());
     // Reversed-Z: depth 1 at the near plane, 0 at infinity, in a float buffer.
     state.clip_control(frame.depth == DepthMode::ReversedZ ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
-    clear_target(r, r.target, 0);
+    clear_target(r, target, 0);
     state.program(program.program.get());
     state.vertex_array(r.gpu.vao.get());
 
@@ -164,6 +169,7 @@ Result<void> Renderer::draw(const FrameDesc& frame, FrameStats* stats_out) {
     FrameProfiler profiler;
     DrawContext ctx{r, program, frame, stats, projection_of(frame), frame.profile ? &profiler : nullptr};
     draw_stereo(ctx);
+    resolve_multisampled(r, frame);
     // Nothing of this renderer stays bound: the cache is the context's, and
     // a name GL reuses after this renderer's objects are deleted must not
     // look bound already.

@@ -46,8 +46,9 @@ public:
     // state as render(). `stats` may be null.
     Result<void> draw(const FrameDesc& frame, FrameStats* stats = nullptr);
 
-    // The target the last frame was drawn into (e.g. for a window to show or
-    // read back); empty before the first frame.
+    // The single-sample target the last frame was drawn into, or resolved
+    // into when multisampled (e.g. for a window to show or read back); empty
+    // before the first frame.
     const Target& target() const;
 
 private:

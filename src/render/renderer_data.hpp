@@ -9,6 +9,7 @@
 #include "gl/state.hpp"
 #include "math/portal.hpp"
 #include "render/gpu_scene.hpp"
+#include "render/multisample.hpp"
 #include "render/scene_program.hpp"
 #include "render/target.hpp"
 #include "scene/portal_links.hpp"
@@ -35,7 +36,8 @@ struct RendererData {
     std::optional<SceneProgram> programs[kStereoModeCount];  // per StereoMode, built on first use
     ClearDepthProgram clear_depth;
     gl::VertexArray empty_vao;            // for the attribute-less clear triangle
-    Target target;
+    Target target;                        // single-sample: what is read back or shown
+    Multisampling multisampling;          // with FrameDesc::samples > 1
     std::vector<gl::Query> mark_queries;  // occlusion queries of portal marks, reused every frame
     std::optional<SceneProgram> portal_texture_program;  // render-to-texture portals, built on first use
     std::vector<Target> portal_textures;  // one per portal of the head's cell, reused every frame
@@ -44,5 +46,17 @@ struct RendererData {
 // Clears a target to the background colour, id 0, far depth (for its depth
 // mode) and the given stencil value, through the state cache.
 void clear_target(RendererData& r, const Target& target, int stencil);
+
+// For FrameDesc::samples > 1 (multisample.cpp): checks the count, makes the
+// multisampled target of the frame's size and the framebuffers the resolve
+// writes through; nothing for 1 sample. Call after `target` is made.
+Result<void> ensure_multisampled(RendererData& r, const FrameDesc& frame);
+
+// The target the frame's passes draw into: `target`, or the multisampled one.
+Target& drawing_target(RendererData& r, const FrameDesc& frame);
+
+// Resolves the frame's multisampled target into `target` (colour averaged,
+// ids by majority); nothing for 1 sample.
+void resolve_multisampled(RendererData& r, const FrameDesc& frame);
 
 }  // namespace impossible::render

@@ -8,15 +8,13 @@ namespace impossible::render {
 
 namespace {
 
-Result<Target> make_target(int width, int height, DepthMode depth, bool sampled) {
-    Target t;
-    t.width = width;
-    t.height = height;
-    t.depth = depth;
-    t.depth_stencil = gl::create_renderbuffer();
-    t.framebuffer = gl::create_framebuffer();
+enum class TargetKind { Renderbuffers, Sampled, Multisampled };
+
+// Colour and ids of a target of the given kind, attached to its framebuffer.
+void attach_colour_and_ids(Target& t, TargetKind kind) {
     const GLuint fb = t.framebuffer.get();
-    if (sampled) {
+    const int width = t.width, height = t.height;
+    if (kind == TargetKind::Sampled) {
         t.color_texture = gl::create_texture(GL_TEXTURE_2D);
         t.ids_texture = gl::create_texture(GL_TEXTURE_2D);
         glTextureStorage2D(t.color_texture.get(), 1, GL_RGBA8, width, height);
@@ -30,6 +28,14 @@ Result<Target> make_target(int width, int height, DepthMode depth, bool sampled)
         }
         glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT0, t.color_texture.get(), 0);
         glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT1, t.ids_texture.get(), 0);
+    } else if (kind == TargetKind::Multisampled) {
+        t.color = gl::create_renderbuffer();
+        t.ids_texture = gl::create_texture(GL_TEXTURE_2D_MULTISAMPLE);
+        glNamedRenderbufferStorageMultisample(t.color.get(), t.samples, GL_RGBA8, width, height);
+        // Fixed sample locations: required when textures and renderbuffers share a framebuffer.
+        glTextureStorage2DMultisample(t.ids_texture.get(), t.samples, GL_R8UI, width, height, GL_TRUE);
+        glNamedFramebufferRenderbuffer(fb, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, t.color.get());
+        glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT1, t.ids_texture.get(), 0);
     } else {
         t.color = gl::create_renderbuffer();
         t.ids = gl::create_renderbuffer();
@@ -38,9 +44,23 @@ Result<Target> make_target(int width, int height, DepthMode depth, bool sampled)
         glNamedFramebufferRenderbuffer(fb, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, t.color.get());
         glNamedFramebufferRenderbuffer(fb, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, t.ids.get());
     }
-    glNamedRenderbufferStorage(t.depth_stencil.get(),
-                               depth == DepthMode::ReversedZ ? GL_DEPTH32F_STENCIL8 : GL_DEPTH24_STENCIL8, width,
-                               height);
+}
+
+Result<Target> make_target(int width, int height, DepthMode depth, TargetKind kind, int samples) {
+    Target t;
+    t.width = width;
+    t.height = height;
+    t.depth = depth;
+    t.samples = kind == TargetKind::Multisampled ? samples : 1;
+    t.depth_stencil = gl::create_renderbuffer();
+    t.framebuffer = gl::create_framebuffer();
+    const GLuint fb = t.framebuffer.get();
+    attach_colour_and_ids(t, kind);
+    const GLenum depth_format = depth == DepthMode::ReversedZ ? GL_DEPTH32F_STENCIL8 : GL_DEPTH24_STENCIL8;
+    if (kind == TargetKind::Multisampled)
+        glNamedRenderbufferStorageMultisample(t.depth_stencil.get(), t.samples, depth_format, width, height);
+    else
+        glNamedRenderbufferStorage(t.depth_stencil.get(), depth_format, width, height);
     glNamedFramebufferRenderbuffer(fb, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, t.depth_stencil.get());
     const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
     glNamedFramebufferDrawBuffers(fb, 2, buffers);
@@ -57,11 +77,15 @@ Result<Target> make_target(int width, int height, DepthMode depth, bool sampled)
 }  // namespace
 
 Result<Target> create_target(int width, int height, DepthMode depth) {
-    return make_target(width, height, depth, false);
+    return make_target(width, height, depth, TargetKind::Renderbuffers, 1);
 }
 
 Result<Target> create_sampled_target(int width, int height, DepthMode depth) {
-    return make_target(width, height, depth, true);
+    return make_target(width, height, depth, TargetKind::Sampled, 1);
+}
+
+Result<Target> create_multisampled_target(int width, int height, DepthMode depth, int samples) {
+    return make_target(width, height, depth, TargetKind::Multisampled, samples);
 }
 
 image::Image read_target(const Target& t) {

@@ -1,6 +1,8 @@
 // The side-by-side render target: RGBA8 colour, R8UI cell ids, and a
 // DEPTH32F_STENCIL8 buffer (reversed-Z float depth; DEPTH24_STENCIL8 for
-// standard depth); the stencil holds the portal level.
+// standard depth); the stencil holds the portal level. A multisampled target
+// has the same attachments with N samples each, the ids in a multisample
+// texture so that the id resolve pass can read every sample.
 #pragma once
 
 #include "base/result.hpp"
@@ -13,8 +15,9 @@ struct Target {
     int width = 0;
     int height = 0;
     DepthMode depth = DepthMode::ReversedZ;
+    int samples = 1;            // > 1: a multisampled target
     gl::Texture color_texture;  // instead of the renderbuffers, for a target that is sampled
-    gl::Texture ids_texture;
+    gl::Texture ids_texture;    // also the ids of a multisampled target (GL_TEXTURE_2D_MULTISAMPLE)
     gl::Renderbuffer color;
     gl::Renderbuffer ids;
     gl::Renderbuffer depth_stencil;
@@ -27,6 +30,11 @@ Result<Target> create_target(int width, int height, DepthMode depth);
 // The same, with colour and ids in textures that shaders can sample (colour
 // filtered linearly, ids by nearest texel).
 Result<Target> create_sampled_target(int width, int height, DepthMode depth);
+
+// A target of `samples` (> 1) samples per pixel: colour and depth-stencil in
+// multisample renderbuffers, ids in a multisample texture. The caller checks
+// first that the driver offers the count (render/multisample.hpp).
+Result<Target> create_multisampled_target(int width, int height, DepthMode depth, int samples);
 
 // Reads colour and ids back, rows from the top.
 image::Image read_target(const Target& target);

@@ -14,6 +14,7 @@
 #include "math/projection.hpp"
 #include "scene/shading.hpp"
 #include "trace/intersect.hpp"
+#include "trace/sample_pattern.hpp"
 
 namespace impossible::trace {
 
@@ -114,6 +115,33 @@ PixelRay eye_pixel_ray(const TraceDesc& desc, const math::Frustum& frustum, cons
     return {eye.position, glm::normalize(eye.rotation * dir_eye)};
 }
 
+// The ray through a point of an eye's image (pixel units, rows from the top).
+PixelRay eye_point_ray(const TraceDesc& desc, const math::Frustum& frustum, const math::Eye& eye, double x,
+                       double y) {
+    const dvec3 dir_eye = math::image_point_ray_eye(frustum, desc.eye_width, desc.eye_height, x, y);
+    return {eye.position, glm::normalize(eye.rotation * dir_eye)};
+}
+
+// One pixel's id and bytes: the centre ray's id; with several samples, the
+// mean of the samples' bytes rounded to nearest (half up), like a resolve.
+void trace_pixel(const Scene& scene, const TraceDesc& desc, const math::Frustum& frustum, const math::Eye& eye,
+                 int i, int j, std::uint8_t* id, std::uint8_t* rgb) {
+    const PixelRay centre = eye_pixel_ray(desc, frustum, eye, i, j);
+    const TraceHit hit = trace_ray(scene, centre.origin, centre.dir, desc.room, desc.max_depth);
+    *id = static_cast<std::uint8_t>(hit.id);
+    if (desc.samples <= 1) {
+        for (int c = 0; c < 3; ++c) rgb[c] = to_byte(hit.color[c]);
+        return;
+    }
+    int sum[3] = {0, 0, 0};
+    for (const SamplePosition& s : sample_pattern(desc.samples)) {
+        const PixelRay ray = eye_point_ray(desc, frustum, eye, i + s.x, j + 1.0 - s.y);
+        const TraceHit sample = trace_ray(scene, ray.origin, ray.dir, desc.room, desc.max_depth);
+        for (int c = 0; c < 3; ++c) sum[c] += to_byte(sample.color[c]);
+    }
+    for (int c = 0; c < 3; ++c) rgb[c] = static_cast<std::uint8_t>((2 * sum[c] + desc.samples) / (2 * desc.samples));
+}
+
 }  // namespace
 
 PixelRay pixel_ray(const TraceDesc& desc, int eye, int i, int j) {
@@ -126,6 +154,8 @@ image::Image trace_frame(const Scene& scene, const TraceDesc& desc) {
     if (desc.eye_width <= 0 || desc.eye_height <= 0 || desc.eye_width > 1 << 15 || desc.eye_height > 1 << 15)
         throw std::invalid_argument("trace: bad eye image size");
     if (desc.max_depth < 0) throw std::invalid_argument("trace: max_depth is negative");
+    if (sample_pattern(desc.samples).empty())
+        throw std::invalid_argument("trace: no sample pattern for " + std::to_string(desc.samples) + " samples");
 
     image::Image image;
     image.width = 2 * desc.eye_width;
@@ -139,11 +169,8 @@ image::Image trace_frame(const Scene& scene, const TraceDesc& desc) {
     auto trace_row = [&](int j) {
         for (int eye = 0; eye < 2; ++eye) {
             for (int i = 0; i < desc.eye_width; ++i) {
-                const PixelRay ray = eye_pixel_ray(desc, frustum, eyes[eye], i, j);
-                const TraceHit hit = trace_ray(scene, ray.origin, ray.dir, desc.room, desc.max_depth);
                 const size_t at = static_cast<size_t>(j) * image.width + eye * desc.eye_width + i;
-                image.ids[at] = static_cast<std::uint8_t>(hit.id);
-                for (int c = 0; c < 3; ++c) image.rgb[3 * at + c] = to_byte(hit.color[c]);
+                trace_pixel(scene, desc, frustum, eyes[eye], i, j, &image.ids[at], &image.rgb[3 * at]);
             }
         }
     };

@@ -41,6 +41,12 @@ TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, in
 // The view (scene/view.hpp) and how the tracer computes it.
 struct TraceDesc : scene::View {
     int threads = 0;  // 0: std::thread::hardware_concurrency()
+    // Supersampling: 1 traces the pixel centre (exactly as before); 2, 4, 8
+    // or 16 trace one ray per position of trace/sample_pattern.hpp and give
+    // the pixel the mean of their colours taken as bytes, round(Σ byte / N),
+    // as a multisample resolve averages 8-bit samples. The id is always the
+    // centre ray's, so id maps do not depend on the count.
+    int samples = 1;
 };
 
 // 0..1 → 0..255 as round(clamp(c, 0, 1) · 255).
@@ -56,7 +62,7 @@ PixelRay pixel_ray(const TraceDesc& desc, int eye, int i, int j);
 
 // Traces every pixel of both eyes. Rows are split across threads; the image
 // does not depend on the thread count. Throws std::invalid_argument for a bad
-// room index, size or negative depth.
+// room index, size, negative depth or a sample count with no pattern.
 image::Image trace_frame(const Scene& scene, const TraceDesc& desc);
 image::Image trace_frame(const layout::Layout& layout, const TraceDesc& desc);
 

@@ -102,6 +102,32 @@ TEST_F(BenchCli, TechniqueSweepMeasuresEveryConfigurationWithItsError) {
     }
 }
 
+// Multisampling swept: every count the driver offers is measured, with
+// fragments per pixel sample as with one sample and a smaller error against
+// the anti-aliased tracer; a count it lacks is that configuration's error.
+TEST_F(BenchCli, SampleSweepMeasuresOfferedCountsAndReportsTheOthers) {
+    const BenchRun r = run(std::string(kQuick) + " --sweep samples:1,4,16 --error --reference-samples 16 --json s.json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const nlohmann::json j = json("s.json");
+    EXPECT_EQ(j["reference_samples"], 16);
+    std::map<std::string, nlohmann::json> by_name;
+    for (const nlohmann::json& c : j["configs"]) by_name[c["name"]] = c;
+    ASSERT_EQ(by_name.size(), 4u);
+    EXPECT_EQ(by_name["samples=1"]["samples"], 1);
+    for (const char* name : {"samples=4", "samples=16"}) {
+        const nlohmann::json& c = by_name[name];
+        if (c.contains("error")) {
+            EXPECT_NE(c["error"].get<std::string>().find("offers"), std::string::npos) << c["error"];
+            continue;
+        }
+        EXPECT_GT(c["frame_ms_median"].get<double>(), 0.0) << name;
+        EXPECT_GE(c["fragments_per_pixel"].get<double>(), 1.0) << name;
+        EXPECT_LT(c["fragments_per_pixel"].get<double>(), 3.0) << name;
+        EXPECT_EQ(c["id_mismatch_percent"].get<double>(), 0.0) << name;
+        EXPECT_GT(c["psnr_db"].get<double>(), by_name["samples=1"]["psnr_db"].get<double>()) << name;
+    }
+}
+
 TEST_F(BenchCli, ClosedPortalsAndDepthSweep) {
     const std::string corridor = "'" IMPOSSIBLE_SOURCE_DIR "/layouts/corridor.json'";
     ASSERT_EQ(run(corridor + " " + kQuick + " --portals 0 --json c.json").status, 0);

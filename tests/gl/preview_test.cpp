@@ -242,6 +242,25 @@ TEST_F(Preview, CrossSwapsTheEyesInTheWindow) {
     EXPECT_GT(differing, 100);  // the eyes do differ, so the swap is seen
 }
 
+// --samples 4: the window's frames are multisampled, the same frame (colour
+// and ids) as `render --samples 4` writes.
+TEST_F(Preview, MultisampledFramesMatchRender) {
+    const Xvfb x;
+    ASSERT_FALSE(x.display.empty()) << x.error;
+    const ProgramRun preview = run_program(
+        "DISPLAY=" + x.display, "preview --samples 4 --frames 1 --no-vsync --size 80x60 --screenshots " + q(dir_ / "s"),
+        dir_);
+    if (preview.status != 0 && preview.err.find("offers") != std::string::npos) GTEST_SKIP() << preview.err;
+    ASSERT_EQ(preview.status, 0) << preview.err;
+    const ProgramRun render = run_program("", "render --samples 4 --size 80x60 --out " + q(dir_ / "r.png") + " --ids " + q(dir_ / "r-ids.png"),
+                                          dir_);
+    ASSERT_EQ(render.status, 0) << render.err;
+    EXPECT_EQ(testing::read_png_ok((dir_ / "s/frame-0000.png").string()).pixels,
+              testing::read_png_ok((dir_ / "r.png").string()).pixels);
+    EXPECT_EQ(testing::read_png_ok((dir_ / "s/frame-0000-ids.png").string()).pixels,
+              testing::read_png_ok((dir_ / "r-ids.png").string()).pixels);
+}
+
 TEST_F(Preview, WithoutADisplayFailsWithOneLine) {
     const ProgramRun r = run_program("-u DISPLAY -u WAYLAND_DISPLAY", "preview --frames 1", dir_);
     EXPECT_EQ(r.status, 1);
