@@ -29,6 +29,9 @@ enum class DepthMode {
     Standard,   // DEPTH24, classic -1..1 projection with a far plane at FrameDesc::far
 };
 
+// The default budget of portal passes per frame (--max-portal-passes).
+inline constexpr int kDefaultMaxPortalPasses = 10'000;
+
 struct FrameDesc {
     math::HeadPose head;
     int room = 0;              // index of the room the head is in
@@ -39,6 +42,9 @@ struct FrameDesc {
     int eye_width = 1280;
     int eye_height = 720;
     int max_depth = 8;         // portals one line of sight may pass
+    // Portal passes one frame may draw; past it, portals show the fill colour
+    // (FrameStats::budget_fills). Only a frame that needs more changes.
+    int max_portal_passes = kDefaultMaxPortalPasses;
     StereoMode stereo = StereoMode::ClipShift;
     ClipMode clip = ClipMode::ClipDistance;
     DepthMode depth = DepthMode::ReversedZ;
@@ -68,7 +74,8 @@ struct FrameStats {
                                     // counted (not the full-screen depth-clear triangles)
     int portal_passes_drawn = 0;    // portals whose target was drawn (both eyes count once)
     int portal_passes_culled = 0;   // portals skipped as invisible to both eyes
-    int portal_fills = 0;           // portals shown as the flat fill at the depth limit
+    int portal_fills = 0;           // portals shown as the flat fill (depth limit or budget)
+    int budget_fills = 0;           // of those, the ones drawn so because max_portal_passes was spent
     int max_level_reached = 0;
     // Only with FrameDesc::profile:
     long colour_fragments = 0;      // samples that passed every test in the colour passes (Scene,
