@@ -33,6 +33,8 @@ const char* kHelp =
     "                              green, id mismatches in red\n"
     "  --max-mismatch PERCENT      exit 1 when id_mismatch_pct exceeds it (needs the id maps)\n"
     "  --min-psnr DB               exit 1 when psnr_db is below it\n"
+    "The PNGs are checked (CRCs, truncation, at most 2 x 8192 x 8192 pixels); id maps must be 8-bit\n"
+    "grey. --diff must not name an input.\n"
     "Exit status: 0 alike within the limits, 1 past a limit or for unreadable or different-sized\n"
     "images, 2 for a usage error.\n";
 

@@ -14,7 +14,10 @@ namespace {
 const char* kHelp =
     "usage: impossible render [LAYOUT] [options]\n"
     "Renders one side-by-side stereo frame with the OpenGL rasteriser (the built-in default\n"
-    "layout without LAYOUT) and writes it as PNG.\n\n";
+    "layout without LAYOUT) and writes it as PNG. --out and --ids are written together or not at\n"
+    "all (a link is written through, a device such as /dev/stdout directly); naming one file twice,\n"
+    "or the layout, is a usage error. Portals that cover no pixel are not drawn; past\n"
+    "--max-portal-passes the rest show the fill colour, with a warning.\n\n";
 
 }  // namespace
 

@@ -10,6 +10,7 @@
 
 #include "base/file_io.hpp"
 #include "base/format.hpp"
+#include "base/text.hpp"
 #include "layout/path_file.hpp"
 #include "math/pose.hpp"
 #include "scene/walk.hpp"
@@ -33,7 +34,7 @@ int run_walk_stream(const layout::Layout& layout, std::istream& in, const std::s
                     std::ostream& out, std::ostream& err) {
     const layout::PathFile path = layout::read_path_stream(in, name);
     if (!path) {
-        err << path.error() << '\n';
+        err << one_line(path.error()) << '\n';
         return 1;
     }
     const std::vector<math::HeadPose>& poses = *path;
@@ -44,7 +45,7 @@ int run_walk_stream(const layout::Layout& layout, std::istream& in, const std::s
         // The walker stops testing at the cap (a head moving absurdly far in
         // one frame, or doors that lead into each other): say so, once a frame.
         if (static_cast<int>(passed.size()) >= scene::kMaxCrossingsPerFrame)
-            err << "warning: " << name << ": frame " << frame << " reached the limit of "
+            err << "warning: " << one_line(name, 1000) << ": frame " << frame << " reached the limit of "
                 << scene::kMaxCrossingsPerFrame
                 << " teleports in one frame; portals beyond it were not crossed and the room may be wrong\n";
         line = "{\"frame\":" + std::to_string(frame) + ",\"room\":";
@@ -75,7 +76,7 @@ int run_walk(const layout::Layout& layout, const std::string& path_file, std::os
     const Result<std::vector<unsigned char>> bytes =
         read_file_bytes(path_file, layout::kMaxPathFileBytes, false);
     if (!bytes) {
-        err << path_file << ": " << bytes.error() << '\n';
+        err << one_line(path_file + ": " + bytes.error()) << '\n';
         return 1;
     }
     std::istringstream in(std::string(bytes->begin(), bytes->end()));

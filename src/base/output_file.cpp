@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <climits>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -21,6 +22,7 @@ struct Plan {
     std::string path;         // as given, for messages
     std::string final_path;   // the file that ends up holding the bytes
     bool direct = false;      // a device, FIFO or socket: written in place
+    int descriptor = -1;      // /dev/stdout and the like: this open descriptor
     mode_t mode = 0666;       // of a new or replaced regular file
     std::string temp;         // the temporary file, once created
 };
@@ -57,9 +59,30 @@ mode_t default_mode() {
     return 0666 & ~mask;
 }
 
+// The descriptor a name such as /dev/stdout or /dev/fd/3 stands for, or -1.
+// Written through the descriptor itself, the output goes where the shell
+// sent it, appending after `>>` too (reopening the name would start at 0).
+int named_descriptor(const std::string& path) {
+    if (path == "/dev/stdout") return 1;
+    if (path == "/dev/stderr") return 2;
+    for (const char* prefix : {"/dev/fd/", "/proc/self/fd/"}) {
+        const std::string p = prefix;
+        if (path.size() <= p.size() || path.compare(0, p.size(), p) != 0) continue;
+        const std::string digits = path.substr(p.size());
+        if (digits.size() > 4 || digits.find_first_not_of("0123456789") != std::string::npos) return -1;
+        const int fd = std::stoi(digits);
+        return ::fcntl(fd, F_GETFD) >= 0 ? fd : -1;
+    }
+    return -1;
+}
+
 Result<Plan> plan_output(const std::string& path) {
-    Plan plan{path, path, false, default_mode(), {}};
+    Plan plan{path, path, false, -1, default_mode(), {}};
     if (path.empty()) return cannot_write("''", "empty file name");
+    if ((plan.descriptor = named_descriptor(path)) >= 0) {
+        plan.direct = true;
+        return plan;
+    }
     struct stat st {};
     if (::stat(path.c_str(), &st) == 0) {
         if (S_ISDIR(st.st_mode)) return cannot_write(path, "is a directory");
@@ -113,6 +136,12 @@ Result<void> write_temp(Plan& plan, const std::string& bytes) {
 // A device, FIFO or socket. A FIFO without a reader is an error rather than
 // a wait (O_NONBLOCK on open); the writes themselves then block as usual.
 Result<void> write_direct(const Plan& plan, const std::string& bytes) {
+    if (plan.descriptor >= 0) {
+        if (plan.descriptor <= 2) std::fflush(plan.descriptor == 1 ? stdout : stderr);  // keep the order
+        if (Result<void> written = write_all(plan.descriptor, bytes); !written)
+            return cannot_write(plan.path, written.error());
+        return {};
+    }
     const int fd = ::open(plan.path.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0)
         return cannot_write(plan.path, errno == ENXIO ? std::string("nothing reads from it") : errno_text(errno));

@@ -104,6 +104,7 @@ TEST_F(Hostile, ABrokenGalliumDriverIsAnErrorNotACrash) {
 TEST_F(Hostile, MessagesAreOneLineWithEscapedPathsAndCutNames) {
     expect_refused(run("$BIN render $'a\\nb.json'"), 1, "a\\nb.json");
     expect_refused(run("$BIN validate $'x\\ny.json'"), 1, "x\\ny.json");
+    expect_refused(run("$BIN walk lay.json --path $'p\\nq.txt'"), 1, "p\\nq.txt: does not exist");
     const std::string name(4'000'000, 'n');
     std::string layout = slurp(dir_ / "lay.json");
     layout.replace(layout.find('{'), 1, "{\"name\":\"" + name + "\",");

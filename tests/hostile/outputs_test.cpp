@@ -42,6 +42,15 @@ TEST_F(Hostile, StandardOutputAsAnOutputFileWorks) {
     EXPECT_EQ(r.out, "PNG");
 }
 
+TEST_F(Hostile, ADescriptorByNameIsWrittenWhereItPoints) {
+    // /dev/fd/1 (like /dev/stdout) after `>>`: appended, not replacing the
+    // file nor writing over its start.
+    const Outcome r = run("echo first > f.txt; $BIN render" + std::string(kSmall) + " --out /dev/fd/1 >> f.txt");
+    EXPECT_EQ(r.status, 0) << r.err;
+    const std::string f = slurp(dir_ / "f.txt");
+    EXPECT_EQ(f.substr(0, 10), "first\n\x89PNG");
+}
+
 TEST_F(Hostile, ALongOutputNameThatFitsTheLimitWorks) {
     const std::string name = std::string(250, 'n') + ".png";  // 254 characters
     const Outcome r = run("$BIN render" + std::string(kSmall) + " --out " + name);
