@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <utility>
 
 namespace impossible::tools {
 
@@ -75,11 +76,9 @@ std::string vec3_json(const std::array<float, 3>& v) {
     return "[" + number(v[0]) + "," + number(v[1]) + "," + number(v[2]) + "]";
 }
 
-}  // namespace
-
-std::vector<unsigned char> make_chair_glb() {
-    // Metres; the chair stands on y = 0, centred on x and z, its back at -z
-    // so that it faces +z (glTF's "front").
+// Metres; the chair stands on y = 0, centred on x and z, its back at -z so
+// that it faces +z (glTF's "front"). [0]: wood, [1]: the fabric cushion.
+std::array<Arrays, 2> chair_parts() {
     const float leg = 0.04f;
     const float seat_height = 0.43f;
     const float half = 0.22f;
@@ -94,31 +93,21 @@ std::vector<unsigned char> make_chair_glb() {
     Arrays fabric;
     add_box(fabric, {{-half + 0.02f, seat_height + 0.04f, -half + 0.04f},
                      {half - 0.02f, seat_height + 0.09f, half - 0.02f}});  // cushion
+    return {std::move(wood), std::move(fabric)};
+}
 
-    // The binary chunk: each primitive's positions, normals, then indices.
-    std::vector<unsigned char> bin;
-    struct View {
-        std::size_t offset, length;
-        int target;
-    };
-    std::vector<View> views;
-    const auto add_view = [&](const auto& values, int target) {
-        const std::size_t offset = bin.size();
-        append_bytes(bin, values);
-        views.push_back({offset, bin.size() - offset, target});
-        while (bin.size() % 4 != 0) bin.push_back(0);  // keep every view 4-byte aligned
-    };
-    const Arrays* primitives[] = {&wood, &fabric};
-    for (const Arrays* a : primitives) {
-        add_view(a->positions, 34962);
-        add_view(a->normals, 34962);
-        add_view(a->indices, 34963);
-    }
+struct BufferView {
+    std::size_t offset, length;
+    int target;
+};
 
+// The accessors and mesh primitives of the parts, whose buffer views are
+// positions, normals and indices in turn: JSON array contents.
+std::pair<std::string, std::string> accessors_and_primitives(const std::array<Arrays, 2>& parts) {
     std::string accessors;
     std::string mesh_primitives;
     for (int p = 0; p < 2; ++p) {
-        const Arrays& a = *primitives[p];
+        const Arrays& a = parts[static_cast<std::size_t>(p)];
         std::array<float, 3> lo = {a.positions[0], a.positions[1], a.positions[2]};
         std::array<float, 3> hi = lo;
         for (std::size_t i = 0; i < a.positions.size(); ++i) {
@@ -140,28 +129,22 @@ std::vector<unsigned char> make_chair_glb() {
                            ",\"NORMAL\":" + std::to_string(base + 1) + "},\"indices\":" +
                            std::to_string(base + 2) + ",\"material\":" + std::to_string(p) + "}";
     }
-    std::string buffer_views;
-    for (std::size_t i = 0; i < views.size(); ++i) {
-        if (i > 0) buffer_views += ",";
-        buffer_views += "{\"buffer\":0,\"byteOffset\":" + std::to_string(views[i].offset) +
-                        ",\"byteLength\":" + std::to_string(views[i].length) +
-                        ",\"target\":" + std::to_string(views[i].target) + "}";
-    }
-    std::string json =
-        "{\"asset\":{\"version\":\"2.0\",\"generator\":\"impossible tools/make_glb\"},"
-        "\"scene\":0,\"scenes\":[{\"nodes\":[0]}],"
-        "\"nodes\":[{\"name\":\"chair\",\"mesh\":0}],"
-        "\"meshes\":[{\"name\":\"chair\",\"primitives\":[" + mesh_primitives + "]}],"
-        "\"materials\":["
-        "{\"name\":\"wood\",\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.55,0.35,0.2,1],"
-        "\"metallicFactor\":0,\"roughnessFactor\":0.8}},"
-        "{\"name\":\"fabric\",\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.7,0.12,0.1,1],"
-        "\"metallicFactor\":0,\"roughnessFactor\":1}}],"
-        "\"accessors\":[" + accessors + "],"
-        "\"bufferViews\":[" + buffer_views + "],"
-        "\"buffers\":[{\"byteLength\":" + std::to_string(bin.size()) + "}]}";
-    while (json.size() % 4 != 0) json += ' ';  // chunks are 4-byte aligned
+    return {accessors, mesh_primitives};
+}
 
+std::string buffer_views_json(const std::vector<BufferView>& views) {
+    std::string out;
+    for (std::size_t i = 0; i < views.size(); ++i) {
+        if (i > 0) out += ",";
+        out += "{\"buffer\":0,\"byteOffset\":" + std::to_string(views[i].offset) +
+               ",\"byteLength\":" + std::to_string(views[i].length) +
+               ",\"target\":" + std::to_string(views[i].target) + "}";
+    }
+    return out;
+}
+
+// The GLB container: header, JSON chunk, BIN chunk.
+std::vector<unsigned char> glb_of(const std::string& json, const std::vector<unsigned char>& bin) {
     std::vector<unsigned char> glb;
     const auto total = static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + bin.size());
     append_u32(glb, 0x46546C67);  // "glTF"
@@ -174,6 +157,42 @@ std::vector<unsigned char> make_chair_glb() {
     append_u32(glb, 0x004E4942);  // "BIN\0"
     glb.insert(glb.end(), bin.begin(), bin.end());
     return glb;
+}
+
+}  // namespace
+
+std::vector<unsigned char> make_chair_glb() {
+    const std::array<Arrays, 2> parts = chair_parts();
+    // The binary chunk: each primitive's positions, normals, then indices.
+    std::vector<unsigned char> bin;
+    std::vector<BufferView> views;
+    const auto add_view = [&](const auto& values, int target) {
+        const std::size_t offset = bin.size();
+        append_bytes(bin, values);
+        views.push_back({offset, bin.size() - offset, target});
+        while (bin.size() % 4 != 0) bin.push_back(0);  // keep every view 4-byte aligned
+    };
+    for (const Arrays& a : parts) {
+        add_view(a.positions, 34962);
+        add_view(a.normals, 34962);
+        add_view(a.indices, 34963);
+    }
+    const auto [accessors, mesh_primitives] = accessors_and_primitives(parts);
+    std::string json =
+        "{\"asset\":{\"version\":\"2.0\",\"generator\":\"impossible tools/make_glb\"},"
+        "\"scene\":0,\"scenes\":[{\"nodes\":[0]}],"
+        "\"nodes\":[{\"name\":\"chair\",\"mesh\":0}],"
+        "\"meshes\":[{\"name\":\"chair\",\"primitives\":[" + mesh_primitives + "]}],"
+        "\"materials\":["
+        "{\"name\":\"wood\",\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.55,0.35,0.2,1],"
+        "\"metallicFactor\":0,\"roughnessFactor\":0.8}},"
+        "{\"name\":\"fabric\",\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.7,0.12,0.1,1],"
+        "\"metallicFactor\":0,\"roughnessFactor\":1}}],"
+        "\"accessors\":[" + accessors + "],"
+        "\"bufferViews\":[" + buffer_views_json(views) + "],"
+        "\"buffers\":[{\"byteLength\":" + std::to_string(bin.size()) + "}]}";
+    while (json.size() % 4 != 0) json += ' ';  // chunks are 4-byte aligned
+    return glb_of(json, bin);
 }
 
 }  // namespace impossible::tools

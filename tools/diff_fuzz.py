@@ -17,6 +17,12 @@ same layout and pose.
     tools/diff_fuzz.py --binary build/impossible --seed 1 --cases 300
     tools/diff_fuzz.py --binary build/impossible --seed 1 --case 17 --keep /tmp/case17
 
+A case whose every mismatching pixel lies on a feature one pixel thin (a door
+seen nearly edge-on, a sub-pixel prop edge) is counted as a "sliver": the
+rasteriser includes or drops such a feature by its 1/256-pixel vertex
+snapping, the tracer by exact arithmetic (docs/accuracy.md). Slivers are
+listed but do not fail the run; any other mismatch does.
+
 Exit status: 0 when every case passed, 1 when one failed, 2 for a usage error.
 """
 import argparse
@@ -27,7 +33,9 @@ import os
 import random
 import subprocess
 import sys
+import struct
 import tempfile
+import zlib
 
 KINDS = ["coincident", "wall_pair", "free_pair", "corridor"]
 
@@ -106,7 +114,9 @@ class Case:
         lo, hi = self.room_box(o, hx, hz, h)
         yaw = r.uniform(0, 2 * math.pi) if r.random() < 0.5 else r.choice([0, 0.5, 1, 1.5]) * math.pi
         n = [math.sin(yaw), 0.0, math.cos(yaw)]
-        w = min(log_uniform(r, 0.01, 20), 2 * hx)
+        w = log_uniform(r, 0.01, 20)
+        if r.random() < 0.7:
+            w = min(w, 2 * hx)  # else the door may reach through the walls
         ph = min(r.uniform(0.01, h), h - 0.02) if w < 0.5 else r.uniform(min(1.0, h / 2), h - 0.01)
         c = [o[0] + r.uniform(-hx / 2, hx / 2), o[1] + ph / 2 + r.uniform(0, h - ph), o[2] + r.uniform(-hz / 2, hz / 2)]
         self.room("a", lo, hi, self.props_near(c, lo, hi, r.randint(0, 4)))
@@ -243,6 +253,73 @@ class Case:
                 "--max-depth", str(self.max_depth)]
 
 
+def read_grey_png(path):
+    """An 8-bit greyscale, non-interlaced PNG (what `--ids` writes) as rows."""
+    data = open(path, "rb").read()
+    pos, idat, width, height = 8, b"", 0, 0
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        chunk = data[pos + 8:pos + 8 + length]
+        if kind == b"IHDR":
+            width, height, depth, colour = struct.unpack(">IIBB", chunk[:10])
+            assert depth == 8 and colour == 0, path + ": not an 8-bit grey PNG"
+        elif kind == b"IDAT":
+            idat += chunk
+        pos += 12 + length
+    raw, rows, prev, k = zlib.decompress(idat), [], bytearray(width), 0
+    for _ in range(height):
+        kind, line = raw[k], bytearray(raw[k + 1:k + 1 + width])
+        k += 1 + width
+        for x in range(width):
+            a = line[x - 1] if x else 0
+            b, c = prev[x], (prev[x - 1] if x else 0)
+            if kind == 1:
+                line[x] = (line[x] + a) & 255
+            elif kind == 2:
+                line[x] = (line[x] + b) & 255
+            elif kind == 3:
+                line[x] = (line[x] + (a + b) // 2) & 255
+            elif kind == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[x] = (line[x] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(line)
+        prev = line
+    return rows
+
+
+def thin_at(img, x, y):
+    """The id at (x, y) differs from both neighbours across one axis: a
+    feature one pixel thin there."""
+    h, w, v = len(img), len(img[0]), img[y][x]
+    across_x = 0 < x < w - 1 and img[y][x - 1] != v and img[y][x + 1] != v
+    across_y = 0 < y < h - 1 and img[y - 1][x] != v and img[y + 1][x] != v
+    return across_x or across_y
+
+
+def is_sliver(render_ids, trace_ids):
+    """Every mismatching pixel (beyond the one-pixel tolerance) is a feature
+    one pixel thin in one of the images and not empty space: a sub-pixel
+    sliver (a door seen almost edge-on), which the rasteriser includes or
+    drops by its 1/256-pixel vertex snapping while the tracer is exact."""
+    h, w = len(trace_ids), len(trace_ids[0])
+
+    def near(img, x, y, v):
+        return any(img[j][i] == v for j in range(max(0, y - 1), min(h, y + 2))
+                   for i in range(max(0, x - 1), min(w, x + 2)))
+
+    found = False
+    for y in range(h):
+        for x in range(w):
+            r, t = render_ids[y][x], trace_ids[y][x]
+            if near(trace_ids, x, y, r) and near(render_ids, x, y, t):
+                continue  # within the one-pixel edge tolerance
+            found = True
+            if 0 in (r, t) or not (thin_at(trace_ids, x, y) or thin_at(render_ids, x, y)):
+                return False
+    return found
+
+
 def shell(args):
     return " ".join("'" + a + "'" if any(ch in a for ch in " ,()") else a for a in args)
 
@@ -270,7 +347,10 @@ def run_case(binary, seed, number, size, keep, extra):
     p = subprocess.run(compare, capture_output=True, text=True, timeout=600)
     fields = dict(kv.split("=", 1) for kv in p.stdout.split() if "=" in kv)
     mismatches = int(fields.get("id_mismatches", "-1"))
-    result.update(status="pass" if mismatches == 0 else "fail", mismatches=mismatches,
+    status = "pass" if mismatches == 0 else "fail"
+    if status == "fail" and is_sliver(read_grey_png(base + "-r-ids.png"), read_grey_png(base + "-t-ids.png")):
+        status = "sliver"
+    result.update(status=status, mismatches=mismatches,
                   pct=float(fields.get("id_mismatch_pct", "nan")), psnr=fields.get("psnr_db", "?"),
                   commands=[shell(render), shell(trace), shell(compare)])
     if not keep:
@@ -279,7 +359,7 @@ def run_case(binary, seed, number, size, keep, extra):
                 os.remove(base + suffix)
             except OSError:
                 pass
-        if result["status"] == "pass":
+        if result["status"] != "fail" and result["status"] != "error":
             os.remove(layout_path)
             os.rmdir(work)
     return result
@@ -305,7 +385,10 @@ def main():
         for fut in futures:
             res = fut.result()
             results.append(res)
-            if res["status"] != "pass":
+            if res["status"] == "sliver":
+                print("sliver seed %d case %d (%s, %s): %d id mismatches, all on features one pixel thin"
+                      % (res["seed"], res["case"], res["kind"], res["what"], res["mismatches"]))
+            elif res["status"] != "pass":
                 print("FAIL seed %d case %d (%s, %s): %s" % (
                     res["seed"], res["case"], res["kind"], res["what"],
                     res.get("detail") or "%d id mismatches (%.4f %%)" % (res["mismatches"], res["pct"])))
@@ -313,15 +396,17 @@ def main():
                       % (a.binary, res["seed"], res["case"]))
                 for cmd in res["commands"]:
                     print("    " + cmd)
-    failed = [r for r in results if r["status"] != "pass"]
+    failed = [r for r in results if r["status"] in ("fail", "error")]
+    slivers = [r for r in results if r["status"] == "sliver"]
     kinds = {}
     for r in results:
         k = kinds.setdefault(r["kind"], [0, 0])
         k[0] += 1
-        k[1] += r["status"] != "pass"
-    print("diff_fuzz seed %d: %d cases, %d passed, %d failed (%s)" % (
-        a.seed, len(results), len(results) - len(failed), len(failed),
-        ", ".join("%s %d/%d failed" % (k, v[1], v[0]) for k, v in sorted(kinds.items()))))
+        k[1] += r["status"] in ("fail", "error")
+    print("diff_fuzz seed %d: %d cases, %d with 0 mismatches, %d slivers (sub-pixel features, explained), %d failed (%s)"
+          % (a.seed, len(results), len(results) - len(failed) - len(slivers), len(slivers), len(failed),
+             ", ".join("%s %d/%d failed" % (k, v[1], v[0]) for k, v in sorted(kinds.items()))))
+    print("%d passed, %d failed" % (len(results) - len(failed), len(failed)))
     if a.json:
         with open(a.json, "w") as f:
             json.dump(results, f, indent=1)

@@ -14,7 +14,7 @@
 namespace impossible::app {
 namespace {
 
-std::string summary(const layout::Layout& layout, const design::TourResult& t, std::size_t reachable) {
+std::string summary(const layout::Layout& layout, const design::Tour& t, std::size_t reachable) {
     char line[512];
     std::string out;
     std::snprintf(line, sizeof line, "poses: %zu\nteleports: %d\nphysical distance: %.2f m\nvirtual distance: %.2f m\n",

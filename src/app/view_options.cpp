@@ -121,13 +121,7 @@ ViewOptions parse_view_options(const ParsedArgs& args) {
 
 trace::TraceDesc trace_desc_for(const render::FrameDesc& frame, int threads) {
     trace::TraceDesc desc;
-    desc.head = frame.head;
-    desc.room = frame.room;
-    desc.ipd = frame.ipd;
-    desc.fov_y_deg = frame.fov_y_deg;
-    desc.eye_width = frame.eye_width;
-    desc.eye_height = frame.eye_height;
-    desc.max_depth = frame.max_depth;
+    static_cast<scene::View&>(desc) = frame;
     desc.threads = threads;
     return desc;
 }

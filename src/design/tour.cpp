@@ -20,7 +20,7 @@ public:
         if (layout.play_area) area_ = layout::outline(*layout.play_area);
     }
 
-    Result<TourResult> run();
+    Result<Tour> run();
 
 private:
     const layout::Layout& layout_;
@@ -29,7 +29,7 @@ private:
     math::Polygon2 area_;
     std::map<int, std::unique_ptr<RoomGrid>> grids_;
     std::vector<math::dvec3> physical_;  // the walk, as points on the physical floor at head height
-    TourResult result_;
+    Tour result_;
 
     const RoomGrid& grid(int room) {
         auto& g = grids_[room];
@@ -118,7 +118,7 @@ void Planner::visit(int room, glm::dvec2& at) {
     }
 }
 
-Result<TourResult> Planner::run() {
+Result<Tour> Planner::run() {
     const int start = layout_.start.room;
     const glm::dvec3& s = layout_.start.position;
     emit(start, {s.x, o_.grid.head_height, s.z});
@@ -152,7 +152,7 @@ Result<TourResult> Planner::run() {
 
 }  // namespace
 
-void replay(const layout::Layout& layout, TourResult& tour) {
+void replay(const layout::Layout& layout, Tour& tour) {
     tour.visited.clear();
     tour.teleports = 0;
     tour.physical_distance = tour.virtual_distance = 0.0;
@@ -176,7 +176,7 @@ void replay(const layout::Layout& layout, TourResult& tour) {
     }
 }
 
-Result<TourResult> plan_tour(const layout::Layout& layout, const TourOptions& options) {
+Result<Tour> plan_tour(const layout::Layout& layout, const TourOptions& options) {
     return Planner(layout, options).run();
 }
 

@@ -26,7 +26,7 @@ struct TourOptions {
     double door_clearance = 0.35;  // m in front of and behind a door where the crossing starts and ends
 };
 
-struct TourResult {
+struct Tour {
     std::vector<math::HeadPose> poses;  // physical
     std::vector<int> visited;           // rooms the walker was in, in order of first visit
     std::vector<int> missed;            // rooms a door leads to that the tour could not reach
@@ -37,9 +37,9 @@ struct TourResult {
     double closest_edge = std::numeric_limits<double>::infinity();
 };
 
-Result<TourResult> plan_tour(const layout::Layout& layout, const TourOptions& options = {});
+Result<Tour> plan_tour(const layout::Layout& layout, const TourOptions& options = {});
 
 // Replays poses with the walker and fills visited, teleports and distances.
-void replay(const layout::Layout& layout, TourResult& tour);
+void replay(const layout::Layout& layout, Tour& tour);
 
 }  // namespace impossible::design

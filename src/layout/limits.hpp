@@ -49,4 +49,13 @@ inline constexpr std::size_t kMaxModelTriangles = 1'000'000;
 inline constexpr std::size_t kMaxLayoutTriangles = 2'000'000;  // all props together
 inline constexpr std::size_t kMaxNodeDepth = 64;
 
+// Door boxes and the rasteriser's near plane (render/frame.hpp checks these
+// are its own). An eye sits half an IPD beside the head, so before the head
+// crosses a door one eye can be that far behind the door's plane: the box
+// must reach further than that, plus the near distance, or the eye sees out
+// of its back (or through a clipped back face) into its own room.
+inline constexpr double kHalfTypicalIpd = 0.032;      // half of the default IPD, 0.064 m
+inline constexpr double kNearReversedZ = 1e-5;        // the default depth mode
+inline constexpr double kNearStandard = 0.01;         // --depth standard
+
 }  // namespace impossible::layout::limits

@@ -13,6 +13,25 @@ namespace impossible::layout::detail {
 
 namespace {
 
+// A box too shallow for an eye half an IPD behind the door's plane (see
+// limits::kHalfTypicalIpd): a warning, since a larger-headed layout may want it.
+void warn_if_shallow(Checker& check, const Path& at, double depth) {
+    // Suggested depths, rounded up to whole millimetres.
+    const double needed = std::ceil((limits::kHalfTypicalIpd + limits::kNearReversedZ) * 1e3) / 1e3;
+    const double needed_standard = std::ceil((limits::kHalfTypicalIpd + limits::kNearStandard) * 1e3) / 1e3;
+    if (depth < limits::kHalfTypicalIpd + limits::kNearReversedZ) {
+        check.warning(at / "depth", "the box is " + format_number(depth) + " m deep: an eye half an IPD (" +
+                                        format_number(limits::kHalfTypicalIpd) +
+                                        " m) behind the door's plane sees out of its back; make it at least " +
+                                        format_number(needed) + " m");
+    } else if (depth < limits::kHalfTypicalIpd + limits::kNearStandard) {
+        check.warning(at / "depth", "the box is " + format_number(depth) + " m deep: with --depth standard (near plane " +
+                                        format_number(limits::kNearStandard) + " m) an eye half an IPD behind the "
+                                        "door's plane sees through its back; make it at least " +
+                                        format_number(needed_standard) + " m");
+    }
+}
+
 // A non-zero vector, read for normalisation.
 std::optional<glm::dvec3> read_direction(Checker& check, const Path& at, const json& value) {
     const auto v = check.read_vec3(at, value, NumberKind::Direction);
@@ -25,24 +44,54 @@ std::optional<glm::dvec3> read_direction(Checker& check, const Path& at, const j
     return v;
 }
 
-PortalDraft read_portal(Checker& check, const Path& at, const json& value) {
-    PortalDraft draft;
-    draft.path = at;
-    if (!check.expect_object(at, value)) return draft;
-    check.check_fields(at, value,
-                       {"id", "room", "center", "normal", "up", "width", "height", "depth", "target"},
-                       {"id", "room", "center", "normal", "width", "height", "target"});
-    Portal& portal = draft.portal;
-    if (const json* v = field(value, "id")) {
-        if (auto id = check.read_id(at / "id", *v)) {
-            portal.id = std::move(*id);
-            draft.has_id = true;
-        }
+// The unit normal, or nothing (reported).
+std::optional<glm::dvec3> read_normal(Checker& check, const Path& at, const json& value) {
+    std::optional<glm::dvec3> n = read_direction(check, at, value);
+    if (!n) return std::nullopt;
+    const double length = glm::length(*n);
+    if (std::abs(length - 1.0) > limits::kUnitTolerance) {
+        check.error(at, "must be a unit vector (its length is " + format_number(length) + "; allowed is 1 ± " +
+                            format_number(limits::kUnitTolerance) + ")");
+        return std::nullopt;
     }
-    if (const json* v = field(value, "room")) draft.room_id = check.read_string(at / "room", *v);
-    if (const json* v = field(value, "target")) draft.target_id = check.read_string(at / "target", *v);
+    return *n / length;
+}
 
-    math::PortalRect& rect = portal.rect;
+// `up` (default [0, 1, 0]) made orthogonal to the unit normal `n`; false when
+// it is bad or within 1° of the normal's line (reported). Without a good
+// normal, only `up` itself is checked.
+bool read_up(Checker& check, const Path& at, const json& value, const std::optional<glm::dvec3>& normal,
+             math::PortalRect& rect) {
+    glm::dvec3 up(0.0, 1.0, 0.0);
+    const json* up_value = field(value, "up");
+    // Without an "up", the problem is the normal (a floor or ceiling portal).
+    const Path up_at = up_value ? at / "up" : at / "normal";
+    if (up_value) {
+        const auto u = read_direction(check, up_at, *up_value);
+        if (!u) return false;
+        up = *u;
+    }
+    if (!normal) return false;
+    const glm::dvec3& n = *normal;
+    // The angle between the line of `up` and the normal must exceed 1°.
+    const glm::dvec3 u = glm::normalize(up);
+    const double cosine = std::min(1.0, std::abs(glm::dot(u, n)));
+    const double angle = std::acos(cosine) * 180.0 / math::kPi;
+    if (!(angle > limits::kMinUpAngleDeg)) {
+        const std::string angles = "(the angle between them is " + format_number(angle) + "°; it must exceed " +
+                                   format_number(limits::kMinUpAngleDeg) + "°)";
+        check.error(up_at, up_value ? "must not be parallel to the normal " + angles
+                                    : "is parallel to the default up [0, 1, 0] " + angles +
+                                          "; give the portal an \"up\"");
+        return false;
+    }
+    rect.normal = n;
+    rect.up = glm::normalize(u - glm::dot(u, n) * n);
+    return true;
+}
+
+// centre, size, depth, normal and up; false if any is missing or bad (reported).
+bool read_rect(Checker& check, const Path& at, const json& value, math::PortalRect& rect) {
     bool ok = true;
     const auto take = [&ok](auto&& optional, auto& out) {
         if (optional) {
@@ -61,56 +110,32 @@ PortalDraft read_portal(Checker& check, const Path& at, const json& value) {
     if (height) take(check.read_number(at / "height", *height, NumberKind::Length), rect.height);
     rect.depth = 0.25;
     if (const json* v = field(value, "depth")) {
-        take(check.read_number(at / "depth", *v, NumberKind::Length), rect.depth);
+        const std::optional<double> depth = check.read_number(at / "depth", *v, NumberKind::Length);
+        if (depth) warn_if_shallow(check, at, *depth);
+        take(depth, rect.depth);
     }
-    std::optional<glm::dvec3> n;
-    if (normal) {
-        n = read_direction(check, at / "normal", *normal);
-        if (n) {
-            const double length = glm::length(*n);
-            if (std::abs(length - 1.0) > limits::kUnitTolerance) {
-                check.error(at / "normal", "must be a unit vector (its length is " +
-                                               format_number(length) + "; allowed is 1 ± " +
-                                               format_number(limits::kUnitTolerance) + ")");
-                n.reset();
-            } else {
-                n = *n / length;
-            }
-        }
-        if (!n) ok = false;
-    }
-    glm::dvec3 up(0.0, 1.0, 0.0);
-    bool up_ok = true;
-    const json* up_value = field(value, "up");
-    // Without an "up", the problem is the normal (a floor or ceiling portal).
-    const Path up_at = up_value ? at / "up" : at / "normal";
-    if (up_value) {
-        if (const auto u = read_direction(check, up_at, *up_value)) {
-            up = *u;
-        } else {
-            up_ok = false;
+    const std::optional<glm::dvec3> n = normal ? read_normal(check, at / "normal", *normal) : std::nullopt;
+    const bool up_ok = read_up(check, at, value, n, rect);
+    return ok && n && up_ok;
+}
+
+PortalDraft read_portal(Checker& check, const Path& at, const json& value) {
+    PortalDraft draft;
+    draft.path = at;
+    if (!check.expect_object(at, value)) return draft;
+    check.check_fields(at, value,
+                       {"id", "room", "center", "normal", "up", "width", "height", "depth", "target"},
+                       {"id", "room", "center", "normal", "width", "height", "target"});
+    Portal& portal = draft.portal;
+    if (const json* v = field(value, "id")) {
+        if (auto id = check.read_id(at / "id", *v)) {
+            portal.id = std::move(*id);
+            draft.has_id = true;
         }
     }
-    if (n && up_ok) {
-        // The angle between the line of `up` and the normal must exceed 1°.
-        const glm::dvec3 u = glm::normalize(up);
-        const double cosine = std::min(1.0, std::abs(glm::dot(u, *n)));
-        const double angle = std::acos(cosine) * 180.0 / math::kPi;
-        if (!(angle > limits::kMinUpAngleDeg)) {
-            const std::string angles = "(the angle between them is " + format_number(angle) +
-                                       "°; it must exceed " +
-                                       format_number(limits::kMinUpAngleDeg) + "°)";
-            check.error(up_at, up_value ? "must not be parallel to the normal " + angles
-                                        : "is parallel to the default up [0, 1, 0] " + angles +
-                                              "; give the portal an \"up\"");
-            up_ok = false;
-        } else {
-            rect.normal = *n;
-            rect.up = glm::normalize(u - glm::dot(u, *n) * *n);
-        }
-    }
-    ok = ok && up_ok;
-    draft.rect_ok = ok;
+    if (const json* v = field(value, "room")) draft.room_id = check.read_string(at / "room", *v);
+    if (const json* v = field(value, "target")) draft.target_id = check.read_string(at / "target", *v);
+    draft.rect_ok = read_rect(check, at, value, portal.rect);
     return draft;
 }
 

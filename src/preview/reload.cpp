@@ -22,14 +22,14 @@ LayoutWatcher watch_layout(const std::string& path) {
     return w;
 }
 
-ReloadResult poll_layout(LayoutWatcher& w) {
-    ReloadResult out;
+ReloadPoll poll_layout(LayoutWatcher& w) {
+    ReloadPoll out;
     std::filesystem::file_time_type mtime;
     std::uintmax_t size = 0;
     if (!stat_file(w.path, mtime, size)) {
         if (!w.seen) return out;  // still missing: reported once already
         w.seen = false;
-        out.kind = ReloadResult::Failed;
+        out.kind = ReloadPoll::Failed;
         out.errors.push_back(w.path + ": cannot read the layout file");
         return out;
     }
@@ -39,11 +39,11 @@ ReloadResult poll_layout(LayoutWatcher& w) {
     w.size = size;
     layout::LoadResult loaded = layout::load_layout_file(w.path);
     if (!loaded.errors.empty()) {
-        out.kind = ReloadResult::Failed;
+        out.kind = ReloadPoll::Failed;
         for (const layout::Diagnostic& d : loaded.errors) out.errors.push_back(d.str());
         return out;
     }
-    out.kind = ReloadResult::Reloaded;
+    out.kind = ReloadPoll::Reloaded;
     out.layout = std::move(loaded.layout);
     return out;
 }

@@ -20,7 +20,8 @@ struct LayoutWatcher {
     bool seen = false;  // mtime/size hold the file's last known state
 };
 
-struct ReloadResult {
+// What one poll of the watched file found.
+struct ReloadPoll {
     enum Kind { Unchanged, Reloaded, Failed } kind = Unchanged;
     std::optional<layout::Layout> layout;  // when Reloaded
     std::vector<std::string> errors;       // when Failed: one line each
@@ -30,6 +31,6 @@ struct ReloadResult {
 LayoutWatcher watch_layout(const std::string& path);
 
 // Checks the file; loads it when it changed since the last poll.
-ReloadResult poll_layout(LayoutWatcher& watcher);
+ReloadPoll poll_layout(LayoutWatcher& watcher);
 
 }  // namespace impossible::preview

@@ -43,9 +43,9 @@ namespace {
 std::unique_ptr<PreviewWindow> open_preview_window(const PreviewOptions& o, const std::string& title) {
     const render::FrameDesc& f = o.frame;
     const int width = o.view == PreviewView::Anaglyph ? f.eye_width : 2 * f.eye_width;
-    WindowResult opened = open_window(width, f.eye_height, title, o.vsync && !o.screenshots);
-    if (!opened.window) throw InputError(opened.error);
-    return std::move(opened.window);
+    Result<std::unique_ptr<PreviewWindow>> opened = open_window(width, f.eye_height, title, o.vsync && !o.screenshots);
+    if (!opened) throw InputError(opened.error());
+    return std::move(*opened);
 }
 
 }  // namespace
@@ -83,9 +83,9 @@ void open_session(PreviewSession& s, PreviewOptions options) {
 void poll_reload(PreviewSession& s, Clock::time_point now) {
     if (!s.watcher || std::chrono::duration<double>(now - s.clock.last_poll).count() < kReloadPollSeconds) return;
     s.clock.last_poll = now;
-    ReloadResult r = poll_layout(*s.watcher);
-    if (r.kind == ReloadResult::Failed) s.reload_errors = r.errors;
-    if (r.kind != ReloadResult::Reloaded) return;
+    ReloadPoll r = poll_layout(*s.watcher);
+    if (r.kind == ReloadPoll::Failed) s.reload_errors = r.errors;
+    if (r.kind != ReloadPoll::Reloaded) return;
     const scene::Walker& walker = *s.shown.walker;
     const std::string room_id = s.shown.layout->rooms[walker.room()].id;
     const bool walking = walker.started();

@@ -77,18 +77,16 @@ PreviewWindow::~PreviewWindow() {
     glfwTerminate();
 }
 
-WindowResult open_window(int width, int height, const std::string& title, bool vsync) {
-    WindowResult out;
+Result<std::unique_ptr<PreviewWindow>> open_window(int width, int height, const std::string& title, bool vsync) {
     const char* display = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     if ((!display || !*display) && (!wayland || !*wayland)) {
-        out.error = "no display: DISPLAY is not set (run it in a desktop session, or under 'xvfb-run -a')";
-        return out;
+        return Error{"no display: DISPLAY is not set (run it in a desktop session, or under 'xvfb-run -a')"};
     }
     if (!glfwInit()) {
-        out.error = "no display: " + glfw_error();
+        const std::string why = glfw_error();
         glfwTerminate();
-        return out;
+        return Error{"no display: " + why};
     }
     auto made = std::make_unique<PreviewWindow>();  // from here on, its destructor ends GLFW
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
@@ -100,14 +98,12 @@ WindowResult open_window(int width, int height, const std::string& title, bool v
     glfwWindowHint(GLFW_STENCIL_BITS, 0);
     made->window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
     if (!made->window) {
-        out.error = "no OpenGL 4.5 core window: " + glfw_error();
-        return out;
+        return Error{"no OpenGL 4.5 core window: " + glfw_error()};
     }
     glfwMakeContextCurrent(made->window);
     const int version = gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress));
     if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < 45) {
-        out.error = "the window's OpenGL context lacks 4.5 core functions";
-        return out;
+        return Error{"the window's OpenGL context lacks 4.5 core functions"};
     }
     made->gl_renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     made->gl_version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
@@ -116,8 +112,7 @@ WindowResult open_window(int width, int height, const std::string& title, bool v
     glfwSetKeyCallback(made->window, on_key);
     glfwSetCursorPosCallback(made->window, on_cursor);
     glfwSetMouseButtonCallback(made->window, on_button);
-    out.window = std::move(made);
-    return out;
+    return made;
 }
 
 void capture_cursor(PreviewWindow& w, bool capture) {

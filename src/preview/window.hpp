@@ -5,9 +5,11 @@
 #pragma once
 
 #include <memory>
+
 #include <string>
 #include <vector>
 
+#include "base/result.hpp"
 #include "preview/actions.hpp"
 
 struct GLFWwindow;
@@ -33,14 +35,9 @@ struct PreviewWindow {
     ~PreviewWindow();  // destroys the window and ends GLFW
 };
 
-struct WindowResult {
-    std::unique_ptr<PreviewWindow> window;
-    std::string error;  // one line: no display, no 4.5 core context, ...
-};
-
 // Opens a visible, resizable window of width × height with a current 4.5 core
-// context. Fails with a clear message when there is no display.
-WindowResult open_window(int width, int height, const std::string& title, bool vsync);
+// context. Fails with one clear line: no display, no 4.5 core context, ...
+Result<std::unique_ptr<PreviewWindow>> open_window(int width, int height, const std::string& title, bool vsync);
 
 // Captures (hides and locks) the cursor for mouse look, or releases it.
 void capture_cursor(PreviewWindow& window, bool capture);

@@ -6,7 +6,9 @@
 #include <vector>
 
 #include "image/image.hpp"
+#include "layout/limits.hpp"
 #include "math/pose.hpp"
+#include "scene/view.hpp"
 
 namespace impossible::render {
 
@@ -29,22 +31,26 @@ enum class DepthMode {
     Standard,   // DEPTH24, classic -1..1 projection with a far plane at FrameDesc::far
 };
 
+// The near plane. Under reversed-Z float depth (depth = near / distance) the
+// smallest resolvable separation at a distance z is about z · 2^-24 whatever
+// the near distance, so the near plane can sit 10 µm from the eye: an eye
+// 0.1 mm from a wall, a prop or a door box's back face still sees it, as the
+// tracer does (docs/accuracy.md has the figures). 24-bit standard depth
+// resolves z² / (near · 2^24): its near plane stays at 1 cm, and it cannot
+// show a surface closer than that to an eye.
+inline constexpr double kNearReversedZ = layout::limits::kNearReversedZ;  // 10 µm
+inline constexpr double kNearStandard = layout::limits::kNearStandard;    // 1 cm
+
 // The default budget of portal passes per frame (--max-portal-passes).
 inline constexpr int kDefaultMaxPortalPasses = 10'000;
 
-struct FrameDesc {
-    math::HeadPose head;
-    int room = 0;              // index of the room the head is in
-    double ipd = 0.064;
-    double fov_y_deg = 90.0;
-    double near = 0.01;
-    double far = 2e5;          // only for DepthMode::Standard: beyond any valid layout
-    int eye_width = 1280;
-    int eye_height = 720;
-    int max_depth = 8;         // portals one line of sight may pass
+// The view (scene/view.hpp) and how the rasteriser draws it.
+struct FrameDesc : scene::View {
     // Portal passes one frame may draw; past it, portals show the fill colour
     // (FrameStats::budget_fills). Only a frame that needs more changes.
     int max_portal_passes = kDefaultMaxPortalPasses;
+    double near = 0.0;         // 0: the depth mode's own (kNearReversedZ, kNearStandard)
+    double far = 2e5;          // only for DepthMode::Standard: beyond any valid layout
     StereoMode stereo = StereoMode::ClipShift;
     ClipMode clip = ClipMode::ClipDistance;
     DepthMode depth = DepthMode::ReversedZ;
@@ -67,6 +73,11 @@ struct FrameDesc {
     // time, so time frames with this off. Off: no queries, no extra work.
     bool profile = false;
 };
+
+inline double near_distance(const FrameDesc& frame) {
+    if (frame.near > 0.0) return frame.near;
+    return frame.depth == DepthMode::ReversedZ ? kNearReversedZ : kNearStandard;
+}
 
 struct FrameStats {
     long draw_calls = 0;

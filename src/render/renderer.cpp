@@ -71,7 +71,7 @@ math::dmat4 projection_of(const FrameDesc& frame) {
     math::Frustum frustum;
     frustum.fov_y_deg = frame.fov_y_deg;
     frustum.aspect = static_cast<double>(frame.eye_width) / frame.eye_height;
-    frustum.near = frame.near;
+    frustum.near = near_distance(frame);
     return frame.depth == DepthMode::ReversedZ ? math::perspective_reversed_z(frustum)
                                                : math::perspective_standard(frustum, frame.far);
 }

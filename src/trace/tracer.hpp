@@ -11,6 +11,7 @@
 #include "layout/layout.hpp"
 #include "image/image.hpp"
 #include "math/pose.hpp"
+#include "scene/view.hpp"
 #include "trace/trace_scene.hpp"
 
 namespace impossible::trace {
@@ -37,14 +38,8 @@ struct TraceHit {
 // valid room index.
 TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, int room, int max_depth);
 
-struct TraceDesc {
-    math::HeadPose head;
-    int room = 0;  // the room the head is in
-    double ipd = 0.064;
-    double fov_y_deg = 90.0;
-    int eye_width = 1280;
-    int eye_height = 720;
-    int max_depth = 8;
+// The view (scene/view.hpp) and how the tracer computes it.
+struct TraceDesc : scene::View {
     int threads = 0;  // 0: std::thread::hardware_concurrency()
 };
 

@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "app/view_options.hpp"
+#include "common/depth_precision.hpp"
 #include "gl_fixture.hpp"
 #include "math/oblique_projection.hpp"
 #include "math/projection.hpp"
@@ -96,23 +97,6 @@ TEST(HardCases, GrazingAndEdgeOnViews) {
               0.01);
 }
 
-// The smallest separation along the view axis, at distance z, that a depth
-// buffer can still resolve: one step of its depth format over the slope of
-// window depth with distance (both at z). `clip` maps eye space to clip space.
-double resolvable_separation(const math::dmat4& clip, double z, bool float_depth, bool zero_to_one) {
-    auto window_depth = [&](double dist) {
-        const math::dvec4 c = clip * math::dvec4(0, 0, -dist, 1);
-        const double ndc = c.z / c.w;
-        return zero_to_one ? ndc : 0.5 * ndc + 0.5;
-    };
-    const double h = z * 1e-6;
-    const double slope = std::abs(window_depth(z + h) - window_depth(z - h)) / (2 * h);
-    const double depth = window_depth(z);
-    const double step = float_depth ? std::nextafter(static_cast<float>(depth), 2.0f) - static_cast<float>(depth)
-                                    : 1.0 / 16777215.0;
-    return step / slope;
-}
-
 TEST(HardCases, TenKilometresFromTheOriginPortalAKilometreAway) {
     const layout::Layout l = testing::layout_from_file(hard("far_away.json"));
     struct Mode {
@@ -152,12 +136,12 @@ TEST(HardCases, TenKilometresFromTheOriginPortalAKilometreAway) {
         double sep;
     };
     const Row rows[] = {
-        {"reversed-Z, clip plane", resolvable_separation(rev, 1230, true, true)},
-        {"reversed-Z, oblique, square door", resolvable_separation(math::oblique_reversed_z(rev, square), 1230, true, true)},
-        {"reversed-Z, oblique, grazing door", resolvable_separation(math::oblique_reversed_z(rev, grazing), 1230, true, true)},
-        {"standard, clip plane", resolvable_separation(std, 1230, false, false)},
-        {"standard, oblique, square door", resolvable_separation(math::oblique_standard(std, square), 1230, false, false)},
-        {"standard, oblique, grazing door", resolvable_separation(math::oblique_standard(std, grazing), 1230, false, false)},
+        {"reversed-Z, clip plane", testing::resolvable_separation(rev, 1230, true, true)},
+        {"reversed-Z, oblique, square door", testing::resolvable_separation(math::oblique_reversed_z(rev, square), 1230, true, true)},
+        {"reversed-Z, oblique, grazing door", testing::resolvable_separation(math::oblique_reversed_z(rev, grazing), 1230, true, true)},
+        {"standard, clip plane", testing::resolvable_separation(std, 1230, false, false)},
+        {"standard, oblique, square door", testing::resolvable_separation(math::oblique_standard(std, square), 1230, false, false)},
+        {"standard, oblique, grazing door", testing::resolvable_separation(math::oblique_standard(std, grazing), 1230, false, false)},
     };
     for (const Row& r : rows) std::printf("  resolvable depth separation at 1230 m, %-34s %.3g m\n", r.name, r.sep);
     EXPECT_LT(rows[0].sep, 1e-3);

@@ -116,6 +116,51 @@ std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
 
 constexpr int kEyeW = 160, kEyeH = 120;
 
+// Frame `i` of a scripted preview (its record and PNGs under `shots`)
+// against `render` at the frame's virtual pose and room.
+void expect_frame_matches_render(const nlohmann::json& f, size_t i, const fs::path& layout, const fs::path& shots,
+                                 const fs::path& dir) {
+    std::string pose;
+    for (int k = 0; k < 6; ++k) pose += (k ? "," : "") + f["pose"][k].dump();
+    // OSMesa is llvmpipe everywhere, like GLX under Xvfb, even where EGL finds a GPU.
+    const ProgramRun r = run_program("", "render --backend osmesa " + q(layout) + " --pose=" + pose + " --room " +
+                                             f["room"].get<std::string>() + " --size " + std::to_string(kEyeW) + "x" +
+                                             std::to_string(kEyeH) + " --out " + q(dir / "r.png") + " --ids " +
+                                             q(dir / "r-ids.png"),
+                                     dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    char name[32];
+    std::snprintf(name, sizeof name, "frame-%04zu", i);
+    const image::PngImage colour = testing::read_png_ok((shots / (std::string(name) + ".png")).string());
+    const image::PngImage ids = testing::read_png_ok((shots / (std::string(name) + "-ids.png")).string());
+    const image::PngImage ref_colour = testing::read_png_ok((dir / "r.png").string());
+    const image::PngImage ref_ids = testing::read_png_ok((dir / "r-ids.png").string());
+    ASSERT_EQ(colour.width, 2 * kEyeW);
+    ASSERT_EQ(colour.height, kEyeH);
+    ASSERT_EQ(ids.width, ref_ids.width);
+    ASSERT_EQ(colour.pixels.size(), ref_colour.pixels.size());
+
+    // The centres of both eyes: the same cell and the same colour.
+    for (int eye = 0; eye < 2; ++eye) {
+        const size_t p = static_cast<size_t>(kEyeH / 2) * (2 * kEyeW) + eye * kEyeW + kEyeW / 2;
+        EXPECT_EQ(ids.pixels[p], ref_ids.pixels[p]) << "eye " << eye;
+        EXPECT_NE(ids.pixels[p], 0) << "eye " << eye;
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(colour.pixels[p * 3 + c], ref_colour.pixels[p * 3 + c]);
+    }
+    // And the whole image: the same renderer on the same driver (llvmpipe).
+    int id_diffs = 0, colour_diffs = 0;
+    for (size_t p = 0; p < ids.pixels.size(); ++p) {
+        id_diffs += ids.pixels[p] != ref_ids.pixels[p];
+        for (int c = 0; c < 3; ++c)
+            if (std::abs(int(colour.pixels[p * 3 + c]) - int(ref_colour.pixels[p * 3 + c])) > 2) {
+                ++colour_diffs;
+                break;
+            }
+    }
+    EXPECT_LE(id_diffs, 0);
+    EXPECT_LE(colour_diffs, 0);
+}
+
 TEST_F(Preview, ScriptedWalkThroughAPortalMatchesRenderAndWalk) {
     const Xvfb x;
     ASSERT_FALSE(x.display.empty()) << x.error;
@@ -156,46 +201,7 @@ TEST_F(Preview, ScriptedWalkThroughAPortalMatchesRenderAndWalk) {
     // Every frame against `render` at the frame's virtual pose and room.
     for (size_t i = 0; i < frames.size(); ++i) {
         SCOPED_TRACE("frame " + std::to_string(i));
-        const nlohmann::json& f = frames[i];
-        std::string pose;
-        for (int k = 0; k < 6; ++k) pose += (k ? "," : "") + f["pose"][k].dump();
-        // OSMesa is llvmpipe everywhere, like GLX under Xvfb, even where EGL finds a GPU.
-        const ProgramRun r = run_program("", "render --backend osmesa " + q(layout) + " --pose=" + pose + " --room " +
-                                           f["room"].get<std::string>() + " --size " + std::to_string(kEyeW) + "x" +
-                                           std::to_string(kEyeH) + " --out " + q(dir_ / "r.png") + " --ids " +
-                                           q(dir_ / "r-ids.png"),
-                                  dir_);
-        ASSERT_EQ(r.status, 0) << r.err;
-        char name[32];
-        std::snprintf(name, sizeof name, "frame-%04zu", i);
-        const image::PngImage colour = testing::read_png_ok((shots / (std::string(name) + ".png")).string());
-        const image::PngImage ids = testing::read_png_ok((shots / (std::string(name) + "-ids.png")).string());
-        const image::PngImage ref_colour = testing::read_png_ok((dir_ / "r.png").string());
-        const image::PngImage ref_ids = testing::read_png_ok((dir_ / "r-ids.png").string());
-                ASSERT_EQ(colour.width, 2 * kEyeW);
-        ASSERT_EQ(colour.height, kEyeH);
-        ASSERT_EQ(ids.width, ref_ids.width);
-        ASSERT_EQ(colour.pixels.size(), ref_colour.pixels.size());
-
-        // The centres of both eyes: the same cell and the same colour.
-        for (int eye = 0; eye < 2; ++eye) {
-            const size_t p = static_cast<size_t>(kEyeH / 2) * (2 * kEyeW) + eye * kEyeW + kEyeW / 2;
-            EXPECT_EQ(ids.pixels[p], ref_ids.pixels[p]) << "eye " << eye;
-            EXPECT_NE(ids.pixels[p], 0) << "eye " << eye;
-            for (int c = 0; c < 3; ++c) EXPECT_EQ(colour.pixels[p * 3 + c], ref_colour.pixels[p * 3 + c]);
-        }
-        // And the whole image: the same renderer on the same driver (llvmpipe).
-        int id_diffs = 0, colour_diffs = 0;
-        for (size_t p = 0; p < ids.pixels.size(); ++p) {
-            id_diffs += ids.pixels[p] != ref_ids.pixels[p];
-            for (int c = 0; c < 3; ++c)
-                if (std::abs(int(colour.pixels[p * 3 + c]) - int(ref_colour.pixels[p * 3 + c])) > 2) {
-                    ++colour_diffs;
-                    break;
-                }
-        }
-        EXPECT_LE(id_diffs, 0);
-        EXPECT_LE(colour_diffs, 0);
+        expect_frame_matches_render(frames[i], i, layout, shots, dir_);
     }
     // The last frame looks into the gallery (room 2) through both eyes.
     const image::PngImage last = testing::read_png_ok((shots / "frame-0006-ids.png").string());

@@ -145,5 +145,26 @@ TEST(LayoutPortals, CoincidentPortalsInOverlappingRoomsStandFree) {
     EXPECT_EQ(r.layout->portals[1].target, 0);
 }
 
+TEST(LayoutPortals, AShallowBoxIsAWarningWithTheDepthToUse) {
+    // Half an IPD behind the plane an eye must still be inside the box.
+    const std::string text = replace_once(two_rooms(), "\"depth\": 0.25", "\"depth\": 0.02");
+    const LoadResult r = load(text);
+    EXPECT_TRUE(r.layout.has_value()) << all_messages(r.errors);
+    ASSERT_EQ(r.warnings.size(), 1u);
+    const Pos want = position_of(text, "0.02,");
+    EXPECT_EQ(r.warnings[0].line, want.line);
+    EXPECT_EQ(r.warnings[0].column, want.column);
+    EXPECT_EQ(r.warnings[0].message,
+              "portals[0].depth: the box is 0.02 m deep: an eye half an IPD (0.032 m) behind the door's plane sees "
+              "out of its back; make it at least 0.033 m");
+    // Deep enough for the default depth mode, not for 24-bit standard depth.
+    const LoadResult s = load(replace_once(two_rooms(), "\"depth\": 0.25", "\"depth\": 0.04"));
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_NE(s.warnings[0].message.find("with --depth standard (near plane 0.01 m)"), std::string::npos)
+        << s.warnings[0].message;
+    EXPECT_NE(s.warnings[0].message.find("at least 0.042 m"), std::string::npos);
+    EXPECT_TRUE(load(two_rooms()).warnings.empty());
+}
+
 }  // namespace
 }  // namespace layout_test

@@ -128,29 +128,29 @@ TEST(PreviewReload, ReloadsGoodEditsAndReportsBadOnes) {
     const fs::path file = dir / "l.json";
     std::ofstream(file) << kLayout;
     LayoutWatcher w = watch_layout(file.string());
-    EXPECT_EQ(poll_layout(w).kind, ReloadResult::Unchanged);
+    EXPECT_EQ(poll_layout(w).kind, ReloadPoll::Unchanged);
 
     std::string text = kLayout;
     text.replace(text.find("[1, 3, 1]"), 9, "[2, 3, 1]");
     std::ofstream(file) << text;
     fs::last_write_time(file, fs::last_write_time(file) + std::chrono::seconds(1));
-    ReloadResult r = poll_layout(w);
-    ASSERT_EQ(r.kind, ReloadResult::Reloaded);
+    ReloadPoll r = poll_layout(w);
+    ASSERT_EQ(r.kind, ReloadPoll::Reloaded);
     EXPECT_EQ(r.layout->rooms[0].max.x, 2.0);
-    EXPECT_EQ(poll_layout(w).kind, ReloadResult::Unchanged);
+    EXPECT_EQ(poll_layout(w).kind, ReloadPoll::Unchanged);
 
     std::ofstream(file) << R"({ "format": "impossible-layout", "version": 2 })";
     fs::last_write_time(file, fs::last_write_time(file) + std::chrono::seconds(2));
     r = poll_layout(w);
-    ASSERT_EQ(r.kind, ReloadResult::Failed);
+    ASSERT_EQ(r.kind, ReloadPoll::Failed);
     EXPECT_FALSE(r.errors.empty());
     EXPECT_NE(r.errors[0].find("l.json"), std::string::npos) << r.errors[0];
 
     fs::remove(file);
-    EXPECT_EQ(poll_layout(w).kind, ReloadResult::Failed);   // reported once
-    EXPECT_EQ(poll_layout(w).kind, ReloadResult::Unchanged);
+    EXPECT_EQ(poll_layout(w).kind, ReloadPoll::Failed);   // reported once
+    EXPECT_EQ(poll_layout(w).kind, ReloadPoll::Unchanged);
     std::ofstream(file) << kLayout;
-    EXPECT_EQ(poll_layout(w).kind, ReloadResult::Reloaded);  // back
+    EXPECT_EQ(poll_layout(w).kind, ReloadPoll::Reloaded);  // back
 }
 
 }  // namespace
