@@ -9,6 +9,7 @@
 
 #include "app/cli_args.hpp"
 #include "app/commands.hpp"
+#include "app/output_files.hpp"
 #include "image/png.hpp"
 #include "image/compare.hpp"
 
@@ -32,6 +33,8 @@ const char* kHelp =
     "                              green, id mismatches in red\n"
     "  --max-mismatch PERCENT      exit 1 when id_mismatch_pct exceeds it (needs the id maps)\n"
     "  --min-psnr DB               exit 1 when psnr_db is below it\n"
+    "The PNGs are checked (CRCs, truncation, at most 2 x 8192 x 8192 pixels); id maps must be 8-bit\n"
+    "grey. --diff must not name an input.\n"
     "Exit status: 0 alike within the limits, 1 past a limit or for unreadable or different-sized\n"
     "images, 2 for a usage error.\n";
 
@@ -53,7 +56,10 @@ std::vector<std::uint8_t> read_ids(const std::string& path, int width, int heigh
     Result<image::PngImage> read = image::read_png(path);
     if (!read) throw InputError(read.error());
     image::PngImage& png = *read;
-    if (png.channels != 1) throw InputError(path + ": a cell-id map must be an 8-bit greyscale PNG");
+    // A 16-bit map would decode to its high bytes (all 0 for small ids).
+    if (png.channels != 1 || png.bit_depth != 8)
+        throw InputError(path + ": a cell-id map must be an 8-bit greyscale PNG (this one is " +
+                         std::to_string(png.bit_depth) + "-bit" + (png.channels == 1 ? "" : " colour") + ")");
     if (png.width != width || png.height != height)
         throw InputError(path + ": the id map is " + std::to_string(png.width) + "x" + std::to_string(png.height) +
                          ", its colour image " + std::to_string(width) + "x" + std::to_string(height));
@@ -80,6 +86,13 @@ int run_compare_command(const Args& args, std::ostream& out, std::ostream& err) 
             throw InputError("--max-mismatch: " + *v + " is not a percentage in 0..100");
     }
     if (auto v = parsed.value("--min-psnr")) min_psnr = parse_number("--min-psnr", *v);
+    CommandOutputs outputs;
+    outputs.input("image A", parsed.positional[0]);
+    outputs.input("image B", parsed.positional[1]);
+    if (ids_a) outputs.input("--ids-a", *ids_a);
+    if (ids_b) outputs.input("--ids-b", *ids_b);
+    const std::optional<std::string> diff = parsed.value("--diff");
+    if (diff) outputs.output("--diff", *diff);
 
     image::Image a, b;
     a.rgb = read_colour(parsed.positional[0], a.width, a.height);
@@ -95,10 +108,13 @@ int run_compare_command(const Args& args, std::ostream& out, std::ostream& err) 
     if (auto why = image::incomparable(a, b)) throw InputError(*why);
 
     const image::Comparison c = image::compare_pictures(a, b);
+    if (diff) {
+        Result<std::string> png = image::encode_png(a.width, a.height, 3, image::diff_picture(a, b));
+        if (!png) throw InputError(*diff + ": " + png.error());
+        outputs.set(*diff, std::move(*png));
+        outputs.commit();
+    }
     out << image::summary_line(c) << "\n";
-    if (auto path = parsed.value("--diff"))
-        if (Result<void> written = image::write_png(*path, a.width, a.height, 3, image::diff_picture(a, b)); !written)
-            throw InputError(written.error());
     if (max_mismatch && c.id_mismatch_percent > *max_mismatch) {
         err << "impossible compare: " << c.id_mismatch_percent
             << "% of the pixels have mismatched ids, more than --max-mismatch " << *max_mismatch << "%\n";

@@ -1,15 +1,14 @@
 // impossible generate --play-area WxD | --play-area-file POLY.json --rooms N
 // --seed S [--max-overlap P] [--out FILE.json]: a random valid layout
 // (design/generate.hpp); standard output without --out.
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "app/cli_args.hpp"
 #include "app/commands.hpp"
-#include "app/text_file.hpp"
+#include "app/output_files.hpp"
+#include "base/file_io.hpp"
 #include "design/generate.hpp"
 
 namespace impossible::app {
@@ -25,13 +24,14 @@ math::Polygon2 parse_floor(const std::string& text) {
     return math::rectangle({-w / 2, -d / 2}, {w / 2, d / 2});
 }
 
+// A play-area file is a list of corners: a few kilobytes at most.
+constexpr std::size_t kMaxFloorFileBytes = 4u << 20;
+
 // A JSON file holding [[x, z], ...], {"polygon": [...]} or {"play_area": {"polygon": [...]}}.
 math::Polygon2 read_floor_file(const std::string& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw InputError(file + ": cannot open the play area file");
-    std::stringstream text;
-    text << in.rdbuf();
-    const nlohmann::json j = nlohmann::json::parse(text.str(), nullptr, false);
+    const Result<std::vector<unsigned char>> bytes = read_file_bytes(file, kMaxFloorFileBytes, false);
+    if (!bytes) throw InputError(file + ": " + bytes.error());
+    const nlohmann::json j = nlohmann::json::parse(bytes->begin(), bytes->end(), nullptr, false);
     if (j.is_discarded()) throw InputError(file + ": not valid JSON");
     const nlohmann::json* list = &j;
     if (j.is_object() && j.contains("play_area")) list = &j["play_area"];
@@ -67,6 +67,9 @@ int run_generate_command(const Args& args, std::ostream& out, std::ostream& err)
     if (!area == !area_file) throw UsageError("generate needs one of --play-area WxD or --play-area-file FILE");
     if (!parsed.value("--rooms")) throw UsageError("generate needs --rooms N");
     if (!parsed.value("--seed")) throw UsageError("generate needs --seed S");
+    CommandOutputs outputs;
+    if (area_file) outputs.input("--play-area-file", *area_file);
+    if (const auto file = parsed.value("--out")) outputs.output("--out", *file);
     design::GenerateOptions o;
     o.rectangle = area.has_value();
     o.play_area = area ? parse_floor(*area) : read_floor_file(*area_file);
@@ -79,7 +82,8 @@ int run_generate_command(const Args& args, std::ostream& out, std::ostream& err)
     auto text = design::generate_layout(o);
     if (!text) throw InputError(text.error());
     if (const auto file = parsed.value("--out")) {
-        if (const std::string e = write_text_file(*file, *text); !e.empty()) throw InputError(e);
+        outputs.set(*file, *text);
+        outputs.commit();
         err << "generate: wrote " << o.rooms << " rooms to " << *file << "\n";
     } else {
         out << *text;

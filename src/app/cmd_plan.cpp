@@ -6,7 +6,7 @@
 #include "app/commands.hpp"
 #include "app/layout_source.hpp"
 #include "image/png.hpp"
-#include "app/text_file.hpp"
+#include "app/output_files.hpp"
 #include "layout/path_file.hpp"
 #include "design/plan.hpp"
 
@@ -33,6 +33,11 @@ int run_plan_command(const Args& args, std::ostream& out, std::ostream& err) {
     const std::optional<std::string> out_file = parsed.value("--out");
     if (!out_file) throw UsageError("plan needs --out FILE.svg");
     const int max_size = parsed.value("--max-size") ? parse_int("--max-size", *parsed.value("--max-size"), 64, 8192) : 1200;
+    CommandOutputs outputs;
+    outputs.input("the layout", parsed.positional[0]);
+    if (const auto file = parsed.value("--path")) outputs.input("--path", *file);
+    outputs.output("--out", *out_file);
+    if (const auto png = parsed.value("--png")) outputs.output("--png", *png);
     const layout::Layout layout = load_layout_or_default(parsed.positional[0]);
     std::vector<math::HeadPose> path;
     if (const auto file = parsed.value("--path")) {
@@ -47,13 +52,16 @@ int run_plan_command(const Args& args, std::ostream& out, std::ostream& err) {
     if (const auto png = parsed.value("--png")) pngs.push_back(*png);
     if (ends_with(*out_file, ".png")) {
         pngs.push_back(*out_file);
-    } else if (const std::string e = write_text_file(*out_file, design::plan_svg(drawing, scale)); !e.empty()) {
-        throw InputError(e);
+    } else {
+        outputs.set(*out_file, design::plan_svg(drawing, scale));
     }
     for (const std::string& png : pngs) {
         const design::Image image = design::plan_raster(drawing, scale);
-        if (Result<void> written = image::write_png(png, image.width, image.height, 3, image.rgb); !written) throw InputError(written.error());
+        Result<std::string> bytes = image::encode_png(image.width, image.height, 3, image.rgb);
+        if (!bytes) throw InputError(png + ": " + bytes.error());
+        outputs.set(png, std::move(*bytes));
     }
+    outputs.commit();
     err << "plan: " << layout.rooms.size() << " rooms, " << report.overlaps.size() << " overlapping pairs, "
         << drawing.shapes.size() << " shapes\n";
     return kExitOk;

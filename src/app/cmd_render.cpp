@@ -14,7 +14,10 @@ namespace {
 const char* kHelp =
     "usage: impossible render [LAYOUT] [options]\n"
     "Renders one side-by-side stereo frame with the OpenGL rasteriser (the built-in default\n"
-    "layout without LAYOUT) and writes it as PNG.\n\n";
+    "layout without LAYOUT) and writes it as PNG. --out and --ids are written together or not at\n"
+    "all (a link is written through, a device such as /dev/stdout directly); naming one file twice,\n"
+    "or the layout, is a usage error. Portals that cover no pixel are not drawn; past\n"
+    "--max-portal-passes the rest show the fill colour, with a warning.\n\n";
 
 }  // namespace
 
@@ -25,6 +28,7 @@ int run_render_command(const Args& args, std::ostream& out, std::ostream& err) {
         return kExitOk;
     }
     const ViewOptions options = parse_view_options(parsed);
+    CommandOutputs outputs = frame_outputs(options);
     const layout::Layout layout = load_layout_or_default(options.layout_path);
     const render::FrameDesc frame = frame_for(layout, options);
 
@@ -39,13 +43,18 @@ int run_render_command(const Args& args, std::ostream& out, std::ostream& err) {
     if (!result) throw InputError(result.error());
 
     const image::Image& image = result->image;
-    write_frame_pngs(options, image.width, image.height, image.rgb, image.ids);
+    write_frame_pngs(outputs, options, image.width, image.height, image.rgb, image.ids);
     if (options.stats) {
         const render::FrameStats& s = result->stats;
         err << "stats: draw_calls=" << s.draw_calls << " triangles=" << s.triangles
             << " portal_passes_drawn=" << s.portal_passes_drawn << " portal_passes_culled=" << s.portal_passes_culled
-            << " portal_fills=" << s.portal_fills << " max_level=" << s.max_level_reached << "\n";
+            << " portal_fills=" << s.portal_fills << " budget_fills=" << s.budget_fills
+            << " max_level=" << s.max_level_reached << "\n";
     }
+    if (result->stats.budget_fills > 0)
+        err << "warning: the frame reached its budget of " << frame.max_portal_passes
+            << " portal passes (--max-portal-passes); " << result->stats.budget_fills
+            << " portals show the fill colour instead of what lies behind them\n";
     return kExitOk;
 }
 

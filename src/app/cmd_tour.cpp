@@ -7,7 +7,7 @@
 #include "app/cli_args.hpp"
 #include "app/commands.hpp"
 #include "app/layout_source.hpp"
-#include "app/text_file.hpp"
+#include "app/output_files.hpp"
 #include "design/path_text.hpp"
 #include "design/tour.hpp"
 
@@ -62,14 +62,17 @@ int run_tour_command(const Args& args, std::ostream& out, std::ostream& err) {
         if (!(options.grid.head_height >= 0.2 && options.grid.head_height <= 3.0))
             throw InputError("--head-height must be in 0.2..3 m");
     }
+    CommandOutputs outputs;
+    outputs.input("the layout", parsed.positional[0]);
+    outputs.output("--out", *out_file);
     const layout::Layout layout = load_layout_or_default(parsed.positional[0]);
     auto tour = design::plan_tour(layout, options);
     if (!tour) throw InputError(tour.error());
     const std::size_t reachable = tour->visited.size() + tour->missed.size();
     const std::string report = summary(layout, *tour, reachable);
     const std::string header = "impossible tour of " + layout.source + "\n" + report;
-    if (const std::string e = write_text_file(*out_file, design::path_text(tour->poses, header)); !e.empty())
-        throw InputError(e);
+    outputs.set(*out_file, design::path_text(tour->poses, header));
+    outputs.commit();
     out << report;
     for (const int r : tour->missed) err << "warning: the tour could not reach room \"" << layout.rooms[r].id << "\"\n";
     return kExitOk;

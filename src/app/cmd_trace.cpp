@@ -20,8 +20,8 @@ const char* kHelp =
     "Computes one side-by-side stereo frame with the CPU reference ray tracer (double precision,\n"
     "rays followed through portals) for the same view as `impossible render`, and writes it as\n"
     "PNG. It is the accuracy oracle for the rasteriser: compare the two with `impossible compare`.\n"
-    "The options are render's; --backend, --stereo, --clip and --no-cull only matter to the\n"
-    "rasteriser and are accepted and ignored. --stats prints rays per second instead.\n\n";
+    "The options are render's; --backend, --stereo, --clip, --no-cull and --max-portal-passes only\n"
+    "matter to the rasteriser and are accepted and ignored. --stats prints rays per second instead.\n\n";
 
 const char* kTraceOnlyHelp = "  --threads N                threads to trace with (default: every core)\n";
 
@@ -40,6 +40,7 @@ int run_trace_command(const Args& args, std::ostream& out, std::ostream& err) {
         return kExitOk;
     }
     const ViewOptions options = parse_view_options(parsed);
+    CommandOutputs outputs = frame_outputs(options);
     int threads = 0;
     if (auto v = parsed.value("--threads")) threads = parse_int("--threads", *v, 1, 256);
     const layout::Layout layout = load_layout_or_default(options.layout_path);
@@ -52,7 +53,7 @@ int run_trace_command(const Args& args, std::ostream& out, std::ostream& err) {
     const image::Image image = trace::trace_frame(scene, desc);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    write_frame_pngs(options, image.width, image.height, image.rgb, image.ids);
+    write_frame_pngs(outputs, options, image.width, image.height, image.rgb, image.ids);
     if (options.stats) {
         const long rays = static_cast<long>(image.width) * image.height;
         long fills = 0, nothing = 0;

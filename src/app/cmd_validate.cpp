@@ -4,6 +4,7 @@
 
 #include "app/cli_args.hpp"
 #include "app/commands.hpp"
+#include "base/text.hpp"
 #include "design/report.hpp"
 #include "layout/layout.hpp"
 
@@ -31,7 +32,7 @@ int run_validate_command(const Args& args, std::ostream& out, std::ostream& err)
     for (const layout::Diagnostic& d : loaded.warnings) err << "warning: " << d.str() << "\n";
     const layout::Layout& l = *loaded.layout;
     const design::Report report = design::make_report(l);
-    for (const std::string& f : report.findings) err << "warning: " << l.source << ": " << f << "\n";
+    for (const std::string& f : report.findings) err << "warning: " << one_line(l.source, 1000) << ": " << f << "\n";
     if (json) {
         out << design::report_json(l, report, loaded.warnings).dump(2) << "\n";
     } else {

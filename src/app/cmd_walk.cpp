@@ -3,13 +3,14 @@
 
 #include <charconv>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
+#include <sstream>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "base/file_io.hpp"
 #include "base/format.hpp"
+#include "base/text.hpp"
 #include "layout/path_file.hpp"
 #include "math/pose.hpp"
 #include "scene/walk.hpp"
@@ -33,7 +34,7 @@ int run_walk_stream(const layout::Layout& layout, std::istream& in, const std::s
                     std::ostream& out, std::ostream& err) {
     const layout::PathFile path = layout::read_path_stream(in, name);
     if (!path) {
-        err << path.error() << '\n';
+        err << one_line(path.error()) << '\n';
         return 1;
     }
     const std::vector<math::HeadPose>& poses = *path;
@@ -41,6 +42,12 @@ int run_walk_stream(const layout::Layout& layout, std::istream& in, const std::s
     std::string line;
     for (std::size_t frame = 0; frame < poses.size(); ++frame) {
         const std::vector<int> passed = walker.step(poses[frame]);
+        // The walker stops testing at the cap (a head moving absurdly far in
+        // one frame, or doors that lead into each other): say so, once a frame.
+        if (static_cast<int>(passed.size()) >= scene::kMaxCrossingsPerFrame)
+            err << "warning: " << one_line(name, 1000) << ": frame " << frame << " reached the limit of "
+                << scene::kMaxCrossingsPerFrame
+                << " teleports in one frame; portals beyond it were not crossed and the room may be wrong\n";
         line = "{\"frame\":" + std::to_string(frame) + ",\"room\":";
         const int room = walker.room();
         line += nlohmann::json(room >= 0 && static_cast<std::size_t>(room) < layout.rooms.size()
@@ -58,6 +65,7 @@ int run_walk_stream(const layout::Layout& layout, std::istream& in, const std::s
         write_vec(line, walker.forward());
         line += "}\n";
         out << line;
+        if (!out) break;  // standard output failed (a full disk): main reports it
     }
     out.flush();
     return 0;
@@ -65,16 +73,13 @@ int run_walk_stream(const layout::Layout& layout, std::istream& in, const std::s
 
 int run_walk(const layout::Layout& layout, const std::string& path_file, std::ostream& out,
              std::ostream& err) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path_file, ec)) {
-        err << path_file << ": is a directory, not a path file\n";
+    const Result<std::vector<unsigned char>> bytes =
+        read_file_bytes(path_file, layout::kMaxPathFileBytes, false);
+    if (!bytes) {
+        err << one_line(path_file + ": " + bytes.error()) << '\n';
         return 1;
     }
-    std::ifstream in(path_file, std::ios::binary);
-    if (!in) {
-        err << path_file << ": cannot open the path file\n";
-        return 1;
-    }
+    std::istringstream in(std::string(bytes->begin(), bytes->end()));
     return run_walk_stream(layout, in, path_file, out, err);
 }
 

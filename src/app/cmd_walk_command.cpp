@@ -14,7 +14,9 @@ int run_walk_command(const Args& args, std::ostream& out, std::ostream& err) {
         out << "usage: impossible walk LAYOUT --path FILE\n"
                "Replays a walk: FILE holds one physical head pose a line, X Y Z YAW PITCH ROLL\n"
                "(blank lines and lines starting with # are skipped). Prints one JSON object a line:\n"
-               "{\"frame\":0,\"room\":\"hall\",\"teleports\":[],\"position\":[0,1.6,1],\"forward\":[0,0,-1]}\n";
+               "{\"frame\":0,\"room\":\"hall\",\"teleports\":[],\"position\":[0,1.6,1],\"forward\":[0,0,-1]}\n"
+               "FILE may be a pipe (at most 4 MiB). At most 64 portals are crossed in one frame; a frame\n"
+               "that reaches the limit gets a warning on stderr.\n";
         return kExitOk;
     }
     if (parsed.positional.empty()) throw UsageError("walk needs a LAYOUT file");

@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "app/cli_args.hpp"
+#include "base/text.hpp"
 #include "app/commands.hpp"
 #include "bench/bench_command.hpp"
 #include "preview/preview_command.hpp"
@@ -42,16 +43,19 @@ int run_main(const Args& args, std::ostream& out, std::ostream& err) {
         if (command == "plan") return run_plan_command(rest, out, err);
         if (command == "tour") return run_tour_command(rest, out, err);
         if (command == "generate") return run_generate_command(rest, out, err);
-        err << "impossible: unknown command '" << command << "'\n" << kOverview;
+        err << "impossible: unknown command '" << one_line(command, 100) << "'\n" << kOverview;
         return kExitUsage;
     } catch (const UsageError& e) {
-        err << "impossible " << command << ": " << e.what() << " (see impossible " << command << " --help)\n";
+        // Messages name paths and values the user gave, which may hold
+        // newlines or megabytes: each is printed as one line, cut.
+        err << "impossible " << command << ": " << one_line(e.what()) << " (see impossible " << command
+            << " --help)\n";
         return kExitUsage;
     } catch (const InputError& e) {
-        err << "impossible " << command << ": " << e.what() << "\n";
+        err << "impossible " << command << ": " << one_line(e.what()) << "\n";
         return kExitBadInput;
     } catch (const std::exception& e) {
-        err << "impossible " << command << ": " << e.what() << "\n";
+        err << "impossible " << command << ": " << one_line(e.what()) << "\n";
         return kExitBadInput;
     }
 }

@@ -10,7 +10,8 @@ namespace impossible::app {
 const std::set<std::string>& view_value_options() {
     static const std::set<std::string> names = {"--pose", "--room",  "--ipd", "--fov",     "--size",
                                                 "--max-depth", "--out", "--ids", "--backend", "--stereo",
-                                                "--clip", "--depth", "--portal-texture", "--samples"};
+                                                "--clip", "--depth", "--portal-texture", "--samples",
+                                                "--max-portal-passes"};
     return names;
 }
 
@@ -27,6 +28,8 @@ const char* view_options_help() {
            "  --fov DEG                  vertical field of view of each eye (default 90)\n"
            "  --size WxH                 size of each eye's image (default 1280x720); the image is 2W x H\n"
            "  --max-depth N              portals one line of sight may pass (default 8, at most 250)\n"
+           "  --max-portal-passes N      portal passes one frame may draw (default 10000); past it, the\n"
+           "                             remaining portals show the fill colour and a warning says so\n"
            "  --out FILE.png             side-by-side colour image (default stereo.png)\n"
            "  --ids FILE.png             cell-id map: 1 + room index, 0 nothing, 255 recursion limit\n"
            "  --backend egl|osmesa       headless OpenGL context (default egl, falling back to osmesa)\n"
@@ -53,7 +56,11 @@ double parse_ipd(const std::string& text) {
 
 double parse_fov(const std::string& text) {
     const double fov = parse_number("--fov", text);
-    if (!(fov > 0.0 && fov < 179.0)) throw InputError("--fov: " + text + " is not in (0, 179) degrees");
+    // Below 1 degree a pixel's angle nears single precision's resolution at
+    // 8192 pixels (the rasteriser drew 1e-6 degrees as background while the
+    // tracer showed a room), so narrower views are refused rather than wrong.
+    if (!(fov >= kMinFovDeg && fov < 179.0))
+        throw InputError("--fov: " + text + " is not in 1..179 degrees (at least 1, less than 179)");
     return fov;
 }
 
@@ -96,6 +103,8 @@ ViewOptions parse_view_options(const ParsedArgs& args) {
     if (auto v = args.value("--fov")) o.frame.fov_y_deg = parse_fov(*v);
     if (auto v = args.value("--size")) std::tie(o.frame.eye_width, o.frame.eye_height) = parse_size("--size", *v);
     if (auto v = args.value("--max-depth")) o.frame.max_depth = parse_int("--max-depth", *v, 0, 250);
+    if (auto v = args.value("--max-portal-passes"))
+        o.frame.max_portal_passes = parse_int("--max-portal-passes", *v, 0, 10'000'000);
     if (auto v = args.value("--out")) o.out = *v;
     if (auto v = args.value("--ids")) o.ids = *v;
     if (auto v = args.value("--backend")) {
@@ -129,11 +138,24 @@ trace::TraceDesc trace_desc_for(const render::FrameDesc& frame, int threads) {
     return desc;
 }
 
-void write_frame_pngs(const ViewOptions& options, int width, int height, const std::vector<std::uint8_t>& rgb,
-                      const std::vector<std::uint8_t>& ids) {
-    if (Result<void> written = image::write_png(options.out, width, height, 3, rgb); !written) throw InputError(written.error());
-    if (options.ids)
-        if (Result<void> written = image::write_png(*options.ids, width, height, 1, ids); !written) throw InputError(written.error());
+CommandOutputs frame_outputs(const ViewOptions& options) {
+    CommandOutputs outputs;
+    if (options.layout_path) outputs.input("the layout", *options.layout_path);
+    outputs.output("--out", options.out);
+    if (options.ids) outputs.output("--ids", *options.ids);
+    return outputs;
+}
+
+void write_frame_pngs(CommandOutputs& outputs, const ViewOptions& options, int width, int height,
+                      const std::vector<std::uint8_t>& rgb, const std::vector<std::uint8_t>& ids) {
+    auto encode = [&](const std::string& path, int channels, const std::vector<std::uint8_t>& pixels) {
+        Result<std::string> png = image::encode_png(width, height, channels, pixels);
+        if (!png) throw InputError(path + ": " + png.error());
+        outputs.set(path, std::move(*png));
+    };
+    encode(options.out, 3, rgb);
+    if (options.ids) encode(*options.ids, 1, ids);
+    outputs.commit();
 }
 
 render::FrameDesc frame_for(const layout::Layout& layout, const ViewOptions& o) {

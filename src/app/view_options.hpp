@@ -7,6 +7,7 @@
 #include <string>
 
 #include "app/cli_args.hpp"
+#include "app/output_files.hpp"
 #include "gl/context.hpp"
 #include "layout/layout.hpp"
 #include "render/frame.hpp"
@@ -34,6 +35,9 @@ const std::set<std::string>& view_flag_options();
 // Throws InputError for a bad value.
 ViewOptions parse_view_options(const ParsedArgs& args);
 
+// The narrowest field of view that renders like the tracer at every size.
+inline constexpr double kMinFovDeg = 1.0;
+
 // The values of single options, shared with `preview`; InputError if bad.
 double parse_ipd(const std::string& text);
 double parse_fov(const std::string& text);
@@ -48,10 +52,14 @@ render::FrameDesc frame_for(const layout::Layout& layout, const ViewOptions& opt
 // The same frame for the reference tracer (threads: 0 = all cores).
 trace::TraceDesc trace_desc_for(const render::FrameDesc& frame, int threads = 0);
 
-// Writes the colour image and, with --ids, the id map (atomic PNG writes);
+// The outputs (--out, --ids) and the layout, declared before any work: a
+// UsageError when two of them are the same file.
+CommandOutputs frame_outputs(const ViewOptions& options);
+
+// Writes the colour image and, with --ids, the id map, both or neither;
 // throws InputError naming the file that could not be written.
-void write_frame_pngs(const ViewOptions& options, int width, int height, const std::vector<std::uint8_t>& rgb,
-                      const std::vector<std::uint8_t>& ids);
+void write_frame_pngs(CommandOutputs& outputs, const ViewOptions& options, int width, int height,
+                      const std::vector<std::uint8_t>& rgb, const std::vector<std::uint8_t>& ids);
 
 // The option table for --help texts.
 const char* view_options_help();

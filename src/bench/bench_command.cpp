@@ -1,7 +1,6 @@
 // impossible bench [LAYOUT] [options]: frame time, per-portal cost, colour
 // fragments, draw calls and portal passes, and optionally the error against
 // the tracer, of one or several configurations (bench/README.md).
-#include <fstream>
 #include <iostream>
 
 #include "bench/options.hpp"
@@ -10,6 +9,7 @@
 #include "app/cli_args.hpp"
 #include "bench/bench_command.hpp"
 #include "app/layout_source.hpp"
+#include "app/output_files.hpp"
 #include "gl/context.hpp"
 
 namespace impossible::bench {
@@ -30,13 +30,6 @@ const char* kHelp =
     "over the colour passes), draw calls, triangles and portal passes. Configurations of a sweep are\n"
     "measured in one run, interleaved frame by frame. Prints a table; see bench/README.md.\n\n";
 
-void write_file(const std::string& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    if (!out) throw InputError(path + ": cannot write the file");
-    out << text;
-    if (!out.flush()) throw InputError(path + ": cannot write the file");
-}
-
 }  // namespace
 
 int run_bench_command(const app::Args& args, std::ostream& out, std::ostream& err) {
@@ -46,6 +39,11 @@ int run_bench_command(const app::Args& args, std::ostream& out, std::ostream& er
         return kExitOk;
     }
     const BenchOptions options = parse_bench_options(parsed);
+    app::CommandOutputs outputs;
+    if (options.view.layout_path) outputs.input("the layout", *options.view.layout_path);
+    if (options.path) outputs.input("--path", *options.path);
+    if (options.json) outputs.output("--json", *options.json);
+    if (options.csv) outputs.output("--csv", *options.csv);
     const layout::Layout layout = load_layout_or_default(options.view.layout_path);
     const std::vector<BenchPose> poses = bench_poses(layout, options);
     const BenchPlan plan = plan_bench(layout, options);
@@ -57,8 +55,9 @@ int run_bench_command(const app::Args& args, std::ostream& out, std::ostream& er
 
     const BenchResult result = run_bench(plan, poses, options, context->state(), context->renderer);
     write_bench_table(result, options, out);
-    if (options.json) write_file(*options.json, bench_json(result, options));
-    if (options.csv) write_file(*options.csv, bench_csv(result));
+    if (options.json) outputs.set(*options.json, bench_json(result, options));
+    if (options.csv) outputs.set(*options.csv, bench_csv(result));
+    outputs.commit();
     return kExitOk;
 }
 

@@ -3,6 +3,8 @@
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
+#include <cstdlib>
+
 #include "gl/context_backends.hpp"
 
 namespace impossible::gl {
@@ -30,6 +32,11 @@ ProcAddress load(const char* name) { return reinterpret_cast<ProcAddress>(eglGet
 
 BackendContext create_egl_context() {
     BackendContext out;
+    // Mesa's EGL prints warnings of its own ("libEGL warning: egl: failed to
+    // create dri2 screen") on stderr, which would make our one-line error
+    // messages several lines long; the failure still comes back to us.
+    // Unless the user asked for a log level.
+    ::setenv("EGL_LOG_LEVEL", "fatal", 0);
     auto get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
         eglGetProcAddress("eglGetPlatformDisplayEXT"));
     if (!get_platform_display) {

@@ -3,6 +3,9 @@
 // 1×1 placeholder: rendering goes to framebuffer objects.
 #include <GL/osmesa.h>
 
+#include <cstdlib>
+#include <string>
+
 #include "gl/context_backends.hpp"
 
 namespace impossible::gl {
@@ -21,10 +24,26 @@ void destroy(void* p) {
 
 ProcAddress load(const char* name) { return reinterpret_cast<ProcAddress>(OSMesaGetProcAddress(name)); }
 
+// OSMesa picks its Gallium driver by the GALLIUM_DRIVER variable and, given
+// one it cannot load, crashes inside OSMesaCreateContextAttribs instead of
+// failing (Mesa 22). It runs only the software rasterisers, so anything else
+// is refused before the call.
+bool osmesa_driver_ok(std::string* why) {
+    const char* driver = std::getenv("GALLIUM_DRIVER");
+    if (!driver || !*driver) return true;
+    const std::string name = driver;
+    if (name == "llvmpipe" || name == "softpipe") return true;
+    std::string shown;
+    for (char c : name.substr(0, 40)) shown += (c >= 0x20 && c < 0x7F) ? c : '?';
+    *why = "OSMesa: GALLIUM_DRIVER='" + shown + "' is not a driver it can use (llvmpipe or softpipe); unset it";
+    return false;
+}
+
 }  // namespace
 
 BackendContext create_osmesa_context() {
     BackendContext out;
+    if (!osmesa_driver_ok(&out.error)) return out;
     auto* state = new OSMesaState;
     out.state = {state, destroy};
     const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_STENCIL_BITS, 0,

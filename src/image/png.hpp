@@ -9,9 +9,12 @@
 
 namespace impossible::image {
 
-// Writes an 8-bit PNG with 1 (grey) or 3 (RGB) channels, rows from the top.
-// The file appears whole or not at all: it is written under a temporary name
-// in the same directory and renamed.
+// Encodes an 8-bit PNG with 1 (grey) or 3 (RGB) channels, rows from the top.
+Result<std::string> encode_png(int width, int height, int channels, const std::vector<std::uint8_t>& pixels);
+
+// Encodes and writes one PNG through base/output_file.hpp: whole or not at
+// all, never replacing a link or a device. Commands with several outputs
+// encode with encode_png and write them together (app/output_files.hpp).
 Result<void> write_png(const std::string& path, int width, int height, int channels,
                       const std::vector<std::uint8_t>& pixels);
 
@@ -19,10 +22,13 @@ struct PngImage {
     int width = 0;
     int height = 0;
     int channels = 0;
+    int bit_depth = 8;  // of the file (pixels are always 8-bit)
     std::vector<std::uint8_t> pixels;
 };
 
-// Reads a PNG, keeping it as 1 or 3 channels (grey stays grey).
+// Reads a PNG, keeping it as 1 or 3 channels (grey stays grey). The file is
+// checked first (png_check.hpp: CRCs, truncation, at most kMaxPngPixels);
+// errors are "PATH: reason" in words.
 Result<PngImage> read_png(const std::string& path);
 
 }  // namespace impossible::image

@@ -1,24 +1,12 @@
-// Reading whole files with a size limit and clear reasons for failure.
+// The loader reads files through base/file_io.hpp (size limits, no hanging
+// on pipes); these names keep the loader's code short.
 #pragma once
 
-#include <cstddef>
-#include <string>
-#include <vector>
-
-#include "base/result.hpp"
+#include "base/file_io.hpp"
 
 namespace impossible::layout::detail {
 
-// Reads the file at `path` (at most `max_bytes`). On failure the error is a
-// short reason that follows the file's name ("does not
-// exist", "is a directory", "is too large (...)", "cannot be opened:
-// Permission denied").
-// `regular_only` refuses devices and pipes (which could block or never end).
-Result<std::vector<unsigned char>> read_file_bytes(const std::string& path, std::size_t max_bytes,
-                                                  bool regular_only);
-
-// The same checks without reading (size, kind), for a clear message before
-// handing the path to a library.
-Result<void> check_readable_file(const std::string& path, std::size_t max_bytes, bool regular_only);
+using impossible::check_readable_file;
+using impossible::read_file_bytes;
 
 }  // namespace impossible::layout::detail

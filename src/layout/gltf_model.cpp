@@ -23,13 +23,29 @@ namespace {
 
 // --- tinygltf callbacks: no shell expansion of paths, no image decoding, no
 // writing, and file reads bounded like ours.
-bool fs_file_exists(const std::string& path, void*) {
+//
+// A model reads files only in its own folder and below (its buffers): a URI
+// such as "../../../../etc/passwd" must not open, or even reveal whether or
+// how large, a file elsewhere. `user_data` is the model's folder, canonical.
+bool inside_folder(const std::string& path, void* user_data) {
+    const std::string& folder = *static_cast<const std::string*>(user_data);
+    std::error_code ec;
+    const std::string where = std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec).string();
+    return !ec && where.size() > folder.size() && where.compare(0, folder.size(), folder) == 0 &&
+           where[folder.size()] == '/';
+}
+bool fs_file_exists(const std::string& path, void* user_data) {
+    if (!inside_folder(path, user_data)) return true;  // refused when read, whether it exists or not
     std::error_code ec;
     return std::filesystem::is_regular_file(path, ec);
 }
 std::string fs_expand_path(const std::string& path, void*) { return path; }
 bool fs_read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path,
-                        void*) {
+                        void* user_data) {
+    if (!inside_folder(path, user_data)) {
+        if (err != nullptr) *err += "file " + quote(path) + " lies outside the model's folder\n";
+        return false;
+    }
     Result<std::vector<unsigned char>> bytes = read_file_bytes(path, limits::kMaxModelBytes, true);
     if (bytes) {
         *out = std::move(*bytes);
@@ -302,10 +318,15 @@ Result<std::vector<ModelTriangle>> load_model(const std::string& path, std::size
         return Error{"is not a valid glTF 2.0 file: the file is empty"};
     }
 
+    std::string folder =
+        std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec).parent_path(), ec).string();
+    if (ec) return Error{"cannot be opened: " + ec.message()};
+    while (folder.size() > 1 && folder.back() == '/') folder.pop_back();
+    if (folder == "/") folder.clear();  // a model at the root: everything is below it
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&skip_image, nullptr);
     loader.SetFsCallbacks({&fs_file_exists, &fs_expand_path, &fs_read_whole_file,
-                           &fs_write_whole_file, nullptr});
+                           &fs_write_whole_file, &folder});
     tinygltf::Model model;
     std::string err, warn;
     const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)

@@ -1,6 +1,7 @@
 // Small public helpers of layout.hpp: diagnostics, room lookup, prop placement.
 #include <cmath>
 
+#include "base/text.hpp"
 #include "layout/layout.hpp"
 #include "math/conventions.hpp"
 #include "math/polygon.hpp"
@@ -8,8 +9,10 @@
 namespace impossible::layout {
 
 std::string Diagnostic::str() const {
-    if (line > 0) return file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + message;
-    return file + ": " + message;
+    // The file name as given, which may hold a newline: one line always.
+    const std::string name = one_line(file, 1000);
+    if (line > 0) return name + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + message;
+    return name + ": " + message;
 }
 
 std::vector<glm::dvec2> outline(const PlayArea& area) {

@@ -140,7 +140,10 @@ StartDraft read_start(Checker& check, const Path& at, const json& value) {
     return draft;
 }
 
-void read_layout(Checker& check, const json& root, const std::string& base_dir, Layout& layout) {
+// `ids_reliable`: no object repeats a key (a repeated "id" leaves which one
+// counts in doubt).
+void read_layout(Checker& check, const json& root, const std::string& base_dir, Layout& layout,
+                 bool ids_reliable) {
     const Path top;
     if (!root.is_object()) {
         check.error(top, "a layout must be a JSON object (got " + detail::json_type_name(root) + ")");
@@ -176,14 +179,19 @@ void read_layout(Checker& check, const json& root, const std::string& base_dir, 
     if (const json* v = field(root, "start")) start = read_start(check, top / "start", *v);
     std::vector<detail::PortalDraft> portals;
     if (const json* v = field(root, "portals")) portals = detail::read_portals(check, top / "portals", *v);
-    detail::link_portals(check, portals, rooms);
+    // With a room list that could not be read whole (too long, an entry
+    // without a readable id), "no room has the id" would only repeat an
+    // error already reported, so it is left out.
+    const bool rooms_known = ids_reliable && !rooms.empty() &&
+                             std::all_of(rooms.begin(), rooms.end(), [](const auto& r) { return r.has_id; });
+    detail::link_portals(check, portals, rooms, rooms_known);
     detail::check_holes(check, portals, rooms);
 
     if (start.room_id) {
         const auto room_index = detail::index_by_id(rooms);
         const auto it = room_index.find(*start.room_id);
         if (it == room_index.end()) {
-            check.error(top / "start" / "room", "no room has the id " + quote(*start.room_id));
+            if (rooms_known) check.error(top / "start" / "room", "no room has the id " + quote(*start.room_id));
             start.ok = false;
         } else {
             start.start.room = it->second;
@@ -242,7 +250,7 @@ LoadResult load(std::string_view text, const std::string& source, const std::str
     }
     Layout layout;
     layout.source = source;
-    read_layout(check, document.root, base_dir, layout);
+    read_layout(check, document.root, base_dir, layout, document.duplicates.empty());
     result.errors = check.take_errors();
     result.warnings = check.take_warnings();
     if (result.errors.empty()) result.layout = std::move(layout);

@@ -2,8 +2,9 @@
 
 #include <charconv>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
+#include <sstream>
+
+#include "base/file_io.hpp"
 
 namespace impossible::layout {
 namespace {
@@ -59,10 +60,11 @@ PathFile read_path_stream(std::istream& in, const std::string& name) {
 }
 
 PathFile read_path_file(const std::string& path) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) return Error{path + ": is a directory, not a path file"};
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return Error{path + ": cannot open the path file"};
+    // Through the one input reader: a size limit (so /dev/zero fails fast
+    // instead of filling memory) and no waiting forever on a FIFO.
+    const Result<std::vector<unsigned char>> bytes = read_file_bytes(path, kMaxPathFileBytes, false);
+    if (!bytes) return Error{path + ": " + bytes.error()};
+    std::istringstream in(std::string(bytes->begin(), bytes->end()));
     PathFile file = read_path_stream(in, path);
     if (file && file->empty()) return Error{path + ": the path file holds no poses"};
     return file;

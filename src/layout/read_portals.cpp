@@ -161,7 +161,7 @@ std::vector<PortalDraft> read_portals(Checker& check, const Path& at, const json
 }
 
 void link_portals(Checker& check, std::vector<PortalDraft>& portals,
-                  const std::vector<RoomDraft>& rooms) {
+                  const std::vector<RoomDraft>& rooms, bool rooms_known) {
     const std::map<std::string, int> room_index = index_by_id(rooms);
     const std::map<std::string, int> portal_index = index_by_id(portals);
     for (std::size_t i = 0; i < portals.size(); ++i) {
@@ -169,7 +169,7 @@ void link_portals(Checker& check, std::vector<PortalDraft>& portals,
         if (draft.room_id) {
             const auto it = room_index.find(*draft.room_id);
             if (it == room_index.end()) {
-                check.error(draft.path / "room", "no room has the id " + quote(*draft.room_id));
+                if (rooms_known) check.error(draft.path / "room", "no room has the id " + quote(*draft.room_id));
             } else {
                 draft.portal.room = it->second;
             }

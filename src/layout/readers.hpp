@@ -60,9 +60,10 @@ void read_props(Checker& check, const Path& at, const json& props, const glm::dv
 
 std::vector<PortalDraft> read_portals(Checker& check, const Path& at, const json& portals);
 
-// Resolves each portal's room and target, and checks the pairs.
+// Resolves each portal's room and target, and checks the pairs. Without
+// `rooms_known` (the room list had errors) an unknown room id is not reported.
 void link_portals(Checker& check, std::vector<PortalDraft>& portals,
-                  const std::vector<RoomDraft>& rooms);
+                  const std::vector<RoomDraft>& rooms, bool rooms_known);
 
 // The hole rule (layout-format.md, "The portal box"): sets hole_face, and
 // reports rectangles partly inside a face, and overlapping holes.

@@ -1,6 +1,7 @@
 // The numbers `impossible validate` prints about a valid layout.
 #include <cstdio>
 
+#include "base/text.hpp"
 #include "layout/layout.hpp"
 #include "math/polygon.hpp"
 
@@ -35,7 +36,8 @@ Summary summarize(const Layout& layout) {
 std::string summary_text(const Layout& layout, const Summary& summary) {
     char line[256];
     std::string out;
-    if (!layout.name.empty()) out += "name: " + layout.name + "\n";
+    // A name may be megabytes long or hold newlines; the summary shows 200 bytes of it.
+    if (!layout.name.empty()) out += "name: " + one_line(layout.name, 200) + "\n";
     out += "rooms: " + std::to_string(summary.rooms) + "\n";
     out += "portals: " + std::to_string(summary.portals) + "\n";
     out += "pairs: " + std::to_string(summary.pairs) + "\n";

@@ -6,12 +6,6 @@
 
 namespace impossible::layout::detail {
 
-std::string format_bytes(std::uint64_t bytes) {
-    constexpr std::uint64_t mib = 1u << 20;
-    if (bytes >= mib && bytes % mib == 0) return std::to_string(bytes / mib) + " MiB";
-    return std::to_string(bytes) + " bytes";
-}
-
 namespace {
 
 // Length of the valid UTF-8 sequence at text[i], or 0 if it is not one.

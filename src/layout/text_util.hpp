@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "base/file_io.hpp"
 #include "base/format.hpp"
 #include <string_view>
 #include <vector>
@@ -13,8 +14,7 @@ namespace impossible::layout::detail {
 
 using impossible::format_number;  // base/format.hpp
 
-// A size for messages: "5 MiB" when a whole number of MiB, else "123 bytes".
-std::string format_bytes(std::uint64_t bytes);
+using impossible::format_bytes;   // base/file_io.hpp
 
 // A string as a JSON string literal (quotes, escapes), safe to print.
 std::string quote(std::string_view text);

@@ -41,8 +41,14 @@ enum class DepthMode {
 inline constexpr double kNearReversedZ = layout::limits::kNearReversedZ;  // 10 µm
 inline constexpr double kNearStandard = layout::limits::kNearStandard;    // 1 cm
 
+// The default budget of portal passes per frame (--max-portal-passes).
+inline constexpr int kDefaultMaxPortalPasses = 10'000;
+
 // The view (scene/view.hpp) and how the rasteriser draws it.
 struct FrameDesc : scene::View {
+    // Portal passes one frame may draw; past it, portals show the fill colour
+    // (FrameStats::budget_fills). Only a frame that needs more changes.
+    int max_portal_passes = kDefaultMaxPortalPasses;
     double near = 0.0;         // 0: the depth mode's own (kNearReversedZ, kNearStandard)
     double far = 2e5;          // only for DepthMode::Standard: beyond any valid layout
     StereoMode stereo = StereoMode::ClipShift;
@@ -87,7 +93,8 @@ struct FrameStats {
                                     // counted (not the full-screen depth-clear triangles)
     int portal_passes_drawn = 0;    // portals whose target was drawn (both eyes count once)
     int portal_passes_culled = 0;   // portals skipped as invisible to both eyes
-    int portal_fills = 0;           // portals shown as the flat fill at the depth limit
+    int portal_fills = 0;           // portals shown as the flat fill (depth limit or budget)
+    int budget_fills = 0;           // of those, the ones drawn so because max_portal_passes was spent
     int max_level_reached = 0;
     // Only with FrameDesc::profile:
     long colour_fragments = 0;      // samples that passed every test in the colour passes (Scene,

@@ -1,10 +1,27 @@
 // Per-eye screen bounds of a portal box, for culling and for narrowing the
 // next level's view (the scissor rectangle and the clip-distance rectangle).
+#include <algorithm>
 #include <cmath>
 
 #include "render/view.hpp"
 
 namespace impossible::render {
+
+namespace {
+
+// Whether [lo, hi] (NDC) holds a pixel centre (2i + 1)/n - 1, i in 0..n-1.
+bool spans_centre(double lo, double hi, int n) {
+    const double margin = 2.0 / n / 256.0;
+    const double first = std::ceil(((lo - margin + 1.0) * n - 1.0) / 2.0);  // lowest i at or above lo
+    const double i = std::max(first, 0.0);
+    return i <= n - 1 && (2.0 * i + 1.0) / n - 1.0 <= hi + margin;
+}
+
+}  // namespace
+
+bool covers_pixel_centre(const NdcRect& rect, int width, int height) {
+    return !rect.empty() && spans_centre(rect.x0, rect.x1, width) && spans_centre(rect.y0, rect.y1, height);
+}
 
 NdcRect portal_rect(const math::PortalRect& portal, const EyeView& view) {
     if (!view.active || view.rect.empty()) return NdcRect::none();

@@ -49,12 +49,16 @@ void draw_portal(DrawContext& ctx, const LevelView& view, int p, const std::arra
     gl::StateCache& state = *ctx.renderer.state;
     const int level = view.level;
     if (ctx.frame.cull_portals) state.scissor(scissor_of(ctx, rects, view));
-    if (level >= ctx.frame.max_depth) {
+    // The recursion limit, or the frame's budget of portal passes spent:
+    // the portal shows the fill colour.
+    const bool over_budget = ctx.stats.portal_passes_drawn >= ctx.frame.max_portal_passes;
+    if (level >= ctx.frame.max_depth || over_budget) {
         use_pass(ctx, Pass::PortalFill, level);
         set_cell_id(ctx, 255, true);
         const ColourQueryScope colour(ctx.profiler);
         draw_portal_box(ctx, view, p, rects);
         ctx.stats.portal_fills += 1;
+        if (over_budget && level < ctx.frame.max_depth) ctx.stats.budget_fills += 1;
         return;
     }
     use_pass(ctx, Pass::PortalMark, level);
@@ -115,8 +119,12 @@ void draw_level(DrawContext& ctx, const LevelView& view) {
             const EyeView& ev = view.eyes[e];
             const bool behind_exit = p == view.entered_by && ev.behind_exit;
             if (behind_exit || !ev.active) visible[k][e] = NdcRect::none();
-            else if (ctx.frame.cull_portals) visible[k][e] = portal_rect(r.portals[p].rect, ev);
-            else visible[k][e] = ev.rect;
+            else if (!ctx.frame.cull_portals) visible[k][e] = ev.rect;
+            else if (const NdcRect rect = portal_rect(r.portals[p].rect, ev);
+                     ctx.frame.samples > 1 ? !rect.empty()  // samples lie off the centre: keep any
+                                           : covers_pixel_centre(rect, ctx.frame.eye_width, ctx.frame.eye_height))
+                visible[k][e] = rect;
+            else visible[k][e] = NdcRect::none();
         }
     }
 

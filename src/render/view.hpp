@@ -37,6 +37,14 @@ struct LevelView {
     std::array<EyeView, 2> eyes;
 };
 
+// Whether a rectangle of an eye's image of width × height pixels holds the
+// centre of a pixel, within 1/256 pixel: llvmpipe snaps vertices to 1/256
+// pixel (to the nearest step, so at most 1/512 away), which leaves 1/512
+// pixel for single-precision error in the vertex transform. A portal whose rectangle holds none covers no
+// pixel: the rasteriser makes no fragment for it, nor for anything seen
+// through it, so it is drawn no further.
+bool covers_pixel_centre(const NdcRect& rect, int width, int height);
+
 // The part of an eye's image where a portal's box can be visible from that
 // eye, within `parent`; empty when the box is outside the frustum, faces
 // away, or lies behind the eye. Conservative (never too small).

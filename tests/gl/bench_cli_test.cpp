@@ -139,7 +139,9 @@ TEST_F(BenchCli, ClosedPortalsAndDepthSweep) {
     const nlohmann::json d = json("d.json");
     ASSERT_EQ(d["configs"].size(), 3u);
     EXPECT_EQ(d["configs"][1]["portal_passes_drawn"].get<double>(), 1.0);
-    EXPECT_EQ(d["configs"][2]["portal_passes_drawn"].get<double>(), 4.0);
+    // Depth 4 draws three passes, not four: at 64x36 the fourth door down
+    // the corridor covers no pixel centre, so it is not drawn at all.
+    EXPECT_EQ(d["configs"][2]["portal_passes_drawn"].get<double>(), 3.0);
     EXPECT_EQ(d["configs"][1]["portal_fills"].get<double>(), 1.0);
 
     // Scene triangles: 10 extra boxes on the floor add 12 triangles each to

@@ -7,6 +7,7 @@
 #include "gl/handles.hpp"
 
 #include "gl_fixture.hpp"
+#include "render/view.hpp"
 
 namespace impossible {
 namespace {
@@ -249,6 +250,26 @@ TEST(PortalTexture, NeedsClipShiftStereo) {
     Result<render::RenderedFrame> result = r->render(f);
     ASSERT_FALSE(result);
     EXPECT_NE(result.error().find("clip-shift"), std::string::npos);
+}
+
+// The rule that bounds the recursion (docs/bounded-work.md): a rectangle
+// matters only if it holds a pixel centre, (2i + 1)/n - 1 in NDC.
+TEST(PixelCentres, ARectangleMattersOnlyWithAPixelCentreInside) {
+    using render::NdcRect;
+    using render::covers_pixel_centre;
+    // 4 x 2 pixels: centres at x = -0.75, -0.25, 0.25, 0.75 and y = -0.5, 0.5.
+    EXPECT_TRUE(covers_pixel_centre(NdcRect{-1, -1, 1, 1}, 4, 2));
+    EXPECT_TRUE(covers_pixel_centre(NdcRect{-0.3, 0.4, -0.2, 0.6}, 4, 2));
+    EXPECT_FALSE(covers_pixel_centre(NdcRect{-0.2, 0.4, 0.2, 0.6}, 4, 2));   // between two columns
+    EXPECT_FALSE(covers_pixel_centre(NdcRect{-0.3, -0.4, -0.2, 0.4}, 4, 2));  // between the rows
+    EXPECT_FALSE(covers_pixel_centre(NdcRect{0.8, -1, 1, 1}, 4, 2));         // right of the last column
+    EXPECT_FALSE(covers_pixel_centre(NdcRect::none(), 4, 2));
+    // Within 1/256 pixel counts (a vertex may snap that far); 1/100 does not.
+    const double px = 2.0 / 4;
+    EXPECT_TRUE(covers_pixel_centre(NdcRect{-0.25 + px / 300, 0, 0.1, 1}, 4, 2));
+    EXPECT_FALSE(covers_pixel_centre(NdcRect{-0.25 + px / 100, 0, 0.1, 1}, 4, 2));
+    EXPECT_TRUE(covers_pixel_centre(NdcRect{-0.5, 0, -0.25 - px / 300, 1}, 4, 2));
+    EXPECT_FALSE(covers_pixel_centre(NdcRect{-0.5, 0, -0.25 - px / 100, 1}, 4, 2));
 }
 
 }  // namespace

@@ -26,7 +26,7 @@ TEST(PathFile, ReadsPosesAndReportsTheBadLine) {
 }
 
 TEST(PathFile, AFileMustHoldAPoseAndNotBeAFolder) {
-    EXPECT_EQ(read_path_file("/tmp").error(), "/tmp: is a directory, not a path file");
+    EXPECT_EQ(read_path_file("/tmp").error(), "/tmp: is a directory");
 }
 
 }  // namespace

@@ -1,0 +1,39 @@
+#include "app/output_files.hpp"
+
+#include "app/cli_args.hpp"
+
+namespace impossible::app {
+
+void CommandOutputs::add(Named named) {
+    for (const Named& other : files_) {
+        if (!named.is_output && !other.is_output) continue;  // reading a file twice is fine
+        if (named.id.shareable || !(named.id == other.id)) continue;
+        throw UsageError(named.label + " is the same file as " + other.label +
+                         (other.is_output ? "" : "; it would be overwritten"));
+    }
+    files_.push_back(std::move(named));
+}
+
+void CommandOutputs::input(const std::string& what, const std::string& path) {
+    add({what + " " + path, false, identify_file(path)});
+}
+
+void CommandOutputs::output(const std::string& option, const std::string& path) {
+    add({option + " " + path, true, identify_file(path)});
+}
+
+void CommandOutputs::set(const std::string& path, std::string bytes) {
+    for (OutputBytes& p : pending_)
+        if (p.path == path) {
+            p.bytes = std::move(bytes);
+            return;
+        }
+    pending_.push_back({path, std::move(bytes)});
+}
+
+void CommandOutputs::commit() {
+    if (Result<void> written = write_output_files(pending_); !written) throw InputError(written.error());
+    pending_.clear();
+}
+
+}  // namespace impossible::app
