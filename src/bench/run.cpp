@@ -190,9 +190,7 @@ struct Measurer {
                     r.error = raster.error();
                     continue;
                 }
-                const image::Image a{raster->image.width, raster->image.height, raster->image.rgb, raster->image.ids};
-                const image::Image b{t.width, t.height, t.rgb, t.ids};
-                const image::Comparison cmp = image::compare_pictures(a, b);
+                const image::Comparison cmp = image::compare_pictures(raster->image, t);
                 r.has_error = true;
                 r.id_mismatch_percent += cmp.id_mismatch_percent / n;
                 r.worst_id_mismatch_percent = std::max(r.worst_id_mismatch_percent, cmp.id_mismatch_percent);

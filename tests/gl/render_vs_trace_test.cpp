@@ -34,10 +34,8 @@ TEST_P(RenderVsTrace, IdsAgreeOnEveryLayoutAndPose) {
 
         const image::Image traced = trace::trace_frame(l, app::trace_desc_for(f));
 
-        const image::Image a{raster.width, raster.height, raster.rgb, raster.ids};
-        const image::Image b{traced.width, traced.height, traced.rgb, traced.ids};
-        ASSERT_FALSE(image::incomparable(a, b)) << c.layout;
-        const image::Comparison cmp = image::compare_pictures(a, b);
+        ASSERT_FALSE(image::incomparable(raster, traced)) << c.layout;
+        const image::Comparison cmp = image::compare_pictures(raster, traced);
         std::printf("  %-16s %-32s %s\n", c.layout, c.what, image::summary_line(cmp).c_str());
         EXPECT_LE(cmp.id_mismatch_percent, 0.01) << c.layout << ": " << c.what;
         EXPECT_GE(cmp.interior_psnr_db, 40.0) << c.layout << ": " << c.what;
