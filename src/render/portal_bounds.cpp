@@ -19,8 +19,9 @@ bool spans_centre(double lo, double hi, int n) {
 
 }  // namespace
 
-bool covers_pixel_centre(const NdcRect& rect, int width, int height) {
-    return !rect.empty() && spans_centre(rect.x0, rect.x1, width) && spans_centre(rect.y0, rect.y1, height);
+bool covers_pixel_centre(const NdcRect& rect, int width, int height, int samples) {
+    if (rect.empty()) return false;
+    return samples > 1 || (spans_centre(rect.x0, rect.x1, width) && spans_centre(rect.y0, rect.y1, height));
 }
 
 NdcRect portal_rect(const math::PortalRect& portal, const EyeView& view) {

@@ -121,8 +121,7 @@ void draw_level(DrawContext& ctx, const LevelView& view) {
             if (behind_exit || !ev.active) visible[k][e] = NdcRect::none();
             else if (!ctx.frame.cull_portals) visible[k][e] = ev.rect;
             else if (const NdcRect rect = portal_rect(r.portals[p].rect, ev);
-                     ctx.frame.samples > 1 ? !rect.empty()  // samples lie off the centre: keep any
-                                           : covers_pixel_centre(rect, ctx.frame.eye_width, ctx.frame.eye_height))
+                     covers_pixel_centre(rect, ctx.frame.eye_width, ctx.frame.eye_height, ctx.frame.samples))
                 visible[k][e] = rect;
             else visible[k][e] = NdcRect::none();
         }

@@ -42,8 +42,9 @@ struct LevelView {
 // pixel (to the nearest step, so at most 1/512 away), which leaves 1/512
 // pixel for single-precision error in the vertex transform. A portal whose rectangle holds none covers no
 // pixel: the rasteriser makes no fragment for it, nor for anything seen
-// through it, so it is drawn no further.
-bool covers_pixel_centre(const NdcRect& rect, int width, int height);
+// through it, so it is drawn no further. Multisampled (samples > 1), the
+// samples lie off the centres, so any rectangle that is not empty counts.
+bool covers_pixel_centre(const NdcRect& rect, int width, int height, int samples = 1);
 
 // The part of an eye's image where a portal's box can be visible from that
 // eye, within `parent`; empty when the box is outside the frustum, faces

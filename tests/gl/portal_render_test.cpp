@@ -264,6 +264,9 @@ TEST(PixelCentres, ARectangleMattersOnlyWithAPixelCentreInside) {
     EXPECT_FALSE(covers_pixel_centre(NdcRect{-0.3, -0.4, -0.2, 0.4}, 4, 2));  // between the rows
     EXPECT_FALSE(covers_pixel_centre(NdcRect{0.8, -1, 1, 1}, 4, 2));         // right of the last column
     EXPECT_FALSE(covers_pixel_centre(NdcRect::none(), 4, 2));
+    // Multisampled, a rectangle between the centres may still hold samples.
+    EXPECT_TRUE(covers_pixel_centre(NdcRect{-0.2, 0.4, 0.2, 0.6}, 4, 2, 4));
+    EXPECT_FALSE(covers_pixel_centre(NdcRect::none(), 4, 2, 4));
     // Within 1/256 pixel counts (a vertex may snap that far); 1/100 does not.
     const double px = 2.0 / 4;
     EXPECT_TRUE(covers_pixel_centre(NdcRect{-0.25 + px / 300, 0, 0.1, 1}, 4, 2));
