@@ -1,6 +1,6 @@
 // The shading model of src/scene/shading.hpp (constants injected as defines),
 // plus the cell id of the surface for the id map.
-in vec3 v_position;
+in vec3 v_checker_position;  // where the checker pattern is evaluated
 in vec3 v_normal;
 in vec3 v_color;
 in float v_checker;
@@ -29,6 +29,6 @@ void main() {
     }
     vec3 n = normalize(v_normal);
     float lambert = max(0.0, dot(n, LIGHT_DIR));
-    float dark = checker_dark(v_position, n, v_checker) ? CHECKER_DARK : 1.0;
+    float dark = checker_dark(v_checker_position, n, v_checker) ? CHECKER_DARK : 1.0;
     o_color = vec4(v_color * ((AMBIENT + DIFFUSE * lambert) * dark), 1.0);
 }

@@ -20,9 +20,13 @@ uniform vec4 u_eye_rect[2];
 // Per eye: a plane in this cell's coordinates; only points with
 // dot(plane, (p, 1)) >= 0 are drawn. (0, 0, 0, 1) clips nothing.
 uniform vec4 u_clip_plane[2];
+// Positions are relative to the cell's origin (scene::CellFrame); the checker
+// pattern is that of origin + p, and origin modulo the pattern's period is
+// this offset.
+uniform vec3 u_checker_offset;
 uniform int u_single_eye;
 
-out vec3 v_position;
+out vec3 v_checker_position;
 out vec3 v_normal;
 out vec3 v_color;
 out float v_checker;
@@ -49,7 +53,7 @@ void main() {
     clip.x = 0.5 * (clip.x + (eye == 0 ? -clip.w : clip.w));
 #endif
     gl_Position = clip;
-    v_position = a_position;
+    v_checker_position = a_position + u_checker_offset;
     v_normal = a_normal;
     v_color = a_color;
     v_checker = a_checker;

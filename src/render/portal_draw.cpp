@@ -1,7 +1,10 @@
 // The drawing steps a portal level is made of (see portal_recursion.cpp):
 // per-eye uniforms, the scissor of a portal, its box, the view through it.
 #include <algorithm>
+#include <cassert>
 #include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "math/oblique_projection.hpp"
 #include "render/portal_recursion.hpp"
@@ -17,10 +20,15 @@ void set_eye_uniforms(const DrawContext& ctx, const LevelView& view, const std::
     float rect[2][4];
     float plane[2][4];
     const int eye_w = ctx.frame.eye_width, eye_h = ctx.frame.eye_height;
+    // The cell's vertices are relative to its origin: the move to layout
+    // coordinates is folded into the matrices and planes here, in double.
+    const scene::CellFrame& cell = ctx.renderer.frames[static_cast<size_t>(view.cell)];
+    const math::dmat4 from_cell = glm::translate(math::dmat4(1.0), cell.origin);
     for (int e = 0; e < 2; ++e) {
         const EyeView& ev = view.eyes[e];
+        const math::dmat4 view_proj = ev.view_proj * from_cell;
         for (int c = 0; c < 4; ++c)
-            for (int r = 0; r < 4; ++r) vp[e][c * 4 + r] = static_cast<float>(ev.view_proj[c][r]);
+            for (int r = 0; r < 4; ++r) vp[e][c * 4 + r] = static_cast<float>(view_proj[c][r]);
         NdcRect nr = ev.active ? rects[e] : NdcRect::none();
         if (!nr.empty()) {
             // One pixel of margin keeps float rounding from trimming a pixel
@@ -34,12 +42,15 @@ void set_eye_uniforms(const DrawContext& ctx, const LevelView& view, const std::
         rect[e][1] = static_cast<float>(nr.y0);
         rect[e][2] = static_cast<float>(nr.x1);
         rect[e][3] = static_cast<float>(nr.y1);
-        for (int c = 0; c < 4; ++c) plane[e][c] = static_cast<float>(ev.clip_plane[c]);
+        const math::dvec4 cell_plane(math::dvec3(ev.clip_plane),
+                                     ev.clip_plane.w + glm::dot(math::dvec3(ev.clip_plane), cell.origin));
+        for (int c = 0; c < 4; ++c) plane[e][c] = static_cast<float>(cell_plane[c]);
     }
     const GLuint p = ctx.program.program.get();
     glProgramUniformMatrix4fv(p, ctx.program.view_proj, 2, GL_FALSE, &vp[0][0]);
     glProgramUniform4fv(p, ctx.program.eye_rect, 2, &rect[0][0]);
     glProgramUniform4fv(p, ctx.program.clip_plane, 2, &plane[0][0]);
+    glProgramUniform3fv(p, ctx.program.checker_offset, 1, &cell.checker_offset[0]);
 }
 
 gl::ScissorRect scissor_of(const DrawContext& ctx, const std::array<NdcRect, 2>& rects, const LevelView& view) {
@@ -70,6 +81,7 @@ void draw_range(DrawContext& ctx, const scene::IndexRange& range) {
 
 void draw_portal_box(DrawContext& ctx, const LevelView& view, int portal, const std::array<NdcRect, 2>& rects) {
     const PortalInfo& info = ctx.renderer.portals[portal];
+    assert(info.room == view.cell);  // its box is relative to the cell's frame
     std::array<NdcRect, 2> front = rects, inner = rects;
     bool any_inner = false;
     for (int e = 0; e < 2; ++e) {

@@ -128,6 +128,7 @@ Result<Renderer> Renderer::create(gl::StateCache& state, const layout::Layout& l
     auto r = std::make_unique<RendererData>();
     r->state = &state;
     r->cells = scene.cells;
+    r->frames = scene.frames;
     r->links = scene.links;
     r->portals.reserve(layout.portals.size());
     for (size_t i = 0; i < layout.portals.size(); ++i) {

@@ -30,6 +30,7 @@ inline constexpr int kStereoModeCount = 3;
 struct RendererData {
     gl::StateCache* state = nullptr;  // the context's; outlives the renderer
     std::vector<scene::IndexRange> cells;  // per room, into gpu's index buffer
+    std::vector<scene::CellFrame> frames;  // per room: what its vertices are relative to
     std::vector<PortalInfo> portals;       // per layout portal
     scene::PortalLinks links;              // M_AB per portal, the portals of each room
     GpuScene gpu;

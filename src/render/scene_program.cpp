@@ -38,6 +38,7 @@ Result<SceneProgram> link_scene_program(const char* fragment, const std::string&
     p.view_proj = glGetUniformLocation(name, "u_view_proj");
     p.eye_rect = glGetUniformLocation(name, "u_eye_rect");
     p.clip_plane = glGetUniformLocation(name, "u_clip_plane");
+    p.checker_offset = glGetUniformLocation(name, "u_checker_offset");
     p.single_eye = glGetUniformLocation(name, "u_single_eye");
     p.cell_id = glGetUniformLocation(name, "u_cell_id");
     p.unshaded = glGetUniformLocation(name, "u_unshaded");

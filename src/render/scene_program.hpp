@@ -17,6 +17,7 @@ struct SceneProgram {
     GLint view_proj = -1;   // mat4[2]
     GLint eye_rect = -1;    // vec4[2]
     GLint clip_plane = -1;  // vec4[2]
+    GLint checker_offset = -1;  // vec3
     GLint single_eye = -1;  // int
     GLint cell_id = -1;     // uint
     GLint unshaded = -1;    // bool

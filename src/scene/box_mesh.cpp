@@ -8,7 +8,7 @@
 namespace impossible::scene {
 
 void append_box_prop(MeshWriter& out, const layout::BoxProp& box) {
-    const glm::vec3 lo(box.min), hi(box.max);
+    const glm::vec3 lo(out.local(box.min)), hi(out.local(box.max));
     for (int axis = 0; axis < 3; ++axis) {
         for (const bool positive : {false, true}) {
             const PlaneAxes in = plane_axes(axis, positive);  // counter-clockwise seen from outside
@@ -38,7 +38,7 @@ void append_gltf_prop(MeshWriter& out, const layout::GltfProp& prop) {
             const double length = glm::length(n);
             if (length > 0.0 && std::isfinite(length))
                 n /= length;  // keep it unit after float rounding
-            ids[k] = out.vertex(glm::vec3(p), n, t.color, 0.0);
+            ids[k] = out.vertex(out.local(p), n, t.color, 0.0);
         }
         out.triangle(ids[0], ids[1], ids[2]);
     }

@@ -1,6 +1,7 @@
 // build_scene: rooms first (each room's faces then its props, one contiguous
 // index range per cell), then every portal's box (front range, inner range),
 // then the portal links.
+#include <cmath>
 #include <optional>
 #include <type_traits>
 #include <variant>
@@ -13,6 +14,18 @@
 
 namespace impossible::scene {
 
+CellFrame cell_frame(const layout::Room& room) {
+    CellFrame f;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double centre = 0.5 * (room.min[axis] + room.max[axis]);
+        f.origin[axis] = kCellOriginGrid * std::round(centre / kCellOriginGrid);
+        // The checker's parity at origin + p is its parity at offset + p.
+        const double period = 2.0 * room.checker;
+        if (period > 0.0) f.checker_offset[axis] = static_cast<float>(f.origin[axis] - period * std::floor(f.origin[axis] / period));
+    }
+    return f;
+}
+
 Scene build_scene(const layout::Layout& layout) {
     Scene scene;
     MeshWriter out{scene};
@@ -21,7 +34,10 @@ Scene build_scene(const layout::Layout& layout) {
     std::vector<std::optional<FrontGrid>> fronts(layout.portals.size());
 
     scene.cells.reserve(layout.rooms.size());
+    scene.frames.reserve(layout.rooms.size());
     for (std::size_t r = 0; r < layout.rooms.size(); ++r) {
+        scene.frames.push_back(cell_frame(layout.rooms[r]));
+        out.origin = scene.frames.back().origin;
         const std::uint32_t first = out.index_count();
         append_room_faces(out, layout, static_cast<int>(r), fronts);
         for (const layout::Prop& prop : layout.rooms[r].props) {
@@ -41,7 +57,8 @@ Scene build_scene(const layout::Layout& layout) {
     scene.portals.reserve(layout.portals.size());
     for (std::size_t p = 0; p < layout.portals.size(); ++p) {
         const math::PortalRect& rect = layout.portals[p].rect;
-        const FrontGrid front = fronts[p] ? *fronts[p] : corner_front(rect);
+        out.origin = scene.frames[static_cast<std::size_t>(layout.portals[p].room)].origin;
+        const FrontGrid front = fronts[p] ? *fronts[p] : corner_front(out, rect);
         scene.portals.push_back(append_portal_box(out, rect, front));
     }
     scene.links = link_portals(layout);

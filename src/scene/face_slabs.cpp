@@ -55,7 +55,7 @@ void append_face_slabs(MeshWriter& out, const SlabFace& face) {
     // keeping the face's own bounds exact.
     std::vector<double> xs;
     for (const double x : all) {
-        if (!xs.empty() && static_cast<float>(x) == static_cast<float>(xs.back())) {
+        if (!xs.empty() && out.local(x, face.in.a) == out.local(xs.back(), face.in.a)) {
             if (x == face.hi.x) xs.back() = x;
             continue;
         }
@@ -63,12 +63,12 @@ void append_face_slabs(MeshWriter& out, const SlabFace& face) {
     }
 
     std::map<std::pair<double, double>, std::uint32_t> ids;  // shared vertices by (a, b)
-    const float plane = static_cast<float>(face.plane);
+    const float plane = out.local(face.plane, face.axis);
     const auto id = [&](double a, double b) {
         const auto [it, added] = ids.try_emplace({a, b}, 0u);
         if (added) {
-            const glm::vec3 p = plane_point(face.axis, plane, face.in, static_cast<float>(a),
-                                            static_cast<float>(b));
+            const glm::vec3 p = plane_point(face.axis, plane, face.in, out.local(a, face.in.a),
+                                            out.local(b, face.in.b));
             it->second = out.vertex(p, face.normal, face.color, face.checker);
         }
         return it->second;

@@ -28,7 +28,7 @@ struct SlabFace {
     glm::dvec3 normal{0.0};
     glm::dvec3 color{0.0};
     double checker = 0.0;
-    std::vector<double> cuts;                      // extra a-coordinates to cut at
+    std::vector<double> cuts;                      // extra a-coordinates to cut at (layout's)
     std::vector<std::array<glm::dvec2, 4>> holes;  // (a, b) corners, in order around each
 };
 

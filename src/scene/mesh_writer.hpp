@@ -2,8 +2,8 @@
 // parts of build_scene (room faces, props, portal boxes).
 //
 // Positions arrive as float already (vertices that several surfaces share must
-// be bitwise equal, so callers convert them once); normals and colours are
-// computed in double and converted here.
+// be bitwise equal, so callers convert them once, with local()); normals and
+// colours are computed in double and converted here.
 #pragma once
 
 #include <cassert>
@@ -18,6 +18,13 @@ namespace impossible::scene {
 
 struct MeshWriter {
     Scene& scene;
+    glm::dvec3 origin{0.0};  // the current cell's CellFrame::origin
+
+    // A layout coordinate on `axis`, or a layout point, as a vertex coordinate.
+    float local(double v, int axis) const { return static_cast<float>(v - origin[axis]); }
+    glm::vec3 local(const glm::dvec3& p) const { return glm::vec3(p - origin); }
+    // A vertex coordinate back in layout coordinates (exact).
+    double world(float v, int axis) const { return static_cast<double>(v) + origin[axis]; }
 
     std::uint32_t vertex(const glm::vec3& position, const glm::dvec3& normal,
                          const glm::dvec3& color, double checker) {

@@ -7,11 +7,11 @@
 
 namespace impossible::scene {
 
-FrontGrid corner_front(const math::PortalRect& rect) {
+FrontGrid corner_front(const MeshWriter& out, const math::PortalRect& rect) {
     math::dvec3 c[8];
     math::box_corners(rect, c);
     // Grid order (0,0), (1,0), (0,1), (1,1) = corners 0, 1, 3, 2.
-    return FrontGrid{2, 2, {glm::vec3(c[0]), glm::vec3(c[1]), glm::vec3(c[3]), glm::vec3(c[2])}};
+    return FrontGrid{2, 2, {out.local(c[0]), out.local(c[1]), out.local(c[3]), out.local(c[2])}};
 }
 
 namespace {
@@ -69,9 +69,9 @@ PortalMesh append_portal_box(MeshWriter& out, const math::PortalRect& rect,
     const std::array<glm::dvec3, 4> side_normal = {u, -r, -u, r};
     for (int s = 0; s < 4; ++s) {
         const glm::dvec3& normal = side_normal[static_cast<std::size_t>(s)];
-        const std::uint32_t back_s = out.vertex(glm::vec3(c[4 + s]), normal, kPortalFillColor, 0.0);
+        const std::uint32_t back_s = out.vertex(out.local(c[4 + s]), normal, kPortalFillColor, 0.0);
         const std::uint32_t back_next =
-            out.vertex(glm::vec3(c[4 + (s + 1) % 4]), normal, kPortalFillColor, 0.0);
+            out.vertex(out.local(c[4 + (s + 1) % 4]), normal, kPortalFillColor, 0.0);
         const std::vector<glm::vec3> path = side_path(front, s);
         std::uint32_t previous = out.vertex(path.front(), normal, kPortalFillColor, 0.0);
         for (std::size_t k = 1; k < path.size(); ++k) {
@@ -84,7 +84,7 @@ PortalMesh append_portal_box(MeshWriter& out, const math::PortalRect& rect,
     std::array<std::uint32_t, 4> back{};
     for (int k = 0; k < 4; ++k) {
         back[static_cast<std::size_t>(k)] =
-            out.vertex(glm::vec3(c[4 + k]), n, kPortalFillColor, 0.0);
+            out.vertex(out.local(c[4 + k]), n, kPortalFillColor, 0.0);
     }
     out.triangle(back[0], back[1], back[2]);
     out.triangle(back[0], back[2], back[3]);

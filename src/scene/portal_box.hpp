@@ -29,11 +29,13 @@ struct FrontGrid {
     }
 };
 
-// The plain front of a portal: its four box corners (a 2 × 2 grid).
-FrontGrid corner_front(const math::PortalRect& rect);
+// The plain front of a portal: its four box corners (a 2 × 2 grid), relative
+// to out's origin.
+FrontGrid corner_front(const MeshWriter& out, const math::PortalRect& rect);
 
 // Appends the box of `rect` with the given front; the back corners are
-// math::box_corners' (in float). Colour kPortalFillColor, checker 0.
+// math::box_corners' (in float, relative to out's origin). Colour
+// kPortalFillColor, checker 0.
 PortalMesh append_portal_box(MeshWriter& out, const math::PortalRect& rect, const FrontGrid& front);
 
 }  // namespace impossible::scene

@@ -75,9 +75,9 @@ FaceHole make_hole(const layout::Room& room, const FaceFrame& f, int portal,
     return h;
 }
 
-std::size_t line_index(const std::vector<float>& lines, double value) {
-    const auto it = std::lower_bound(lines.begin(), lines.end(), static_cast<float>(value));
-    assert(it != lines.end() && *it == static_cast<float>(value));
+std::size_t line_index(const std::vector<float>& lines, float value) {
+    const auto it = std::lower_bound(lines.begin(), lines.end(), value);
+    assert(it != lines.end() && *it == value);
     return static_cast<std::size_t>(it - lines.begin());
 }
 
@@ -90,7 +90,7 @@ void append_grid_face(MeshWriter& out, const layout::Room& room, int face, const
     const FaceFrame f = face_frame(room, face);
     const std::vector<float>& as = lines[static_cast<std::size_t>(f.in.a)];
     const std::vector<float>& bs = lines[static_cast<std::size_t>(f.in.b)];
-    const float plane = static_cast<float>(f.plane);
+    const float plane = out.local(f.plane, f.axis);
     const auto point = [&](std::size_t i, std::size_t j) {
         return plane_point(f.axis, plane, f.in, as[i], bs[j]);
     };
@@ -98,8 +98,10 @@ void append_grid_face(MeshWriter& out, const layout::Room& room, int face, const
     std::vector<char> open((na - 1) * (nb - 1), 1);  // cell (i, j) at [j * (na - 1) + i]
 
     for (const FaceHole& h : holes) {
-        const std::size_t i0 = line_index(as, h.lo.x), i1 = line_index(as, h.hi.x);
-        const std::size_t j0 = line_index(bs, h.lo.y), j1 = line_index(bs, h.hi.y);
+        const std::size_t i0 = line_index(as, out.local(h.lo.x, f.in.a));
+        const std::size_t i1 = line_index(as, out.local(h.hi.x, f.in.a));
+        const std::size_t j0 = line_index(bs, out.local(h.lo.y, f.in.b));
+        const std::size_t j1 = line_index(bs, out.local(h.hi.y, f.in.b));
         for (std::size_t j = j0; j < j1; ++j) {
             for (std::size_t i = i0; i < i1; ++i) open[j * (na - 1) + i] = 0;
         }
@@ -164,17 +166,17 @@ void append_room_faces(MeshWriter& out, const layout::Layout& layout, int room_i
     // The grid lines every face shares: the room's bounds and the hole edges.
     Lines lines;
     for (int axis = 0; axis < 3; ++axis) {
-        lines[static_cast<std::size_t>(axis)] = {static_cast<float>(room.min[axis]),
-                                                 static_cast<float>(room.max[axis])};
+        lines[static_cast<std::size_t>(axis)] = {out.local(room.min[axis], axis),
+                                                 out.local(room.max[axis], axis)};
     }
     for (int face = 0; face < layout::kFaceCount; ++face) {
         if (slabs[static_cast<std::size_t>(face)]) continue;
         const PlaneAxes in = face_frame(room, face).in;
         for (const FaceHole& h : holes[static_cast<std::size_t>(face)]) {
             for (const double v : {h.lo.x, h.hi.x})
-                lines[static_cast<std::size_t>(in.a)].push_back(static_cast<float>(v));
+                lines[static_cast<std::size_t>(in.a)].push_back(out.local(v, in.a));
             for (const double v : {h.lo.y, h.hi.y})
-                lines[static_cast<std::size_t>(in.b)].push_back(static_cast<float>(v));
+                lines[static_cast<std::size_t>(in.b)].push_back(out.local(v, in.b));
         }
     }
     for (std::vector<float>& l : lines) {
@@ -198,11 +200,11 @@ void append_room_faces(MeshWriter& out, const layout::Layout& layout, int room_i
         s.normal = inward_normal(f);
         s.color = room.face_color[fi];
         s.checker = room.checker;
-        for (const float v : lines[static_cast<std::size_t>(f.in.a)]) s.cuts.push_back(v);
+        for (const float v : lines[static_cast<std::size_t>(f.in.a)]) s.cuts.push_back(out.world(v, f.in.a));
         for (const FaceHole& h : holes[fi]) {
             s.holes.push_back(h.corners);
             fronts[static_cast<std::size_t>(h.portal)] =
-                corner_front(layout.portals[static_cast<std::size_t>(h.portal)].rect);
+                corner_front(out, layout.portals[static_cast<std::size_t>(h.portal)].rect);
         }
         append_face_slabs(out, s);
     }

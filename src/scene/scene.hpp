@@ -2,7 +2,11 @@
 // room (cell) and each portal box an index range into it.
 //
 // Positions are in the layout's own coordinates (a room seen through a portal
-// is drawn with its own geometry from a virtual camera, never moved). All
+// is drawn with its own geometry from a virtual camera, never moved), but
+// measured from an origin of the room's own (CellFrame): 32-bit floats a
+// kilometre from the layout's origin are 61 µm apart, too coarse for an eye
+// 0.1 mm from a wall; relative to the room they are as fine as the room's size
+// allows. The renderer folds the origin into its double-precision matrices. All
 // triangles are counter-clockwise when seen from their front side; room faces
 // face inwards, prop boxes outwards, portal boxes as the spec's "portal box".
 #pragma once
@@ -29,6 +33,20 @@ struct IndexRange {
     std::uint32_t count = 0;  // number of indices (a multiple of 3)
 };
 
+// Where a room's vertices, and its portals' boxes', are measured from.
+struct CellFrame {
+    glm::dvec3 origin{0.0};          // vertex position = layout coordinates - origin
+    glm::vec3 checker_offset{0.0};   // origin modulo twice the room's checker side
+};
+
+// The room's centre rounded to the nearest multiple of kCellOriginGrid on each
+// axis: a room within 32 m of the layout's origin keeps it (its vertices are
+// the layout's coordinates, bit for bit), and no vertex lies farther than
+// 32 m plus half the room's size from its cell's origin (float spacing 3.8 µm
+// at 32 m), wherever the room is.
+inline constexpr double kCellOriginGrid = 64.0;
+CellFrame cell_frame(const layout::Room& room);
+
 struct PortalMesh {
     IndexRange front;  // the rectangle in the plane, facing +normal
     IndexRange inner;  // four side faces and the back face, facing inwards
@@ -38,7 +56,8 @@ struct Scene {
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;
     std::vector<IndexRange> cells;     // per room: faces (with holes) and props
-    std::vector<PortalMesh> portals;   // per portal, in the portal's room coordinates
+    std::vector<CellFrame> frames;     // per room: the origin of its vertices and its portals'
+    std::vector<PortalMesh> portals;   // per portal, relative to its room's frame
     PortalLinks links;                 // M_AB per portal and the portals of each room, linked once
 };
 

@@ -17,7 +17,19 @@
 namespace impossible {
 namespace {
 
-std::string contact_layout() { return std::string(IMPOSSIBLE_TEST_DATA) + "/layouts/hard/contact.json"; }
+// The contact layout at the origin, and moved 2 km away (contact_far.json),
+// where 32-bit float coordinates are 122 µm apart: there an eye 0.1 mm from a
+// wall is exact only because each cell's vertices are relative to an origin
+// of its own (scene::CellFrame).
+struct Placement {
+    const char* file;
+    math::dvec3 offset;
+};
+const Placement kPlacements[] = {{"contact.json", {0, 0, 0}}, {"contact_far.json", {1600.3, 0, -1300.7}}};
+
+std::string layout_path(const Placement& at) {
+    return std::string(IMPOSSIBLE_TEST_DATA) + "/layouts/hard/" + at.file;
+}
 
 long mismatches(const layout::Layout& l, render::FrameDesc f, const std::string& what) {
     f.eye_width = 200;
@@ -47,33 +59,38 @@ render::FrameDesc pose(const layout::Layout& l, math::dvec3 p, double yaw, doubl
 const double kContacts[] = {1e-4, 5e-4, 1e-3};
 
 TEST(ContactDistance, EyesAtAWallAndAProp) {
-    const layout::Layout l = testing::layout_from_file(contact_layout());
-    for (double d : kContacts) {
-        char what[80];
-        std::snprintf(what, sizeof what, "both eyes %g mm from the -z wall", d * 1e3);
-        EXPECT_EQ(mismatches(l, pose(l, {0, 1.6, -2 + d}, 0), what), 0) << what;
-        std::snprintf(what, sizeof what, "both eyes %g mm from the prop's +z face", d * 1e3);
-        EXPECT_EQ(mismatches(l, pose(l, {1.0, 0.6, -0.5 + d}, 0), what), 0) << what;
+    for (const Placement& at : kPlacements) {
+        const layout::Layout l = testing::layout_from_file(layout_path(at));
+        for (double d : kContacts) {
+            char what[96];
+            std::snprintf(what, sizeof what, "%s: both eyes %g mm from the -z wall", at.file, d * 1e3);
+            EXPECT_EQ(mismatches(l, pose(l, at.offset + math::dvec3{0, 1.6, -2 + d}, 0), what), 0) << what;
+            std::snprintf(what, sizeof what, "%s: both eyes %g mm from the prop's +z face", at.file, d * 1e3);
+            EXPECT_EQ(mismatches(l, pose(l, at.offset + math::dvec3{1.0, 0.6, -0.5 + d}, 0), what), 0) << what;
+        }
     }
 }
 
 TEST(ContactDistance, OneEyeAtTheBackOfAShallowDoorBox) {
-    const layout::Layout l = testing::layout_from_file(contact_layout());
     // Yaw 45: the right eye sits ipd/2 · sin 45 behind the head along -n.
     const double s = std::sin(math::radians(45.0));
     const struct {
         const char* door;
         double depth, z, ipd;
     } boxes[] = {{"2 cm", 0.02, 0.5, 0.064}, {"4 cm", 0.04, 1.2, 0.12}};
-    for (const auto& b : boxes) {
-        for (double d : kContacts) {
-            const double head_d = -b.depth + d + s * b.ipd / 2;  // right eye at -depth + d
-            ASSERT_GT(head_d, 0.0);
-            const double x = b.z == 0.5 ? -1.0 : 1.0;
-            const math::dvec3 head{x - s * b.ipd / 2 + 0.1, 1.5, b.z + head_d};
-            char what[96];
-            std::snprintf(what, sizeof what, "right eye %g mm from the back of a %s deep box", d * 1e3, b.door);
-            EXPECT_EQ(mismatches(l, pose(l, head, 45, b.ipd), what), 0) << what;
+    for (const Placement& at : kPlacements) {
+        const layout::Layout l = testing::layout_from_file(layout_path(at));
+        for (const auto& b : boxes) {
+            for (double d : kContacts) {
+                const double head_d = -b.depth + d + s * b.ipd / 2;  // right eye at -depth + d
+                ASSERT_GT(head_d, 0.0);
+                const double x = b.z == 0.5 ? -1.0 : 1.0;
+                const math::dvec3 head = at.offset + math::dvec3{x - s * b.ipd / 2 + 0.1, 1.5, b.z + head_d};
+                char what[112];
+                std::snprintf(what, sizeof what, "%s: right eye %g mm from the back of a %s deep box", at.file,
+                              d * 1e3, b.door);
+                EXPECT_EQ(mismatches(l, pose(l, head, 45, b.ipd), what), 0) << what;
+            }
         }
     }
 }
