@@ -63,11 +63,19 @@ struct Room {
     std::vector<Prop> props;
 };
 
+// layout-format.md, "Mirrors and windows": a door is walked through, a mirror
+// reflects its own room, a window shows its partner's room blended with the
+// reflection of its own.
+enum class PortalKind { Door, Mirror, Window };
+
 struct Portal {
     std::string id;
     int room = -1;          // index into Layout::rooms
-    math::PortalRect rect;  // normal unit into the room; up made orthogonal
-    int target = -1;        // index into Layout::portals
+    math::PortalRect rect;  // normal unit into the room; up made orthogonal; depth 0 unless a door
+    int target = -1;        // index into Layout::portals; -1 for a mirror
+    PortalKind kind = PortalKind::Door;
+    glm::dvec3 tint{1.0};      // mirrors and windows: multiplies the light through or back
+    double reflectance = 0.1;  // windows: the reflection's share r
     // The face of its room in which the rectangle cuts a hole (a Face as int),
     // or -1 for a portal standing free in the room (layout-format.md, "The
     // portal box"). The hole has exactly the rectangle's size.

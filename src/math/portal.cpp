@@ -32,6 +32,18 @@ dmat4 portal_frame_inverse(const PortalRect& p) {
     return inv;
 }
 
+dmat4 reflection_matrix(const PortalRect& p) {
+    // p' = p - 2 · dot(p - c, n) · n: linear part I - 2nnᵀ, translation
+    // 2 · dot(c, n) · n (fewer roundings than the three-matrix product).
+    const dvec3& n = p.normal;
+    dmat4 m(1.0);
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) m[c][r] -= 2.0 * n[c] * n[r];
+    const dvec3 t = 2.0 * glm::dot(p.center, n) * n;
+    m[3] = dvec4(t, 1.0);
+    return m;
+}
+
 dmat4 transfer_matrix(const PortalRect& a, const PortalRect& b) {
     // R_y(180°) negates x and z, so T_B · R_y(180°) has the columns
     // (-r_B, u_B, -n_B, c_B). Its rotation times R_Aᵀ, and the translation

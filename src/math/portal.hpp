@@ -28,6 +28,11 @@ dmat4 portal_frame_inverse(const PortalRect& p);
 // coincident portals with opposite normals and the same up.
 dmat4 transfer_matrix(const PortalRect& a, const PortalRect& b);
 
+// M_P = T_P · S · T_P⁻¹ with S = diag(1, 1, -1): the reflection in the
+// portal's plane (a mirror's, or a window's reflected branch). Its own
+// inverse; it turns handedness (layout-format.md, "Mirrors and windows").
+dmat4 reflection_matrix(const PortalRect& p);
+
 double signed_distance(const PortalRect& p, const dvec3& point);
 
 // The plane as (n, -dot(n, center)): dot(plane, (p, 1)) = signed distance.

@@ -10,11 +10,14 @@
 
 namespace impossible::scene {
 
-// transfer[i] is M from portal i to its target; room_portals[r] lists the
-// portals of room r in file order. A portal whose room or target index is
-// out of range is left out of room_portals (the loader never produces one).
+// transfer[i] is M from portal i to its target (doors and windows);
+// reflection[i] is M_P of a mirror or window (identity for a door);
+// room_portals[r] lists the portals of room r in file order. A portal whose
+// room or target index is out of range is left out of room_portals (the
+// loader never produces one); a mirror has no target.
 struct PortalLinks {
     std::vector<math::dmat4> transfer;
+    std::vector<math::dmat4> reflection;
     std::vector<std::vector<int>> room_portals;
 };
 

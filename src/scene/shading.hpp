@@ -29,6 +29,18 @@ inline const glm::dvec3 kPortalFillColor{0.24, 0.22, 0.30};
 // What a pixel shows where no surface is hit (id 0).
 inline const glm::dvec3 kBackgroundColor{0.0, 0.0, 0.0};
 
+// A window's two branches (layout-format.md, "What a pixel shows", step 5)
+// are weighted: the through branch by (1 - r) · tint, the reflected one by r;
+// a mirror multiplies by its tint. The weight of a view is the product of
+// these factors from the eye (the largest channel of each tint). Two facing
+// windows branch at every level, 2^depth views; so a window branch whose
+// weight would fall below kMinBranchWeight (one 8-bit step) is not followed
+// and shows the fill colour, as at the recursion limit (id 255 for a through
+// branch). The rasteriser and the tracer apply the same rule.
+inline constexpr double kMinBranchWeight = 1.0 / 256.0;
+
+inline double max_channel(const glm::dvec3& c) { return std::max(c.x, std::max(c.y, c.z)); }
+
 inline bool checker_dark(const glm::dvec3& position, const glm::dvec3& normal, double side) {
     if (side <= 0.0) return false;
     const glm::dvec3 a = glm::abs(normal);
