@@ -7,11 +7,27 @@ namespace {
 
 void enable(GLenum cap, bool on) { on ? glEnable(cap) : glDisable(cap); }
 
+void blend_func(Blend blend) {
+    switch (blend) {
+        case Blend::Replace:
+            break;
+        case Blend::AlphaOver:
+            glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+            break;
+        case Blend::ScaleTarget:
+            glBlendFunc(GL_ZERO, GL_CONSTANT_COLOR);
+            break;
+        case Blend::AddScaledTarget:
+            glBlendFunc(GL_ONE, GL_CONSTANT_COLOR);
+            break;
+    }
+}
+
 }  // namespace
 
 void StateCache::invalidate() {
     known_ = false;
-    blend_func_set_ = false;
+    blend_color_known_ = false;
     scissor_known_ = false;
     viewport_known_ = false;
     program_ = vertex_array_ = draw_framebuffer_ = clip_depth_ = kUnknown;
@@ -20,13 +36,14 @@ void StateCache::invalidate() {
 void StateCache::apply(const PassState& s, GLint stencil_ref) {
     assert(s.clip_distances >= 0 && s.clip_distances <= kMaxClipDistances);
     const bool all = !known_;
-    if (all) glFrontFace(GL_CCW);
+    if (all || s.front_clockwise != state_.front_clockwise) glFrontFace(s.front_clockwise ? GL_CW : GL_CCW);
     if (all || s.depth_test != state_.depth_test) enable(GL_DEPTH_TEST, s.depth_test);
     if (all || s.depth_write != state_.depth_write) glDepthMask(s.depth_write ? GL_TRUE : GL_FALSE);
     if (all || s.depth_func != state_.depth_func) glDepthFunc(s.depth_func);
-    if (all || s.color_mask != state_.color_mask) {
+    if (all || s.color_mask != state_.color_mask || s.write_ids != state_.write_ids) {
         const GLuint m = s.color_mask;
         glColorMask((m & 1u) != 0, (m & 2u) != 0, (m & 4u) != 0, (m & 8u) != 0);
+        if (!s.write_ids) glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     }
     if (all || s.cull_back_faces != state_.cull_back_faces) {
         enable(GL_CULL_FACE, s.cull_back_faces);
@@ -45,14 +62,22 @@ void StateCache::apply(const PassState& s, GLint stencil_ref) {
         const bool on = i < s.clip_distances, was = i < state_.clip_distances;
         if (all || on != was) enable(GL_CLIP_DISTANCE0 + i, on);
     }
-    if (all || s.blend != state_.blend) enable(GL_BLEND, s.blend);
-    if (s.blend && !blend_func_set_) {
-        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-        blend_func_set_ = true;
-    }
+    if (all || (s.blend == Blend::Replace) != (state_.blend == Blend::Replace))
+        enable(GL_BLEND, s.blend != Blend::Replace);
+    if (s.blend != Blend::Replace && (all || s.blend != state_.blend)) blend_func(s.blend);
     state_ = s;
     stencil_ref_ = stencil_ref;
     known_ = true;
+}
+
+void StateCache::blend_color(float r, float g, float b, float a) {
+    const float c[4] = {r, g, b, a};
+    if (blend_color_known_ && c[0] == blend_color_[0] && c[1] == blend_color_[1] && c[2] == blend_color_[2] &&
+        c[3] == blend_color_[3])
+        return;
+    glBlendColor(r, g, b, a);
+    for (int i = 0; i < 4; ++i) blend_color_[i] = c[i];
+    blend_color_known_ = true;
 }
 
 void StateCache::scissor(const WindowRect& rect) {

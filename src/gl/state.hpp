@@ -36,15 +36,26 @@ struct StencilState {
     bool operator==(const StencilState&) const = default;
 };
 
+// How a fragment's colour meets the one in the target (integer attachments
+// are never blended). K is the blend colour (StateCache::blend_color).
+enum class Blend {
+    Replace,
+    AlphaOver,       // straight alpha "over" (overlays)
+    ScaleTarget,     // target · K: the fragment's colour is ignored
+    AddScaledTarget  // fragment + target · K
+};
+
 struct PassState {
     bool depth_test = true;
     bool depth_write = true;
     GLenum depth_func = GL_GREATER;  // reversed-Z: nearer is greater
     GLuint color_mask = kColorAll;   // all colour attachments
-    bool cull_back_faces = true;     // counter-clockwise fronts
+    bool write_ids = true;           // draw buffer 1 (ids) too, as color_mask says; false: never
+    bool cull_back_faces = true;
+    bool front_clockwise = false;    // fronts wind clockwise (a view through a mirror)
     StencilState stencil;
     int clip_distances = 0;          // GL_CLIP_DISTANCE0 .. n - 1 enabled
-    bool blend = false;              // straight alpha "over" (overlays); off: replace
+    Blend blend = Blend::Replace;
     bool operator==(const PassState&) const = default;
 };
 
@@ -57,7 +68,7 @@ inline constexpr PassState plain_2d_state(bool blend, GLuint color_mask = kColor
     s.depth_write = false;
     s.color_mask = color_mask;
     s.cull_back_faces = false;
-    s.blend = blend;
+    s.blend = blend ? Blend::AlphaOver : Blend::Replace;
     return s;
 }
 
@@ -75,6 +86,8 @@ public:
     void invalidate();
 
     void apply(const PassState& state, GLint stencil_ref);
+    // The constant K of Blend::ScaleTarget and Blend::AddScaledTarget.
+    void blend_color(float r, float g, float b, float a);
     void scissor(const WindowRect& rect);  // enables the scissor test
     void no_scissor();
     // Every viewport index at once (glViewport).
@@ -95,7 +108,8 @@ private:
     bool known_ = false;  // state_ and stencil_ref_ are what GL holds
     PassState state_;
     GLint stencil_ref_ = 0;
-    bool blend_func_set_ = false;
+    bool blend_color_known_ = false;
+    float blend_color_[4] = {0, 0, 0, 0};
     bool scissor_known_ = false;
     bool scissor_on_ = false;
     WindowRect scissor_;

@@ -21,6 +21,11 @@ enum class Pass {
     PortalUnmark,  // stencil level + 1 → level, and the box's depth back (ref = level + 1)
     PortalFill,    // the flat fill colour and id 255 at the recursion limit
     PortalTexture, // render-to-texture portals: the box shows its texture
+    // Full-target triangles limited by the stencil to a mirror's or window's
+    // pixels (ref = level + 1), after the view through it is drawn:
+    Tint,          // colour ← colour · tint (the blend colour); ids kept
+    ClearRegion,   // colour, ids and depth back to the background, between a window's two views
+    WindowBlend,   // colour ← (r · reflected view) + colour · (1 - r) · tint; ids kept
     Count
 };
 
@@ -47,6 +52,21 @@ inline constexpr gl::PassState portal_pass(bool depth_write, GLenum depth_func, 
 
 inline constexpr GLuint kColor = gl::kColorAll, kNoColor = gl::kColorNone;
 
+// A full-target triangle where stencil == reference: no depth test unless it
+// writes depth, no culling, no clip distances (the triangle has none).
+inline constexpr gl::PassState region_pass(bool write_depth, bool write_ids, gl::Blend blend) {
+    gl::PassState s;
+    s.depth_test = write_depth;  // with GL_ALWAYS: only so that depth is written
+    s.depth_write = write_depth;
+    s.depth_func = GL_ALWAYS;
+    s.write_ids = write_ids;
+    s.cull_back_faces = false;
+    s.stencil.enabled = true;
+    s.stencil.func = GL_EQUAL;
+    s.blend = blend;
+    return s;
+}
+
 inline constexpr std::array<gl::PassState, static_cast<size_t>(Pass::Count)> kPassStates = {{
     // depth_write, depth_func, colour, cull_back_faces, stencil pass op
     portal_pass(true, GL_GREATER, kColor, true, GL_KEEP),     // Scene
@@ -57,6 +77,9 @@ inline constexpr std::array<gl::PassState, static_cast<size_t>(Pass::Count)> kPa
     portal_pass(true, GL_ALWAYS, kNoColor, true, GL_DECR),    // PortalUnmark
     portal_pass(false, GL_GEQUAL, kColor, true, GL_KEEP),     // PortalFill
     portal_pass(false, GL_GEQUAL, kColor, true, GL_KEEP),     // PortalTexture
+    region_pass(false, false, gl::Blend::ScaleTarget),         // Tint
+    region_pass(true, true, gl::Blend::Replace),               // ClearRegion
+    region_pass(false, false, gl::Blend::AddScaledTarget),     // WindowBlend
 }};
 
 // Clearing a target (glClearNamedFramebuffer* obeys the write masks and the
@@ -81,8 +104,12 @@ inline constexpr std::array<gl::PassState, static_cast<size_t>(Pass::Count)> kSt
     return out;
 }();
 
-inline const gl::PassState& pass_state(Pass pass, bool reversed_z) {
-    return (reversed_z ? kPassStates : kStandardDepthPassStates)[static_cast<size_t>(pass)];
+// The pass's state for the depth mode; a view with an odd number of
+// reflections sees every triangle wound the other way.
+inline gl::PassState pass_state(Pass pass, bool reversed_z, bool mirrored = false) {
+    gl::PassState s = (reversed_z ? kPassStates : kStandardDepthPassStates)[static_cast<size_t>(pass)];
+    s.front_clockwise = mirrored;
+    return s;
 }
 
 }  // namespace impossible::render

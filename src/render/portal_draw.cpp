@@ -11,8 +11,8 @@
 
 namespace impossible::render {
 
-void use_pass(DrawContext& ctx, Pass pass, int stencil_ref) {
-    ctx.renderer.state->apply(pass_state(pass, ctx.frame.depth == DepthMode::ReversedZ), stencil_ref);
+void use_pass(DrawContext& ctx, const LevelView& view, Pass pass, int stencil_ref) {
+    ctx.renderer.state->apply(pass_state(pass, ctx.frame.depth == DepthMode::ReversedZ, view.mirrored), stencil_ref);
 }
 
 void set_eye_uniforms(const DrawContext& ctx, const LevelView& view, const std::array<NdcRect, 2>& rects) {
@@ -96,14 +96,20 @@ void draw_portal_box(DrawContext& ctx, const LevelView& view, int portal, const 
     }
 }
 
-LevelView child_view(const DrawContext& ctx, const LevelView& view, int portal, const std::array<NdcRect, 2>& rects) {
-    const PortalInfo& a = ctx.renderer.portals[portal];
-    const PortalInfo& b = ctx.renderer.portals[a.target];
-    const math::dmat4& m = ctx.renderer.links.transfer[portal];
+namespace {
+
+// The view of `cell` from the eyes moved by m, which stand behind `exit`
+// (of `cell`) or, for an eye that crossed the plane ahead of the head, in
+// front of it; behind it, exit's plane clips.
+LevelView moved_view(const DrawContext& ctx, const LevelView& view, const math::dmat4& m, int cell, int exit,
+                     const std::array<NdcRect, 2>& rects) {
+    const PortalInfo& b = ctx.renderer.portals[exit];
     LevelView child;
-    child.cell = b.room;
+    child.cell = cell;
     child.level = view.level + 1;
-    child.entered_by = a.target;
+    child.entered_by = exit;
+    child.mirrored = view.mirrored;
+    child.weight = view.weight;
     for (int e = 0; e < 2; ++e) {
         EyeView& ev = child.eyes[e];
         ev.active = view.eyes[e].active && !rects[e].empty();
@@ -111,9 +117,6 @@ LevelView child_view(const DrawContext& ctx, const LevelView& view, int portal, 
         const math::dmat4 view_matrix = math::view_matrix(ev.eye);
         ev.view_proj = ctx.projection * view_matrix;
         ev.rect = rects[e];
-        // A virtual eye behind B sees B's room only in front of B's plane;
-        // one already in front of B (the real eye crossed A before the head)
-        // stands in B's room and needs no plane.
         ev.behind_exit = math::signed_distance(b.rect, ev.eye.position) < 0.0;
         if (!ev.behind_exit) continue;
         const math::dvec4 plane = math::portal_plane(b.rect);
@@ -127,6 +130,30 @@ LevelView child_view(const DrawContext& ctx, const LevelView& view, int portal, 
         else
             ev.clip_plane = plane;
     }
+    return child;
+}
+
+}  // namespace
+
+LevelView child_view(const DrawContext& ctx, const LevelView& view, int portal, const std::array<NdcRect, 2>& rects,
+                     double weight_factor) {
+    // A virtual eye behind B sees B's room only in front of B's plane; one
+    // already in front of B (the real eye crossed A before the head) stands
+    // in B's room and needs no plane.
+    const PortalInfo& a = ctx.renderer.portals[portal];
+    LevelView child = moved_view(ctx, view, ctx.renderer.links.transfer[portal], ctx.renderer.portals[a.target].room,
+                                 a.target, rects);
+    child.weight *= weight_factor;
+    return child;
+}
+
+LevelView reflected_view(const DrawContext& ctx, const LevelView& view, int portal,
+                         const std::array<NdcRect, 2>& rects, double weight_factor) {
+    // The mirrored eye is behind the plane (the real one is in front, or the
+    // mirror would not be visible); the plane clips what lies behind it.
+    LevelView child = moved_view(ctx, view, ctx.renderer.links.reflection[portal], view.cell, portal, rects);
+    child.mirrored = !view.mirrored;
+    child.weight *= weight_factor;
     return child;
 }
 

@@ -16,7 +16,6 @@
 #include "render/portal_recursion.hpp"
 
 namespace impossible::render {
-namespace {
 
 void set_cell_id(const DrawContext& ctx, unsigned id, bool unshaded) {
     const GLuint p = ctx.program.program.get();
@@ -24,15 +23,11 @@ void set_cell_id(const DrawContext& ctx, unsigned id, bool unshaded) {
     glProgramUniform1i(p, ctx.program.unshaded, unshaded ? 1 : 0);
 }
 
-void clear_depth_in_portal(DrawContext& ctx, int stencil_ref) {
+void draw_full_target(DrawContext& ctx) {
     RendererData& r = ctx.renderer;
-    use_pass(ctx, Pass::ClearDepth, stencil_ref);
-    r.state->program(r.clear_depth.program.get());
-    glProgramUniform1f(r.clear_depth.program.get(), r.clear_depth.far_depth,
-                       ctx.frame.depth == DepthMode::ReversedZ ? 0.0f : 1.0f);
     r.state->vertex_array(r.empty_vao.get());
-    // The clear triangle has no eye: with per-eye viewports it is drawn
-    // through viewport 0, widened to the whole target for the moment.
+    // The triangle has no eye: with per-eye viewports it is drawn through
+    // viewport 0, widened to the whole target for the moment.
     const bool indexed = ctx.frame.stereo == StereoMode::ViewportIndex;
     const float w = static_cast<float>(ctx.frame.eye_width), h = static_cast<float>(ctx.frame.eye_height);
     if (indexed) r.state->viewport_indexed(0, 0.0f, 0.0f, 2.0f * w, h);
@@ -40,8 +35,19 @@ void clear_depth_in_portal(DrawContext& ctx, int stencil_ref) {
     if (indexed) r.state->viewport_indexed(0, 0.0f, 0.0f, w, h);
     ctx.stats.draw_calls += 1;
     r.state->vertex_array(r.gpu.vao.get());
+}
+
+void clear_depth_in_portal(DrawContext& ctx, const LevelView& view, int stencil_ref) {
+    RendererData& r = ctx.renderer;
+    use_pass(ctx, view, Pass::ClearDepth, stencil_ref);
+    r.state->program(r.clear_depth.program.get());
+    glProgramUniform1f(r.clear_depth.program.get(), r.clear_depth.far_depth,
+                       ctx.frame.depth == DepthMode::ReversedZ ? 0.0f : 1.0f);
+    draw_full_target(ctx);
     r.state->program(ctx.program.program.get());
 }
+
+namespace {
 
 // One visible portal of `view`: the fill at the depth limit, or mark, depth
 // reset, the view through it (recursively) and unmark.
@@ -53,7 +59,7 @@ void draw_portal(DrawContext& ctx, const LevelView& view, int p, const std::arra
     // the portal shows the fill colour.
     const bool over_budget = ctx.stats.portal_passes_drawn >= ctx.frame.max_portal_passes;
     if (level >= ctx.frame.max_depth || over_budget) {
-        use_pass(ctx, Pass::PortalFill, level);
+        use_pass(ctx, view, Pass::PortalFill, level);
         set_cell_id(ctx, 255, true);
         const ColourQueryScope colour(ctx.profiler);
         draw_portal_box(ctx, view, p, rects);
@@ -61,15 +67,25 @@ void draw_portal(DrawContext& ctx, const LevelView& view, int p, const std::arra
         if (over_budget && level < ctx.frame.max_depth) ctx.stats.budget_fills += 1;
         return;
     }
-    use_pass(ctx, Pass::PortalMark, level);
+    switch (ctx.renderer.portals[p].kind) {
+        case layout::PortalKind::Mirror:
+            draw_mirror(ctx, view, p, rects);
+            return;
+        case layout::PortalKind::Window:
+            draw_window(ctx, view, p, rects);
+            return;
+        case layout::PortalKind::Door:
+            break;
+    }
+    use_pass(ctx, view, Pass::PortalMark, level);
     draw_portal_box(ctx, view, p, rects);
-    clear_depth_in_portal(ctx, level + 1);
+    clear_depth_in_portal(ctx, view, level + 1);
 
     ctx.stats.portal_passes_drawn += 1;
     draw_level(ctx, child_view(ctx, view, p, rects));
 
     if (ctx.frame.cull_portals) state.scissor(scissor_of(ctx, rects, view));
-    use_pass(ctx, Pass::PortalUnmark, level + 1);
+    use_pass(ctx, view, Pass::PortalUnmark, level + 1);
     draw_portal_box(ctx, view, p, rects);
 }
 
@@ -80,7 +96,7 @@ std::vector<GLuint> test_portal_visibility(DrawContext& ctx, const LevelView& vi
                                            const std::vector<std::array<NdcRect, 2>>& visible) {
     RendererData& r = ctx.renderer;
     std::vector<GLuint> queries(portals.size(), 0);
-    use_pass(ctx, Pass::PortalTest, view.level);
+    use_pass(ctx, view, Pass::PortalTest, view.level);
     for (size_t k = 0; k < portals.size(); ++k) {
         if (visible[k][0].empty() && visible[k][1].empty()) continue;
         if (ctx.mark_queries_used == r.mark_queries.size())
@@ -130,12 +146,12 @@ void draw_level(DrawContext& ctx, const LevelView& view) {
     // Portal boxes into depth first, so that portals and surfaces occlude each
     // other, and the cell's surfaces behind a portal fail the depth test
     // instead of being drawn and then covered by the view through it.
-    use_pass(ctx, Pass::PortalDepth, level);
+    use_pass(ctx, view, Pass::PortalDepth, level);
     for (size_t k = 0; k < portals.size(); ++k)
         if (!visible[k][0].empty() || !visible[k][1].empty()) draw_portal_box(ctx, view, portals[k], visible[k]);
 
     // The cell's own surfaces.
-    use_pass(ctx, Pass::Scene, level);
+    use_pass(ctx, view, Pass::Scene, level);
     set_eye_uniforms(ctx, view, view_rects);
     set_cell_id(ctx, static_cast<unsigned>(view.cell + 1), false);
     {
@@ -163,7 +179,10 @@ void draw_level(DrawContext& ctx, const LevelView& view) {
             glBeginConditionalRender(tests[k], GL_QUERY_WAIT);
             ctx.conditional = true;
         }
-        if (level == 0 && ctx.frame.portal_texture_scale > 0.0) draw_portal_via_texture(ctx, view, portals[k], rects, k);
+        // Mirrors and windows always take the stencil path: their views are
+        // blended in place (portal_glass.cpp).
+        const bool door = r.portals[portals[k]].kind == layout::PortalKind::Door;
+        if (level == 0 && door && ctx.frame.portal_texture_scale > 0.0) draw_portal_via_texture(ctx, view, portals[k], rects, k);
         else if (ctx.profiler && level == 0) draw_top_portal_profiled(ctx, view, portals[k], rects);
         else draw_portal(ctx, view, portals[k], rects);
         if (tests[k]) {

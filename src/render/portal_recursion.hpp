@@ -21,6 +21,8 @@ struct DrawContext {
     math::dmat4 projection{1.0};
     FrameProfiler* profiler = nullptr;  // null unless FrameDesc::profile
     size_t mark_queries_used = 0;       // of RendererData::mark_queries, this frame
+    const Target* target = nullptr;     // what is drawn into (its colour is copied for windows)
+    size_t saved_colours_used = 0;      // of RendererData::saved_colours, by windows being drawn
     bool conditional = false;           // inside a portal's conditional rendering
 };
 
@@ -30,8 +32,9 @@ void draw_level(DrawContext& ctx, const LevelView& view);
 
 // --- Shared by the stencil and the render-to-texture portals (portal_draw.cpp).
 
-// The pass's state, for the frame's depth mode, with the stencil reference.
-void use_pass(DrawContext& ctx, Pass pass, int stencil_ref);
+// The pass's state, for the frame's depth mode and the view's winding, with
+// the stencil reference.
+void use_pass(DrawContext& ctx, const LevelView& view, Pass pass, int stencil_ref);
 
 // The pixel rectangle (GL window coordinates) covering both eyes' rects.
 gl::ScissorRect scissor_of(const DrawContext& ctx, const std::array<NdcRect, 2>& rects, const LevelView& view);
@@ -46,8 +49,36 @@ void draw_range(DrawContext& ctx, const scene::IndexRange& range);
 // eyes in front of it, the inner faces for eyes in its column.
 void draw_portal_box(DrawContext& ctx, const LevelView& view, int portal, const std::array<NdcRect, 2>& rects);
 
-// The view through `portal` (of view.cell) into its target's room.
-LevelView child_view(const DrawContext& ctx, const LevelView& view, int portal, const std::array<NdcRect, 2>& rects);
+// The view through `portal` (of view.cell, a door or a window) into its
+// target's room, with the given share of the pixels.
+LevelView child_view(const DrawContext& ctx, const LevelView& view, int portal, const std::array<NdcRect, 2>& rects,
+                     double weight_factor = 1.0);
+
+// The view reflected in `portal` (of view.cell, a mirror or a window): the
+// same cell from the eyes mirrored in its plane, clipped at it.
+LevelView reflected_view(const DrawContext& ctx, const LevelView& view, int portal,
+                         const std::array<NdcRect, 2>& rects, double weight_factor);
+
+// --- Mirrors and windows (portal_glass.cpp).
+
+// A visible mirror or window of `view` below the recursion limit: the view(s)
+// through it, tinted and blended, drawn where it is the visible surface.
+void draw_mirror(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects);
+void draw_window(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects);
+
+// The window blend's program for single-sample or multisampled targets,
+// built on first use; prepare_frame makes the ones a frame may need.
+Result<void> prepare_window_blend(RendererData& r, bool multisample);
+
+// --- Shared steps of portal_recursion.cpp.
+
+// Depth back to far where the stencil equals stencil_ref.
+void clear_depth_in_portal(DrawContext& ctx, const LevelView& view, int stencil_ref);
+
+// One full-target triangle with the bound program (the stencil limits it).
+void draw_full_target(DrawContext& ctx);
+
+void set_cell_id(const DrawContext& ctx, unsigned id, bool unshaded);
 
 // --- Render-to-texture portals (portal_texture.cpp).
 

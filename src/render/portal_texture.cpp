@@ -54,6 +54,7 @@ void draw_portal_via_texture(DrawContext& ctx, const LevelView& view, int p, con
     state.viewport({0, 0, texture.width, texture.height});
     clear_target(r, texture, view.level + 1);
     DrawContext inside{r, ctx.program, inner, ctx.stats, ctx.projection, ctx.profiler};
+    inside.target = &texture;
     ctx.stats.portal_passes_drawn += 1;
     draw_level(inside, child_view(ctx, view, p, rects));
 
@@ -68,7 +69,7 @@ void draw_portal_via_texture(DrawContext& ctx, const LevelView& view, int p, con
     glBindTextureUnit(0, texture.color_texture.get());
     glBindTextureUnit(1, texture.ids_texture.get());
     DrawContext outside{r, shows, f, ctx.stats, ctx.projection, nullptr};
-    use_pass(outside, Pass::PortalTexture, view.level);
+    use_pass(outside, view, Pass::PortalTexture, view.level);
     {
         const ColourQueryScope colour(ctx.profiler);
         draw_portal_box(outside, view, p, rects);

@@ -48,6 +48,11 @@ Result<void> prepare_frame(RendererData& r, const FrameDesc& frame) {
     if (Result<void> made = ensure_target(r, 2 * frame.eye_width, frame.eye_height, frame.depth); !made) return made;
     if (Result<void> made = ensure_program(r, frame.stereo); !made) return made;
     if (Result<void> made = ensure_multisampled(r, frame); !made) return made;
+    if (r.has_windows) {
+        if (Result<void> made = prepare_window_blend(r, false); !made) return made;
+        if (frame.samples > 1)
+            if (Result<void> made = prepare_window_blend(r, true); !made) return made;
+    }
     if (frame.portal_texture_scale <= 0.0) return {};
     if (frame.stereo != StereoMode::ClipShift) return Error{"render-to-texture portals need --stereo clip-shift"};
     if (!r.portal_texture_program) {
@@ -133,7 +138,8 @@ Result<Renderer> Renderer::create(gl::StateCache& state, const layout::Layout& l
     r->portals.reserve(layout.portals.size());
     for (size_t i = 0; i < layout.portals.size(); ++i) {
         const layout::Portal& p = layout.portals[i];
-        r->portals.push_back({p.rect, p.room, p.target, scene.portals[i]});
+        r->portals.push_back({p.rect, p.room, p.target, scene.portals[i], p.kind, p.tint, p.reflectance});
+        r->has_windows = r->has_windows || p.kind == layout::PortalKind::Window;
     }
     r->gpu = upload_scene(scene);
     r->empty_vao = gl::create_vertex_array();
@@ -169,6 +175,7 @@ Result<void> Renderer::draw(const FrameDesc& frame, FrameStats* stats_out) {
     FrameStats stats;
     FrameProfiler profiler;
     DrawContext ctx{r, program, frame, stats, projection_of(frame), frame.profile ? &profiler : nullptr};
+    ctx.target = &target;
     draw_stereo(ctx);
     resolve_multisampled(r, frame);
     // Nothing of this renderer stays bound: the cache is the context's, and

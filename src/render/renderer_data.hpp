@@ -21,17 +21,29 @@ namespace impossible::render {
 struct PortalInfo {
     math::PortalRect rect;
     int room = -1;        // the room it stands in
-    int target = -1;      // the portal it leads to
-    scene::PortalMesh mesh;  // index ranges of its box
+    int target = -1;      // the portal it leads to; -1 for a mirror
+    scene::PortalMesh mesh;  // index ranges of its box (a mirror's or window's: the front alone)
+    layout::PortalKind kind = layout::PortalKind::Door;
+    glm::dvec3 tint{1.0};
+    double reflectance = 0.0;
 };
 
 inline constexpr int kStereoModeCount = 3;
+
+// A window's reflected view, copied aside while the view through it is drawn
+// (portal_glass.cpp): a texture like the target's colour, one per window
+// nesting level in use.
+struct SavedColour {
+    gl::Texture texture;
+    int width = 0, height = 0, samples = 1;
+};
 
 struct RendererData {
     gl::StateCache* state = nullptr;  // the context's; outlives the renderer
     std::vector<scene::IndexRange> cells;  // per room, into gpu's index buffer
     std::vector<scene::CellFrame> frames;  // per room: what its vertices are relative to
     std::vector<PortalInfo> portals;       // per layout portal
+    bool has_windows = false;              // the window blend's programs are needed
     scene::PortalLinks links;              // M_AB per portal, the portals of each room
     GpuScene gpu;
     std::optional<SceneProgram> programs[kStereoModeCount];  // per StereoMode, built on first use
@@ -42,6 +54,8 @@ struct RendererData {
     std::vector<gl::Query> mark_queries;  // occlusion queries of portal marks, reused every frame
     std::optional<SceneProgram> portal_texture_program;  // render-to-texture portals, built on first use
     std::vector<Target> portal_textures;  // one per portal of the head's cell, reused every frame
+    std::optional<WindowBlendProgram> window_blend[2];  // single-sample, multisample copies; built on first use
+    std::vector<SavedColour> saved_colours;  // per window nesting level, made on first use
 };
 
 // Clears a target to the background colour, id 0, far depth (for its depth

@@ -74,6 +74,23 @@ Result<ClearDepthProgram> build_clear_depth_program() {
     ClearDepthProgram out;
     out.program = std::move(*built);
     out.far_depth = glGetUniformLocation(out.program.get(), "u_far_depth");
+    out.color = glGetUniformLocation(out.program.get(), "u_color");
+    return out;
+}
+
+Result<WindowBlendProgram> build_window_blend_program(bool multisample) {
+    Result<gl::Program> built = gl::build_program(
+        {embedded_shader(GL_VERTEX_SHADER, "shaders/clear_depth.vert.glsl"),
+         embedded_shader(GL_FRAGMENT_SHADER, "shaders/window_blend.frag.glsl")},
+        multisample ? "#define SAVED_MULTISAMPLE\n" : "");
+    if (!built) return Error{built.error()};
+    WindowBlendProgram out;
+    out.program = std::move(*built);
+    const GLuint name = out.program.get();
+    out.use_saved = glGetUniformLocation(name, "u_use_saved");
+    out.scale = glGetUniformLocation(name, "u_scale");
+    out.constant = glGetUniformLocation(name, "u_constant");
+    glProgramUniform1i(name, glGetUniformLocation(name, "u_saved"), 0);
     return out;
 }
 

@@ -35,8 +35,21 @@ Result<SceneProgram> build_portal_texture_program();
 struct ClearDepthProgram {
     gl::Program program;
     GLint far_depth = -1;  // float: clip-space z of the far plane (w = 1)
+    GLint color = -1;      // vec4: the colour it writes where colour is not masked (id 0)
 };
 
 Result<ClearDepthProgram> build_clear_depth_program();
+
+// The full-target triangle of a window's blend (shaders/window_blend.frag.glsl):
+// r · the reflected view copied aside, added to the colour by the blend.
+struct WindowBlendProgram {
+    gl::Program program;
+    GLint use_saved = -1;  // bool
+    GLint scale = -1;      // vec3: r
+    GLint constant = -1;   // vec3: r · fill colour, without a copy
+};
+
+// `multisample`: the copy is a multisample texture, read per sample.
+Result<WindowBlendProgram> build_window_blend_program(bool multisample);
 
 }  // namespace impossible::render

@@ -59,7 +59,8 @@ Scene build_scene(const layout::Layout& layout) {
         const math::PortalRect& rect = layout.portals[p].rect;
         out.origin = scene.frames[static_cast<std::size_t>(layout.portals[p].room)].origin;
         const FrontGrid front = fronts[p] ? *fronts[p] : corner_front(out, rect);
-        scene.portals.push_back(append_portal_box(out, rect, front));
+        const bool box = layout.portals[p].kind == layout::PortalKind::Door;
+        scene.portals.push_back(box ? append_portal_box(out, rect, front) : append_portal_front(out, rect, front));
     }
     scene.links = link_portals(layout);
     return scene;

@@ -40,17 +40,11 @@ std::vector<glm::vec3> side_path(const FrontGrid& f, int side) {
 
 }  // namespace
 
-PortalMesh append_portal_box(MeshWriter& out, const math::PortalRect& rect,
-                             const FrontGrid& front) {
-    math::dvec3 c[8];
-    math::box_corners(rect, c);
+PortalMesh append_portal_front(MeshWriter& out, const math::PortalRect& rect, const FrontGrid& front) {
     const glm::dvec3 n = rect.normal;
-    const glm::dvec3 u = rect.up;
-    const glm::dvec3 r = math::portal_right(rect);
     PortalMesh mesh;
-
-    // Front: the grid's cells, counter-clockwise seen from +n (r × u = n).
-    std::uint32_t first = out.index_count();
+    // The grid's cells, counter-clockwise seen from +n (r × u = n).
+    const std::uint32_t first = out.index_count();
     std::vector<std::uint32_t> ids;
     for (const glm::vec3& p : front.points) ids.push_back(out.vertex(p, n, kPortalFillColor, 0.0));
     const auto id = [&](int i, int j) { return ids[static_cast<std::size_t>(j * front.cols + i)]; };
@@ -61,11 +55,22 @@ PortalMesh append_portal_box(MeshWriter& out, const math::PortalRect& rect,
         }
     }
     mesh.front = out.range_since(first);
+    return mesh;
+}
+
+PortalMesh append_portal_box(MeshWriter& out, const math::PortalRect& rect,
+                             const FrontGrid& front) {
+    math::dvec3 c[8];
+    math::box_corners(rect, c);
+    const glm::dvec3 n = rect.normal;
+    const glm::dvec3 u = rect.up;
+    const glm::dvec3 r = math::portal_right(rect);
+    PortalMesh mesh = append_portal_front(out, rect, front);
 
     // Inner: each side face is the polygon (front path, back corner s+1, back
     // corner s), fanned from back corner s so the front path keeps every point
     // the wall has there. Normals point into the box.
-    first = out.index_count();
+    const std::uint32_t first = out.index_count();
     const std::array<glm::dvec3, 4> side_normal = {u, -r, -u, r};
     for (int s = 0; s < 4; ++s) {
         const glm::dvec3& normal = side_normal[static_cast<std::size_t>(s)];

@@ -38,4 +38,8 @@ FrontGrid corner_front(const MeshWriter& out, const math::PortalRect& rect);
 // kPortalFillColor, checker 0.
 PortalMesh append_portal_box(MeshWriter& out, const math::PortalRect& rect, const FrontGrid& front);
 
+// A mirror's or window's one-sided rectangle facing +n: the front alone,
+// no inner faces (layout-format.md, "Mirrors and windows").
+PortalMesh append_portal_front(MeshWriter& out, const math::PortalRect& rect, const FrontGrid& front);
+
 }  // namespace impossible::scene

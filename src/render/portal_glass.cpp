@@ -1,0 +1,181 @@
+// Mirrors and windows (layout-format.md, "Mirrors and windows"; steps 4 and 5
+// of "What a pixel shows") inside the stencil recursion, as doors are.
+//
+// A mirror at level L: mark its pixels (L → L + 1) and clear their depth,
+// draw its room from the mirrored eyes (the winding flips; the mirror's plane
+// clips), multiply the pixels by the tint, unmark.
+//
+// A window's pixels show two views blended by their final colours,
+// (1 - r) · tint · C_through + r · C_reflect. Blending while drawing would
+// blend every overdrawn fragment again (a wall, then a prop in front of it),
+// so each view is drawn whole first: the reflected view, whose colours are
+// copied aside; the pixels back to the background; the view through the
+// window, which writes the ids (the spec's id is the through view's); then
+// one full-target triangle, limited by the stencil to the window's pixels,
+// whose blend adds r · the copy to (1 - r) · tint · the colour. Each final
+// pixel of each view is blended exactly once.
+//
+// A window branch whose weight falls below scene::kMinBranchWeight is not
+// drawn and shows the fill colour, as the tracer does.
+#include <algorithm>
+#include <cassert>
+
+#include "render/portal_recursion.hpp"
+#include "scene/shading.hpp"
+
+namespace impossible::render {
+namespace {
+
+bool is_white(const glm::dvec3& c) { return c.x == 1.0 && c.y == 1.0 && c.z == 1.0; }
+
+void limit_to_portal(DrawContext& ctx, const LevelView& view, const std::array<NdcRect, 2>& rects) {
+    if (ctx.frame.cull_portals) ctx.renderer.state->scissor(scissor_of(ctx, rects, view));
+}
+
+// Stencil level → level + 1 where the portal is the visible surface, and
+// depth there back to far.
+void mark(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
+    limit_to_portal(ctx, view, rects);
+    use_pass(ctx, view, Pass::PortalMark, view.level);
+    draw_portal_box(ctx, view, p, rects);
+    clear_depth_in_portal(ctx, view, view.level + 1);
+}
+
+// Back to level, with the portal's depth, so that it occludes the rest of
+// the level.
+void unmark(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
+    limit_to_portal(ctx, view, rects);
+    use_pass(ctx, view, Pass::PortalUnmark, view.level + 1);
+    draw_portal_box(ctx, view, p, rects);
+}
+
+// A full-target triangle through the clear program, in a region pass.
+void draw_region(DrawContext& ctx, const LevelView& view, Pass pass) {
+    RendererData& r = ctx.renderer;
+    use_pass(ctx, view, pass, view.level + 1);
+    const GLuint program = r.clear_depth.program.get();
+    r.state->program(program);
+    glProgramUniform1f(program, r.clear_depth.far_depth, ctx.frame.depth == DepthMode::ReversedZ ? 0.0f : 1.0f);
+    const glm::dvec3 bg = scene::kBackgroundColor;
+    glProgramUniform4f(program, r.clear_depth.color, float(bg.r), float(bg.g), float(bg.b), 1.0f);
+    draw_full_target(ctx);
+    r.state->program(ctx.program.program.get());
+}
+
+// The pixels of the drawing target in the portal's scissor (all of them
+// without culling).
+gl::ScissorRect region_of(const DrawContext& ctx, const LevelView& view, const std::array<NdcRect, 2>& rects) {
+    const Target& t = *ctx.target;
+    if (!ctx.frame.cull_portals) return {0, 0, t.width, t.height};
+    gl::ScissorRect s = scissor_of(ctx, rects, view);
+    s.width = std::max(0, std::min(s.width, t.width - s.x));
+    s.height = std::max(0, std::min(s.height, t.height - s.y));
+    return s;
+}
+
+// Copies the region's colour into the next free saved colour (made, or
+// remade for another size, on first use); returns its texture.
+GLuint save_colour(DrawContext& ctx, const gl::ScissorRect& region) {
+    const Target& t = *ctx.target;
+    std::vector<SavedColour>& saves = ctx.renderer.saved_colours;
+    const size_t slot = ctx.saved_colours_used++;
+    if (saves.size() <= slot) saves.resize(slot + 1);
+    SavedColour& s = saves[slot];
+    const GLenum kind = t.samples > 1 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D;
+    if (s.texture.get() == 0 || s.width != t.width || s.height != t.height || s.samples != t.samples) {
+        s.texture = gl::create_texture(kind);
+        if (t.samples > 1)
+            glTextureStorage2DMultisample(s.texture.get(), t.samples, GL_RGBA8, t.width, t.height, GL_TRUE);
+        else
+            glTextureStorage2D(s.texture.get(), 1, GL_RGBA8, t.width, t.height);
+        s.width = t.width;
+        s.height = t.height;
+        s.samples = t.samples;
+    }
+    if (region.width > 0 && region.height > 0) {
+        const bool from_texture = t.color_texture.get() != 0;
+        glCopyImageSubData(from_texture ? t.color_texture.get() : t.color.get(),
+                           from_texture ? GL_TEXTURE_2D : GL_RENDERBUFFER, 0, region.x, region.y, 0, s.texture.get(),
+                           kind, 0, region.x, region.y, 0, region.width, region.height, 1);
+    }
+    return s.texture.get();
+}
+
+// colour ← r · (the copy, or the fill colour without one) + colour · (1 - r) · tint.
+void blend_window(DrawContext& ctx, const LevelView& view, const PortalInfo& w, GLuint saved) {
+    RendererData& r = ctx.renderer;
+    const std::optional<WindowBlendProgram>& slot = r.window_blend[ctx.target->samples > 1 ? 1 : 0];
+    assert(slot);  // prepare_window_blend made it with the frame
+    const WindowBlendProgram& blend = *slot;
+    const double k = w.reflectance;
+    const glm::dvec3 through = (1.0 - k) * w.tint;
+    r.state->blend_color(float(through.r), float(through.g), float(through.b), 1.0f);
+    use_pass(ctx, view, Pass::WindowBlend, view.level + 1);
+    const GLuint program = blend.program.get();
+    r.state->program(program);
+    glProgramUniform1i(program, blend.use_saved, saved != 0 ? 1 : 0);
+    glProgramUniform3f(program, blend.scale, float(k), float(k), float(k));
+    const glm::dvec3 fill = k * scene::kPortalFillColor;
+    glProgramUniform3f(program, blend.constant, float(fill.r), float(fill.g), float(fill.b));
+    if (saved != 0) glBindTextureUnit(0, saved);
+    draw_full_target(ctx);
+    if (saved != 0) glBindTextureUnit(0, 0);
+    r.state->program(ctx.program.program.get());
+}
+
+}  // namespace
+
+Result<void> prepare_window_blend(RendererData& r, bool multisample) {
+    std::optional<WindowBlendProgram>& slot = r.window_blend[multisample ? 1 : 0];
+    if (slot) return {};
+    Result<WindowBlendProgram> built = build_window_blend_program(multisample);
+    if (!built) return Error{built.error()};
+    slot = std::move(*built);
+    return {};
+}
+
+void draw_mirror(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
+    const PortalInfo& m = ctx.renderer.portals[p];
+    mark(ctx, view, p, rects);
+    ctx.stats.portal_passes_drawn += 1;
+    draw_level(ctx, reflected_view(ctx, view, p, rects, scene::max_channel(m.tint)));
+    if (!is_white(m.tint)) {
+        limit_to_portal(ctx, view, rects);
+        ctx.renderer.state->blend_color(float(m.tint.r), float(m.tint.g), float(m.tint.b), 1.0f);
+        draw_region(ctx, view, Pass::Tint);
+    }
+    unmark(ctx, view, p, rects);
+}
+
+void draw_window(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
+    const PortalInfo& w = ctx.renderer.portals[p];
+    const double k = w.reflectance;
+    const double through_factor = (1.0 - k) * scene::max_channel(w.tint);
+    const bool reflect = view.weight * k >= scene::kMinBranchWeight;
+    const bool through = view.weight * through_factor >= scene::kMinBranchWeight;
+    mark(ctx, view, p, rects);
+
+    GLuint saved = 0;
+    if (reflect) {
+        ctx.stats.portal_passes_drawn += 1;
+        draw_level(ctx, reflected_view(ctx, view, p, rects, k));
+        limit_to_portal(ctx, view, rects);
+        saved = save_colour(ctx, region_of(ctx, view, rects));
+        draw_region(ctx, view, Pass::ClearRegion);
+    }
+    if (through) {
+        ctx.stats.portal_passes_drawn += 1;
+        draw_level(ctx, child_view(ctx, view, p, rects, through_factor));
+        limit_to_portal(ctx, view, rects);
+    } else {
+        use_pass(ctx, view, Pass::PortalFill, view.level + 1);
+        set_cell_id(ctx, 255, true);
+        draw_portal_box(ctx, view, p, rects);
+        ctx.stats.portal_fills += 1;
+    }
+    blend_window(ctx, view, w, saved);
+    if (reflect) ctx.saved_colours_used -= 1;
+    unmark(ctx, view, p, rects);
+}
+
+}  // namespace impossible::render
