@@ -105,7 +105,7 @@ std::optional<SurfaceHit> hit_portal_box(const ScenePortal& portal, const dvec3&
     };
     const dvec3 box_min(-hw, -hh, -r.depth), box_max(hw, hh, 0.0);
     if (!portal.in_hole) try_face(2, 0.0, 1.0, box_min, box_max);  // the front rectangle, facing +n
-    if (math::in_column(r, origin)) {
+    if (portal.kind == layout::PortalKind::Door && math::in_column(r, origin)) {
         // Inner faces, facing into the box.
         try_face(0, hw, -1.0, box_min, box_max);
         try_face(0, -hw, 1.0, box_min, box_max);

@@ -40,7 +40,9 @@ std::optional<double> hit_axis_rect(const AxisRect& rect, const dvec3& origin, c
 // plane: wall and door then share one test, so no ray slips between the
 // hole's edge and the door's edge, even where the door lies up to the hole
 // tolerance off the face's plane. The rasteriser draws the front face in the
-// face's plane too (scene/room_mesh.cpp).
+// face's plane too (scene/room_mesh.cpp). Mirrors and windows fill their
+// holes the same way: the face is seen only from inside the room, so they
+// are seen only from their front.
 std::optional<SurfaceHit> hit_room_face(const RoomFace& face, const Scene& scene, const dvec3& origin,
                                         const dvec3& dir, const ClipPlane& clip);
 
@@ -56,8 +58,10 @@ std::optional<SurfaceHit> hit_triangle(const PropTriangle& tri, const dvec3& ori
 
 // A portal's box for a ray from `origin`, which is the (possibly virtual)
 // eye: the front rectangle (facing +n) always, unless the portal fills a
-// room face's hole (then hit_room_face meets it); the four side faces and
-// the back face (facing inwards) only when the eye is in the box's column.
+// room face's hole (then hit_room_face meets it); for a door, the four side
+// faces and the back face (facing inwards) only when the eye is in the box's
+// column. A mirror or a window has no box: only its front rectangle, which
+// lies in a hole in any valid layout, so this finds nothing for it there.
 // The nearest such face that the clip plane keeps.
 std::optional<SurfaceHit> hit_portal_box(const ScenePortal& portal, const dvec3& origin, const dvec3& dir,
                                          const ClipPlane& clip);

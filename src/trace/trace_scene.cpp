@@ -77,15 +77,20 @@ Scene prepare_scene(const layout::Layout& layout) {
     }
     for (int i = 0; i < portal_count; ++i) {
         const layout::Portal& p = layout.portals[i];
-        if (p.room < 0 || p.room >= room_count || p.target < 0 || p.target >= portal_count)
+        const bool mirror = p.kind == layout::PortalKind::Mirror;
+        if (p.room < 0 || p.room >= room_count || (!mirror && (p.target < 0 || p.target >= portal_count)))
             throw std::invalid_argument("portal '" + p.id + "' has no valid room or target");
         ScenePortal sp;
         sp.rect = p.rect;
         sp.right = math::portal_right(p.rect);
         sp.room = p.room;
-        sp.target = p.target;
+        sp.target = mirror ? -1 : p.target;
+        sp.kind = p.kind;
+        if (p.kind != layout::PortalKind::Door) sp.tint = p.tint;
+        if (p.kind == layout::PortalKind::Window) sp.reflectance = p.reflectance;
         sp.to_local = math::portal_frame_inverse(p.rect);
-        sp.transfer = math::transfer_matrix(p.rect, layout.portals[p.target].rect);
+        if (!mirror) sp.transfer = math::transfer_matrix(p.rect, layout.portals[p.target].rect);
+        if (p.kind != layout::PortalKind::Door) sp.reflection = math::reflection_matrix(p.rect);
         sp.clip_tolerance = 1e-9 * (1.0 + glm::length(p.rect.center));
         scene.portals.push_back(sp);
 

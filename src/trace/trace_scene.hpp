@@ -55,13 +55,20 @@ struct PropTriangle {
     dvec3 color{0.8};
 };
 
+// A door, mirror or window (layout-format.md, "Mirrors and windows"). A door
+// is a box; a mirror or a window is only its front rectangle, one-sided,
+// facing +n (it always fills a hole, so hit_room_face meets it).
 struct ScenePortal {
     math::PortalRect rect;
     dvec3 right{0.0};          // u × n
     int room = -1;             // the room it belongs to
-    int target = -1;           // the paired portal
+    int target = -1;           // the paired portal; -1 for a mirror
+    layout::PortalKind kind = layout::PortalKind::Door;
+    dvec3 tint{1.0};           // mirror, window: multiplies what is seen through or in it
+    double reflectance = 0.0;  // window: the reflection's share r
     dmat4 to_local{1.0};       // layout → portal frame (x right, y up, z normal)
-    dmat4 transfer{1.0};       // M_AB, onto the target portal
+    dmat4 transfer{1.0};       // M_AB, onto the target portal (door, window)
+    dmat4 reflection{1.0};     // M_P, the reflection in the plane (mirror, window)
     double clip_tolerance = 0.0;  // 1e-9 · (1 + |centre|): "strictly in front" of this plane
     bool in_hole = false;      // fills a hole of one of its room's faces
 };
@@ -91,7 +98,8 @@ AxisRect room_face_rect(const dvec3& room_min, const dvec3& room_max, layout::Fa
 bool cuts_hole(const AxisRect& face, const math::PortalRect& rect);
 
 // Builds the tracer's scene. The layout must be valid (as the loader returns
-// it); portal targets and rooms out of range throw std::invalid_argument.
+// it); portal rooms out of range, and targets out of range for a door or a
+// window, throw std::invalid_argument (a mirror's target is not read).
 Scene prepare_scene(const layout::Layout& layout);
 
 }  // namespace impossible::trace

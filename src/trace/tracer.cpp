@@ -58,43 +58,141 @@ Nearest nearest_in_room(const Scene& scene, int room_index, const dvec3& origin,
     return nearest;
 }
 
+// One line of sight being followed (the eye's, or a window's branch): the
+// (possibly virtual) eye and direction, the room, the clipping plane, the
+// portals passed since the real eye and the view's weight (the product of
+// the largest channel of every factor multiplied into its colour since the
+// eye; scene/shading.hpp, kMinBranchWeight).
+struct Ray {
+    dvec3 origin{0.0};
+    dvec3 dir{0.0};
+    int room = -1;
+    ClipPlane clip;  // none for the real eye
+    int portals_passed = 0;
+    double weight = 1.0;
+};
+
+// Step 2: through door (or window) A into its target B's room, from the
+// virtual eye; B's plane clips when the virtual eye is behind it.
+void pass_through(const Scene& scene, const ScenePortal& a, Ray& ray) {
+    const ScenePortal& b = scene.portals[a.target];
+    ray.origin = dvec3(a.transfer * dvec4(ray.origin, 1.0));
+    ray.dir = dmat3(a.transfer) * ray.dir;
+    ray.room = b.room;
+    ++ray.portals_passed;
+    ray.clip.active = math::signed_distance(b.rect, ray.origin) < 0.0;
+    ray.clip.plane = math::portal_plane(b.rect);
+    ray.clip.tolerance = b.clip_tolerance;
+}
+
+// Step 4: reflected in mirror (or window) P, in the same room, clipped by
+// P's plane, which the virtual eye is always behind. The weight is the
+// caller's to set.
+Ray reflected(const ScenePortal& p, const Ray& ray) {
+    Ray r = ray;
+    r.origin = dvec3(p.reflection * dvec4(ray.origin, 1.0));
+    r.dir = dmat3(p.reflection) * ray.dir;
+    ++r.portals_passed;
+    r.clip.active = true;
+    r.clip.plane = math::portal_plane(p.rect);
+    r.clip.tolerance = p.clip_tolerance;
+    return r;
+}
+
+// Follows `ray` ("What a pixel shows", steps 1-5) and returns the colour it
+// shows. The loop follows one path: through doors, mirrors and windows'
+// through branches. A window's reflected branch is followed by a recursive
+// call where the through branch goes on too, and by this loop where the
+// through branch is cut. Doors and mirrors never branch, so a ray that meets
+// no window neither allocates nor recurses. The nesting is at most max_depth
+// (each level passes a portal), and below 256 whatever max_depth is: a call
+// is nested only where both weights, w · r and w · (1 - r) · max(tint), are
+// at least kMinBranchWeight = 1/256, and its weight is at most
+// w · r = w - w · (1 - r) ≤ w - 1/256.
+//
+// While `main` is set, the loop's path is the main one (the id's) and its end
+// is written there (all of TraceHit but the colour); it ends where that path
+// ends, or at a window whose through branch is cut by weight (id 255).
+dvec3 follow(const Scene& scene, Ray ray, int max_depth, TraceHit* main) {
+    dvec3 done(0.0);    // the finished branches, each times its factor
+    dvec3 factor(1.0);  // multiplies what the ray shows from here on
+    auto end_main = [&](int id, int room, const dvec3& point, const dvec3& normal) {
+        if (!main) return;
+        main->id = id;
+        main->room = room;
+        main->portals_passed = ray.portals_passed;
+        main->point = point;
+        main->normal = normal;
+        main->origin = ray.origin;
+        main->dir = ray.dir;
+        main = nullptr;
+    };
+    for (;;) {
+        const Nearest n = nearest_in_room(scene, ray.room, ray.origin, ray.dir, ray.clip);
+        if (!n.found) {
+            end_main(kIdNothing, -1, dvec3(0.0), dvec3(0.0));
+            return done + factor * scene::kBackgroundColor;
+        }
+        const dvec3 point = ray.origin + n.t * ray.dir;
+        if (n.portal < 0) {
+            end_main(1 + ray.room, ray.room, point, n.normal);
+            return done + factor * scene::shade(n.base, n.normal, point, n.checker);
+        }
+        if (ray.portals_passed >= max_depth) {  // step 3, for every kind
+            end_main(kIdDepthLimit, ray.room, point, n.normal);
+            return done + factor * scene::kPortalFillColor;
+        }
+        const ScenePortal& p = scene.portals[n.portal];
+        switch (p.kind) {
+            case layout::PortalKind::Door:
+                pass_through(scene, p, ray);
+                break;
+            case layout::PortalKind::Mirror: {  // step 4; never cut by weight
+                const double weight = ray.weight * scene::max_channel(p.tint);
+                ray = reflected(p, ray);
+                ray.weight = weight;
+                factor *= p.tint;
+                break;
+            }
+            case layout::PortalKind::Window: {  // step 5
+                const double r = p.reflectance;
+                Ray back = reflected(p, ray);
+                back.weight = ray.weight * r;
+                const dvec3 back_factor = factor * r;
+                const double through_weight = ray.weight * ((1.0 - r) * scene::max_channel(p.tint));
+                const dvec3 through_factor = factor * ((1.0 - r) * p.tint);
+                const bool back_on = back.weight >= scene::kMinBranchWeight;
+                const bool through_on = through_weight >= scene::kMinBranchWeight;
+                if (!back_on) done += back_factor * scene::kPortalFillColor;
+                if (through_on) {
+                    if (back_on) done += back_factor * follow(scene, back, max_depth, nullptr);
+                    pass_through(scene, p, ray);
+                    ray.weight = through_weight;
+                    factor = through_factor;
+                    break;
+                }
+                // The through branch is cut: the main path ends here, as at the limit.
+                end_main(kIdDepthLimit, ray.room, point, n.normal);
+                done += through_factor * scene::kPortalFillColor;
+                if (!back_on) return done;
+                ray = back;
+                factor = back_factor;
+                break;
+            }
+        }
+    }
+}
+
 }  // namespace
 
 TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, int room, int max_depth) {
     TraceHit hit;
-    hit.origin = origin;
-    hit.dir = dir;
-    ClipPlane clip;  // none for the real eye
-    for (;;) {
-        const Nearest n = nearest_in_room(scene, room, hit.origin, hit.dir, clip);
-        if (!n.found) {
-            hit.color = scene::kBackgroundColor;
-            return hit;  // id 0, room -1
-        }
-        hit.room = room;
-        hit.point = hit.origin + n.t * hit.dir;
-        hit.normal = n.normal;
-        if (n.portal < 0) {
-            hit.id = 1 + room;
-            hit.color = scene::shade(n.base, n.normal, hit.point, n.checker);
-            return hit;
-        }
-        if (hit.portals_passed >= max_depth) {
-            hit.id = kIdDepthLimit;
-            hit.color = scene::kPortalFillColor;
-            return hit;
-        }
-        // Step 2: continue from the virtual eye in the target room.
-        const ScenePortal& a = scene.portals[n.portal];
-        const ScenePortal& b = scene.portals[a.target];
-        hit.origin = dvec3(a.transfer * dvec4(hit.origin, 1.0));
-        hit.dir = dmat3(a.transfer) * hit.dir;
-        room = b.room;
-        ++hit.portals_passed;
-        clip.active = math::signed_distance(b.rect, hit.origin) < 0.0;
-        clip.plane = math::portal_plane(b.rect);
-        clip.tolerance = b.clip_tolerance;
-    }
+    Ray ray;
+    ray.origin = origin;
+    ray.dir = dir;
+    ray.room = room;
+    hit.color = follow(scene, ray, max_depth, &hit);
+    return hit;
 }
 
 std::uint8_t to_byte(double c) {

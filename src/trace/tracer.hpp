@@ -20,21 +20,27 @@ namespace impossible::trace {
 inline constexpr std::uint8_t kIdNothing = 0;
 inline constexpr std::uint8_t kIdDepthLimit = 255;
 
-// What one ray shows.
+// What one ray shows. `color` is the whole pixel's, with every window's
+// blend of its branches in it. The other fields describe the main path, the
+// one the id comes from: through doors, mirrors (reflected) and windows
+// (their through branch). That path ends on a surface, on nothing, at the
+// recursion limit, or at a window whose through branch is cut by the weight
+// rule (scene/shading.hpp, kMinBranchWeight: id 255, as at the limit).
 struct TraceHit {
     int id = kIdNothing;     // 1 + room index, kIdNothing, or kIdDepthLimit
-    int room = -1;           // the room the ray ended in (-1 when nothing was hit)
+    int room = -1;           // the room the path ended in (-1 when nothing was hit)
     dvec3 color{0.0};        // linear colour, 0..1
-    int portals_passed = 0;  // portals the ray went through
+    int portals_passed = 0;  // portals (doors, mirrors, windows) the path went through
     dvec3 point{0.0};        // the final hit, in the layout's coordinates (for the fill:
-                             // the point on the portal the ray could not pass)
+                             // the point on the portal the path could not pass)
     dvec3 normal{0.0};       // front-facing normal at `point`
     dvec3 origin{0.0};       // the final (possibly virtual) eye and direction
     dvec3 dir{0.0};
 };
 
 // Follows the ray from `origin` (an eye in room `room`) along `dir` (any
-// length but not zero), through at most `max_depth` portals. `room` must be a
+// length but not zero), through at most `max_depth` portals on any one line
+// of sight (a window's two branches each count it once). `room` must be a
 // valid room index.
 TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, int room, int max_depth);
 

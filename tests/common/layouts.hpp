@@ -37,6 +37,29 @@ inline layout::Portal make_portal(const std::string& id, int room, glm::dvec3 ce
     return p;
 }
 
+// A mirror of `room` (layout-format.md, "Mirrors and windows"): no target,
+// no depth (0, as the loader sets it). It must lie in a face of its room.
+inline layout::Portal make_mirror(const std::string& id, int room, glm::dvec3 center, glm::dvec3 normal,
+                                  double width = 1.0, double height = 2.0, glm::dvec3 tint = {1.0, 1.0, 1.0},
+                                  glm::dvec3 up = {0.0, 1.0, 0.0}) {
+    layout::Portal p = make_portal(id, room, center, normal, width, height, up, 0.0);
+    p.kind = layout::PortalKind::Mirror;
+    p.tint = tint;
+    return p;
+}
+
+// A window of `room`, target unset (pair it with add_pair): depth 0, as the
+// loader sets it. It must lie in a face of its room.
+inline layout::Portal make_window(const std::string& id, int room, glm::dvec3 center, glm::dvec3 normal,
+                                  double width = 1.0, double height = 2.0, glm::dvec3 tint = {1.0, 1.0, 1.0},
+                                  double reflectance = 0.1, glm::dvec3 up = {0.0, 1.0, 0.0}) {
+    layout::Portal p = make_portal(id, room, center, normal, width, height, up, 0.0);
+    p.kind = layout::PortalKind::Window;
+    p.tint = tint;
+    p.reflectance = reflectance;
+    return p;
+}
+
 // Appends the two portals and names each as the other's target.
 inline void add_pair(layout::Layout& l, layout::Portal a, layout::Portal b) {
     const int ia = static_cast<int>(l.portals.size());

@@ -20,8 +20,10 @@ namespace impossible::trace::test {
 using glm::dvec3;
 
 using impossible::test::add_pair;
+using impossible::test::make_mirror;
 using impossible::test::make_portal;
 using impossible::test::make_room;
+using impossible::test::make_window;
 
 inline dvec3 face_color(const layout::Room& room, layout::Face face) {
     return room.face_color[static_cast<int>(face)];
