@@ -271,6 +271,12 @@ std::optional<double> Checker::read_number(const Path& at, const json& value, Nu
                 return std::nullopt;
             }
             return v;
+        case NumberKind::Fraction:
+            if (v < 0.0 || v > 1.0) {
+                error(at, "must be in 0..1 (got " + shown + ")");
+                return std::nullopt;
+            }
+            return v;
     }
     return std::nullopt;
 }

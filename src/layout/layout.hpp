@@ -68,6 +68,9 @@ struct Room {
 // reflection of its own.
 enum class PortalKind { Door, Mirror, Window };
 
+// "door", "mirror" or "window", as written in a layout file.
+const char* kind_name(PortalKind kind);
+
 struct Portal {
     std::string id;
     int room = -1;          // index into Layout::rooms
