@@ -290,5 +290,34 @@ TEST(LayoutMirrors, ManyErrorsAtOnce) {
     }
 }
 
+TEST(LayoutMirrors, TheSummaryCountsEachKind) {
+    const Layout l = expect_valid(mirrors_and_windows());
+    const Summary s = summarize(l);
+    EXPECT_EQ(s.portals, 5);
+    EXPECT_EQ(s.pairs, 2);
+    EXPECT_EQ(s.door_pairs, 1);
+    EXPECT_EQ(s.window_pairs, 1);
+    EXPECT_EQ(s.mirrors, 1);
+    const std::string text = summary_text(l, s);
+    EXPECT_NE(text.find("portals: 5\npairs: 2\ndoor pairs: 1\nwindow pairs: 1\nmirrors: 1\n"), std::string::npos)
+        << text;
+    // Without mirrors and windows the summary is as it always was.
+    const Layout doors = expect_valid(two_rooms());
+    const std::string plain = summary_text(doors, summarize(doors));
+    EXPECT_EQ(plain.find("door pairs"), std::string::npos) << plain;
+    EXPECT_EQ(plain.find("mirrors"), std::string::npos) << plain;
+    EXPECT_NE(plain.find("portals: 2\npairs: 1\nplay area: "), std::string::npos) << plain;
+    // A mirror alone: no pairs at all.
+    const std::string mirror_only =
+        replace_once(two_rooms().substr(0, two_rooms().find(",\n  \"portals\"")) + "\n}\n", "\n}\n",
+                     ",\n  \"portals\": [\n" + std::string(kMirror) + "\n  ]\n}\n");
+    const Layout m = expect_valid(mirror_only);
+    const Summary ms = summarize(m);
+    EXPECT_EQ(ms.portals, 1);
+    EXPECT_EQ(ms.pairs, 0);
+    EXPECT_EQ(ms.mirrors, 1);
+    EXPECT_NE(summary_text(m, ms).find("pairs: 0\ndoor pairs: 0\nwindow pairs: 0\nmirrors: 1\n"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace layout_test
