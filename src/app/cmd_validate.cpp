@@ -15,7 +15,8 @@ int run_validate_command(const Args& args, std::ostream& out, std::ostream& err)
     if (parsed.help) {
         out << "usage: impossible validate LAYOUT [--json]\n"
                "Checks a layout file; prints a summary (rooms, portals, pairs, rooms outside the play\n"
-               "area, expansion ratio) and the designer's report (room overlaps against Suma et al. 2012,\n"
+               "area, expansion ratio; door pairs, window pairs and mirrors where there are mirrors or\n"
+               "windows) and the designer's report (room overlaps against Suma et al. 2012,\n"
                "rooms no door leads to, rooms and doors outside the play area as walked), or every\n"
                "problem as FILE:LINE:COLUMN: message (exit 1). Findings are warnings (exit 0).\n"
                "  --json  the whole report (or the errors) as one JSON document on standard output\n";

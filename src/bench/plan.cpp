@@ -33,13 +33,14 @@ layout::Layout keep_first_portals(const layout::Layout& layout, int n) {
     out.portals.clear();
     std::vector<int> renumbered(layout.portals.size(), -1);
     for (size_t i = 0; i < layout.portals.size(); ++i) {
-        const int target = layout.portals[i].target;
+        const int target = layout.portals[i].target;  // -1 for a mirror, which needs no partner
         if (static_cast<int>(i) < n && target < n) {
             renumbered[i] = static_cast<int>(out.portals.size());
             out.portals.push_back(layout.portals[i]);
         }
     }
-    for (layout::Portal& p : out.portals) p.target = renumbered[p.target];
+    for (layout::Portal& p : out.portals)
+        if (p.target >= 0) p.target = renumbered[p.target];
     return out;
 }
 

@@ -42,15 +42,22 @@ double pixels_of(const render::FrameDesc& f) { return 2.0 * f.eye_width * f.eye_
 
 // Without culling every portal of a cell is drawn at every level: the passes
 // of a frame are the paths of up to `depth` portals from `room` (fewer where
-// the portal a view came out of lies behind it). An upper bound, capped.
+// the portal a view came out of lies behind it). A door leads on in its
+// target's room, a mirror in its own, and a window in both (its through and
+// its reflected view; layout-format.md, "What a pixel shows"), each view one
+// pass. An upper bound, capped.
 constexpr double kMaxUnculledPasses = 20000;
 
 double unculled_pass_bound(const layout::Layout& layout, int room, int depth) {
     std::vector<double> paths(layout.rooms.size(), 0.0);  // passes from each room with d levels left
     for (int d = 1; d <= depth; ++d) {
         std::vector<double> next(layout.rooms.size(), 0.0);
-        for (const layout::Portal& p : layout.portals)
-            next[p.room] = std::min(1e18, next[p.room] + 1.0 + paths[layout.portals[p.target].room]);
+        for (const layout::Portal& p : layout.portals) {
+            double passes = 0.0;
+            if (p.kind != layout::PortalKind::Door) passes += 1.0 + paths[p.room];  // the reflection
+            if (p.kind != layout::PortalKind::Mirror) passes += 1.0 + paths[layout.portals[p.target].room];
+            next[p.room] = std::min(1e18, next[p.room] + passes);
+        }
         paths = next;
         if (paths[room] > kMaxUnculledPasses) break;
     }

@@ -21,6 +21,8 @@ Placement place_rooms(const layout::Layout& layout) {
         queue.pop_front();
         out.order.push_back(room);
         for (const int p : out.links.room_portals[room]) {
+            // Only doors are walked through; a window shows a room but leads nowhere.
+            if (layout.portals[p].kind != layout::PortalKind::Door) continue;
             const int target = layout.portals[p].target;
             const int next = layout.portals[target].room;
             const math::dmat4 w_next = math::orthonormalize_rigid(out.links.transfer[p] * w[room]);

@@ -8,7 +8,8 @@
 // each room is placed by the first (fewest doors) way found. A layout whose
 // doors turn or move space (loop.json) can reach a room in several places;
 // `inconsistent` marks those, and the first place is the one reported.
-// Rooms no door leads to keep their own coordinates.
+// Rooms no door leads to keep their own coordinates. Mirrors and windows are
+// not walked through: a room seen only through a window is not reachable.
 //
 // Floor points are (x, z) in metres (math/polygon.hpp).
 #pragma once

@@ -2,6 +2,7 @@
 #include "design/plan.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <variant>
 
@@ -50,6 +51,7 @@ math::Polygon2 circle(glm::dvec2 c, double r) {
 void add_doors(Drawing& d, const layout::Layout& layout, const Report& r) {
     for (std::size_t i = 0; i < layout.portals.size(); ++i) {
         const layout::Portal& p = layout.portals[i];
+        if (p.kind != layout::PortalKind::Door) continue;
         const math::dmat4& m = r.placement.rooms[p.room].to_physical;
         const Rgba c = hue(p.room, 0.8, 0.55, 1.0);
         const auto line = door_line(p, m);
@@ -63,6 +65,56 @@ void add_doors(Drawing& d, const layout::Layout& layout, const Report& r) {
         const layout::Portal& t = layout.portals[p.target];
         const auto other = door_line(t, r.placement.rooms[t.room].to_physical);
         arrow(d, "doors", p.id, centre, 0.5 * (other[0] + other[1]), c, 0.02, true);
+    }
+}
+
+// The floor line of a portal, and its unit normal on the floor (zero for a
+// floor or ceiling portal).
+struct FloorLine {
+    std::array<glm::dvec2, 2> ends;
+    glm::dvec2 normal{0.0};
+};
+
+FloorLine floor_line(const layout::Portal& p, const math::dmat4& m) {
+    FloorLine out{door_line(p, m)};
+    const glm::dvec2 n = to_floor(m, p.rect.center + p.rect.normal) - to_floor(m, p.rect.center);
+    if (glm::length(n) > 1e-6) out.normal = glm::normalize(n);
+    return out;
+}
+
+// Mirrors as a thick silver line with short ticks on the back (the side that
+// does not reflect), as architects draw a mirror's backing.
+void add_mirrors(Drawing& d, const layout::Layout& layout, const Report& r) {
+    const Rgba silver{0.55, 0.62, 0.70, 1.0};
+    for (const layout::Portal& p : layout.portals) {
+        if (p.kind != layout::PortalKind::Mirror) continue;
+        const FloorLine line = floor_line(p, r.placement.rooms[p.room].to_physical);
+        d.shapes.push_back(stroke("mirrors", p.id, {line.ends[0], line.ends[1]}, silver, 0.06));
+        const double length = glm::distance(line.ends[0], line.ends[1]);
+        if (glm::length(line.normal) == 0.0 || length < 1e-6) continue;
+        const int ticks = std::max(2, static_cast<int>(length / 0.15));
+        for (int k = 0; k <= ticks; ++k) {
+            const glm::dvec2 at = line.ends[0] + (line.ends[1] - line.ends[0]) * (double(k) / ticks);
+            d.shapes.push_back(stroke("mirrors", p.id, {at, at - line.normal * 0.1}, silver, 0.015));
+        }
+    }
+}
+
+// Windows as two thin blue lines (a pane, as in architects' plans), with a
+// dashed arrow to the partner window where it lies elsewhere on the floor.
+void add_windows(Drawing& d, const layout::Layout& layout, const Report& r) {
+    const Rgba glass{0.20, 0.55, 0.90, 1.0};
+    for (const layout::Portal& p : layout.portals) {
+        if (p.kind != layout::PortalKind::Window) continue;
+        const FloorLine line = floor_line(p, r.placement.rooms[p.room].to_physical);
+        const glm::dvec2 off = line.normal * 0.035;
+        d.shapes.push_back(stroke("windows", p.id, {line.ends[0] + off, line.ends[1] + off}, glass, 0.02));
+        d.shapes.push_back(stroke("windows", p.id, {line.ends[0] - off, line.ends[1] - off}, glass, 0.02));
+        if (p.target < 0) continue;
+        const layout::Portal& t = layout.portals[p.target];
+        const auto other = door_line(t, r.placement.rooms[t.room].to_physical);
+        arrow(d, "windows", p.id, 0.5 * (line.ends[0] + line.ends[1]), 0.5 * (other[0] + other[1]), glass, 0.015,
+              true);
     }
 }
 
@@ -131,6 +183,8 @@ Drawing plan_drawing(const layout::Layout& layout, const Report& r, const std::v
         d.shapes.push_back(stroke("grid", "", {{d.min.x, z}, {d.max.x, z}}, {0.8, 0.8, 0.8, 1.0}, 0.01));
     add_floor(d, layout, r);
     add_doors(d, layout, r);
+    add_mirrors(d, layout, r);
+    add_windows(d, layout, r);
     const glm::dvec2 s{layout.start.position.x, layout.start.position.z};
     const double yaw = math::radians(layout.start.yaw_deg);
     d.shapes.push_back(fill("start", "start", circle(s, 0.12), {0.85, 0.1, 0.1, 1.0}));

@@ -8,7 +8,9 @@
 // overlap is likely to be noticed, design/overlap.hpp); props; doors as
 // thick lines with an arrow through them in the walking direction, and a
 // dashed arrow to the partner where the partner lies elsewhere on the floor;
-// the start; a walk path if given; room names (SVG only).
+// mirrors as a thick silver line with ticks on the back; windows as two thin
+// blue lines with a dashed arrow to the partner window; the start; a walk
+// path if given; room names (SVG only).
 #pragma once
 
 #include <cstdint>
@@ -28,7 +30,8 @@ struct Rgba {
 struct Shape {
     enum class Kind { Fill, Stroke, Text };
     Kind kind = Kind::Fill;
-    std::string group;      // "grid", "play-area", "rooms", "overlaps", "props", "doors", "start", "path", "labels"
+    std::string group;      // "grid", "play-area", "rooms", "overlaps", "props", "doors", "mirrors", "windows",
+                            // "start", "path", "labels" (mirrors and windows only where there are some)
     std::string name;       // what it shows (a room or door id), may be empty
     math::Polygon2 points;  // Fill: a polygon; Stroke: a polyline; Text: its anchor
     bool closed = false;    // Stroke: join the last point to the first

@@ -29,6 +29,7 @@ void find_outside(const layout::Layout& layout, Report& r) {
     }
     for (std::size_t p = 0; p < layout.portals.size(); ++p) {
         const layout::Portal& portal = layout.portals[p];
+        if (portal.kind != layout::PortalKind::Door) continue;  // not walked through
         const auto line = door_line(portal, r.placement.rooms[portal.room].to_physical);
         if (!math::segment_inside(area, line[0], line[1], 1e-9)) r.doors_outside.push_back(static_cast<int>(p));
     }

@@ -27,6 +27,9 @@ ordered_json summary_json(const layout::Layout& layout, const Report& r) {
     j["rooms"] = s.rooms;
     j["portals"] = s.portals;
     j["pairs"] = s.pairs;
+    j["door_pairs"] = s.door_pairs;
+    j["window_pairs"] = s.window_pairs;
+    j["mirrors"] = s.mirrors;
     j["floor_area"] = rounded(s.floor_area);
     if (layout.play_area) {
         ordered_json area;

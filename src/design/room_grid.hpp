@@ -7,7 +7,8 @@
 // walls, from every prop that reaches below the head (box props, and glTF
 // props by the bounding box of their triangles), and from the floor line of
 // every door of the room (so a path never walks through a door it does not
-// mean to), and, with a play area, when the centre maps inside it, at least
+// mean to; mirrors and windows lie in the room's faces and are passed like
+// walls), and, with a play area, when the centre maps inside it, at least
 // `edge_margin` from its edge. Units metres; floor points are (x, z).
 #pragma once
 

@@ -18,20 +18,25 @@ bool is_identifier_key(std::string_view key) {
     });
 }
 
-// Edit distance, for "did you mean" hints on unknown fields (short names only).
+// Edit distance, for "did you mean" hints on unknown fields (short names
+// only): insertions, deletions, substitutions, and swaps of two neighbouring
+// letters, each one edit (the optimal string alignment distance), so that
+// "knid" is one edit from "kind".
 std::size_t edit_distance(std::string_view a, std::string_view b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    const std::size_t w = b.size() + 1;
+    std::vector<std::size_t> d((a.size() + 1) * w);
+    for (std::size_t i = 0; i <= a.size(); ++i) d[i * w] = i;
+    for (std::size_t j = 0; j <= b.size(); ++j) d[j] = j;
     for (std::size_t i = 1; i <= a.size(); ++i) {
-        std::size_t diagonal = row[0];
-        row[0] = i;
         for (std::size_t j = 1; j <= b.size(); ++j) {
-            const std::size_t up = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-            diagonal = up;
+            std::size_t v = std::min({d[(i - 1) * w + j] + 1, d[i * w + j - 1] + 1,
+                                      d[(i - 1) * w + j - 1] + (a[i - 1] != b[j - 1])});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+                v = std::min(v, d[(i - 2) * w + j - 2] + 1);
+            d[i * w + j] = v;
         }
     }
-    return row[b.size()];
+    return d.back();
 }
 
 }  // namespace
@@ -152,12 +157,15 @@ bool Checker::check_fields(const Path& at, const json& object,
                                           [&](const char* k) { return key == k; });
         if (is_known) continue;
         std::string message = "unknown field " + quote(key);
+        // The closest known name within two edits ("knid" is "kind", not "id");
+        // on a tie, the first listed.
+        const char* hint = nullptr;
+        std::size_t best = 3;
         for (const char* k : known) {
-            if (key.size() < 40 && edit_distance(key, k) <= 2) {
-                message += " (did you mean " + quote(k) + "?)";
-                break;
-            }
+            const std::size_t d = key.size() < 40 ? edit_distance(key, k) : best;
+            if (d < best) best = d, hint = k;
         }
+        if (hint != nullptr) message += " (did you mean " + quote(hint) + "?)";
         error_at_key(at / key, message);
     }
     bool complete = true;
@@ -260,6 +268,12 @@ std::optional<double> Checker::read_number(const Path& at, const json& value, Nu
         case NumberKind::Colour:
             if (v < 0.0 || v > 1.0) {
                 error(at, "colour component " + shown + " is outside 0..1");
+                return std::nullopt;
+            }
+            return v;
+        case NumberKind::Fraction:
+            if (v < 0.0 || v > 1.0) {
+                error(at, "must be in 0..1 (got " + shown + ")");
                 return std::nullopt;
             }
             return v;

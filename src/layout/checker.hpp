@@ -36,7 +36,8 @@ enum class NumberKind {
     Length,      // kMinLength ≤ v ≤ kMaxLength (must be > 0)
     Angle,       // |v| ≤ kMaxAngleDeg
     Scale,       // kMinScale ≤ v ≤ kMaxScale
-    Colour,      // 0 ≤ v ≤ 1
+    Colour,      // 0 ≤ v ≤ 1, a colour component
+    Fraction,    // 0 ≤ v ≤ 1, a share (a window's reflectance)
     Direction,   // |v| ≤ kMaxDirectionComponent (a vector normalised later)
 };
 

@@ -3,7 +3,8 @@
 // within 1e-4 of it, normal into the room) cuts a hole in that face if it is
 // wholly inside the face; wholly outside, it stands free; partly inside is an
 // error. Two holes in one face that overlap are an error too (the face
-// would have no defined shape between them).
+// would have no defined shape between them). Mirrors and windows must make
+// a hole ("Mirrors and windows"): standing free, they are an error.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -84,6 +85,57 @@ double overlap(const Quad& p, const Quad& q) {
     return least;
 }
 
+// A mirror or window that stands free (layout-format.md, "Mirrors and
+// windows": it must lie in a face of its own room). The message says which
+// face it is nearest and what to change.
+void report_free_standing(Checker& check, const PortalDraft& draft, const Room& room,
+                          const std::array<glm::dvec3, 4>& c) {
+    const double eps = limits::kHolePlaneTolerance;
+    const math::PortalRect& rect = draft.portal.rect;
+    static const char* const axes[] = {"x", "y", "z"};
+    const auto name = [&](int face) {
+        const FaceFrame f = face_frame(room, static_cast<Face>(face));
+        return std::string("the ") + kFaceNames[static_cast<std::size_t>(face)] + " face (" + axes[f.axis] + " = " +
+               format_number(f.coord) + ")";
+    };
+    const auto farthest_corner = [&](const FaceFrame& f) {
+        double away = 0.0;
+        for (const glm::dvec3& v : c) away = std::max(away, std::abs(v[f.axis] - f.coord));
+        return away;
+    };
+    std::string why;
+    for (int face = 0; face < kFaceCount && why.empty(); ++face) {
+        const FaceFrame f = face_frame(room, static_cast<Face>(face));
+        if (farthest_corner(f) > eps) continue;
+        // In the plane: either the normal points out of the room, or the
+        // rectangle lies beside the face (partly inside is reported apart).
+        why = rect.normal[f.axis] * f.inward > 0.5
+                  ? "it lies in the plane of " + name(face) + " but outside that face; move it inside the face"
+                  : "it lies in the plane of " + name(face) +
+                        " but its normal points out of the room; turn the normal around";
+    }
+    if (why.empty()) {
+        // The face the normal looks away from, where it would belong.
+        int best = 0;
+        for (int face = 1; face < kFaceCount; ++face) {
+            const FaceFrame f = face_frame(room, static_cast<Face>(face));
+            const FaceFrame b = face_frame(room, static_cast<Face>(best));
+            if (rect.normal[f.axis] * f.inward > rect.normal[b.axis] * b.inward) best = face;
+        }
+        const FaceFrame f = face_frame(room, static_cast<Face>(best));
+        const double away = std::round(farthest_corner(f) * 1e6) / 1e6;  // micrometres: no 0.30000000000000004
+        why = rect.normal[f.axis] * f.inward > 0.5
+                  ? "a corner is " + format_number(away) + " m from " + name(best) +
+                        ", the face its normal looks away from; move it into that face"
+                  : "its normal is tilted away from every face; make it perpendicular to the face it belongs in, "
+                    "pointing into the room";
+    }
+    check.error(draft.path / "center",
+                std::string("a ") + kind_name(draft.portal.kind) + " must lie in a face of its own room " +
+                    quote(room.id) + " (within " + format_number(eps) +
+                    " m of the face's plane, inside the face), but this one stands free: " + why);
+}
+
 struct Hole {
     std::size_t portal = 0;
     Quad quad{};
@@ -105,6 +157,7 @@ void check_holes(Checker& check, std::vector<PortalDraft>& portals,
         if (!room.box_ok) continue;
         const math::PortalRect& rect = draft.portal.rect;
         const std::array<glm::dvec3, 4> c = corners(rect);
+        bool partly = false;
         for (int face = 0; face < kFaceCount; ++face) {
             const FaceFrame f = face_frame(room.room, static_cast<Face>(face));
             const bool in_plane = std::all_of(c.begin(), c.end(), [&](const glm::dvec3& v) {
@@ -125,15 +178,24 @@ void check_holes(Checker& check, std::vector<PortalDraft>& portals,
                 hole.max_a = std::max({hole.quad[0].x, hole.quad[1].x, hole.quad[2].x, hole.quad[3].x});
                 holes[{room_index, face}].push_back(hole);
             } else if (overlap(hole.quad, face_quad) > eps) {
+                partly = true;
+                // A mirror or window has only one way out: into the face.
+                const bool boxless = draft.kind_ok && draft.portal.kind != PortalKind::Door;
+                const std::string rule =
+                    boxless ? std::string("a ") + kind_name(draft.portal.kind) +
+                                  " must lie wholly inside a face of its room, making a hole; move it inside"
+                            : "a portal in the plane of a face must lie wholly inside it, making a hole, or wholly "
+                              "outside";
                 check.error(draft.path / "center",
                             "the rectangle lies in the plane of the " +
                                 std::string(kFaceNames[static_cast<std::size_t>(face)]) +
-                                " face of room " + quote(room.room.id) +
-                                " but is only partly inside that face (a portal in the plane of a "
-                                "face must lie wholly inside it, making a hole, or wholly outside)");
+                                " face of room " + quote(room.room.id) + " but is only partly inside that face (" +
+                                rule + ")");
             }
             break;
         }
+        const bool boxless = draft.kind_ok && draft.portal.kind != PortalKind::Door;
+        if (boxless && draft.portal.hole_face < 0 && !partly) report_free_standing(check, draft, room.room, c);
     }
     // Overlapping holes in one face: sweep along the face's first axis.
     // Each portal is reported once.

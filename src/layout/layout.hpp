@@ -68,6 +68,9 @@ struct Room {
 // reflection of its own.
 enum class PortalKind { Door, Mirror, Window };
 
+// "door", "mirror" or "window", as written in a layout file.
+const char* kind_name(PortalKind kind);
+
 struct Portal {
     std::string id;
     int room = -1;          // index into Layout::rooms
@@ -142,7 +145,10 @@ int find_room(const Layout& layout, const std::string& id);
 struct Summary {
     int rooms = 0;
     int portals = 0;
-    int pairs = 0;  // linked portal pairs (portals / 2)
+    int pairs = 0;         // linked portal pairs, doors and windows
+    int door_pairs = 0;
+    int window_pairs = 0;
+    int mirrors = 0;       // mirrors have no pair
     // Ids of the rooms whose floor rectangle [x, z] is not inside the play
     // area, in file order; empty without a play area.
     std::vector<std::string> rooms_outside_play_area;

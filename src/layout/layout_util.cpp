@@ -20,6 +20,15 @@ std::vector<glm::dvec2> outline(const PlayArea& area) {
     return math::rectangle(area.min, area.max);
 }
 
+const char* kind_name(PortalKind kind) {
+    switch (kind) {
+        case PortalKind::Door: return "door";
+        case PortalKind::Mirror: return "mirror";
+        case PortalKind::Window: return "window";
+    }
+    return "door";
+}
+
 int find_room(const Layout& layout, const std::string& id) {
     for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
         if (layout.rooms[i].id == id) return static_cast<int>(i);

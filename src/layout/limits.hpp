@@ -42,6 +42,7 @@ inline constexpr double kUnitTolerance = 1e-3;  // | |normal| - 1 | allowed
 inline constexpr double kMinUpAngleDeg = 1.0;   // angle between up and normal
 inline constexpr double kPairSizeTolerance = 1e-6;
 inline constexpr double kHolePlaneTolerance = 1e-4;
+inline constexpr double kDefaultDepth = 0.25;  // a door's box without "depth"
 
 // glTF models.
 inline constexpr std::size_t kMaxModelBytes = 256u << 20;  // 256 MiB

@@ -90,8 +90,11 @@ bool read_up(Checker& check, const Path& at, const json& value, const std::optio
     return true;
 }
 
-// centre, size, depth, normal and up; false if any is missing or bad (reported).
-bool read_rect(Checker& check, const Path& at, const json& value, math::PortalRect& rect) {
+// centre, size, depth, normal and up; false if any is missing or bad
+// (reported). Without a box (a mirror or a window) the depth is 0 and not
+// read; `warn_depth` warns of a door's box too shallow for an eye.
+bool read_rect(Checker& check, const Path& at, const json& value, bool has_box, bool warn_depth,
+               math::PortalRect& rect) {
     bool ok = true;
     const auto take = [&ok](auto&& optional, auto& out) {
         if (optional) {
@@ -108,10 +111,10 @@ bool read_rect(Checker& check, const Path& at, const json& value, math::PortalRe
     if (center) take(check.read_vec3(at / "center", *center, NumberKind::Coordinate), rect.center);
     if (width) take(check.read_number(at / "width", *width, NumberKind::Length), rect.width);
     if (height) take(check.read_number(at / "height", *height, NumberKind::Length), rect.height);
-    rect.depth = 0.25;
-    if (const json* v = field(value, "depth")) {
+    rect.depth = has_box ? limits::kDefaultDepth : 0.0;
+    if (const json* v = field(value, "depth"); v && has_box) {
         const std::optional<double> depth = check.read_number(at / "depth", *v, NumberKind::Length);
-        if (depth) warn_if_shallow(check, at, *depth);
+        if (depth && warn_depth) warn_if_shallow(check, at, *depth);
         take(depth, rect.depth);
     }
     const std::optional<glm::dvec3> n = normal ? read_normal(check, at / "normal", *normal) : std::nullopt;
@@ -119,14 +122,81 @@ bool read_rect(Checker& check, const Path& at, const json& value, math::PortalRe
     return ok && n && up_ok;
 }
 
+// `kind`: "door", "mirror" or "window"; false for anything else (reported).
+bool read_kind(Checker& check, const Path& at, const json& value, PortalKind& kind) {
+    const std::optional<std::string> name = check.read_string(at, value);
+    if (!name) return false;
+    for (const PortalKind k : {PortalKind::Door, PortalKind::Mirror, PortalKind::Window}) {
+        if (*name == kind_name(k)) {
+            kind = k;
+            return true;
+        }
+    }
+    // A name of megabytes is cut: the message stays one short line.
+    constexpr std::size_t kShown = 100;
+    const std::string shown = name->size() <= kShown ? quote(*name)
+                                                     : quote(name->substr(0, kShown)) + "... (" +
+                                                           std::to_string(name->size() - kShown) + " more bytes)";
+    check.error(at, "unknown kind " + shown +
+                        " (the kinds are \"door\", the default, \"mirror\" and \"window\")");
+    return false;
+}
+
+// A field the portal's kind does not have (layout-format.md, "Mirrors and
+// windows"): an error at its key, saying what to do instead.
+void check_kind_fields(Checker& check, const Path& at, const json& value, PortalKind kind) {
+    const auto refuse = [&](const char* name, const std::string& message) {
+        if (field(value, name) != nullptr) check.error_at_key(at / name, message);
+    };
+    switch (kind) {
+        case PortalKind::Door:
+            refuse("tint", "a door has no tint (only mirrors and windows tint the light); remove it, or set "
+                           "\"kind\" to \"mirror\" or \"window\"");
+            refuse("reflectance", "a door has no reflectance (only a window's glass reflects); remove it, or set "
+                                  "\"kind\" to \"window\"");
+            break;
+        case PortalKind::Mirror:
+            refuse("reflectance", "a mirror has no reflectance (it reflects all the light, times its \"tint\"); "
+                                  "remove it, or set \"kind\" to \"window\" for glass that shows its target "
+                                  "and reflects a share");
+            refuse("depth", "a mirror has no depth (it has no box, only its rectangle in a face of its room); "
+                            "remove it");
+            refuse("target", "a mirror has no target (it reflects its own room); remove it, or set \"kind\" "
+                             "to \"window\" to look into the target's room");
+            break;
+        case PortalKind::Window:
+            refuse("depth", "a window has no depth (it has no box, only its rectangle in a face of its room); "
+                            "remove it");
+            break;
+    }
+}
+
 PortalDraft read_portal(Checker& check, const Path& at, const json& value) {
     PortalDraft draft;
     draft.path = at;
     if (!check.expect_object(at, value)) return draft;
-    check.check_fields(at, value,
-                       {"id", "room", "center", "normal", "up", "width", "height", "depth", "target"},
-                       {"id", "room", "center", "normal", "width", "height", "target"});
     Portal& portal = draft.portal;
+    if (const json* v = field(value, "kind")) {
+        draft.has_kind = true;
+        draft.kind_ok = read_kind(check, at / "kind", *v, portal.kind);
+    }
+    // With an unknown kind, which fields belong is unknown: only the fields
+    // every kind has are required, and none is refused.
+    const bool door = draft.kind_ok && portal.kind == PortalKind::Door;
+    const bool mirror = draft.kind_ok && portal.kind == PortalKind::Mirror;
+    const bool window = draft.kind_ok && portal.kind == PortalKind::Window;
+    check.check_fields(at, value,
+                       {"id", "room", "center", "normal", "up", "width", "height", "depth", "kind", "target", "tint",
+                        "reflectance"},
+                       {"id", "room", "center", "normal", "width", "height"});
+    if (field(value, "target") == nullptr) {
+        if (door) check.error(at, "missing required field \"target\" (the id of the door it leads to)");
+        if (window) {
+            check.error(at, "missing required field \"target\" (a window is one of a pair: the id of the window "
+                            "whose room it shows)");
+        }
+    }
+    if (draft.kind_ok) check_kind_fields(check, at, value, portal.kind);
     if (const json* v = field(value, "id")) {
         if (auto id = check.read_id(at / "id", *v)) {
             portal.id = std::move(*id);
@@ -134,8 +204,15 @@ PortalDraft read_portal(Checker& check, const Path& at, const json& value) {
         }
     }
     if (const json* v = field(value, "room")) draft.room_id = check.read_string(at / "room", *v);
-    if (const json* v = field(value, "target")) draft.target_id = check.read_string(at / "target", *v);
-    draft.rect_ok = read_rect(check, at, value, portal.rect);
+    if (const json* v = field(value, "target"); v && !mirror) draft.target_id = check.read_string(at / "target", *v);
+    if (const json* v = field(value, "tint"); v && !door) {
+        if (const auto tint = check.read_colour(at / "tint", *v)) portal.tint = *tint;
+    }
+    if (const json* v = field(value, "reflectance"); v && !door && !mirror) {
+        if (const auto r = check.read_number(at / "reflectance", *v, NumberKind::Fraction)) portal.reflectance = *r;
+    }
+    const bool has_box = !mirror && !window;
+    draft.rect_ok = read_rect(check, at, value, has_box, door, portal.rect);
     return draft;
 }
 
@@ -186,6 +263,13 @@ void link_portals(Checker& check, std::vector<PortalDraft>& portals,
         }
         if (static_cast<std::size_t>(it->second) == i) continue;  // a repeated id; reported
         const PortalDraft& other = portals[static_cast<std::size_t>(it->second)];
+        if (other.kind_ok && other.portal.kind == PortalKind::Mirror) {
+            const std::string kind = draft.kind_ok ? kind_name(draft.portal.kind) : "portal";
+            check.error(draft.path / "target",
+                        quote(other.portal.id) + " is a mirror, which has no partner (it reflects its own room); "
+                        "a " + kind + " must target a " + kind + " that names it back");
+            continue;
+        }
         if (!draft.has_id || !other.target_id) continue;  // reported where it was read
         if (*other.target_id != draft.portal.id) {
             check.error(draft.path / "target",
@@ -195,8 +279,18 @@ void link_portals(Checker& check, std::vector<PortalDraft>& portals,
             continue;
         }
         draft.portal.target = it->second;
-        // Check the pair's sizes once, at its later portal.
-        if (static_cast<std::size_t>(it->second) > i || !draft.rect_ok || !other.rect_ok) continue;
+        // Check the pair's kinds and sizes once, at its later portal.
+        if (static_cast<std::size_t>(it->second) > i) continue;
+        if (draft.kind_ok && other.kind_ok && draft.portal.kind != other.portal.kind) {
+            // At the "kind" that differs, or at the target of a door by default.
+            const std::string kind = kind_name(draft.portal.kind);
+            const std::string other_kind = kind_name(other.portal.kind);
+            check.error(draft.has_kind ? draft.path / "kind" : draft.path / "target",
+                        "a " + kind + " cannot be paired with the " + other_kind + " " + quote(other.portal.id) +
+                            " (paired portals must be of the same kind; make both " + kind + "s or both " +
+                            other_kind + "s)");
+        }
+        if (!draft.rect_ok || !other.rect_ok) continue;
         const math::PortalRect& a = other.portal.rect;
         const math::PortalRect& b = draft.portal.rect;
         if (std::abs(a.width - b.width) > limits::kPairSizeTolerance) {

@@ -29,6 +29,8 @@ struct PortalDraft {
     std::optional<std::string> target_id;
     bool has_id = false;
     bool rect_ok = false;  // center, normal, up, width, height, depth read
+    bool has_kind = false;  // "kind" is written
+    bool kind_ok = true;    // "kind" is absent (a door) or one of the three kinds
 };
 
 // glTF models, read once per file per layout, with a cap on all triangles.
@@ -66,7 +68,8 @@ void link_portals(Checker& check, std::vector<PortalDraft>& portals,
                   const std::vector<RoomDraft>& rooms, bool rooms_known);
 
 // The hole rule (layout-format.md, "The portal box"): sets hole_face, and
-// reports rectangles partly inside a face, and overlapping holes.
+// reports rectangles partly inside a face, overlapping holes, and mirrors
+// and windows that stand free (they must lie in a face of their room).
 void check_holes(Checker& check, std::vector<PortalDraft>& portals,
                  const std::vector<RoomDraft>& rooms);
 

@@ -12,9 +12,15 @@ Summary summarize(const Layout& layout) {
     s.rooms = static_cast<int>(layout.rooms.size());
     s.portals = static_cast<int>(layout.portals.size());
     for (std::size_t i = 0; i < layout.portals.size(); ++i) {
-        // Count each linked pair once, at its first portal.
-        const int target = layout.portals[i].target;
-        if (target > static_cast<int>(i)) ++s.pairs;
+        const Portal& p = layout.portals[i];
+        if (p.kind == PortalKind::Mirror) {
+            ++s.mirrors;
+            continue;
+        }
+        // Count each linked pair once, at its first portal (a mirror has no target).
+        if (p.target <= static_cast<int>(i)) continue;
+        ++s.pairs;
+        ++(p.kind == PortalKind::Window ? s.window_pairs : s.door_pairs);
     }
     for (const Room& room : layout.rooms) {
         s.floor_area += (room.max.x - room.min.x) * (room.max.z - room.min.z);
@@ -41,6 +47,12 @@ std::string summary_text(const Layout& layout, const Summary& summary) {
     out += "rooms: " + std::to_string(summary.rooms) + "\n";
     out += "portals: " + std::to_string(summary.portals) + "\n";
     out += "pairs: " + std::to_string(summary.pairs) + "\n";
+    // Only doors: the lines above say it all, as they always have.
+    if (summary.window_pairs > 0 || summary.mirrors > 0) {
+        out += "door pairs: " + std::to_string(summary.door_pairs) + "\n";
+        out += "window pairs: " + std::to_string(summary.window_pairs) + "\n";
+        out += "mirrors: " + std::to_string(summary.mirrors) + "\n";
+    }
     if (!summary.play_area_area) {
         out += "play area: none\n";
         std::snprintf(line, sizeof line, "floor area: %.2f m2\n", summary.floor_area);

@@ -70,6 +70,15 @@ struct MapView {
 
 }  // namespace
 
+glm::vec4 minimap_portal_colour(layout::PortalKind kind) {
+    switch (kind) {
+        case layout::PortalKind::Door: return {1.0f, 0.55f, 0.1f, 1.0f};     // orange
+        case layout::PortalKind::Mirror: return {0.8f, 0.85f, 0.9f, 1.0f};   // silver
+        case layout::PortalKind::Window: return {0.35f, 0.7f, 1.0f, 1.0f};   // sky blue
+    }
+    return {1.0f, 0.55f, 0.1f, 1.0f};
+}
+
 MapBounds minimap_bounds(const MinimapInput& in) {
     const math::dmat4 to_physical = math::rigid_inverse(in.physical_to_virtual);
     glm::dvec2 lo{in.physical_head.position.x, in.physical_head.position.z}, hi = lo;
@@ -112,10 +121,11 @@ void add_minimap(OverlayBatch& batch, const MinimapInput& in, glm::vec2 corner, 
     }
     const bool room_ok = in.room >= 0 && static_cast<std::size_t>(in.room) < layout.rooms.size();
     if (room_ok && in.transfer) {
-        // Rooms one portal away, where they lie on the same physical floor.
+        // Rooms one door away, where they lie on the same physical floor (a
+        // mirror or window leads nowhere one can walk).
         for (std::size_t i = 0; i < layout.portals.size(); ++i) {
             const layout::Portal& p = layout.portals[i];
-            if (p.room != in.room) continue;
+            if (p.room != in.room || p.kind != layout::PortalKind::Door) continue;
             const layout::Portal& target = layout.portals[p.target];
             const math::dmat4 m = to_physical * (*in.transfer)[p.target];  // B's room → A's → physical
             view.loop(batch, floor_of(layout.rooms[target.room], m), {0.35f, 0.55f, 1.0f, 0.7f});
@@ -135,11 +145,11 @@ void add_minimap(OverlayBatch& batch, const MinimapInput& in, glm::vec2 corner, 
                 const math::dvec4 c = to_physical * math::dvec4(corners[k], 1.0);
                 q[k] = {c.x, c.z};
             }
-            const glm::vec4 orange{1.0f, 0.55f, 0.1f, 1.0f};
-            view.loop(batch, q, orange);
+            const glm::vec4 colour = minimap_portal_colour(p.kind);
+            view.loop(batch, q, colour);
             const math::dvec4 c0 = to_physical * math::dvec4(r.center, 1.0);
             const math::dvec4 c1 = to_physical * math::dvec4(r.center + r.normal * 0.25, 1.0);
-            view.segment(batch, {c0.x, c0.z}, {c1.x, c1.z}, orange);
+            view.segment(batch, {c0.x, c0.z}, {c1.x, c1.z}, colour);
         }
     }
     // The head: a dot and its (physical) view direction.

@@ -1,14 +1,16 @@
 // The preview's minimap: the play area in physical coordinates (x right, -z
 // up, so the start's yaw 0 looks up), the current room's floor mapped into it
-// by the inverse of the walker's W, the rooms one portal away mapped through
-// their portals (so rooms sharing the same floor show as overlapping
-// outlines), the current room's portals, and the head with its view direction.
+// by the inverse of the walker's W, the rooms one door away mapped through
+// their doors (so rooms sharing the same floor show as overlapping
+// outlines), the current room's portals (doors orange, mirrors silver,
+// windows blue, minimap_portal_colour), and the head with its view direction.
 #pragma once
 
 #include <optional>
 #include <vector>
 
 #include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
 
 #include "preview/overlay.hpp"
 #include "layout/layout.hpp"
@@ -30,6 +32,9 @@ struct MapBounds {
     glm::dvec2 min{0.0}, max{0.0};
 };
 MapBounds minimap_bounds(const MinimapInput& in);
+
+// The outline colour of a portal of the current room.
+glm::vec4 minimap_portal_colour(layout::PortalKind kind);
 
 // Draws the minimap into the square panel at pixel `corner` (top left) of
 // side `size`.

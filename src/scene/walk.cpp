@@ -58,7 +58,9 @@ std::vector<int> Walker::step(const math::HeadPose& physical) {
         int best = -1;
         math::SegmentCrossing best_crossing;
         for (int i : links_.room_portals[room_]) {
-            if (i == exclude) continue;
+            // Only doors teleport: the head passes a mirror's or a window's
+            // plane as it passes any wall, and stays where it is.
+            if (i == exclude || layout_->portals[i].kind != layout::PortalKind::Door) continue;
             const auto c = math::segment_crossing(layout_->portals[i].rect, begin, end);
             // Strict '<': on an exact tie the portal listed first keeps it.
             if (c && (best < 0 || c->t < best_crossing.t)) {

@@ -5,8 +5,10 @@
 // current room starts as the layout's start room. The first pose places the
 // head with no crossing test. Each later pose moves the virtual head from the
 // previous virtual centre p0 to p1 = W · physical; the segment is tested
-// against the portals of the current room (math/crossing.hpp): the nearest
-// crossing along it wins, an exact tie goes to the portal listed first. A
+// against the doors of the current room (math/crossing.hpp): the nearest
+// crossing along it wins, an exact tie goes to the portal listed first.
+// Mirrors and windows are never walked through: the head passes their
+// planes as it passes any wall, and stays in its room. A
 // crossing of A teleports: W ← M_AB · W, the room becomes B's, and the rest
 // of the segment, from the crossing point mapped by M_AB to the new head, is
 // tested again in the new room without B. At most kMaxCrossingsPerFrame

@@ -57,21 +57,35 @@ void check_invariants(const Layout& layout) {
         const Portal& p = layout.portals[i];
         ASSERT_GE(p.room, 0);
         ASSERT_LT(p.room, room_count);
-        ASSERT_GE(p.target, 0);
-        ASSERT_LT(p.target, int(layout.portals.size()));
-        EXPECT_NE(p.target, int(i));
-        EXPECT_EQ(layout.portals[std::size_t(p.target)].target, int(i));
         EXPECT_NEAR(glm::length(p.rect.normal), 1.0, 1e-12);
         EXPECT_NEAR(glm::length(p.rect.up), 1.0, 1e-12);
         EXPECT_NEAR(glm::dot(p.rect.up, p.rect.normal), 0.0, 1e-12);
         EXPECT_TRUE(finite(p.rect.center));
         EXPECT_GT(p.rect.width, 0.0);
         EXPECT_GT(p.rect.height, 0.0);
-        EXPECT_GT(p.rect.depth, 0.0);
-        EXPECT_NEAR(p.rect.width, layout.portals[std::size_t(p.target)].rect.width, 1e-6);
-        EXPECT_NEAR(p.rect.height, layout.portals[std::size_t(p.target)].rect.height, 1e-6);
         EXPECT_GE(p.hole_face, -1);
         EXPECT_LT(p.hole_face, kFaceCount);
+        EXPECT_TRUE(in_unit_range(p.tint));
+        EXPECT_TRUE(p.reflectance >= 0.0 && p.reflectance <= 1.0);
+        if (p.kind == PortalKind::Door) {
+            EXPECT_GT(p.rect.depth, 0.0);
+        } else {
+            // No box, and a hole in a face of its room (layout-format.md, "Mirrors and windows").
+            EXPECT_EQ(p.rect.depth, 0.0);
+            EXPECT_GE(p.hole_face, 0);
+        }
+        if (p.kind == PortalKind::Mirror) {
+            EXPECT_EQ(p.target, -1);
+            continue;
+        }
+        ASSERT_GE(p.target, 0);
+        ASSERT_LT(p.target, int(layout.portals.size()));
+        EXPECT_NE(p.target, int(i));
+        const Portal& target = layout.portals[std::size_t(p.target)];
+        EXPECT_EQ(target.target, int(i));
+        EXPECT_EQ(target.kind, p.kind);
+        EXPECT_NEAR(p.rect.width, target.rect.width, 1e-6);
+        EXPECT_NEAR(p.rect.height, target.rect.height, 1e-6);
     }
 }
 
@@ -117,6 +131,8 @@ private:
         "{", "}", "[", "]", ",", ":", "\"", "null", "true", "false", "0", "-0", "1e308", "NaN",
         "\"_c\": 1,", "\"id\": \"x\",", "\"rooms\": [],", "[[[[[[[[", "\xFF", "\\u0000", "\"\\ud800\"",
         "\xEF\xBB\xBF", "\"room\": \"annex\",", "\"target\": \"hall_east\",", "\"up\": [0, 1, 0],", "\n",
+        "\"kind\": \"mirror\",", "\"kind\": \"window\",", "\"kind\": \"door\",", "\"tint\": [1, 0.5, 0],",
+        "\"reflectance\": 0.5,", "\"depth\": 0.1,", "\"target\": \"hall_mirror\",",
     };
     static constexpr const char* kNumbers[] = {
         "NaN", "Infinity", "-Infinity", "1e308", "-1e308", "1e400", "-0", "0", "4e-324", "1e-9",
@@ -158,7 +174,8 @@ private:
 
 TEST(LayoutFuzzLoop, MutatedLayoutsGiveErrorsOrValidLayouts) {
     const std::vector<std::string> seeds = {two_rooms(), read_text(kLayoutDir + "/impossible.json"),
-                                            read_text(kLayoutDir + "/props.json")};
+                                            read_text(kLayoutDir + "/props.json"),
+                                            read_text(kLayoutDir + "/mirrors_windows.json")};
     for (const std::string& seed : seeds) {
         const LoadResult r = load_layout_text(seed, "fuzz.json", kLayoutDir);
         ASSERT_TRUE(r.layout.has_value()) << all_messages(r.errors);
