@@ -24,6 +24,11 @@ render corridor corridor.json
 render loop loop.json
 # The same corridor at two recursion limits: the flat fill marks where it stops.
 render corridor-depth2 corridor.json --max-depth 2 --pose 0,1.6,3,0,0,0
+# Mirrors and windows: the three kinds of portal.
+render mirror_hall mirror_hall.json --max-depth 16
+render glass_gallery glass_gallery.json
+render window_pair window_pair.json --max-depth 16
+render three_kinds three_kinds.json
 
 # The preview window (HUD, minimap, boundary grid) at the end of a scripted walk
 # into the tunnel, on a private X server. Only the HUD's frame time varies

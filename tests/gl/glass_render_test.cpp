@@ -31,9 +31,9 @@ const GlassPose kGlassPoses[] = {
     {"glass_gallery.json", "gallery", {2.8, 1.5, -2.9}, 90, 0, "grazing the north window"},
     {"glass_gallery.json", "gallery", {3 - 0.001, 1.4, 0.2}, -90, 0, "both eyes 1 mm from a window"},
     {"glass_gallery.json", "gallery", {-2.5, 1.2, 2.5}, -45, 5, "the east window at an angle"},
-    {"window_pair.json", "studio", {0.9, 1.6, 1.2}, 62, 0, "start: the nested windows"},
+    {"window_pair.json", "studio", {0.9, 1.6, 1.2}, 62, 0, "an angled view of the nested windows"},
     {"window_pair.json", "studio", {0.0, 1.4, 0.0}, 90, 0, "straight down the nested windows"},
-    {"three_kinds.json", "atelier", {0.0, 1.6, 2.2}, 0, 0, "start: a door, a mirror, a window"},
+    {"three_kinds.json", "atelier", {0.0, 1.6, 2.2}, 0, 0, "a door, a mirror, a window from afar"},
     {"three_kinds.json", "atelier", {-1.2, 1.3, -1.0}, 30, -20, "close to the mirror and the door"},
 };
 

@@ -33,6 +33,10 @@ inline const PoseCase kPoseCases[] = {
     {"corridor.json", "corridor", {0.0, 1.2, 3.5}, 0, 0, 0, "straight down the corridor"},
     {"loop.json", "red", {0.0, 1.6, -0.8}, 0, 0, 0, "start"},
     {"loop.json", "red", {0.3, 1.6, -4.5}, -70, 0, 0, "through the side door"},
+    {"mirror_hall.json", "hall", {0.6, 1.6, 2.4}, 35, 0, 0, "start"},
+    {"glass_gallery.json", "gallery", {-0.8, 1.6, 1.8}, -20, 0, 0, "start"},
+    {"window_pair.json", "studio", {0.6, 1.45, 0.3}, 86, 0, 0, "start"},
+    {"three_kinds.json", "atelier", {0.05, 1.55, 0.45}, 0, 0, 0, "start"},
 };
 
 }  // namespace impossible::testing
