@@ -43,6 +43,14 @@ run triangles_vr "$L/vr_study.json" --max-depth 4 --size 1280x720 --sweep boxes:
 run depth_wall "$L/corridor_wall.json" --size 1280x720 --sweep depth:1,2,4,8,16,64
 run depth_wall_occlusion "$L/corridor_wall.json" --size 1280x720 --occlusion-test --sweep depth:1,2,4,8,16,64
 run depth_open "$L/corridor.json" --size 1280x720 --sweep depth:1,2,4,8,16,64
+# Mirrors and windows: a door, a mirror and a window of the same size in one
+# view (per-portal times), then each filling the view from 0.6 m; and two
+# facing mirrors by depth.
+run kinds_all "$L/three_kinds.json" --size 640x360 --error --profile-frames 5
+run kind_door "$L/three_kinds.json" --size 640x360 --room atelier --pose -2.6,1.3,-2.4,0,0,0 --error
+run kind_mirror "$L/three_kinds.json" --size 640x360 --room atelier --pose 0,1.3,-2.4,0,0,0 --error
+run kind_window "$L/three_kinds.json" --size 640x360 --room atelier --pose 2.6,1.3,-2.4,0,0,0 --error
+run depth_mirrors "$L/mirror_hall.json" --size 640x360 --room hall --pose 2.2,1.5,-0.5,-60,-10,0 --sweep depth:1,2,4,8,16,32,64 --error
 
 sh "$here/summarise.sh" "$out" >"$out/summary.md"
 sh "$here/plot.sh" "$out"
