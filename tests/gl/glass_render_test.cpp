@@ -114,6 +114,41 @@ TEST(GlassRender, MultisampledAndWithPortalTextures) {
     }
 }
 
+// The stereo modes, culling off and the occlusion test change the work, never
+// the image, with mirrors and windows in view as with doors: ids agree,
+// colours within one step (the two-pass and viewport-index draws round a
+// tint or a blend differently here and there).
+TEST(GlassRender, StereoModesCullingAndOcclusionDrawTheSameImage) {
+    for (const char* file : {"mirror_hall.json", "glass_gallery.json", "window_pair.json", "three_kinds.json"}) {
+        const layout::Layout l = testing::layout_from_file(std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/" + file);
+        render::FrameDesc base;
+        base.head.position = l.start.position;
+        base.head.yaw_deg = l.start.yaw_deg;
+        base.room = l.start.room;
+        base.eye_width = 128;
+        base.eye_height = 80;
+        const image::Image reference = testing::render_once(gl::Backend::Egl, l, base);
+        std::vector<std::pair<const char*, render::FrameDesc>> variants;
+        render::FrameDesc f = base;
+        f.stereo = render::StereoMode::TwoPass;
+        variants.emplace_back("two-pass", f);
+        f.stereo = render::StereoMode::ViewportIndex;
+        variants.emplace_back("viewport-index", f);
+        f = base;
+        f.cull_portals = false;
+        variants.emplace_back("no culling", f);
+        f = base;
+        f.occlusion_test = true;
+        variants.emplace_back("occlusion test", f);
+        for (const auto& [what, desc] : variants) {
+            const image::Image other = testing::render_once(gl::Backend::Egl, l, desc);
+            const image::Comparison c = image::compare_pictures(reference, other);
+            EXPECT_EQ(c.id_mismatches, 0) << file << ", " << what;
+            EXPECT_LE(c.max_error, 1) << file << ", " << what;
+        }
+    }
+}
+
 // Single-pass stereo draws each mesh once for both eyes; two-pass draws it
 // once per eye. With mirrors and windows in view the count still halves
 // (the full-target triangles of the tint and blend steps included).
