@@ -46,12 +46,12 @@ const char* type_name(int type) {
 
 glm::dvec3 AccessorView::vec3(std::size_t i) const {
     float f[3];
-    std::memcpy(f, data + i * stride, sizeof f);  // little-endian, as glTF
+    std::memcpy(f, bytes() + i * stride, sizeof f);  // little-endian, as glTF
     return {f[0], f[1], f[2]};
 }
 
 std::uint32_t AccessorView::index(std::size_t i) const {
-    const unsigned char* p = data + i * stride;
+    const unsigned char* p = bytes() + i * stride;
     switch (component_type) {
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return p[0];
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
@@ -67,16 +67,51 @@ std::uint32_t AccessorView::index(std::size_t i) const {
     }
 }
 
+namespace {
+
+// The `count` elements of `element` bytes, `stride` apart, from `byte_offset`
+// into buffer view `view_index`: their first byte, or why they do not fit.
+// `stride` 0 takes the view's byteStride (or `element`).
+Result<const unsigned char*> view_elements(const tinygltf::Model& model, int view_index, std::size_t byte_offset,
+                                           std::size_t count, std::size_t element, std::size_t& stride,
+                                           const std::string& name) {
+    if (view_index < 0 || static_cast<std::size_t>(view_index) >= model.bufferViews.size()) {
+        return Error{name + " refers to bufferView " + std::to_string(view_index) +
+                     ", which does not exist (the model has " + std::to_string(model.bufferViews.size()) + ")"};
+    }
+    const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(view_index)];
+    if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size()) {
+        return Error{name + ": its bufferView " + std::to_string(view_index) +
+                     " names buffer " + std::to_string(view.buffer) + ", which does not exist"};
+    }
+    const std::vector<unsigned char>& buffer = model.buffers[static_cast<std::size_t>(view.buffer)].data;
+    if (stride == 0) stride = view.byteStride == 0 ? element : view.byteStride;
+    if (stride < element) {
+        return Error{name + ": byte stride " + std::to_string(stride) + " is smaller than an element"};
+    }
+    if (view.byteLength > buffer.size() || view.byteOffset > buffer.size() - view.byteLength) {
+        return Error{name + ": its bufferView " + std::to_string(view_index) + " reaches past the end of its buffer"};
+    }
+    if (count == 0) return buffer.data() + view.byteOffset;
+    // byte_offset + stride * (count - 1) + element <= view.byteLength, without overflow.
+    const bool fits = byte_offset <= view.byteLength && element <= view.byteLength - byte_offset &&
+                      count - 1 <= (view.byteLength - byte_offset - element) / stride;
+    if (!fits) {
+        return Error{name + " reaches past the end of its bufferView " + std::to_string(view_index)};
+    }
+    return buffer.data() + view.byteOffset + byte_offset;
+}
+
+}  // namespace
+
 Result<AccessorView> accessor_view(const tinygltf::Model& model, int index, int type,
-                                   std::initializer_list<int> component_types, const char* what) {
+                                   std::initializer_list<int> component_types, const char* what,
+                                   std::size_t max_copied) {
     const std::string name = std::string(what) + " accessor " + std::to_string(index);
     if (index < 0 || static_cast<std::size_t>(index) >= model.accessors.size()) {
         return Error{name + " does not exist"};
     }
     const tinygltf::Accessor& accessor = model.accessors[static_cast<std::size_t>(index)];
-    if (accessor.sparse.isSparse) {
-        return Error{name + " is sparse, which is not supported"};
-    }
     if (accessor.type != type) {
         return Error{name + " must be " + type_name(type) + ", not " + type_name(accessor.type)};
     }
@@ -85,37 +120,70 @@ Result<AccessorView> accessor_view(const tinygltf::Model& model, int index, int 
         return Error{name + " has the unsupported component type " +
                 std::to_string(accessor.componentType)};
     }
-    if (accessor.bufferView < 0 ||
-        static_cast<std::size_t>(accessor.bufferView) >= model.bufferViews.size()) {
-        return Error{name + " has no buffer view (not supported)"};
-    }
-    const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(accessor.bufferView)];
-    if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size()) {
-        return Error{name + ": its buffer view names a buffer that does not exist"};
-    }
-    const std::vector<unsigned char>& buffer = model.buffers[static_cast<std::size_t>(view.buffer)].data;
     const std::size_t element = component_size(accessor.componentType) * component_count(type);
-    const std::size_t stride = view.byteStride == 0 ? element : view.byteStride;
-    if (stride < element) {
-        return Error{name + ": byte stride " + std::to_string(stride) + " is smaller than an element"};
-    }
-    if (view.byteLength > buffer.size() || view.byteOffset > buffer.size() - view.byteLength) {
-        return Error{name + ": its buffer view reaches past the end of its buffer"};
-    }
     AccessorView out;
-    out.stride = stride;
     out.count = accessor.count;
     out.component_type = accessor.componentType;
-    if (accessor.count == 0) return out;
-    // accessor.byteOffset + stride * (count - 1) + element <= view.byteLength,
-    // without overflow.
-    const bool fits = accessor.byteOffset <= view.byteLength &&
-                      element <= view.byteLength - accessor.byteOffset &&
-                      accessor.count - 1 <= (view.byteLength - accessor.byteOffset - element) / stride;
-    if (!fits) {
-        return Error{name + " reaches past the end of its buffer view"};
+    const bool copied = accessor.bufferView < 0 || accessor.sparse.isSparse;
+    if (!copied) {
+        Result<const unsigned char*> first =
+            view_elements(model, accessor.bufferView, accessor.byteOffset, accessor.count, element, out.stride, name);
+        if (!first) return Error{first.error()};
+        out.data = *first;
+        return out;
     }
-    out.data = buffer.data() + view.byteOffset + accessor.byteOffset;
+    // Zeros or the dense elements, tightly packed, then the substitutions.
+    if (accessor.count > max_copied) {
+        return Error{name + " has " + std::to_string(accessor.count) + " elements to copy (sparse or without a "
+                     "bufferView); at most " + std::to_string(max_copied) + " are supported"};
+    }
+    out.stride = element;
+    out.owned.assign(std::max<std::size_t>(1, accessor.count * element), 0);
+    if (accessor.bufferView >= 0 && accessor.count > 0) {
+        std::size_t stride = 0;
+        Result<const unsigned char*> first =
+            view_elements(model, accessor.bufferView, accessor.byteOffset, accessor.count, element, stride, name);
+        if (!first) return Error{first.error()};
+        for (std::size_t i = 0; i < accessor.count; ++i) {
+            std::memcpy(out.owned.data() + i * element, *first + i * stride, element);
+        }
+    }
+    if (!accessor.sparse.isSparse) return out;
+    const auto& sparse = accessor.sparse;
+    if (sparse.count < 1 || static_cast<std::size_t>(sparse.count) > accessor.count) {
+        return Error{name + " has a sparse count of " + std::to_string(sparse.count) + "; it must be 1 to " +
+                     std::to_string(accessor.count)};
+    }
+    const auto substitutions = static_cast<std::size_t>(sparse.count);
+    AccessorView indices;
+    indices.component_type = sparse.indices.componentType;
+    indices.stride = component_size(sparse.indices.componentType);
+    if (sparse.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+        sparse.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+        sparse.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {
+        return Error{name + "'s sparse indices have the unsupported component type " +
+                     std::to_string(sparse.indices.componentType)};
+    }
+    Result<const unsigned char*> index_data =
+        view_elements(model, sparse.indices.bufferView, static_cast<std::size_t>(sparse.indices.byteOffset),
+                      substitutions, indices.stride, indices.stride, name + "'s sparse indices");
+    if (!index_data) return Error{index_data.error()};
+    indices.data = *index_data;
+    std::size_t value_stride = element;  // sparse values are tightly packed
+    Result<const unsigned char*> values =
+        view_elements(model, sparse.values.bufferView, static_cast<std::size_t>(sparse.values.byteOffset),
+                      substitutions, element, value_stride, name + "'s sparse values");
+    if (!values) return Error{values.error()};
+    std::size_t previous = 0;
+    for (std::size_t i = 0; i < substitutions; ++i) {
+        const std::size_t at = indices.index(i);
+        if (at >= accessor.count || (i > 0 && at <= previous)) {
+            return Error{name + "'s sparse index " + std::to_string(at) + " (number " + std::to_string(i) +
+                         ") is not below " + std::to_string(accessor.count) + " or does not increase"};
+        }
+        previous = at;
+        std::memcpy(out.owned.data() + at * element, *values + i * element, element);
+    }
     return out;
 }
 

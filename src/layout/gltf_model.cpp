@@ -14,6 +14,7 @@
 
 #include "layout/file_io.hpp"
 #include "layout/gltf_accessor.hpp"
+#include "layout/gltf_preflight.hpp"
 #include "layout/limits.hpp"
 #include "layout/text_util.hpp"
 
@@ -28,11 +29,7 @@ namespace {
 // such as "../../../../etc/passwd" must not open, or even reveal whether or
 // how large, a file elsewhere. `user_data` is the model's folder, canonical.
 bool inside_folder(const std::string& path, void* user_data) {
-    const std::string& folder = *static_cast<const std::string*>(user_data);
-    std::error_code ec;
-    const std::string where = std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec).string();
-    return !ec && where.size() > folder.size() && where.compare(0, folder.size(), folder) == 0 &&
-           where[folder.size()] == '/';
+    return detail::inside_folder(path, *static_cast<const std::string*>(user_data));
 }
 bool fs_file_exists(const std::string& path, void* user_data) {
     if (!inside_folder(path, user_data)) return true;  // refused when read, whether it exists or not
@@ -64,8 +61,17 @@ bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, in
     return true;  // textures are not used: only base colour factors
 }
 
+// tinygltf's first message, one short line; a data: URI in it (tinygltf
+// quotes whole buffers) is cut to its media type.
 std::string first_line(const std::string& text) {
     std::string line = text.substr(0, text.find('\n'));
+    for (std::size_t at = line.find("data:"); at != std::string::npos; at = line.find("data:", at + 5)) {
+        const std::size_t comma = line.find(',', at);
+        if (comma == std::string::npos) break;
+        std::size_t end = comma + 1;
+        while (end < line.size() && !std::isspace(static_cast<unsigned char>(line[end]))) ++end;
+        line.replace(comma + 1, end - comma - 1, "...");
+    }
     while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.pop_back();
     if (line.size() > 200) line = line.substr(0, 200) + "...";
     return printable(line.empty() ? "unknown reason" : line);
@@ -75,24 +81,60 @@ bool all_finite(const std::vector<double>& v) {
     return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
 }
 
+std::string beyond_coordinate_limit() {
+    return "beyond the 100 km coordinate limit (" + format_number(limits::kMaxCoordinate) + " m)";
+}
+
 // The node's local transform: its matrix, or translation · rotation · scale.
-Result<glm::dmat4> local_transform(const tinygltf::Node& node) {
+// Translations are coordinates (|t| <= 100 km) and scale factors are bounded
+// like a prop's scale (|s| <= 1e6), so a finite but absurd node (a matrix of
+// 1e300) is an error naming it rather than triangles that overflow.
+Result<glm::dmat4> local_transform(const tinygltf::Node& node, int index) {
+    const std::string who = "has node " + std::to_string(index);
     if (!all_finite(node.matrix) || !all_finite(node.translation) || !all_finite(node.rotation) ||
         !all_finite(node.scale)) {
-        return Error{"has a node with a non-finite transform"};
+        return Error{who + " with a non-finite transform"};
     }
+    const auto check_scale = [&](double v, const char* field) -> Result<void> {
+        if (std::abs(v) > limits::kMaxScale) {
+            return Error{who + " whose " + field + " holds " + format_number(v) + ", beyond the scale limit of " +
+                         format_number(limits::kMaxScale)};
+        }
+        return {};
+    };
+    const auto check_translation = [&](double v, const char* field) -> Result<void> {
+        if (std::abs(v) > limits::kMaxCoordinate) {
+            return Error{who + " whose " + field + " holds " + format_number(v) + ", " + beyond_coordinate_limit()};
+        }
+        return {};
+    };
     if (!node.matrix.empty()) {
         if (node.matrix.size() != 16) {
-            return Error{"has a node matrix without 16 numbers"};
+            return Error{who + " whose matrix does not have 16 numbers"};
         }
         glm::dmat4 m(1.0);
         for (int i = 0; i < 16; ++i) m[i / 4][i % 4] = node.matrix[static_cast<std::size_t>(i)];
+        for (int c = 0; c < 3; ++c) {
+            for (int r = 0; r < 3; ++r) {
+                if (Result<void> ok = check_scale(m[c][r], "matrix"); !ok) return Error{ok.error()};
+            }
+            if (Result<void> ok = check_translation(m[3][c], "matrix translation"); !ok) return Error{ok.error()};
+        }
+        if (m[0][3] != 0.0 || m[1][3] != 0.0 || m[2][3] != 0.0 || m[3][3] != 1.0) {
+            return Error{who + " whose matrix is not affine (its last row must be 0, 0, 0, 1)"};
+        }
         return m;
     }
     if ((!node.translation.empty() && node.translation.size() != 3) ||
         (!node.rotation.empty() && node.rotation.size() != 4) ||
         (!node.scale.empty() && node.scale.size() != 3)) {
-        return Error{"has a node translation, rotation or scale of the wrong size"};
+        return Error{who + " whose translation, rotation or scale has the wrong number of values"};
+    }
+    for (double v : node.translation) {
+        if (Result<void> ok = check_translation(v, "translation"); !ok) return Error{ok.error()};
+    }
+    for (double v : node.scale) {
+        if (Result<void> ok = check_scale(v, "scale"); !ok) return Error{ok.error()};
     }
     glm::dmat4 t(1.0), r(1.0), s(1.0);
     if (!node.translation.empty()) {
@@ -101,8 +143,8 @@ Result<glm::dmat4> local_transform(const tinygltf::Node& node) {
     if (!node.rotation.empty()) {
         double x = node.rotation[0], y = node.rotation[1], z = node.rotation[2], w = node.rotation[3];
         const double length = std::sqrt(x * x + y * y + z * z + w * w);
-        if (!(length > 1e-12)) {
-            return Error{"has a node rotation that is not a unit quaternion"};
+        if (!(length > 1e-12) || !std::isfinite(length)) {
+            return Error{who + " whose rotation is not a unit quaternion"};
         }
         x /= length, y /= length, z /= length, w /= length;
         // Columns of the rotation matrix of the quaternion (x, y, z, w).
@@ -117,6 +159,7 @@ Result<glm::dmat4> local_transform(const tinygltf::Node& node) {
 }
 
 struct MeshInstance {
+    int node = -1;
     int mesh = -1;
     glm::dmat4 world{1.0};
 };
@@ -167,14 +210,14 @@ Result<std::vector<MeshInstance>> collect_instances(const tinygltf::Model& model
             return Error{"has nodes nested deeper than " + std::to_string(limits::kMaxNodeDepth) + " levels"};
         }
         const tinygltf::Node& node = model.nodes[index];
-        const Result<glm::dmat4> local = local_transform(node);
+        const Result<glm::dmat4> local = local_transform(node, item.node);
         if (!local) return Error{local.error()};
         const glm::dmat4 world = item.parent * *local;
         if (node.mesh >= 0) {
             if (static_cast<std::size_t>(node.mesh) >= model.meshes.size()) {
                 return Error{"refers to mesh " + std::to_string(node.mesh) + ", which does not exist"};
             }
-            out.push_back({node.mesh, world});
+            out.push_back({item.node, node.mesh, world});
         }
         for (auto c = node.children.rbegin(); c != node.children.rend(); ++c) {
             stack.push_back({*c, world, item.depth + 1});
@@ -185,7 +228,7 @@ Result<std::vector<MeshInstance>> collect_instances(const tinygltf::Model& model
 
 glm::dvec3 base_colour(const tinygltf::Model& model, int material) {
     const glm::dvec3 grey(0.8);
-    if (material < 0 || static_cast<std::size_t>(material) >= model.materials.size()) return grey;
+    if (material < 0) return grey;  // read_primitive checked it exists
     const std::vector<double>& f =
         model.materials[static_cast<std::size_t>(material)].pbrMetallicRoughness.baseColorFactor;
     if (f.size() < 3 || !std::isfinite(f[0]) || !std::isfinite(f[1]) || !std::isfinite(f[2])) {
@@ -195,6 +238,10 @@ glm::dvec3 base_colour(const tinygltf::Model& model, int material) {
 }
 
 struct PrimitiveData {
+    std::string name;         // "mesh 0 primitive 1"
+    int position_accessor = -1;
+    int mode = TINYGLTF_MODE_TRIANGLES;
+    std::size_t corners = 0;  // vertices or indices
     AccessorView positions;
     AccessorView normals;  // count 0: none
     AccessorView indices;  // count 0 with data null: not indexed
@@ -203,13 +250,28 @@ struct PrimitiveData {
     glm::dvec3 colour{0.8};
 };
 
+// Accessors copied (sparse, or without a bufferView) hold at most this many
+// elements: three vertices for each triangle a model may have.
+constexpr std::size_t kMaxCopied = 3 * limits::kMaxModelTriangles;
+
 Result<PrimitiveData> read_primitive(const tinygltf::Model& model, int mesh, std::size_t p) {
     PrimitiveData out;
     const tinygltf::Primitive& primitive = model.meshes[static_cast<std::size_t>(mesh)].primitives[p];
     const std::string name = "mesh " + std::to_string(mesh) + " primitive " + std::to_string(p);
-    if (primitive.mode != -1 && primitive.mode != TINYGLTF_MODE_TRIANGLES) {
-        return Error{"has " + name + " in mode " + std::to_string(primitive.mode) +
-                "; only TRIANGLES (4) is supported"};
+    static const char* const mode_names[] = {"points", "lines", "line loop", "line strip"};
+    out.name = name;
+    out.mode = primitive.mode == -1 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
+    if (out.mode != TINYGLTF_MODE_TRIANGLES && out.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+        out.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+        const bool named = out.mode >= 0 && out.mode < 4;
+        return Error{"has " + name + " in mode " + std::to_string(out.mode) +
+                     (named ? std::string(" (") + mode_names[out.mode] + ")" : std::string()) +
+                     "; only triangles, triangle strips and fans (modes 4, 5, 6) are supported"};
+    }
+    if (primitive.material < -1 ||
+        (primitive.material >= 0 && static_cast<std::size_t>(primitive.material) >= model.materials.size())) {
+        return Error{"has " + name + " whose material " + std::to_string(primitive.material) +
+                     " does not exist (the model has " + std::to_string(model.materials.size()) + " materials)"};
     }
     const auto position = primitive.attributes.find("POSITION");
     if (position == primitive.attributes.end()) {
@@ -217,16 +279,17 @@ Result<PrimitiveData> read_primitive(const tinygltf::Model& model, int mesh, std
     }
     const auto fail = [&](const std::string& reason) { return Error{"has " + name + " whose " + reason}; };
     if (Result<AccessorView> view = accessor_view(model, position->second, TINYGLTF_TYPE_VEC3,
-                       {TINYGLTF_COMPONENT_TYPE_FLOAT}, "POSITION")) {
-        out.positions = *view;
+                       {TINYGLTF_COMPONENT_TYPE_FLOAT}, "POSITION", kMaxCopied)) {
+        out.positions = std::move(*view);
+        out.position_accessor = position->second;
     } else {
         return fail(view.error());
     }
     const auto normal = primitive.attributes.find("NORMAL");
     if (normal != primitive.attributes.end()) {
         if (Result<AccessorView> view = accessor_view(model, normal->second, TINYGLTF_TYPE_VEC3,
-                           {TINYGLTF_COMPONENT_TYPE_FLOAT}, "NORMAL")) {
-        out.normals = *view;
+                           {TINYGLTF_COMPONENT_TYPE_FLOAT}, "NORMAL", kMaxCopied)) {
+        out.normals = std::move(*view);
     } else {
         return fail(view.error());
     }
@@ -239,19 +302,20 @@ Result<PrimitiveData> read_primitive(const tinygltf::Model& model, int mesh, std
         if (Result<AccessorView> view = accessor_view(model, primitive.indices, TINYGLTF_TYPE_SCALAR,
                            {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
                             TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
-                           "index")) {
-        out.indices = *view;
+                           "index", kMaxCopied)) {
+        out.indices = std::move(*view);
     } else {
         return fail(view.error());
     }
         out.indexed = true;
         corners = out.indices.count;
     }
-    if (corners % 3 != 0) {
+    if (out.mode == TINYGLTF_MODE_TRIANGLES && corners % 3 != 0) {
         return Error{"has " + name + " whose vertex count " + std::to_string(corners) +
                 " is not a multiple of 3"};
     }
-    out.triangles = corners / 3;
+    out.corners = corners;
+    out.triangles = out.mode == TINYGLTF_MODE_TRIANGLES ? corners / 3 : corners >= 3 ? corners - 2 : 0;
     out.colour = base_colour(model, primitive.material);
     return out;
 }
@@ -260,7 +324,31 @@ bool finite(const glm::dvec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-Result<void> emit_triangles(const PrimitiveData& data, const glm::dmat4& world, std::vector<ModelTriangle>& out) {
+bool within(const glm::dvec3& v, double limit) {
+    return std::abs(v.x) <= limit && std::abs(v.y) <= limit && std::abs(v.z) <= limit;
+}
+
+std::string format_vec(const glm::dvec3& v) {
+    return "(" + format_number(v.x) + ", " + format_number(v.y) + ", " + format_number(v.z) + ")";
+}
+
+// Corner k of triangle t, as a position in the vertex list (glTF 2.0,
+// "Primitive Topologies"): strips alternate their winding, fans turn about
+// the first vertex.
+std::size_t corner(const PrimitiveData& data, std::size_t t, std::size_t k) {
+    std::size_t at = 3 * t + k;
+    if (data.mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+        const std::size_t odd = t % 2;
+        at = k == 0 ? t : k == 1 ? t + 1 + odd : t + 2 - odd;
+    } else if (data.mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+        at = k == 0 ? t + 1 : k == 1 ? t + 2 : 0;
+    }
+    return data.indexed ? data.indices.index(at) : at;
+}
+
+Result<void> emit_triangles(const PrimitiveData& data, const MeshInstance& instance,
+                            std::vector<ModelTriangle>& out) {
+    const glm::dmat4& world = instance.world;
     const glm::dmat3 linear(world);
     const double det = glm::determinant(linear);
     const bool mirrored = det < 0.0;
@@ -269,7 +357,7 @@ Result<void> emit_triangles(const PrimitiveData& data, const glm::dmat4& world, 
     for (std::size_t t = 0; t < data.triangles; ++t) {
         std::size_t v[3];
         for (std::size_t k = 0; k < 3; ++k) {
-            v[k] = data.indexed ? data.indices.index(3 * t + k) : 3 * t + k;
+            v[k] = corner(data, t, k);
             if (v[k] >= data.positions.count) {
                 return Error{"has an index " + std::to_string(v[k]) + " past the end of its " +
                         std::to_string(data.positions.count) + " vertices"};
@@ -278,9 +366,17 @@ Result<void> emit_triangles(const PrimitiveData& data, const glm::dmat4& world, 
         if (mirrored) std::swap(v[1], v[2]);  // keep front faces counter-clockwise
         ModelTriangle triangle;
         for (std::size_t k = 0; k < 3; ++k) {
-            triangle.position[k] = glm::dvec3(world * glm::dvec4(data.positions.vec3(v[k]), 1.0));
-            if (!finite(triangle.position[k])) {
-                return Error{"has a vertex position that is not a finite number"};
+            const glm::dvec3 p = data.positions.vec3(v[k]);
+            if (!finite(p) || !within(p, limits::kMaxCoordinate)) {
+                return Error{"has " + data.name + " whose POSITION accessor " + std::to_string(data.position_accessor) +
+                             " has vertex " + std::to_string(v[k]) + " at " + format_vec(p) + ", " +
+                             beyond_coordinate_limit()};
+            }
+            triangle.position[k] = glm::dvec3(world * glm::dvec4(p, 1.0));
+            if (!finite(triangle.position[k]) || !within(triangle.position[k], limits::kMaxCoordinate)) {
+                return Error{"has node " + std::to_string(instance.node) + " that places vertex " +
+                             std::to_string(v[k]) + " of " + data.name + " at " + format_vec(triangle.position[k]) +
+                             ", " + beyond_coordinate_limit()};
             }
         }
         const glm::dvec3 cross = glm::cross(triangle.position[1] - triangle.position[0],
@@ -311,40 +407,56 @@ Result<std::vector<ModelTriangle>> load_model(const std::string& path, std::size
     if (!binary && extension != ".gltf") {
         return Error{"is not a glTF model (expected a .glb or .gltf file)"};
     }
-    if (Result<void> readable = check_readable_file(path, limits::kMaxModelBytes, true); !readable)
-        return Error{readable.error()};
-    std::error_code ec;
-    if (std::filesystem::file_size(path, ec) == 0 && !ec) {
+    // The file is read here, bounded, and checked before tinygltf sees it.
+    Result<std::vector<unsigned char>> bytes = read_file_bytes(path, limits::kMaxModelBytes, true);
+    if (!bytes) return Error{bytes.error()};
+    if (bytes->empty()) {
         return Error{"is not a valid glTF 2.0 file: the file is empty"};
     }
+    std::string_view json_text(reinterpret_cast<const char*>(bytes->data()), bytes->size());
+    long long bin_size = -1;
+    if (binary) {
+        Result<GlbChunks> chunks = split_glb(*bytes);
+        if (!chunks) return Error{chunks.error()};
+        json_text = chunks->json;
+        if (chunks->has_bin) bin_size = static_cast<long long>(chunks->bin_size);
+    }
+    if (Result<void> shape = check_json_shape(json_text); !shape) return Error{shape.error()};
 
+    std::error_code ec;
     std::string folder =
         std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec).parent_path(), ec).string();
     if (ec) return Error{"cannot be opened: " + ec.message()};
     while (folder.size() > 1 && folder.back() == '/') folder.pop_back();
     if (folder == "/") folder.clear();  // a model at the root: everything is below it
+    if (Result<void> checked = check_gltf_document(json_text, binary, bin_size, folder); !checked)
+        return Error{checked.error()};
+
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&skip_image, nullptr);
     loader.SetFsCallbacks({&fs_file_exists, &fs_expand_path, &fs_read_whole_file,
                            &fs_write_whole_file, &folder});
     tinygltf::Model model;
     std::string err, warn;
-    const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                           : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    const std::string base_dir = folder.empty() ? "/" : folder;
+    const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes->data(),
+                                                         static_cast<unsigned int>(bytes->size()), base_dir)
+                           : loader.LoadASCIIFromString(&model, &err, &warn, json_text.data(),
+                                                        static_cast<unsigned int>(json_text.size()), base_dir);
     if (!ok) {
         return Error{"is not a valid glTF 2.0 file: " + first_line(err)};
     }
     if (model.asset.version.rfind("2.", 0) != 0) {
         return Error{"is glTF version " + quote(model.asset.version) + "; only 2.0 is supported"};
     }
-    if (!model.extensionsRequired.empty()) {
+    if (!model.extensionsRequired.empty()) {  // check_gltf_document refused them already
         return Error{"requires the unsupported glTF extension " + quote(model.extensionsRequired.front())};
     }
     const Result<std::vector<MeshInstance>> instances = collect_instances(model);
     if (!instances) return Error{instances.error()};
 
     // Check every primitive and count triangles before reading any.
-    std::vector<std::pair<PrimitiveData, glm::dmat4>> work;
+    std::vector<std::pair<PrimitiveData, MeshInstance>> work;
     std::size_t triangles = 0;
     for (const MeshInstance& instance : *instances) {
         const auto& primitives = model.meshes[static_cast<std::size_t>(instance.mesh)].primitives;
@@ -355,13 +467,13 @@ Result<std::vector<ModelTriangle>> load_model(const std::string& path, std::size
             if (triangles > max_triangles) {
                 return Error{"has more than " + std::to_string(max_triangles) + " triangles"};
             }
-            work.emplace_back(*data, instance.world);
+            work.emplace_back(std::move(*data), instance);
         }
     }
     std::vector<ModelTriangle> out;
     out.reserve(triangles);
-    for (const auto& [data, world] : work) {
-        if (Result<void> emitted = emit_triangles(data, world, out); !emitted) return Error{emitted.error()};
+    for (const auto& [data, instance] : work) {
+        if (Result<void> emitted = emit_triangles(data, instance, out); !emitted) return Error{emitted.error()};
     }
     if (out.empty()) {
         return Error{"has no triangles"};

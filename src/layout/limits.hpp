@@ -49,6 +49,12 @@ inline constexpr std::size_t kMaxModelBytes = 256u << 20;  // 256 MiB
 inline constexpr std::size_t kMaxModelTriangles = 1'000'000;
 inline constexpr std::size_t kMaxLayoutTriangles = 2'000'000;  // all props together
 inline constexpr std::size_t kMaxNodeDepth = 64;
+// A model's JSON (a .gltf file, a .glb's JSON chunk), checked before tinygltf
+// parses it: tinygltf copies `extras` and `extensions` recursively, so deep
+// nesting overflows the stack, and every value costs it about 100 bytes. A
+// glTF document needs about 8 levels; its bulk data lives in buffers.
+inline constexpr std::size_t kMaxModelJsonDepth = 64;
+inline constexpr std::size_t kMaxModelJsonValues = 1'000'000;
 
 // Door boxes and the rasteriser's near plane (render/frame.hpp checks these
 // are its own). An eye sits half an IPD beside the head, so before the head

@@ -1,0 +1,322 @@
+#include "layout/gltf_preflight.hpp"
+
+#include <cctype>
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+#include <sys/stat.h>
+
+#include "layout/limits.hpp"
+#include "layout/text_util.hpp"
+
+namespace impossible::layout::detail {
+
+namespace {
+
+using nlohmann::json;
+
+std::uint32_t read_u32(const std::vector<unsigned char>& bytes, std::size_t at) {
+    return std::uint32_t(bytes[at]) | std::uint32_t(bytes[at + 1]) << 8 | std::uint32_t(bytes[at + 2]) << 16 |
+           std::uint32_t(bytes[at + 3]) << 24;  // little-endian, as glTF
+}
+
+Error invalid(const std::string& reason) { return Error{"is not a valid glTF 2.0 file: " + reason}; }
+
+std::string count_of(std::size_t n, const char* singular, const char* plural) {
+    return std::to_string(n) + " " + (n == 1 ? singular : plural);
+}
+
+// An index field (`buffer`, `bufferView`, `indices`) that must name one of
+// `count` things. Returns the message's tail, or "" when fine or absent.
+std::string bad_reference(const json& object, const char* key, std::size_t count, const char* singular,
+                          const char* plural, const std::string& who) {
+    const auto it = object.find(key);
+    if (it == object.end()) return "";
+    if (!it->is_number_integer()) return who + " whose " + key + " is not a whole number";
+    const std::int64_t index = it->get<std::int64_t>();
+    if (index >= 0 && static_cast<std::uint64_t>(index) < count) return "";
+    return who + " that refers to " + singular + " " + std::to_string(index) + ", which does not exist (the model has " +
+           count_of(count, singular, plural) + ")";
+}
+
+// The decoded size of base64 text as tinygltf's decoder reads it: up to the
+// first character that is not base64 ('=' padding included).
+std::size_t base64_size(std::string_view text) {
+    std::size_t n = 0;
+    while (n < text.size() && (std::isalnum(static_cast<unsigned char>(text[n])) || text[n] == '+' || text[n] == '/'))
+        ++n;
+    return n / 4 * 3 + (n % 4 == 0 ? 0 : n % 4 - 1);
+}
+
+// What a path is when it is not a regular file, for "is a FIFO, not a regular file".
+std::string file_kind_problem(const std::string& path, std::uintmax_t& size) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) {
+        if (errno == ENOENT || errno == ENOTDIR) return "does not exist";
+        return std::string("cannot be opened: ") + std::strerror(errno);
+    }
+    if (S_ISDIR(st.st_mode)) return "is a directory, not a regular file";
+    if (S_ISFIFO(st.st_mode)) return "is a FIFO (named pipe), not a regular file";
+    if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode)) return "is a device, not a regular file";
+    if (S_ISSOCK(st.st_mode)) return "is a socket, not a regular file";
+    if (!S_ISREG(st.st_mode)) return "is not a regular file";
+    size = static_cast<std::uintmax_t>(st.st_size);
+    return "";
+}
+
+Result<void> check_extensions(const json& doc) {
+    const auto required = doc.find("extensionsRequired");
+    if (required == doc.end() || !required->is_array() || required->empty()) return {};
+    // The loader implements no extension: every required one is refused.
+    std::string names;
+    bool draco = false;
+    std::size_t listed = 0;
+    for (const json& name : *required) {
+        if (!name.is_string()) continue;
+        const std::string& text = name.get_ref<const std::string&>();
+        draco = draco || text == "KHR_draco_mesh_compression";
+        if (listed == 5) {
+            names += " and more";
+            break;
+        }
+        names += std::string(listed == 0 ? "" : ", ") + quote(text.substr(0, 100));
+        ++listed;
+    }
+    if (listed == 0) return {};
+    std::string message = std::string("requires the unsupported glTF extension") + (listed > 1 ? "s " : " ") + names;
+    if (draco) message += " (Draco mesh compression; export the model without it)";
+    return Error{message};
+}
+
+Result<void> check_buffers(const json& doc, bool binary, long long glb_bin_size, const std::string& folder) {
+    const auto buffers = doc.find("buffers");
+    if (buffers == doc.end() || !buffers->is_array()) return {};
+    for (std::size_t i = 0; i < buffers->size(); ++i) {
+        const json& buffer = (*buffers)[i];
+        const std::string who = "has buffer " + std::to_string(i);
+        if (!buffer.is_object()) return Error{who + " that is not a JSON object"};
+        const auto length_it = buffer.find("byteLength");
+        if (length_it == buffer.end()) return Error{who + " without a byteLength"};
+        if (!length_it->is_number_unsigned() || length_it->get<std::uint64_t>() == 0)
+            return Error{who + " whose byteLength is not a whole number of bytes above 0"};
+        const std::uint64_t length = length_it->get<std::uint64_t>();
+        const std::string says = who + " whose byteLength is " + std::to_string(length) + " bytes, but ";
+        const auto uri_it = buffer.find("uri");
+        if (uri_it == buffer.end()) {
+            if (!binary || i != 0) return Error{who + " without a uri (only the first buffer of a .glb may have none)"};
+            if (glb_bin_size < 0) return Error{who + " without a uri, but the .glb has no binary chunk"};
+            if (length > static_cast<std::uint64_t>(glb_bin_size))
+                return Error{says + "the .glb's binary chunk holds " + std::to_string(glb_bin_size)};
+            continue;
+        }
+        if (!uri_it->is_string()) return Error{who + " whose uri is not a string"};
+        const std::string& uri = uri_it->get_ref<const std::string&>();
+        if (uri.rfind("data:", 0) == 0) {
+            // The media types tinygltf decodes (DecodeDataURI).
+            static const char* const headers[] = {
+                "data:application/octet-stream;base64,", "data:application/gltf-buffer;base64,",
+                "data:image/jpeg;base64,", "data:image/png;base64,", "data:image/bmp;base64,",
+                "data:image/gif;base64,", "data:text/plain;base64,"};
+            std::size_t header = 0;
+            for (const char* h : headers) {
+                if (uri.rfind(h, 0) == 0) header = std::strlen(h);
+            }
+            if (header == 0) {
+                return Error{who + " whose data: URI is not base64 data of type application/octet-stream or "
+                                   "application/gltf-buffer"};
+            }
+            const std::size_t holds = base64_size(std::string_view(uri).substr(header));
+            if (holds != length) return Error{says + "its data: URI holds " + std::to_string(holds)};
+            continue;
+        }
+        const std::string name = decode_uri(uri);
+        const std::string file = quote(uri.substr(0, 200));
+        if (name.empty() || name.find('\0') != std::string::npos)
+            return Error{who + " whose file name " + file + " is empty or holds a NUL"};
+        const std::string path = (folder.empty() ? "/" : folder + "/") + name;
+        if (!inside_folder(path, folder)) return Error{who + " whose file " + file + " lies outside the model's folder"};
+        std::uintmax_t size = 0;
+        if (const std::string problem = file_kind_problem(path, size); !problem.empty())
+            return Error{who + " whose file " + file + " " + problem};
+        if (size > limits::kMaxModelBytes) {
+            return Error{who + " whose file " + file + " is too large (" + format_bytes(size) + "; the limit is " +
+                         format_bytes(limits::kMaxModelBytes) + ")"};
+        }
+        if (size != length) return Error{says + "its file " + file + " holds " + std::to_string(size)};
+    }
+    return {};
+}
+
+Result<void> check_references(const json& doc) {
+    const auto array = [&](const char* key) -> const json& {
+        static const json empty = json::array();
+        const auto it = doc.find(key);
+        return it != doc.end() && it->is_array() ? *it : empty;
+    };
+    const json& buffers = array("buffers");
+    const json& views = array("bufferViews");
+    const json& accessors = array("accessors");
+    for (std::size_t i = 0; i < views.size(); ++i) {
+        if (!views[i].is_object()) continue;
+        const std::string who = "has bufferView " + std::to_string(i);
+        if (!views[i].contains("buffer")) return Error{who + " without a buffer"};
+        if (std::string e = bad_reference(views[i], "buffer", buffers.size(), "buffer", "buffers", who); !e.empty())
+            return Error{e};
+    }
+    for (std::size_t i = 0; i < accessors.size(); ++i) {
+        const json& accessor = accessors[i];
+        if (!accessor.is_object()) continue;
+        const std::string who = "has accessor " + std::to_string(i);
+        if (std::string e = bad_reference(accessor, "bufferView", views.size(), "bufferView", "bufferViews", who);
+            !e.empty())
+            return Error{e};
+        const auto sparse = accessor.find("sparse");
+        if (sparse == accessor.end() || !sparse->is_object()) continue;
+        for (const char* part : {"indices", "values"}) {
+            const auto it = sparse->find(part);
+            if (it == sparse->end() || !it->is_object()) continue;
+            const std::string whose = who + " whose sparse " + part;
+            if (!it->contains("bufferView")) return Error{whose + " have no bufferView"};
+            if (std::string e = bad_reference(*it, "bufferView", views.size(), "bufferView", "bufferViews", whose);
+                !e.empty())
+                return Error{e};
+        }
+    }
+    const json& meshes = array("meshes");
+    for (std::size_t m = 0; m < meshes.size(); ++m) {
+        const auto primitives = meshes[m].is_object() ? meshes[m].find("primitives") : meshes[m].end();
+        if (!meshes[m].is_object() || primitives == meshes[m].end() || !primitives->is_array()) continue;
+        for (std::size_t p = 0; p < primitives->size(); ++p) {
+            const json& primitive = (*primitives)[p];
+            if (!primitive.is_object()) continue;
+            const std::string who = "has mesh " + std::to_string(m) + " primitive " + std::to_string(p);
+            if (std::string e = bad_reference(primitive, "indices", accessors.size(), "accessor", "accessors",
+                                              who + " whose indices are");
+                !e.empty())
+                return Error{e};
+            const auto indices = primitive.find("indices");
+            if (indices == primitive.end()) continue;
+            const json& accessor = accessors[indices->get<std::size_t>()];
+            if (accessor.is_object() && !accessor.contains("bufferView")) {
+                return Error{who + " whose indices accessor " + std::to_string(indices->get<std::size_t>()) +
+                             " has no bufferView (its data is missing)"};
+            }
+        }
+    }
+    return {};
+}
+
+}  // namespace
+
+bool inside_folder(const std::string& path, const std::string& folder) {
+    std::error_code ec;
+    const std::string where = std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec).string();
+    return !ec && where.size() > folder.size() && where.compare(0, folder.size(), folder) == 0 &&
+           where[folder.size()] == '/';
+}
+
+std::string decode_uri(const std::string& uri) {
+    const auto hex = [](char c) -> int {
+        if (c >= '0' && c <= '9') return c - '0';
+        if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+        if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+        return 0;  // as dlib's from_hex: a bad digit counts as 0
+    };
+    std::string out;
+    for (std::size_t i = 0; i < uri.size(); ++i) {
+        if (uri[i] == '+') {
+            out += ' ';
+        } else if (uri[i] == '%' && uri.size() > i + 2) {
+            out += static_cast<char>(hex(uri[i + 1]) << 4 | hex(uri[i + 2]));
+            i += 2;
+        } else {
+            out += uri[i];
+        }
+    }
+    return out;
+}
+
+Result<GlbChunks> split_glb(const std::vector<unsigned char>& bytes) {
+    if (bytes.size() < 12 || std::memcmp(bytes.data(), "glTF", 4) != 0)
+        return invalid("it does not start with the .glb header (\"glTF\")");
+    if (const std::uint32_t version = read_u32(bytes, 4); version != 2)
+        return Error{"is a .glb file of version " + std::to_string(version) + "; only 2 is supported"};
+    const std::size_t length = read_u32(bytes, 8);
+    if (length > bytes.size()) {
+        return invalid("its header gives a length of " + std::to_string(length) + " bytes, but the file has " +
+                       std::to_string(bytes.size()) + " (cut short?)");
+    }
+    if (length < 20) return invalid("it has no JSON chunk");
+    const std::size_t json_length = read_u32(bytes, 12);
+    if (read_u32(bytes, 16) != 0x4E4F534Au) return invalid("its first chunk is not JSON");
+    if (json_length > length - 20) return invalid("its JSON chunk reaches past the end of the file");
+    GlbChunks out;
+    out.json = std::string_view(reinterpret_cast<const char*>(bytes.data()) + 20, json_length);
+    const std::size_t next = 20 + json_length;  // tinygltf does not require the 4-byte padding
+    if (length - next >= 8) {
+        const std::size_t bin_length = read_u32(bytes, next);
+        if (read_u32(bytes, next + 4) == 0x004E4942u) {
+            if (bin_length > length - next - 8) return invalid("its binary chunk reaches past the end of the file");
+            out.has_bin = true;
+            out.bin_offset = next + 8;
+            out.bin_size = bin_length;
+        }
+    }
+    return out;
+}
+
+Result<void> check_json_shape(std::string_view text) {
+    std::size_t depth = 0, values = 0;
+    bool in_string = false, escape = false, in_word = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (in_string) {
+            if (escape) {
+                escape = false;
+            } else if (c == '\\') {
+                escape = true;
+            } else if (c == '"') {
+                in_string = false;
+            }
+            continue;
+        }
+        const bool word = !(c == '"' || c == '{' || c == '[' || c == '}' || c == ']' || c == ':' || c == ',' ||
+                            std::isspace(static_cast<unsigned char>(c)));
+        if (word) {
+            if (!in_word) ++values;  // a number, true, false or null
+        } else if (c == '"') {
+            in_string = true;
+            ++values;
+        } else if (c == '{' || c == '[') {
+            ++values;
+            if (++depth > limits::kMaxModelJsonDepth) {
+                return Error{"nests its JSON more than " + std::to_string(limits::kMaxModelJsonDepth) +
+                             " levels deep (at byte offset " + std::to_string(i) + "); a glTF file needs about 8"};
+            }
+        } else if (c == '}' || c == ']') {
+            if (depth > 0) --depth;
+        } else if (c == ':' && values > 0) {
+            --values;  // the string before it was a key
+        }
+        in_word = word;
+        // A key counts until its colon: allow one over before the end.
+        if (values > limits::kMaxModelJsonValues + 1) break;
+    }
+    if (values > limits::kMaxModelJsonValues)
+        return Error{"has more than " + std::to_string(limits::kMaxModelJsonValues) + " JSON values"};
+    return {};
+}
+
+Result<void> check_gltf_document(std::string_view text, bool binary, long long glb_bin_size,
+                                 const std::string& folder) {
+    const json doc = json::parse(text.begin(), text.end(), nullptr, false);
+    if (doc.is_discarded() || !doc.is_object()) return {};  // tinygltf says what is wrong
+    if (Result<void> r = check_extensions(doc); !r) return r;
+    if (Result<void> r = check_references(doc); !r) return r;
+    return check_buffers(doc, binary, glb_bin_size, folder);
+}
+
+}  // namespace impossible::layout::detail
