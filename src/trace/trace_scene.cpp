@@ -7,6 +7,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "trace/bvh.hpp"
+
 namespace impossible::trace {
 
 AxisRect room_face_rect(const dvec3& room_min, const dvec3& room_max, layout::Face face) {
@@ -72,6 +74,7 @@ Scene prepare_scene(const layout::Layout& layout) {
             r.faces[f].color = room.face_color[f];
         }
         for (const layout::Prop& prop : room.props) add_prop(r, prop);
+        r.bvh = build_bvh(r.triangles);
         r.checker = room.checker;
         scene.rooms.push_back(std::move(r));
     }

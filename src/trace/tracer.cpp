@@ -4,6 +4,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -13,6 +14,7 @@
 
 #include "math/projection.hpp"
 #include "scene/shading.hpp"
+#include "trace/bvh.hpp"
 #include "trace/intersect.hpp"
 #include "trace/sample_pattern.hpp"
 
@@ -51,8 +53,13 @@ Nearest nearest_in_room(const Scene& scene, int room_index, const dvec3& origin,
     }
     for (const PropBox& box : room.boxes)
         nearest.offer(hit_prop_box(box, origin, dir, clip), -1, box.color, 0.0);
-    for (const PropTriangle& tri : room.triangles)
-        nearest.offer(hit_triangle(tri, origin, dir, clip), -1, tri.color, 0.0);
+    // The triangles come after the faces and boxes and lose a tie to them;
+    // among themselves the first in the list wins one (bvh.hpp).
+    const double t_limit = nearest.found ? nearest.t : std::numeric_limits<double>::infinity();
+    const TriangleHit tri =
+        room.bvh.nodes.empty() ? nearest_triangle_scan(room.triangles, origin, dir, clip, t_limit)
+                               : nearest_triangle(room.bvh, room.triangles, origin, dir, clip, t_limit);
+    if (tri.hit) nearest.offer(tri.hit, -1, room.triangles[tri.index].color, 0.0);
     for (int p : room.portals)
         nearest.offer(hit_portal_box(scene.portals[p], origin, dir, clip), p, dvec3(0.0), 0.0);
     return nearest;
