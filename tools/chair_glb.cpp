@@ -1,4 +1,5 @@
 #include "chair_glb.hpp"
+#include "glb_container.hpp"
 
 #include <algorithm>
 #include <array>
@@ -62,15 +63,7 @@ void append_bytes(std::vector<unsigned char>& out, const std::vector<T>& values)
     std::memcpy(out.data() + begin, values.data(), values.size() * sizeof(T));
 }
 
-void append_u32(std::vector<unsigned char>& out, std::uint32_t v) {
-    for (int i = 0; i < 4; ++i) out.push_back(static_cast<unsigned char>(v >> (8 * i)));
-}
-
-std::string number(float v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.9g", static_cast<double>(v));
-    return buffer;
-}
+std::string number(float v) { return json_number(v); }
 
 std::string vec3_json(const std::array<float, 3>& v) {
     return "[" + number(v[0]) + "," + number(v[1]) + "," + number(v[2]) + "]";
@@ -141,22 +134,6 @@ std::string buffer_views_json(const std::vector<BufferView>& views) {
                ",\"target\":" + std::to_string(views[i].target) + "}";
     }
     return out;
-}
-
-// The GLB container: header, JSON chunk, BIN chunk.
-std::vector<unsigned char> glb_of(const std::string& json, const std::vector<unsigned char>& bin) {
-    std::vector<unsigned char> glb;
-    const auto total = static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + bin.size());
-    append_u32(glb, 0x46546C67);  // "glTF"
-    append_u32(glb, 2);
-    append_u32(glb, total);
-    append_u32(glb, static_cast<std::uint32_t>(json.size()));
-    append_u32(glb, 0x4E4F534A);  // "JSON"
-    glb.insert(glb.end(), json.begin(), json.end());
-    append_u32(glb, static_cast<std::uint32_t>(bin.size()));
-    append_u32(glb, 0x004E4942);  // "BIN\0"
-    glb.insert(glb.end(), bin.begin(), bin.end());
-    return glb;
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include "sphere_glb.hpp"
+#include "glb_container.hpp"
 
 #include <algorithm>
 #include <array>
@@ -11,10 +12,6 @@ namespace impossible::tools {
 
 namespace {
 
-void append_u32(std::vector<unsigned char>& out, std::uint32_t v) {
-    for (int i = 0; i < 4; ++i) out.push_back(static_cast<unsigned char>(v >> (8 * i)));
-}
-
 template <class T>
 void append_values(std::vector<unsigned char>& out, const std::vector<T>& values) {
     for (const T& v : values) {
@@ -25,11 +22,7 @@ void append_values(std::vector<unsigned char>& out, const std::vector<T>& values
     }
 }
 
-std::string number(float v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.9g", static_cast<double>(v));
-    return buffer;
-}
+std::string number(float v) { return json_number(v); }
 
 }  // namespace
 
@@ -92,17 +85,7 @@ std::vector<unsigned char> make_sphere_glb(long triangles) {
         std::to_string(indices.size() * 4) + ",\"target\":34963}],"
         "\"buffers\":[{\"byteLength\":" + std::to_string(bin.size()) + "}]}";
     while (json.size() % 4 != 0) json += ' ';  // chunks are 4-byte aligned
-    std::vector<unsigned char> glb;
-    append_u32(glb, 0x46546C67);  // "glTF"
-    append_u32(glb, 2);
-    append_u32(glb, static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + bin.size()));
-    append_u32(glb, static_cast<std::uint32_t>(json.size()));
-    append_u32(glb, 0x4E4F534A);  // "JSON"
-    glb.insert(glb.end(), json.begin(), json.end());
-    append_u32(glb, static_cast<std::uint32_t>(bin.size()));
-    append_u32(glb, 0x004E4942);  // "BIN\0"
-    glb.insert(glb.end(), bin.begin(), bin.end());
-    return glb;
+    return glb_of(json, bin);
 }
 
 }  // namespace impossible::tools

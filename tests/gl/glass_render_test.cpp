@@ -37,6 +37,21 @@ const GlassPose kGlassPoses[] = {
     {"three_kinds.json", "atelier", {-1.2, 1.3, -1.0}, 30, -20, "close to the mirror and the door"},
 };
 
+layout::Layout glass_layout(const char* file) {
+    return testing::layout_from_file(std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/" + file);
+}
+
+// The layout's start view, width × height per eye.
+render::FrameDesc start_frame(const layout::Layout& l, int width, int height) {
+    render::FrameDesc f;
+    f.head.position = l.start.position;
+    f.head.yaw_deg = l.start.yaw_deg;
+    f.room = l.start.room;
+    f.eye_width = width;
+    f.eye_height = height;
+    return f;
+}
+
 struct GlassCase {
     render::ClipMode clip;
     int depth;
@@ -46,8 +61,7 @@ class GlassRender : public ::testing::TestWithParam<GlassCase> {};
 
 TEST_P(GlassRender, IdsAndColoursAgreeWithTheTracer) {
     for (const GlassPose& c : kGlassPoses) {
-        const layout::Layout l =
-            testing::layout_from_file(std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/" + c.layout);
+        const layout::Layout l = glass_layout(c.layout);
         render::FrameDesc f;
         f.head = {c.position, c.yaw, c.pitch, 0.0};
         f.room = layout::find_room(l, c.room);
@@ -88,13 +102,8 @@ INSTANTIATE_TEST_SUITE_P(
 // nested to sub-pixel size in window_pair.json, 4 pixels of 20,480.
 TEST(GlassRender, MultisampledAndWithPortalTextures) {
     for (const char* file : {"mirror_hall.json", "glass_gallery.json", "window_pair.json", "three_kinds.json"}) {
-        const layout::Layout l = testing::layout_from_file(std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/" + file);
-        render::FrameDesc f;
-        f.head.position = l.start.position;
-        f.head.yaw_deg = l.start.yaw_deg;
-        f.room = l.start.room;
-        f.eye_width = 128;
-        f.eye_height = 80;
+        const layout::Layout l = glass_layout(file);
+        render::FrameDesc f = start_frame(l, 128, 80);
         f.samples = 4;
         const image::Image multi = testing::render_once(gl::Backend::Egl, l, f);
         const image::Image traced_multi = trace::trace_frame(l, app::trace_desc_for(f));
@@ -120,13 +129,8 @@ TEST(GlassRender, MultisampledAndWithPortalTextures) {
 // tint or a blend differently here and there).
 TEST(GlassRender, StereoModesCullingAndOcclusionDrawTheSameImage) {
     for (const char* file : {"mirror_hall.json", "glass_gallery.json", "window_pair.json", "three_kinds.json"}) {
-        const layout::Layout l = testing::layout_from_file(std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/" + file);
-        render::FrameDesc base;
-        base.head.position = l.start.position;
-        base.head.yaw_deg = l.start.yaw_deg;
-        base.room = l.start.room;
-        base.eye_width = 128;
-        base.eye_height = 80;
+        const layout::Layout l = glass_layout(file);
+        const render::FrameDesc base = start_frame(l, 128, 80);
         const image::Image reference = testing::render_once(gl::Backend::Egl, l, base);
         std::vector<std::pair<const char*, render::FrameDesc>> variants;
         render::FrameDesc f = base;
@@ -154,13 +158,8 @@ TEST(GlassRender, StereoModesCullingAndOcclusionDrawTheSameImage) {
 // (the full-target triangles of the tint and blend steps included).
 TEST(GlassRender, SinglePassHalvesTheDrawCalls) {
     for (const char* file : {"mirror_hall.json", "glass_gallery.json", "three_kinds.json"}) {
-        const layout::Layout l = testing::layout_from_file(std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/" + file);
-        render::FrameDesc f;
-        f.head.position = l.start.position;
-        f.head.yaw_deg = l.start.yaw_deg;
-        f.room = l.start.room;
-        f.eye_width = 96;
-        f.eye_height = 64;
+        const layout::Layout l = glass_layout(file);
+        render::FrameDesc f = start_frame(l, 96, 64);
         render::FrameStats single, two;
         testing::render_once(gl::Backend::Egl, l, f, &single);
         f.stereo = render::StereoMode::TwoPass;
