@@ -603,6 +603,36 @@ class Case:
                         return True
         return False
 
+    def eyes(self, ipd=0.064):
+        """The two eyes (left, right) of the pose: yaw about +y, pitch about
+        the head's right axis, roll about its forward axis (layout-format.md,
+        "Head, eyes and walking"), the eyes at head -/+ ipd/2 · right."""
+        yaw, pitch, roll = (math.radians(v) for v in self.pose[3:])
+        forward = [-math.sin(yaw), 0.0, -math.cos(yaw)]
+        right = [math.cos(yaw), 0.0, -math.sin(yaw)]
+        forward = [math.cos(pitch) * forward[i] + math.sin(pitch) * (1.0 if i == 1 else 0.0) for i in range(3)]
+        f_x_r = [forward[1] * right[2] - forward[2] * right[1], forward[2] * right[0] - forward[0] * right[2],
+                 forward[0] * right[1] - forward[1] * right[0]]
+        right = [math.cos(roll) * right[i] + math.sin(roll) * f_x_r[i] for i in range(3)]
+        return [[self.pose[i] + s * ipd / 2 * right[i] for i in range(3)] for s in (-1, 1)]
+
+    def near_plane_note(self, near=1e-5):
+        """Where an eye is in its room closer to a face (or glass in it) than
+        the rasteriser's near plane (10 µm, docs/accuracy.md "Contact
+        distance"), which clips the face there: a note for a failure."""
+        room = next(x for x in self.rooms if x["id"] == self.room)
+        notes = []
+        for eye, e in zip(("left", "right"), self.eyes()):
+            if not all(room["min"][a] <= e[a] <= room["max"][a] for a in range(3)):
+                continue
+            for face, name in enumerate(("-x", "+x", "-z", "+z", "floor", "ceiling")):
+                axis = (0, 0, 2, 2, 1, 1)[face]
+                d = e[axis] - room["min"][axis] if face % 2 == 0 else room["max"][axis] - e[axis]
+                if d < near:
+                    notes.append("the %s eye is %.3g µm from the %s face, inside the rasteriser's %g µm near plane"
+                                 % (eye, d * 1e6, name, near * 1e6))
+        return "; ".join(notes)
+
     def view_args(self, size):
         pose = ",".join("%.17g" % v for v in self.pose)
         return ["--pose=" + pose, "--room", self.room, "--size", size, "--fov", "%.6g" % self.fov,
@@ -718,6 +748,8 @@ def run_case(binary, seed, number, size, keep, extra, kinds=DEFAULT_KINDS):
     result.update(status=status, mismatches=mismatches,
                   pct=float(fields.get("id_mismatch_pct", "nan")), psnr=fields.get("psnr_db", "?"),
                   commands=[shell(render), shell(trace), shell(compare)])
+    if status == "fail" and case.near_plane_note() and not extra:
+        result["near"] = case.near_plane_note()
     if not keep:
         for suffix in ("-r.png", "-r-ids.png", "-t.png", "-t-ids.png"):
             try:
@@ -766,8 +798,9 @@ def main():
                 print("FAIL seed %d case %d (%s, %s): %s" % (
                     res["seed"], res["case"], label, res["what"],
                     res.get("detail") or "%d id mismatches (%.4f %%)" % (res["mismatches"], res["pct"])))
-                if "budget" in res:
-                    print("  " + res["budget"])
+                for note in ("budget", "near"):
+                    if note in res:
+                        print("  " + res[note])
                 print("  reproduce: tools/diff_fuzz.py --binary %s --seed %d --case %d%s%s --keep /tmp/diff-fuzz-case%s"
                       % (a.binary, res["seed"], res["case"], kinds_arg,
                          "" if a.size == "96x64" else " --size " + a.size,
