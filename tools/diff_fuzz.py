@@ -11,11 +11,35 @@ deep recursion). The case is rendered with `impossible render` and traced with
 with its one-pixel edge tolerance. A case passes with 0 mismatches.
 
 Every failure is printed as the command lines that reproduce it (the layout
-file is kept in --keep DIR). The same --seed and case number always make the
-same layout and pose.
+file is kept in --keep DIR). The same --seed, --kinds and case number always
+make the same layout and pose.
+
+--kinds picks the kinds of layout (comma-separated; case N is of kind N
+modulo their count). The default is the layouts above: coincident, wall_pair,
+free_pair and corridor, in that order. The fifth, "glass", is mirrors and
+windows (layout-format.md, "Mirrors and windows"), one of five sub-kinds per
+case: mirrors (1-3 in walls, floor or ceiling, some side by side in one
+face, touching), facing_mirrors (opposite walls, an endless row; sometimes
+a third mirror or a window pair on a side wall), window_pair (a window in a
+wall of each of two overlapping rooms, sometimes a mirror seen through it),
+window_loop (a window pair on two walls of one room, facing or at a corner)
+and door_glass (a door pair between two rooms with glass in both: the door
+seen in a mirror, a mirror or window seen through the door, a mirror beside
+the door in its wall). Glass is 1 cm to a whole face, tinted 0..1 per
+channel (or white), windows reflect 0..1 (0 and 1 included, or the default);
+props near the glass; 30 % of layouts 0.5-2 km from the origin. Poses:
+anywhere looking at the glass; 0.1 mm to 5 cm in front of it (one eye often
+behind its plane); straight into it, near or far (facing mirrors or
+windows); grazing it 0.1 mm to 0.5 m off its plane; millimetres from a wall;
+random looks; depth 1 to 64. A window branch below 1/256 of the light is cut
+by both programs alike (scene/shading.hpp, kMinBranchWeight). A failure
+says so when its render reached the portal-pass budget (docs/bounded-work.md)
+or an eye lies inside the rasteriser's 10 µm near plane of a face of its
+room (docs/accuracy.md, "Mirrors and windows", has a long run's failures).
 
     tools/diff_fuzz.py --binary build/impossible --seed 1 --cases 300
     tools/diff_fuzz.py --binary build/impossible --seed 1 --case 17 --keep /tmp/case17
+    tools/diff_fuzz.py --binary build/impossible --seed 1 --cases 100 --kinds glass
 
 A case whose every mismatching pixel lies on a feature one pixel thin (a door
 seen nearly edge-on, a sub-pixel prop edge) is counted as a "sliver": the
@@ -37,7 +61,12 @@ import struct
 import tempfile
 import zlib
 
-KINDS = ["coincident", "wall_pair", "free_pair", "corridor"]
+# The kinds a run cycles through by default (docs/accuracy.md's figures are
+# for these); --kinds picks others. "glass" is mirrors and windows.
+DEFAULT_KINDS = ["coincident", "wall_pair", "free_pair", "corridor"]
+KINDS = DEFAULT_KINDS + ["glass"]
+# The layouts of the glass kind, one chosen per case (Case.make_glass).
+GLASS_SUBKINDS = ["mirrors", "facing_mirrors", "window_pair", "window_loop", "door_glass"]
 
 
 def rnd_color(r):
@@ -49,18 +78,20 @@ def log_uniform(r, lo, hi):
 
 
 class Case:
-    """One layout and one pose, made from (seed, number) alone."""
+    """One layout and one pose, made from (seed, number) and the kinds alone."""
 
-    def __init__(self, seed, number):
+    def __init__(self, seed, number, kinds=DEFAULT_KINDS):
         self.seed, self.number = seed, number
         r = random.Random(seed * 1_000_003 + number)
         self.r = r
-        self.kind = KINDS[number % len(KINDS)]
+        self.kind = kinds[number % len(kinds)]
+        self.sub = None  # the glass kind's sub-kind
         far = r.random() < 0.3
         self.origin = [r.uniform(-2000, 2000), 0.0, r.uniform(-2000, 2000)] if far else [0.0, 0.0, 0.0]
         self.rooms, self.portals = [], []
         getattr(self, "make_" + self.kind)()
-        self.pose, self.room, self.max_depth, self.fov, self.what = self.make_pose()
+        make_pose = self.make_glass_pose if self.kind == "glass" else self.make_pose
+        self.pose, self.room, self.max_depth, self.fov, self.what = make_pose()
 
     # --- rooms and portals ---------------------------------------------
     def room(self, rid, lo, hi, props=()):
@@ -193,6 +224,233 @@ class Case:
         self.portal("north", "a", [c[0], c[1], lo[2]], [0, 0, 1], w, ph, "south", self.box_depth())
         self.portal("south", "a", [c[0], c[1], hi[2]], [0, 0, -1], w, ph, "north", self.box_depth())
 
+    # --- mirrors and windows (the glass kind) ---------------------------
+    # Faces of a room: 0 -x, 1 +x, 2 -z, 3 +z (walls), 4 floor, 5 ceiling.
+    @staticmethod
+    def face_frame(lo, hi, face):
+        """(axis, plane coordinate, inward normal, width axis, height axis)
+        of a face; the width axis is the portal's right (up × normal), the
+        height axis its up ([0, 1, 0] on walls, [0, 0, -1] on floor and
+        ceiling, which portal() sets)."""
+        axis = (0, 0, 2, 2, 1, 1)[face]
+        coord = lo[axis] if face % 2 == 0 else hi[axis]
+        n = [0.0, 0.0, 0.0]
+        n[axis] = 1.0 if face % 2 == 0 else -1.0
+        wide, high = (2, 1) if axis == 0 else (0, 1) if axis == 2 else (0, 2)
+        return axis, coord, n, wide, high
+
+    def glass_size(self, span_w, span_h):
+        """1 cm to the whole face: exactly the whole face (or its width or
+        height) sometimes, else large or log-uniform from 1 cm."""
+        r = self.r
+
+        def one(span):
+            x = r.random()
+            return span if x < 0.2 else r.uniform(0.3 * span, span) if x < 0.6 else log_uniform(r, 0.01, span)
+        return one(span_w), one(span_h)
+
+    def face_rect(self, lo, hi, face, w=None, h=None, slot=(0.0, 1.0)):
+        """A rectangle in `face` of the room [lo, hi], inside the slot (the
+        share of the face's width it may take), normal into the room; w and
+        h are drawn (glass_size) where not given and cut to the slot."""
+        r = self.r
+        axis, coord, n, wide, high = self.face_frame(lo, hi, face)
+        a0 = lo[wide] + slot[0] * (hi[wide] - lo[wide])
+        a1 = lo[wide] + slot[1] * (hi[wide] - lo[wide])
+        span_h = hi[high] - lo[high]
+        if w is None or h is None:
+            w, h = self.glass_size(a1 - a0, span_h)
+        w, h = min(w, a1 - a0), min(h, span_h)
+        c = [0.0, 0.0, 0.0]
+        c[axis] = coord
+        c[wide] = r.uniform(a0 + w / 2, a1 - w / 2)
+        c[high] = lo[high] + span_h / 2 + r.uniform(-(span_h - h) / 2, (span_h - h) / 2)
+        return c, n, w, h
+
+    def tint(self):
+        """None (the default, white) half the time; else 0..1 per channel,
+        sometimes with a channel or all at 0 or 1."""
+        r = self.r
+        x = r.random()
+        if x < 0.5:
+            return None
+        if x < 0.55:
+            return [r.choice([0.0, 1.0]) for _ in range(3)]
+        return [round(r.uniform(0, 1), 3) for _ in range(3)]
+
+    def reflectance(self):
+        r = self.r
+        x = r.random()
+        return None if x < 0.15 else 0.0 if x < 0.3 else 1.0 if x < 0.45 else round(r.uniform(0, 1), 3)
+
+    def glass(self, pid, room, rect, kind, target=None):
+        c, n, w, h = rect
+        self.portal(pid, room, c, n, w, h, target)
+        p = self.portals[-1]
+        p["kind"] = kind
+        if kind == "mirror":
+            del p["target"]
+        tint = self.tint()
+        if tint is not None:
+            p["tint"] = tint
+        if kind == "window":
+            refl = self.reflectance()
+            if refl is not None:
+                p["reflectance"] = refl
+        return p
+
+    def glass_room(self, rid, centre, hx, hz, h):
+        lo, hi = self.room_box(centre, hx, hz, h)
+        room = self.room(rid, lo, hi)
+        return room, room["min"], room["max"]
+
+    def add_props(self, room, near, count):
+        props = self.props_near(near, room["min"], room["max"], count)
+        if props:
+            room["props"] = props
+
+    def make_glass(self):
+        """Mirrors and windows in the faces of rooms, doors mixed in."""
+        self.sub = self.r.choice(GLASS_SUBKINDS)
+        self.focus = None  # the portal the pose is about
+        getattr(self, "glass_" + self.sub)()
+        if self.focus is None:
+            self.focus = self.portals[0]
+
+    def glass_mirrors(self):
+        """One room, 1-3 mirrors (a few side by side in one face, touching
+        sometimes), in walls and sometimes the floor or ceiling."""
+        r, o = self.r, self.origin
+        room, lo, hi = self.glass_room("a", o, r.uniform(0.8, 5), r.uniform(0.8, 5), r.uniform(2.2, 4))
+        faces = r.sample([0, 1, 2, 3, 4, 5] if r.random() < 0.3 else [0, 1, 2, 3], r.randint(1, 3))
+        for face in faces:
+            k = 1 if r.random() < 0.7 else r.randint(2, 3)  # mirrors side by side
+            cuts = sorted(r.uniform(0, 1) for _ in range(k - 1)) if r.random() < 0.5 else [i / k for i in range(1, k)]
+            bounds = [0.0] + cuts + [1.0]
+            for i in range(k):
+                self.glass("m%d_%d" % (face, i), "a", self.face_rect(lo, hi, face, slot=(bounds[i], bounds[i + 1])),
+                           "mirror")
+        self.add_props(room, self.portals[0]["center"], r.randint(0, 4))
+
+    def glass_facing_mirrors(self):
+        """Two mirrors on opposite walls (an endless row of reflections),
+        sometimes a third on a side wall or a window between them."""
+        r, o = self.r, self.origin
+        room, lo, hi = self.glass_room("a", o, r.uniform(0.5, 4), r.uniform(0.5, 8), r.uniform(2.2, 4))
+        face = r.choice([0, 2])
+        first = self.face_rect(lo, hi, face)
+        if r.random() < 0.5:  # the same rectangle straight across
+            axis = first[1].index(1.0)
+            c = list(first[0])
+            c[axis] = hi[axis]
+            second = (c, [-v for v in first[1]], first[2], first[3])
+        else:
+            second = self.face_rect(lo, hi, face + 1)
+        self.glass("near", "a", first, "mirror")
+        self.glass("far", "a", second, "mirror")
+        x = r.random()
+        if x < 0.2:
+            self.glass("side", "a", self.face_rect(lo, hi, r.choice([2, 3]) if face == 0 else r.choice([0, 1])),
+                       "mirror")
+        elif x < 0.35:  # a window pair beside them: two branches at each reflection
+            side = r.choice([2, 3]) if face == 0 else r.choice([0, 1])
+            w, h = self.glass_size(1.0, hi[1] - lo[1])
+            self.glass("pane_a", "a", self.face_rect(lo, hi, side, w, h, slot=(0.0, 0.5)), "window", "pane_b")
+            self.glass("pane_b", "a", self.face_rect(lo, hi, side, w, h, slot=(0.5, 1.0)), "window", "pane_a")
+        self.add_props(room, first[0], r.randint(0, 3))
+        self.focus = self.portals[r.randrange(2)]
+
+    def overlapping_room(self, rid, lo, hi, h):
+        """A second room overlapping the first (or up to 30 m away)."""
+        r = self.r
+        shift = [r.uniform(-30, 30), 0, r.uniform(-30, 30)] if r.random() < 0.3 else [r.uniform(-1, 1), 0, r.uniform(-1, 1)]
+        centre = [(lo[0] + hi[0]) / 2 + shift[0], lo[1], (lo[2] + hi[2]) / 2 + shift[2]]
+        return self.glass_room(rid, centre, r.uniform(0.8, 4), r.uniform(0.8, 4), h)
+
+    def glass_window_pair(self):
+        """A window in a wall of each of two overlapping rooms; sometimes a
+        mirror in the far room, seen through the window."""
+        r, o = self.r, self.origin
+        h = r.uniform(2.2, 4)
+        a, lo, hi = self.glass_room("a", o, r.uniform(0.8, 4), r.uniform(0.8, 4), h)
+        b, lo2, hi2 = self.overlapping_room("b", lo, hi, h)
+        fa, fb = r.randrange(4), r.randrange(4)
+        ra = self.face_rect(lo, hi, fa)
+        rb = self.face_rect(lo2, hi2, fb, ra[2], ra[3])
+        w, ht = min(ra[2], rb[2]), min(ra[3], rb[3])  # a rectangle shrunk about its centre stays in its face
+        self.glass("a_window", "a", (ra[0], ra[1], w, ht), "window", "b_window")
+        self.glass("b_window", "b", (rb[0], rb[1], w, ht), "window", "a_window")
+        if r.random() < 0.4:
+            self.glass("b_mirror", "b", self.face_rect(lo2, hi2, r.choice([f for f in range(4) if f != fb])), "mirror")
+        self.add_props(a, ra[0], r.randint(0, 4))
+        self.add_props(b, rb[0], r.randint(0, 3))
+
+    def glass_window_loop(self):
+        """A window pair on two walls of one room (facing, or at a corner):
+        the room from the partner's side, itself included."""
+        r, o = self.r, self.origin
+        room, lo, hi = self.glass_room("a", o, r.uniform(0.8, 5), r.uniform(0.8, 5), r.uniform(2.2, 4))
+        fa = r.randrange(4)
+        fb = fa ^ 1 if r.random() < 0.6 else r.choice([2, 3] if fa < 2 else [0, 1])
+        ra = self.face_rect(lo, hi, fa)
+        rb = self.face_rect(lo, hi, fb, ra[2], ra[3])
+        w, ht = min(ra[2], rb[2]), min(ra[3], rb[3])
+        self.glass("west", "a", (ra[0], ra[1], w, ht), "window", "east")
+        self.glass("east", "a", (rb[0], rb[1], w, ht), "window", "west")
+        if r.random() < 0.3:
+            rest = [f for f in range(4) if f not in (fa, fb)]
+            self.glass("mirror", "a", self.face_rect(lo, hi, r.choice(rest)), "mirror")
+        self.add_props(room, ra[0], r.randint(0, 4))
+
+    def glass_door_glass(self):
+        """A door pair in the walls of two rooms and glass in both: a door
+        seen in a mirror, a mirror (or window) seen through a door, glass
+        beside the door in the same wall."""
+        r, o = self.r, self.origin
+        h = r.uniform(2.2, 4)
+        a, lo, hi = self.glass_room("a", o, r.uniform(1.0, 4), r.uniform(1.0, 4), h)
+        b, lo2, hi2 = self.overlapping_room("b", lo, hi, h)
+        fa, fb = r.randrange(4), r.randrange(4)
+        beside = r.random() < 0.3  # the door and a mirror share wall fa
+        w, ph = log_uniform(r, 0.01, 3), min(log_uniform(r, 0.01, 2.5), h - 0.02)
+        da = self.face_rect(lo, hi, fa, w, ph, slot=(0.0, 0.5) if beside else (0.0, 1.0))
+        db = self.face_rect(lo2, hi2, fb, w, ph)
+        w, ph = min(da[2], db[2]), min(da[3], db[3])
+        self.portal("a_door", "a", da[0], da[1], w, ph, "b_door", self.box_depth())
+        self.portal("b_door", "b", db[0], db[1], w, ph, "a_door", self.box_depth())
+        if beside:
+            self.glass("a_beside", "a", self.face_rect(lo, hi, fa, slot=(0.5, 1.0)), "mirror")
+        others = [f for f in range(6) if f != fa]
+        x = r.random()
+        if x < 0.5:  # the door seen in a mirror: on the opposite wall mostly
+            self.glass("a_mirror", "a", self.face_rect(lo, hi, fa ^ 1 if r.random() < 0.6 else r.choice(others)),
+                       "mirror")
+        elif x < 0.7:  # a window pair of room a, the door seen through it
+            fw = r.sample([f for f in range(4) if f != fa], 2)
+            wa = self.face_rect(lo, hi, fw[0])
+            wb = self.face_rect(lo, hi, fw[1], wa[2], wa[3])
+            ww, wh = min(wa[2], wb[2]), min(wa[3], wb[3])
+            self.glass("a_pane", "a", (wa[0], wa[1], ww, wh), "window", "a_pane2")
+            self.glass("a_pane2", "a", (wb[0], wb[1], ww, wh), "window", "a_pane")
+        if r.random() < 0.6:  # glass seen through the door
+            kind = "mirror" if r.random() < 0.7 else "window"
+            fm = fb ^ 1 if r.random() < 0.6 else r.choice([f for f in range(6) if f != fb])
+            if kind == "mirror":
+                self.glass("b_mirror", "b", self.face_rect(lo2, hi2, fm), "mirror")
+            else:  # a window of b looking into a
+                wb = self.face_rect(lo2, hi2, fm)
+                free = [f for f in range(4) if f != fa and not any(p["room"] == "a" and p["normal"] ==
+                                                                   self.face_frame(lo, hi, f)[2] for p in self.portals)]
+                if free:
+                    wa = self.face_rect(lo, hi, r.choice(free), wb[2], wb[3])
+                    ww, wh = min(wa[2], wb[2]), min(wa[3], wb[3])
+                    self.glass("b_pane", "b", (wb[0], wb[1], ww, wh), "window", "a_pane3")
+                    self.glass("a_pane3", "a", (wa[0], wa[1], ww, wh), "window", "b_pane")
+        self.add_props(a, da[0], r.randint(0, 4))
+        self.add_props(b, db[0], r.randint(0, 3))
+        mine = [p for p in self.portals if p["room"] == "a"]
+        self.focus = r.choice(mine)
+
     # --- the pose -------------------------------------------------------
     def make_pose(self):
         r = self.r
@@ -241,9 +499,87 @@ class Case:
         pose = [p[0], p[1], p[2], yaw, pitch, roll]
         return pose, "a", max_depth, fov, what
 
+    def make_glass_pose(self):
+        """A pose about the focus portal of room a (a mirror, a window or a
+        door): anywhere looking at it, millimetres in front of it (one eye
+        may be behind its plane), looking straight into it (facing mirrors or
+        windows: the endless row), grazing it, millimetres from a wall, or a
+        random look."""
+        r = self.r
+        lo, hi = self.rooms[0]["min"], self.rooms[0]["max"]
+        f = self.focus
+        c, n = f["center"], f["normal"]
+        up = f.get("up", [0.0, 1.0, 0.0])
+        right = [up[1] * n[2] - up[2] * n[1], up[2] * n[0] - up[0] * n[2], up[0] * n[1] - up[1] * n[0]]
+        kind = f.get("kind", "door")
+        naxis = max(range(3), key=lambda i: abs(n[i]))
+        facing = self.sub in ("facing_mirrors", "window_loop")
+        max_depth = r.choice([2, 8, 16, 64, 64]) if facing else r.choice([1, 2, 4, 8, 8, 16, 64])
+        fov = r.uniform(40, 110)
+
+        def on_rect(share):
+            return [c[i] + r.uniform(-share, share) * f["width"] * right[i] + r.uniform(-share, share) * f["height"] * up[i]
+                    for i in range(3)]
+
+        keep = naxis  # the axis the clamp below leaves alone
+        straight = False
+        choice = r.random()
+        if choice < 0.2:  # anywhere in the room, looking at it
+            p = [r.uniform(lo[i] + 0.05, hi[i] - 0.05) for i in range(3)]
+            t = on_rect(0.5)
+            v = [t[i] - p[i] for i in range(3)]
+            what = "in the room, towards the " + kind
+        elif choice < 0.4:  # millimetres in front of it
+            dist = log_uniform(r, 1e-4, 0.05)
+            t = on_rect(0.45)
+            p = [t[i] + dist * n[i] for i in range(3)]
+            side = r.uniform(-1, 1) if r.random() < 0.5 else 0.0  # else both eyes that close
+            v = [-n[i] + side * right[i] + r.uniform(-0.3, 0.3) * up[i] for i in range(3)]
+            what = "%.2g m in front of the %s" % (dist, kind)
+        elif choice < 0.6:  # straight into it, from near or far
+            dist = r.uniform(0.01, hi[naxis] - lo[naxis] - 0.01) if r.random() < 0.7 else log_uniform(r, 1e-4, 0.05)
+            t = on_rect(0.4)
+            p = [t[i] + dist * n[i] for i in range(3)]
+            straight = r.random() < 0.6
+            v = [-n[i] + (0 if straight else r.uniform(-0.05, 0.05) * right[i] + r.uniform(-0.05, 0.05) * up[i])
+                 for i in range(3)]
+            what = "%.2g m straight into the %s" % (dist, kind)
+        elif choice < 0.75:  # grazing it, along its plane
+            dist = log_uniform(r, 1e-4, 0.5)
+            s = r.choice([-1, 1])
+            p = [c[i] + dist * n[i] + s * right[i] * (f["width"] / 2 + r.uniform(0.05, 2.0)) for i in range(3)]
+            v = [-s * right[i] + n[i] * r.uniform(-0.05, 0.1) for i in range(3)]
+            what = "grazing the %s %.2g m off its plane" % (kind, dist)
+        elif choice < 0.85:  # millimetres from a wall, looking at it
+            keep = r.choice([0, 2])
+            side = r.choice([0, 1])
+            dist = log_uniform(r, 1e-4, 0.02)
+            p = [r.uniform(lo[i] + 0.3, hi[i] - 0.3) if hi[i] - lo[i] > 0.6 else (lo[i] + hi[i]) / 2 for i in range(3)]
+            p[keep] = lo[keep] + dist if side == 0 else hi[keep] - dist
+            v = [0.0, 0.0, 0.0]
+            v[keep] = -1.0 if side == 0 else 1.0
+            v[2 - keep] = r.uniform(-0.3, 0.3)
+            what = "%.2g m from a wall" % dist
+        else:  # anywhere, a random look
+            p = [r.uniform(lo[i] + 0.05, hi[i] - 0.05) for i in range(3)]
+            v = [r.uniform(-1, 1), r.uniform(-0.3, 0.3), r.uniform(-1, 1)]
+            what = "random look"
+        for i in range(3):  # in the room, but for the distance chosen from a plane
+            if i != keep:
+                p[i] = min(max(p[i], lo[i] + 0.02), hi[i] - 0.02)
+        horizontal = math.hypot(v[0], v[2])
+        yaw = math.degrees(math.atan2(-v[0], -v[2])) if horizontal > 1e-9 else 0.0
+        pitch = math.degrees(math.atan2(v[1], horizontal))
+        if not straight and r.random() < 0.3:
+            pitch += r.uniform(-30, 30)
+        pitch = min(max(pitch, -90.0), 90.0)
+        roll = r.uniform(-20, 20) if not straight and r.random() < 0.2 else 0.0
+        return [p[0], p[1], p[2], yaw, pitch, roll], "a", max_depth, fov, what
+
     def layout(self):
+        kind = self.kind if self.sub is None else "%s, %s" % (self.kind, self.sub)
         return {"format": "impossible-layout", "version": 1,
-                "name": "diff_fuzz seed %d case %d (%s)" % (self.seed, self.number, self.kind),
+                "name": "diff_fuzz seed %d case %d (%s)" % (self.seed, self.number, kind),
                 "start": {"room": "a", "position": self.pose[:3]},
                 "rooms": self.rooms, "portals": self.portals}
 
@@ -267,6 +603,36 @@ class Case:
                            for a in range(3)):
                         return True
         return False
+
+    def eyes(self, ipd=0.064):
+        """The two eyes (left, right) of the pose: yaw about +y, pitch about
+        the head's right axis, roll about its forward axis (layout-format.md,
+        "Head, eyes and walking"), the eyes at head -/+ ipd/2 · right."""
+        yaw, pitch, roll = (math.radians(v) for v in self.pose[3:])
+        forward = [-math.sin(yaw), 0.0, -math.cos(yaw)]
+        right = [math.cos(yaw), 0.0, -math.sin(yaw)]
+        forward = [math.cos(pitch) * forward[i] + math.sin(pitch) * (1.0 if i == 1 else 0.0) for i in range(3)]
+        f_x_r = [forward[1] * right[2] - forward[2] * right[1], forward[2] * right[0] - forward[0] * right[2],
+                 forward[0] * right[1] - forward[1] * right[0]]
+        right = [math.cos(roll) * right[i] + math.sin(roll) * f_x_r[i] for i in range(3)]
+        return [[self.pose[i] + s * ipd / 2 * right[i] for i in range(3)] for s in (-1, 1)]
+
+    def near_plane_note(self, near=1e-5):
+        """Where an eye is in its room closer to a face (or glass in it) than
+        the rasteriser's near plane (10 µm, docs/accuracy.md "Contact
+        distance"), which clips the face there: a note for a failure."""
+        room = next(x for x in self.rooms if x["id"] == self.room)
+        notes = []
+        for eye, e in zip(("left", "right"), self.eyes()):
+            if not all(room["min"][a] <= e[a] <= room["max"][a] for a in range(3)):
+                continue
+            for face, name in enumerate(("-x", "+x", "-z", "+z", "floor", "ceiling")):
+                axis = (0, 0, 2, 2, 1, 1)[face]
+                d = e[axis] - room["min"][axis] if face % 2 == 0 else room["max"][axis] - e[axis]
+                if d < near:
+                    notes.append("the %s eye is %.3g µm from the %s face, inside the rasteriser's %g µm near plane"
+                                 % (eye, d * 1e6, name, near * 1e6))
+        return "; ".join(notes)
 
     def view_args(self, size):
         pose = ",".join("%.17g" % v for v in self.pose)
@@ -347,8 +713,8 @@ def shell(args):
     return " ".join("'" + a + "'" if any(ch in a for ch in " ,()") else a for a in args)
 
 
-def run_case(binary, seed, number, size, keep, extra):
-    case = Case(seed, number)
+def run_case(binary, seed, number, size, keep, extra, kinds=DEFAULT_KINDS):
+    case = Case(seed, number, kinds)
     work = keep or tempfile.mkdtemp(prefix="diff-fuzz-")
     os.makedirs(work, exist_ok=True)
     layout_path = os.path.join(work, "case-%d-%d.json" % (seed, number))
@@ -361,12 +727,18 @@ def run_case(binary, seed, number, size, keep, extra):
     compare = [binary, "compare", base + "-r.png", base + "-t.png", "--ids-a", base + "-r-ids.png",
                "--ids-b", base + "-t-ids.png"]
     result = {"seed": seed, "case": number, "kind": case.kind, "what": case.what, "layout": layout_path}
+    if case.sub is not None:
+        result["sub"] = case.sub
     for step, cmd in (("render", render), ("trace", trace)):
         p = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
         if p.returncode != 0:
             result.update(status="error", detail="%s exit %d: %s" % (step, p.returncode, p.stderr.strip()),
                           commands=[shell(render), shell(trace), shell(compare)])
             return result
+        if step == "render" and "--max-portal-passes" in p.stderr:
+            # The frame reached its portal-pass budget (docs/bounded-work.md):
+            # the rest shows the fill colour, which the tracer does not have.
+            result["budget"] = p.stderr.strip()
     p = subprocess.run(compare, capture_output=True, text=True, timeout=600)
     fields = dict(kv.split("=", 1) for kv in p.stdout.split() if "=" in kv)
     mismatches = int(fields.get("id_mismatches", "-1"))
@@ -377,6 +749,8 @@ def run_case(binary, seed, number, size, keep, extra):
     result.update(status=status, mismatches=mismatches,
                   pct=float(fields.get("id_mismatch_pct", "nan")), psnr=fields.get("psnr_db", "?"),
                   commands=[shell(render), shell(trace), shell(compare)])
+    if status == "fail" and case.near_plane_note() and not extra:
+        result["near"] = case.near_plane_note()
     if not keep:
         for suffix in ("-r.png", "-r-ids.png", "-t.png", "-t-ids.png"):
             try:
@@ -400,24 +774,38 @@ def main():
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     ap.add_argument("--keep", help="keep every case's layout and images in this folder")
     ap.add_argument("--json", help="write every case's result here")
+    ap.add_argument("--kinds", default=",".join(DEFAULT_KINDS),
+                    help="the kinds of layout, comma-separated, case N of kind N mod their count (default %(default)s;"
+                         " all: " + ",".join(KINDS) + ")")
     ap.add_argument("extra", nargs="*", help="more options for render and trace (after --)")
     a = ap.parse_args()
+    kinds = a.kinds.split(",")
+    if not kinds or any(k not in KINDS for k in kinds):
+        ap.error("--kinds: %s: the kinds are %s" % (a.kinds, ", ".join(KINDS)))
+    # The kinds select each case's layout: a case is reproduced with the same list.
+    kinds_arg = "" if kinds == DEFAULT_KINDS else " --kinds " + ",".join(kinds)
     numbers = [a.case] if a.case is not None else list(range(a.first, a.first + a.cases))
     results = []
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, a.jobs)) as pool:
-        futures = [pool.submit(run_case, a.binary, a.seed, n, a.size, a.keep, a.extra) for n in numbers]
+        futures = [pool.submit(run_case, a.binary, a.seed, n, a.size, a.keep, a.extra, kinds) for n in numbers]
         for fut in futures:
             res = fut.result()
             results.append(res)
+            label = res["kind"] + ("/" + res["sub"] if "sub" in res else "")
             if res["status"] == "sliver":
                 print("sliver seed %d case %d (%s, %s): %d id mismatches, all on features one pixel thin"
-                      % (res["seed"], res["case"], res["kind"], res["what"], res["mismatches"]))
+                      % (res["seed"], res["case"], label, res["what"], res["mismatches"]))
             elif res["status"] != "pass":
                 print("FAIL seed %d case %d (%s, %s): %s" % (
-                    res["seed"], res["case"], res["kind"], res["what"],
+                    res["seed"], res["case"], label, res["what"],
                     res.get("detail") or "%d id mismatches (%.4f %%)" % (res["mismatches"], res["pct"])))
-                print("  reproduce: tools/diff_fuzz.py --binary %s --seed %d --case %d --keep /tmp/diff-fuzz-case"
-                      % (a.binary, res["seed"], res["case"]))
+                for note in ("budget", "near"):
+                    if note in res:
+                        print("  " + res[note])
+                print("  reproduce: tools/diff_fuzz.py --binary %s --seed %d --case %d%s%s --keep /tmp/diff-fuzz-case%s"
+                      % (a.binary, res["seed"], res["case"], kinds_arg,
+                         "" if a.size == "96x64" else " --size " + a.size,
+                         " -- " + shell(a.extra) if a.extra else ""))
                 for cmd in res["commands"]:
                     print("    " + cmd)
     failed = [r for r in results if r["status"] in ("fail", "error")]
@@ -430,6 +818,14 @@ def main():
     print("diff_fuzz seed %d: %d cases, %d with 0 mismatches, %d slivers (sub-pixel features, explained), %d failed (%s)"
           % (a.seed, len(results), len(results) - len(failed) - len(slivers), len(slivers), len(failed),
              ", ".join("%s %d/%d failed" % (k, v[1], v[0]) for k, v in sorted(kinds.items()))))
+    subs = {}
+    for r in results:
+        if "sub" in r:
+            subs.setdefault(r["kind"] + "/" + r["sub"], {"pass": 0, "sliver": 0, "fail": 0})[
+                "fail" if r["status"] == "error" else r["status"]] += 1
+    if subs:
+        print("by sub-kind: " + ", ".join("%s %d pass, %d sliver, %d failed" % (k, v["pass"], v["sliver"], v["fail"])
+                                          for k, v in sorted(subs.items())))
     print("%d passed, %d failed" % (len(results) - len(failed), len(failed)))
     if a.json:
         with open(a.json, "w") as f:
