@@ -14,13 +14,21 @@ namespace {
 thread_local long t_allocations = 0;
 }  // namespace
 
+// Every form that a plain operator delete may free is replaced, so that
+// allocation and release always pair malloc with free (the standard library's
+// temporary buffers use the nothrow form; AddressSanitizer checks the pairs).
 void* operator new(std::size_t size) {
     ++t_allocations;
     if (void* p = std::malloc(size > 0 ? size : 1)) return p;
     throw std::bad_alloc();
 }
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
+    ++t_allocations;
+    return std::malloc(size > 0 ? size : 1);
+}
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
 
 namespace impossible::trace {
 namespace {
