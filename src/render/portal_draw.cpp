@@ -69,6 +69,23 @@ gl::ScissorRect scissor_of(const DrawContext& ctx, const std::array<NdcRect, 2>&
     return {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
 }
 
+void limit_to_portal(DrawContext& ctx, const LevelView& view, const std::array<NdcRect, 2>& rects) {
+    if (ctx.frame.cull_portals) ctx.renderer.state->scissor(scissor_of(ctx, rects, view));
+}
+
+void mark_portal(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
+    limit_to_portal(ctx, view, rects);
+    use_pass(ctx, view, Pass::PortalMark, view.level);
+    draw_portal_box(ctx, view, p, rects);
+    clear_depth_in_portal(ctx, view, view.level + 1);
+}
+
+void unmark_portal(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
+    limit_to_portal(ctx, view, rects);
+    use_pass(ctx, view, Pass::PortalUnmark, view.level + 1);
+    draw_portal_box(ctx, view, p, rects);
+}
+
 void draw_range(DrawContext& ctx, const scene::IndexRange& range) {
     if (range.count == 0) return;
     const int instances = ctx.frame.stereo == StereoMode::TwoPass ? 1 : 2;

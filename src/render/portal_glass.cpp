@@ -28,27 +28,6 @@ namespace {
 
 bool is_white(const glm::dvec3& c) { return c.x == 1.0 && c.y == 1.0 && c.z == 1.0; }
 
-void limit_to_portal(DrawContext& ctx, const LevelView& view, const std::array<NdcRect, 2>& rects) {
-    if (ctx.frame.cull_portals) ctx.renderer.state->scissor(scissor_of(ctx, rects, view));
-}
-
-// Stencil level → level + 1 where the portal is the visible surface, and
-// depth there back to far.
-void mark(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
-    limit_to_portal(ctx, view, rects);
-    use_pass(ctx, view, Pass::PortalMark, view.level);
-    draw_portal_box(ctx, view, p, rects);
-    clear_depth_in_portal(ctx, view, view.level + 1);
-}
-
-// Back to level, with the portal's depth, so that it occludes the rest of
-// the level.
-void unmark(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
-    limit_to_portal(ctx, view, rects);
-    use_pass(ctx, view, Pass::PortalUnmark, view.level + 1);
-    draw_portal_box(ctx, view, p, rects);
-}
-
 // A full-target triangle through the clear program, in a region pass.
 void draw_region(DrawContext& ctx, const LevelView& view, Pass pass) {
     RendererData& r = ctx.renderer;
@@ -136,7 +115,7 @@ Result<void> prepare_window_blend(RendererData& r, bool multisample) {
 
 void draw_mirror(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
     const PortalInfo& m = ctx.renderer.portals[p];
-    mark(ctx, view, p, rects);
+    mark_portal(ctx, view, p, rects);
     ctx.stats.portal_passes_drawn += 1;
     draw_level(ctx, reflected_view(ctx, view, p, rects, scene::max_channel(m.tint)));
     if (!is_white(m.tint)) {
@@ -144,7 +123,7 @@ void draw_mirror(DrawContext& ctx, const LevelView& view, int p, const std::arra
         ctx.renderer.state->blend_color(float(m.tint.r), float(m.tint.g), float(m.tint.b), 1.0f);
         draw_region(ctx, view, Pass::Tint);
     }
-    unmark(ctx, view, p, rects);
+    unmark_portal(ctx, view, p, rects);
 }
 
 void draw_window(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
@@ -153,7 +132,7 @@ void draw_window(DrawContext& ctx, const LevelView& view, int p, const std::arra
     const double through_factor = (1.0 - k) * scene::max_channel(w.tint);
     const bool reflect = view.weight * k >= scene::kMinBranchWeight;
     const bool through = view.weight * through_factor >= scene::kMinBranchWeight;
-    mark(ctx, view, p, rects);
+    mark_portal(ctx, view, p, rects);
 
     GLuint saved = 0;
     if (reflect) {
@@ -175,7 +154,7 @@ void draw_window(DrawContext& ctx, const LevelView& view, int p, const std::arra
     }
     blend_window(ctx, view, w, saved);
     if (reflect) ctx.saved_colours_used -= 1;
-    unmark(ctx, view, p, rects);
+    unmark_portal(ctx, view, p, rects);
 }
 
 }  // namespace impossible::render

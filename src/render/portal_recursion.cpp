@@ -52,9 +52,8 @@ namespace {
 // One visible portal of `view`: the fill at the depth limit, or mark, depth
 // reset, the view through it (recursively) and unmark.
 void draw_portal(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
-    gl::StateCache& state = *ctx.renderer.state;
     const int level = view.level;
-    if (ctx.frame.cull_portals) state.scissor(scissor_of(ctx, rects, view));
+    limit_to_portal(ctx, view, rects);
     // The recursion limit, or the frame's budget of portal passes spent:
     // the portal shows the fill colour.
     const bool over_budget = ctx.stats.portal_passes_drawn >= ctx.frame.max_portal_passes;
@@ -77,16 +76,10 @@ void draw_portal(DrawContext& ctx, const LevelView& view, int p, const std::arra
         case layout::PortalKind::Door:
             break;
     }
-    use_pass(ctx, view, Pass::PortalMark, level);
-    draw_portal_box(ctx, view, p, rects);
-    clear_depth_in_portal(ctx, view, level + 1);
-
+    mark_portal(ctx, view, p, rects);
     ctx.stats.portal_passes_drawn += 1;
     draw_level(ctx, child_view(ctx, view, p, rects));
-
-    if (ctx.frame.cull_portals) state.scissor(scissor_of(ctx, rects, view));
-    use_pass(ctx, view, Pass::PortalUnmark, level + 1);
-    draw_portal_box(ctx, view, p, rects);
+    unmark_portal(ctx, view, p, rects);
 }
 
 // One occlusion query per visible portal of this level, drawn after the

@@ -42,6 +42,16 @@ gl::ScissorRect scissor_of(const DrawContext& ctx, const std::array<NdcRect, 2>&
 // Uploads the per-eye uniforms of a draw: matrices, rectangles, planes.
 void set_eye_uniforms(const DrawContext& ctx, const LevelView& view, const std::array<NdcRect, 2>& rects);
 
+// The scissor of the portal's rects, when culling is on.
+void limit_to_portal(DrawContext& ctx, const LevelView& view, const std::array<NdcRect, 2>& rects);
+
+// Stencil level → level + 1 where the portal is the visible surface, and
+// depth there back to far; and back to level with the portal's depth, so
+// that it occludes the rest of the level. Every kind of portal is drawn
+// between these two.
+void mark_portal(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects);
+void unmark_portal(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects);
+
 // One instanced draw (one per eye in two-pass stereo) of an index range.
 void draw_range(DrawContext& ctx, const scene::IndexRange& range);
 
