@@ -153,7 +153,9 @@ void add_floor(Drawing& d, const layout::Layout& layout, const Report& r) {
     for (std::size_t i = 0; i < layout.rooms.size(); ++i)
         for (const layout::Prop& prop : layout.rooms[i].props)
             if (const auto* box = std::get_if<layout::BoxProp>(&prop)) {
-                const layout::Room footprint{"", box->min, box->max, {}, 0.0, {}};
+                layout::Room footprint;
+                footprint.min = box->min;
+                footprint.max = box->max;
                 d.shapes.push_back(fill("props", layout.rooms[i].id,
                                         physical_floor(footprint, r.placement.rooms[i].to_physical),
                                         hue(static_cast<int>(i), 0.7, 0.5, 0.55)));

@@ -14,7 +14,10 @@
 #include <cmath>
 
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+
+#include "layout/layout.hpp"
 
 namespace impossible::scene {
 
@@ -50,6 +53,25 @@ inline bool checker_dark(const glm::dvec3& position, const glm::dvec3& normal, d
     const long long parity = static_cast<long long>(std::floor(u / side)) +
                              static_cast<long long>(std::floor(v / side));
     return (parity & 1) != 0;
+}
+
+// Where a point of a room face falls in the face's texture (layout-format.md,
+// `textures`), in tiles: (s, t) with s growing to the right of a viewer inside
+// the room facing the face, t growing downwards on walls and towards +z on
+// the floor and ceiling (the image's top towards -z), one unit per
+// `texture_size` metres. Tile edges lie at whole s and t, which are whole
+// multiples of texture_size in layout coordinates; a texel is found from the
+// fractional part (the image's top-left corner at (0, 0)).
+inline glm::dvec2 room_texture_uv(layout::Face face, const glm::dvec3& p, double size) {
+    switch (face) {
+        case layout::Face::Floor: return glm::dvec2(p.x, p.z) / size;
+        case layout::Face::Ceiling: return glm::dvec2(-p.x, p.z) / size;
+        case layout::Face::NegX: return glm::dvec2(-p.z, -p.y) / size;
+        case layout::Face::PosX: return glm::dvec2(p.z, -p.y) / size;
+        case layout::Face::NegZ: return glm::dvec2(p.x, -p.y) / size;
+        case layout::Face::PosZ: return glm::dvec2(-p.x, -p.y) / size;
+    }
+    return glm::dvec2(0.0);
 }
 
 inline glm::dvec3 shade(const glm::dvec3& base, const glm::dvec3& normal,
