@@ -4,6 +4,12 @@ in vec3 v_checker_position;  // where the checker pattern is evaluated
 in vec3 v_normal;
 in vec3 v_color;
 in float v_checker;
+in vec2 v_uv;      // texture coordinates, (0, 0) the image's top-left corner
+in float v_alpha;  // alpha before the texel's
+
+uniform sampler2D u_texture;
+uniform bool u_textured;      // multiply by u_texture
+uniform float u_alpha_cutoff; // alpha below it is not a surface; < 0: opaque
 
 uniform uint u_cell_id;
 uniform bool u_unshaded;  // portal fill at the recursion limit: flat colour
@@ -27,8 +33,18 @@ void main() {
         o_color = vec4(v_color, 1.0);
         return;
     }
+    vec3 base = v_color;
+    if (u_textured) {
+        // Colour through the mipmaps; the cut-out test at level 0 with the
+        // magnification filter, as the tracer samples (docs/tracer.md), so
+        // that a surface's outline does not depend on its distance.
+        base *= texture(u_texture, v_uv).rgb;
+        if (u_alpha_cutoff >= 0.0 && v_alpha * textureLod(u_texture, v_uv, 0.0).a < u_alpha_cutoff) discard;
+    } else if (u_alpha_cutoff >= 0.0 && v_alpha < u_alpha_cutoff) {
+        discard;
+    }
     vec3 n = normalize(v_normal);
     float lambert = max(0.0, dot(n, LIGHT_DIR));
     float dark = checker_dark(v_checker_position, n, v_checker) ? CHECKER_DARK : 1.0;
-    o_color = vec4(v_color * ((AMBIENT + DIFFUSE * lambert) * dark), 1.0);
+    o_color = vec4(base * ((AMBIENT + DIFFUSE * lambert) * dark), 1.0);
 }

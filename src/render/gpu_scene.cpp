@@ -1,8 +1,39 @@
 #include "render/gpu_scene.hpp"
 
+#include <algorithm>
 #include <cstddef>
 
 namespace impossible::render {
+
+namespace {
+
+bool has_mipmaps(int min_filter) {
+    namespace code = layout::sampler_code;
+    return min_filter == code::kNearestMipmapNearest || min_filter == code::kLinearMipmapNearest ||
+           min_filter == code::kNearestMipmapLinear || min_filter == code::kLinearMipmapLinear;
+}
+
+gl::Texture upload_texture(const scene::SceneTexture& t) {
+    const layout::Image& image = *t.image;
+    int levels = 1;
+    if (has_mipmaps(t.sampler.min_filter))
+        while ((std::max(image.width, image.height) >> levels) > 0) ++levels;
+    gl::Texture texture = gl::create_texture(GL_TEXTURE_2D);
+    const GLuint name = texture.get();
+    glTextureStorage2D(name, levels, GL_RGBA8, image.width, image.height);
+    // Rows top first: row 0 is t = 0, as texture coordinates put the image's top there.
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTextureSubImage2D(name, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+    if (levels > 1) glGenerateTextureMipmap(name);
+    // The sampler codes are glTF's, which are OpenGL's enums.
+    glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, t.sampler.mag_filter);
+    glTextureParameteri(name, GL_TEXTURE_MIN_FILTER, t.sampler.min_filter);
+    glTextureParameteri(name, GL_TEXTURE_WRAP_S, t.sampler.wrap_s);
+    glTextureParameteri(name, GL_TEXTURE_WRAP_T, t.sampler.wrap_t);
+    return texture;
+}
+
+}  // namespace
 
 GpuScene upload_scene(const scene::Scene& scene) {
     GpuScene gpu;
@@ -35,6 +66,11 @@ GpuScene upload_scene(const scene::Scene& scene) {
     attribute(1, 3, offsetof(scene::Vertex, normal));
     attribute(2, 3, offsetof(scene::Vertex, color));
     attribute(3, 1, offsetof(scene::Vertex, checker));
+    attribute(4, 2, offsetof(scene::Vertex, uv));
+    attribute(5, 1, offsetof(scene::Vertex, alpha));
+
+    gpu.textures.reserve(scene.textures.size());
+    for (const scene::SceneTexture& t : scene.textures) gpu.textures.push_back(upload_texture(t));
     return gpu;
 }
 

@@ -96,6 +96,25 @@ void draw_range(DrawContext& ctx, const scene::IndexRange& range) {
     ctx.stats.triangles += static_cast<long>(range.count / 3) * instances;
 }
 
+void draw_cell(DrawContext& ctx, int cell) {
+    const GLuint program = ctx.program.program.get();
+    bool material_set = false;  // uniforms differ from the defaults (untextured, opaque)
+    const auto set = [&](const scene::DrawBatch& b) {
+        glProgramUniform1i(program, ctx.program.textured, b.texture >= 0 ? 1 : 0);
+        glProgramUniform1f(program, ctx.program.alpha_cutoff, b.alpha_cutoff);
+        if (b.texture >= 0)
+            glBindTextureUnit(kSceneTextureUnit,
+                              ctx.renderer.gpu.textures[static_cast<std::size_t>(b.texture)].get());
+    };
+    for (const scene::DrawBatch& b : ctx.renderer.cells[static_cast<std::size_t>(cell)]) {
+        const bool plain = b.texture < 0 && b.alpha_cutoff < 0.0f;
+        if (!plain || material_set) set(b);
+        material_set = !plain;
+        draw_range(ctx, b.range);
+    }
+    if (material_set) set(scene::DrawBatch{});
+}
+
 void draw_portal_box(DrawContext& ctx, const LevelView& view, int portal, const std::array<NdcRect, 2>& rects) {
     const PortalInfo& info = ctx.renderer.portals[portal];
     assert(info.room == view.cell);  // its box is relative to the cell's frame

@@ -132,7 +132,7 @@ void clear_target(RendererData& r, const Target& target, int stencil) {
 Result<Renderer> Renderer::create(gl::StateCache& state, const layout::Layout& layout, const scene::Scene& scene) {
     auto r = std::make_unique<RendererData>();
     r->state = &state;
-    r->cells = scene.cells;
+    r->cells = scene.batches;
     r->frames = scene.frames;
     r->links = scene.links;
     r->portals.reserve(layout.portals.size());

@@ -40,7 +40,7 @@ struct SavedColour {
 
 struct RendererData {
     gl::StateCache* state = nullptr;  // the context's; outlives the renderer
-    std::vector<scene::IndexRange> cells;  // per room, into gpu's index buffer
+    std::vector<std::vector<scene::DrawBatch>> cells;  // per room: its batches, into gpu's index buffer
     std::vector<scene::CellFrame> frames;  // per room: what its vertices are relative to
     std::vector<PortalInfo> portals;       // per layout portal
     bool has_windows = false;              // the window blend's programs are needed

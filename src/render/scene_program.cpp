@@ -4,6 +4,7 @@
 
 #include "embedded.hpp"
 #include "gl/shader.hpp"
+#include "render/gpu_scene.hpp"
 #include "scene/shading.hpp"
 
 namespace impossible::render {
@@ -43,6 +44,10 @@ Result<SceneProgram> link_scene_program(const char* fragment, const std::string&
     p.cell_id = glGetUniformLocation(name, "u_cell_id");
     p.unshaded = glGetUniformLocation(name, "u_unshaded");
     p.target_size = glGetUniformLocation(name, "u_target_size");
+    p.textured = glGetUniformLocation(name, "u_textured");
+    p.alpha_cutoff = glGetUniformLocation(name, "u_alpha_cutoff");
+    glProgramUniform1i(name, glGetUniformLocation(name, "u_texture"), static_cast<GLint>(kSceneTextureUnit));
+    glProgramUniform1f(name, p.alpha_cutoff, -1.0f);
     return p;
 }
 

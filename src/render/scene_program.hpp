@@ -21,6 +21,8 @@ struct SceneProgram {
     GLint single_eye = -1;  // int
     GLint cell_id = -1;     // uint
     GLint unshaded = -1;    // bool
+    GLint textured = -1;    // bool: multiply by the texture on kSceneTextureUnit
+    GLint alpha_cutoff = -1;  // float: drop fragments whose alpha is below it; < 0: opaque
     GLint target_size = -1;  // vec2, only in the portal-texture program
 };
 

@@ -34,24 +34,36 @@ Scene build_scene(const layout::Layout& layout) {
     std::vector<std::optional<FrontGrid>> fronts(layout.portals.size());
 
     scene.cells.reserve(layout.rooms.size());
+    scene.batches.reserve(layout.rooms.size());
     scene.frames.reserve(layout.rooms.size());
     for (std::size_t r = 0; r < layout.rooms.size(); ++r) {
         scene.frames.push_back(cell_frame(layout.rooms[r]));
         out.origin = scene.frames.back().origin;
+        const layout::Room& room = layout.rooms[r];
         const std::uint32_t first = out.index_count();
-        append_room_faces(out, layout, static_cast<int>(r), fronts);
-        for (const layout::Prop& prop : layout.rooms[r].props) {
+        std::vector<DrawBatch> batches;
+        const auto faces = append_room_faces(out, layout, static_cast<int>(r), fronts);
+        for (std::size_t f = 0; f < faces.size(); ++f) {
+            DrawBatch b;
+            b.range = faces[f];
+            if (room.face_texture[f]) b.texture = out.texture(room.face_texture[f], layout::Sampler{});
+            add_batch(batches, b);
+        }
+        for (const layout::Prop& prop : room.props) {
             std::visit(
                 [&](const auto& p) {
                     if constexpr (std::is_same_v<std::decay_t<decltype(p)>, layout::BoxProp>) {
+                        const std::uint32_t box_first = out.index_count();
                         append_box_prop(out, p);
+                        add_batch(batches, DrawBatch{out.range_since(box_first)});
                     } else {
-                        append_gltf_prop(out, p);
+                        append_gltf_prop(out, p, batches);
                     }
                 },
                 prop);
         }
         scene.cells.push_back(out.range_since(first));
+        scene.batches.push_back(std::move(batches));
     }
 
     scene.portals.reserve(layout.portals.size());

@@ -146,10 +146,38 @@ void append_grid_face(MeshWriter& out, const layout::Room& room, int face, const
     }
 }
 
+void append_face(MeshWriter& out, const layout::Room& room, int face, const Lines& lines,
+                 const std::vector<FaceHole>& holes, bool slabs, const layout::Layout& layout,
+                 std::vector<std::optional<FrontGrid>>& fronts) {
+    const auto fi = static_cast<std::size_t>(face);
+    if (!slabs) {
+        append_grid_face(out, room, face, lines, holes, fronts);
+        return;
+    }
+    const FaceFrame f = face_frame(room, face);
+    SlabFace s;
+    s.axis = f.axis;
+    s.plane = f.plane;
+    s.in = f.in;
+    s.lo = {room.min[f.in.a], room.min[f.in.b]};
+    s.hi = {room.max[f.in.a], room.max[f.in.b]};
+    s.normal = inward_normal(f);
+    s.color = room.face_color[fi];
+    s.checker = room.checker;
+    for (const float v : lines[static_cast<std::size_t>(f.in.a)]) s.cuts.push_back(out.world(v, f.in.a));
+    for (const FaceHole& h : holes) {
+        s.holes.push_back(h.corners);
+        fronts[static_cast<std::size_t>(h.portal)] =
+            corner_front(out, layout.portals[static_cast<std::size_t>(h.portal)].rect);
+    }
+    append_face_slabs(out, s);
+}
+
 }  // namespace
 
-void append_room_faces(MeshWriter& out, const layout::Layout& layout, int room_index,
-                       std::vector<std::optional<FrontGrid>>& fronts) {
+std::array<IndexRange, layout::kFaceCount> append_room_faces(MeshWriter& out, const layout::Layout& layout,
+                                                             int room_index,
+                                                             std::vector<std::optional<FrontGrid>>& fronts) {
     const layout::Room& room = layout.rooms[static_cast<std::size_t>(room_index)];
     std::array<std::vector<FaceHole>, layout::kFaceCount> holes;
     std::array<bool, layout::kFaceCount> slabs{};  // faces with a hole that is not axis-aligned
@@ -184,30 +212,21 @@ void append_room_faces(MeshWriter& out, const layout::Layout& layout, int room_i
         l.erase(std::unique(l.begin(), l.end()), l.end());
     }
 
+    std::array<IndexRange, layout::kFaceCount> ranges{};
     for (int face = 0; face < layout::kFaceCount; ++face) {
         const auto fi = static_cast<std::size_t>(face);
-        if (!slabs[fi]) {
-            append_grid_face(out, room, face, lines, holes[fi], fronts);
-            continue;
+        const std::uint32_t first = out.index_count();
+        out.face_uv.reset();
+        if (room.face_texture[fi]) {
+            const auto f = static_cast<layout::Face>(face);
+            out.face_uv = FaceUv{f, room.texture_size,
+                                 glm::floor(room_texture_uv(f, out.origin, room.texture_size))};
         }
-        const FaceFrame f = face_frame(room, face);
-        SlabFace s;
-        s.axis = f.axis;
-        s.plane = f.plane;
-        s.in = f.in;
-        s.lo = {room.min[f.in.a], room.min[f.in.b]};
-        s.hi = {room.max[f.in.a], room.max[f.in.b]};
-        s.normal = inward_normal(f);
-        s.color = room.face_color[fi];
-        s.checker = room.checker;
-        for (const float v : lines[static_cast<std::size_t>(f.in.a)]) s.cuts.push_back(out.world(v, f.in.a));
-        for (const FaceHole& h : holes[fi]) {
-            s.holes.push_back(h.corners);
-            fronts[static_cast<std::size_t>(h.portal)] =
-                corner_front(out, layout.portals[static_cast<std::size_t>(h.portal)].rect);
-        }
-        append_face_slabs(out, s);
+        append_face(out, room, face, lines, holes[fi], slabs[fi], layout, fronts);
+        ranges[fi] = out.range_since(first);
     }
+    out.face_uv.reset();
+    return ranges;
 }
 
 }  // namespace impossible::scene

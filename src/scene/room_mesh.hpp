@@ -17,6 +17,7 @@
 // that portal keeps the plain front of its box corners.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -29,8 +30,10 @@ namespace impossible::scene {
 // Appends the six faces of layout.rooms[room], in layout::Face order, with
 // the room's colours and checker. For each portal p of this room with a
 // hole_face, sets fronts[p] (fronts has one entry per portal) to the front
-// that matches the hole's edges.
-void append_room_faces(MeshWriter& out, const layout::Layout& layout, int room,
-                       std::vector<std::optional<FrontGrid>>& fronts);
+// that matches the hole's edges. A face with a texture gets texture
+// coordinates (FaceUv). Returns each face's index range, in layout::Face order.
+std::array<IndexRange, layout::kFaceCount> append_room_faces(MeshWriter& out, const layout::Layout& layout,
+                                                             int room,
+                                                             std::vector<std::optional<FrontGrid>>& fronts);
 
 }  // namespace impossible::scene

@@ -12,8 +12,10 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "layout/layout.hpp"
@@ -24,13 +26,33 @@ namespace impossible::scene {
 struct Vertex {
     glm::vec3 position;
     glm::vec3 normal;   // unit, on the visible side
-    glm::vec3 color;    // base colour before shading
+    glm::vec3 color;    // base colour before shading (and before the texel)
     float checker;      // checker square side in metres; 0: plain
+    glm::vec2 uv{0.0f}; // texture coordinates, (0, 0) the image's top-left; unused untextured
+    float alpha = 1.0f; // alpha before the texel's, for alpha-masked batches
 };
 
 struct IndexRange {
     std::uint32_t first = 0;  // first index in Scene::indices
     std::uint32_t count = 0;  // number of indices (a multiple of 3)
+};
+
+// An image and how it is sampled, as the GPU needs it (its mipmaps are made
+// on upload); room faces use the default sampler.
+struct SceneTexture {
+    std::shared_ptr<const layout::Image> image;
+    layout::Sampler sampler;
+};
+
+// Part of a cell drawn with one material state: a texture (or none) and an
+// alpha cutoff (or none). A cell's batches cover its range in order; a cell
+// without textures and cut-outs is one batch.
+struct DrawBatch {
+    IndexRange range;
+    int texture = -1;            // into Scene::textures; -1: untextured (a white texel)
+    float alpha_cutoff = -1.0f;  // fragments whose alpha is below it are dropped; < 0: opaque
+
+    bool same_state(const DrawBatch& o) const { return texture == o.texture && alpha_cutoff == o.alpha_cutoff; }
 };
 
 // Where a room's vertices, and its portals' boxes', are measured from.
@@ -56,6 +78,8 @@ struct Scene {
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;
     std::vector<IndexRange> cells;     // per room: faces (with holes) and props
+    std::vector<std::vector<DrawBatch>> batches;  // per room: cells[room] split by material state
+    std::vector<SceneTexture> textures;           // each image and sampler once
     std::vector<CellFrame> frames;     // per room: the origin of its vertices and its portals'
     std::vector<PortalMesh> portals;   // per portal, relative to its room's frame
     PortalLinks links;                 // M_AB per portal and the portals of each room, linked once
