@@ -96,17 +96,25 @@ void draw_range(DrawContext& ctx, const scene::IndexRange& range) {
     ctx.stats.triangles += static_cast<long>(range.count / 3) * instances;
 }
 
-void draw_cell(DrawContext& ctx, int cell) {
+void draw_cell(DrawContext& ctx, const LevelView& view) {
+    RendererData& r = ctx.renderer;
+    const auto cell = static_cast<std::size_t>(view.cell);
+    const std::vector<scene::DrawBatch>* batches = &r.cells[cell];
+    if (ctx.frame.cull_portals && !r.objects[cell].objects.empty()) {
+        // Two pixels of margin: one more than the eye rectangles' own.
+        visible_batches(r.objects[cell], view, ctx.frame.eye_width, ctx.frame.eye_height, 2.0, r.cull_scratch,
+                        r.cull_batches);
+        batches = &r.cull_batches;
+    }
     const GLuint program = ctx.program.program.get();
     bool material_set = false;  // uniforms differ from the defaults (untextured, opaque)
     const auto set = [&](const scene::DrawBatch& b) {
         glProgramUniform1i(program, ctx.program.textured, b.texture >= 0 ? 1 : 0);
         glProgramUniform1f(program, ctx.program.alpha_cutoff, b.alpha_cutoff);
         if (b.texture >= 0)
-            glBindTextureUnit(kSceneTextureUnit,
-                              ctx.renderer.gpu.textures[static_cast<std::size_t>(b.texture)].get());
+            glBindTextureUnit(kSceneTextureUnit, r.gpu.textures[static_cast<std::size_t>(b.texture)].get());
     };
-    for (const scene::DrawBatch& b : ctx.renderer.cells[static_cast<std::size_t>(cell)]) {
+    for (const scene::DrawBatch& b : *batches) {
         const bool plain = b.texture < 0 && b.alpha_cutoff < 0.0f;
         if (!plain || material_set) set(b);
         material_set = !plain;

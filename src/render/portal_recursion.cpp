@@ -149,7 +149,7 @@ void draw_level(DrawContext& ctx, const LevelView& view) {
     set_cell_id(ctx, static_cast<unsigned>(view.cell + 1), false);
     {
         const ColourQueryScope colour(ctx.profiler);
-        draw_cell(ctx, view.cell);
+        draw_cell(ctx, view);
     }
 
     // A portal hidden behind the cell's own surfaces (say, a wall) passes the

@@ -55,9 +55,10 @@ void unmark_portal(DrawContext& ctx, const LevelView& view, int p, const std::ar
 // One instanced draw (one per eye in two-pass stereo) of an index range.
 void draw_range(DrawContext& ctx, const scene::IndexRange& range);
 
-// A cell's surfaces: draw_range for each of its batches, with the batch's
-// texture and alpha cutoff set (and unset after) where it has them.
-void draw_cell(DrawContext& ctx, int cell);
+// A level's cell: draw_range for each of its batches, with the batch's
+// texture and alpha cutoff set (and unset after) where it has them. With
+// culling on, only the props the level's eyes may see (object_culling.hpp).
+void draw_cell(DrawContext& ctx, const LevelView& view);
 
 // Draws a portal's box for the eyes with a non-empty rect: the front face for
 // eyes in front of it, the inner faces for eyes in its column.

@@ -133,6 +133,7 @@ Result<Renderer> Renderer::create(gl::StateCache& state, const layout::Layout& l
     auto r = std::make_unique<RendererData>();
     r->state = &state;
     r->cells = scene.batches;
+    r->objects = scene.objects;
     r->frames = scene.frames;
     r->links = scene.links;
     r->portals.reserve(layout.portals.size());

@@ -10,6 +10,7 @@
 #include "math/portal.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/multisample.hpp"
+#include "render/object_culling.hpp"
 #include "render/scene_program.hpp"
 #include "render/target.hpp"
 #include "scene/portal_links.hpp"
@@ -41,6 +42,9 @@ struct SavedColour {
 struct RendererData {
     gl::StateCache* state = nullptr;  // the context's; outlives the renderer
     std::vector<std::vector<scene::DrawBatch>> cells;  // per room: its batches, into gpu's index buffer
+    std::vector<scene::CellObjects> objects;  // per room: the same split for per-object culling
+    CullScratch cull_scratch;                 // reused by every level (object_culling.hpp)
+    std::vector<scene::DrawBatch> cull_batches;
     std::vector<scene::CellFrame> frames;  // per room: what its vertices are relative to
     std::vector<PortalInfo> portals;       // per layout portal
     bool has_windows = false;              // the window blend's programs are needed

@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "scene/box_mesh.hpp"
+#include "scene/cell_objects.hpp"
 #include "scene/mesh_writer.hpp"
 #include "scene/portal_box.hpp"
 #include "scene/room_mesh.hpp"
@@ -41,29 +42,38 @@ Scene build_scene(const layout::Layout& layout) {
         out.origin = scene.frames.back().origin;
         const layout::Room& room = layout.rooms[r];
         const std::uint32_t first = out.index_count();
-        std::vector<DrawBatch> batches;
+        CellObjects objects;
         const auto faces = append_room_faces(out, layout, static_cast<int>(r), fronts);
         for (std::size_t f = 0; f < faces.size(); ++f) {
             DrawBatch b;
             b.range = faces[f];
             if (room.face_texture[f]) b.texture = out.texture(room.face_texture[f], layout::Sampler{});
-            add_batch(batches, b);
+            add_batch(objects.surfaces, b);
         }
         for (const layout::Prop& prop : room.props) {
+            const auto first_vertex = static_cast<std::uint32_t>(scene.vertices.size());
+            std::vector<DrawBatch> own;
             std::visit(
                 [&](const auto& p) {
                     if constexpr (std::is_same_v<std::decay_t<decltype(p)>, layout::BoxProp>) {
                         const std::uint32_t box_first = out.index_count();
                         append_box_prop(out, p);
-                        add_batch(batches, DrawBatch{out.range_since(box_first)});
+                        add_batch(own, DrawBatch{out.range_since(box_first)});
                     } else {
-                        append_gltf_prop(out, p, batches);
+                        append_gltf_prop(out, p, own);
                     }
                 },
                 prop);
+            CellObject object;
+            bound_object(scene, first_vertex, out.origin, object);
+            object.first_batch = static_cast<std::uint32_t>(objects.batches.size());
+            object.batch_count = static_cast<std::uint32_t>(own.size());
+            objects.objects.push_back(object);
+            objects.batches.insert(objects.batches.end(), own.begin(), own.end());
         }
         scene.cells.push_back(out.range_since(first));
-        scene.batches.push_back(std::move(batches));
+        scene.batches.push_back(finish_cell(scene, objects));
+        scene.objects.push_back(std::move(objects));
     }
 
     scene.portals.reserve(layout.portals.size());

@@ -74,11 +74,40 @@ struct PortalMesh {
     IndexRange inner;  // four side faces and the back face, facing inwards
 };
 
+// A prop as per-object culling sees it: its bounds in layout coordinates
+// (padded, scene/cell_objects.cpp) and its batches.
+struct CellObject {
+    glm::dvec3 lo{0.0};
+    glm::dvec3 hi{0.0};
+    std::uint32_t first_batch = 0;  // into CellObjects::batches
+    std::uint32_t batch_count = 0;
+};
+
+// A node of a cell's bounding-volume hierarchy over its objects, stored depth
+// first: an inner node's first child follows it.
+struct CullNode {
+    glm::dvec3 lo{0.0};
+    glm::dvec3 hi{0.0};
+    int first = 0;  // leaf: its first entry in CellObjects::order; inner: the second child's index
+    int count = 0;  // leaf: its number of objects (> 0); inner: 0
+};
+
+// What a cell draws, split for culling: the room's faces always, each prop
+// when its bounds may be seen.
+struct CellObjects {
+    std::vector<DrawBatch> surfaces;  // the room's faces
+    std::vector<CellObject> objects;  // the props, in the order they were written
+    std::vector<DrawBatch> batches;   // the objects' batches, object after object
+    std::vector<CullNode> nodes;      // nodes[0] is the root; empty without objects
+    std::vector<int> order;           // object indices, leaf after leaf
+};
+
 struct Scene {
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;
     std::vector<IndexRange> cells;     // per room: faces (with holes) and props
     std::vector<std::vector<DrawBatch>> batches;  // per room: cells[room] split by material state
+    std::vector<CellObjects> objects;             // per room: the same, split for culling
     std::vector<SceneTexture> textures;           // each image and sampler once
     std::vector<CellFrame> frames;     // per room: the origin of its vertices and its portals'
     std::vector<PortalMesh> portals;   // per portal, relative to its room's frame

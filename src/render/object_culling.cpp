@@ -1,0 +1,92 @@
+#include "render/object_culling.hpp"
+
+#include <algorithm>
+#include <array>
+
+#include "scene/mesh_writer.hpp"
+
+namespace impossible::render {
+
+namespace {
+
+// Up to five planes (a, b, c, d): a point p is inside when a·x + b·y + c·z + d >= 0.
+struct EyePlanes {
+    std::array<math::dvec4, 5> planes;
+    int count = 0;
+};
+
+// The eye's frustum through its rectangle: clip-space x >= x0·w and the
+// like, as planes in the cell's coordinates (rows of the view-projection
+// matrix); they pass through the eye, so together they also keep w >= 0.
+EyePlanes eye_planes(const EyeView& ev, const NdcRect& r) {
+    const math::dmat4& m = ev.view_proj;
+    const auto row = [&](int i) { return math::dvec4(m[0][i], m[1][i], m[2][i], m[3][i]); };
+    const math::dvec4 x = row(0), y = row(1), w = row(3);
+    EyePlanes out;
+    out.planes[0] = x - r.x0 * w;
+    out.planes[1] = r.x1 * w - x;
+    out.planes[2] = y - r.y0 * w;
+    out.planes[3] = r.y1 * w - y;
+    out.count = 4;
+    if (ev.clip_plane != math::dvec4(0, 0, 0, 1)) out.planes[static_cast<std::size_t>(out.count++)] = ev.clip_plane;
+    return out;
+}
+
+// Whether a box lies wholly on the outer side of some plane.
+bool outside(const EyePlanes& e, const glm::dvec3& lo, const glm::dvec3& hi) {
+    for (int i = 0; i < e.count; ++i) {
+        const math::dvec4& p = e.planes[static_cast<std::size_t>(i)];
+        const glm::dvec3 far(p.x >= 0 ? hi.x : lo.x, p.y >= 0 ? hi.y : lo.y, p.z >= 0 ? hi.z : lo.z);
+        if (p.x * far.x + p.y * far.y + p.z * far.z + p.w < 0.0) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+void visible_batches(const scene::CellObjects& cell, const LevelView& view, int eye_width, int eye_height,
+                     double margin_px, CullScratch& scratch, std::vector<scene::DrawBatch>& out) {
+    out.assign(cell.surfaces.begin(), cell.surfaces.end());
+    if (cell.nodes.empty()) return;
+    std::array<EyePlanes, 2> eyes;
+    int eye_count = 0;
+    for (const EyeView& ev : view.eyes) {
+        if (!ev.active || ev.rect.empty()) continue;
+        const double mx = margin_px * 2.0 / eye_width, my = margin_px * 2.0 / eye_height;
+        const NdcRect r{ev.rect.x0 - mx, ev.rect.y0 - my, ev.rect.x1 + mx, ev.rect.y1 + my};
+        eyes[static_cast<std::size_t>(eye_count++)] = eye_planes(ev, r);
+    }
+    const auto hidden = [&](const glm::dvec3& lo, const glm::dvec3& hi) {
+        for (int e = 0; e < eye_count; ++e)
+            if (!outside(eyes[static_cast<std::size_t>(e)], lo, hi)) return false;
+        return true;
+    };
+
+    scratch.visible.clear();
+    scratch.stack.clear();
+    scratch.stack.push_back(0);
+    while (!scratch.stack.empty()) {
+        const scene::CullNode& node = cell.nodes[static_cast<std::size_t>(scratch.stack.back())];
+        const int index = scratch.stack.back();
+        scratch.stack.pop_back();
+        if (hidden(node.lo, node.hi)) continue;
+        if (node.count == 0) {
+            scratch.stack.push_back(node.first);
+            scratch.stack.push_back(index + 1);
+            continue;
+        }
+        for (int i = node.first; i < node.first + node.count; ++i) {
+            const int o = cell.order[static_cast<std::size_t>(i)];
+            const scene::CellObject& object = cell.objects[static_cast<std::size_t>(o)];
+            if (node.count == 1 || !hidden(object.lo, object.hi)) scratch.visible.push_back(o);
+        }
+    }
+    std::sort(scratch.visible.begin(), scratch.visible.end());
+    for (const int o : scratch.visible) {
+        const scene::CellObject& object = cell.objects[static_cast<std::size_t>(o)];
+        for (std::uint32_t b = object.first_batch; b < object.first_batch + object.batch_count; ++b)
+            scene::add_batch(out, cell.batches[b]);
+    }
+}
+
+}  // namespace impossible::render

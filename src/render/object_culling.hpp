@@ -1,0 +1,30 @@
+// Per-object culling inside a cell: which props a level's eyes may see,
+// tested against each eye's frustum narrowed to its rectangle and its clip
+// plane, through the cell's bounding-volume hierarchy (scene::CellObjects).
+// No GL: the result is the batches to draw.
+#pragma once
+
+#include <vector>
+
+#include "render/view.hpp"
+#include "scene/scene.hpp"
+
+namespace impossible::render {
+
+// Scratch space reused from frame to frame (no allocation once warm).
+struct CullScratch {
+    std::vector<int> visible;  // object indices
+    std::vector<int> stack;    // tree nodes still to test
+};
+
+// The cell's surfaces, then the batches of every object whose bounds may be
+// seen by an active eye with a non-empty rectangle, in the order the objects
+// were written, merged where they follow each other with the same state
+// (so a level that sees every object draws exactly the cell's full batches).
+// Conservative: an object is dropped only when its padded bounds lie wholly
+// outside one of the eye's planes (the rectangle widened by `margin_px`
+// pixels of an eye_width × eye_height image), for both eyes.
+void visible_batches(const scene::CellObjects& cell, const LevelView& view, int eye_width, int eye_height,
+                     double margin_px, CullScratch& scratch, std::vector<scene::DrawBatch>& out);
+
+}  // namespace impossible::render

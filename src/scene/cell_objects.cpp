@@ -1,0 +1,114 @@
+#include "scene/cell_objects.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <numeric>
+
+#include <glm/common.hpp>
+
+#include "scene/mesh_writer.hpp"
+
+namespace impossible::scene {
+
+void bound_object(const Scene& scene, std::uint32_t first_vertex, const glm::dvec3& origin, CellObject& object) {
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+    for (std::size_t v = first_vertex; v < scene.vertices.size(); ++v) {
+        const glm::dvec3 p = glm::dvec3(scene.vertices[v].position) + origin;
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    const glm::dvec3 pad = 1e-6 + 1e-9 * glm::max(glm::abs(lo), glm::abs(hi));
+    object.lo = lo - pad;
+    object.hi = hi + pad;
+}
+
+namespace {
+
+struct TreeBuilder {
+    CellObjects& cell;
+
+    void build(int first, int count) {
+        const auto node_index = static_cast<std::size_t>(cell.nodes.size());
+        cell.nodes.push_back({});
+        glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+        glm::dvec3 clo = lo, chi = hi;  // of the centres
+        for (int i = first; i < first + count; ++i) {
+            const CellObject& o = cell.objects[static_cast<std::size_t>(cell.order[static_cast<std::size_t>(i)])];
+            lo = glm::min(lo, o.lo);
+            hi = glm::max(hi, o.hi);
+            const glm::dvec3 c = 0.5 * (o.lo + o.hi);
+            clo = glm::min(clo, c);
+            chi = glm::max(chi, c);
+        }
+        cell.nodes[node_index].lo = lo;
+        cell.nodes[node_index].hi = hi;
+        if (count <= kCullLeafSize) {
+            cell.nodes[node_index].first = first;
+            cell.nodes[node_index].count = count;
+            return;
+        }
+        const glm::dvec3 extent = chi - clo;
+        const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+        const auto begin = cell.order.begin() + first;
+        const int half = count / 2;
+        // Ties by index, so the tree does not depend on the sort's whims.
+        std::nth_element(begin, begin + half, begin + count, [&](int a, int b) {
+            const double ca = cell.objects[static_cast<std::size_t>(a)].lo[axis] + cell.objects[static_cast<std::size_t>(a)].hi[axis];
+            const double cb = cell.objects[static_cast<std::size_t>(b)].lo[axis] + cell.objects[static_cast<std::size_t>(b)].hi[axis];
+            return ca < cb || (ca == cb && a < b);
+        });
+        build(first, half);
+        cell.nodes[node_index].first = static_cast<int>(cell.nodes.size());
+        cell.nodes[node_index].count = 0;
+        build(first + half, count - half);
+    }
+};
+
+}  // namespace
+
+void build_cull_tree(CellObjects& cell) {
+    cell.nodes.clear();
+    cell.order.resize(cell.objects.size());
+    std::iota(cell.order.begin(), cell.order.end(), 0);
+    if (cell.objects.empty()) return;
+    TreeBuilder{cell}.build(0, static_cast<int>(cell.objects.size()));
+}
+
+std::vector<DrawBatch> finish_cell(Scene& scene, CellObjects& cell) {
+    build_cull_tree(cell);
+    std::vector<DrawBatch> merged;
+    for (const DrawBatch& b : cell.surfaces) add_batch(merged, b);
+    if (cell.objects.empty()) return merged;
+
+    // The objects' indices lie from the first object's first batch to the end.
+    const std::uint32_t begin = cell.batches.front().range.first;
+    std::vector<std::uint32_t> moved;
+    moved.reserve(scene.indices.size() - begin);
+    std::vector<CellObject> objects;
+    std::vector<DrawBatch> batches;
+    objects.reserve(cell.objects.size());
+    batches.reserve(cell.batches.size());
+    for (const int o : cell.order) {
+        CellObject object = cell.objects[static_cast<std::size_t>(o)];
+        const auto first_batch = static_cast<std::uint32_t>(batches.size());
+        for (std::uint32_t b = object.first_batch; b < object.first_batch + object.batch_count; ++b) {
+            DrawBatch batch = cell.batches[b];
+            const auto from = scene.indices.begin() + batch.range.first;
+            batch.range.first = begin + static_cast<std::uint32_t>(moved.size());
+            moved.insert(moved.end(), from, from + batch.range.count);
+            batches.push_back(batch);
+            add_batch(merged, batch);
+        }
+        object.first_batch = first_batch;
+        objects.push_back(object);
+    }
+    assert(begin + moved.size() == scene.indices.size());
+    std::copy(moved.begin(), moved.end(), scene.indices.begin() + begin);
+    cell.objects = std::move(objects);
+    cell.batches = std::move(batches);
+    std::iota(cell.order.begin(), cell.order.end(), 0);
+    return merged;
+}
+
+}  // namespace impossible::scene

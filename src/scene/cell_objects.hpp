@@ -1,0 +1,30 @@
+// Per-object culling's data (scene.hpp, CellObjects): each prop's bounds and
+// a bounding-volume hierarchy over them per cell, so that a view tests the
+// tree rather than every prop.
+#pragma once
+
+#include <cstdint>
+
+#include "scene/scene.hpp"
+
+namespace impossible::scene {
+
+// The bounds of vertices [first_vertex, end) of the scene, in layout
+// coordinates (the cell's origin added back), padded by a micrometre and a
+// relative 1e-9 so that rounding never makes them too small.
+void bound_object(const Scene& scene, std::uint32_t first_vertex, const glm::dvec3& origin, CellObject& object);
+
+// Builds cell.nodes and cell.order over cell.objects: median splits on the
+// longest axis of the objects' centres, at most kCullLeafSize per leaf.
+// Deterministic.
+inline constexpr int kCullLeafSize = 4;
+void build_cull_tree(CellObjects& cell);
+
+// Builds the tree, then renumbers the objects in its leaf order and moves
+// their indices in scene.indices to match (they must lie together after the
+// cell's surfaces, as build_scene writes them), so that objects a view sees
+// together lie together and their draws merge. Returns the cell's batches,
+// merged: its surfaces, then every object's.
+std::vector<DrawBatch> finish_cell(Scene& scene, CellObjects& cell);
+
+}  // namespace impossible::scene
