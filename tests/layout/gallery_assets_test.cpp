@@ -1,5 +1,6 @@
 // layouts/gallery/ holds exactly what tools/make_gallery_assets writes, so
-// the textures and models there can always be regenerated from source.
+// the textures and models of gallery.json can always be regenerated from
+// source; and gallery.json uses each of them.
 #include <cstdlib>
 #include <filesystem>
 #include <set>
@@ -43,6 +44,13 @@ TEST(GalleryAssets, RegeneratingGivesIdenticalFiles) {
     ASSERT_EQ(run(make_assets(again.path())), 0);
     for (const std::string& name : made) {
         EXPECT_TRUE(read_text((again / name).string()) == read_text((out / name).string())) << name;
+    }
+}
+
+TEST(GalleryAssets, TheLayoutUsesEveryFile) {
+    const std::string layout = read_text(std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/gallery.json");
+    for (const std::string& name : names_in(kGalleryDir)) {
+        EXPECT_NE(layout.find("\"gallery/" + name + "\""), std::string::npos) << name;
     }
 }
 
