@@ -4,12 +4,17 @@ in vec3 v_checker_position;  // where the checker pattern is evaluated
 in vec3 v_normal;
 in vec3 v_color;
 in float v_checker;
+// MATERIALS: the variant for batches with a texture or an alpha cutoff. The
+// plain variant has no discard, so that the driver may test depth before
+// shading (llvmpipe tests it after a shader that can discard).
+#if defined(MATERIALS)
 in vec2 v_uv;      // texture coordinates, (0, 0) the image's top-left corner
 in float v_alpha;  // alpha before the texel's
 
 uniform sampler2D u_texture;
 uniform bool u_textured;      // multiply by u_texture
 uniform float u_alpha_cutoff; // alpha below it is not a surface; < 0: opaque
+#endif
 
 uniform uint u_cell_id;
 uniform bool u_unshaded;  // portal fill at the recursion limit: flat colour
@@ -34,6 +39,7 @@ void main() {
         return;
     }
     vec3 base = v_color;
+#if defined(MATERIALS)
     if (u_textured) {
         // Colour through the mipmaps; the cut-out test at level 0 with the
         // magnification filter, as the tracer samples (docs/tracer.md), so
@@ -43,6 +49,7 @@ void main() {
     } else if (u_alpha_cutoff >= 0.0 && v_alpha < u_alpha_cutoff) {
         discard;
     }
+#endif
     vec3 n = normalize(v_normal);
     float lambert = max(0.0, dot(n, LIGHT_DIR));
     float dark = checker_dark(v_checker_position, n, v_checker) ? CHECKER_DARK : 1.0;

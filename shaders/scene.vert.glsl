@@ -11,8 +11,10 @@ layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec3 a_color;
 layout(location = 3) in float a_checker;
+#if defined(MATERIALS)
 layout(location = 4) in vec2 a_uv;
 layout(location = 5) in float a_alpha;
+#endif
 
 uniform mat4 u_view_proj[2];
 // Per eye: the part of the eye image this draw may touch, as an NDC rectangle
@@ -32,8 +34,10 @@ out vec3 v_checker_position;
 out vec3 v_normal;
 out vec3 v_color;
 out float v_checker;
+#if defined(MATERIALS)
 out vec2 v_uv;
 out float v_alpha;
+#endif
 
 out float gl_ClipDistance[5];
 
@@ -61,6 +65,8 @@ void main() {
     v_normal = a_normal;
     v_color = a_color;
     v_checker = a_checker;
+#if defined(MATERIALS)
     v_uv = a_uv;
     v_alpha = a_alpha;
+#endif
 }

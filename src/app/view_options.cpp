@@ -37,7 +37,7 @@ const char* view_options_help() {
            "  --clip MODE                clip-distance (default) or oblique\n"
            "  --depth MODE               reversed-z (default: float depth, infinite far plane) or standard\n"
            "                             (24-bit depth, far plane at 200 km)\n"
-           "  --no-cull                  draw every portal without per-eye culling and scissor\n"
+           "  --no-cull                  draw every portal and prop without per-eye culling and scissor\n"
            "  --portal-texture SCALE     render-to-texture portals (the classic technique, for comparison):\n"
            "                             each portal's view at SCALE x the eye size, e.g. 0.25, 0.5, 1\n"
            "  --occlusion-test           also skip portals hidden behind the room's props or walls (an\n"

@@ -55,6 +55,9 @@ struct FrameDesc : scene::View {
     ClipMode clip = ClipMode::ClipDistance;
     DepthMode depth = DepthMode::ReversedZ;
     bool cull_portals = true;  // per-eye frustum/facing culling and scissor
+    // With culling: props are drawn only where an eye's frustum, narrowed
+    // through the portals, may see their bounds (render/object_culling.hpp).
+    bool cull_objects = true;
     // With culling: also test each visible portal of the head's cell for
     // occlusion (a query after the cell's surfaces) and drop the subtree of a
     // hidden one by conditional rendering. Exact, but the driver must

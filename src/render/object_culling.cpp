@@ -46,8 +46,11 @@ bool outside(const EyePlanes& e, const glm::dvec3& lo, const glm::dvec3& hi) {
 
 void visible_batches(const scene::CellObjects& cell, const LevelView& view, int eye_width, int eye_height,
                      double margin_px, CullScratch& scratch, std::vector<scene::DrawBatch>& out) {
-    out.assign(cell.surfaces.begin(), cell.surfaces.end());
-    if (cell.nodes.empty()) return;
+    out.clear();
+    if (cell.nodes.empty()) {
+        out.assign(cell.surfaces.begin(), cell.surfaces.end());
+        return;
+    }
     std::array<EyePlanes, 2> eyes;
     int eye_count = 0;
     for (const EyeView& ev : view.eyes) {
@@ -87,6 +90,7 @@ void visible_batches(const scene::CellObjects& cell, const LevelView& view, int 
         for (std::uint32_t b = object.first_batch; b < object.first_batch + object.batch_count; ++b)
             scene::add_batch(out, cell.batches[b]);
     }
+    for (const scene::DrawBatch& b : cell.surfaces) scene::add_batch(out, b);
 }
 
 }  // namespace impossible::render

@@ -17,9 +17,9 @@ struct CullScratch {
     std::vector<int> stack;    // tree nodes still to test
 };
 
-// The cell's surfaces, then the batches of every object whose bounds may be
-// seen by an active eye with a non-empty rectangle, in the order the objects
-// were written, merged where they follow each other with the same state
+// The batches of every object whose bounds may be seen by an active eye with
+// a non-empty rectangle, in the cell's order (scene::finish_cell), then the
+// cell's surfaces, merged where they follow each other with the same state
 // (so a level that sees every object draws exactly the cell's full batches).
 // Conservative: an object is dropped only when its padded bounds lie wholly
 // outside one of the eye's planes (the rectangle widened by `margin_px`

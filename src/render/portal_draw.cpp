@@ -100,27 +100,37 @@ void draw_cell(DrawContext& ctx, const LevelView& view) {
     RendererData& r = ctx.renderer;
     const auto cell = static_cast<std::size_t>(view.cell);
     const std::vector<scene::DrawBatch>* batches = &r.cells[cell];
-    if (ctx.frame.cull_portals && !r.objects[cell].objects.empty()) {
+    if (ctx.frame.cull_portals && ctx.frame.cull_objects && !r.objects[cell].objects.empty()) {
         // Two pixels of margin: one more than the eye rectangles' own.
         visible_batches(r.objects[cell], view, ctx.frame.eye_width, ctx.frame.eye_height, 2.0, r.cull_scratch,
                         r.cull_batches);
         batches = &r.cull_batches;
     }
-    const GLuint program = ctx.program.program.get();
-    bool material_set = false;  // uniforms differ from the defaults (untextured, opaque)
-    const auto set = [&](const scene::DrawBatch& b) {
-        glProgramUniform1i(program, ctx.program.textured, b.texture >= 0 ? 1 : 0);
-        glProgramUniform1f(program, ctx.program.alpha_cutoff, b.alpha_cutoff);
+    // Plain batches with the plain program; the others with the material
+    // variant, whose per-level uniforms are set when it is first needed.
+    bool material_ready = false;
+    for (const scene::DrawBatch& b : *batches) {
+        if (b.texture < 0 && b.alpha_cutoff < 0.0f) {
+            r.state->program(ctx.program.program.get());
+            draw_range(ctx, b.range);
+            continue;
+        }
+        assert(ctx.material_program != nullptr);
+        const SceneProgram& m = *ctx.material_program;
+        if (!material_ready) {
+            const DrawContext with_materials{r, m, ctx.frame, ctx.stats, ctx.projection, ctx.profiler};
+            set_eye_uniforms(with_materials, view, {view.eyes[0].rect, view.eyes[1].rect});
+            set_cell_id(with_materials, static_cast<unsigned>(view.cell + 1), false);
+            material_ready = true;
+        }
+        r.state->program(m.program.get());
+        glProgramUniform1i(m.program.get(), m.textured, b.texture >= 0 ? 1 : 0);
+        glProgramUniform1f(m.program.get(), m.alpha_cutoff, b.alpha_cutoff);
         if (b.texture >= 0)
             glBindTextureUnit(kSceneTextureUnit, r.gpu.textures[static_cast<std::size_t>(b.texture)].get());
-    };
-    for (const scene::DrawBatch& b : *batches) {
-        const bool plain = b.texture < 0 && b.alpha_cutoff < 0.0f;
-        if (!plain || material_set) set(b);
-        material_set = !plain;
         draw_range(ctx, b.range);
     }
-    if (material_set) set(scene::DrawBatch{});
+    r.state->program(ctx.program.program.get());
 }
 
 void draw_portal_box(DrawContext& ctx, const LevelView& view, int portal, const std::array<NdcRect, 2>& rects) {

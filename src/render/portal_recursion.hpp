@@ -24,6 +24,7 @@ struct DrawContext {
     const Target* target = nullptr;     // what is drawn into (its colour is copied for windows)
     size_t saved_colours_used = 0;      // of RendererData::saved_colours, by windows being drawn
     bool conditional = false;           // inside a portal's conditional rendering
+    const SceneProgram* material_program = nullptr;  // `program` with materials; set when the scene has them
 };
 
 // Draws `view` where the stencil equals view.level, then every portal of its

@@ -54,6 +54,7 @@ void draw_portal_via_texture(DrawContext& ctx, const LevelView& view, int p, con
     state.viewport({0, 0, texture.width, texture.height});
     clear_target(r, texture, view.level + 1);
     DrawContext inside{r, ctx.program, inner, ctx.stats, ctx.projection, ctx.profiler};
+    inside.material_program = ctx.material_program;
     inside.target = &texture;
     ctx.stats.portal_passes_drawn += 1;
     draw_level(inside, child_view(ctx, view, p, rects));

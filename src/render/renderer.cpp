@@ -29,10 +29,10 @@ Result<void> ensure_target(RendererData& r, int width, int height, DepthMode dep
     return {};
 }
 
-Result<void> ensure_program(RendererData& r, StereoMode mode) {
-    std::optional<SceneProgram>& slot = r.programs[mode_index(mode)];
+Result<void> ensure_program(RendererData& r, StereoMode mode, bool materials) {
+    std::optional<SceneProgram>& slot = (materials ? r.material_programs : r.programs)[mode_index(mode)];
     if (slot) return {};
-    Result<SceneProgram> built = build_scene_program(mode);
+    Result<SceneProgram> built = build_scene_program(mode, materials);
     if (!built) {
         if (mode == StereoMode::ViewportIndex)
             return Error{"stereo mode 'viewport-index' needs GL_ARB_shader_viewport_layer_array: " + built.error()};
@@ -46,7 +46,9 @@ Result<void> ensure_program(RendererData& r, StereoMode mode) {
 // mode's program and, for render-to-texture portals, their program and targets.
 Result<void> prepare_frame(RendererData& r, const FrameDesc& frame) {
     if (Result<void> made = ensure_target(r, 2 * frame.eye_width, frame.eye_height, frame.depth); !made) return made;
-    if (Result<void> made = ensure_program(r, frame.stereo); !made) return made;
+    if (Result<void> made = ensure_program(r, frame.stereo, false); !made) return made;
+    if (r.has_materials)
+        if (Result<void> made = ensure_program(r, frame.stereo, true); !made) return made;
     if (Result<void> made = ensure_multisampled(r, frame); !made) return made;
     if (r.has_windows) {
         if (Result<void> made = prepare_window_blend(r, false); !made) return made;
@@ -106,6 +108,8 @@ void draw_stereo(DrawContext& ctx) {
             for (int e = 0; e < 2; ++e) {
                 state.viewport({e * frame.eye_width, 0, frame.eye_width, frame.eye_height});
                 glProgramUniform1i(ctx.program.program.get(), ctx.program.single_eye, e);
+                if (ctx.material_program)
+                    glProgramUniform1i(ctx.material_program->program.get(), ctx.material_program->single_eye, e);
                 draw_level(ctx, root_view(frame, ctx.projection, 1u << e));
             }
             state.viewport(whole);
@@ -134,6 +138,8 @@ Result<Renderer> Renderer::create(gl::StateCache& state, const layout::Layout& l
     r->state = &state;
     r->cells = scene.batches;
     r->objects = scene.objects;
+    for (const auto& cell : scene.batches)
+        for (const scene::DrawBatch& b : cell) r->has_materials = r->has_materials || b.texture >= 0 || b.alpha_cutoff >= 0.0f;
     r->frames = scene.frames;
     r->links = scene.links;
     r->portals.reserve(layout.portals.size());
@@ -147,7 +153,7 @@ Result<Renderer> Renderer::create(gl::StateCache& state, const layout::Layout& l
     Result<ClearDepthProgram> clear = build_clear_depth_program();
     if (!clear) return Error{clear.error()};
     r->clear_depth = std::move(*clear);
-    if (Result<void> made = ensure_program(*r, StereoMode::ClipShift); !made) return Error{made.error()};
+    if (Result<void> made = ensure_program(*r, StereoMode::ClipShift, false); !made) return Error{made.error()};
     return Renderer(std::move(r));
 }
 
@@ -176,6 +182,7 @@ Result<void> Renderer::draw(const FrameDesc& frame, FrameStats* stats_out) {
     FrameStats stats;
     FrameProfiler profiler;
     DrawContext ctx{r, program, frame, stats, projection_of(frame), frame.profile ? &profiler : nullptr};
+    if (r.has_materials) ctx.material_program = &*r.material_programs[mode_index(frame.stereo)];
     ctx.target = &target;
     draw_stereo(ctx);
     resolve_multisampled(r, frame);

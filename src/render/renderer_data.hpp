@@ -51,6 +51,8 @@ struct RendererData {
     scene::PortalLinks links;              // M_AB per portal, the portals of each room
     GpuScene gpu;
     std::optional<SceneProgram> programs[kStereoModeCount];  // per StereoMode, built on first use
+    std::optional<SceneProgram> material_programs[kStereoModeCount];  // the same with textures and cut-outs
+    bool has_materials = false;  // some batch has a texture or an alpha cutoff
     ClearDepthProgram clear_depth;
     gl::VertexArray empty_vao;            // for the attribute-less clear triangle
     Target target;                        // single-sample: what is read back or shown

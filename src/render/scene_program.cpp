@@ -53,8 +53,9 @@ Result<SceneProgram> link_scene_program(const char* fragment, const std::string&
 
 }  // namespace
 
-Result<SceneProgram> build_scene_program(StereoMode mode) {
+Result<SceneProgram> build_scene_program(StereoMode mode, bool materials) {
     std::string defines = shading_defines();
+    if (materials) defines += "#define MATERIALS\n";
     if (mode == StereoMode::ViewportIndex) defines += "#define STEREO_VIEWPORT_INDEX\n";
     if (mode == StereoMode::TwoPass) defines += "#define STEREO_SINGLE_EYE\n";
     return link_scene_program("shaders/scene.frag.glsl", defines);

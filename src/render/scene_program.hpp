@@ -26,7 +26,9 @@ struct SceneProgram {
     GLint target_size = -1;  // vec2, only in the portal-texture program
 };
 
-Result<SceneProgram> build_scene_program(StereoMode mode);
+// `materials`: the variant that reads textures and drops cut-out fragments
+// (shaders/scene.frag.glsl, MATERIALS), for batches that need it.
+Result<SceneProgram> build_scene_program(StereoMode mode, bool materials = false);
 
 // The scene's vertex shader with shaders/portal_texture.frag.glsl: a portal
 // box that shows a render-to-texture view (clip-shift stereo only).

@@ -78,13 +78,23 @@ void build_cull_tree(CellObjects& cell) {
 std::vector<DrawBatch> finish_cell(Scene& scene, CellObjects& cell) {
     build_cull_tree(cell);
     std::vector<DrawBatch> merged;
-    for (const DrawBatch& b : cell.surfaces) add_batch(merged, b);
-    if (cell.objects.empty()) return merged;
-
-    // The objects' indices lie from the first object's first batch to the end.
-    const std::uint32_t begin = cell.batches.front().range.first;
+    if (cell.objects.empty()) {
+        for (const DrawBatch& b : cell.surfaces) add_batch(merged, b);
+        return merged;
+    }
+    // The cell's indices, surfaces then objects as written, become objects
+    // in leaf order then surfaces.
+    const std::uint32_t begin = cell.surfaces.empty() ? cell.batches.front().range.first
+                                                      : cell.surfaces.front().range.first;
     std::vector<std::uint32_t> moved;
     moved.reserve(scene.indices.size() - begin);
+    const auto move = [&](DrawBatch batch) {
+        const auto from = scene.indices.begin() + batch.range.first;
+        batch.range.first = begin + static_cast<std::uint32_t>(moved.size());
+        moved.insert(moved.end(), from, from + batch.range.count);
+        add_batch(merged, batch);
+        return batch;
+    };
     std::vector<CellObject> objects;
     std::vector<DrawBatch> batches;
     objects.reserve(cell.objects.size());
@@ -92,17 +102,12 @@ std::vector<DrawBatch> finish_cell(Scene& scene, CellObjects& cell) {
     for (const int o : cell.order) {
         CellObject object = cell.objects[static_cast<std::size_t>(o)];
         const auto first_batch = static_cast<std::uint32_t>(batches.size());
-        for (std::uint32_t b = object.first_batch; b < object.first_batch + object.batch_count; ++b) {
-            DrawBatch batch = cell.batches[b];
-            const auto from = scene.indices.begin() + batch.range.first;
-            batch.range.first = begin + static_cast<std::uint32_t>(moved.size());
-            moved.insert(moved.end(), from, from + batch.range.count);
-            batches.push_back(batch);
-            add_batch(merged, batch);
-        }
+        for (std::uint32_t b = object.first_batch; b < object.first_batch + object.batch_count; ++b)
+            batches.push_back(move(cell.batches[b]));
         object.first_batch = first_batch;
         objects.push_back(object);
     }
+    for (DrawBatch& b : cell.surfaces) b = move(b);
     assert(begin + moved.size() == scene.indices.size());
     std::copy(moved.begin(), moved.end(), scene.indices.begin() + begin);
     cell.objects = std::move(objects);

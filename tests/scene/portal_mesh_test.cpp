@@ -151,12 +151,13 @@ TEST(PortalMesh, RangesPartitionTheIndices) {
     for (const std::uint32_t i : s.indices) ASSERT_LT(i, s.vertices.size());
     // Both door portals are holes in their rooms: each room is closed by its
     // own door's front.
-    EXPECT_TRUE(
-        closed_and_consistent(concat(triangles(s, {s.cells[0].first, s.cells[0].count - 36}),
-                                     triangles(s, s.portals[0].front))));
-    EXPECT_TRUE(
-        closed_and_consistent(concat(triangles(s, {s.cells[1].first, s.cells[1].count - 36}),
-                                     triangles(s, s.portals[1].front))));
+    // (A room's faces are its surfaces' batches; its props come before them.)
+    for (std::size_t room = 0; room < 2; ++room) {
+        ASSERT_EQ(s.objects[room].surfaces.size(), 1u);
+        EXPECT_EQ(s.objects[room].surfaces[0].range.count, s.cells[room].count - 36);
+        EXPECT_TRUE(closed_and_consistent(
+            concat(triangles(s, s.objects[room].surfaces[0].range), triangles(s, s.portals[room].front))));
+    }
     for (std::size_t p = 0; p < 3; ++p) expect_portal_box(s, s.portals[p], l.portals[p].rect);
 }
 

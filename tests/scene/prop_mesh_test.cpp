@@ -19,9 +19,12 @@ TEST(PropMesh, BoxFacesOutwards) {
     l.rooms[0].props.push_back(box);
     const Scene s = build_scene(l);
     ASSERT_EQ(s.cells.size(), 1u);
-    const auto all = triangles(s, s.cells[0]);
-    ASSERT_EQ(all.size(), 12u + 12u);  // room faces first, then the prop
-    const std::vector<Triangle> ts(all.begin() + 12, all.end());
+    ASSERT_EQ(triangles(s, s.cells[0]).size(), 12u + 12u);
+    // The prop is an object of its own, drawn before the room's faces.
+    ASSERT_EQ(s.objects[0].objects.size(), 1u);
+    ASSERT_EQ(s.objects[0].batches.size(), 1u);
+    EXPECT_EQ(s.objects[0].batches[0].range.first, s.cells[0].first);
+    const std::vector<Triangle> ts = triangles(s, s.objects[0].batches[0].range);
     const glm::dvec3 centre = 0.5 * (box.min + box.max);
     for (const Triangle& t : ts) {
         ASSERT_GT(t.area(), 0.0);
@@ -64,10 +67,12 @@ TEST(PropMesh, GltfTrianglesArePlacedWithTheirWinding) {
     const layout::GltfProp prop = sample_model();
     l.rooms[0].props.push_back(prop);
     const Scene s = build_scene(l);
-    const auto all = triangles(s, s.cells[0]);
-    ASSERT_EQ(all.size(), 12u + 2u);
+    ASSERT_EQ(triangles(s, s.cells[0]).size(), 12u + 2u);
+    ASSERT_EQ(s.objects[0].batches.size(), 1u);
+    const auto all = triangles(s, s.objects[0].batches[0].range);  // the prop's, in its order
+    ASSERT_EQ(all.size(), 2u);
     for (std::size_t k = 0; k < 2; ++k) {
-        const Triangle& t = all[12 + k];
+        const Triangle& t = all[k];
         const layout::ModelTriangle& m = prop.triangles[k];
         for (std::size_t c = 0; c < 3; ++c) {
             EXPECT_EQ(t.v[c]->position, glm::vec3(layout::place_model_point(prop, m.position[c])));
@@ -82,7 +87,7 @@ TEST(PropMesh, GltfTrianglesArePlacedWithTheirWinding) {
         EXPECT_GT(glm::dot(t.geometric_normal(), glm::dvec3(t.v[0]->normal)), 0.999);
     }
     // Independently: scale 2, yaw 90° (turning left: +x goes to -z), then move.
-    const Triangle& first = all[12];
+    const Triangle& first = all[0];
     EXPECT_NEAR(glm::length(first.p(0) - glm::dvec3(1, 0, -1)), 0.0, 1e-6);
     EXPECT_NEAR(glm::length(first.p(1) - glm::dvec3(1, 0, -3)), 0.0, 1e-6);
     EXPECT_NEAR(glm::length(first.p(2) - glm::dvec3(1, 2, -1)), 0.0, 1e-6);

@@ -1,0 +1,90 @@
+// Per-object culling (render/object_culling.hpp): props outside every eye's
+// frustum, narrowed through portals, are not drawn, and the image is the one
+// drawn without culling, pixel for pixel.
+#include <cmath>
+
+#include "gl_fixture.hpp"
+#include "scene/cell_objects.hpp"
+
+namespace impossible {
+namespace {
+
+// vr_study.json (six doors) with a grid of n small boxes on every room's floor.
+layout::Layout crowded(int n) {
+    layout::Layout l = testing::layout_from_file(std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/vr_study.json");
+    const int side = static_cast<int>(std::ceil(std::sqrt(double(n))));
+    for (layout::Room& room : l.rooms) {
+        const glm::dvec3 extent = room.max - room.min;
+        const double size = 0.4 * std::min(extent.x, extent.z) / side;
+        for (int i = 0; i < n; ++i) {
+            layout::BoxProp box;
+            const double x = room.min.x + (i % side + 0.5) * extent.x / side;
+            const double z = room.min.z + (i / side + 0.5) * extent.z / side;
+            box.min = {x - 0.5 * size, room.min.y, z - 0.5 * size};
+            box.max = {x + 0.5 * size, room.min.y + (1 + i % 3) * size, z + 0.5 * size};
+            box.color = {0.3 + 0.1 * (i % 5), 0.5, 0.3};
+            room.props.push_back(box);
+        }
+    }
+    return l;
+}
+
+TEST(ObjectCulling, SameImageWithFarFewerTrianglesThroughSixDoors) {
+    const layout::Layout l = crowded(150);
+    Result<gl::Context> context = gl::create_context(gl::Backend::Egl);
+    ASSERT_TRUE(context.has_value()) << context.error();
+    Result<render::Renderer> renderer = render::Renderer::create(context->state(), l, scene::build_scene(l));
+    ASSERT_TRUE(renderer.has_value()) << renderer.error();
+    long culled_total = 0, full_total = 0;
+    for (int k = 0; k < 6; ++k) {
+        render::FrameDesc f;
+        f.room = l.start.room;
+        f.head.position = l.start.position + glm::dvec3(0.2 * (k % 3) - 0.2, 0.0, 0.15 * (k % 2));
+        f.head.yaw_deg = 60.0 * k;
+        f.head.pitch_deg = -10.0 + 5.0 * (k % 4);
+        f.eye_width = 160;
+        f.eye_height = 90;
+        f.max_depth = 4;
+        Result<render::RenderedFrame> culled = renderer->render(f);
+        f.cull_objects = false;
+        Result<render::RenderedFrame> full = renderer->render(f);
+        ASSERT_TRUE(culled && full);
+        EXPECT_EQ(testing::count_colour_differences(culled->image, full->image), 0) << "pose " << k;
+        EXPECT_EQ(testing::count_id_differences(culled->image, full->image), 0) << "pose " << k;
+        EXPECT_LT(culled->stats.triangles, full->stats.triangles) << "pose " << k;
+        culled_total += culled->stats.triangles;
+        full_total += full->stats.triangles;
+    }
+    // Seven rooms of 1,800 prop triangles each: a view sees a fraction of the
+    // head's room and slivers of the others.
+    EXPECT_LT(culled_total * 3, full_total);
+}
+
+TEST(ObjectCulling, ATreeOverManyObjectsKeepsEveryObjectOnceAndBoundsItsChildren) {
+    const scene::Scene s = scene::build_scene(crowded(1000));
+    for (const scene::CellObjects& cell : s.objects) {
+        ASSERT_GE(cell.objects.size(), 1000u);
+        std::vector<int> seen(cell.objects.size(), 0);
+        for (const scene::CullNode& node : cell.nodes) {
+            if (node.count == 0) continue;
+            EXPECT_LE(node.count, scene::kCullLeafSize);
+            for (int i = node.first; i < node.first + node.count; ++i) {
+                const scene::CellObject& o = cell.objects[static_cast<std::size_t>(cell.order[static_cast<std::size_t>(i)])];
+                seen[static_cast<std::size_t>(cell.order[static_cast<std::size_t>(i)])] += 1;
+                for (int a = 0; a < 3; ++a) {
+                    EXPECT_LE(node.lo[a], o.lo[a]);
+                    EXPECT_GE(node.hi[a], o.hi[a]);
+                }
+            }
+        }
+        for (const int n : seen) EXPECT_EQ(n, 1);
+        // Objects are stored in leaf order: index ranges follow one another.
+        for (std::size_t o = 1; o < cell.objects.size(); ++o) {
+            const scene::DrawBatch& prev = cell.batches[cell.objects[o - 1].first_batch];
+            EXPECT_EQ(prev.range.first + prev.range.count, cell.batches[cell.objects[o].first_batch].range.first);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace impossible
