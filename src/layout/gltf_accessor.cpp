@@ -67,6 +67,23 @@ std::uint32_t AccessorView::index(std::size_t i) const {
     }
 }
 
+double AccessorView::normalized(std::size_t i, std::size_t c) const {
+    const unsigned char* p = bytes() + i * stride;
+    switch (component_type) {
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return p[c] / 255.0;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+            std::uint16_t v;
+            std::memcpy(&v, p + 2 * c, sizeof v);
+            return v / 65535.0;
+        }
+        default: {
+            float f;
+            std::memcpy(&f, p + 4 * c, sizeof f);
+            return f;
+        }
+    }
+}
+
 namespace {
 
 // The `count` elements of `element` bytes, `stride` apart, from `byte_offset`

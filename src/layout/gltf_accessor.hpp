@@ -31,6 +31,9 @@ struct AccessorView {
 
     glm::dvec3 vec3(std::size_t i) const;      // FLOAT VEC3
     std::uint32_t index(std::size_t i) const;  // UNSIGNED_BYTE/SHORT/INT SCALAR
+    // Component c of element i: a FLOAT as it is, an UNSIGNED_BYTE or
+    // UNSIGNED_SHORT normalized to 0..1 (glTF 2.0, "Accessor Data Types").
+    double normalized(std::size_t i, std::size_t c) const;
 };
 
 // Checks accessor `index` (`what` names it in errors: "POSITION") against

@@ -14,6 +14,7 @@
 
 #include "layout/file_io.hpp"
 #include "layout/gltf_accessor.hpp"
+#include "layout/gltf_material.hpp"
 #include "layout/gltf_preflight.hpp"
 #include "layout/limits.hpp"
 #include "layout/text_util.hpp"
@@ -22,8 +23,9 @@ namespace impossible::layout::detail {
 
 namespace {
 
-// --- tinygltf callbacks: no shell expansion of paths, no image decoding, no
-// writing, and file reads bounded like ours.
+// --- tinygltf callbacks: no shell expansion of paths, no image decoding
+// while parsing (keep_image_bytes keeps the bytes; only the images a drawn
+// material needs are decoded), no writing, and file reads bounded like ours.
 //
 // A model reads files only in its own folder and below (its buffers): a URI
 // such as "../../../../etc/passwd" must not open, or even reveal whether or
@@ -56,11 +58,6 @@ bool fs_write_whole_file(std::string* err, const std::string&, const std::vector
     if (err != nullptr) *err += "writing is disabled\n";
     return false;
 }
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-                const unsigned char*, int, void*) {
-    return true;  // textures are not used: only base colour factors
-}
-
 // tinygltf's first message, one short line; a data: URI in it (tinygltf
 // quotes whole buffers) is cut to its media type.
 std::string first_line(const std::string& text) {
@@ -237,6 +234,10 @@ glm::dvec3 base_colour(const tinygltf::Model& model, int material) {
     return glm::clamp(glm::dvec3(f[0], f[1], f[2]), 0.0, 1.0);
 }
 
+// Accessors copied (sparse, or without a bufferView) hold at most this many
+// elements: three vertices for each triangle a model may have.
+constexpr std::size_t kMaxCopied = 3 * limits::kMaxModelTriangles;
+
 struct PrimitiveData {
     std::string name;         // "mesh 0 primitive 1"
     int position_accessor = -1;
@@ -248,11 +249,37 @@ struct PrimitiveData {
     bool indexed = false;
     std::size_t triangles = 0;
     glm::dvec3 colour{0.8};
+    int material = -1;        // the glTF material
+    AccessorView colours;     // COLOR_0; count 0: none
+    std::size_t colour_components = 0;  // 3 or 4
+    AccessorView uvs;         // the base colour texture's TEXCOORD_n; count 0: none
 };
 
-// Accessors copied (sparse, or without a bufferView) hold at most this many
-// elements: three vertices for each triangle a model may have.
-constexpr std::size_t kMaxCopied = 3 * limits::kMaxModelTriangles;
+// An attribute of a primitive that gives each vertex a few values (COLOR_0,
+// TEXCOORD_n): float, or normalized unsigned byte or short.
+Result<AccessorView> vertex_values(const tinygltf::Model& model, int index, int type, const std::string& what,
+                                   std::size_t vertices) {
+    Result<AccessorView> view = accessor_view(model, index, type,
+                                              {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                               TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+                                              what.c_str(), kMaxCopied);
+    if (!view) return view;
+    if (view->count != vertices) {
+        return Error{what + " accessor " + std::to_string(index) + " has " + std::to_string(view->count) +
+                     " values for " + std::to_string(vertices) + " vertices"};
+    }
+    const std::size_t components = type == TINYGLTF_TYPE_VEC2 ? 2 : type == TINYGLTF_TYPE_VEC3 ? 3 : 4;
+    for (std::size_t i = 0; i < view->count; ++i) {
+        for (std::size_t c = 0; c < components; ++c) {
+            if (!std::isfinite(view->normalized(i, c))) {
+                return Error{what + " accessor " + std::to_string(index) + " has a value that is not finite (vertex " +
+                             std::to_string(i) + ")"};
+            }
+        }
+    }
+    return view;
+}
+
 
 Result<PrimitiveData> read_primitive(const tinygltf::Model& model, int mesh, std::size_t p) {
     PrimitiveData out;
@@ -316,7 +343,38 @@ Result<PrimitiveData> read_primitive(const tinygltf::Model& model, int mesh, std
     }
     out.corners = corners;
     out.triangles = out.mode == TINYGLTF_MODE_TRIANGLES ? corners / 3 : corners >= 3 ? corners - 2 : 0;
+    out.material = primitive.material;
+    int tex_coord = -1;
+    if (primitive.material >= 0) {
+        const Result<int> checked = check_material(model, primitive.material);
+        if (!checked) return Error{checked.error()};
+        tex_coord = *checked;
+    }
     out.colour = base_colour(model, primitive.material);
+    const auto colour = primitive.attributes.find("COLOR_0");
+    if (colour != primitive.attributes.end()) {
+        const int index = colour->second;
+        const bool exists = index >= 0 && static_cast<std::size_t>(index) < model.accessors.size();
+        const int type = exists ? model.accessors[static_cast<std::size_t>(index)].type : TINYGLTF_TYPE_VEC4;
+        if (exists && type != TINYGLTF_TYPE_VEC3 && type != TINYGLTF_TYPE_VEC4) {
+            return fail("COLOR_0 accessor " + std::to_string(index) + " must be VEC3 or VEC4");
+        }
+        Result<AccessorView> view = vertex_values(model, index, type, "COLOR_0", out.positions.count);
+        if (!view) return fail(view.error());
+        out.colours = std::move(*view);
+        out.colour_components = type == TINYGLTF_TYPE_VEC3 ? 3 : 4;
+    }
+    if (tex_coord >= 0) {
+        const std::string set = "TEXCOORD_" + std::to_string(tex_coord);
+        const auto uv = primitive.attributes.find(set);
+        if (uv == primitive.attributes.end()) {
+            return Error{"has " + name + " whose material " + std::to_string(primitive.material) +
+                         " reads its base colour texture with " + set + ", which the primitive does not have"};
+        }
+        Result<AccessorView> view = vertex_values(model, uv->second, TINYGLTF_TYPE_VEC2, set, out.positions.count);
+        if (!view) return fail(view.error());
+        out.uvs = std::move(*view);
+    }
     return out;
 }
 
@@ -394,12 +452,23 @@ Result<void> emit_triangles(const PrimitiveData& data, const MeshInstance& insta
             triangle.normal[k] = n;
         }
         triangle.color = data.colour;
+        triangle.material = data.material;  // a glTF index until build_materials
+        for (std::size_t k = 0; k < 3; ++k) {
+            if (data.colours.count > 0) {
+                glm::dvec4 c(1.0);
+                for (std::size_t i = 0; i < data.colour_components; ++i) {
+                    c[static_cast<int>(i)] = std::clamp(data.colours.normalized(v[k], i), 0.0, 1.0);
+                }
+                triangle.vertex_color[k] = c;
+            }
+            if (data.uvs.count > 0) triangle.uv[k] = {data.uvs.normalized(v[k], 0), data.uvs.normalized(v[k], 1)};
+        }
         out.push_back(triangle);
     }
     return {};
 }
 
-Result<std::vector<ModelTriangle>> load_model(const std::string& path, std::size_t max_triangles) {
+Result<GltfModel> load_model(const std::string& path, std::size_t max_triangles) {
     std::string extension = std::filesystem::path(path).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -433,7 +502,8 @@ Result<std::vector<ModelTriangle>> load_model(const std::string& path, std::size
         return Error{checked.error()};
 
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(&skip_image, nullptr);
+    KeptImages kept;
+    loader.SetImageLoader(&keep_image_bytes, &kept);
     loader.SetFsCallbacks({&fs_file_exists, &fs_expand_path, &fs_read_whole_file,
                            &fs_write_whole_file, &folder});
     tinygltf::Model model;
@@ -443,6 +513,7 @@ Result<std::vector<ModelTriangle>> load_model(const std::string& path, std::size
                                                          static_cast<unsigned int>(bytes->size()), base_dir)
                            : loader.LoadASCIIFromString(&model, &err, &warn, json_text.data(),
                                                         static_cast<unsigned int>(json_text.size()), base_dir);
+    if (!kept.error.empty()) return Error{kept.error};
     if (!ok) {
         return Error{"is not a valid glTF 2.0 file: " + first_line(err)};
     }
@@ -470,20 +541,26 @@ Result<std::vector<ModelTriangle>> load_model(const std::string& path, std::size
             work.emplace_back(std::move(*data), instance);
         }
     }
-    std::vector<ModelTriangle> out;
-    out.reserve(triangles);
+    GltfModel out;
+    out.triangles.reserve(triangles);
     for (const auto& [data, instance] : work) {
-        if (Result<void> emitted = emit_triangles(data, instance, out); !emitted) return Error{emitted.error()};
+        if (Result<void> emitted = emit_triangles(data, instance, out.triangles); !emitted)
+            return Error{emitted.error()};
     }
-    if (out.empty()) {
+    if (out.triangles.empty()) {
         return Error{"has no triangles"};
+    }
+    if (Result<void> built = build_materials(model, kept, folder, out.triangles, out.materials, out.textures,
+                                             out.texels);
+        !built) {
+        return Error{built.error()};
     }
     return out;
 }
 
 }  // namespace
 
-Result<std::vector<ModelTriangle>> load_gltf_triangles(const std::string& path, std::size_t max_triangles) {
+Result<GltfModel> load_gltf_model(const std::string& path, std::size_t max_triangles) {
     try {
         return load_model(path, max_triangles);
     } catch (const std::bad_alloc&) {
@@ -492,6 +569,12 @@ Result<std::vector<ModelTriangle>> load_gltf_triangles(const std::string& path, 
         // tinygltf throws on some malformed input (e.g. std::out_of_range).
         return Error{"is not a valid glTF 2.0 file: " + printable(e.what())};
     }
+}
+
+Result<std::vector<ModelTriangle>> load_gltf_triangles(const std::string& path, std::size_t max_triangles) {
+    Result<GltfModel> model = load_gltf_model(path, max_triangles);
+    if (!model) return Error{model.error()};
+    return std::move(model->triangles);
 }
 
 }  // namespace impossible::layout::detail

@@ -19,9 +19,24 @@ namespace impossible::layout::detail {
 // counter-clockwise seen from their front (mirroring nodes are turned back).
 // Zero-area triangles are dropped.
 //
+// Materials (docs/layouts.md, "Materials"): each triangle's `material`
+// indexes `materials`, which holds only the materials the triangles use;
+// `textures` only those the materials use, each image decoded once. COLOR_0
+// fills vertex_color, the base colour texture's TEXCOORD set fills uv.
+//
 // Returns an error (a sentence, without the file name) for a
-// file that is missing, unreadable, not glTF, uses what is not supported, or
-// has more than `max_triangles` triangles. Never throws for bad input.
+// file that is missing, unreadable, not glTF, uses what is not supported
+// (alphaMode BLEND, images that are not PNG or JPEG), or has more than
+// `max_triangles` triangles. Never throws for bad input.
+struct GltfModel {
+    std::vector<ModelTriangle> triangles;
+    std::vector<Material> materials;
+    std::vector<Texture> textures;
+    std::size_t texels = 0;  // decoded, all images together (each once)
+};
+Result<GltfModel> load_gltf_model(const std::string& path, std::size_t max_triangles);
+
+// The triangles of load_gltf_model alone.
 Result<std::vector<ModelTriangle>> load_gltf_triangles(const std::string& path, std::size_t max_triangles);
 
 }  // namespace impossible::layout::detail

@@ -1,5 +1,6 @@
 #include "layout/gltf_preflight.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstdint>
@@ -184,6 +185,52 @@ Result<void> check_references(const json& doc) {
                 !e.empty())
                 return Error{e};
         }
+    }
+    // tinygltf hands an image's bufferView to the image loader without
+    // checking that it lies inside its buffer.
+    const json& images = array("images");
+    for (std::size_t i = 0; i < images.size(); ++i) {
+        const json& image = images[i];
+        if (!image.is_object() || !image.contains("bufferView")) continue;
+        const std::string who = "has image " + std::to_string(i);
+        if (std::string e = bad_reference(image, "bufferView", views.size(), "bufferView", "bufferViews", who);
+            !e.empty())
+            return Error{e};
+        const std::size_t v = image["bufferView"].get<std::size_t>();
+        const json& view = views[v];
+        if (!view.is_object()) continue;
+        const auto offset = view.find("byteOffset");
+        const auto length = view.find("byteLength");
+        const auto buffer = view.find("buffer");
+        const bool numbers = (offset == view.end() || offset->is_number_unsigned()) && length != view.end() &&
+                             length->is_number_unsigned() && buffer != view.end() && buffer->is_number_unsigned();
+        const std::size_t b = numbers ? buffer->get<std::size_t>() : 0;
+        const json* buffer_object = numbers && b < buffers.size() && buffers[b].is_object() ? &buffers[b] : nullptr;
+        const auto size = buffer_object != nullptr ? buffer_object->find("byteLength") : json::const_iterator();
+        if (buffer_object == nullptr || size == buffer_object->end() || !size->is_number_unsigned()) {
+            return Error{who + " whose bufferView " + std::to_string(v) +
+                         " has no valid buffer, byteOffset and byteLength"};
+        }
+        const std::uint64_t from = offset == view.end() ? 0 : offset->get<std::uint64_t>();
+        const std::uint64_t bytes = length->get<std::uint64_t>();
+        const std::uint64_t total = size->get<std::uint64_t>();
+        if (bytes == 0 || from > total || bytes > total - from) {
+            return Error{who + " whose bufferView " + std::to_string(v) + " (" + std::to_string(bytes) +
+                         " bytes from byte " + std::to_string(from) + ") does not lie inside its buffer of " +
+                         std::to_string(total) + " bytes"};
+        }
+    }
+    // tinygltf keeps the default (white) for a baseColorFactor of the wrong length.
+    const json& materials = array("materials");
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+        if (!materials[i].is_object()) continue;
+        const auto pbr = materials[i].find("pbrMetallicRoughness");
+        if (pbr == materials[i].end() || !pbr->is_object()) continue;
+        const auto factor = pbr->find("baseColorFactor");
+        if (factor == pbr->end()) continue;
+        const bool four_numbers = factor->is_array() && factor->size() == 4 &&
+                                  std::all_of(factor->begin(), factor->end(), [](const json& v) { return v.is_number(); });
+        if (!four_numbers) return Error{"has material " + std::to_string(i) + " whose baseColorFactor is not 4 numbers"};
     }
     const json& meshes = array("meshes");
     for (std::size_t m = 0; m < meshes.size(); ++m) {

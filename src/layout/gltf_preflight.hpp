@@ -1,7 +1,7 @@
 // Checks a glTF file before tinygltf parses it: the JSON's nesting depth and
 // size (deep nesting crashes tinygltf), the .glb container, the required
 // extensions, the buffers against their byteLength and the references from
-// accessors to buffer views and from buffer views to buffers. tinygltf's own
+// accessors and images to buffer views and from buffer views to buffers. tinygltf's own
 // messages for these are missing, misleading or dump base64 data.
 #pragma once
 

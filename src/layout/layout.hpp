@@ -218,6 +218,8 @@ struct Summary {
     double floor_area = 0.0;                // summed floor areas of the rooms, m²
     std::optional<double> play_area_area;   // m², absent without a play area
     std::optional<double> expansion_ratio;  // floor_area / play_area_area
+    int textured_faces = 0;  // room faces with a texture
+    int images = 0;          // distinct decoded images: room textures and glTF props' textures
 };
 
 Summary summarize(const Layout& layout);

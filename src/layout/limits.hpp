@@ -56,6 +56,17 @@ inline constexpr std::size_t kMaxNodeDepth = 64;
 inline constexpr std::size_t kMaxModelJsonDepth = 64;
 inline constexpr std::size_t kMaxModelJsonValues = 1'000'000;
 
+// Images: glTF textures and room face textures (PNG or JPEG), decoded to
+// 8-bit RGBA (4 bytes a texel). A side of 8192 pixels is what GL guarantees
+// at least for a texture side on current hardware; the texel budgets bound
+// the decoded memory (64 Mi texels = 256 MiB) per model and for the whole
+// layout, each distinct image (by file, or by model and image index) counted
+// once. A room texture file is read up to kMaxImageFileBytes.
+inline constexpr int kMaxImageSide = 8192;
+inline constexpr std::size_t kMaxModelTexels = std::size_t{64} << 20;
+inline constexpr std::size_t kMaxLayoutTexels = std::size_t{128} << 20;
+inline constexpr std::size_t kMaxImageFileBytes = 64u << 20;  // 64 MiB
+
 // Door boxes and the rasteriser's near plane (render/frame.hpp checks these
 // are its own). An eye sits half an IPD beside the head, so before the head
 // crosses a door one eye can be that far behind the door's plane: the box

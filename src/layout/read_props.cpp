@@ -1,7 +1,9 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "layout/file_io.hpp"
 #include "layout/gltf_model.hpp"
+#include "layout/image_decode.hpp"
 #include "layout/limits.hpp"
 #include "layout/readers.hpp"
 #include "layout/text_util.hpp"
@@ -14,11 +16,48 @@ std::string ModelCache::resolve(const std::string& path) const {
     return (std::filesystem::path(base_dir_) / p).lexically_normal().string();
 }
 
-const Result<std::vector<ModelTriangle>>& ModelCache::load(const std::string& resolved) {
+namespace {
+
+std::string over_texel_budget() {
+    return "over the limit of " + std::to_string(limits::kMaxLayoutTexels) +
+           " decoded texels for all the images of a layout (glTF textures and room textures together)";
+}
+
+}  // namespace
+
+const Result<GltfModel>& ModelCache::load(const std::string& resolved) {
     auto it = entries_.find(resolved);
-    if (it == entries_.end())
-        it = entries_.emplace(resolved, load_gltf_triangles(resolved, limits::kMaxModelTriangles)).first;
-    return it->second;
+    if (it != entries_.end()) return it->second;
+    Result<GltfModel> model = load_gltf_model(resolved, limits::kMaxModelTriangles);
+    if (model && model->texels > limits::kMaxLayoutTexels - total_texels_) {
+        model = Error{"has images of " + std::to_string(model->texels) + " texels, which bring the layout " +
+                      over_texel_budget()};
+    } else if (model) {
+        total_texels_ += model->texels;
+    }
+    return entries_.emplace(resolved, std::move(model)).first->second;
+}
+
+const Result<std::shared_ptr<const Image>>& ModelCache::load_image(const std::string& resolved) {
+    auto it = images_.find(resolved);
+    if (it != images_.end()) return it->second;
+    const auto decode = [&]() -> Result<std::shared_ptr<const Image>> {
+        const Result<std::vector<unsigned char>> bytes =
+            read_file_bytes(resolved, limits::kMaxImageFileBytes, true);
+        if (!bytes) return Error{bytes.error()};
+        if (bytes->empty()) return Error{"is empty (expected a PNG or JPEG image)"};
+        const Result<ImageSize> size = image_size(bytes->data(), bytes->size());
+        if (!size) return Error{size.error()};
+        if (size->texels() > limits::kMaxLayoutTexels - total_texels_) {
+            return Error{"is " + std::to_string(size->width) + " x " + std::to_string(size->height) +
+                         " pixels, which brings the layout " + over_texel_budget()};
+        }
+        Result<Image> image = decode_image(bytes->data(), bytes->size());
+        if (!image) return Error{image.error()};
+        total_texels_ += size->texels();
+        return std::make_shared<const Image>(std::move(*image));
+    };
+    return images_.emplace(resolved, decode()).first->second;
 }
 
 Result<void> ModelCache::add_instance(std::size_t triangles) {
@@ -75,11 +114,6 @@ std::optional<BoxProp> read_box_prop(Checker& check, const Path& at, const json&
     return prop;
 }
 
-bool has_control_character(const std::string& text) {
-    return std::any_of(text.begin(), text.end(),
-                       [](char c) { return static_cast<unsigned char>(c) < 0x20; });
-}
-
 std::optional<GltfProp> read_gltf_prop(Checker& check, const Path& at, const json& value,
                                        ModelCache& models) {
     check.check_fields(at, value, {"gltf", "position", "yaw_deg", "scale"}, {"gltf"});
@@ -121,16 +155,18 @@ std::optional<GltfProp> read_gltf_prop(Checker& check, const Path& at, const jso
     }
     prop.path = *path;
     prop.resolved_path = models.resolve(*path);
-    const Result<std::vector<ModelTriangle>>& triangles = models.load(prop.resolved_path);
-    if (!triangles) {
-        check.error(gltf_at, "the model " + quote(prop.resolved_path) + " " + triangles.error());
+    const Result<GltfModel>& model = models.load(prop.resolved_path);
+    if (!model) {
+        check.error(gltf_at, "the model " + quote(prop.resolved_path) + " " + model.error());
         return std::nullopt;
     }
-    if (Result<void> counted = models.add_instance(triangles->size()); !counted) {
+    if (Result<void> counted = models.add_instance(model->triangles.size()); !counted) {
         check.error(gltf_at, counted.error());
         return std::nullopt;
     }
-    prop.triangles = *triangles;
+    prop.triangles = model->triangles;
+    prop.materials = model->materials;
+    prop.textures = model->textures;  // the images are shared, not copied
     if (!ok) return std::nullopt;
     return prop;
 }

@@ -1,4 +1,6 @@
+#include <array>
 #include <map>
+#include <memory>
 
 #include "layout/limits.hpp"
 #include "layout/readers.hpp"
@@ -29,11 +31,52 @@ void read_face_colors(Checker& check, const Path& at, const json& value, Room& r
     }
 }
 
+// `textures`: a PNG or JPEG image per face, `all` for the faces without
+// their own key. Each file is read once per layout (the cache shares it).
+void read_textures(Checker& check, const Path& at, const json& value, ModelCache& models, Room& room) {
+    if (!check.expect_object(at, value)) return;
+    std::array<std::shared_ptr<const Image>, kFaceCount> own{};
+    std::shared_ptr<const Image> all;
+    for (auto it = value.begin(); it != value.end(); ++it) {
+        const std::string& key = it.key();
+        if (!key.empty() && key.front() == '_') continue;  // a comment
+        int face = -1;
+        for (int f = 0; f < kFaceCount; ++f) {
+            if (key == kFaceNames[static_cast<std::size_t>(f)]) face = f;
+        }
+        if (face < 0 && key != "all") {
+            check.error_at_key(at / key, "unknown face " + quote(key) +
+                                             " (textures are named by \"floor\", \"ceiling\", \"-x\", "
+                                             "\"+x\", \"-z\", \"+z\" and \"all\")");
+            continue;
+        }
+        const Path key_at = at / key;
+        const auto path = check.read_string(key_at, it.value());
+        if (!path) continue;
+        if (path->empty()) {
+            check.error(key_at, "must name a PNG or JPEG file (got an empty path)");
+            continue;
+        }
+        if (has_control_character(*path)) {
+            check.error(key_at, "the path " + quote(*path) + " contains a control character");
+            continue;
+        }
+        const std::string resolved = models.resolve(*path);
+        const Result<std::shared_ptr<const Image>>& image = models.load_image(resolved);
+        if (!image) {
+            check.error(key_at, "the image " + quote(resolved) + " " + image.error());
+            continue;
+        }
+        (face < 0 ? all : own[static_cast<std::size_t>(face)]) = *image;
+    }
+    for (std::size_t f = 0; f < own.size(); ++f) room.face_texture[f] = own[f] != nullptr ? own[f] : all;
+}
+
 RoomDraft read_room(Checker& check, const Path& at, const json& value, ModelCache& models) {
     RoomDraft draft;
     draft.path = at;
     if (!check.expect_object(at, value)) return draft;
-    check.check_fields(at, value, {"id", "min", "max", "color", "face_colors", "checker", "props"},
+    check.check_fields(at, value, {"id", "min", "max", "color", "face_colors", "checker", "textures", "texture_size", "props"},
                        {"id", "min", "max"});
     Room& room = draft.room;
     if (const json* id = field(value, "id")) {
@@ -73,6 +116,12 @@ RoomDraft read_room(Checker& check, const Path& at, const json& value, ModelCach
     if (const json* v = field(value, "face_colors")) read_face_colors(check, at / "face_colors", *v, room);
     if (const json* v = field(value, "checker")) {
         if (const auto c = check.read_number(at / "checker", *v, NumberKind::Length)) room.checker = *c;
+    }
+    if (const json* v = field(value, "textures")) read_textures(check, at / "textures", *v, models, room);
+    if (const json* v = field(value, "texture_size")) {
+        if (const auto size = check.read_number(at / "texture_size", *v, NumberKind::Length)) {
+            room.texture_size = *size;
+        }
     }
     if (const json* v = field(value, "props")) {
         if (check.expect_array(at / "props", *v, limits::kMaxPropsPerRoom)) {

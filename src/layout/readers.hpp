@@ -4,6 +4,7 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -11,6 +12,7 @@
 
 #include "base/result.hpp"
 #include "layout/checker.hpp"
+#include "layout/gltf_model.hpp"
 #include "layout/layout.hpp"
 
 namespace impossible::layout::detail {
@@ -33,7 +35,8 @@ struct PortalDraft {
     bool kind_ok = true;    // "kind" is absent (a door) or one of the three kinds
 };
 
-// glTF models, read once per file per layout, with a cap on all triangles.
+// glTF models and room texture images, read once per file per layout, with
+// caps on all triangles and on all decoded texels.
 class ModelCache {
 public:
     explicit ModelCache(std::string base_dir) : base_dir_(std::move(base_dir)) {}
@@ -42,16 +45,24 @@ public:
     std::string resolve(const std::string& path) const;
 
     // Reads the model at `resolved` (or returns it from the cache); the
-    // error is a reason, without the path.
-    const Result<std::vector<ModelTriangle>>& load(const std::string& resolved);
+    // error is a reason, without the path. Its texels count toward the
+    // layout's cap once.
+    const Result<GltfModel>& load(const std::string& resolved);
+
+    // Reads and decodes the PNG or JPEG image at `resolved` (or returns it
+    // from the cache: one Image per file); the error is a reason, without
+    // the path ("does not exist", "is neither PNG nor JPEG data").
+    const Result<std::shared_ptr<const Image>>& load_image(const std::string& resolved);
 
     // Counts one more instance of `triangles` toward the layout's cap.
     Result<void> add_instance(std::size_t triangles);
 
 private:
     std::string base_dir_;
-    std::map<std::string, Result<std::vector<ModelTriangle>>> entries_;
+    std::map<std::string, Result<GltfModel>> entries_;
+    std::map<std::string, Result<std::shared_ptr<const Image>>> images_;
     std::size_t total_triangles_ = 0;
+    std::size_t total_texels_ = 0;  // decoded, models and room textures, each once
 };
 
 std::vector<RoomDraft> read_rooms(Checker& check, const Path& at, const json& rooms,

@@ -1,5 +1,6 @@
 // The numbers `impossible validate` prints about a valid layout.
 #include <cstdio>
+#include <set>
 
 #include "base/text.hpp"
 #include "layout/layout.hpp"
@@ -22,9 +23,21 @@ Summary summarize(const Layout& layout) {
         ++s.pairs;
         ++(p.kind == PortalKind::Window ? s.window_pairs : s.door_pairs);
     }
+    std::set<const Image*> images;
     for (const Room& room : layout.rooms) {
         s.floor_area += (room.max.x - room.min.x) * (room.max.z - room.min.z);
+        for (const auto& texture : room.face_texture) {
+            if (texture == nullptr) continue;
+            ++s.textured_faces;
+            images.insert(texture.get());
+        }
+        for (const Prop& prop : room.props) {
+            if (const auto* gltf = std::get_if<GltfProp>(&prop)) {
+                for (const Texture& texture : gltf->textures) images.insert(texture.image.get());
+            }
+        }
     }
+    s.images = static_cast<int>(images.size());
     if (layout.play_area) {
         const std::vector<glm::dvec2> area = outline(*layout.play_area);
         s.play_area_area = math::area(area);
@@ -52,6 +65,11 @@ std::string summary_text(const Layout& layout, const Summary& summary) {
         out += "door pairs: " + std::to_string(summary.door_pairs) + "\n";
         out += "window pairs: " + std::to_string(summary.window_pairs) + "\n";
         out += "mirrors: " + std::to_string(summary.mirrors) + "\n";
+    }
+    // Only with textures, so that the summaries of layouts without stay as they were.
+    if (summary.images > 0) {
+        out += "textures: " + std::to_string(summary.images) + (summary.images == 1 ? " image" : " images") + ", " +
+               std::to_string(summary.textured_faces) + " textured room faces\n";
     }
     if (!summary.play_area_area) {
         out += "play area: none\n";

@@ -109,4 +109,11 @@ TextPosition text_position(std::string_view text, std::size_t offset) {
     return text_positions(text, {offset}).front();
 }
 
+bool has_control_character(std::string_view text) {
+    for (char c : text) {
+        if (static_cast<unsigned char>(c) < 0x20) return true;
+    }
+    return false;
+}
+
 }  // namespace impossible::layout::detail

@@ -23,6 +23,9 @@ std::string quote(std::string_view text);
 // \xNN, so that a message never carries raw binary.
 std::string printable(std::string_view text);
 
+// Whether the text holds a byte below 0x20 (a path that does: an error).
+bool has_control_character(std::string_view text);
+
 struct TextPosition {
     int line = 0;    // 1-based
     int column = 0;  // 1-based, counted in Unicode code points

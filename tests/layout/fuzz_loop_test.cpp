@@ -41,6 +41,13 @@ void check_invariants(const Layout& layout) {
         EXPECT_TRUE(room.max.x > room.min.x && room.max.y > room.min.y && room.max.z > room.min.z);
         for (const glm::dvec3& c : room.face_color) EXPECT_TRUE(in_unit_range(c));
         EXPECT_GE(room.checker, 0.0);
+        EXPECT_TRUE(std::isfinite(room.texture_size) && room.texture_size > 0.0);
+        for (const auto& image : room.face_texture) {
+            if (image == nullptr) continue;
+            EXPECT_GE(image->width, 1);
+            EXPECT_GE(image->height, 1);
+            EXPECT_EQ(image->rgba.size(), std::size_t(image->width) * std::size_t(image->height) * 4);
+        }
         for (const Prop& prop : room.props) {
             if (const auto* box = std::get_if<BoxProp>(&prop)) {
                 EXPECT_TRUE(box->max.x > box->min.x && box->max.y > box->min.y && box->max.z > box->min.z);
