@@ -72,14 +72,15 @@ std::optional<SurfaceHit> hit_prop_box(const PropBox& box, const dvec3& origin, 
 
 std::optional<SurfaceHit> hit_triangle(const PropTriangle& tri, std::span<const PropMaterial> materials,
                                        const dvec3& origin, const dvec3& dir, const ClipPlane& clip) {
-    const PropMaterial* material = tri.material >= 0 ? &materials[tri.material] : nullptr;
+    // The material is read only where it matters (a back face, a hit), so
+    // that a ray missing a front face touches nothing but the positions.
     const dvec3 e1 = tri.position[1] - tri.position[0];
     const dvec3 e2 = tri.position[2] - tri.position[0];
     const dvec3 geometric = glm::cross(e1, e2);  // towards the counter-clockwise side
     const double facing = glm::dot(dir, geometric);
     const bool back = !(facing < 0.0);
     // A back face counts only for a double-sided material; edge-on or degenerate never.
-    if (back && !(facing > 0.0 && material && material->double_sided)) return std::nullopt;
+    if (back && !(facing > 0.0 && tri.material >= 0 && materials[tri.material].double_sided)) return std::nullopt;
     // Möller–Trumbore: barycentrics (u, v) of vertices 1 and 2, and t.
     const dvec3 pvec = glm::cross(dir, e2);
     const double inv_det = 1.0 / glm::dot(e1, pvec);  // det = -dot(dir, geometric): > 0 front, < 0 back
@@ -92,8 +93,11 @@ std::optional<SurfaceHit> hit_triangle(const PropTriangle& tri, std::span<const 
     const double t = glm::dot(e2, qvec) * inv_det;
     if (!(t > 0.0) || !clip.keeps(origin + t * dir)) return std::nullopt;
     const glm::dvec2 barycentric(u, v);
-    if (material && material->mask && triangle_color(tri, materials, barycentric).a < material->alpha_cutoff)
-        return std::nullopt;  // a hole: the ray goes on
+    if (tri.material >= 0) {
+        const PropMaterial& material = materials[tri.material];
+        if (material.mask && triangle_color(tri, materials, barycentric).a < material.alpha_cutoff)
+            return std::nullopt;  // a hole: the ray goes on
+    }
     const dvec3 blend = (1.0 - u - v) * tri.normal[0] + u * tri.normal[1] + v * tri.normal[2];
     const double length = glm::length(blend);
     const dvec3 normal = length > 0.0 ? blend / length : glm::normalize(geometric);

@@ -73,11 +73,13 @@ struct PropMaterial {
 // the blended uv), its alpha the material's · COLOR_0's · texel's.
 struct PropTriangle {
     std::array<dvec3, 3> position;
+    int material = -1;            // into the room's SceneRoom::materials; -1: none (see PropMaterial)
+    // Only what a ray may need before it knows it hits lies next to the
+    // positions, which every ray reads; the rest is read for hits only.
     std::array<dvec3, 3> normal;  // unit vertex normals
     dvec3 color{0.8};             // the material's base colour factor (rgb)
     std::array<dvec4, 3> vertex_color{dvec4(1.0), dvec4(1.0), dvec4(1.0)};  // COLOR_0
     std::array<glm::dvec2, 3> uv{};
-    int material = -1;            // into the room's SceneRoom::materials; -1: none (see PropMaterial)
 };
 
 // A door, mirror or window (layout-format.md, "Mirrors and windows"). A door
