@@ -213,13 +213,13 @@ struct RaySlabs {
 
 }  // namespace
 
-TriangleHit nearest_triangle_scan(const std::vector<PropTriangle>& triangles, const dvec3& origin, const dvec3& dir,
-                                  const ClipPlane& clip, double t_limit) {
+TriangleHit nearest_triangle_scan(const std::vector<PropTriangle>& triangles, std::span<const PropMaterial> materials,
+                                  const dvec3& origin, const dvec3& dir, const ClipPlane& clip, double t_limit) {
     TriangleHit best;
     double best_t = t_limit;
     const int n = static_cast<int>(triangles.size());
     for (int i = 0; i < n; ++i) {
-        const std::optional<SurfaceHit> hit = hit_triangle(triangles[i], origin, dir, clip);
+        const std::optional<SurfaceHit> hit = hit_triangle(triangles[i], materials, origin, dir, clip);
         if (hit && hit->t < best_t) {
             best_t = hit->t;
             best.hit = hit;
@@ -244,13 +244,14 @@ TriangleBvh build_bvh(const std::vector<PropTriangle>& triangles) {
 }
 
 TriangleHit nearest_triangle(const TriangleBvh& bvh, const std::vector<PropTriangle>& triangles,
-                             const dvec3& origin, const dvec3& dir, const ClipPlane& clip, double t_limit) {
+                             std::span<const PropMaterial> materials, const dvec3& origin, const dvec3& dir,
+                             const ClipPlane& clip, double t_limit) {
     TriangleHit best;
     double best_t = t_limit;
     // The tie rule: at equal t the lower index wins, as in the scan; a tie
     // with t_limit (best.index < 0) loses.
     auto consider = [&](int index) {
-        const std::optional<SurfaceHit> hit = hit_triangle(triangles[index], origin, dir, clip);
+        const std::optional<SurfaceHit> hit = hit_triangle(triangles[index], materials, origin, dir, clip);
         if (hit && (hit->t < best_t || (hit->t == best_t && best.index >= 0 && index < best.index))) {
             best_t = hit->t;
             best.hit = hit;

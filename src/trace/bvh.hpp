@@ -12,6 +12,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "trace/intersect.hpp"
@@ -28,8 +29,9 @@ struct TriangleHit {
 // The first triangle, in order, among those hit (hit_triangle) with the
 // smallest t, counting only hits with t < t_limit (the nearest hit found so
 // far on other surfaces, which wins a tie). Allocates nothing.
-TriangleHit nearest_triangle_scan(const std::vector<PropTriangle>& triangles, const dvec3& origin, const dvec3& dir,
-                                  const ClipPlane& clip, double t_limit);
+// `materials` are those the triangles name (PropTriangle::material).
+TriangleHit nearest_triangle_scan(const std::vector<PropTriangle>& triangles, std::span<const PropMaterial> materials,
+                                  const dvec3& origin, const dvec3& dir, const ClipPlane& clip, double t_limit);
 
 // Builds the tree over `triangles`, all but the slivers (bvh.cpp), which
 // are listed apart; no nodes when nothing is left. Leaves
@@ -41,6 +43,7 @@ TriangleBvh build_bvh(const std::vector<PropTriangle>& triangles);
 // The same answer as nearest_triangle_scan(triangles, …), through `bvh`,
 // which must have been built over `triangles`. Allocates nothing.
 TriangleHit nearest_triangle(const TriangleBvh& bvh, const std::vector<PropTriangle>& triangles,
-                             const dvec3& origin, const dvec3& dir, const ClipPlane& clip, double t_limit);
+                             std::span<const PropMaterial> materials, const dvec3& origin, const dvec3& dir,
+                             const ClipPlane& clip, double t_limit);
 
 }  // namespace impossible::trace

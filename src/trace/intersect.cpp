@@ -1,8 +1,12 @@
 #include "trace/intersect.hpp"
 
+#include <array>
 #include <cmath>
 
 #include <glm/geometric.hpp>
+
+#include "scene/shading.hpp"
+#include "trace/texture_sample.hpp"
 
 namespace impossible::trace {
 
@@ -66,15 +70,20 @@ std::optional<SurfaceHit> hit_prop_box(const PropBox& box, const dvec3& origin, 
     return best;
 }
 
-std::optional<SurfaceHit> hit_triangle(const PropTriangle& tri, const dvec3& origin, const dvec3& dir,
-                                       const ClipPlane& clip) {
+std::optional<SurfaceHit> hit_triangle(const PropTriangle& tri, std::span<const PropMaterial> materials,
+                                       const dvec3& origin, const dvec3& dir, const ClipPlane& clip) {
+    // The material is read only where it matters (a back face, a hit), so
+    // that a ray missing a front face touches nothing but the positions.
     const dvec3 e1 = tri.position[1] - tri.position[0];
     const dvec3 e2 = tri.position[2] - tri.position[0];
     const dvec3 geometric = glm::cross(e1, e2);  // towards the counter-clockwise side
-    if (!(glm::dot(dir, geometric) < 0.0)) return std::nullopt;  // back face, edge-on or degenerate
+    const double facing = glm::dot(dir, geometric);
+    const bool back = !(facing < 0.0);
+    // A back face counts only for a double-sided material; edge-on or degenerate never.
+    if (back && !(facing > 0.0 && tri.material >= 0 && materials[tri.material].double_sided)) return std::nullopt;
     // Möller–Trumbore: barycentrics (u, v) of vertices 1 and 2, and t.
     const dvec3 pvec = glm::cross(dir, e2);
-    const double inv_det = 1.0 / glm::dot(e1, pvec);  // det = -dot(dir, geometric) > 0
+    const double inv_det = 1.0 / glm::dot(e1, pvec);  // det = -dot(dir, geometric): > 0 front, < 0 back
     const dvec3 tvec = origin - tri.position[0];
     const double u = glm::dot(tvec, pvec) * inv_det;
     if (!(u >= 0.0 && u <= 1.0)) return std::nullopt;
@@ -83,9 +92,50 @@ std::optional<SurfaceHit> hit_triangle(const PropTriangle& tri, const dvec3& ori
     if (!(v >= 0.0 && u + v <= 1.0)) return std::nullopt;
     const double t = glm::dot(e2, qvec) * inv_det;
     if (!(t > 0.0) || !clip.keeps(origin + t * dir)) return std::nullopt;
+    const glm::dvec2 barycentric(u, v);
+    if (tri.material >= 0) {
+        const PropMaterial& material = materials[tri.material];
+        if (material.mask && triangle_color(tri, materials, barycentric).a < material.alpha_cutoff)
+            return std::nullopt;  // a hole: the ray goes on
+    }
     const dvec3 blend = (1.0 - u - v) * tri.normal[0] + u * tri.normal[1] + v * tri.normal[2];
     const double length = glm::length(blend);
-    return SurfaceHit{t, length > 0.0 ? blend / length : glm::normalize(geometric)};
+    const dvec3 normal = length > 0.0 ? blend / length : glm::normalize(geometric);
+    return SurfaceHit{t, back ? -normal : normal, -1, barycentric};
+}
+
+namespace {
+
+// The barycentric blend of three corner values; three equal corners give
+// their value exactly (an untextured, uncoloured model keeps its colour to
+// the bit).
+template <typename V>
+V blend_corners(const std::array<V, 3>& c, glm::dvec2 b) {
+    if (c[0] == c[1] && c[1] == c[2]) return c[0];
+    return (1.0 - b.x - b.y) * c[0] + b.x * c[1] + b.y * c[2];
+}
+
+}  // namespace
+
+dvec4 triangle_color(const PropTriangle& tri, std::span<const PropMaterial> materials, glm::dvec2 barycentric) {
+    const dvec4 vertex = blend_corners(tri.vertex_color, barycentric);
+    dvec3 rgb = tri.color * dvec3(vertex);
+    if (tri.material < 0) return dvec4(rgb, vertex.a);
+    const PropMaterial& material = materials[tri.material];
+    double alpha = material.alpha * vertex.a;
+    if (material.texture.image) {
+        const dvec4 texel = sample_level0(material.texture, blend_corners(tri.uv, barycentric));
+        rgb *= dvec3(texel);
+        alpha *= texel.a;
+    }
+    return dvec4(rgb, alpha);
+}
+
+dvec3 room_face_color(const RoomFace& face, const dvec3& p) {
+    if (!face.texture) return face.color;
+    const dvec4 texel =
+        sample_level0(*face.texture, layout::Sampler{}, scene::room_texture_uv(face.face, p, face.texture_size));
+    return face.color * dvec3(texel);
 }
 
 std::optional<SurfaceHit> hit_portal_box(const ScenePortal& portal, const dvec3& origin, const dvec3& dir,

@@ -6,6 +6,9 @@
 #pragma once
 
 #include <optional>
+#include <span>
+
+#include <glm/vec2.hpp>
 
 #include "trace/trace_scene.hpp"
 
@@ -16,6 +19,7 @@ struct SurfaceHit {
     double t = 0.0;
     dvec3 normal{0.0};
     int portal = -1;  // ≥ 0: the front face of this portal, met in its hole
+    glm::dvec2 barycentric{0.0};  // a triangle's: the weights (u, v) of its vertices 1 and 2
 };
 
 // "Only the part of the ray strictly in front of the plane counts"
@@ -52,9 +56,26 @@ std::optional<SurfaceHit> hit_prop_box(const PropBox& box, const dvec3& origin, 
 
 // A triangle from its counter-clockwise side (Möller–Trumbore); the normal is
 // the barycentric blend of the vertex normals, normalised (the geometric
-// normal if that blend vanishes).
-std::optional<SurfaceHit> hit_triangle(const PropTriangle& tri, const dvec3& origin, const dvec3& dir,
-                                       const ClipPlane& clip);
+// normal if that blend vanishes). Its material (an index into `materials`)
+// may change that (docs/tracer.md, "Materials and textures"): a
+// double-sided triangle is hit from its back too, where the normal is
+// reversed; a masked one is not hit where its alpha (triangle_color) is
+// below the cutoff, and the ray goes on to whatever lies behind.
+std::optional<SurfaceHit> hit_triangle(const PropTriangle& tri, std::span<const PropMaterial> materials,
+                                       const dvec3& origin, const dvec3& dir, const ClipPlane& clip);
+
+// A triangle's colour at barycentrics (u, v) (those of vertices 1 and 2):
+// rgb its base colour, color · COLOR_0 · texel, and alpha the material's
+// alpha · COLOR_0's · the texel's. COLOR_0 and uv are blended with weights
+// (1 - u - v, u, v), except that three equal corners give their value
+// exactly. The texel is read at level 0 with the sampler's mag filter
+// (texture_sample.hpp); without a texture it is white.
+dvec4 triangle_color(const PropTriangle& tri, std::span<const PropMaterial> materials, glm::dvec2 barycentric);
+
+// A room face's base colour at a point p of it: its colour, times the
+// texel of its texture (if any) at scene::room_texture_uv(face, p, size),
+// read at level 0 with the default sampler (repeat, linear).
+dvec3 room_face_color(const RoomFace& face, const dvec3& p);
 
 // A portal's box for a ray from `origin`, which is the (possibly virtual)
 // eye: the front rectangle (facing +n) always, unless the portal fills a

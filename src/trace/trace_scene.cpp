@@ -50,13 +50,34 @@ void add_prop(SceneRoom& room, const layout::Prop& prop) {
         return;
     }
     const auto& model = std::get<layout::GltfProp>(prop);
+    // The model's materials follow the room's earlier ones.
+    const int first_material = static_cast<int>(room.materials.size());
+    const int texture_count = static_cast<int>(model.textures.size());
+    for (const layout::Material& m : model.materials) {
+        if (m.texture < -1 || m.texture >= texture_count)
+            throw std::invalid_argument("model '" + model.path + "': a material names no texture of the model");
+        PropMaterial material;
+        material.alpha = m.base_color.a;
+        if (m.texture >= 0) material.texture = model.textures[m.texture];
+        material.double_sided = m.double_sided;
+        material.mask = m.alpha_mode == layout::AlphaMode::Mask;
+        material.alpha_cutoff = m.alpha_cutoff;
+        room.materials.push_back(material);
+    }
+    const int material_count = static_cast<int>(model.materials.size());
     for (const layout::ModelTriangle& t : model.triangles) {
+        if (t.material < -1 || t.material >= material_count)
+            throw std::invalid_argument("model '" + model.path + "': a triangle names no material of the model");
         PropTriangle placed;
         for (int k = 0; k < 3; ++k) {
             placed.position[k] = layout::place_model_point(model, t.position[k]);
             placed.normal[k] = layout::place_model_normal(model, t.normal[k]);
         }
-        placed.color = t.color;
+        // With a material, its factor is the rule's (ModelTriangle::color holds the same).
+        placed.color = t.material >= 0 ? dvec3(model.materials[t.material].base_color) : t.color;
+        placed.vertex_color = t.vertex_color;
+        placed.uv = t.uv;
+        placed.material = t.material >= 0 ? first_material + t.material : -1;
         room.triangles.push_back(placed);
     }
 }
@@ -71,7 +92,10 @@ Scene prepare_scene(const layout::Layout& layout) {
         SceneRoom r;
         for (int f = 0; f < layout::kFaceCount; ++f) {
             r.faces[f].rect = room_face_rect(room.min, room.max, static_cast<layout::Face>(f));
+            r.faces[f].face = static_cast<layout::Face>(f);
             r.faces[f].color = room.face_color[f];
+            r.faces[f].texture = room.face_texture[f];
+            r.faces[f].texture_size = room.texture_size;
         }
         for (const layout::Prop& prop : room.props) add_prop(r, prop);
         r.bvh = build_bvh(r.triangles);

@@ -10,7 +10,10 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <vector>
+
+#include <glm/vec2.hpp>
 
 #include "layout/layout.hpp"
 #include "math/conventions.hpp"
@@ -37,8 +40,14 @@ struct AxisRect {
 // A face of a room, seen from inside (its normal points into the room).
 struct RoomFace {
     AxisRect rect;
+    layout::Face face = layout::Face::Floor;
     dvec3 color{0.8};
     std::vector<int> holes;  // portals (indices into Scene::portals) cutting a hole here
+    // Multiplies `color` where set: read at scene::room_texture_uv(face, p,
+    // texture_size) with the default sampler (docs/tracer.md, "Materials
+    // and textures").
+    std::shared_ptr<const layout::Image> texture;
+    double texture_size = 1.0;
 };
 
 // A prop box, visible from outside.
@@ -48,11 +57,29 @@ struct PropBox {
     dvec3 color{0.8};
 };
 
+// A glTF material as the tracer reads it (layout::Material, with its
+// texture looked up). A triangle without one (PropTriangle::material < 0)
+// is opaque, one-sided and untextured.
+struct PropMaterial {
+    double alpha = 1.0;          // baseColorFactor's alpha (its rgb is PropTriangle::color)
+    layout::Texture texture;     // image null: none (the texel is white)
+    bool double_sided = false;   // hit from both sides, the back's normal reversed
+    bool mask = false;           // alphaMode MASK: alpha below alpha_cutoff is no surface
+    double alpha_cutoff = 0.5;
+};
+
 // A glTF triangle placed in the layout: counter-clockwise seen from its front.
+// Its base colour at barycentrics (w0, u, v) is color · COLOR_0 · texel (at
+// the blended uv), its alpha the material's · COLOR_0's · texel's.
 struct PropTriangle {
     std::array<dvec3, 3> position;
+    int material = -1;            // into the room's SceneRoom::materials; -1: none (see PropMaterial)
+    // Only what a ray may need before it knows it hits lies next to the
+    // positions, which every ray reads; the rest is read for hits only.
     std::array<dvec3, 3> normal;  // unit vertex normals
-    dvec3 color{0.8};
+    dvec3 color{0.8};             // the material's base colour factor (rgb)
+    std::array<dvec4, 3> vertex_color{dvec4(1.0), dvec4(1.0), dvec4(1.0)};  // COLOR_0
+    std::array<glm::dvec2, 3> uv{};
 };
 
 // A door, mirror or window (layout-format.md, "Mirrors and windows"). A door
@@ -93,6 +120,7 @@ struct SceneRoom {
     std::array<RoomFace, layout::kFaceCount> faces;  // in layout::Face order
     std::vector<PropBox> boxes;
     std::vector<PropTriangle> triangles;
+    std::vector<PropMaterial> materials;  // those the triangles name, by PropTriangle::material
     // Built by prepare_scene over `triangles`. Without nodes the tracer scans
     // the triangles one by one; the tests clear it to compare the two.
     TriangleBvh bvh;
@@ -117,8 +145,9 @@ AxisRect room_face_rect(const dvec3& room_min, const dvec3& room_max, layout::Fa
 bool cuts_hole(const AxisRect& face, const math::PortalRect& rect);
 
 // Builds the tracer's scene. The layout must be valid (as the loader returns
-// it); portal rooms out of range, and targets out of range for a door or a
-// window, throw std::invalid_argument (a mirror's target is not read).
+// it); portal rooms out of range, targets out of range for a door or a
+// window (a mirror's target is not read), and a model's material or texture
+// indices out of range throw std::invalid_argument.
 Scene prepare_scene(const layout::Layout& layout);
 
 }  // namespace impossible::trace

@@ -31,15 +31,23 @@ struct Nearest {
     int portal = -1;  // ≥ 0: a face of this portal's box
     dvec3 base{0.0};  // otherwise: the surface's base colour and checker side
     double checker = 0.0;
+    // Where the base colour is read at the hit point instead (base_color):
+    const RoomFace* textured_face = nullptr;  // a room face with a texture
+    int triangle = -1;                        // a glTF triangle (its index in the room)
+    glm::dvec2 barycentric{0.0};              // … and where it was hit
 
-    void offer(const std::optional<SurfaceHit>& hit, int portal_index, const dvec3& color, double side) {
-        if (!hit || (found && hit->t >= t)) return;
+    // Whether the hit is nearer than the one kept, and so now kept.
+    bool offer(const std::optional<SurfaceHit>& hit, int portal_index, const dvec3& color, double side) {
+        if (!hit || (found && hit->t >= t)) return false;
         found = true;
         t = hit->t;
         normal = hit->normal;
         portal = portal_index;
         base = color;
         checker = side;
+        textured_face = nullptr;
+        triangle = -1;
+        return true;
     }
 };
 
@@ -49,7 +57,8 @@ Nearest nearest_in_room(const Scene& scene, int room_index, const dvec3& origin,
     Nearest nearest;
     for (const RoomFace& face : room.faces) {
         const std::optional<SurfaceHit> hit = hit_room_face(face, scene, origin, dir, clip);
-        nearest.offer(hit, hit ? hit->portal : -1, face.color, room.checker);
+        if (nearest.offer(hit, hit ? hit->portal : -1, face.color, room.checker) && face.texture)
+            nearest.textured_face = &face;
     }
     for (const PropBox& box : room.boxes)
         nearest.offer(hit_prop_box(box, origin, dir, clip), -1, box.color, 0.0);
@@ -57,12 +66,27 @@ Nearest nearest_in_room(const Scene& scene, int room_index, const dvec3& origin,
     // among themselves the first in the list wins one (bvh.hpp).
     const double t_limit = nearest.found ? nearest.t : std::numeric_limits<double>::infinity();
     const TriangleHit tri =
-        room.bvh.nodes.empty() ? nearest_triangle_scan(room.triangles, origin, dir, clip, t_limit)
-                               : nearest_triangle(room.bvh, room.triangles, origin, dir, clip, t_limit);
-    if (tri.hit) nearest.offer(tri.hit, -1, room.triangles[tri.index].color, 0.0);
+        room.bvh.nodes.empty() ? nearest_triangle_scan(room.triangles, room.materials, origin, dir, clip, t_limit)
+                               : nearest_triangle(room.bvh, room.triangles, room.materials, origin, dir, clip, t_limit);
+    if (tri.hit && nearest.offer(tri.hit, -1, room.triangles[tri.index].color, 0.0)) {
+        nearest.triangle = tri.index;
+        nearest.barycentric = tri.hit->barycentric;
+    }
     for (int p : room.portals)
         nearest.offer(hit_portal_box(scene.portals[p], origin, dir, clip), p, dvec3(0.0), 0.0);
     return nearest;
+}
+
+// The base colour of the surface `n` found in room `room_index` (not a
+// portal), at its hit point: a textured face's or a triangle's read there
+// (docs/tracer.md, "Materials and textures"), any other's as offered.
+dvec3 base_color(const Scene& scene, int room_index, const Nearest& n, const dvec3& point) {
+    if (n.textured_face) return room_face_color(*n.textured_face, point);
+    if (n.triangle >= 0) {
+        const SceneRoom& room = scene.rooms[room_index];
+        return dvec3(triangle_color(room.triangles[n.triangle], room.materials, n.barycentric));
+    }
+    return n.base;
 }
 
 // One line of sight being followed (the eye's, or a window's branch): the
@@ -143,7 +167,7 @@ dvec3 follow(const Scene& scene, Ray ray, int max_depth, TraceHit* main) {
         const dvec3 point = ray.origin + n.t * ray.dir;
         if (n.portal < 0) {
             end_main(1 + ray.room, ray.room, point, n.normal);
-            return done + factor * scene::shade(n.base, n.normal, point, n.checker);
+            return done + factor * scene::shade(base_color(scene, ray.room, n, point), n.normal, point, n.checker);
         }
         if (ray.portals_passed >= max_depth) {  // step 3, for every kind
             end_main(kIdDepthLimit, ray.room, point, n.normal);

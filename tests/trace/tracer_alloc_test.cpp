@@ -1,10 +1,12 @@
 // trace_ray allocates nothing: this program's operator new counts the
-// allocations made on each thread, and rays through a model (its tree), a
-// prop box, a mirror, a door and a window make none.
+// allocations made on each thread, and rays through a model (its tree, with
+// textured, masked and double-sided triangles), textured room faces, a prop
+// box, a mirror, a door and a window make none.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdlib>
+#include <memory>
 #include <new>
 
 #include "trace/trace_test_util.hpp"
@@ -41,11 +43,25 @@ TEST(TracerAlloc, TraceRayAllocatesNothing) {
     layout::GltfProp model;
     model.position = {0.0, 1.0, -2.0};
     const double pi = std::acos(-1.0);
+    // Materials: textured and masked (linear), double-sided (nearest).
+    auto image = std::make_shared<layout::Image>();
+    image->width = 2;
+    image->height = 2;
+    image->rgba = {255, 0, 0, 255, 0, 255, 0, 0, 0, 0, 255, 255, 255, 255, 255, 255};
+    model.textures.push_back({image, layout::Sampler{}});
+    model.textures.push_back({image, layout::Sampler{layout::sampler_code::kNearest}});
+    model.materials.resize(2);
+    model.materials[0].texture = 0;
+    model.materials[0].alpha_mode = layout::AlphaMode::Mask;
+    model.materials[1].texture = 1;
+    model.materials[1].double_sided = true;
     for (int i = 0; i < 40; ++i) {  // a fan of triangles facing +z
         const double a0 = 2.0 * pi * i / 40, a1 = 2.0 * pi * (i + 1) / 40;
         layout::ModelTriangle t;
         t.position = {dvec3(0.0), dvec3(std::cos(a0), std::sin(a0), 0.0), dvec3(std::cos(a1), std::sin(a1), 0.0)};
         t.normal = {dvec3(0, 0, 1), dvec3(0, 0, 1), dvec3(0, 0, 1)};
+        t.uv = {glm::dvec2(0.5), glm::dvec2(std::cos(a0), std::sin(a0)), glm::dvec2(std::cos(a1), std::sin(a1))};
+        t.material = i % 3 - 1;  // none, masked, double-sided
         model.triangles.push_back(t);
     }
     l.rooms[0].props.push_back(model);
@@ -53,6 +69,7 @@ TEST(TracerAlloc, TraceRayAllocatesNothing) {
     box.min = {1.0, 0.0, -1.0};
     box.max = {1.5, 1.0, -0.5};
     l.rooms[0].props.push_back(box);
+    for (auto& face : l.rooms[0].face_texture) face = image;
     l.portals.push_back(test::make_mirror("mirror", 0, {0.0, 1.5, -4.0}, {0.0, 0.0, 1.0}, 5.0, 2.6));
     test::add_pair(l, test::make_window("w", 0, {-3.0, 1.5, 0.0}, {1, 0, 0}, 2.0, 2.0, {0.9, 0.9, 1.0}, 0.3),
                    test::make_window("w2", 1, {16.0, 1.5, 0.0}, {-1, 0, 0}, 2.0, 2.0, {0.9, 0.9, 1.0}, 0.3));

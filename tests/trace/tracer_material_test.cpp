@@ -1,0 +1,411 @@
+// glTF materials and textured room faces in the tracer (docs/tracer.md,
+// "Materials and textures"): base colour · COLOR_0 · texel, read at level 0
+// with the mag filter; alpha-masked holes that rays pass through;
+// double-sided triangles seen from behind with their normal reversed; and
+// room face textures oriented as layout-format.md says. Layouts are built in
+// code and the expected colours are worked out by hand.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <initializer_list>
+#include <memory>
+
+#include "trace/trace_test_util.hpp"
+#include "trace/tracer.hpp"
+
+namespace impossible::trace {
+namespace {
+
+using glm::dvec2;
+using glm::dvec4;
+using test::bytes_of;
+using test::face_color;
+using test::make_room;
+using test::shade_by_hand;
+namespace code = layout::sampler_code;
+
+constexpr double kTol = 1e-12;
+
+std::shared_ptr<const layout::Image> image_of(int width, int height, std::initializer_list<std::uint8_t> bytes) {
+    auto image = std::make_shared<layout::Image>();
+    image->width = width;
+    image->height = height;
+    image->rgba = bytes;
+    return image;
+}
+
+// 2 × 2, all channels different from quadrant to quadrant: top-left,
+// top-right, bottom-left, bottom-right (the last with alpha `last_alpha`).
+std::shared_ptr<const layout::Image> quadrants(std::uint8_t top_right_alpha = 255) {
+    return image_of(2, 2, {255, 128, 64, 255, 64, 255, 128, top_right_alpha, 128, 64, 255, 255, 204, 204, 51, 255});
+}
+// The texel of quadrants() at column i, row j, as the tracer reads bytes.
+dvec4 quadrant(int i, int j, std::uint8_t top_right_alpha = 255) {
+    const std::uint8_t q[4][4] = {{255, 128, 64, 255}, {64, 255, 128, top_right_alpha}, {128, 64, 255, 255},
+                                  {204, 204, 51, 255}};
+    const std::uint8_t* p = q[2 * j + i];
+    return dvec4(p[0], p[1], p[2], p[3]) / 255.0;
+}
+
+layout::Layout one_room(dvec3 min = {-2, 0, -2}, dvec3 max = {2, 3, 2}) {
+    layout::Layout l;
+    l.source = "<test>";
+    l.rooms.push_back(make_room("room", min, max));
+    l.start.room = 0;
+    return l;
+}
+
+// A quad x ∈ [-1, 1], y ∈ [0.5, 2.5] in the plane z = -1, facing +z (two
+// triangles, counter-clockwise seen from +z), with material `material`,
+// uv (0, 0) at its top-left corner (s = (x + 1) / 2, t = (2.5 - y) / 2),
+// COLOR_0 `vertex` and the vertex normal `normal`.
+void add_quad(layout::GltfProp& model, int material, dvec4 vertex = dvec4(1.0), dvec3 normal = {0, 0, 1}) {
+    auto corner = [](double x, double y) { return dvec3(x, y, -1.0); };
+    auto uv = [](const dvec3& p) { return dvec2((p.x + 1.0) / 2.0, (2.5 - p.y) / 2.0); };
+    const dvec3 a = corner(-1, 0.5), b = corner(1, 0.5), c = corner(1, 2.5), d = corner(-1, 2.5);
+    for (const auto& tri : {std::array<dvec3, 3>{a, b, c}, std::array<dvec3, 3>{a, c, d}}) {
+        layout::ModelTriangle t;
+        t.position = tri;
+        t.normal = {normal, normal, normal};
+        t.color = material >= 0 ? dvec3(model.materials[material].base_color) : dvec3(0.8);
+        t.vertex_color = {vertex, vertex, vertex};
+        t.uv = {uv(tri[0]), uv(tri[1]), uv(tri[2])};
+        t.material = material;
+        model.triangles.push_back(t);
+    }
+}
+
+layout::Texture texture(std::shared_ptr<const layout::Image> image, int filter) {
+    layout::Texture t;
+    t.image = std::move(image);
+    t.sampler.mag_filter = filter;
+    return t;
+}
+
+// The quad's texel quadrant (column, row) at a point of it; false within
+// `margin` of its edges or of the quadrants' boundaries.
+bool quad_quadrant(const dvec3& p, double margin, int& i, int& j) {
+    if (!(std::abs(p.x) < 1.0 - margin && p.y > 0.5 + margin && p.y < 2.5 - margin)) return false;
+    if (std::abs(p.x) < margin || std::abs(p.y - 1.5) < margin) return false;
+    i = p.x < 0.0 ? 0 : 1;
+    j = p.y > 1.5 ? 0 : 1;  // the image's top row is up
+    return true;
+}
+
+TEST(TracerMaterial, TexturedQuadShowsFactorTimesColor0TimesTexelAtEveryPixel) {
+    layout::Layout l = one_room();
+    layout::GltfProp model;
+    layout::Material material;
+    material.base_color = {0.9, 0.8, 0.7, 1.0};
+    material.texture = 0;
+    model.materials.push_back(material);
+    model.textures.push_back(texture(quadrants(), code::kNearest));
+    const dvec4 vertex(0.5, 1.0, 0.8, 1.0);
+    add_quad(model, 0, vertex);
+    l.rooms[0].props.push_back(model);
+
+    TraceDesc desc;
+    desc.head.position = {0.0, 1.5, 1.0};
+    desc.eye_width = 33;
+    desc.eye_height = 33;
+    const image::Image image = trace_frame(l, desc);
+    int checked = 0;
+    int seen[2][2] = {{0, 0}, {0, 0}};
+    for (int eye = 0; eye < 2; ++eye) {
+        for (int j = 0; j < desc.eye_height; ++j) {
+            for (int i = 0; i < desc.eye_width; ++i) {
+                const PixelRay ray = pixel_ray(desc, eye, i, j);
+                const dvec3 p = ray.origin + ((-1.0 - ray.origin.z) / ray.dir.z) * ray.dir;
+                int qi = 0, qj = 0;
+                if (!quad_quadrant(p, 0.02, qi, qj)) continue;
+                const dvec3 base = dvec3(material.base_color) * dvec3(vertex) * dvec3(quadrant(qi, qj));
+                EXPECT_EQ(test::pixel_rgb(image, eye * desc.eye_width + i, j),
+                          bytes_of(shade_by_hand(base, {0, 0, 1}, false)))
+                    << "eye " << eye << " pixel " << i << ", " << j << " quadrant " << qi << ", " << qj;
+                EXPECT_EQ(test::pixel_id(image, eye * desc.eye_width + i, j), 1);
+                ++checked;
+                ++seen[qi][qj];
+            }
+        }
+    }
+    EXPECT_GT(checked, 300);
+    for (auto& column : seen)
+        for (int n : column) EXPECT_GT(n, 50);
+}
+
+TEST(TracerMaterial, Color0AndUvAreBlendedWithTheHitsBarycentrics) {
+    layout::Layout l = one_room();
+    layout::GltfProp model;
+    layout::Material material;
+    material.base_color = {0.5, 0.75, 1.0, 1.0};
+    material.texture = 0;
+    model.materials.push_back(material);
+    model.textures.push_back(texture(quadrants(), code::kNearest));
+    layout::ModelTriangle t;
+    t.position = {dvec3(0, 1, -1), dvec3(1, 1, -1), dvec3(0, 2, -1)};  // facing +z
+    t.normal = {dvec3(0, 0, 1), dvec3(0, 0, 1), dvec3(0, 0, 1)};
+    t.vertex_color = {dvec4(1.0, 0.5, 0.2, 1.0), dvec4(0.2, 1.0, 0.6, 1.0), dvec4(0.6, 0.4, 1.0, 1.0)};
+    t.uv = {dvec2(0.0, 0.0), dvec2(2.0, 0.0), dvec2(0.0, 2.0)};
+    t.material = 0;
+    model.triangles.push_back(t);
+    l.rooms[0].props.push_back(model);
+    const Scene scene = prepare_scene(l);
+
+    // Weights 1/2, 1/4, 1/4 (vertex 0, 1, 2): uv (1/2, 1/2), texel (1, 1).
+    const TraceHit a = trace_ray(scene, {0.25, 1.25, 0.5}, {0, 0, -1}, 0, 8);
+    const dvec4 vertex_a = 0.5 * t.vertex_color[0] + 0.25 * t.vertex_color[1] + 0.25 * t.vertex_color[2];
+    const dvec3 expected_a =
+        shade_by_hand(dvec3(material.base_color) * dvec3(vertex_a) * dvec3(quadrant(1, 1)), {0, 0, 1}, false);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(a.color[c], expected_a[c], kTol);
+    // Weights 0.8, 0.1, 0.1: uv (0.2, 0.2), texel (0, 0).
+    const TraceHit b = trace_ray(scene, {0.1, 1.1, 0.5}, {0, 0, -1}, 0, 8);
+    const dvec4 vertex_b = 0.8 * t.vertex_color[0] + 0.1 * t.vertex_color[1] + 0.1 * t.vertex_color[2];
+    const dvec3 expected_b =
+        shade_by_hand(dvec3(material.base_color) * dvec3(vertex_b) * dvec3(quadrant(0, 0)), {0, 0, 1}, false);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(b.color[c], expected_b[c], kTol);
+    // Weights 0.2, 0.1, 0.7: uv (0.2, 1.4), t wraps (repeat) to 0.4, texel (0, 0).
+    const TraceHit c = trace_ray(scene, {0.1, 1.7, 0.5}, {0, 0, -1}, 0, 8);
+    const dvec4 vertex_c = 0.2 * t.vertex_color[0] + 0.1 * t.vertex_color[1] + 0.7 * t.vertex_color[2];
+    const dvec3 expected_c =
+        shade_by_hand(dvec3(material.base_color) * dvec3(vertex_c) * dvec3(quadrant(0, 0)), {0, 0, 1}, false);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(c.color[k], expected_c[k], kTol);
+}
+
+TEST(TracerMaterial, LinearMagFilterBlendsNeighbours) {
+    layout::Layout l = one_room();
+    layout::GltfProp model;
+    layout::Material material;
+    material.base_color = {1.0, 1.0, 1.0, 1.0};
+    material.texture = 0;
+    model.materials.push_back(material);
+    model.textures.push_back(texture(quadrants(), code::kLinear));
+    add_quad(model, 0);
+    l.rooms[0].props.push_back(model);
+    // The quad's centre (s, t) = (1/2, 1/2): the four texels equally.
+    const TraceHit hit = trace_ray(prepare_scene(l), {0.0, 1.5, 0.5}, {0, 0, -1}, 0, 8);
+    const dvec4 mean = 0.25 * (quadrant(0, 0) + quadrant(1, 0) + quadrant(0, 1) + quadrant(1, 1));
+    const dvec3 expected = shade_by_hand(dvec3(mean), {0, 0, 1}, false);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(hit.color[c], expected[c], kTol);
+}
+
+// The masked quad: its top-right quadrant has alpha `alpha` (the others 1).
+layout::Layout masked_quad(std::uint8_t alpha, layout::AlphaMode mode, double base_alpha = 1.0, double cutoff = 0.5) {
+    layout::Layout l = one_room();
+    layout::GltfProp model;
+    layout::Material material;
+    material.base_color = {0.6, 0.7, 0.8, base_alpha};
+    material.texture = 0;
+    material.alpha_mode = mode;
+    material.alpha_cutoff = cutoff;
+    model.materials.push_back(material);
+    model.textures.push_back(texture(quadrants(alpha), code::kNearest));
+    add_quad(model, 0);
+    l.rooms[0].props.push_back(model);
+    return l;
+}
+
+TEST(TracerMaterial, MaskedHoleShowsTheWallBehind) {
+    const layout::Layout l = masked_quad(0, layout::AlphaMode::Mask);
+    const Scene scene = prepare_scene(l);
+    // Top-right quadrant: through the hole to the -z wall at z = -2.
+    const TraceHit hole = trace_ray(scene, {0.5, 2.0, 1.0}, {0, 0, -1}, 0, 8);
+    EXPECT_EQ(hole.id, 1);
+    EXPECT_NEAR(hole.point.z, -2.0, kTol);
+    const dvec3 wall = shade_by_hand(face_color(l.rooms[0], layout::Face::NegZ), {0, 0, 1}, false);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(hole.color[c], wall[c], kTol);
+    // The other three: the quad.
+    for (const dvec3& o : {dvec3(-0.5, 2.0, 1.0), dvec3(-0.5, 1.0, 1.0), dvec3(0.5, 1.0, 1.0)}) {
+        const TraceHit solid = trace_ray(scene, o, {0, 0, -1}, 0, 8);
+        EXPECT_NEAR(solid.point.z, -1.0, kTol);
+    }
+    // Opaque: alpha is not read; the hole is quad.
+    const TraceHit opaque = trace_ray(prepare_scene(masked_quad(0, layout::AlphaMode::Opaque)), {0.5, 2.0, 1.0},
+                                      {0, 0, -1}, 0, 8);
+    EXPECT_NEAR(opaque.point.z, -1.0, kTol);
+}
+
+TEST(TracerMaterial, MaskCutoffComparesTheWholeAlpha) {
+    // Texel alpha 128/255 ≈ 0.502: kept at cutoff 0.5, a hole at cutoff 0.51
+    // or when the factor's alpha 0.9 brings it to 0.452.
+    const dvec3 origin(0.5, 2.0, 1.0), dir(0, 0, -1);
+    EXPECT_NEAR(trace_ray(prepare_scene(masked_quad(128, layout::AlphaMode::Mask)), origin, dir, 0, 8).point.z, -1.0,
+                kTol);
+    EXPECT_NEAR(trace_ray(prepare_scene(masked_quad(128, layout::AlphaMode::Mask, 1.0, 0.51)), origin, dir, 0, 8)
+                    .point.z,
+                -2.0, kTol);
+    EXPECT_NEAR(
+        trace_ray(prepare_scene(masked_quad(128, layout::AlphaMode::Mask, 0.9)), origin, dir, 0, 8).point.z, -2.0,
+        kTol);
+    // Exactly at the cutoff is kept (alpha < cutoff is a hole): 0.5 · 1 · 1.
+    layout::Layout half = masked_quad(255, layout::AlphaMode::Mask, 0.5, 0.5);
+    EXPECT_NEAR(trace_ray(prepare_scene(half), origin, dir, 0, 8).point.z, -1.0, kTol);
+}
+
+TEST(TracerMaterial, MaskedFramesAreTheSameWithAndWithoutTheTree) {
+    const Scene with = prepare_scene(masked_quad(0, layout::AlphaMode::Mask));
+    ASSERT_FALSE(with.rooms[0].bvh.nodes.empty());
+    Scene without = with;
+    without.rooms[0].bvh = {};
+    TraceDesc desc;
+    desc.head.position = {0.1, 1.5, 1.0};
+    desc.eye_width = 40;
+    desc.eye_height = 30;
+    const image::Image a = trace_frame(with, desc), b = trace_frame(without, desc);
+    EXPECT_EQ(a.rgb, b.rgb);
+    EXPECT_EQ(a.ids, b.ids);
+    // The hole shows the -z wall: its colour is in the frame, beside the quad's.
+    const auto wall = bytes_of(shade_by_hand(test::make_room("x", {}, {}).face_color[4], {0, 0, 1}, false));
+    bool wall_seen = false;
+    for (int i = 0; i < a.width && !wall_seen; ++i)
+        for (int j = 0; j < a.height && !wall_seen; ++j) wall_seen = test::pixel_rgb(a, i, j) == wall;
+    EXPECT_TRUE(wall_seen);
+}
+
+// A quad seen from behind (from z = -1.5, looking +z), its vertex normal
+// tilted down (0, -0.6, 0.8): from the front that faces away from the light;
+// reversed, (0, 0.6, -0.8), it is lit.
+TraceHit from_behind(bool double_sided) {
+    layout::Layout l = one_room();
+    layout::GltfProp model;
+    layout::Material material;
+    material.base_color = {0.9, 0.5, 0.3, 1.0};
+    material.double_sided = double_sided;
+    model.materials.push_back(material);
+    add_quad(model, 0, dvec4(1.0), {0.0, -0.6, 0.8});
+    l.rooms[0].props.push_back(model);
+    return trace_ray(prepare_scene(l), {0.2, 1.5, -1.5}, {0, 0, 1}, 0, 8);
+}
+
+TEST(TracerMaterial, DoubleSidedIsSeenFromBehindWithItsNormalReversed) {
+    const TraceHit one = from_behind(false);
+    EXPECT_NEAR(one.point.z, 2.0, kTol);  // through it, to the +z wall
+    const TraceHit two = from_behind(true);
+    EXPECT_EQ(two.id, 1);
+    EXPECT_NEAR(two.point.z, -1.0, kTol);
+    EXPECT_NEAR(two.normal.y, 0.6, kTol);
+    EXPECT_NEAR(two.normal.z, -0.8, kTol);
+    const dvec3 lit = shade_by_hand({0.9, 0.5, 0.3}, {0.0, 0.6, -0.8}, false);
+    const dvec3 unlit = shade_by_hand({0.9, 0.5, 0.3}, {0.0, -0.6, 0.8}, false);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(two.color[c], lit[c], kTol);
+    EXPECT_GT(lit.x, unlit.x + 0.05);  // the reversal shows
+    // From the front it is the same triangle with its own normal.
+    layout::Layout l = one_room();
+    layout::GltfProp model;
+    layout::Material material;
+    material.base_color = {0.9, 0.5, 0.3, 1.0};
+    material.double_sided = true;
+    model.materials.push_back(material);
+    add_quad(model, 0, dvec4(1.0), {0.0, -0.6, 0.8});
+    l.rooms[0].props.push_back(model);
+    const TraceHit front = trace_ray(prepare_scene(l), {0.2, 1.5, 1.5}, {0, 0, -1}, 0, 8);
+    EXPECT_NEAR(front.point.z, -1.0, kTol);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(front.color[c], unlit[c], kTol);
+}
+
+// Room faces: a 2 × 2 image on a room [0, 4] × [0, 3] × [0, 4], one tile per
+// 2 m, checker side 1. Each face is looked at from the room's middle, and
+// the texel centres of the image's top-left, top-right and bottom-left
+// quadrants are found where the spec's wording puts them (not through
+// room_texture_uv): on walls the image's top is up and its left is on the
+// left of a viewer inside facing the wall; on the floor and ceiling its top
+// is towards -z.
+struct FaceCase {
+    layout::Face face;
+    dvec3 normal;           // into the room
+    dvec3 top_left, top_right, bottom_left;  // texel centres on the face
+};
+
+TEST(TracerMaterial, RoomFaceTexturesAreOrientedAsTheSpecSays) {
+    layout::Layout l = one_room({0, 0, 0}, {4, 3, 4});
+    layout::Room& room = l.rooms[0];
+    room.checker = 1.0;
+    room.texture_size = 2.0;
+    for (auto& t : room.face_texture) t = quadrants();
+    const Scene scene = prepare_scene(l);
+    const dvec3 eye(2.0, 1.6, 2.0);
+    // Texel centres lie at 1/4 and 3/4 of a 2 m tile: 0.5 and 1.5 m past a
+    // multiple of 2 m (s and t counted from the image's top-left corner).
+    const FaceCase cases[] = {
+        // Floor, looking down (top towards -z, left towards -x).
+        {layout::Face::Floor, {0, 1, 0}, {0.5, 0, 0.5}, {1.5, 0, 0.5}, {0.5, 0, 1.5}},
+        // Ceiling, seen from below: top still towards -z; s grows towards -x.
+        {layout::Face::Ceiling, {0, -1, 0}, {1.5, 3, 0.5}, {0.5, 3, 0.5}, {1.5, 3, 1.5}},
+        // -z wall, facing it (looking -z): right is +x, up is +y; a tile's
+        // top edge is at y = 2 (t = -y / 2 is whole there).
+        {layout::Face::NegZ, {0, 0, 1}, {0.5, 1.5, 0}, {1.5, 1.5, 0}, {0.5, 0.5, 0}},
+        // +x wall, facing it (looking +x): right is +z.
+        {layout::Face::PosX, {-1, 0, 0}, {4, 1.5, 0.5}, {4, 1.5, 1.5}, {4, 0.5, 0.5}},
+        // -x wall, facing it (looking -x): right is -z.
+        {layout::Face::NegX, {1, 0, 0}, {0, 1.5, 3.5}, {0, 1.5, 2.5}, {0, 0.5, 3.5}},
+        // +z wall, facing it (looking +z): right is -x.
+        {layout::Face::PosZ, {0, 0, -1}, {3.5, 1.5, 4}, {2.5, 1.5, 4}, {3.5, 0.5, 4}},
+    };
+    for (const FaceCase& fc : cases) {
+        const int i_face = static_cast<int>(fc.face);
+        const std::pair<dvec3, dvec4> points[] = {
+            {fc.top_left, quadrant(0, 0)}, {fc.top_right, quadrant(1, 0)}, {fc.bottom_left, quadrant(0, 1)}};
+        for (const auto& [p, texel] : points) {
+            const TraceHit hit = trace_ray(scene, eye, p - eye, 0, 8);
+            EXPECT_EQ(hit.id, 1);
+            EXPECT_EQ(hit.normal, fc.normal) << layout::kFaceNames[i_face];
+            // The checker by hand: the two in-plane coordinates' squares.
+            double a = p.x, b = p.z;
+            if (fc.normal.x != 0.0) a = p.y;
+            if (fc.normal.z != 0.0) b = p.y;
+            const bool dark = (static_cast<int>(std::floor(a)) + static_cast<int>(std::floor(b))) % 2 != 0;
+            const dvec3 expected = shade_by_hand(room.face_color[i_face] * dvec3(texel), fc.normal, dark);
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(hit.color[c], expected[c], 1e-9)
+                    << layout::kFaceNames[i_face] << " at " << p.x << ", " << p.y << ", " << p.z;
+        }
+    }
+}
+
+TEST(TracerMaterial, WhiteTexturesAndColor0ChangeNoByte) {
+    // A prop and faces textured white, COLOR_0 white: the same frame as
+    // without any texture (texels multiply by exactly 1).
+    auto build = [](bool textured) {
+        layout::Layout l = one_room();
+        l.rooms[0].checker = 0.5;
+        layout::GltfProp model;
+        layout::Material material;
+        material.base_color = {0.8, 0.8, 0.8, 1.0};
+        if (textured) {
+            material.texture = 0;
+            model.textures.push_back(texture(image_of(1, 1, {255, 255, 255, 255}), code::kLinear));
+            for (auto& t : l.rooms[0].face_texture) t = image_of(2, 1, {255, 255, 255, 255, 255, 255, 255, 255});
+        }
+        model.materials.push_back(material);
+        add_quad(model, textured ? 0 : -1, dvec4(1.0), glm::normalize(dvec3(0.2, 0.3, 1.0)));
+        l.rooms[0].props.push_back(model);
+        return l;
+    };
+    TraceDesc desc;
+    desc.head.position = {0.3, 1.4, 1.2};
+    desc.head.yaw_deg = 10.0;
+    desc.eye_width = 48;
+    desc.eye_height = 32;
+    const image::Image plain = trace_frame(build(false), desc), white = trace_frame(build(true), desc);
+    EXPECT_EQ(plain.rgb, white.rgb);
+    EXPECT_EQ(plain.ids, white.ids);
+}
+
+TEST(TracerMaterial, BadMaterialOrTextureIndicesThrow) {
+    layout::Layout l = one_room();
+    layout::GltfProp model;
+    add_quad(model, -1);
+    model.triangles[0].material = 0;  // no materials
+    l.rooms[0].props.push_back(model);
+    EXPECT_THROW(prepare_scene(l), std::invalid_argument);
+    auto& prop = std::get<layout::GltfProp>(l.rooms[0].props[0]);
+    prop.materials.emplace_back();
+    prop.materials[0].texture = 0;  // no textures
+    EXPECT_THROW(prepare_scene(l), std::invalid_argument);
+    prop.materials[0].texture = -1;
+    EXPECT_NO_THROW(prepare_scene(l));
+}
+
+}  // namespace
+}  // namespace impossible::trace
