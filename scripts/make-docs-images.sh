@@ -29,6 +29,8 @@ render mirror_hall mirror_hall.json --max-depth 16
 render glass_gallery glass_gallery.json
 render window_pair window_pair.json --max-depth 16
 render three_kinds three_kinds.json
+render gallery gallery.json
+render gallery-garden gallery.json --room garden --pose 1.5,1.5,2.6,25,-8,0
 
 # The preview window (HUD, minimap, boundary grid) at the end of a scripted walk
 # into the tunnel, on a private X server. Only the HUD's frame time varies

@@ -58,6 +58,10 @@ struct FrameDesc : scene::View {
     // With culling: props are drawn only where an eye's frustum, narrowed
     // through the portals, may see their bounds (render/object_culling.hpp).
     bool cull_objects = true;
+    // Textures read at level 0 with the magnification filter, as the tracer
+    // reads them, instead of through their mipmaps: for comparing the two
+    // (tests, bench's error), never for viewing (minified textures alias).
+    bool textures_level0 = false;
     // With culling: also test each visible portal of the head's cell for
     // occlusion (a query after the cell's surfaces) and drop the subtree of a
     // hidden one by conditional rendering. Exact, but the driver must

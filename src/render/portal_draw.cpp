@@ -121,6 +121,7 @@ void draw_cell(DrawContext& ctx, const LevelView& view) {
             const DrawContext with_materials{r, m, ctx.frame, ctx.stats, ctx.projection, ctx.profiler};
             set_eye_uniforms(with_materials, view, {view.eyes[0].rect, view.eyes[1].rect});
             set_cell_id(with_materials, static_cast<unsigned>(view.cell + 1), false);
+            glProgramUniform1i(m.program.get(), m.level0, ctx.frame.textures_level0 ? 1 : 0);
             material_ready = true;
         }
         r.state->program(m.program.get());

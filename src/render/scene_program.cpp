@@ -46,6 +46,7 @@ Result<SceneProgram> link_scene_program(const char* fragment, const std::string&
     p.target_size = glGetUniformLocation(name, "u_target_size");
     p.textured = glGetUniformLocation(name, "u_textured");
     p.alpha_cutoff = glGetUniformLocation(name, "u_alpha_cutoff");
+    p.level0 = glGetUniformLocation(name, "u_level0");
     glProgramUniform1i(name, glGetUniformLocation(name, "u_texture"), static_cast<GLint>(kSceneTextureUnit));
     glProgramUniform1f(name, p.alpha_cutoff, -1.0f);
     return p;

@@ -23,6 +23,7 @@ struct SceneProgram {
     GLint unshaded = -1;    // bool
     GLint textured = -1;    // bool: multiply by the texture on kSceneTextureUnit
     GLint alpha_cutoff = -1;  // float: drop fragments whose alpha is below it; < 0: opaque
+    GLint level0 = -1;        // bool: textures at level 0 only
     GLint target_size = -1;  // vec2, only in the portal-texture program
 };
 
