@@ -57,7 +57,7 @@ const char* preview_help() {
            "  --max-depth N           portals one line of sight may pass (default 8, at most 250)\n"
            "  --stereo MODE           clip-shift (default), viewport-index or two-pass\n"
            "  --clip MODE             clip-distance (default) or oblique\n"
-           "  --no-cull               draw every portal without per-eye culling and scissor\n"
+           "  --no-cull               draw every portal and prop without per-eye culling and scissor\n"
            "  --samples N             multisampling: 1 (default), 2, 4, 8 or 16 samples per pixel (the\n"
            "                          counts the driver offers; llvmpipe: 4)\n"
            "  --no-hud, --no-minimap  start with the HUD / minimap hidden\n"

@@ -261,6 +261,25 @@ TEST_F(Preview, MultisampledFramesMatchRender) {
               testing::read_png_ok((dir_ / "r-ids.png").string()).pixels);
 }
 
+// The gallery's textures, vertex colours, double-sided screen and cut-outs
+// in the window: the same frame as `render` writes.
+TEST_F(Preview, MaterialsMatchRender) {
+    const Xvfb x;
+    ASSERT_FALSE(x.display.empty()) << x.error;
+    const std::string layout = q(fs::path(IMPOSSIBLE_SOURCE_DIR) / "layouts/gallery.json");
+    const ProgramRun preview = run_program(
+        "DISPLAY=" + x.display, "preview " + layout + " --frames 1 --no-vsync --size 160x90 --screenshots " + q(dir_ / "s"),
+        dir_);
+    ASSERT_EQ(preview.status, 0) << preview.err;
+    const ProgramRun render =
+        run_program("", "render " + layout + " --size 160x90 --out " + q(dir_ / "r.png") + " --ids " + q(dir_ / "r-ids.png"), dir_);
+    ASSERT_EQ(render.status, 0) << render.err;
+    EXPECT_EQ(testing::read_png_ok((dir_ / "s/frame-0000.png").string()).pixels,
+              testing::read_png_ok((dir_ / "r.png").string()).pixels);
+    EXPECT_EQ(testing::read_png_ok((dir_ / "s/frame-0000-ids.png").string()).pixels,
+              testing::read_png_ok((dir_ / "r-ids.png").string()).pixels);
+}
+
 TEST_F(Preview, WithoutADisplayFailsWithOneLine) {
     const ProgramRun r = run_program("-u DISPLAY -u WAYLAND_DISPLAY", "preview --frames 1", dir_);
     EXPECT_EQ(r.status, 1);
