@@ -107,9 +107,14 @@ BenchPlan plan_bench(const layout::Layout& layout, const BenchOptions& o) {
             plan.layouts.push_back(keep_first_portals(layout, n));
             add(name, kind, [&](BenchConfig& c) { c.layout_variant = static_cast<int>(plan.layouts.size()) - 1; });
         } else if (kind == "boxes") {
-            const int n = parse_int("--sweep boxes", item, 0, 100000);
+            // "N/all": the same boxes with per-object culling off, to compare in one run.
+            const bool all = item.size() > 4 && item.compare(item.size() - 4, 4, "/all") == 0;
+            const int n = parse_int("--sweep boxes", all ? item.substr(0, item.size() - 4) : item, 0, 100000);
             plan.layouts.push_back(with_extra_boxes(plan.layouts[0], n));
-            add(name, kind, [&](BenchConfig& c) { c.layout_variant = static_cast<int>(plan.layouts.size()) - 1; });
+            add(name, kind, [&](BenchConfig& c) {
+                c.layout_variant = static_cast<int>(plan.layouts.size()) - 1;
+                c.frame.cull_objects = !all;
+            });
         } else if (kind == "samples") {
             const int n = app::parse_samples(item);
             add(name, kind, [n](BenchConfig& c) { c.frame.samples = n; });
