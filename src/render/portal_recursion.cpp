@@ -37,28 +37,13 @@ void draw_full_target(DrawContext& ctx) {
     r.state->vertex_array(r.gpu.vao.get());
 }
 
-void clear_depth_in_portal(DrawContext& ctx, const LevelView& view, int stencil_ref,
-                           const std::array<NdcRect, 2>& rects) {
+void clear_depth_in_portal(DrawContext& ctx, const LevelView& view, int stencil_ref) {
     RendererData& r = ctx.renderer;
     use_pass(ctx, view, Pass::ClearDepth, stencil_ref);
     r.state->program(r.clear_depth.program.get());
     glProgramUniform1f(r.clear_depth.program.get(), r.clear_depth.far_depth,
                        ctx.frame.depth == DepthMode::ReversedZ ? 0.0f : 1.0f);
-    const bool both = view.eyes[0].active && view.eyes[1].active && !rects[0].empty() && !rects[1].empty();
-    if (ctx.frame.cull_portals && both) {
-        // Each eye's part under its own scissor: the scissor of the pair
-        // spans the seam between the two halves, and the triangle costs in
-        // proportion to the scissor's area even where the stencil fails.
-        for (int e = 0; e < 2; ++e) {
-            std::array<NdcRect, 2> one = rects;
-            one[static_cast<std::size_t>(1 - e)] = NdcRect::none();
-            limit_to_portal(ctx, view, one);
-            draw_full_target(ctx);
-        }
-        limit_to_portal(ctx, view, rects);
-    } else {
-        draw_full_target(ctx);
-    }
+    draw_full_target(ctx);
     r.state->program(ctx.program.program.get());
 }
 

@@ -88,10 +88,8 @@ Result<void> prepare_window_blend(RendererData& r, bool multisample);
 
 // --- Shared steps of portal_recursion.cpp.
 
-// Depth back to far where the stencil equals stencil_ref, within the
-// portal's scissor (per eye, when both see it).
-void clear_depth_in_portal(DrawContext& ctx, const LevelView& view, int stencil_ref,
-                           const std::array<NdcRect, 2>& rects);
+// Depth back to far where the stencil equals stencil_ref.
+void clear_depth_in_portal(DrawContext& ctx, const LevelView& view, int stencil_ref);
 
 // One full-target triangle with the bound program (the stencil limits it).
 void draw_full_target(DrawContext& ctx);
