@@ -77,7 +77,7 @@ void mark_portal(DrawContext& ctx, const LevelView& view, int p, const std::arra
     limit_to_portal(ctx, view, rects);
     use_pass(ctx, view, Pass::PortalMark, view.level);
     draw_portal_box(ctx, view, p, rects);
-    clear_depth_in_portal(ctx, view, view.level + 1);
+    clear_depth_in_portal(ctx, view, view.level + 1, rects);
 }
 
 void unmark_portal(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {

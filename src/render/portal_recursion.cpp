@@ -37,13 +37,54 @@ void draw_full_target(DrawContext& ctx) {
     r.state->vertex_array(r.gpu.vao.get());
 }
 
-void clear_depth_in_portal(DrawContext& ctx, const LevelView& view, int stencil_ref) {
+void clear_depth_in_portal(DrawContext& ctx, const LevelView& view, int stencil_ref,
+                           const std::array<NdcRect, 2>& rects) {
     RendererData& r = ctx.renderer;
+    const ClearDepthProgram& clear = r.clear_depth;
     use_pass(ctx, view, Pass::ClearDepth, stencil_ref);
-    r.state->program(r.clear_depth.program.get());
-    glProgramUniform1f(r.clear_depth.program.get(), r.clear_depth.far_depth,
-                       ctx.frame.depth == DepthMode::ReversedZ ? 0.0f : 1.0f);
-    draw_full_target(ctx);
+    r.state->program(clear.program.get());
+    glProgramUniform1f(clear.program.get(), clear.far_depth, ctx.frame.depth == DepthMode::ReversedZ ? 0.0f : 1.0f);
+    if (!ctx.frame.cull_portals) {
+        draw_full_target(ctx);
+        r.state->program(ctx.program.program.get());
+        return;
+    }
+    // One rectangle per eye that sees the portal, in one instanced draw: the
+    // scissor of the pair spans the seam between the two halves of the
+    // target, and the triangle would cost in proportion to its area even
+    // where the stencil fails. Each rectangle is the eye's, widened by two
+    // pixels (the marked pixels lie within one, set_eye_uniforms), in the
+    // viewport's coordinates: the whole target's in clip-shift and
+    // viewport-index mode (drawn through the widened viewport 0), the eye's
+    // own in two-pass mode.
+    const bool whole_target = ctx.frame.stereo != StereoMode::TwoPass;
+    float quads[2][4];
+    int count = 0;
+    for (int e = 0; e < 2; ++e) {
+        if (!view.eyes[e].active || rects[e].empty()) continue;
+        const double mx = 4.0 / ctx.frame.eye_width, my = 4.0 / ctx.frame.eye_height;
+        const NdcRect q = intersect({rects[e].x0 - mx, rects[e].y0 - my, rects[e].x1 + mx, rects[e].y1 + my}, NdcRect{});
+        const double shift = whole_target ? (e == 0 ? -1.0 : 1.0) : 0.0;
+        const double scale = whole_target ? 0.5 : 1.0;
+        quads[count][0] = static_cast<float>(scale * (q.x0 + shift));
+        quads[count][1] = static_cast<float>(q.y0);
+        quads[count][2] = static_cast<float>(scale * (q.x1 + shift));
+        quads[count][3] = static_cast<float>(q.y1);
+        ++count;
+    }
+    if (count > 0) {
+        glProgramUniform4fv(clear.program.get(), clear.rects, count, &quads[0][0]);
+        glProgramUniform1i(clear.program.get(), clear.eye_quads, 1);
+        r.state->vertex_array(r.empty_vao.get());
+        const bool indexed = ctx.frame.stereo == StereoMode::ViewportIndex;
+        const float w = static_cast<float>(ctx.frame.eye_width), h = static_cast<float>(ctx.frame.eye_height);
+        if (indexed) r.state->viewport_indexed(0, 0.0f, 0.0f, 2.0f * w, h);
+        glDrawArraysInstanced(GL_TRIANGLES, 0, 6, count);
+        if (indexed) r.state->viewport_indexed(0, 0.0f, 0.0f, w, h);
+        ctx.stats.draw_calls += 1;
+        r.state->vertex_array(r.gpu.vao.get());
+        glProgramUniform1i(clear.program.get(), clear.eye_quads, 0);
+    }
     r.state->program(ctx.program.program.get());
 }
 

@@ -88,8 +88,10 @@ Result<void> prepare_window_blend(RendererData& r, bool multisample);
 
 // --- Shared steps of portal_recursion.cpp.
 
-// Depth back to far where the stencil equals stencil_ref.
-void clear_depth_in_portal(DrawContext& ctx, const LevelView& view, int stencil_ref);
+// Depth back to far where the stencil equals stencil_ref, within the
+// portal's rectangle in each eye that sees it.
+void clear_depth_in_portal(DrawContext& ctx, const LevelView& view, int stencil_ref,
+                           const std::array<NdcRect, 2>& rects);
 
 // One full-target triangle with the bound program (the stencil limits it).
 void draw_full_target(DrawContext& ctx);

@@ -82,6 +82,8 @@ Result<ClearDepthProgram> build_clear_depth_program() {
     out.program = std::move(*built);
     out.far_depth = glGetUniformLocation(out.program.get(), "u_far_depth");
     out.color = glGetUniformLocation(out.program.get(), "u_color");
+    out.eye_quads = glGetUniformLocation(out.program.get(), "u_eye_quads");
+    out.rects = glGetUniformLocation(out.program.get(), "u_rects");
     return out;
 }
 

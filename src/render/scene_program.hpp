@@ -41,6 +41,8 @@ struct ClearDepthProgram {
     gl::Program program;
     GLint far_depth = -1;  // float: clip-space z of the far plane (w = 1)
     GLint color = -1;      // vec4: the colour it writes where colour is not masked (id 0)
+    GLint eye_quads = -1;  // bool: one rectangle per instance instead of the full target
+    GLint rects = -1;      // vec4[2]: those rectangles
 };
 
 Result<ClearDepthProgram> build_clear_depth_program();
