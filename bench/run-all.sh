@@ -38,7 +38,23 @@ run techniques_vr "$L/vr_study.json" --size 640x360 --sweep techniques
 # Scaling, on the VR-study layout: doors opened pair by pair, then resolution.
 run portals_vr "$L/vr_study.json" --size 1280x720 --max-depth 4 --sweep portals:0,2,4,6
 run size_vr "$L/vr_study.json" --max-depth 4 --size 1280x720 --sweep size:320x180,640x360,1280x720,1920x1080
-run triangles_vr "$L/vr_study.json" --max-depth 4 --size 1280x720 --sweep boxes:0,100,1000,4000
+run triangles_vr "$L/vr_study.json" --max-depth 4 --size 1280x720 \
+    --sweep boxes:0,100,1000,1000/all,4000,10000,10000/all
+# A large glTF mesh (a bumpy sphere of about a million triangles, made here):
+# in view, and behind the eye, where per-object culling drops it.
+sphere=$(mktemp -d)
+trap 'rm -rf "$sphere"' EXIT
+"$build/tools/make_sphere_glb" 1000000 "$sphere/sphere.glb" >/dev/null
+cat >"$sphere/sphere.json" <<'EOF_SPHERE'
+{ "format": "impossible-layout", "version": 1,
+  "start": { "room": "r", "position": [0, 1.6, 1.5] },
+  "rooms": [ { "id": "r", "min": [-3, 0, -5], "max": [3, 3, 2], "color": [0.7, 0.7, 0.7],
+    "props": [ { "gltf": "sphere.glb", "position": [0, 1.3, -0.7], "scale": 1.2 } ] } ] }
+EOF_SPHERE
+run sphere_front "$sphere/sphere.json" --size 640x360 --error
+run sphere_behind "$sphere/sphere.json" --size 640x360 --pose 0,1.6,1.5,180,0,0 --error
+# Textures and materials: the gallery's start view, with its error.
+run gallery "$L/gallery.json" --size 640x360 --error
 # Recursion depth: behind an occluding wall, and in the open corridor.
 run depth_wall "$L/corridor_wall.json" --size 1280x720 --sweep depth:1,2,4,8,16,64
 run depth_wall_occlusion "$L/corridor_wall.json" --size 1280x720 --occlusion-test --sweep depth:1,2,4,8,16,64
