@@ -2,6 +2,9 @@
 #include "design/overlap.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <utility>
 
 namespace impossible::design {
 
@@ -21,15 +24,47 @@ Overlap overlap_of(const math::Polygon2& a, const math::Polygon2& b) {
 }
 
 std::vector<Overlap> room_overlaps(const std::vector<math::Polygon2>& floors) {
-    std::vector<Overlap> out;
+    // Only floors whose bounding rectangles meet can share any area: sort the
+    // rectangles by their low x and sweep, so that a layout of n rooms that
+    // mostly lie apart costs n log n plus the pairs that do meet, not n².
+    // A floor with a coordinate that is not finite meets every other, as a
+    // plain test of every pair would have it.
+    struct Bounds {
+        glm::dvec2 lo{-INFINITY}, hi{INFINITY};
+    };
+    std::vector<Bounds> bounds(floors.size());
     for (std::size_t i = 0; i < floors.size(); ++i) {
-        for (std::size_t j = i + 1; j < floors.size(); ++j) {
-            Overlap o = overlap_of(floors[i], floors[j]);
-            if (o.area <= kMinSharedArea) continue;
-            o.a = static_cast<int>(i);
-            o.b = static_cast<int>(j);
-            out.push_back(std::move(o));
+        const math::Polygon2& f = floors[i];
+        const bool finite = std::all_of(f.begin(), f.end(), [](const glm::dvec2& p) {
+            return std::isfinite(p.x) && std::isfinite(p.y);
+        });
+        if (!finite || f.empty()) continue;
+        bounds[i].lo = bounds[i].hi = f[0];
+        for (const glm::dvec2& p : f) bounds[i].lo = glm::min(bounds[i].lo, p), bounds[i].hi = glm::max(bounds[i].hi, p);
+    }
+    std::vector<std::size_t> by_x(floors.size());
+    std::iota(by_x.begin(), by_x.end(), std::size_t{0});
+    std::sort(by_x.begin(), by_x.end(), [&](std::size_t a, std::size_t b) {
+        return bounds[a].lo.x < bounds[b].lo.x || (bounds[a].lo.x == bounds[b].lo.x && a < b);
+    });
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    for (std::size_t s = 0; s < by_x.size(); ++s) {
+        const Bounds& u = bounds[by_x[s]];
+        for (std::size_t t = s + 1; t < by_x.size() && bounds[by_x[t]].lo.x <= u.hi.x; ++t) {
+            const Bounds& v = bounds[by_x[t]];
+            if (v.lo.y > u.hi.y || u.lo.y > v.hi.y) continue;
+            pairs.emplace_back(std::min(by_x[s], by_x[t]), std::max(by_x[s], by_x[t]));
         }
+    }
+    std::sort(pairs.begin(), pairs.end());
+
+    std::vector<Overlap> out;
+    for (const auto& [i, j] : pairs) {
+        Overlap o = overlap_of(floors[i], floors[j]);
+        if (o.area <= kMinSharedArea) continue;
+        o.a = static_cast<int>(i);
+        o.b = static_cast<int>(j);
+        out.push_back(std::move(o));
     }
     return out;
 }

@@ -33,6 +33,14 @@ Scene build_scene(const layout::Layout& layout) {
     // Fronts of portals that are holes in their room's faces, set while the
     // room is built so that they share the wall's vertices.
     std::vector<std::optional<FrontGrid>> fronts(layout.portals.size());
+    // Each room's portals, in file order: one pass over the portals, so that
+    // building n rooms does not look at every portal n times.
+    std::vector<std::vector<int>> room_portals(layout.rooms.size());
+    for (std::size_t p = 0; p < layout.portals.size(); ++p) {
+        const int room = layout.portals[p].room;
+        if (room >= 0 && static_cast<std::size_t>(room) < layout.rooms.size())
+            room_portals[static_cast<std::size_t>(room)].push_back(static_cast<int>(p));
+    }
 
     scene.cells.reserve(layout.rooms.size());
     scene.batches.reserve(layout.rooms.size());
@@ -43,7 +51,7 @@ Scene build_scene(const layout::Layout& layout) {
         const layout::Room& room = layout.rooms[r];
         const std::uint32_t first = out.index_count();
         CellObjects objects;
-        const auto faces = append_room_faces(out, layout, static_cast<int>(r), fronts);
+        const auto faces = append_room_faces(out, layout, static_cast<int>(r), room_portals[r], fronts);
         for (std::size_t f = 0; f < faces.size(); ++f) {
             DrawBatch b;
             b.range = faces[f];

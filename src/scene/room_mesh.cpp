@@ -176,17 +176,17 @@ void append_face(MeshWriter& out, const layout::Room& room, int face, const Line
 }  // namespace
 
 std::array<IndexRange, layout::kFaceCount> append_room_faces(MeshWriter& out, const layout::Layout& layout,
-                                                             int room_index,
+                                                             int room_index, const std::vector<int>& room_portals,
                                                              std::vector<std::optional<FrontGrid>>& fronts) {
     const layout::Room& room = layout.rooms[static_cast<std::size_t>(room_index)];
     std::array<std::vector<FaceHole>, layout::kFaceCount> holes;
     std::array<bool, layout::kFaceCount> slabs{};  // faces with a hole that is not axis-aligned
-    for (std::size_t p = 0; p < layout.portals.size(); ++p) {
-        const layout::Portal& portal = layout.portals[p];
+    for (const int p : room_portals) {
+        const layout::Portal& portal = layout.portals[static_cast<std::size_t>(p)];
         if (portal.room != room_index || portal.hole_face < 0) continue;
         const int fi = portal.hole_face;
         assert(fi < layout::kFaceCount);
-        const FaceHole h = make_hole(room, face_frame(room, fi), static_cast<int>(p), portal.rect);
+        const FaceHole h = make_hole(room, face_frame(room, fi), p, portal.rect);
         slabs[static_cast<std::size_t>(fi)] = slabs[static_cast<std::size_t>(fi)] || !h.aligned;
         holes[static_cast<std::size_t>(fi)].push_back(h);
     }

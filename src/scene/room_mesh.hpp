@@ -28,12 +28,13 @@
 namespace impossible::scene {
 
 // Appends the six faces of layout.rooms[room], in layout::Face order, with
-// the room's colours and checker. For each portal p of this room with a
+// the room's colours and checker. `room_portals` lists the room's portals
+// (indices into layout.portals, ascending). For each portal p of them with a
 // hole_face, sets fronts[p] (fronts has one entry per portal) to the front
 // that matches the hole's edges. A face with a texture gets texture
 // coordinates (FaceUv). Returns each face's index range, in layout::Face order.
 std::array<IndexRange, layout::kFaceCount> append_room_faces(MeshWriter& out, const layout::Layout& layout,
-                                                             int room,
+                                                             int room, const std::vector<int>& room_portals,
                                                              std::vector<std::optional<FrontGrid>>& fronts);
 
 }  // namespace impossible::scene
