@@ -10,15 +10,19 @@ namespace impossible::layout::detail {
 
 namespace {
 
+// The index of a face named as in `face_colors`, or -1.
+int face_index(const std::string& key) {
+    for (int f = 0; f < kFaceCount; ++f)
+        if (key == kFaceNames[static_cast<std::size_t>(f)]) return f;
+    return -1;
+}
+
 void read_face_colors(Checker& check, const Path& at, const json& value, Room& room) {
     if (!check.expect_object(at, value)) return;
     for (auto it = value.begin(); it != value.end(); ++it) {
         const std::string& key = it.key();
         if (!key.empty() && key.front() == '_') continue;  // a comment
-        int face = -1;
-        for (int f = 0; f < kFaceCount; ++f) {
-            if (key == kFaceNames[static_cast<std::size_t>(f)]) face = f;
-        }
+        const int face = face_index(key);
         if (face < 0) {
             check.error_at_key(at / key, "unknown face " + quote(key) +
                                              " (faces are \"floor\", \"ceiling\", \"-x\", "
@@ -40,10 +44,7 @@ void read_textures(Checker& check, const Path& at, const json& value, ModelCache
     for (auto it = value.begin(); it != value.end(); ++it) {
         const std::string& key = it.key();
         if (!key.empty() && key.front() == '_') continue;  // a comment
-        int face = -1;
-        for (int f = 0; f < kFaceCount; ++f) {
-            if (key == kFaceNames[static_cast<std::size_t>(f)]) face = f;
-        }
+        const int face = face_index(key);
         if (face < 0 && key != "all") {
             check.error_at_key(at / key, "unknown face " + quote(key) +
                                              " (textures are named by \"floor\", \"ceiling\", \"-x\", "

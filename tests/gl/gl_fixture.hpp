@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <string>
 
 #include "gl/context.hpp"
@@ -63,6 +66,16 @@ inline int count_id_differences(const image::Image& a, const image::Image& b) {
     int n = 0;
     for (size_t i = 0; i < a.ids.size(); ++i) n += a.ids[i] != b.ids[i];
     return n;
+}
+
+// The shading model written out by hand: base · (0.45 + 0.55 · max(0, n·L)),
+// L the unit vector along (0.3, 0.9, 0.4), as 8-bit values.
+inline std::array<int, 3> expected_colour(std::array<double, 3> base, std::array<double, 3> n) {
+    const double len = std::sqrt(0.3 * 0.3 + 0.9 * 0.9 + 0.4 * 0.4);
+    const double ndotl = (n[0] * 0.3 + n[1] * 0.9 + n[2] * 0.4) / len;
+    const double k = 0.45 + 0.55 * std::max(0.0, ndotl);
+    return {int(std::lround(base[0] * k * 255)), int(std::lround(base[1] * k * 255)),
+            int(std::lround(base[2] * k * 255))};
 }
 
 inline const std::uint8_t* pixel(const image::Image& image, int x, int y) {

@@ -17,12 +17,9 @@ namespace {
 using testing::id_at;
 using testing::pixel;
 
-// The shading model: base · (0.45 + 0.55 · max(0, n·L)), L along (0.3, 0.9, 0.4).
+// The shading model written out (gl_fixture.hpp).
 std::array<int, 3> shaded(std::array<double, 3> base, std::array<double, 3> n) {
-    const double len = std::sqrt(0.3 * 0.3 + 0.9 * 0.9 + 0.4 * 0.4);
-    const double k = 0.45 + 0.55 * std::max(0.0, (n[0] * 0.3 + n[1] * 0.9 + n[2] * 0.4) / len);
-    return {int(std::lround(base[0] * k * 255)), int(std::lround(base[1] * k * 255)),
-            int(std::lround(base[2] * k * 255))};
+    return testing::expected_colour(base, n);
 }
 
 void expect_near(const image::Image& image, int x, int y, std::array<int, 3> want, const std::string& what) {

@@ -10,15 +10,7 @@ namespace {
 using testing::id_at;
 using testing::pixel;
 
-// The shading model written out: base · (0.45 + 0.55 · max(0, n·L)), with L
-// the unit vector along (0.3, 0.9, 0.4).
-std::array<int, 3> expected_colour(std::array<double, 3> base, std::array<double, 3> n) {
-    const double len = std::sqrt(0.3 * 0.3 + 0.9 * 0.9 + 0.4 * 0.4);
-    const double ndotl = (n[0] * 0.3 + n[1] * 0.9 + n[2] * 0.4) / len;
-    const double k = 0.45 + 0.55 * std::max(0.0, ndotl);
-    return {int(std::lround(base[0] * k * 255)), int(std::lround(base[1] * k * 255)),
-            int(std::lround(base[2] * k * 255))};
-}
+using testing::expected_colour;
 
 void expect_colour_near(const std::uint8_t* got, std::array<int, 3> want, const char* what) {
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(int(got[c]), want[c], 1) << what << " channel " << c;
