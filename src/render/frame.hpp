@@ -56,7 +56,9 @@ struct FrameDesc : scene::View {
     DepthMode depth = DepthMode::ReversedZ;
     bool cull_portals = true;  // per-eye frustum/facing culling and scissor
     // With culling: props are drawn only where an eye's frustum, narrowed
-    // through the portals, may see their bounds (render/object_culling.hpp).
+    // through the portals, may see their bounds, and a portal hidden behind
+    // one of its room's large box props is skipped with its subtree
+    // (render/object_culling.hpp).
     bool cull_objects = true;
     // Textures read at level 0 with the magnification filter, as the tracer
     // reads them, instead of through their mipmaps: for comparing the two

@@ -42,7 +42,48 @@ bool outside(const EyePlanes& e, const glm::dvec3& lo, const glm::dvec3& hi) {
     return false;
 }
 
+// Whether the segment from `eye` to `p` enters the box at least a
+// millimetre before `p`, from outside.
+bool behind_box(const math::dvec3& eye, const math::dvec3& p, const glm::dvec3& lo, const glm::dvec3& hi) {
+    const math::dvec3 d = p - eye;
+    double enter = 0.0, exit = 1.0;
+    for (int a = 0; a < 3; ++a) {
+        if (d[a] == 0.0) {
+            if (eye[a] <= lo[a] || eye[a] >= hi[a]) return false;
+            continue;
+        }
+        double t0 = (lo[a] - eye[a]) / d[a], t1 = (hi[a] - eye[a]) / d[a];
+        if (t0 > t1) std::swap(t0, t1);
+        enter = std::max(enter, t0);
+        exit = std::min(exit, t1);
+    }
+    const double length = glm::length(d);
+    // enter > 0: the eye is outside (a box seen from inside hides nothing).
+    return enter > 0.0 && enter <= exit && (1.0 - enter) * length > 1e-3;
+}
+
 }  // namespace
+
+bool hidden_by_occluder(const scene::CellObjects& cell, const EyeView& eye, const math::PortalRect& portal) {
+    if (cell.occluders.empty()) return false;
+    math::dvec3 corners[8];
+    math::box_corners(portal, corners);
+    const bool clipped = eye.clip_plane != math::dvec4(0, 0, 0, 1);
+    for (const auto& [lo, hi] : cell.occluders) {
+        if (clipped) {
+            bool in_front = true;
+            for (int k = 0; k < 8 && in_front; ++k) {
+                const math::dvec3 c((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
+                in_front = glm::dot(math::dvec3(eye.clip_plane), c) + eye.clip_plane.w > 0.0;
+            }
+            if (!in_front) continue;
+        }
+        bool all = true;
+        for (int k = 0; k < 8 && all; ++k) all = behind_box(eye.eye.position, corners[k], lo, hi);
+        if (all) return true;
+    }
+    return false;
+}
 
 void visible_batches(const scene::CellObjects& cell, const LevelView& view, int eye_width, int eye_height,
                      double margin_px, CullScratch& scratch, std::vector<scene::DrawBatch>& out) {

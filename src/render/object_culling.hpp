@@ -27,4 +27,13 @@ struct CullScratch {
 void visible_batches(const scene::CellObjects& cell, const LevelView& view, int eye_width, int eye_height,
                      double margin_px, CullScratch& scratch, std::vector<scene::DrawBatch>& out);
 
+// Whether a portal's box is hidden from an eye by one of the cell's
+// occluders (scene::CellObjects::occluders): every corner of the box lies in
+// the box's shadow, at least a millimetre behind the face that hides it.
+// The points hidden by a convex box form a convex set, so the whole portal
+// is then hidden; the eye must stand outside the box, and with a clip plane
+// the box must lie wholly in front of it (clipped geometry hides nothing).
+// Exact on the CPU: no query, no synchronisation.
+bool hidden_by_occluder(const scene::CellObjects& cell, const EyeView& eye, const math::PortalRect& portal);
+
 }  // namespace impossible::render

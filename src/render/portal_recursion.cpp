@@ -171,7 +171,9 @@ void draw_level(DrawContext& ctx, const LevelView& view) {
             if (behind_exit || !ev.active) visible[k][e] = NdcRect::none();
             else if (!ctx.frame.cull_portals) visible[k][e] = ev.rect;
             else if (const NdcRect rect = portal_rect(r.portals[p].rect, ev);
-                     covers_pixel_centre(rect, ctx.frame.eye_width, ctx.frame.eye_height, ctx.frame.samples))
+                     covers_pixel_centre(rect, ctx.frame.eye_width, ctx.frame.eye_height, ctx.frame.samples) &&
+                     !(ctx.frame.cull_objects &&
+                       hidden_by_occluder(r.objects[static_cast<size_t>(view.cell)], ev, r.portals[p].rect)))
                 visible[k][e] = rect;
             else visible[k][e] = NdcRect::none();
         }

@@ -81,6 +81,7 @@ Scene build_scene(const layout::Layout& layout) {
         }
         scene.cells.push_back(out.range_since(first));
         scene.batches.push_back(finish_cell(scene, objects));
+        objects.occluders = occluders_of(room);
         scene.objects.push_back(std::move(objects));
     }
 

@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <numeric>
+#include <variant>
 
 #include <glm/common.hpp>
 
@@ -73,6 +74,29 @@ void build_cull_tree(CellObjects& cell) {
     std::iota(cell.order.begin(), cell.order.end(), 0);
     if (cell.objects.empty()) return;
     TreeBuilder{cell}.build(0, static_cast<int>(cell.objects.size()));
+}
+
+std::vector<std::pair<glm::dvec3, glm::dvec3>> occluders_of(const layout::Room& room) {
+    struct Candidate {
+        double area;
+        std::size_t index;
+        glm::dvec3 lo, hi;
+    };
+    std::vector<Candidate> found;
+    for (std::size_t i = 0; i < room.props.size(); ++i) {
+        const auto* box = std::get_if<layout::BoxProp>(&room.props[i]);
+        if (box == nullptr) continue;  // a model need not be convex
+        const glm::dvec3 e = box->max - box->min;
+        const double area = std::max({e.x * e.y, e.y * e.z, e.x * e.z});
+        if (area < kMinOccluderArea) continue;
+        const glm::dvec3 pad = 1e-6 + 1e-9 * glm::max(glm::abs(box->min), glm::abs(box->max));
+        found.push_back({area, i, box->min + pad, box->max - pad});
+    }
+    std::stable_sort(found.begin(), found.end(), [](const Candidate& a, const Candidate& b) { return a.area > b.area; });
+    if (found.size() > kMaxOccluders) found.resize(kMaxOccluders);
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> out;
+    for (const Candidate& c : found) out.emplace_back(c.lo, c.hi);
+    return out;
 }
 
 std::vector<DrawBatch> finish_cell(Scene& scene, CellObjects& cell) {

@@ -20,6 +20,13 @@ void bound_object(const Scene& scene, std::uint32_t first_vertex, const glm::dve
 inline constexpr int kCullLeafSize = 4;
 void build_cull_tree(CellObjects& cell);
 
+// The room's box props that can hide a portal: those with a face of at least
+// kMinOccluderArea, the kMaxOccluders largest, each shrunk by a micrometre
+// and a relative 1e-9 (as (min, max) in layout coordinates).
+inline constexpr double kMinOccluderArea = 0.25;  // m²
+inline constexpr std::size_t kMaxOccluders = 16;
+std::vector<std::pair<glm::dvec3, glm::dvec3>> occluders_of(const layout::Room& room);
+
 // Builds the tree, then renumbers the objects in its leaf order and moves
 // the cell's indices (its surfaces' and then its objects', the last in
 // scene.indices, as build_scene writes them) into objects in leaf order, then

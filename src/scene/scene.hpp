@@ -95,6 +95,9 @@ struct CullNode {
 // What a cell draws, split for culling: the room's faces always, each prop
 // when its bounds may be seen.
 struct CellObjects {
+    // The room's largest box props (scene/cell_objects.hpp, occluders_of),
+    // shrunk a little: whatever lies wholly in a box's shadow is hidden.
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> occluders;
     std::vector<DrawBatch> surfaces;  // the room's faces
     std::vector<CellObject> objects;  // the props, in the order they were written
     std::vector<DrawBatch> batches;   // the objects' batches, object after object
