@@ -88,6 +88,7 @@ BenchPlan plan_bench(const layout::Layout& layout, const BenchOptions& o) {
         add("cull=off", "cull", [](BenchConfig& c) { c.frame.cull_portals = false; });
         add("cull=on", "cull", [](BenchConfig& c) { c.frame.cull_portals = true; });
         add("occlusion=on", "occlusion", [](BenchConfig& c) { c.frame.occlusion_test = true; });
+        add("multi-draw=off", "multi-draw", [](BenchConfig& c) { c.frame.multi_draw = false; });
         for (double scale : {0.25, 0.5, 1.0}) {
             char name[32];
             std::snprintf(name, sizeof name, "texture=%g", scale);
@@ -107,13 +108,20 @@ BenchPlan plan_bench(const layout::Layout& layout, const BenchOptions& o) {
             plan.layouts.push_back(keep_first_portals(layout, n));
             add(name, kind, [&](BenchConfig& c) { c.layout_variant = static_cast<int>(plan.layouts.size()) - 1; });
         } else if (kind == "boxes") {
-            // "N/all": the same boxes with per-object culling off, to compare in one run.
-            const bool all = item.size() > 4 && item.compare(item.size() - 4, 4, "/all") == 0;
-            const int n = parse_int("--sweep boxes", all ? item.substr(0, item.size() - 4) : item, 0, 100000);
+            // "N/all": the same boxes with per-object culling off; "N/separate": one
+            // draw per run of visible props instead of a multi-draw; to compare in one run.
+            const auto suffixed = [&](const char* s) {
+                const std::string suffix(s);
+                return item.size() > suffix.size() && item.compare(item.size() - suffix.size(), suffix.size(), suffix) == 0;
+            };
+            const bool all = suffixed("/all"), separate = suffixed("/separate");
+            const std::string count = all || separate ? item.substr(0, item.find('/')) : item;
+            const int n = parse_int("--sweep boxes", count, 0, 100000);
             plan.layouts.push_back(with_extra_boxes(plan.layouts[0], n));
             add(name, kind, [&](BenchConfig& c) {
                 c.layout_variant = static_cast<int>(plan.layouts.size()) - 1;
                 c.frame.cull_objects = !all;
+                c.frame.multi_draw = !separate;
             });
         } else if (kind == "samples") {
             const int n = app::parse_samples(item);

@@ -60,6 +60,11 @@ struct FrameDesc : scene::View {
     // one of its room's large box props is skipped with its subtree
     // (render/object_culling.hpp).
     bool cull_objects = true;
+    // The plain batches of a cell a level draws (with per-object culling,
+    // runs of the index buffer between culled props) submitted as one
+    // glMultiDrawElementsIndirect instead of one draw each (render/multi_draw.hpp);
+    // off only to compare the two (bench).
+    bool multi_draw = true;
     // Textures read at level 0 with the magnification filter, as the tracer
     // reads them, instead of through their mipmaps: for comparing the two
     // (tests, bench's error), never for viewing (minified textures alias).

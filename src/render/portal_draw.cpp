@@ -106,15 +106,29 @@ void draw_cell(DrawContext& ctx, const LevelView& view) {
                         r.cull_batches);
         batches = &r.cull_batches;
     }
-    // Plain batches with the plain program; the others with the material
-    // variant, whose per-level uniforms are set when it is first needed.
+    // Plain batches with the plain program, queued and submitted together
+    // (FrameDesc::multi_draw) before the next batch with materials and at the
+    // end; the others with the material variant, whose per-level uniforms
+    // are set when it is first needed.
+    const int instances = ctx.frame.stereo == StereoMode::TwoPass ? 1 : 2;
+    const auto submit_plain = [&] {
+        if (r.indirect.pending.empty()) return;
+        r.state->program(ctx.program.program.get());
+        for (const IndirectDraw& d : r.indirect.pending) ctx.stats.triangles += static_cast<long>(d.count / 3) * instances;
+        ctx.stats.draw_calls += submit_indirect(r.indirect);
+    };
     bool material_ready = false;
     for (const scene::DrawBatch& b : *batches) {
         if (b.texture < 0 && b.alpha_cutoff < 0.0f) {
+            if (ctx.frame.multi_draw) {
+                queue_range(r.indirect, b.range, instances);
+                continue;
+            }
             r.state->program(ctx.program.program.get());
             draw_range(ctx, b.range);
             continue;
         }
+        submit_plain();
         assert(ctx.material_program != nullptr);
         const SceneProgram& m = *ctx.material_program;
         if (!material_ready) {
@@ -131,6 +145,7 @@ void draw_cell(DrawContext& ctx, const LevelView& view) {
             glBindTextureUnit(kSceneTextureUnit, r.gpu.textures[static_cast<std::size_t>(b.texture)].get());
         draw_range(ctx, b.range);
     }
+    submit_plain();
     r.state->program(ctx.program.program.get());
 }
 

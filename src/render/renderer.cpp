@@ -178,6 +178,7 @@ Result<void> Renderer::draw(const FrameDesc& frame, FrameStats* stats_out) {
     clear_target(r, target, 0);
     state.program(program.program.get());
     state.vertex_array(r.gpu.vao.get());
+    begin_indirect_frame(r.indirect);
 
     FrameStats stats;
     FrameProfiler profiler;
@@ -186,6 +187,7 @@ Result<void> Renderer::draw(const FrameDesc& frame, FrameStats* stats_out) {
     ctx.target = &target;
     draw_stereo(ctx);
     resolve_multisampled(r, frame);
+    unbind_indirect();
     // Nothing of this renderer stays bound: the cache is the context's, and
     // a name GL reuses after this renderer's objects are deleted must not
     // look bound already.

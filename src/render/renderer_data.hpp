@@ -9,6 +9,7 @@
 #include "gl/state.hpp"
 #include "math/portal.hpp"
 #include "render/gpu_scene.hpp"
+#include "render/multi_draw.hpp"
 #include "render/multisample.hpp"
 #include "render/object_culling.hpp"
 #include "render/scene_program.hpp"
@@ -45,6 +46,7 @@ struct RendererData {
     std::vector<scene::CellObjects> objects;  // per room: the same split for per-object culling
     CullScratch cull_scratch;                 // reused by every level (object_culling.hpp)
     std::vector<scene::DrawBatch> cull_batches;
+    IndirectDraws indirect;                   // FrameDesc::multi_draw's commands, rewritten every frame
     std::vector<scene::CellFrame> frames;  // per room: what its vertices are relative to
     std::vector<PortalInfo> portals;       // per layout portal
     bool has_windows = false;              // the window blend's programs are needed

@@ -83,12 +83,16 @@ TEST_F(BenchCli, TechniqueSweepMeasuresEveryConfigurationWithItsError) {
     const nlohmann::json j = json("t.json");
     std::map<std::string, nlohmann::json> by_name;
     for (const nlohmann::json& c : j["configs"]) by_name[c["name"]] = c;
-    ASSERT_EQ(by_name.size(), 17u);
+    ASSERT_EQ(by_name.size(), 18u);
     // Render-to-texture at full scale is exact; a quarter-size texture blurs.
     EXPECT_EQ(by_name["texture=1"]["id_mismatch_percent"], by_name["base"]["id_mismatch_percent"]);
     auto psnr = [](const nlohmann::json& v) { return v.is_null() ? HUGE_VAL : v.get<double>(); };  // null: identical
     EXPECT_LT(psnr(by_name["texture=0.25"]["psnr_db"]), psnr(by_name["texture=1"]["psnr_db"]));
     EXPECT_EQ(by_name["occlusion=on"]["id_mismatch_percent"], by_name["base"]["id_mismatch_percent"]);
+    // One draw per batch instead of a multi-draw: the same image.
+    EXPECT_EQ(by_name["multi-draw=off"]["id_mismatch_percent"], by_name["base"]["id_mismatch_percent"]);
+    EXPECT_EQ(by_name["multi-draw=off"]["psnr_db"], by_name["base"]["psnr_db"]);
+    EXPECT_GE(by_name["multi-draw=off"]["draw_calls"].get<double>(), by_name["base"]["draw_calls"].get<double>());
     const nlohmann::json& base = by_name["base"];
     // Two passes issue every draw once per eye.
     EXPECT_EQ(by_name["stereo=two-pass"]["draw_calls"].get<double>(), 2 * base["draw_calls"].get<double>());
@@ -150,12 +154,16 @@ TEST_F(BenchCli, ClosedPortalsAndDepthSweep) {
     // the head's room, drawn for both eyes.
     // "10/all" draws the same boxes without per-object culling: here all ten
     // are in view, so the counts agree; the image, and so the error, too.
-    ASSERT_EQ(run(std::string(kQuick) + " --portals 0 --sweep boxes:0,10,10/all --json b.json").status, 0);
+    // "10/separate" draws them with a draw per run instead of a multi-draw.
+    ASSERT_EQ(run(std::string(kQuick) + " --portals 0 --sweep boxes:0,10,10/all,10/separate --json b.json").status, 0);
     const nlohmann::json b = json("b.json");
-    ASSERT_EQ(b["configs"].size(), 4u);
+    ASSERT_EQ(b["configs"].size(), 5u);
     EXPECT_EQ(b["configs"][2]["triangles"].get<double>() - b["configs"][1]["triangles"].get<double>(), 10 * 12 * 2);
     EXPECT_EQ(b["configs"][3]["name"], "boxes=10/all");
     EXPECT_EQ(b["configs"][3]["triangles"].get<double>(), b["configs"][2]["triangles"].get<double>());
+    EXPECT_EQ(b["configs"][4]["name"], "boxes=10/separate");
+    EXPECT_EQ(b["configs"][4]["triangles"].get<double>(), b["configs"][2]["triangles"].get<double>());
+    EXPECT_EQ(run(std::string(kQuick) + " --sweep boxes:10/bogus").status, 1);
 }
 
 TEST_F(BenchCli, ScriptedWalkMeasuresEveryPose) {

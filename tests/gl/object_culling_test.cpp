@@ -39,7 +39,7 @@ TEST(ObjectCulling, SameImageWithFarFewerTrianglesThroughSixDoors) {
     ASSERT_TRUE(context.has_value()) << context.error();
     Result<render::Renderer> renderer = render::Renderer::create(context->state(), l, scene::build_scene(l));
     ASSERT_TRUE(renderer.has_value()) << renderer.error();
-    long culled_total = 0, full_total = 0;
+    long culled_total = 0, full_total = 0, culled_draws = 0, separate_draws = 0;
     for (int k = 0; k < 6; ++k) {
         render::FrameDesc f;
         f.room = l.start.room;
@@ -50,18 +50,30 @@ TEST(ObjectCulling, SameImageWithFarFewerTrianglesThroughSixDoors) {
         f.eye_height = 90;
         f.max_depth = 4;
         Result<render::RenderedFrame> culled = renderer->render(f);
+        f.multi_draw = false;
+        Result<render::RenderedFrame> separate = renderer->render(f);
+        f.multi_draw = true;
         f.cull_objects = false;
         Result<render::RenderedFrame> full = renderer->render(f);
-        ASSERT_TRUE(culled && full);
+        ASSERT_TRUE(culled && separate && full);
         EXPECT_EQ(testing::count_colour_differences(culled->image, full->image), 0) << "pose " << k;
         EXPECT_EQ(testing::count_id_differences(culled->image, full->image), 0) << "pose " << k;
+        EXPECT_EQ(testing::count_colour_differences(culled->image, separate->image), 0) << "pose " << k;
+        EXPECT_EQ(testing::count_id_differences(culled->image, separate->image), 0) << "pose " << k;
         EXPECT_LT(culled->stats.triangles, full->stats.triangles) << "pose " << k;
+        EXPECT_EQ(culled->stats.triangles, separate->stats.triangles) << "pose " << k;
+        // The runs of visible props between culled ones take one multi-draw
+        // per cell drawn: no more calls than drawing every prop.
+        EXPECT_LE(culled->stats.draw_calls, full->stats.draw_calls) << "pose " << k;
         culled_total += culled->stats.triangles;
         full_total += full->stats.triangles;
+        culled_draws += culled->stats.draw_calls;
+        separate_draws += separate->stats.draw_calls;
     }
     // Seven rooms of 1,800 prop triangles each: a view sees a fraction of the
     // head's room and slivers of the others.
     EXPECT_LT(culled_total * 3, full_total);
+    EXPECT_LT(2 * culled_draws, separate_draws);
 }
 
 TEST(ObjectCulling, ATreeOverManyObjectsKeepsEveryObjectOnceAndBoundsItsChildren) {
