@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 
 #include "scene/mesh_writer.hpp"
 
@@ -87,18 +88,16 @@ bool hidden_by_occluder(const scene::CellObjects& cell, const EyeView& eye, cons
 
 void visible_batches(const scene::CellObjects& cell, const LevelView& view, int eye_width, int eye_height,
                      double margin_px, CullScratch& scratch, std::vector<scene::DrawBatch>& out) {
-    out.clear();
     if (cell.nodes.empty()) {
         out.assign(cell.surfaces.begin(), cell.surfaces.end());
         return;
     }
+    out.clear();
     std::array<EyePlanes, 2> eyes;
     int eye_count = 0;
     for (const EyeView& ev : view.eyes) {
         if (!ev.active || ev.rect.empty()) continue;
-        const double mx = margin_px * 2.0 / eye_width, my = margin_px * 2.0 / eye_height;
-        const NdcRect r{ev.rect.x0 - mx, ev.rect.y0 - my, ev.rect.x1 + mx, ev.rect.y1 + my};
-        eyes[static_cast<std::size_t>(eye_count++)] = eye_planes(ev, r);
+        eyes[static_cast<std::size_t>(eye_count++)] = eye_planes(ev, widened(ev.rect, margin_px, eye_width, eye_height));
     }
     const auto hidden = [&](const glm::dvec3& lo, const glm::dvec3& hi) {
         for (int e = 0; e < eye_count; ++e)
@@ -125,7 +124,9 @@ void visible_batches(const scene::CellObjects& cell, const LevelView& view, int 
             if (node.count == 1 || !hidden(object.lo, object.hi)) scratch.visible.push_back(o);
         }
     }
-    std::sort(scratch.visible.begin(), scratch.visible.end());
+    // Left subtrees first, and finish_cell numbers the objects in leaf order:
+    // the visible ones come out in the order their indices are stored.
+    assert(std::is_sorted(scratch.visible.begin(), scratch.visible.end()));
     for (const int o : scratch.visible) {
         const scene::CellObject& object = cell.objects[static_cast<std::size_t>(o)];
         for (std::uint32_t b = object.first_batch; b < object.first_batch + object.batch_count; ++b)

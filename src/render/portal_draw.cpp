@@ -35,8 +35,7 @@ void set_eye_uniforms(const DrawContext& ctx, const LevelView& view, const std::
             // whose centre the portal covers; the stencil bounds the rest.
             // Never past the eye's own image: in clip-shift mode x = ±1 is
             // the seam between the two eyes.
-            const double mx = 2.0 / eye_w, my = 2.0 / eye_h;
-            nr = intersect({nr.x0 - mx, nr.y0 - my, nr.x1 + mx, nr.y1 + my}, NdcRect{});
+            nr = intersect(widened(nr, 1.0, eye_w, eye_h), NdcRect{});
         }
         rect[e][0] = static_cast<float>(nr.x0);
         rect[e][1] = static_cast<float>(nr.y0);

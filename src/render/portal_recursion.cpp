@@ -62,8 +62,7 @@ void clear_depth_in_portal(DrawContext& ctx, const LevelView& view, int stencil_
     int count = 0;
     for (int e = 0; e < 2; ++e) {
         if (!view.eyes[e].active || rects[e].empty()) continue;
-        const double mx = 4.0 / ctx.frame.eye_width, my = 4.0 / ctx.frame.eye_height;
-        const NdcRect q = intersect({rects[e].x0 - mx, rects[e].y0 - my, rects[e].x1 + mx, rects[e].y1 + my}, NdcRect{});
+        const NdcRect q = intersect(widened(rects[e], 2.0, ctx.frame.eye_width, ctx.frame.eye_height), NdcRect{});
         const double shift = whole_target ? (e == 0 ? -1.0 : 1.0) : 0.0;
         const double scale = whole_target ? 0.5 : 1.0;
         quads[count][0] = static_cast<float>(scale * (q.x0 + shift));

@@ -21,6 +21,14 @@ inline NdcRect intersect(const NdcRect& a, const NdcRect& b) {
     return {std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
 }
 
+// `r` grown by `px` pixels on every side, for an eye image of width × height
+// pixels. The margins of a level (how far its draws and its culling may
+// reach past a portal's rectangle) are in pixels, set where they are used.
+inline NdcRect widened(const NdcRect& r, double px, int width, int height) {
+    const double mx = 2.0 * px / width, my = 2.0 * px / height;
+    return {r.x0 - mx, r.y0 - my, r.x1 + mx, r.y1 + my};
+}
+
 struct EyeView {
     bool active = false;
     math::Eye eye;                      // in the cell's coordinates
