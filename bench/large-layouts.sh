@@ -50,16 +50,24 @@ while [ "$r" -le "$runs" ]; do
     done
     r=$((r + 1))
 done
+# The error of the same view against the tracer, once per size (not timed).
+for n in $sizes; do
+    "$build/impossible" bench "$tmp/large_$n.json" --size 640x360 --frames 1 --warmup 0 --profile-frames 0 \
+        --error --json "$tmp/error_$n.json" >/dev/null
+done
 
 csv=$results/large_layouts.csv
-echo "n,rooms,portals,load_ms,report_ms,scene_ms,validate_ms,frame_ms,draw_calls,triangles" >"$csv"
+echo "n,rooms,portals,load_ms,report_ms,scene_ms,validate_ms,frame_ms,draw_calls,triangles,id_mismatch_percent,psnr_db" >"$csv"
 for n in $sizes; do
     read -r rooms portals load report scene <"$tmp/stages_$n.txt"
     validate=$(median <"$tmp/validate_ms_$n")
     frame=$(median <"$tmp/frame_ms_$n")
     draws=$(json_number draw_calls "$tmp/bench_${n}_1.json")
     tris=$(json_number triangles "$tmp/bench_${n}_1.json")
-    echo "$n,$rooms,$portals,$load,$report,$scene,$validate,$frame,$draws,$tris" >>"$csv"
+    mism=$(json_number id_mismatch_percent "$tmp/error_$n.json")
+    psnr=$(json_number psnr_db "$tmp/error_$n.json")
+    psnr=${psnr:-identical}  # null: the images are equal
+    echo "$n,$rooms,$portals,$load,$report,$scene,$validate,$frame,$draws,$tris,$mism,$psnr" >>"$csv"
 done
 cat "$csv"
 

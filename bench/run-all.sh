@@ -23,6 +23,14 @@ run() {
     shift
     i=1
     while [ "$i" -le "$runs" ]; do
+        # The error against the tracer is the same in every run (summarise.sh
+        # reads the first run's): traced in the first run only.
+        if [ "$i" -eq 2 ]; then
+            for a in "$@"; do
+                shift
+                [ "$a" = "--error" ] || set -- "$@" "$a"
+            done
+        fi
         echo "== $name, run $i of $runs" >&2
         "$bin" bench "$@" --frames "$frames" --csv "$out/$name.$i.csv" --json "$out/$name.$i.json" \
             >"$out/$name.$i.txt"
@@ -36,10 +44,10 @@ run techniques_default "$L/default.json" --size 640x360 --sweep techniques
 run techniques_corridor "$L/corridor.json" --size 640x360 --sweep techniques
 run techniques_vr "$L/vr_study.json" --size 640x360 --sweep techniques
 # Scaling, on the VR-study layout: doors opened pair by pair, then resolution.
-run portals_vr "$L/vr_study.json" --size 1280x720 --max-depth 4 --sweep portals:0,2,4,6
-run size_vr "$L/vr_study.json" --max-depth 4 --size 1280x720 --sweep size:320x180,640x360,1280x720,1920x1080
+run portals_vr "$L/vr_study.json" --size 1280x720 --max-depth 4 --sweep portals:0,2,4,6 --error
+run size_vr "$L/vr_study.json" --max-depth 4 --size 1280x720 --sweep size:320x180,640x360,1280x720,1920x1080 --error
 run triangles_vr "$L/vr_study.json" --max-depth 4 --size 1280x720 \
-    --sweep boxes:0,100,1000,1000/all,4000,10000,10000/all
+    --sweep boxes:0,100,1000,1000/all,1000/separate,4000,10000,10000/all --error
 # A large glTF mesh (a bumpy sphere of about a million triangles, made here):
 # in view, and behind the eye, where per-object culling drops it.
 sphere=$(mktemp -d)
@@ -56,9 +64,9 @@ run sphere_behind "$sphere/sphere.json" --size 640x360 --pose 0,1.6,1.5,180,0,0 
 # Textures and materials: the gallery's start view, with its error.
 run gallery "$L/gallery.json" --size 640x360 --error
 # Recursion depth: behind an occluding wall, and in the open corridor.
-run depth_wall "$L/corridor_wall.json" --size 1280x720 --sweep depth:1,2,4,8,16,64
-run depth_wall_occlusion "$L/corridor_wall.json" --size 1280x720 --occlusion-test --sweep depth:1,2,4,8,16,64
-run depth_open "$L/corridor.json" --size 1280x720 --sweep depth:1,2,4,8,16,64
+run depth_wall "$L/corridor_wall.json" --size 1280x720 --sweep depth:1,2,4,8,16,64 --error
+run depth_wall_occlusion "$L/corridor_wall.json" --size 1280x720 --occlusion-test --sweep depth:1,2,4,8,16,64 --error
+run depth_open "$L/corridor.json" --size 1280x720 --sweep depth:1,2,4,8,16,64 --error
 # Mirrors and windows: a door, a mirror and a window of the same size in one
 # view (per-portal times), then each filling the view from 0.6 m; and two
 # facing mirrors by depth.

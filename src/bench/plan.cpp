@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 #include "layout/path_file.hpp"
@@ -101,6 +102,7 @@ BenchPlan plan_bench(const layout::Layout& layout, const BenchOptions& o) {
     if (o.sweep.empty()) return plan;
     const size_t colon = o.sweep.find(':');
     const std::string kind = o.sweep.substr(0, colon);
+    std::map<int, int> box_layouts;  // boxes per room → its layout variant
     for (const std::string& item : split(o.sweep.substr(colon + 1), ',')) {
         const std::string name = kind + "=" + item;
         if (kind == "portals") {
@@ -117,9 +119,13 @@ BenchPlan plan_bench(const layout::Layout& layout, const BenchOptions& o) {
             const bool all = suffixed("/all"), separate = suffixed("/separate");
             const std::string count = all || separate ? item.substr(0, item.find('/')) : item;
             const int n = parse_int("--sweep boxes", count, 0, 100000);
-            plan.layouts.push_back(with_extra_boxes(plan.layouts[0], n));
+            // One layout per count, shared by its variants (the tracer then
+            // draws each count's reference once).
+            auto [at, made] = box_layouts.try_emplace(n, static_cast<int>(plan.layouts.size()));
+            if (made) plan.layouts.push_back(with_extra_boxes(plan.layouts[0], n));
+            const int variant = at->second;
             add(name, kind, [&](BenchConfig& c) {
-                c.layout_variant = static_cast<int>(plan.layouts.size()) - 1;
+                c.layout_variant = variant;
                 c.frame.cull_objects = !all;
                 c.frame.multi_draw = !separate;
             });

@@ -56,14 +56,27 @@ struct Item {
     dvec3 centre;  // of the box
 };
 
-Item item_of(const PropTriangle& t) {
-    Item item;
-    for (const dvec3& p : t.position) item.box.grow(p);
+Item padded(Item item) {
     const double pad = kPad * std::max(max_abs(item.box.lo), max_abs(item.box.hi));
     item.box.lo -= pad;
     item.box.hi += pad;
     item.centre = 0.5 * (item.box.lo + item.box.hi);
     return item;
+}
+
+Item item_of(const PropTriangle& t) {
+    Item item;
+    for (const dvec3& p : t.position) item.box.grow(p);
+    return padded(item);
+}
+
+// A prop box's hit (hit_prop_box) lies on its surface, inside its padded
+// bounds, as a triangle's lies in its own.
+Item item_of(const PropBox& b) {
+    Item item;
+    item.box.grow(b.min);
+    item.box.grow(b.max);
+    return padded(item);
 }
 
 // Whether hit_triangle's t can stray far from the triangle (a needle or a
@@ -84,7 +97,7 @@ bool is_sliver(const PropTriangle& t) {
 
 class Builder {
 public:
-    Builder(const std::vector<Item>& items, TriangleBvh& bvh) : items_(items), bvh_(bvh) {}
+    Builder(const std::vector<Item>& items, Bvh& bvh) : items_(items), bvh_(bvh) {}
 
     // Builds the subtree over order[begin, end) at `depth`; returns its index.
     int build(int begin, int end, int depth) {
@@ -174,7 +187,7 @@ private:
     }
 
     const std::vector<Item>& items_;
-    TriangleBvh& bvh_;
+    Bvh& bvh_;
 };
 
 // The slab test against a node's box widened by `pad`: whether the ray meets
@@ -211,62 +224,16 @@ struct RaySlabs {
     }
 };
 
-}  // namespace
-
-TriangleHit nearest_triangle_scan(const std::vector<PropTriangle>& triangles, std::span<const PropMaterial> materials,
-                                  const dvec3& origin, const dvec3& dir, const ClipPlane& clip, double t_limit) {
-    TriangleHit best;
-    double best_t = t_limit;
-    const int n = static_cast<int>(triangles.size());
-    for (int i = 0; i < n; ++i) {
-        const std::optional<SurfaceHit> hit = hit_triangle(triangles[i], materials, origin, dir, clip);
-        if (hit && hit->t < best_t) {
-            best_t = hit->t;
-            best.hit = hit;
-            best.index = i;
-        }
-    }
-    return best;
-}
-
-TriangleBvh build_bvh(const std::vector<PropTriangle>& triangles) {
-    TriangleBvh bvh;
-    std::vector<Item> items;
-    items.reserve(triangles.size());
-    for (int i = 0; i < static_cast<int>(triangles.size()); ++i) {
-        items.push_back(item_of(triangles[i]));
-        (is_sliver(triangles[i]) ? bvh.slivers : bvh.order).push_back(i);
-    }
-    if (bvh.order.empty()) return bvh;
-    bvh.nodes.reserve(bvh.order.size());
-    Builder(items, bvh).build(0, static_cast<int>(bvh.order.size()), 0);
-    return bvh;
-}
-
-TriangleHit nearest_triangle(const TriangleBvh& bvh, const std::vector<PropTriangle>& triangles,
-                             std::span<const PropMaterial> materials, const dvec3& origin, const dvec3& dir,
-                             const ClipPlane& clip, double t_limit) {
-    TriangleHit best;
-    double best_t = t_limit;
-    // The tie rule: at equal t the lower index wins, as in the scan; a tie
-    // with t_limit (best.index < 0) loses.
-    auto consider = [&](int index) {
-        const std::optional<SurfaceHit> hit = hit_triangle(triangles[index], materials, origin, dir, clip);
-        if (hit && (hit->t < best_t || (hit->t == best_t && best.index >= 0 && index < best.index))) {
-            best_t = hit->t;
-            best.hit = hit;
-            best.index = index;
-        }
-    };
-    for (int index : bvh.slivers) consider(index);
-    if (bvh.nodes.empty()) return best;
-
+// Calls consider(index) for every item in a leaf the ray enters at a t no
+// greater than best_t, which consider lowers as it finds hits: the nearer
+// child first. A node is skipped only when the ray enters it beyond best_t:
+// one it enters at best_t may still hold an item that ties with the best one
+// and comes before it in the list. Allocates nothing.
+template <class Consider>
+void visit(const Bvh& bvh, const dvec3& origin, const dvec3& dir, const double& best_t, Consider&& consider) {
     const RaySlabs ray(origin, dir);
-    // A node is skipped only when the ray enters it beyond best_t: one it
-    // enters at best_t may still hold a triangle that ties with the best one
-    // and comes before it in the list.
     double t_enter = 0.0;
-    if (!ray.enters(bvh.nodes[0], t_enter) || t_enter > best_t) return best;
+    if (!ray.enters(bvh.nodes[0], t_enter) || t_enter > best_t) return;
 
     // Nodes still to visit, with their entry t. A node is pushed only while
     // its sibling is visited, at most one per level (depth ≤ kBvhMaxDepth).
@@ -302,7 +269,7 @@ TriangleHit nearest_triangle(const TriangleBvh& bvh, const std::vector<PropTrian
             }
         }
         for (;;) {
-            if (pending == 0) return best;
+            if (pending == 0) return;
             const Pending next = stack[--pending];
             if (next.t <= best_t) {
                 node = next.node;
@@ -310,6 +277,106 @@ TriangleHit nearest_triangle(const TriangleBvh& bvh, const std::vector<PropTrian
             }
         }
     }
+}
+
+}  // namespace
+
+TriangleHit nearest_triangle_scan(const std::vector<PropTriangle>& triangles, std::span<const PropMaterial> materials,
+                                  const dvec3& origin, const dvec3& dir, const ClipPlane& clip, double t_limit) {
+    TriangleHit best;
+    double best_t = t_limit;
+    const int n = static_cast<int>(triangles.size());
+    for (int i = 0; i < n; ++i) {
+        const std::optional<SurfaceHit> hit = hit_triangle(triangles[i], materials, origin, dir, clip);
+        if (hit && hit->t < best_t) {
+            best_t = hit->t;
+            best.hit = hit;
+            best.index = i;
+        }
+    }
+    return best;
+}
+
+Bvh build_bvh(const std::vector<PropTriangle>& triangles) {
+    Bvh bvh;
+    std::vector<Item> items;
+    items.reserve(triangles.size());
+    for (int i = 0; i < static_cast<int>(triangles.size()); ++i) {
+        items.push_back(item_of(triangles[i]));
+        (is_sliver(triangles[i]) ? bvh.slivers : bvh.order).push_back(i);
+    }
+    if (bvh.order.empty()) return bvh;
+    bvh.nodes.reserve(bvh.order.size());
+    Builder(items, bvh).build(0, static_cast<int>(bvh.order.size()), 0);
+    return bvh;
+}
+
+TriangleHit nearest_triangle(const Bvh& bvh, const std::vector<PropTriangle>& triangles,
+                             std::span<const PropMaterial> materials, const dvec3& origin, const dvec3& dir,
+                             const ClipPlane& clip, double t_limit) {
+    TriangleHit best;
+    double best_t = t_limit;
+    // The tie rule: at equal t the lower index wins, as in the scan; a tie
+    // with t_limit (best.index < 0) loses.
+    auto consider = [&](int index) {
+        const std::optional<SurfaceHit> hit = hit_triangle(triangles[index], materials, origin, dir, clip);
+        if (hit && (hit->t < best_t || (hit->t == best_t && best.index >= 0 && index < best.index))) {
+            best_t = hit->t;
+            best.hit = hit;
+            best.index = index;
+        }
+    };
+    for (int index : bvh.slivers) consider(index);
+    if (bvh.nodes.empty()) return best;
+    visit(bvh, origin, dir, best_t, consider);
+    return best;
+}
+
+BoxHit nearest_box_scan(const std::vector<PropBox>& boxes, const dvec3& origin, const dvec3& dir,
+                        const ClipPlane& clip, double t_limit) {
+    BoxHit best;
+    double best_t = t_limit;
+    const int n = static_cast<int>(boxes.size());
+    for (int i = 0; i < n; ++i) {
+        const std::optional<SurfaceHit> hit = hit_prop_box(boxes[i], origin, dir, clip);
+        if (hit && hit->t < best_t) {
+            best_t = hit->t;
+            best.hit = hit;
+            best.index = i;
+        }
+    }
+    return best;
+}
+
+Bvh build_box_bvh(const std::vector<PropBox>& boxes) {
+    Bvh bvh;
+    std::vector<Item> items;
+    items.reserve(boxes.size());
+    for (int i = 0; i < static_cast<int>(boxes.size()); ++i) {
+        items.push_back(item_of(boxes[i]));
+        bvh.order.push_back(i);
+    }
+    if (bvh.order.empty()) return bvh;
+    bvh.nodes.reserve(bvh.order.size());
+    Builder(items, bvh).build(0, static_cast<int>(bvh.order.size()), 0);
+    return bvh;
+}
+
+BoxHit nearest_box(const Bvh& bvh, const std::vector<PropBox>& boxes, const dvec3& origin, const dvec3& dir,
+                   const ClipPlane& clip, double t_limit) {
+    BoxHit best;
+    double best_t = t_limit;
+    if (bvh.nodes.empty()) return best;
+    // The scan's rule, as for triangles.
+    visit(bvh, origin, dir, best_t, [&](int index) {
+        const std::optional<SurfaceHit> hit = hit_prop_box(boxes[index], origin, dir, clip);
+        if (hit && (hit->t < best_t || (hit->t == best_t && best.index >= 0 && index < best.index))) {
+            best_t = hit->t;
+            best.hit = hit;
+            best.index = index;
+        }
+    });
+    return best;
 }
 
 }  // namespace impossible::trace

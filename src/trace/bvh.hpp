@@ -1,5 +1,6 @@
-// The nearest of a room's glTF triangles along a ray: by a linear scan, or
-// through a bounding-volume hierarchy that gives exactly the same answer.
+// The nearest of a room's glTF triangles, or of its prop boxes, along a ray:
+// by a linear scan, or through a bounding-volume hierarchy that gives
+// exactly the same answer.
 //
 // The tree (binned surface-area heuristic, after Wald, "On fast Construction
 // of SAH-based Bounding Volume Hierarchies", 2007) is built once per prepared
@@ -38,12 +39,25 @@ TriangleHit nearest_triangle_scan(const std::vector<PropTriangle>& triangles, st
 // hold at most kBvhLeafSize triangles, except below depth kBvhMaxDepth.
 inline constexpr int kBvhLeafSize = 4;
 inline constexpr int kBvhMaxDepth = 60;
-TriangleBvh build_bvh(const std::vector<PropTriangle>& triangles);
+Bvh build_bvh(const std::vector<PropTriangle>& triangles);
 
 // The same answer as nearest_triangle_scan(triangles, …), through `bvh`,
 // which must have been built over `triangles`. Allocates nothing.
-TriangleHit nearest_triangle(const TriangleBvh& bvh, const std::vector<PropTriangle>& triangles,
+TriangleHit nearest_triangle(const Bvh& bvh, const std::vector<PropTriangle>& triangles,
                              std::span<const PropMaterial> materials, const dvec3& origin, const dvec3& dir,
                              const ClipPlane& clip, double t_limit);
+
+// The same for prop boxes (hit_prop_box), with the same rule: the first box
+// in the list among those hit at the smallest t below t_limit. A room's
+// boxes are offered after its faces, which win a tie (tracer.cpp).
+struct BoxHit {
+    std::optional<SurfaceHit> hit;
+    int index = -1;
+};
+BoxHit nearest_box_scan(const std::vector<PropBox>& boxes, const dvec3& origin, const dvec3& dir,
+                        const ClipPlane& clip, double t_limit);
+Bvh build_box_bvh(const std::vector<PropBox>& boxes);
+BoxHit nearest_box(const Bvh& bvh, const std::vector<PropBox>& boxes, const dvec3& origin, const dvec3& dir,
+                   const ClipPlane& clip, double t_limit);
 
 }  // namespace impossible::trace

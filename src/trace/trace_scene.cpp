@@ -99,6 +99,7 @@ Scene prepare_scene(const layout::Layout& layout) {
         }
         for (const layout::Prop& prop : room.props) add_prop(r, prop);
         r.bvh = build_bvh(r.triangles);
+        if (r.boxes.size() > static_cast<std::size_t>(kBvhLeafSize)) r.box_bvh = build_box_bvh(r.boxes);
         r.checker = room.checker;
         scene.rooms.push_back(std::move(r));
     }

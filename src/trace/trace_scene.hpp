@@ -100,20 +100,20 @@ struct ScenePortal {
     bool in_hole = false;      // fills a hole of one of its room's faces
 };
 
-// A node of a room's bounding-volume hierarchy over its triangles
-// (trace/bvh.hpp). The box holds every triangle below, padded (bvh.cpp).
+// A node of a room's bounding-volume hierarchy over its triangles or its
+// boxes (trace/bvh.hpp). The box holds every item below, padded (bvh.cpp).
 // Nodes are stored depth-first: an inner node's first child follows it.
 struct BvhNode {
     dvec3 lo{0.0};
     dvec3 hi{0.0};
-    int first = 0;  // leaf: its first entry in TriangleBvh::order; inner: the second child's index
-    int count = 0;  // leaf: its number of triangles (> 0); inner: 0
+    int first = 0;  // leaf: its first entry in Bvh::order; inner: the second child's index
+    int count = 0;  // leaf: its number of items (> 0); inner: 0
 };
 
-struct TriangleBvh {
+struct Bvh {
     std::vector<BvhNode> nodes;  // nodes[0] is the root; none: no tree
-    std::vector<int> order;      // indices into SceneRoom::triangles, leaf after leaf
-    std::vector<int> slivers;    // triangles tested on every ray, outside the tree (bvh.cpp)
+    std::vector<int> order;      // indices into the items (SceneRoom::triangles or boxes), leaf after leaf
+    std::vector<int> slivers;    // triangles tested on every ray, outside the tree (bvh.cpp); boxes: none
 };
 
 struct SceneRoom {
@@ -121,9 +121,11 @@ struct SceneRoom {
     std::vector<PropBox> boxes;
     std::vector<PropTriangle> triangles;
     std::vector<PropMaterial> materials;  // those the triangles name, by PropTriangle::material
-    // Built by prepare_scene over `triangles`. Without nodes the tracer scans
-    // the triangles one by one; the tests clear it to compare the two.
-    TriangleBvh bvh;
+    // Built by prepare_scene over `triangles`, and over `boxes` when there
+    // are more than a leaf's worth. Without nodes the tracer scans them one
+    // by one; the tests clear them to compare the two.
+    Bvh bvh;
+    Bvh box_bvh;
     std::vector<int> portals;  // indices into Scene::portals
     double checker = 0.0;      // checker side for the faces, 0: plain
 };

@@ -60,8 +60,12 @@ Nearest nearest_in_room(const Scene& scene, int room_index, const dvec3& origin,
         if (nearest.offer(hit, hit ? hit->portal : -1, face.color, room.checker) && face.texture)
             nearest.textured_face = &face;
     }
-    for (const PropBox& box : room.boxes)
-        nearest.offer(hit_prop_box(box, origin, dir, clip), -1, box.color, 0.0);
+    // The boxes after the faces, losing a tie to them; the first box of those
+    // at the smallest t (bvh.hpp).
+    const double box_limit = nearest.found ? nearest.t : std::numeric_limits<double>::infinity();
+    const BoxHit box = room.box_bvh.nodes.empty() ? nearest_box_scan(room.boxes, origin, dir, clip, box_limit)
+                                                  : nearest_box(room.box_bvh, room.boxes, origin, dir, clip, box_limit);
+    if (box.hit) nearest.offer(box.hit, -1, room.boxes[box.index].color, 0.0);
     // The triangles come after the faces and boxes and lose a tie to them;
     // among themselves the first in the list wins one (bvh.hpp).
     const double t_limit = nearest.found ? nearest.t : std::numeric_limits<double>::infinity();

@@ -120,7 +120,7 @@ struct Tally {
 
 // The scan and the tree on one ray: the same triangle, t and normal.
 void expect_same(const std::vector<PropTriangle>& soup, std::span<const PropMaterial> materials,
-                 const TriangleBvh& bvh, const dvec3& origin, const dvec3& dir, const ClipPlane& clip,
+                 const Bvh& bvh, const dvec3& origin, const dvec3& dir, const ClipPlane& clip,
                  double t_limit, Tally& tally) {
     const TriangleHit scan = nearest_triangle_scan(soup, materials, origin, dir, clip, t_limit);
     const TriangleHit tree = nearest_triangle(bvh, soup, materials, origin, dir, clip, t_limit);
@@ -150,7 +150,7 @@ void expect_same(const std::vector<PropTriangle>& soup, std::span<const PropMate
 
 void check_soup(const std::vector<PropTriangle>& soup, std::span<const PropMaterial> materials, std::mt19937_64& rng,
                 dvec3 offset, double scale, Tally& tally) {
-    const TriangleBvh bvh = build_bvh(soup);
+    const Bvh bvh = build_bvh(soup);
     ASSERT_FALSE(bvh.nodes.empty());
     const std::vector<dvec3> targets = targets_of(soup);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -293,7 +293,7 @@ TEST(Bvh, MaskAndDoubleSidedChangeWhatIsHit) {
         soup.push_back(b);
     }
     // Only front faces are seen from above: (0, 1, 0) · dir < 0.
-    const TriangleBvh bvh = build_bvh(soup);
+    const Bvh bvh = build_bvh(soup);
     auto down_at = [&](double x, double z) {
         const TriangleHit scan = nearest_triangle_scan(soup, materials, {x, 3.0, z}, {0, -1, 0}, ClipPlane{}, kInf);
         const TriangleHit tree = nearest_triangle(bvh, soup, materials, {x, 3.0, z}, {0, -1, 0}, ClipPlane{}, kInf);
@@ -321,7 +321,7 @@ TEST(Bvh, MaskAndDoubleSidedChangeWhatIsHit) {
 TEST(Bvh, EveryTriangleOnceInLeavesThatHoldIt) {
     std::mt19937_64 rng(7);
     const std::vector<PropTriangle> soup = adversarial_soup(rng, dvec3(1.0, 2.0, 3.0), 2.0);
-    const TriangleBvh bvh = build_bvh(soup);
+    const Bvh bvh = build_bvh(soup);
     std::vector<int> seen(soup.size(), 0);
     // Walk the tree: children inside their parent, leaves small and
     // holding their triangles' vertices.
@@ -361,7 +361,7 @@ TEST(Bvh, EveryTriangleOnceInLeavesThatHoldIt) {
 TEST(Bvh, SameInputSameTree) {
     std::mt19937_64 rng(5);
     const std::vector<PropTriangle> soup = adversarial_soup(rng, dvec3(0.0), 1.0);
-    const TriangleBvh a = build_bvh(soup), b = build_bvh(soup);
+    const Bvh a = build_bvh(soup), b = build_bvh(soup);
     EXPECT_EQ(a.order, b.order);
     ASSERT_EQ(a.nodes.size(), b.nodes.size());
     for (size_t k = 0; k < a.nodes.size(); ++k) {
@@ -376,7 +376,7 @@ TEST(Bvh, AllCentresTheSameSplitsByPosition) {
     // 100 copies of one triangle: no plane separates them, yet leaves stay
     // small, and the first copy is the one hit.
     const std::vector<PropTriangle> soup(100, triangle({-1, 0, -1}, {0, 0, 1}, {1, 0, -1}));
-    const TriangleBvh bvh = build_bvh(soup);
+    const Bvh bvh = build_bvh(soup);
     for (const BvhNode& n : bvh.nodes) EXPECT_LE(n.count, kBvhLeafSize);
     const TriangleHit hit = nearest_triangle(bvh, soup, {}, {0.1, 2.0, 0.1}, {0.0, -1.0, 0.0}, ClipPlane{}, kInf);
     ASSERT_TRUE(hit.hit);
