@@ -76,22 +76,26 @@ const json* field(const json& object, const char* name) {
     return it == object.end() ? nullptr : &*it;
 }
 
-Checker::Checker(std::string_view text, std::string file, const JsonDocument& document)
-    : text_(text), file_(std::move(file)), document_(document) {}
+Checker::Checker(std::string_view text, std::string file) : text_(text), file_(std::move(file)) {}
+
+const ValuePositions& Checker::positions() const {
+    if (!positions_) positions_ = value_positions(text_);
+    return *positions_;
+}
 
 std::size_t Checker::offset_of(const Path& at) const {
     std::string pointer = at.pointer;
     for (;;) {
-        const auto it = document_.positions.find(pointer);
-        if (it != document_.positions.end()) return it->second.value;
+        const auto it = positions().find(pointer);
+        if (it != positions().end()) return it->second.value;
         if (pointer.empty()) return kNoOffset;
         pointer.erase(pointer.rfind('/'));
     }
 }
 
 std::size_t Checker::key_offset_of(const Path& at) const {
-    const auto it = document_.positions.find(at.pointer);
-    if (it != document_.positions.end() && it->second.key != kNoOffset) return it->second.key;
+    const auto it = positions().find(at.pointer);
+    if (it != positions().end() && it->second.key != kNoOffset) return it->second.key;
     return offset_of(at);
 }
 

@@ -43,7 +43,8 @@ enum class NumberKind {
 
 class Checker {
 public:
-    Checker(std::string_view text, std::string file, const JsonDocument& document);
+    // `text` is the JSON text that parse_json accepted.
+    Checker(std::string_view text, std::string file);
 
     void error(const Path& at, std::string_view message);         // at the value
     void error_at_key(const Path& at, std::string_view message);  // at its key
@@ -82,10 +83,11 @@ private:
 
     std::string_view text_;
     std::string file_;
-    const JsonDocument& document_;
+    mutable std::optional<ValuePositions> positions_;  // made for the first problem (json_doc.hpp)
     std::vector<Pending> errors_;
     std::vector<Pending> warnings_;
 
+    const ValuePositions& positions() const;
     std::size_t key_offset_of(const Path& at) const;
     std::vector<Diagnostic> finish(std::vector<Pending> pending) const;
 };

@@ -154,8 +154,9 @@ std::size_t token_start(std::string_view text, std::size_t noticed, const std::s
 // text that passes a limit it stops at the value that passed it.
 class PositionScanner {
 public:
-    explicit PositionScanner(std::string_view text, JsonDocument* document)
-        : text_(text), document_(document) {}
+    // Records positions and repeated keys into what is not null.
+    PositionScanner(std::string_view text, ValuePositions* positions, std::vector<DuplicateKey>* duplicates)
+        : text_(text), positions_(positions), duplicates_(duplicates) {}
 
     std::size_t limit_offset = kNoOffset;
     std::string limit_reason;
@@ -198,7 +199,8 @@ private:
     };
 
     std::string_view text_;
-    JsonDocument* document_;  // null: only find the limits
+    ValuePositions* positions_;
+    std::vector<DuplicateKey>* duplicates_;
     std::size_t pos_ = 0;
     std::size_t values_ = 0;
     std::vector<Frame> stack_;
@@ -219,7 +221,7 @@ private:
                            " values";
             return false;
         }
-        if (document_ != nullptr) document_->positions[pointer] = {pos_, key};
+        if (positions_ != nullptr) (*positions_)[pointer] = {pos_, key};
         const char c = text_[pos_];
         if (c == '{' || c == '[') {
             if (stack_.size() >= limits::kMaxDepth) {
@@ -272,9 +274,7 @@ private:
         skip_space();
         const auto [first, inserted] = frame.keys.emplace(name, key);
         pointer = frame.pointer + "/" + pointer_token(name);
-        if (!inserted && document_ != nullptr) {
-            document_->duplicates.push_back({pointer, key, first->second});
-        }
+        if (!inserted && duplicates_ != nullptr) duplicates_->push_back({pointer, key, first->second});
         return true;
     }
 
@@ -335,7 +335,7 @@ JsonParse parse_json(std::string_view text) {
             error.offset = token_start(text, error.offset, error.message);
             result.error = std::move(error);
         } else {
-            PositionScanner scanner(text, nullptr);
+            PositionScanner scanner(text, nullptr, nullptr);
             scanner.run();
             JsonError error;
             error.offset = scanner.limit_offset == kNoOffset ? 0 : scanner.limit_offset;
@@ -347,14 +347,20 @@ JsonParse parse_json(std::string_view text) {
     }
     JsonDocument document;
     document.root = std::move(builder.root);
-    PositionScanner scanner(text, &document);
+    PositionScanner scanner(text, nullptr, &document.duplicates);
     if (!scanner.run()) {
-        // Cannot happen for text nlohmann accepted; keep going without positions.
-        document.positions.clear();
+        // Cannot happen for text nlohmann accepted; keep going without them.
         document.duplicates.clear();
     }
     result.document = std::move(document);
     return result;
+}
+
+ValuePositions value_positions(std::string_view text) {
+    ValuePositions positions;
+    PositionScanner scanner(text, &positions, nullptr);
+    if (!scanner.run()) positions.clear();
+    return positions;
 }
 
 }  // namespace impossible::layout::detail

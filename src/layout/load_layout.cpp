@@ -242,7 +242,7 @@ LoadResult load(std::string_view text, const std::string& source, const std::str
         return result;
     }
     const detail::JsonDocument& document = *parsed.document;
-    Checker check(text, source, document);
+    Checker check(text, source);
     for (const detail::DuplicateKey& duplicate : document.duplicates) {
         const Path at = path_of_pointer(document.root, duplicate.pointer);
         check.error_at_offset(duplicate.key,
