@@ -279,6 +279,26 @@ void visit(const Bvh& bvh, const dvec3& origin, const dvec3& dir, const double& 
     }
 }
 
+// Keeps `hit` of item `index` if it is nearer than the best so far: the
+// smallest t, and at equal t the lower index (the first the scan meets); a
+// tie with the limit the search started from (best.index < 0) loses.
+// `Best` is TriangleHit or BoxHit.
+template <class Best>
+void keep_nearer(Best& best, double& best_t, const std::optional<SurfaceHit>& hit, int index) {
+    if (hit && (hit->t < best_t || (hit->t == best_t && best.index >= 0 && index < best.index))) {
+        best_t = hit->t;
+        best.hit = hit;
+        best.index = index;
+    }
+}
+
+// Builds the tree over bvh.order (the items not left out), if any.
+void build_over(const std::vector<Item>& items, Bvh& bvh) {
+    if (bvh.order.empty()) return;
+    bvh.nodes.reserve(bvh.order.size());
+    Builder(items, bvh).build(0, static_cast<int>(bvh.order.size()), 0);
+}
+
 }  // namespace
 
 TriangleHit nearest_triangle_scan(const std::vector<PropTriangle>& triangles, std::span<const PropMaterial> materials,
@@ -286,14 +306,7 @@ TriangleHit nearest_triangle_scan(const std::vector<PropTriangle>& triangles, st
     TriangleHit best;
     double best_t = t_limit;
     const int n = static_cast<int>(triangles.size());
-    for (int i = 0; i < n; ++i) {
-        const std::optional<SurfaceHit> hit = hit_triangle(triangles[i], materials, origin, dir, clip);
-        if (hit && hit->t < best_t) {
-            best_t = hit->t;
-            best.hit = hit;
-            best.index = i;
-        }
-    }
+    for (int i = 0; i < n; ++i) keep_nearer(best, best_t, hit_triangle(triangles[i], materials, origin, dir, clip), i);
     return best;
 }
 
@@ -305,9 +318,7 @@ Bvh build_bvh(const std::vector<PropTriangle>& triangles) {
         items.push_back(item_of(triangles[i]));
         (is_sliver(triangles[i]) ? bvh.slivers : bvh.order).push_back(i);
     }
-    if (bvh.order.empty()) return bvh;
-    bvh.nodes.reserve(bvh.order.size());
-    Builder(items, bvh).build(0, static_cast<int>(bvh.order.size()), 0);
+    build_over(items, bvh);
     return bvh;
 }
 
@@ -316,15 +327,8 @@ TriangleHit nearest_triangle(const Bvh& bvh, const std::vector<PropTriangle>& tr
                              const ClipPlane& clip, double t_limit) {
     TriangleHit best;
     double best_t = t_limit;
-    // The tie rule: at equal t the lower index wins, as in the scan; a tie
-    // with t_limit (best.index < 0) loses.
     auto consider = [&](int index) {
-        const std::optional<SurfaceHit> hit = hit_triangle(triangles[index], materials, origin, dir, clip);
-        if (hit && (hit->t < best_t || (hit->t == best_t && best.index >= 0 && index < best.index))) {
-            best_t = hit->t;
-            best.hit = hit;
-            best.index = index;
-        }
+        keep_nearer(best, best_t, hit_triangle(triangles[index], materials, origin, dir, clip), index);
     };
     for (int index : bvh.slivers) consider(index);
     if (bvh.nodes.empty()) return best;
@@ -337,14 +341,7 @@ BoxHit nearest_box_scan(const std::vector<PropBox>& boxes, const dvec3& origin, 
     BoxHit best;
     double best_t = t_limit;
     const int n = static_cast<int>(boxes.size());
-    for (int i = 0; i < n; ++i) {
-        const std::optional<SurfaceHit> hit = hit_prop_box(boxes[i], origin, dir, clip);
-        if (hit && hit->t < best_t) {
-            best_t = hit->t;
-            best.hit = hit;
-            best.index = i;
-        }
-    }
+    for (int i = 0; i < n; ++i) keep_nearer(best, best_t, hit_prop_box(boxes[i], origin, dir, clip), i);
     return best;
 }
 
@@ -356,9 +353,7 @@ Bvh build_box_bvh(const std::vector<PropBox>& boxes) {
         items.push_back(item_of(boxes[i]));
         bvh.order.push_back(i);
     }
-    if (bvh.order.empty()) return bvh;
-    bvh.nodes.reserve(bvh.order.size());
-    Builder(items, bvh).build(0, static_cast<int>(bvh.order.size()), 0);
+    build_over(items, bvh);
     return bvh;
 }
 
@@ -367,15 +362,8 @@ BoxHit nearest_box(const Bvh& bvh, const std::vector<PropBox>& boxes, const dvec
     BoxHit best;
     double best_t = t_limit;
     if (bvh.nodes.empty()) return best;
-    // The scan's rule, as for triangles.
-    visit(bvh, origin, dir, best_t, [&](int index) {
-        const std::optional<SurfaceHit> hit = hit_prop_box(boxes[index], origin, dir, clip);
-        if (hit && (hit->t < best_t || (hit->t == best_t && best.index >= 0 && index < best.index))) {
-            best_t = hit->t;
-            best.hit = hit;
-            best.index = index;
-        }
-    });
+    visit(bvh, origin, dir, best_t,
+          [&](int index) { keep_nearer(best, best_t, hit_prop_box(boxes[index], origin, dir, clip), index); });
     return best;
 }
 
