@@ -85,14 +85,25 @@ void unmark_portal(DrawContext& ctx, const LevelView& view, int p, const std::ar
     draw_portal_box(ctx, view, p, rects);
 }
 
+namespace {
+
+// Submits the ranges queued in the renderer's IndirectDraws with the state
+// bound now, and counts them.
+void submit_queued(DrawContext& ctx) {
+    IndirectDraws& queue = ctx.renderer.indirect;
+    for (const IndirectDraw& d : queue.pending)
+        ctx.stats.triangles += static_cast<long>(d.count / 3) * static_cast<long>(d.instance_count);
+    ctx.stats.draw_calls += submit_indirect(queue);
+}
+
+int instances_of(const DrawContext& ctx) { return ctx.frame.stereo == StereoMode::TwoPass ? 1 : 2; }
+
+}  // namespace
+
 void draw_range(DrawContext& ctx, const scene::IndexRange& range) {
-    if (range.count == 0) return;
-    const int instances = ctx.frame.stereo == StereoMode::TwoPass ? 1 : 2;
-    glDrawElementsInstanced(GL_TRIANGLES, static_cast<GLsizei>(range.count), GL_UNSIGNED_INT,
-                            reinterpret_cast<const void*>(static_cast<uintptr_t>(range.first) * 4),
-                            instances);
-    ctx.stats.draw_calls += 1;
-    ctx.stats.triangles += static_cast<long>(range.count / 3) * instances;
+    assert(ctx.renderer.indirect.pending.empty());  // nothing queued for another state
+    queue_range(ctx.renderer.indirect, range, instances_of(ctx));
+    submit_queued(ctx);
 }
 
 void draw_cell(DrawContext& ctx, const LevelView& view) {
@@ -109,22 +120,16 @@ void draw_cell(DrawContext& ctx, const LevelView& view) {
     // (FrameDesc::multi_draw) before the next batch with materials and at the
     // end; the others with the material variant, whose per-level uniforms
     // are set when it is first needed.
-    const int instances = ctx.frame.stereo == StereoMode::TwoPass ? 1 : 2;
     const auto submit_plain = [&] {
         if (r.indirect.pending.empty()) return;
         r.state->program(ctx.program.program.get());
-        for (const IndirectDraw& d : r.indirect.pending) ctx.stats.triangles += static_cast<long>(d.count / 3) * instances;
-        ctx.stats.draw_calls += submit_indirect(r.indirect);
+        submit_queued(ctx);
     };
     bool material_ready = false;
     for (const scene::DrawBatch& b : *batches) {
         if (b.texture < 0 && b.alpha_cutoff < 0.0f) {
-            if (ctx.frame.multi_draw) {
-                queue_range(r.indirect, b.range, instances);
-                continue;
-            }
-            r.state->program(ctx.program.program.get());
-            draw_range(ctx, b.range);
+            queue_range(r.indirect, b.range, instances_of(ctx));
+            if (!ctx.frame.multi_draw) submit_plain();
             continue;
         }
         submit_plain();
