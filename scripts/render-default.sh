@@ -4,8 +4,6 @@
 # stereo-ids.png) in the current directory. Extra arguments go to `render`.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-"$root/scripts/setup.sh"
-cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build "$root/build" --target impossible -j"$(nproc)"
+"$root/scripts/build.sh" "$root/build" --target impossible
 "$root/build/impossible" render --ids stereo-ids.png "$@"
 echo "wrote stereo.png and stereo-ids.png"

@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config
+  build-essential cmake ninja-build pkg-config
   libglm-dev libegl-dev libosmesa6-dev libglfw3-dev libtinygltf-dev
   nlohmann-json3-dev libstb-dev libgtest-dev libbenchmark-dev python3-glad
   xvfb libegl-mesa0 libgl1-mesa-dri

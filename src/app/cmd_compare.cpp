@@ -16,7 +16,7 @@
 namespace impossible::app {
 namespace {
 
-const char* kHelp =
+const char* kCompareHelp =
     "usage: impossible compare A.png B.png [--ids-a A_IDS.png --ids-b B_IDS.png] [--diff OUT.png]\n"
     "                          [--max-mismatch PERCENT] [--min-psnr DB]\n"
     "Compares two frames of the same view, e.g. a render against a trace:\n"
@@ -72,7 +72,7 @@ int run_compare_command(const Args& args, std::ostream& out, std::ostream& err) 
     const ParsedArgs parsed =
         parse_args(args, {"--ids-a", "--ids-b", "--diff", "--max-mismatch", "--min-psnr"}, {}, 2);
     if (parsed.help) {
-        out << kHelp;
+        out << kCompareHelp;
         return kExitOk;
     }
     if (parsed.positional.size() != 2) throw UsageError("compare needs two images, A.png and B.png");

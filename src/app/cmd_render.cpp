@@ -11,7 +11,7 @@
 namespace impossible::app {
 namespace {
 
-const char* kHelp =
+const char* kRenderHelp =
     "usage: impossible render [LAYOUT] [options]\n"
     "Renders one side-by-side stereo frame with the OpenGL rasteriser (the built-in default\n"
     "layout without LAYOUT) and writes it as PNG. --out and --ids are written together or not at\n"
@@ -24,7 +24,7 @@ const char* kHelp =
 int run_render_command(const Args& args, std::ostream& out, std::ostream& err) {
     const ParsedArgs parsed = parse_args(args, view_value_options(), view_flag_options(), 1);
     if (parsed.help) {
-        out << kHelp << view_options_help();
+        out << kRenderHelp << view_options_help();
         return kExitOk;
     }
     const ViewOptions options = parse_view_options(parsed);

@@ -15,7 +15,7 @@
 namespace impossible::app {
 namespace {
 
-const char* kHelp =
+const char* kTraceHelp =
     "usage: impossible trace [LAYOUT] [options]\n"
     "Computes one side-by-side stereo frame with the CPU reference ray tracer (double precision,\n"
     "rays followed through portals) for the same view as `impossible render`, and writes it as\n"
@@ -36,7 +36,7 @@ std::set<std::string> trace_value_options() {
 int run_trace_command(const Args& args, std::ostream& out, std::ostream& err) {
     const ParsedArgs parsed = parse_args(args, trace_value_options(), view_flag_options(), 1);
     if (parsed.help) {
-        out << kHelp << view_options_help() << kTraceOnlyHelp;
+        out << kTraceHelp << view_options_help() << kTraceOnlyHelp;
         return kExitOk;
     }
     const ViewOptions options = parse_view_options(parsed);

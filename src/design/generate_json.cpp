@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "design/decimetres.hpp"
+
 #include "design/generate.hpp"
 
 namespace impossible::design {
@@ -23,8 +25,6 @@ std::string room_id(int i) {
     return i < kNameCount ? kNames[i] : std::string(kNames[i % kNameCount]) + "_" + std::to_string(i / kNameCount + 1);
 }
 
-double dm(int v) { return v / 10.0; }
-double cents(double v) { return std::round(v * 100.0) / 100.0; }
 
 // HSV to RGB, rounded to hundredths.
 ordered_json hsv(double h, double s, double v) {

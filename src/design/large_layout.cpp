@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "design/decimetres.hpp"
+
 namespace impossible::design {
 namespace {
 
@@ -15,8 +17,6 @@ using nlohmann::ordered_json;
 constexpr int kSide = 40;  // dm: every room is kSide x kSide on the floor
 constexpr int kHeight = 30;
 
-double dm(int v) { return v / 10.0; }
-double cents(double v) { return std::round(v * 100.0) / 100.0; }
 
 struct Cell {
     int row = 0, column = 0;

@@ -15,7 +15,7 @@ struct EglState {
     EGLContext context = EGL_NO_CONTEXT;
 };
 
-void destroy(void* p) {
+void destroy_egl_state(void* p) {
     auto* s = static_cast<EglState*>(p);
     if (s->display != EGL_NO_DISPLAY) {
         eglMakeCurrent(s->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
@@ -26,7 +26,7 @@ void destroy(void* p) {
     delete s;
 }
 
-ProcAddress load(const char* name) { return reinterpret_cast<ProcAddress>(eglGetProcAddress(name)); }
+ProcAddress egl_proc(const char* name) { return reinterpret_cast<ProcAddress>(eglGetProcAddress(name)); }
 
 }  // namespace
 
@@ -44,7 +44,7 @@ BackendContext create_egl_context() {
         return out;
     }
     auto* state = new EglState;
-    out.state = {state, destroy};
+    out.state = {state, destroy_egl_state};
     state->display = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     EGLint major = 0, minor = 0;
     if (state->display == EGL_NO_DISPLAY || !eglInitialize(state->display, &major, &minor)) {
@@ -68,7 +68,7 @@ BackendContext create_egl_context() {
         out.error = "EGL: cannot make the context current without a surface";
         return out;
     }
-    out.load = load;
+    out.load = egl_proc;
     return out;
 }
 

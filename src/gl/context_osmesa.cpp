@@ -16,13 +16,13 @@ struct OSMesaState {
     unsigned char buffer[4] = {};
 };
 
-void destroy(void* p) {
+void destroy_osmesa_state(void* p) {
     auto* s = static_cast<OSMesaState*>(p);
     if (s->context) OSMesaDestroyContext(s->context);
     delete s;
 }
 
-ProcAddress load(const char* name) { return reinterpret_cast<ProcAddress>(OSMesaGetProcAddress(name)); }
+ProcAddress osmesa_proc(const char* name) { return reinterpret_cast<ProcAddress>(OSMesaGetProcAddress(name)); }
 
 // OSMesa picks its Gallium driver by the GALLIUM_DRIVER variable and, given
 // one it cannot load, crashes inside OSMesaCreateContextAttribs instead of
@@ -45,7 +45,7 @@ BackendContext create_osmesa_context() {
     BackendContext out;
     if (!osmesa_driver_ok(&out.error)) return out;
     auto* state = new OSMesaState;
-    out.state = {state, destroy};
+    out.state = {state, destroy_osmesa_state};
     const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_STENCIL_BITS, 0,
                            OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 4,
                            OSMESA_CONTEXT_MINOR_VERSION, 5, 0};
@@ -58,7 +58,7 @@ BackendContext create_osmesa_context() {
         out.error = "OSMesa: cannot make the context current";
         return out;
     }
-    out.load = load;
+    out.load = osmesa_proc;
     return out;
 }
 

@@ -17,10 +17,6 @@ namespace impossible::layout::detail {
 
 namespace {
 
-std::string count_of(std::size_t n, const char* singular, const char* plural) {
-    return std::to_string(n) + " " + (n == 1 ? singular : plural);
-}
-
 // "material 2" or "material 2 ("Glass")": names are shown, cut to 60 bytes.
 std::string named(const char* kind, int index, const std::string& name) {
     std::string out = std::string(kind) + " " + std::to_string(index);

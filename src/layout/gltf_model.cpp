@@ -30,18 +30,18 @@ namespace {
 // A model reads files only in its own folder and below (its buffers): a URI
 // such as "../../../../etc/passwd" must not open, or even reveal whether or
 // how large, a file elsewhere. `user_data` is the model's folder, canonical.
-bool inside_folder(const std::string& path, void* user_data) {
+bool inside_model_folder(const std::string& path, void* user_data) {
     return detail::inside_folder(path, *static_cast<const std::string*>(user_data));
 }
 bool fs_file_exists(const std::string& path, void* user_data) {
-    if (!inside_folder(path, user_data)) return true;  // refused when read, whether it exists or not
+    if (!inside_model_folder(path, user_data)) return true;  // refused when read, whether it exists or not
     std::error_code ec;
     return std::filesystem::is_regular_file(path, ec);
 }
 std::string fs_expand_path(const std::string& path, void*) { return path; }
 bool fs_read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path,
                         void* user_data) {
-    if (!inside_folder(path, user_data)) {
+    if (!inside_model_folder(path, user_data)) {
         if (err != nullptr) *err += "file " + quote(path) + " lies outside the model's folder\n";
         return false;
     }

@@ -26,10 +26,6 @@ std::uint32_t read_u32(const std::vector<unsigned char>& bytes, std::size_t at) 
 
 Error invalid(const std::string& reason) { return Error{"is not a valid glTF 2.0 file: " + reason}; }
 
-std::string count_of(std::size_t n, const char* singular, const char* plural) {
-    return std::to_string(n) + " " + (n == 1 ? singular : plural);
-}
-
 // An index field (`buffer`, `bufferView`, `indices`) that must name one of
 // `count` things. Returns the message's tail, or "" when fine or absent.
 std::string bad_reference(const json& object, const char* key, std::size_t count, const char* singular,

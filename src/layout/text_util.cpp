@@ -116,4 +116,8 @@ bool has_control_character(std::string_view text) {
     return false;
 }
 
+std::string count_of(std::size_t n, const char* singular, const char* plural) {
+    return std::to_string(n) + " " + (n == 1 ? singular : plural);
+}
+
 }  // namespace impossible::layout::detail

@@ -23,6 +23,9 @@ std::string quote(std::string_view text);
 // \xNN, so that a message never carries raw binary.
 std::string printable(std::string_view text);
 
+// "1 texture", "3 textures".
+std::string count_of(std::size_t n, const char* singular, const char* plural);
+
 // Whether the text holds a byte below 0x20 (a path that does: an error).
 bool has_control_character(std::string_view text);
 

@@ -1,12 +1,6 @@
 #include "scene/portal_links.hpp"
 
 namespace impossible::scene {
-namespace {
-
-bool valid_index(int i, std::size_t n) { return i >= 0 && static_cast<std::size_t>(i) < n; }
-
-}  // namespace
-
 PortalLinks link_portals(const layout::Layout& layout) {
     PortalLinks links;
     links.transfer.assign(layout.portals.size(), math::dmat4(1.0));

@@ -3,6 +3,7 @@
 // Scene for the renderer; the walker links with the same function.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include "layout/layout.hpp"
@@ -22,5 +23,8 @@ struct PortalLinks {
 };
 
 PortalLinks link_portals(const layout::Layout& layout);
+
+// Whether i indexes an array of n things.
+inline bool valid_index(int i, std::size_t n) { return i >= 0 && static_cast<std::size_t>(i) < n; }
 
 }  // namespace impossible::scene

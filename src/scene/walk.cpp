@@ -13,8 +13,6 @@ namespace impossible::scene {
 
 namespace {
 
-bool valid_index(int i, std::size_t n) { return i >= 0 && static_cast<std::size_t>(i) < n; }
-
 math::dvec3 apply(const math::dmat4& m, const math::dvec3& p) {
     return math::dvec3(m * math::dvec4(p, 1.0));
 }

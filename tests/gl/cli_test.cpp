@@ -11,17 +11,14 @@
 
 #include "common/temp_dir.hpp"
 #include "common/png.hpp"
+#include "common/program_run.hpp"
 
 namespace impossible {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct ProgramRun {
-    int status = -1;
-    std::string out;
-    std::string err;
-};
+using testing::ProgramRun;
 
 // Runs the built program with `args` in directory `cwd`.
 ProgramRun run_program(const std::string& args, const fs::path& cwd) {

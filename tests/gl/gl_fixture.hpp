@@ -33,6 +33,11 @@ inline layout::Layout layout_from_file(const std::string& path) {
 }
 
 // Renders one frame in a fresh context of the given backend.
+// One of the example layouts in layouts/, by file name.
+inline layout::Layout example_layout(const char* name) {
+    return layout_from_file(std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/" + name);
+}
+
 inline image::Image render_once(gl::Backend backend, const layout::Layout& layout,
                                  const render::FrameDesc& frame, render::FrameStats* stats = nullptr) {
     Result<gl::Context> context = gl::create_context(backend);

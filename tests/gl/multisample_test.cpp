@@ -120,17 +120,13 @@ render::FrameDesc case_frame(const layout::Layout& l, const testing::PoseCase& c
     return f;
 }
 
-layout::Layout load(const char* name) {
-    return testing::layout_from_file(std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/" + name);
-}
-
 // The frames the tests below look at: every pose case, and every layout's
 // start with the head rolled 3° (so that no edge runs along the pixel grid).
 std::vector<std::pair<std::string, render::FrameDesc>> frames_to_check(int samples) {
     std::vector<std::pair<std::string, render::FrameDesc>> out;
     for (const testing::PoseCase& c : testing::kPoseCases)
-        out.emplace_back(std::string(c.layout) + ": " + c.what, case_frame(load(c.layout), c, samples));
-    for (const char* name : kLayouts) out.emplace_back(std::string(name) + ": start, rolled", start_frame(load(name), samples));
+        out.emplace_back(std::string(c.layout) + ": " + c.what, case_frame(testing::example_layout(c.layout), c, samples));
+    for (const char* name : kLayouts) out.emplace_back(std::string(name) + ": start, rolled", start_frame(testing::example_layout(name), samples));
     return out;
 }
 
@@ -151,7 +147,7 @@ TEST(Multisample, IdsAgreeWithTheTracersCentreRays) {
     ASSERT_TRUE(context.has_value()) << context.error();
     if (!offers(kSamples)) GTEST_SKIP() << "the driver offers no 4-sample buffers";
     for (const auto& [label, frame] : frames_to_check(kSamples)) {
-        const layout::Layout l = load(layout_of(label).c_str());
+        const layout::Layout l = testing::example_layout(layout_of(label).c_str());
         Result<render::Renderer> r = render::Renderer::create(context->state(), l, scene::build_scene(l));
         ASSERT_TRUE(r.has_value()) << r.error();
         const Result<render::RenderedFrame> ms = r->render(frame);
@@ -194,7 +190,7 @@ TEST(Multisample, PortalEdgesMatchTheSupersampledTracer) {
     ASSERT_TRUE(context.has_value()) << context.error();
     if (!offers(kSamples)) GTEST_SKIP() << "the driver offers no 4-sample buffers";
     for (const auto& [label, frame] : frames_to_check(kSamples)) {
-        const layout::Layout l = load(layout_of(label).c_str());
+        const layout::Layout l = testing::example_layout(layout_of(label).c_str());
         Result<render::Renderer> r = render::Renderer::create(context->state(), l, scene::build_scene(l));
         ASSERT_TRUE(r.has_value()) << r.error();
         const Result<render::RenderedFrame> ms = r->render(frame);

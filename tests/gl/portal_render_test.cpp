@@ -14,10 +14,6 @@ namespace {
 
 using testing::id_at;
 
-layout::Layout load(const char* name) {
-    return testing::layout_from_file(std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/" + name);
-}
-
 render::FrameDesc pose(const layout::Layout& l, const char* room, math::dvec3 p, double yaw, double pitch = 0) {
     render::FrameDesc f;
     f.head.position = p;
@@ -34,7 +30,7 @@ int centre_id(const image::Image& image, int eye) { return id_at(image, eye * 81
 // Default layout: hall_door at z = 0 faces +z (hall side), annex_door at the
 // same place faces -z; the transfer matrix is the identity.
 TEST(PortalBox, EyeBehindThePlaneInsideTheBoxSeesTheTargetRoom) {
-    const layout::Layout l = load("default.json");
+    const layout::Layout l = testing::example_layout("default.json");
     // Head 2 mm in front of hall_door, looking -x: the right eye (at +z... no,
     // with yaw 90 the right axis is -z) stands 30 mm behind the plane.
     const image::Image image = testing::render_once(gl::Backend::Egl, l, pose(l, "hall", {0, 1.6, 0.002}, 90));
@@ -48,7 +44,7 @@ TEST(PortalBox, EyeBehindThePlaneInsideTheBoxSeesTheTargetRoom) {
 }
 
 TEST(PortalBox, CrossedEyeWorksInTheOtherDirectionToo) {
-    const layout::Layout l = load("default.json");
+    const layout::Layout l = testing::example_layout("default.json");
     // In the annex, 2 mm in front of annex_door (which faces -z), looking +x:
     // the right axis is +z, so the right eye is 30 mm behind annex_door.
     const image::Image image = testing::render_once(gl::Backend::Egl, l, pose(l, "annex", {0, 1.6, -0.002}, -90));
@@ -57,7 +53,7 @@ TEST(PortalBox, CrossedEyeWorksInTheOtherDirectionToo) {
 }
 
 TEST(PortalBox, EyeCloserThanTheNearPlaneStillSeesTheTargetRoom) {
-    const layout::Layout l = load("default.json");
+    const layout::Layout l = testing::example_layout("default.json");
     for (double d : {0.005, 0.001, 0.0001, 1e-6}) {
         const image::Image image = testing::render_once(gl::Backend::Egl, l, pose(l, "hall", {0, 1.6, d}, 0));
         std::set<int> ids(image.ids.begin(), image.ids.end());
@@ -66,7 +62,7 @@ TEST(PortalBox, EyeCloserThanTheNearPlaneStillSeesTheTargetRoom) {
 }
 
 TEST(PortalBox, FreeStandingPortalIsInvisibleFromBehindAndBeside) {
-    const layout::Layout l = load("default.json");
+    const layout::Layout l = testing::example_layout("default.json");
     // Behind hall_door (z < -depth), looking at its back: the hall only.
     image::Image image = testing::render_once(gl::Backend::Egl, l, pose(l, "hall", {0, 1.6, -1.5}, 180));
     EXPECT_EQ(std::set<int>(image.ids.begin(), image.ids.end()), std::set<int>{1});
@@ -76,7 +72,7 @@ TEST(PortalBox, FreeStandingPortalIsInvisibleFromBehindAndBeside) {
 }
 
 TEST(PortalRecursion, RecursionLimitShowsTheFillAndId255) {
-    const layout::Layout l = load("corridor.json");
+    const layout::Layout l = testing::example_layout("corridor.json");
     for (int depth : {0, 1, 3, 8}) {
         render::FrameDesc f = pose(l, "corridor", {0, 1.2, 3.5}, 0);
         f.max_depth = depth;
@@ -93,7 +89,7 @@ TEST(PortalRecursion, RecursionLimitShowsTheFillAndId255) {
 }
 
 TEST(PortalRecursion, DeeperLimitMovesTheFillFurtherAway) {
-    const layout::Layout l = load("corridor.json");
+    const layout::Layout l = testing::example_layout("corridor.json");
     auto fill_pixels = [&](int depth) {
         render::FrameDesc f = pose(l, "corridor", {0, 1.2, 3.5}, 0);
         f.max_depth = depth;
@@ -124,7 +120,7 @@ TEST(PortalCulling, CulledAndUnculledRendersAreEqual) {
         {"loop.json", "green", {0.5, 1.6, -4}, -60, 0},
     };
     for (const Case& c : cases) {
-        const layout::Layout l = load(c.layout);
+        const layout::Layout l = testing::example_layout(c.layout);
         render::FrameDesc f = pose(l, c.room, c.p, c.yaw, c.pitch);
         f.eye_width = 160;
         f.eye_height = 90;
@@ -148,7 +144,7 @@ TEST(PortalCulling, CulledAndUnculledRendersAreEqual) {
 // before any primitive is assembled. Counted with GL_PRIMITIVES_GENERATED;
 // the image stays the same.
 TEST(PortalCulling, OcclusionTestDropsSubtreesBehindAWall) {
-    const layout::Layout l = load("corridor_wall.json");
+    const layout::Layout l = testing::example_layout("corridor_wall.json");
     render::FrameDesc f = pose(l, "corridor", l.start.position, l.start.yaw_deg);
     f.max_depth = 16;
     // The wall is a box prop, which already hides the door on the CPU
@@ -180,7 +176,7 @@ TEST(PortalCulling, OcclusionTestDropsSubtreesBehindAWall) {
 }
 
 TEST(PortalCulling, FourRoomsCullsPortalsOutOfView) {
-    const layout::Layout l = load("four_rooms.json");
+    const layout::Layout l = testing::example_layout("four_rooms.json");
     render::FrameStats stats;
     render::FrameDesc f = pose(l, "hall", {-1, 1.6, 1.5}, 0);
     f.fov_y_deg = 60;
@@ -193,7 +189,7 @@ TEST(PortalCulling, FourRoomsCullsPortalsOutOfView) {
 // annex's props though they stand in the same place, and the annex seen
 // through the door shows none of the hall's.
 TEST(Cells, OverlappingRoomsNeverBleed) {
-    const layout::Layout l = load("default.json");
+    const layout::Layout l = testing::example_layout("default.json");
     // From the hall, looking through the door at the spot of the annex's blue
     // box (x -0.5, z -1.3): the hall's own pixels must stay hall.
     render::FrameDesc f = pose(l, "hall", {0.8, 1.2, 1.5}, 25, -13);
@@ -223,7 +219,7 @@ namespace {
 // exactly the pixels stencil portals draw; smaller textures lose detail.
 TEST(PortalTexture, FullScaleEqualsStencilPortalsAndSmallerScalesBlur) {
     for (const char* name : {"default.json", "corridor.json", "four_rooms.json"}) {
-        const layout::Layout l = load(name);
+        const layout::Layout l = testing::example_layout(name);
         render::FrameDesc f = pose(l, layout::find_room(l, "hall") >= 0 ? "hall" : "corridor", l.start.position,
                                    l.start.yaw_deg);
         f.eye_width = 160;
@@ -242,7 +238,7 @@ TEST(PortalTexture, FullScaleEqualsStencilPortalsAndSmallerScalesBlur) {
 }
 
 TEST(PortalTexture, NeedsClipShiftStereo) {
-    const layout::Layout l = load("default.json");
+    const layout::Layout l = testing::example_layout("default.json");
     render::FrameDesc f = pose(l, "hall", l.start.position, l.start.yaw_deg);
     f.portal_texture_scale = 0.5;
     f.stereo = render::StereoMode::TwoPass;

@@ -20,16 +20,14 @@
 
 #include "common/temp_dir.hpp"
 #include "common/png.hpp"
+#include "common/program_run.hpp"
 
 namespace impossible {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct ProgramRun {
-    int status = -1;
-    std::string out, err;
-};
+using testing::ProgramRun;
 
 std::string slurp(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);

@@ -10,7 +10,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-int run(const std::string& command) { return std::system(command.c_str()); }
 
 TEST(ChairGlb, RegeneratingGivesIdenticalBytes) {
     const std::string out = temp_path("chair_regenerated.glb");

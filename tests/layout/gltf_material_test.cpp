@@ -20,7 +20,6 @@ using impossible::layout::detail::GltfModel;
 using impossible::layout::detail::load_gltf_model;
 using nlohmann::json;
 
-const std::vector<float> kTriangle = {0, 0, 0, 1, 0, 0, 0, 1, 0};
 
 // A 2x2 RGBA PNG: red, green / blue, half-transparent white.
 std::string png_2x2() {

@@ -20,7 +20,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 // The triangle (0,0,0), (1,0,0), (0,1,0): counter-clockwise seen from +z.
-const std::vector<float> kTriangle = {0, 0, 0, 1, 0, 0, 0, 1, 0};
 
 class GltfTest : public ::testing::Test {
 protected:

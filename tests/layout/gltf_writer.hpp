@@ -13,6 +13,9 @@
 namespace layout_test {
 namespace {
 
+// One triangle's positions (x, y, z each), for the smallest models.
+const std::vector<float> kTriangle = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+
 using nlohmann::json;
 
 std::string base64(const std::vector<unsigned char>& data) {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -128,5 +129,8 @@ inline Layout expect_valid(const std::string& text) {
     EXPECT_TRUE(r.layout.has_value());
     return r.layout ? *r.layout : Layout{};
 }
+
+// Runs a shell command; its exit status as std::system gives it.
+inline int run(const std::string& command) { return std::system(command.c_str()); }
 
 }  // namespace layout_test

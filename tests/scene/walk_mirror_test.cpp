@@ -17,8 +17,6 @@ using namespace testing;
 using glm::dvec3;
 using math::HeadPose;
 
-HeadPose at(dvec3 p, double yaw = 0.0) { return HeadPose{p, yaw, 0.0, 0.0}; }
-std::vector<int> none() { return {}; }
 
 int add_mirror(layout::Layout& l, const std::string& id, int room, const math::PortalRect& rect) {
     layout::Portal p{id, room, rect};

@@ -19,7 +19,6 @@ using namespace testing;
 using glm::dvec3;
 using math::HeadPose;
 
-HeadPose at(dvec3 p) { return HeadPose{p, 0.0, 0.0, 0.0}; }
 
 // A point over portal a's rectangle (0.2 right, 0.3 up of its centre) at
 // signed distance d.

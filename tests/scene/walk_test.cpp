@@ -14,8 +14,6 @@ using namespace testing;
 using glm::dvec3;
 using math::HeadPose;
 
-HeadPose at(dvec3 p, double yaw = 0.0) { return HeadPose{p, yaw, 0.0, 0.0}; }
-std::vector<int> none() { return {}; }
 
 TEST(Walker, StartsInTheStartRoomWithIdentity) {
     const layout::Layout l = doorway();

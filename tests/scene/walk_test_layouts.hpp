@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -9,6 +10,11 @@
 #include "math/pose.hpp"
 
 namespace impossible::scene::testing {
+
+// A head at p looking along yaw, level.
+inline math::HeadPose at(glm::dvec3 p, double yaw = 0.0) { return math::HeadPose{p, yaw, 0.0, 0.0}; }
+// No portals crossed.
+inline std::vector<int> none() { return {}; }
 
 inline int add_room(layout::Layout& l, const std::string& id, glm::dvec3 min, glm::dvec3 max) {
     layout::Room r;

@@ -17,7 +17,7 @@
 namespace impossible::trace {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using test::kInf;
 
 PropBox box(dvec3 lo, dvec3 hi) {
     PropBox b;
@@ -61,14 +61,14 @@ std::vector<PropBox> adversarial_boxes(std::mt19937_64& rng, dvec3 offset, doubl
     return boxes;
 }
 
-struct Tally {
+struct BoxTally {
     int rays = 0;
     int hits = 0;
     int ties = 0;  // rays whose nearest t is shared by two or more boxes
 };
 
 void expect_same(const std::vector<PropBox>& boxes, const Bvh& bvh, const dvec3& origin, const dvec3& dir,
-                 const ClipPlane& clip, double t_limit, Tally& tally) {
+                 const ClipPlane& clip, double t_limit, BoxTally& tally) {
     const BoxHit scan = nearest_box_scan(boxes, origin, dir, clip, t_limit);
     const BoxHit tree = nearest_box(bvh, boxes, origin, dir, clip, t_limit);
     ++tally.rays;
@@ -87,7 +87,7 @@ void expect_same(const std::vector<PropBox>& boxes, const Bvh& bvh, const dvec3&
     if (at_t > 1) ++tally.ties;
 }
 
-void check_boxes(std::mt19937_64& rng, dvec3 offset, double scale, Tally& tally) {
+void check_boxes(std::mt19937_64& rng, dvec3 offset, double scale, BoxTally& tally) {
     const std::vector<PropBox> boxes = adversarial_boxes(rng, offset, scale);
     const Bvh bvh = build_box_bvh(boxes);
     ASSERT_FALSE(bvh.nodes.empty());
@@ -124,7 +124,7 @@ void check_boxes(std::mt19937_64& rng, dvec3 offset, double scale, Tally& tally)
 
 TEST(BoxBvh, NearestBoxIsTheScansOnAdversarialBoxes) {
     std::mt19937_64 rng(11);
-    Tally tally;
+    BoxTally tally;
     check_boxes(rng, dvec3(0.0), 1.0, tally);
     check_boxes(rng, dvec3(1e4, -3e3, 7e3), 2.0, tally);  // far from the origin
     check_boxes(rng, dvec3(0.0), 1e-3, tally);            // millimetre boxes

@@ -18,7 +18,7 @@
 namespace impossible::trace {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using test::kInf;
 
 PropTriangle triangle(dvec3 a, dvec3 b, dvec3 c) {
     PropTriangle t;

@@ -16,6 +16,8 @@
 namespace impossible::trace {
 namespace {
 
+using test::load_default;
+
 TEST(SamplePattern, StandardCountsOnly) {
     for (int n : {1, 2, 4, 8, 16}) EXPECT_EQ(sample_pattern(n).size(), static_cast<size_t>(n)) << n;
     for (int n : {0, 3, 5, 6, 12, 32, -4}) EXPECT_TRUE(sample_pattern(n).empty()) << n;
@@ -56,12 +58,6 @@ TEST(SamplePattern, FourSamplesAreTheRotatedGrid) {
         EXPECT_EQ(p[k].x, expected[k][0]) << k;
         EXPECT_EQ(p[k].y, expected[k][1]) << k;
     }
-}
-
-layout::Layout load_default() {
-    const layout::LoadResult loaded = layout::load_layout_file(IMPOSSIBLE_SOURCE_DIR "/layouts/default.json");
-    EXPECT_TRUE(loaded.errors.empty());
-    return loaded.layout.value();
 }
 
 TraceDesc start_view(const layout::Layout& l, int samples) {

@@ -17,7 +17,7 @@ using glm::dvec2;
 using glm::dvec4;
 namespace code = layout::sampler_code;
 
-layout::Image image_of(int width, int height, std::initializer_list<std::uint8_t> bytes) {
+layout::Image texel_image(int width, int height, std::initializer_list<std::uint8_t> bytes) {
     layout::Image image;
     image.width = width;
     image.height = height;
@@ -27,14 +27,14 @@ layout::Image image_of(int width, int height, std::initializer_list<std::uint8_t
 
 // 4 × 1, red 0, 85, 170, 255 (0, 1/3, 2/3, 1): the texel's index is 3 · red.
 layout::Image ramp() {
-    return image_of(4, 1, {0, 0, 0, 255, 85, 0, 0, 255, 170, 0, 0, 255, 255, 0, 0, 255});
+    return texel_image(4, 1, {0, 0, 0, 255, 85, 0, 0, 255, 170, 0, 0, 255, 255, 0, 0, 255});
 }
 
 // 2 × 2: top row red, green; bottom row blue, transparent white.
-layout::Image quadrants() {
-    return image_of(2, 2, {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 0});
+layout::Image quadrant_image() {
+    return texel_image(2, 2, {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 0});
 }
-const dvec4 kRed(1, 0, 0, 1), kGreen(0, 1, 0, 1), kBlue(0, 0, 1, 1), kClear(1, 1, 1, 0);
+const dvec4 kTexelRed(1, 0, 0, 1), kTexelGreen(0, 1, 0, 1), kTexelBlue(0, 0, 1, 1), kTexelClear(1, 1, 1, 0);
 
 layout::Sampler sampler(int filter, int wrap_s, int wrap_t = code::kRepeat) {
     layout::Sampler s;
@@ -127,52 +127,52 @@ TEST(TextureSample, LinearEachWrap) {
 }
 
 TEST(TextureSample, RowZeroIsTheTopAndTGrowsDown) {
-    const layout::Image image = quadrants();
+    const layout::Image image = quadrant_image();
     const layout::Sampler nearest = sampler(code::kNearest, code::kRepeat, code::kRepeat);
-    EXPECT_EQ(sample_level0(image, nearest, dvec2(0.25, 0.25)), kRed);
-    EXPECT_EQ(sample_level0(image, nearest, dvec2(0.75, 0.25)), kGreen);
-    EXPECT_EQ(sample_level0(image, nearest, dvec2(0.25, 0.75)), kBlue);
-    EXPECT_EQ(sample_level0(image, nearest, dvec2(0.75, 0.75)), kClear);
-    EXPECT_EQ(sample_level0(image, nearest, dvec2(-0.25, -0.25)), kClear);  // repeat: the tile up and left
-    EXPECT_EQ(sample_level0(image, nearest, dvec2(2.25, -1.75)), kRed);
+    EXPECT_EQ(sample_level0(image, nearest, dvec2(0.25, 0.25)), kTexelRed);
+    EXPECT_EQ(sample_level0(image, nearest, dvec2(0.75, 0.25)), kTexelGreen);
+    EXPECT_EQ(sample_level0(image, nearest, dvec2(0.25, 0.75)), kTexelBlue);
+    EXPECT_EQ(sample_level0(image, nearest, dvec2(0.75, 0.75)), kTexelClear);
+    EXPECT_EQ(sample_level0(image, nearest, dvec2(-0.25, -0.25)), kTexelClear);  // repeat: the tile up and left
+    EXPECT_EQ(sample_level0(image, nearest, dvec2(2.25, -1.75)), kTexelRed);
 }
 
 TEST(TextureSample, LinearTwoAxesWithTheirOwnWraps) {
-    const layout::Image image = quadrants();
+    const layout::Image image = quadrant_image();
     // The centre: all four equally.
     EXPECT_EQ(sample_level0(image, sampler(code::kLinear, code::kRepeat), dvec2(0.5, 0.5)),
-              0.25 * (kRed + kGreen + kBlue + kClear));
+              0.25 * (kTexelRed + kTexelGreen + kTexelBlue + kTexelClear));
     // (0.375, 0.125): x - 1/2 = 0.25 (columns 0 and 1, weighted 3/4 and
     // 1/4), y - 1/2 = -0.25 (rows -1, by repeat row 1, and 0, weighted 1/4
     // and 3/4).
-    const dvec4 expected = 0.75 * 0.25 * kBlue + 0.25 * 0.25 * kClear + 0.75 * 0.75 * kRed + 0.25 * 0.75 * kGreen;
+    const dvec4 expected = 0.75 * 0.25 * kTexelBlue + 0.25 * 0.25 * kTexelClear + 0.75 * 0.75 * kTexelRed + 0.25 * 0.75 * kTexelGreen;
     EXPECT_EQ(sample_level0(image, sampler(code::kLinear, code::kRepeat, code::kRepeat), dvec2(0.375, 0.125)),
               expected);
     EXPECT_EQ(expected, dvec4(0.625, 0.25, 0.25, 0.9375));
     // Row -1 clamped (or mirrored) is row 0 itself.
     for (int wrap_t : {code::kClampToEdge, code::kMirroredRepeat}) {
         EXPECT_EQ(sample_level0(image, sampler(code::kLinear, code::kRepeat, wrap_t), dvec2(0.375, 0.125)),
-                  0.75 * kRed + 0.25 * kGreen);
+                  0.75 * kTexelRed + 0.25 * kTexelGreen);
     }
     // The bottom-left corner (0, 1): columns -1, 0 and rows 1, 2, half each.
     EXPECT_EQ(sample_level0(image, sampler(code::kLinear, code::kRepeat, code::kClampToEdge), dvec2(0.0, 1.0)),
-              0.5 * kBlue + 0.5 * kClear);
+              0.5 * kTexelBlue + 0.5 * kTexelClear);
     EXPECT_EQ(sample_level0(image, sampler(code::kLinear, code::kRepeat, code::kMirroredRepeat), dvec2(0.0, 1.0)),
-              0.5 * kBlue + 0.5 * kClear);
+              0.5 * kTexelBlue + 0.5 * kTexelClear);
     EXPECT_EQ(sample_level0(image, sampler(code::kLinear, code::kRepeat, code::kRepeat), dvec2(0.0, 1.0)),
-              0.25 * (kRed + kGreen + kBlue + kClear));
+              0.25 * (kTexelRed + kTexelGreen + kTexelBlue + kTexelClear));
     EXPECT_EQ(sample_level0(image, sampler(code::kLinear, code::kClampToEdge, code::kClampToEdge), dvec2(0.0, 1.0)),
-              kBlue);
+              kTexelBlue);
 }
 
 TEST(TextureSample, MagFilterDecidesMinFilterIsNotRead) {
-    const layout::Image image = quadrants();
+    const layout::Image image = quadrant_image();
     layout::Sampler s = sampler(code::kNearest, code::kRepeat);
     s.min_filter = code::kLinear;
-    EXPECT_EQ(sample_level0(image, s, dvec2(0.3, 0.3)), kRed);
+    EXPECT_EQ(sample_level0(image, s, dvec2(0.3, 0.3)), kTexelRed);
     s.mag_filter = code::kLinear;
     s.min_filter = code::kNearest;
-    EXPECT_NE(sample_level0(image, s, dvec2(0.3, 0.3)), kRed);
+    EXPECT_NE(sample_level0(image, s, dvec2(0.3, 0.3)), kTexelRed);
 }
 
 TEST(TextureSample, EmptyImageIsWhite) {

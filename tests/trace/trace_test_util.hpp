@@ -5,8 +5,10 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 
+#include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
@@ -24,6 +26,34 @@ using impossible::test::make_mirror;
 using impossible::test::make_portal;
 using impossible::test::make_room;
 using impossible::test::make_window;
+
+// Positions the tracer computes are exact to this (metres).
+inline constexpr double kTol = 1e-12;
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
+inline const dvec3& kFill = scene::kPortalFillColor;
+inline const dvec3 kRed{1, 0, 0}, kGreen{0, 1, 0}, kBlue{0, 0, 1};
+
+inline void expect_point(const dvec3& got, const dvec3& want, double tol = kTol) {
+    EXPECT_NEAR(got.x, want.x, tol);
+    EXPECT_NEAR(got.y, want.y, tol);
+    EXPECT_NEAR(got.z, want.z, tol);
+}
+
+// The built-in default layout, loaded from layouts/.
+inline layout::Layout load_default() {
+    const layout::LoadResult loaded = layout::load_layout_file(IMPOSSIBLE_SOURCE_DIR "/layouts/default.json");
+    EXPECT_TRUE(loaded.errors.empty());
+    return loaded.layout.value();
+}
+
+// One closed room, the head in it.
+inline layout::Layout one_room(dvec3 min = {-2, 0, -2}, dvec3 max = {2, 3, 2}) {
+    layout::Layout l;
+    l.source = "<test>";
+    l.rooms.push_back(make_room("room", min, max));
+    l.start.room = 0;
+    return l;
+}
 
 inline dvec3 face_color(const layout::Room& room, layout::Face face) {
     return room.face_color[static_cast<int>(face)];

@@ -11,11 +11,7 @@
 namespace impossible::trace {
 namespace {
 
-layout::Layout load_default() {
-    const layout::LoadResult loaded = layout::load_layout_file(IMPOSSIBLE_SOURCE_DIR "/layouts/default.json");
-    EXPECT_TRUE(loaded.errors.empty());
-    return loaded.layout.value();
-}
+using test::load_default;
 
 TraceDesc start_view(const layout::Layout& l) {
     TraceDesc desc;

@@ -22,11 +22,12 @@ using glm::dvec2;
 using glm::dvec4;
 using test::bytes_of;
 using test::face_color;
+using test::kTol;
+using test::one_room;
 using test::make_room;
 using test::shade_by_hand;
 namespace code = layout::sampler_code;
 
-constexpr double kTol = 1e-12;
 
 std::shared_ptr<const layout::Image> image_of(int width, int height, std::initializer_list<std::uint8_t> bytes) {
     auto image = std::make_shared<layout::Image>();
@@ -47,14 +48,6 @@ dvec4 quadrant(int i, int j, std::uint8_t top_right_alpha = 255) {
                                   {204, 204, 51, 255}};
     const std::uint8_t* p = q[2 * j + i];
     return dvec4(p[0], p[1], p[2], p[3]) / 255.0;
-}
-
-layout::Layout one_room(dvec3 min = {-2, 0, -2}, dvec3 max = {2, 3, 2}) {
-    layout::Layout l;
-    l.source = "<test>";
-    l.rooms.push_back(make_room("room", min, max));
-    l.start.room = 0;
-    return l;
 }
 
 // A quad x ∈ [-1, 1], y ∈ [0.5, 2.5] in the plane z = -1, facing +z (two

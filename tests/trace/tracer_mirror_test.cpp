@@ -14,20 +14,15 @@ namespace impossible::trace {
 namespace {
 
 using test::face_color;
+using test::kTol;
+using test::kFill;
+using test::kRed;
+using test::expect_point;
 using test::make_mirror;
 using test::make_portal;
 using test::make_room;
 using test::shade_by_hand;
 
-constexpr double kTol = 1e-12;
-const dvec3 kRed{1, 0, 0};
-const dvec3& kFill = ::impossible::scene::kPortalFillColor;
-
-void expect_point(const dvec3& got, const dvec3& want, double tol = kTol) {
-    EXPECT_NEAR(got.x, want.x, tol);
-    EXPECT_NEAR(got.y, want.y, tol);
-    EXPECT_NEAR(got.z, want.z, tol);
-}
 
 // The room without the mirror, with a red box on the floor to be seen in it.
 layout::Layout plain_room() {

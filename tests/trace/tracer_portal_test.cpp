@@ -11,17 +11,15 @@ namespace {
 
 using test::add_pair;
 using test::face_color;
+using test::kTol;
+using test::kRed;
+using test::kGreen;
+using test::kBlue;
+using test::expect_point;
 using test::make_portal;
 using test::make_room;
 using test::shade_by_hand;
 
-constexpr double kTol = 1e-12;
-
-void expect_point(const dvec3& got, const dvec3& want, double tol = kTol) {
-    EXPECT_NEAR(got.x, want.x, tol);
-    EXPECT_NEAR(got.y, want.y, tol);
-    EXPECT_NEAR(got.z, want.z, tol);
-}
 
 // Hall and annex fill the same box; a free-standing door with coincident
 // portals (transfer = identity) joins them, as in the default layout.
@@ -150,7 +148,6 @@ layout::Layout translated_pair() {
     return l;
 }
 
-const dvec3 kRed{1, 0, 0}, kBlue{0, 0, 1}, kGreen{0, 1, 0};
 
 TEST(TracerPortal, TranslatedPairMovesTheVirtualEye) {
     const Scene scene = prepare_scene(translated_pair());

@@ -9,18 +9,11 @@ namespace {
 
 using test::bytes_of;
 using test::face_color;
+using test::kTol;
+using test::one_room;
 using test::make_room;
 using test::shade_by_hand;
 
-constexpr double kTol = 1e-12;
-
-layout::Layout one_room() {
-    layout::Layout l;
-    l.source = "<test>";
-    l.rooms.push_back(make_room("room", {-2, 0, -2}, {2, 3, 2}));
-    l.start.room = 0;
-    return l;
-}
 
 TEST(TracerRoom, EveryPixelOfAClosedRoomShowsIt) {
     const layout::Layout l = one_room();

@@ -17,20 +17,15 @@ namespace impossible::trace {
 namespace {
 
 using test::face_color;
+using test::kTol;
+using test::kFill;
+using test::expect_point;
 using test::make_mirror;
 using test::make_portal;
 using test::make_room;
 using test::make_window;
 using test::shade_by_hand;
 
-constexpr double kTol = 1e-12;
-const dvec3& kFill = ::impossible::scene::kPortalFillColor;
-
-void expect_point(const dvec3& got, const dvec3& want, double tol = kTol) {
-    EXPECT_NEAR(got.x, want.x, tol);
-    EXPECT_NEAR(got.y, want.y, tol);
-    EXPECT_NEAR(got.z, want.z, tol);
-}
 
 // Room A at the origin, room B ten metres east. Window a is in A's -z wall
 // (x in [-0.5, 0.5], y in [0.5, 2.5], facing +Z), window b in B's -x wall
