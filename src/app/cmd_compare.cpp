@@ -40,22 +40,22 @@ const char* kCompareHelp =
 
 // Reads a colour PNG (grey is widened to rgb).
 std::vector<std::uint8_t> read_colour(const std::string& path, int& width, int& height) {
-    Result<image::PngImage> read = image::read_png(path);
+    Result<image::Pixels> read = image::read_png(path);
     if (!read) throw InputError(read.error());
-    image::PngImage& png = *read;
+    image::Pixels& png = *read;
     width = png.width;
     height = png.height;
-    if (png.channels == 3) return std::move(png.pixels);
+    if (png.channels == 3) return std::move(png.data);
     std::vector<std::uint8_t> rgb;
-    rgb.reserve(3 * png.pixels.size());
-    for (std::uint8_t v : png.pixels) rgb.insert(rgb.end(), {v, v, v});
+    rgb.reserve(3 * png.data.size());
+    for (std::uint8_t v : png.data) rgb.insert(rgb.end(), {v, v, v});
     return rgb;
 }
 
 std::vector<std::uint8_t> read_ids(const std::string& path, int width, int height) {
-    Result<image::PngImage> read = image::read_png(path);
+    Result<image::Pixels> read = image::read_png(path);
     if (!read) throw InputError(read.error());
-    image::PngImage& png = *read;
+    image::Pixels& png = *read;
     // A 16-bit map would decode to its high bytes (all 0 for small ids).
     if (png.channels != 1 || png.bit_depth != 8)
         throw InputError(path + ": a cell-id map must be an 8-bit greyscale PNG (this one is " +
@@ -63,7 +63,7 @@ std::vector<std::uint8_t> read_ids(const std::string& path, int width, int heigh
     if (png.width != width || png.height != height)
         throw InputError(path + ": the id map is " + std::to_string(png.width) + "x" + std::to_string(png.height) +
                          ", its colour image " + std::to_string(width) + "x" + std::to_string(height));
-    return std::move(png.pixels);
+    return std::move(png.data);
 }
 
 }  // namespace

@@ -56,8 +56,8 @@ int run_plan_command(const Args& args, std::ostream& out, std::ostream& err) {
         outputs.set(*out_file, design::plan_svg(drawing, scale));
     }
     for (const std::string& png : pngs) {
-        const design::Image image = design::plan_raster(drawing, scale);
-        Result<std::string> bytes = image::encode_png(image.width, image.height, 3, image.rgb);
+        const image::Pixels image = design::plan_raster(drawing, scale);
+        Result<std::string> bytes = image::encode_png(image.width, image.height, 3, image.data);
         if (!bytes) throw InputError(png + ": " + bytes.error());
         outputs.set(png, std::move(*bytes));
     }

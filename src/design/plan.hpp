@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "design/report.hpp"
+#include "image/pixels.hpp"
 #include "layout/layout.hpp"
 #include "math/pose.hpp"
 
@@ -56,10 +57,7 @@ double plan_scale(const Drawing& drawing, int max_pixels);
 
 std::string plan_svg(const Drawing& drawing, double px_per_m);
 
-struct Image {
-    int width = 0, height = 0;
-    std::vector<std::uint8_t> rgb;  // rows from the top
-};
-Image plan_raster(const Drawing& drawing, double px_per_m);
+// RGB, rows from the top.
+image::Pixels plan_raster(const Drawing& drawing, double px_per_m);
 
 }  // namespace impossible::design

@@ -75,10 +75,11 @@ std::vector<math::Polygon2> stroke_polygons(const Shape& s, double k, double das
 
 }  // namespace
 
-Image plan_raster(const Drawing& d, double k_out) {
+image::Pixels plan_raster(const Drawing& d, double k_out) {
     const double k = k_out * kSuper;
     constexpr double kTitle = 28.0;  // as plan_svg.cpp leaves for the title
-    Image image;
+    image::Pixels image;
+    image.channels = 3;
     image.width = static_cast<int>(std::ceil((d.max.x - d.min.x) * k_out));
     image.height = static_cast<int>(std::ceil((d.max.y - d.min.y) * k_out + kTitle));
     Canvas canvas{image.width * kSuper, image.height * kSuper, {}};
@@ -96,7 +97,7 @@ Image plan_raster(const Drawing& d, double k_out) {
         mapped.points = pts;
         for (const math::Polygon2& poly : stroke_polygons(mapped, k, 0.12 * k, 0.08 * k)) canvas.fill(poly, s.colour);
     }
-    image.rgb.resize(static_cast<std::size_t>(image.width) * image.height * 3);
+    image.data.resize(static_cast<std::size_t>(image.width) * image.height * 3);
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x)
             for (int c = 0; c < 3; ++c) {
@@ -105,7 +106,7 @@ Image plan_raster(const Drawing& d, double k_out) {
                     for (int sx = 0; sx < kSuper; ++sx)
                         sum += canvas.rgb[((static_cast<std::size_t>(y) * kSuper + sy) * canvas.w + x * kSuper + sx) * 3 + c];
                 const float v = std::clamp(sum / (kSuper * kSuper), 0.0f, 1.0f);
-                image.rgb[(static_cast<std::size_t>(y) * image.width + x) * 3 + c] = static_cast<std::uint8_t>(std::lround(v * 255.0f));
+                image.data[(static_cast<std::size_t>(y) * image.width + x) * 3 + c] = static_cast<std::uint8_t>(std::lround(v * 255.0f));
             }
     return image;
 }

@@ -32,7 +32,7 @@ std::vector<Footprint> prop_footprints(const layout::Room& room, double head_hei
             hi = box->max;
         } else {
             const auto& model = std::get<layout::GltfProp>(prop);
-            for (const layout::ModelTriangle& t : model.triangles)
+            for (const assets::ModelTriangle& t : model.triangles)
                 for (const glm::dvec3& v : t.position) {
                     const glm::dvec3 p = layout::place_model_point(model, v);
                     lo = glm::min(lo, p);

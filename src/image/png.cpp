@@ -2,9 +2,9 @@
 
 #include "base/file_io.hpp"
 #include "base/output_file.hpp"
+#include "image/decode.hpp"
 #include "image/png_check.hpp"
 
-#include <stb_image.h>
 #include <stb_image_write.h>
 
 namespace impossible::image {
@@ -38,28 +38,14 @@ Result<void> write_png(const std::string& path, int width, int height, int chann
     return write_output_file(path, *encoded);
 }
 
-Result<PngImage> read_png(const std::string& path) {
+Result<Pixels> read_png(const std::string& path) {
     const Result<std::vector<unsigned char>> bytes = read_file_bytes(path, kMaxPngBytes, false);
     if (!bytes) return Error{path + ": " + bytes.error()};
     const Result<PngHeader> header = check_png(*bytes);
     if (!header) return Error{path + ": " + header.error()};
-    int w = 0, h = 0, n = 0;
-    const int size = static_cast<int>(bytes->size());
-    if (!stbi_info_from_memory(bytes->data(), size, &w, &h, &n))
-        return Error{path + ": cannot decode the PNG (" +
-                     std::string(stbi_failure_reason() ? stbi_failure_reason() : "unknown reason") + ")"};
-    const int want = (n == 1 || n == 2) ? 1 : 3;
-    unsigned char* data = stbi_load_from_memory(bytes->data(), size, &w, &h, &n, want);
-    if (!data)
-        return Error{path + ": cannot decode the PNG (" +
-                     std::string(stbi_failure_reason() ? stbi_failure_reason() : "unknown reason") + ")"};
-    PngImage image;
-    image.width = w;
-    image.height = h;
-    image.channels = want;
-    image.bit_depth = header->bit_depth;
-    image.pixels.assign(data, data + static_cast<size_t>(w) * h * want);
-    stbi_image_free(data);
+    Result<Pixels> image = decode_grey_or_rgb(bytes->data(), bytes->size());
+    if (!image) return Error{path + ": cannot decode the PNG (" + image.error() + ")"};
+    image->bit_depth = header->bit_depth;
     return image;
 }
 

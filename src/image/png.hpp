@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "base/result.hpp"
+#include "image/pixels.hpp"
 
 namespace impossible::image {
 
@@ -18,17 +19,10 @@ Result<std::string> encode_png(int width, int height, int channels, const std::v
 Result<void> write_png(const std::string& path, int width, int height, int channels,
                       const std::vector<std::uint8_t>& pixels);
 
-struct PngImage {
-    int width = 0;
-    int height = 0;
-    int channels = 0;
-    int bit_depth = 8;  // of the file (pixels are always 8-bit)
-    std::vector<std::uint8_t> pixels;
-};
-
-// Reads a PNG, keeping it as 1 or 3 channels (grey stays grey). The file is
+// Reads a PNG, keeping it as 1 or 3 channels (grey stays grey), with the
+// file's bit depth. The file is
 // checked first (png_check.hpp: CRCs, truncation, at most kMaxPngPixels);
 // errors are "PATH: reason" in words.
-Result<PngImage> read_png(const std::string& path);
+Result<Pixels> read_png(const std::string& path);
 
 }  // namespace impossible::image

@@ -3,7 +3,9 @@
 #include <utility>
 
 #include "layout/limits.hpp"
-#include "layout/text_util.hpp"
+#include "base/file_io.hpp"
+#include "base/format.hpp"
+#include "base/user_text.hpp"
 
 namespace impossible::layout::detail {
 

@@ -18,6 +18,8 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "assets/model.hpp"
+#include "image/pixels.hpp"
 #include "math/portal.hpp"
 
 namespace impossible::layout {
@@ -34,76 +36,15 @@ struct BoxProp {
     glm::dvec3 color{0.8};  // defaults to the room's `color`
 };
 
-// A decoded image (a glTF texture's, or a room face's): 8-bit RGBA, rows from
-// the top of the picture down. Texel values are used as stored: the renderers
-// write shaded colours to 8-bit images without an sRGB transfer, so a texel
-// multiplies the colour as the factors and face colours do (docs/choices.md).
-struct Image {
-    int width = 0;
-    int height = 0;
-    std::vector<std::uint8_t> rgba;  // width * height * 4 bytes
-};
-
-// How a texture is read (glTF 2.0 "samplers"; the codes are glTF's, which are
-// OpenGL's). Texture coordinates (0, 0) are the image's top-left corner.
-namespace sampler_code {
-inline constexpr int kNearest = 9728;
-inline constexpr int kLinear = 9729;
-inline constexpr int kNearestMipmapNearest = 9984;
-inline constexpr int kLinearMipmapNearest = 9985;
-inline constexpr int kNearestMipmapLinear = 9986;
-inline constexpr int kLinearMipmapLinear = 9987;
-inline constexpr int kClampToEdge = 33071;
-inline constexpr int kMirroredRepeat = 33648;
-inline constexpr int kRepeat = 10497;
-}  // namespace sampler_code
-
-struct Sampler {
-    int mag_filter = sampler_code::kLinear;              // kNearest or kLinear
-    int min_filter = sampler_code::kLinearMipmapLinear;  // any of the six filters
-    int wrap_s = sampler_code::kRepeat;
-    int wrap_t = sampler_code::kRepeat;
-};
-
-struct Texture {
-    std::shared_ptr<const Image> image;  // never null in a loaded layout
-    Sampler sampler;
-};
-
-// glTF alphaMode. BLEND is refused by the loader (docs/layouts.md says why).
-enum class AlphaMode { Opaque, Mask };
-
-// A glTF material as the renderers use it: the colour at a point of a
-// triangle is base_color.rgb · COLOR_0.rgb · texel.rgb, its alpha
-// base_color.a · COLOR_0.a · texel.a (the texel is white without a texture).
-struct Material {
-    glm::dvec4 base_color{0.8, 0.8, 0.8, 1.0};  // baseColorFactor
-    int texture = -1;                 // into GltfProp::textures; -1: none
-    bool double_sided = false;        // both sides visible, the back's normal reversed
-    AlphaMode alpha_mode = AlphaMode::Opaque;
-    double alpha_cutoff = 0.5;        // Mask: alpha below this is not drawn
-};
-
-// A triangle of a glTF model, in the model's own coordinates (before the
-// prop's scale, yaw and position).
-struct ModelTriangle {
-    std::array<glm::dvec3, 3> position;
-    std::array<glm::dvec3, 3> normal;  // unit
-    glm::dvec3 color{0.8};             // the material's base colour factor (rgb), as in Material
-    std::array<glm::dvec4, 3> vertex_color{glm::dvec4(1.0), glm::dvec4(1.0), glm::dvec4(1.0)};  // COLOR_0
-    std::array<glm::dvec2, 3> uv{};    // the material texture's texCoord set; (0, 0) without
-    int material = -1;                 // into GltfProp::materials; -1: the default (grey, opaque, one-sided)
-};
-
 struct GltfProp {
     std::string path;           // as written in the file
     std::string resolved_path;  // resolved against the layout file's directory
     glm::dvec3 position{0.0};
     double yaw_deg = 0.0;
     double scale = 1.0;
-    std::vector<ModelTriangle> triangles;  // read by the loader
-    std::vector<Material> materials;       // those the triangles use, by ModelTriangle::material
-    std::vector<Texture> textures;         // those the materials use, by Material::texture
+    std::vector<assets::ModelTriangle> triangles;  // read by the loader
+    std::vector<assets::Material> materials;       // those the triangles use, by ModelTriangle::material
+    std::vector<assets::Texture> textures;         // those the materials use, by Material::texture
 };
 
 // The prop's model → layout transform: scale, then yaw about +Y, then move.
@@ -121,7 +62,7 @@ struct Room {
     // `textures` with `all` applied: a face's image (null: none), multiplied
     // by its colour, one tile per texture_size metres from whole multiples of
     // it in layout coordinates (room_texture_uv in shading.hpp orients it).
-    std::array<std::shared_ptr<const Image>, kFaceCount> face_texture{};
+    std::array<std::shared_ptr<const image::Pixels>, kFaceCount> face_texture{};  // RGBA
     double texture_size = 1.0;
     std::vector<Prop> props;
 };

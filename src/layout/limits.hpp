@@ -5,7 +5,13 @@
 
 #include <cstddef>
 
+#include "assets/limits.hpp"
+
 namespace impossible::layout::limits {
+
+// The limits on models, images, coordinates and scales (assets/limits.hpp)
+// are the layout's too.
+using namespace assets::limits;
 
 // The text of a layout file, and how deep and how many its JSON values may be.
 // A hand-written or generated layout is a few kilobytes; these leave a wide
@@ -20,19 +26,14 @@ inline constexpr std::size_t kMaxPropsPerRoom = 10'000;
 inline constexpr std::size_t kMaxPlayAreaCorners = 10'000;
 
 // Coordinates and lengths, in metres. Renderers draw in single precision, so
-// a coordinate beyond 100 km would lose millimetres; lengths below a
+// lengths below a
 // micrometre (widths, heights, depths, room and box extents, checker squares)
 // cannot be seen and only cause degenerate geometry.
-inline constexpr double kMaxCoordinate = 1e5;
 inline constexpr double kMinLength = 1e-6;
 inline constexpr double kMaxLength = 1e5;
 
 // Angles in degrees (yaw_deg).
 inline constexpr double kMaxAngleDeg = 1e6;
-
-// A glTF prop's scale factor.
-inline constexpr double kMinScale = 1e-6;
-inline constexpr double kMaxScale = 1e6;
 
 // Components of direction vectors (normal, up) before normalisation.
 inline constexpr double kMaxDirectionComponent = 1e5;
@@ -43,29 +44,6 @@ inline constexpr double kMinUpAngleDeg = 1.0;   // angle between up and normal
 inline constexpr double kPairSizeTolerance = 1e-6;
 inline constexpr double kHolePlaneTolerance = 1e-4;
 inline constexpr double kDefaultDepth = 0.25;  // a door's box without "depth"
-
-// glTF models.
-inline constexpr std::size_t kMaxModelBytes = 256u << 20;  // 256 MiB
-inline constexpr std::size_t kMaxModelTriangles = 1'000'000;
-inline constexpr std::size_t kMaxLayoutTriangles = 2'000'000;  // all props together
-inline constexpr std::size_t kMaxNodeDepth = 64;
-// A model's JSON (a .gltf file, a .glb's JSON chunk), checked before tinygltf
-// parses it: tinygltf copies `extras` and `extensions` recursively, so deep
-// nesting overflows the stack, and every value costs it about 100 bytes. A
-// glTF document needs about 8 levels; its bulk data lives in buffers.
-inline constexpr std::size_t kMaxModelJsonDepth = 64;
-inline constexpr std::size_t kMaxModelJsonValues = 1'000'000;
-
-// Images: glTF textures and room face textures (PNG or JPEG), decoded to
-// 8-bit RGBA (4 bytes a texel). A side of 8192 pixels is what GL guarantees
-// at least for a texture side on current hardware; the texel budgets bound
-// the decoded memory (64 Mi texels = 256 MiB) per model and for the whole
-// layout, each distinct image (by file, or by model and image index) counted
-// once. A room texture file is read up to kMaxImageFileBytes.
-inline constexpr int kMaxImageSide = 8192;
-inline constexpr std::size_t kMaxModelTexels = std::size_t{64} << 20;
-inline constexpr std::size_t kMaxLayoutTexels = std::size_t{128} << 20;
-inline constexpr std::size_t kMaxImageFileBytes = 64u << 20;  // 64 MiB
 
 // Door boxes and the rasteriser's near plane (render/frame.hpp checks these
 // are its own). An eye sits half an IPD beside the head, so before the head

@@ -4,11 +4,13 @@
 #include <filesystem>
 #include <new>
 
-#include "layout/file_io.hpp"
+#include "base/file_io.hpp"
 #include "layout/json_doc.hpp"
 #include "layout/limits.hpp"
 #include "layout/readers.hpp"
-#include "layout/text_util.hpp"
+#include "base/file_io.hpp"
+#include "base/format.hpp"
+#include "base/user_text.hpp"
 #include "math/polygon.hpp"
 
 namespace impossible::layout {
@@ -20,7 +22,7 @@ using detail::json;
 using detail::NumberKind;
 using detail::Path;
 using detail::field;
-using detail::quote;
+using impossible::quote;
 
 // The Path of a JSON pointer, for messages about keys found by the scanner.
 Path path_of_pointer(const json& root, const std::string& pointer) {
@@ -73,7 +75,7 @@ std::optional<PlayArea> read_play_polygon(Checker& check, const Path& at, const 
     }
     if (math::area(area.polygon) < limits::kMinLength * limits::kMinLength) {
         check.error(list, "the play area is too small (its area is " +
-                              detail::format_number(math::area(area.polygon)) + " m2)");
+                              format_number(math::area(area.polygon)) + " m2)");
         return std::nullopt;
     }
     area.min = area.max = area.polygon[0];
@@ -96,15 +98,15 @@ std::optional<PlayArea> read_play_area(Checker& check, const Path& at, const jso
     for (int a = 0; a < 2; ++a) {
         if (!((*max)[a] > (*min)[a])) {
             check.error(at / "max", std::string("must be greater than min on both axes (") + axes[a] +
-                                        ": " + detail::format_number((*max)[a]) + " <= " +
-                                        detail::format_number((*min)[a]) + ")");
+                                        ": " + format_number((*max)[a]) + " <= " +
+                                        format_number((*min)[a]) + ")");
             return std::nullopt;
         }
         if ((*max)[a] - (*min)[a] < limits::kMinLength) {
             check.error(at / "max", std::string("the play area is too small (") + axes[a] + ": " +
-                                        detail::format_number((*max)[a] - (*min)[a]) +
+                                        format_number((*max)[a] - (*min)[a]) +
                                         " m; the minimum is " +
-                                        detail::format_number(limits::kMinLength) + " m)");
+                                        format_number(limits::kMinLength) + " m)");
             return std::nullopt;
         }
     }
@@ -163,7 +165,7 @@ void read_layout(Checker& check, const json& root, const std::string& base_dir, 
         if (!v->is_number()) {
             check.error(top / "version", "must be the number 1 (got " + detail::json_type_name(*v) + ")");
         } else if (v->get<double>() != 1.0) {
-            check.error(top / "version", "unsupported version " + detail::format_number(v->get<double>()) +
+            check.error(top / "version", "unsupported version " + format_number(v->get<double>()) +
                                              " (this program reads version 1)");
         }
     }
@@ -172,7 +174,7 @@ void read_layout(Checker& check, const json& root, const std::string& base_dir, 
     }
     if (const json* v = field(root, "play_area")) layout.play_area = read_play_area(check, top / "play_area", *v);
 
-    detail::ModelCache models(base_dir);
+    assets::AssetCache models(base_dir);
     std::vector<detail::RoomDraft> rooms;
     if (const json* v = field(root, "rooms")) rooms = detail::read_rooms(check, top / "rooms", *v, models);
     StartDraft start;
@@ -219,7 +221,7 @@ bool blank(std::string_view text) {
 
 Diagnostic diagnostic_at(std::string_view text, const std::string& source, std::size_t offset,
                          std::string message) {
-    const detail::TextPosition position = detail::text_position(text, offset);
+    const TextPosition position = text_position(text, offset);
     return {source, position.line, position.column, std::move(message)};
 }
 
@@ -227,9 +229,9 @@ LoadResult load(std::string_view text, const std::string& source, const std::str
     LoadResult result;
     if (text.size() > limits::kMaxFileBytes) {
         result.errors.push_back({source, 0, 0,
-                                 "the file is too large (" + detail::format_bytes(text.size()) +
+                                 "the file is too large (" + format_bytes(text.size()) +
                                      "; the limit is " +
-                                     detail::format_bytes(limits::kMaxFileBytes) + ")"});
+                                     format_bytes(limits::kMaxFileBytes) + ")"});
         return result;
     }
     if (blank(text)) {
@@ -266,18 +268,18 @@ LoadResult load_layout_text(const std::string& text, const std::string& source,
     } catch (const std::bad_alloc&) {
         return {std::nullopt, {{source, 0, 0, "out of memory while reading the layout"}}, {}};
     } catch (const std::exception& e) {
-        return {std::nullopt, {{source, 0, 0, "internal error: " + detail::printable(e.what())}}, {}};
+        return {std::nullopt, {{source, 0, 0, "internal error: " + printable(e.what())}}, {}};
     }
 }
 
 LoadResult load_layout_file(const std::string& path) {
     try {
-        const Result<std::vector<unsigned char>> bytes = detail::read_file_bytes(path, limits::kMaxFileBytes, false);
+        const Result<std::vector<unsigned char>> bytes = read_file_bytes(path, limits::kMaxFileBytes, false);
         if (!bytes) return {std::nullopt, {{path, 0, 0, "the file " + bytes.error()}}, {}};
         const std::string base_dir = std::filesystem::path(path).parent_path().string();
         return load_layout_text(std::string(bytes->begin(), bytes->end()), path, base_dir);
     } catch (const std::exception& e) {
-        return {std::nullopt, {{path, 0, 0, "cannot read the file: " + detail::printable(e.what())}}, {}};
+        return {std::nullopt, {{path, 0, 0, "cannot read the file: " + printable(e.what())}}, {}};
     }
 }
 

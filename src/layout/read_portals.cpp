@@ -6,7 +6,9 @@
 
 #include "layout/limits.hpp"
 #include "layout/readers.hpp"
-#include "layout/text_util.hpp"
+#include "base/file_io.hpp"
+#include "base/format.hpp"
+#include "base/user_text.hpp"
 #include "math/conventions.hpp"
 
 namespace impossible::layout::detail {

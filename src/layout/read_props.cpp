@@ -1,72 +1,16 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "layout/file_io.hpp"
-#include "layout/gltf_model.hpp"
-#include "layout/image_decode.hpp"
+#include "base/file_io.hpp"
+#include "assets/gltf_model.hpp"
+#include "image/decode.hpp"
 #include "layout/limits.hpp"
 #include "layout/readers.hpp"
-#include "layout/text_util.hpp"
+#include "base/file_io.hpp"
+#include "base/format.hpp"
+#include "base/user_text.hpp"
 
 namespace impossible::layout::detail {
-
-std::string ModelCache::resolve(const std::string& path) const {
-    const std::filesystem::path p(path);
-    if (p.is_absolute() || base_dir_.empty()) return p.lexically_normal().string();
-    return (std::filesystem::path(base_dir_) / p).lexically_normal().string();
-}
-
-namespace {
-
-std::string over_texel_budget() {
-    return "over the limit of " + std::to_string(limits::kMaxLayoutTexels) +
-           " decoded texels for all the images of a layout (glTF textures and room textures together)";
-}
-
-}  // namespace
-
-const Result<GltfModel>& ModelCache::load(const std::string& resolved) {
-    auto it = entries_.find(resolved);
-    if (it != entries_.end()) return it->second;
-    Result<GltfModel> model = load_gltf_model(resolved, limits::kMaxModelTriangles);
-    if (model && model->texels > limits::kMaxLayoutTexels - total_texels_) {
-        model = Error{"has images of " + std::to_string(model->texels) + " texels, which bring the layout " +
-                      over_texel_budget()};
-    } else if (model) {
-        total_texels_ += model->texels;
-    }
-    return entries_.emplace(resolved, std::move(model)).first->second;
-}
-
-const Result<std::shared_ptr<const Image>>& ModelCache::load_image(const std::string& resolved) {
-    auto it = images_.find(resolved);
-    if (it != images_.end()) return it->second;
-    const auto decode = [&]() -> Result<std::shared_ptr<const Image>> {
-        const Result<std::vector<unsigned char>> bytes =
-            read_file_bytes(resolved, limits::kMaxImageFileBytes, true);
-        if (!bytes) return Error{bytes.error()};
-        if (bytes->empty()) return Error{"is empty (expected a PNG or JPEG image)"};
-        const Result<ImageSize> size = image_size(bytes->data(), bytes->size());
-        if (!size) return Error{size.error()};
-        if (size->texels() > limits::kMaxLayoutTexels - total_texels_) {
-            return Error{"is " + std::to_string(size->width) + " x " + std::to_string(size->height) +
-                         " pixels, which brings the layout " + over_texel_budget()};
-        }
-        Result<Image> image = decode_image(bytes->data(), bytes->size());
-        if (!image) return Error{image.error()};
-        total_texels_ += size->texels();
-        return std::make_shared<const Image>(std::move(*image));
-    };
-    return images_.emplace(resolved, decode()).first->second;
-}
-
-Result<void> ModelCache::add_instance(std::size_t triangles) {
-    total_triangles_ += triangles;
-    if (total_triangles_ > limits::kMaxLayoutTriangles)
-        return Error{"the glTF props of the layout have more than " + std::to_string(limits::kMaxLayoutTriangles) +
-                     " triangles together"};
-    return {};
-}
 
 namespace {
 
@@ -115,7 +59,7 @@ std::optional<BoxProp> read_box_prop(Checker& check, const Path& at, const json&
 }
 
 std::optional<GltfProp> read_gltf_prop(Checker& check, const Path& at, const json& value,
-                                       ModelCache& models) {
+                                       assets::AssetCache& models) {
     check.check_fields(at, value, {"gltf", "position", "yaw_deg", "scale"}, {"gltf"});
     GltfProp prop;
     bool ok = true;
@@ -155,7 +99,7 @@ std::optional<GltfProp> read_gltf_prop(Checker& check, const Path& at, const jso
     }
     prop.path = *path;
     prop.resolved_path = models.resolve(*path);
-    const Result<GltfModel>& model = models.load(prop.resolved_path);
+    const Result<assets::GltfModel>& model = models.load(prop.resolved_path);
     if (!model) {
         check.error(gltf_at, "the model " + quote(prop.resolved_path) + " " + model.error());
         return std::nullopt;
@@ -174,7 +118,7 @@ std::optional<GltfProp> read_gltf_prop(Checker& check, const Path& at, const jso
 }  // namespace
 
 void read_props(Checker& check, const Path& at, const json& props, const glm::dvec3& room_colour,
-                ModelCache& models, std::vector<Prop>& out) {
+                assets::AssetCache& models, std::vector<Prop>& out) {
     for (std::size_t i = 0; i < props.size(); ++i) {
         const Path prop_at = at / i;
         const json& value = props[i];

@@ -4,7 +4,9 @@
 
 #include "layout/limits.hpp"
 #include "layout/readers.hpp"
-#include "layout/text_util.hpp"
+#include "base/file_io.hpp"
+#include "base/format.hpp"
+#include "base/user_text.hpp"
 
 namespace impossible::layout::detail {
 
@@ -37,10 +39,10 @@ void read_face_colors(Checker& check, const Path& at, const json& value, Room& r
 
 // `textures`: a PNG or JPEG image per face, `all` for the faces without
 // their own key. Each file is read once per layout (the cache shares it).
-void read_textures(Checker& check, const Path& at, const json& value, ModelCache& models, Room& room) {
+void read_textures(Checker& check, const Path& at, const json& value, assets::AssetCache& models, Room& room) {
     if (!check.expect_object(at, value)) return;
-    std::array<std::shared_ptr<const Image>, kFaceCount> own{};
-    std::shared_ptr<const Image> all;
+    std::array<std::shared_ptr<const image::Pixels>, kFaceCount> own{};
+    std::shared_ptr<const image::Pixels> all;
     for (auto it = value.begin(); it != value.end(); ++it) {
         const std::string& key = it.key();
         if (!key.empty() && key.front() == '_') continue;  // a comment
@@ -63,7 +65,7 @@ void read_textures(Checker& check, const Path& at, const json& value, ModelCache
             continue;
         }
         const std::string resolved = models.resolve(*path);
-        const Result<std::shared_ptr<const Image>>& image = models.load_image(resolved);
+        const Result<std::shared_ptr<const image::Pixels>>& image = models.load_image(resolved);
         if (!image) {
             check.error(key_at, "the image " + quote(resolved) + " " + image.error());
             continue;
@@ -73,7 +75,7 @@ void read_textures(Checker& check, const Path& at, const json& value, ModelCache
     for (std::size_t f = 0; f < own.size(); ++f) room.face_texture[f] = own[f] != nullptr ? own[f] : all;
 }
 
-RoomDraft read_room(Checker& check, const Path& at, const json& value, ModelCache& models) {
+RoomDraft read_room(Checker& check, const Path& at, const json& value, assets::AssetCache& models) {
     RoomDraft draft;
     draft.path = at;
     if (!check.expect_object(at, value)) return draft;
@@ -135,7 +137,7 @@ RoomDraft read_room(Checker& check, const Path& at, const json& value, ModelCach
 }  // namespace
 
 std::vector<RoomDraft> read_rooms(Checker& check, const Path& at, const json& rooms,
-                                  ModelCache& models) {
+                                  assets::AssetCache& models) {
     std::vector<RoomDraft> drafts;
     if (!check.expect_array(at, rooms, limits::kMaxRooms)) return drafts;
     if (rooms.empty()) {

@@ -10,9 +10,10 @@
 #include <type_traits>
 #include <vector>
 
+#include "assets/asset_cache.hpp"
 #include "base/result.hpp"
 #include "layout/checker.hpp"
-#include "layout/gltf_model.hpp"
+#include "assets/gltf_model.hpp"
 #include "layout/layout.hpp"
 
 namespace impossible::layout::detail {
@@ -35,41 +36,12 @@ struct PortalDraft {
     bool kind_ok = true;    // "kind" is absent (a door) or one of the three kinds
 };
 
-// glTF models and room texture images, read once per file per layout, with
-// caps on all triangles and on all decoded texels.
-class ModelCache {
-public:
-    explicit ModelCache(std::string base_dir) : base_dir_(std::move(base_dir)) {}
-
-    // The path resolved against the layout's directory.
-    std::string resolve(const std::string& path) const;
-
-    // Reads the model at `resolved` (or returns it from the cache); the
-    // error is a reason, without the path. Its texels count toward the
-    // layout's cap once.
-    const Result<GltfModel>& load(const std::string& resolved);
-
-    // Reads and decodes the PNG or JPEG image at `resolved` (or returns it
-    // from the cache: one Image per file); the error is a reason, without
-    // the path ("does not exist", "is neither PNG nor JPEG data").
-    const Result<std::shared_ptr<const Image>>& load_image(const std::string& resolved);
-
-    // Counts one more instance of `triangles` toward the layout's cap.
-    Result<void> add_instance(std::size_t triangles);
-
-private:
-    std::string base_dir_;
-    std::map<std::string, Result<GltfModel>> entries_;
-    std::map<std::string, Result<std::shared_ptr<const Image>>> images_;
-    std::size_t total_triangles_ = 0;
-    std::size_t total_texels_ = 0;  // decoded, models and room textures, each once
-};
 
 std::vector<RoomDraft> read_rooms(Checker& check, const Path& at, const json& rooms,
-                                  ModelCache& models);
+                                  assets::AssetCache& models);
 
 void read_props(Checker& check, const Path& at, const json& props, const glm::dvec3& room_colour,
-                ModelCache& models, std::vector<Prop>& out);
+                assets::AssetCache& models, std::vector<Prop>& out);
 
 std::vector<PortalDraft> read_portals(Checker& check, const Path& at, const json& portals);
 

@@ -23,7 +23,7 @@ Summary summarize(const Layout& layout) {
         ++s.pairs;
         ++(p.kind == PortalKind::Window ? s.window_pairs : s.door_pairs);
     }
-    std::set<const Image*> images;
+    std::set<const image::Pixels*> images;
     for (const Room& room : layout.rooms) {
         s.floor_area += (room.max.x - room.min.x) * (room.max.z - room.min.z);
         for (const auto& texture : room.face_texture) {
@@ -33,7 +33,7 @@ Summary summarize(const Layout& layout) {
         }
         for (const Prop& prop : room.props) {
             if (const auto* gltf = std::get_if<GltfProp>(&prop)) {
-                for (const Texture& texture : gltf->textures) images.insert(texture.image.get());
+                for (const assets::Texture& texture : gltf->textures) images.insert(texture.image.get());
             }
         }
     }

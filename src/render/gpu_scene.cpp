@@ -8,13 +8,13 @@ namespace impossible::render {
 namespace {
 
 bool has_mipmaps(int min_filter) {
-    namespace code = layout::sampler_code;
+    namespace code = assets::sampler_code;
     return min_filter == code::kNearestMipmapNearest || min_filter == code::kLinearMipmapNearest ||
            min_filter == code::kNearestMipmapLinear || min_filter == code::kLinearMipmapLinear;
 }
 
 gl::Texture upload_texture(const scene::SceneTexture& t) {
-    const layout::Image& image = *t.image;
+    const image::Pixels& image = *t.image;
     int levels = 1;
     if (has_mipmaps(t.sampler.min_filter))
         while ((std::max(image.width, image.height) >> levels) > 0) ++levels;
@@ -23,7 +23,7 @@ gl::Texture upload_texture(const scene::SceneTexture& t) {
     glTextureStorage2D(name, levels, GL_RGBA8, image.width, image.height);
     // Rows top first: row 0 is t = 0, as texture coordinates put the image's top there.
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTextureSubImage2D(name, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+    glTextureSubImage2D(name, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.data.data());
     if (levels > 1) glGenerateTextureMipmap(name);
     // The sampler codes are glTF's, which are OpenGL's enums.
     glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, t.sampler.mag_filter);

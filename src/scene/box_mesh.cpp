@@ -34,8 +34,8 @@ namespace {
 // One corner of a glTF triangle placed in the layout: colour = the material's
 // factor times COLOR_0, alpha likewise; `side` -1 reverses the normal (the
 // back of a double-sided triangle).
-std::uint32_t model_vertex(MeshWriter& out, const layout::GltfProp& prop, const layout::ModelTriangle& t,
-                           const layout::Material& material, std::size_t k, double side) {
+std::uint32_t model_vertex(MeshWriter& out, const layout::GltfProp& prop, const assets::ModelTriangle& t,
+                           const assets::Material& material, std::size_t k, double side) {
     const glm::dvec3 p = layout::place_model_point(prop, t.position[k]);
     glm::dvec3 n = layout::place_model_normal(prop, t.normal[k]);
     const double length = glm::length(n);
@@ -47,8 +47,8 @@ std::uint32_t model_vertex(MeshWriter& out, const layout::GltfProp& prop, const 
 }  // namespace
 
 void append_gltf_prop(MeshWriter& out, const layout::GltfProp& prop, std::vector<DrawBatch>& batches) {
-    const layout::Material kDefault;
-    const auto material_of = [&](int m) -> const layout::Material& {
+    const assets::Material kDefault;
+    const auto material_of = [&](int m) -> const assets::Material& {
         return m < 0 ? kDefault : prop.materials[static_cast<std::size_t>(m)];
     };
     // Each used material's draw state, made on first use (so that only used
@@ -59,13 +59,13 @@ void append_gltf_prop(MeshWriter& out, const layout::GltfProp& prop, std::vector
     const auto state = [&](int m) -> const DrawBatch& {
         const auto at = static_cast<std::size_t>(m + 1);
         if (!known[at]) {
-            const layout::Material& mat = material_of(m);
+            const assets::Material& mat = material_of(m);
             DrawBatch b;
             if (mat.texture >= 0) {
-                const layout::Texture& tex = prop.textures[static_cast<std::size_t>(mat.texture)];
+                const assets::Texture& tex = prop.textures[static_cast<std::size_t>(mat.texture)];
                 b.texture = out.texture(tex.image, tex.sampler);
             }
-            if (mat.alpha_mode == layout::AlphaMode::Mask) b.alpha_cutoff = static_cast<float>(mat.alpha_cutoff);
+            if (mat.alpha_mode == assets::AlphaMode::Mask) b.alpha_cutoff = static_cast<float>(mat.alpha_cutoff);
             state_of[at] = b;
             known[at] = true;
             if (std::none_of(states.begin(), states.end(), [&](const DrawBatch& s) { return s.same_state(b); }))
@@ -73,15 +73,15 @@ void append_gltf_prop(MeshWriter& out, const layout::GltfProp& prop, std::vector
         }
         return state_of[at];
     };
-    for (const layout::ModelTriangle& t : prop.triangles) state(t.material);
+    for (const assets::ModelTriangle& t : prop.triangles) state(t.material);
 
     // Triangles grouped by state, in their order within each (a model whose
     // materials all draw alike keeps its order, and is one batch).
     for (const DrawBatch& s : states) {
         const std::uint32_t first = out.index_count();
-        for (const layout::ModelTriangle& t : prop.triangles) {
+        for (const assets::ModelTriangle& t : prop.triangles) {
             if (!state(t.material).same_state(s)) continue;
-            const layout::Material& mat = material_of(t.material);
+            const assets::Material& mat = material_of(t.material);
             std::uint32_t ids[3];
             for (std::size_t k = 0; k < 3; ++k) ids[k] = model_vertex(out, prop, t, mat, k, 1.0);
             out.triangle(ids[0], ids[1], ids[2]);

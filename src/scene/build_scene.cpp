@@ -55,7 +55,7 @@ Scene build_scene(const layout::Layout& layout) {
         for (std::size_t f = 0; f < faces.size(); ++f) {
             DrawBatch b;
             b.range = faces[f];
-            if (room.face_texture[f]) b.texture = out.texture(room.face_texture[f], layout::Sampler{});
+            if (room.face_texture[f]) b.texture = out.texture(room.face_texture[f], assets::Sampler{});
             add_batch(objects.surfaces, b);
         }
         for (const layout::Prop& prop : room.props) {

@@ -69,8 +69,8 @@ struct MeshWriter {
     IndexRange range_since(std::uint32_t first) const { return {first, index_count() - first}; }
 
     // The index of an image with a sampler in Scene::textures, added when new.
-    int texture(const std::shared_ptr<const layout::Image>& image, const layout::Sampler& sampler) {
-        const auto same = [](const layout::Sampler& a, const layout::Sampler& b) {
+    int texture(const std::shared_ptr<const image::Pixels>& image, const assets::Sampler& sampler) {
+        const auto same = [](const assets::Sampler& a, const assets::Sampler& b) {
             return a.mag_filter == b.mag_filter && a.min_filter == b.min_filter && a.wrap_s == b.wrap_s &&
                    a.wrap_t == b.wrap_t;
         };

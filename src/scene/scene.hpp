@@ -40,8 +40,8 @@ struct IndexRange {
 // An image and how it is sampled, as the GPU needs it (its mipmaps are made
 // on upload); room faces use the default sampler.
 struct SceneTexture {
-    std::shared_ptr<const layout::Image> image;
-    layout::Sampler sampler;
+    std::shared_ptr<const image::Pixels> image;
+    assets::Sampler sampler;
 };
 
 // Part of a cell drawn with one material state: a texture (or none) and an

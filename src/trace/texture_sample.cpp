@@ -10,9 +10,9 @@ int wrap_texel(double i, int size, int wrap) {
     if (!std::isfinite(i)) return 0;
     const double n = size;
     double w = 0.0;
-    if (wrap == layout::sampler_code::kClampToEdge) {
+    if (wrap == assets::sampler_code::kClampToEdge) {
         w = std::clamp(i, 0.0, n - 1.0);
-    } else if (wrap == layout::sampler_code::kMirroredRepeat) {
+    } else if (wrap == assets::sampler_code::kMirroredRepeat) {
         const double m = i - 2.0 * n * std::floor(i / (2.0 * n));  // i mod 2·size, in [0, 2·size]
         w = m < n ? m : 2.0 * n - 1.0 - m;  // = (size - 1) - mirror(m - size)
     } else {
@@ -23,18 +23,18 @@ int wrap_texel(double i, int size, int wrap) {
     return static_cast<int>(std::clamp(w, 0.0, n - 1.0));
 }
 
-glm::dvec4 texel(const layout::Image& image, int i, int j) {
+glm::dvec4 texel(const image::Pixels& image, int i, int j) {
     const std::size_t at = 4 * (static_cast<std::size_t>(j) * static_cast<std::size_t>(image.width) + i);
-    const std::uint8_t* p = image.rgba.data() + at;
+    const std::uint8_t* p = image.data.data() + at;
     return glm::dvec4(p[0], p[1], p[2], p[3]) / 255.0;
 }
 
-glm::dvec4 sample_level0(const layout::Image& image, const layout::Sampler& sampler, glm::dvec2 st) {
+glm::dvec4 sample_level0(const image::Pixels& image, const assets::Sampler& sampler, glm::dvec2 st) {
     const int w = image.width, h = image.height;
-    if (w <= 0 || h <= 0 || image.rgba.size() < 4 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h))
+    if (w <= 0 || h <= 0 || image.data.size() < 4 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h))
         return glm::dvec4(1.0);
     const double x = st.x * w, y = st.y * h;
-    if (sampler.mag_filter == layout::sampler_code::kNearest) {
+    if (sampler.mag_filter == assets::sampler_code::kNearest) {
         return texel(image, wrap_texel(std::floor(x), w, sampler.wrap_s), wrap_texel(std::floor(y), h, sampler.wrap_t));
     }
     const double x0 = std::floor(x - 0.5), y0 = std::floor(y - 0.5);

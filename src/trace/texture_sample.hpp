@@ -19,23 +19,23 @@ namespace impossible::trace {
 
 // The texel index along an axis of `size` texels (size > 0) for the whole
 // texel coordinate `i` (a whole number, possibly negative or beyond size),
-// wrapped by `wrap` (a layout::sampler_code wrap code; anything else is
+// wrapped by `wrap` (a assets::sampler_code wrap code; anything else is
 // taken as REPEAT): REPEAT i mod size; CLAMP_TO_EDGE clamp(i, 0, size - 1);
 // MIRRORED_REPEAT (size - 1) - mirror((i mod 2·size) - size), mirror(a) =
 // a ≥ 0 ? a : -(1 + a). Not finite: 0.
 int wrap_texel(double i, int size, int wrap);
 
 // The texel (i, j), both already wrapped into the image, as bytes / 255.
-glm::dvec4 texel(const layout::Image& image, int i, int j);
+glm::dvec4 texel(const image::Pixels& image, int i, int j);
 
 // The image read at (s, t) at level 0 with the sampler's mag filter:
 // NEAREST the texel (⌊s·w⌋, ⌊t·h⌋); LINEAR (any other code) GL's bilinear
 // blend of the texels ⌊x⌋, ⌊x⌋ + 1 (and ⌊y⌋, ⌊y⌋ + 1) at x = s·w - 1/2,
 // y = t·h - 1/2, weighted by the fractional parts; each index wrapped per
 // axis. An empty image reads as white, (1, 1, 1, 1).
-glm::dvec4 sample_level0(const layout::Image& image, const layout::Sampler& sampler, glm::dvec2 st);
+glm::dvec4 sample_level0(const image::Pixels& image, const assets::Sampler& sampler, glm::dvec2 st);
 
-inline glm::dvec4 sample_level0(const layout::Texture& texture, glm::dvec2 st) {
+inline glm::dvec4 sample_level0(const assets::Texture& texture, glm::dvec2 st) {
     return sample_level0(*texture.image, texture.sampler, st);
 }
 

@@ -53,19 +53,19 @@ void add_prop(SceneRoom& room, const layout::Prop& prop) {
     // The model's materials follow the room's earlier ones.
     const int first_material = static_cast<int>(room.materials.size());
     const int texture_count = static_cast<int>(model.textures.size());
-    for (const layout::Material& m : model.materials) {
+    for (const assets::Material& m : model.materials) {
         if (m.texture < -1 || m.texture >= texture_count)
             throw std::invalid_argument("model '" + model.path + "': a material names no texture of the model");
         PropMaterial material;
         material.alpha = m.base_color.a;
         if (m.texture >= 0) material.texture = model.textures[m.texture];
         material.double_sided = m.double_sided;
-        material.mask = m.alpha_mode == layout::AlphaMode::Mask;
+        material.mask = m.alpha_mode == assets::AlphaMode::Mask;
         material.alpha_cutoff = m.alpha_cutoff;
         room.materials.push_back(material);
     }
     const int material_count = static_cast<int>(model.materials.size());
-    for (const layout::ModelTriangle& t : model.triangles) {
+    for (const assets::ModelTriangle& t : model.triangles) {
         if (t.material < -1 || t.material >= material_count)
             throw std::invalid_argument("model '" + model.path + "': a triangle names no material of the model");
         PropTriangle placed;

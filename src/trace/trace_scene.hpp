@@ -46,7 +46,7 @@ struct RoomFace {
     // Multiplies `color` where set: read at scene::room_texture_uv(face, p,
     // texture_size) with the default sampler (docs/tracer.md, "Materials
     // and textures").
-    std::shared_ptr<const layout::Image> texture;
+    std::shared_ptr<const image::Pixels> texture;
     double texture_size = 1.0;
 };
 
@@ -57,12 +57,12 @@ struct PropBox {
     dvec3 color{0.8};
 };
 
-// A glTF material as the tracer reads it (layout::Material, with its
+// A glTF material as the tracer reads it (assets::Material, with its
 // texture looked up). A triangle without one (PropTriangle::material < 0)
 // is opaque, one-sided and untextured.
 struct PropMaterial {
     double alpha = 1.0;          // baseColorFactor's alpha (its rgb is PropTriangle::color)
-    layout::Texture texture;     // image null: none (the texel is white)
+    assets::Texture texture;     // image null: none (the texel is white)
     bool double_sided = false;   // hit from both sides, the back's normal reversed
     bool mask = false;           // alphaMode MASK: alpha below alpha_cutoff is no surface
     double alpha_cutoff = 0.5;

@@ -10,8 +10,8 @@
 
 namespace impossible::testing {
 
-inline image::PngImage read_png_ok(const std::string& path) {
-    Result<image::PngImage> read = image::read_png(path);
+inline image::Pixels read_png_ok(const std::string& path) {
+    Result<image::Pixels> read = image::read_png(path);
     if (!read) {
         ADD_FAILURE() << read.error();
         return {};

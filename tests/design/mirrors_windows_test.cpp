@@ -124,7 +124,7 @@ TEST(DesignMirrors, ThePlanDrawsMirrorsAndWindowsApart) {
     EXPECT_NE(svg.find("<g id=\"mirrors\">"), std::string::npos);
     EXPECT_NE(svg.find("<g id=\"windows\">"), std::string::npos);
     EXPECT_NE(svg.find("data-name=\"a_mirror_west\""), std::string::npos);
-    const design::Image image = design::plan_raster(d, 20.0);
+    const image::Pixels image = design::plan_raster(d, 20.0);
     EXPECT_GT(image.width, 0);
     // A layout of doors only has no such groups.
     const layout::Layout plain = load_file("default.json");

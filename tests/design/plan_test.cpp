@@ -111,14 +111,14 @@ TEST(Plan, NamesAreEscaped) {
 TEST(Plan, RasterShowsThePlayAreaAndTheRooms) {
     const layout::Layout l = load_file("default.json");
     const design::Drawing d = design::plan_drawing(l, design::make_report(l), {});
-    const design::Image image = design::plan_raster(d, 40.0);
+    const image::Pixels image = design::plan_raster(d, 40.0);
     // 4 x 4 m play area plus 0.5 m rounded out to whole metres on each side: 6 m = 240 px.
     EXPECT_EQ(image.width, 240);
-    ASSERT_EQ(image.rgb.size(), static_cast<std::size_t>(image.width) * image.height * 3);
+    ASSERT_EQ(image.data.size(), static_cast<std::size_t>(image.width) * image.height * 3);
     // The top-left corner is white; a point inside the rooms is not.
-    EXPECT_EQ(image.rgb[0], 255);
+    EXPECT_EQ(image.data[0], 255);
     const std::size_t inside = (static_cast<std::size_t>(28 + 40 * 2.5) * image.width + 40 * 2) * 3;
-    EXPECT_LT(image.rgb[inside] + image.rgb[inside + 1] + image.rgb[inside + 2], 3 * 250);
+    EXPECT_LT(image.data[inside] + image.data[inside + 1] + image.data[inside + 2], 3 * 250);
 }
 
 }  // namespace

@@ -56,7 +56,7 @@ protected:
 TEST_F(Cli, RenderWithoutArgumentsWritesStereoPngOfTheDefaultLayout) {
     const ProgramRun run = run_program("render --size 160x90", dir_);
     ASSERT_EQ(run.status, 0) << run.err;
-    const image::PngImage png = testing::read_png_ok((dir_ / "stereo.png").string());
+    const image::Pixels png = testing::read_png_ok((dir_ / "stereo.png").string());
         EXPECT_EQ(png.width, 320);
     EXPECT_EQ(png.height, 90);
     EXPECT_EQ(png.channels, 3);
@@ -65,7 +65,7 @@ TEST_F(Cli, RenderWithoutArgumentsWritesStereoPngOfTheDefaultLayout) {
 TEST_F(Cli, DefaultSizeIs1280x720PerEye) {
     const ProgramRun run = run_program("render --out big.png", dir_);
     ASSERT_EQ(run.status, 0) << run.err;
-    const image::PngImage png = testing::read_png_ok((dir_ / "big.png").string());
+    const image::Pixels png = testing::read_png_ok((dir_ / "big.png").string());
     EXPECT_EQ(png.width, 2560);
     EXPECT_EQ(png.height, 720);
 }
@@ -80,9 +80,9 @@ TEST_F(Cli, RenderIsDeterministic) {
 
 TEST_F(Cli, IdsMapIsGreyWithRoomNumbers) {
     ASSERT_EQ(run_program("render --size 64x48 --ids ids.png --backend osmesa", dir_).status, 0);
-    const image::PngImage ids = testing::read_png_ok((dir_ / "ids.png").string());
+    const image::Pixels ids = testing::read_png_ok((dir_ / "ids.png").string());
         EXPECT_EQ(ids.channels, 1);
-    for (std::uint8_t v : ids.pixels) EXPECT_TRUE(v == 1 || v == 2) << int(v);
+    for (std::uint8_t v : ids.data) EXPECT_TRUE(v == 1 || v == 2) << int(v);
 }
 
 TEST_F(Cli, PoseValueMayStartWithAMinus) {

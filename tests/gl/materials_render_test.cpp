@@ -29,14 +29,14 @@ void expect_near(const image::Image& image, int x, int y, std::array<int, 3> wan
 
 // A side×side image whose quadrants are red, green (top right), blue (bottom
 // left) and yellow; `alpha` per quadrant in the same order.
-std::shared_ptr<const layout::Image> quadrants(int side, std::array<std::uint8_t, 4> alpha = {255, 255, 255, 255}) {
+std::shared_ptr<const image::Pixels> quadrants(int side, std::array<std::uint8_t, 4> alpha = {255, 255, 255, 255}) {
     static constexpr std::uint8_t kRgb[4][3] = {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {255, 255, 0}};
-    auto image = std::make_shared<layout::Image>();
+    auto image = std::make_shared<image::Pixels>();
     image->width = image->height = side;
     for (int y = 0; y < side; ++y) {
         for (int x = 0; x < side; ++x) {
             const int q = (y < side / 2 ? 0 : 2) + (x < side / 2 ? 0 : 1);
-            image->rgba.insert(image->rgba.end(), {kRgb[q][0], kRgb[q][1], kRgb[q][2], alpha[static_cast<std::size_t>(q)]});
+            image->data.insert(image->data.end(), {kRgb[q][0], kRgb[q][1], kRgb[q][2], alpha[static_cast<std::size_t>(q)]});
         }
     }
     return image;
@@ -103,7 +103,7 @@ layout::GltfProp quad_prop(double zq) {
     const glm::dvec3 bl(-1.5, 0.5, zq), br(1.5, 0.5, zq), tr(1.5, 2.5, zq), tl(-1.5, 2.5, zq);
     const glm::dvec2 uv_bl(0, 1), uv_br(1, 1), uv_tr(1, 0), uv_tl(0, 0);
     const auto tri = [&](glm::dvec3 a, glm::dvec3 b, glm::dvec3 c, glm::dvec2 ua, glm::dvec2 ub, glm::dvec2 uc) {
-        layout::ModelTriangle t;
+        assets::ModelTriangle t;
         t.position = {a, b, c};
         t.normal = {glm::dvec3(0, 0, 1), glm::dvec3(0, 0, 1), glm::dvec3(0, 0, 1)};
         t.uv = {ua, ub, uc};
@@ -112,18 +112,18 @@ layout::GltfProp quad_prop(double zq) {
     };
     tri(bl, br, tr, uv_bl, uv_br, uv_tr);
     tri(bl, tr, tl, uv_bl, uv_tr, uv_tl);
-    layout::Material m;
+    assets::Material m;
     m.base_color = glm::dvec4(1.0);
     prop.materials.push_back(m);
-    for (layout::ModelTriangle& t : prop.triangles) t.color = glm::dvec3(m.base_color);
+    for (assets::ModelTriangle& t : prop.triangles) t.color = glm::dvec3(m.base_color);
     return prop;
 }
 
-layout::Texture nearest(std::shared_ptr<const layout::Image> image) {
-    layout::Texture t;
+assets::Texture nearest(std::shared_ptr<const image::Pixels> image) {
+    assets::Texture t;
     t.image = std::move(image);
-    t.sampler.mag_filter = layout::sampler_code::kNearest;
-    t.sampler.min_filter = layout::sampler_code::kNearest;
+    t.sampler.mag_filter = assets::sampler_code::kNearest;
+    t.sampler.min_filter = assets::sampler_code::kNearest;
     return t;
 }
 
@@ -143,7 +143,7 @@ TEST(MaterialsRender, VertexColoursMultiplyTheFactor) {
     layout::Layout l = grey_room();
     layout::GltfProp prop = quad_prop(-1.5);
     prop.materials[0].base_color = glm::dvec4(1.0, 0.5, 1.0, 1.0);
-    for (layout::ModelTriangle& t : prop.triangles) {
+    for (assets::ModelTriangle& t : prop.triangles) {
         t.color = glm::dvec3(1.0, 0.5, 1.0);
         for (std::size_t k = 0; k < 3; ++k)  // red on the left edge, blue on the right
             t.vertex_color[k] = t.position[k].x < 0 ? glm::dvec4(0.8, 0.6, 0.2, 1.0) : glm::dvec4(0.2, 0.6, 0.8, 1.0);
@@ -191,7 +191,7 @@ TEST(MaterialsRender, AlphaMaskCutsHolesWhereFactorTimesTexelIsBelowTheCutoff) {
     layout::GltfProp prop = quad_prop(-1.5);
     prop.textures.push_back(nearest(quadrants(2, {255, 0, 255, 128})));
     prop.materials[0].texture = 0;
-    prop.materials[0].alpha_mode = layout::AlphaMode::Mask;
+    prop.materials[0].alpha_mode = assets::AlphaMode::Mask;
     prop.materials[0].alpha_cutoff = 0.5;
     l.rooms[0].props.push_back(prop);
     const std::array<int, 3> wall = shaded({0.5, 0.5, 0.5}, {0, 0, 1});
@@ -221,8 +221,8 @@ TEST(MaterialsRender, OneDrawPerMaterialStateAndNoneExtraForPlainRooms) {
     layout::GltfProp prop = quad_prop(-1.5);
     prop.textures.push_back(nearest(quadrants(2)));
     prop.materials[0].texture = 0;
-    layout::Material masked = prop.materials[0];
-    masked.alpha_mode = layout::AlphaMode::Mask;
+    assets::Material masked = prop.materials[0];
+    masked.alpha_mode = assets::AlphaMode::Mask;
     prop.materials.push_back(masked);
     prop.triangles[1].material = 1;
     l.rooms[0].props.push_back(prop);
@@ -245,7 +245,7 @@ TEST(MaterialsRender, StereoModesBackendsAndMultisamplingDrawTheSameMaterials) {
     layout::GltfProp prop = quad_prop(-1.5);
     prop.textures.push_back(nearest(quadrants(2, {255, 0, 255, 128})));
     prop.materials[0].texture = 0;
-    prop.materials[0].alpha_mode = layout::AlphaMode::Mask;
+    prop.materials[0].alpha_mode = assets::AlphaMode::Mask;
     prop.materials[0].double_sided = true;
     l.rooms[0].props.push_back(prop);
     render::FrameDesc f = frame_at({0.3, 1.4, 0.5}, -20, 15);

@@ -129,28 +129,28 @@ void expect_frame_matches_render(const nlohmann::json& f, size_t i, const fs::pa
     ASSERT_EQ(r.status, 0) << r.err;
     char name[32];
     std::snprintf(name, sizeof name, "frame-%04zu", i);
-    const image::PngImage colour = testing::read_png_ok((shots / (std::string(name) + ".png")).string());
-    const image::PngImage ids = testing::read_png_ok((shots / (std::string(name) + "-ids.png")).string());
-    const image::PngImage ref_colour = testing::read_png_ok((dir / "r.png").string());
-    const image::PngImage ref_ids = testing::read_png_ok((dir / "r-ids.png").string());
+    const image::Pixels colour = testing::read_png_ok((shots / (std::string(name) + ".png")).string());
+    const image::Pixels ids = testing::read_png_ok((shots / (std::string(name) + "-ids.png")).string());
+    const image::Pixels ref_colour = testing::read_png_ok((dir / "r.png").string());
+    const image::Pixels ref_ids = testing::read_png_ok((dir / "r-ids.png").string());
     ASSERT_EQ(colour.width, 2 * kEyeW);
     ASSERT_EQ(colour.height, kEyeH);
     ASSERT_EQ(ids.width, ref_ids.width);
-    ASSERT_EQ(colour.pixels.size(), ref_colour.pixels.size());
+    ASSERT_EQ(colour.data.size(), ref_colour.data.size());
 
     // The centres of both eyes: the same cell and the same colour.
     for (int eye = 0; eye < 2; ++eye) {
         const size_t p = static_cast<size_t>(kEyeH / 2) * (2 * kEyeW) + eye * kEyeW + kEyeW / 2;
-        EXPECT_EQ(ids.pixels[p], ref_ids.pixels[p]) << "eye " << eye;
-        EXPECT_NE(ids.pixels[p], 0) << "eye " << eye;
-        for (int c = 0; c < 3; ++c) EXPECT_EQ(colour.pixels[p * 3 + c], ref_colour.pixels[p * 3 + c]);
+        EXPECT_EQ(ids.data[p], ref_ids.data[p]) << "eye " << eye;
+        EXPECT_NE(ids.data[p], 0) << "eye " << eye;
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(colour.data[p * 3 + c], ref_colour.data[p * 3 + c]);
     }
     // And the whole image: the same renderer on the same driver (llvmpipe).
     int id_diffs = 0, colour_diffs = 0;
-    for (size_t p = 0; p < ids.pixels.size(); ++p) {
-        id_diffs += ids.pixels[p] != ref_ids.pixels[p];
+    for (size_t p = 0; p < ids.data.size(); ++p) {
+        id_diffs += ids.data[p] != ref_ids.data[p];
         for (int c = 0; c < 3; ++c)
-            if (std::abs(int(colour.pixels[p * 3 + c]) - int(ref_colour.pixels[p * 3 + c])) > 2) {
+            if (std::abs(int(colour.data[p * 3 + c]) - int(ref_colour.data[p * 3 + c])) > 2) {
                 ++colour_diffs;
                 break;
             }
@@ -202,15 +202,15 @@ TEST_F(Preview, ScriptedWalkThroughAPortalMatchesRenderAndWalk) {
         expect_frame_matches_render(frames[i], i, layout, shots, dir_);
     }
     // The last frame looks into the gallery (room 2) through both eyes.
-    const image::PngImage last = testing::read_png_ok((shots / "frame-0006-ids.png").string());
-    EXPECT_EQ(last.pixels[static_cast<size_t>(kEyeH / 2) * (2 * kEyeW) + kEyeW / 2], 2);
+    const image::Pixels last = testing::read_png_ok((shots / "frame-0006-ids.png").string());
+    EXPECT_EQ(last.data[static_cast<size_t>(kEyeH / 2) * (2 * kEyeW) + kEyeW / 2], 2);
 
     // The window shot is the whole window: both eyes plus the HUD over them.
-    const image::PngImage window = testing::read_png_ok((shots / "window-0006.png").string());
-    const image::PngImage frame = testing::read_png_ok((shots / "frame-0006.png").string());
+    const image::Pixels window = testing::read_png_ok((shots / "window-0006.png").string());
+    const image::Pixels frame = testing::read_png_ok((shots / "frame-0006.png").string());
         EXPECT_EQ(window.width, 2 * kEyeW);
     EXPECT_EQ(window.height, kEyeH);
-    EXPECT_NE(window.pixels, frame.pixels);
+    EXPECT_NE(window.data, frame.data);
 }
 
 TEST_F(Preview, CrossSwapsTheEyesInTheWindow) {
@@ -221,9 +221,9 @@ TEST_F(Preview, CrossSwapsTheEyesInTheWindow) {
     ASSERT_EQ(parallel.status, 0) << parallel.err;
     const ProgramRun cross = run_program("DISPLAY=" + x.display, "preview --cross" + common + q(dir_ / "c"), dir_);
     ASSERT_EQ(cross.status, 0) << cross.err;
-    const image::PngImage p = testing::read_png_ok((dir_ / "p/window-0000.png").string());
-    const image::PngImage c = testing::read_png_ok((dir_ / "c/window-0000.png").string());
-    const image::PngImage f = testing::read_png_ok((dir_ / "p/frame-0000.png").string());
+    const image::Pixels p = testing::read_png_ok((dir_ / "p/window-0000.png").string());
+    const image::Pixels c = testing::read_png_ok((dir_ / "c/window-0000.png").string());
+    const image::Pixels f = testing::read_png_ok((dir_ / "p/frame-0000.png").string());
     ASSERT_EQ(p.width, 160);
     ASSERT_EQ(c.width, 160);
     // The default layout's start is near the play area's edge (grid shown), so
@@ -233,9 +233,9 @@ TEST_F(Preview, CrossSwapsTheEyesInTheWindow) {
         for (int xx = 0; xx < 80; ++xx)
             for (int k = 0; k < 3; ++k) {
                 const size_t left = (static_cast<size_t>(y) * 160 + xx) * 3 + k, right = left + 80 * 3;
-                EXPECT_EQ(p.pixels[left], c.pixels[right]);
-                EXPECT_EQ(p.pixels[right], c.pixels[left]);
-                differing += f.pixels[left] != f.pixels[right];
+                EXPECT_EQ(p.data[left], c.data[right]);
+                EXPECT_EQ(p.data[right], c.data[left]);
+                differing += f.data[left] != f.data[right];
             }
     EXPECT_GT(differing, 100);  // the eyes do differ, so the swap is seen
 }
@@ -253,10 +253,10 @@ TEST_F(Preview, MultisampledFramesMatchRender) {
     const ProgramRun render = run_program("", "render --samples 4 --size 80x60 --out " + q(dir_ / "r.png") + " --ids " + q(dir_ / "r-ids.png"),
                                           dir_);
     ASSERT_EQ(render.status, 0) << render.err;
-    EXPECT_EQ(testing::read_png_ok((dir_ / "s/frame-0000.png").string()).pixels,
-              testing::read_png_ok((dir_ / "r.png").string()).pixels);
-    EXPECT_EQ(testing::read_png_ok((dir_ / "s/frame-0000-ids.png").string()).pixels,
-              testing::read_png_ok((dir_ / "r-ids.png").string()).pixels);
+    EXPECT_EQ(testing::read_png_ok((dir_ / "s/frame-0000.png").string()).data,
+              testing::read_png_ok((dir_ / "r.png").string()).data);
+    EXPECT_EQ(testing::read_png_ok((dir_ / "s/frame-0000-ids.png").string()).data,
+              testing::read_png_ok((dir_ / "r-ids.png").string()).data);
 }
 
 // The gallery's textures, vertex colours, double-sided screen and cut-outs
@@ -272,10 +272,10 @@ TEST_F(Preview, MaterialsMatchRender) {
     const ProgramRun render =
         run_program("", "render " + layout + " --size 160x90 --out " + q(dir_ / "r.png") + " --ids " + q(dir_ / "r-ids.png"), dir_);
     ASSERT_EQ(render.status, 0) << render.err;
-    EXPECT_EQ(testing::read_png_ok((dir_ / "s/frame-0000.png").string()).pixels,
-              testing::read_png_ok((dir_ / "r.png").string()).pixels);
-    EXPECT_EQ(testing::read_png_ok((dir_ / "s/frame-0000-ids.png").string()).pixels,
-              testing::read_png_ok((dir_ / "r-ids.png").string()).pixels);
+    EXPECT_EQ(testing::read_png_ok((dir_ / "s/frame-0000.png").string()).data,
+              testing::read_png_ok((dir_ / "r.png").string()).data);
+    EXPECT_EQ(testing::read_png_ok((dir_ / "s/frame-0000-ids.png").string()).data,
+              testing::read_png_ok((dir_ / "r-ids.png").string()).data);
 }
 
 TEST_F(Preview, WithoutADisplayFailsWithOneLine) {

@@ -46,7 +46,7 @@ void check_invariants(const Layout& layout) {
             if (image == nullptr) continue;
             EXPECT_GE(image->width, 1);
             EXPECT_GE(image->height, 1);
-            EXPECT_EQ(image->rgba.size(), std::size_t(image->width) * std::size_t(image->height) * 4);
+            EXPECT_EQ(image->data.size(), std::size_t(image->width) * std::size_t(image->height) * 4);
         }
         for (const Prop& prop : room.props) {
             if (const auto* box = std::get_if<BoxProp>(&prop)) {

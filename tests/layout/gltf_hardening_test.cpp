@@ -11,7 +11,7 @@
 #include <fstream>
 
 #include "gltf_writer.hpp"
-#include "layout/gltf_model.hpp"
+#include "assets/gltf_model.hpp"
 #include "layout_test_util.hpp"
 
 namespace layout_test {
@@ -24,12 +24,12 @@ class GltfHardening : public impossible::test::TempDirTest {
 protected:
     std::string path(const std::string& name) const { return (dir_ / name).string(); }
     std::string load_error(const std::string& file) {
-        const auto loaded = impossible::layout::detail::load_gltf_triangles(file, 1000000);
+        const auto loaded = impossible::assets::load_gltf_triangles(file, 1000000);
         EXPECT_FALSE(loaded);
         return loaded ? "" : loaded.error();
     }
     std::vector<ModelTriangle> load_ok(const std::string& file) {
-        auto loaded = impossible::layout::detail::load_gltf_triangles(file, 1000000);
+        auto loaded = impossible::assets::load_gltf_triangles(file, 1000000);
         EXPECT_TRUE(loaded) << (loaded ? "" : loaded.error());
         return loaded ? *loaded : std::vector<ModelTriangle>{};
     }

@@ -9,15 +9,15 @@
 
 #include "gltf_writer.hpp"
 #include "hostile/png_bytes.hpp"
-#include "layout/gltf_model.hpp"
+#include "assets/gltf_model.hpp"
 #include "layout_test_util.hpp"
 
 namespace layout_test {
 namespace {
 
 namespace fs = std::filesystem;
-using impossible::layout::detail::GltfModel;
-using impossible::layout::detail::load_gltf_model;
+using impossible::assets::GltfModel;
+using impossible::assets::load_gltf_model;
 using nlohmann::json;
 
 
@@ -114,7 +114,7 @@ void expect_the_2x2_texture(const GltfModel& model) {
     EXPECT_EQ(texture.image->width, 2);
     EXPECT_EQ(texture.image->height, 2);
     const std::vector<std::uint8_t> want = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 128};
-    EXPECT_EQ(texture.image->rgba, want);
+    EXPECT_EQ(texture.image->data, want);
     EXPECT_EQ(model.texels, 4u);
 }
 

@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "gltf_writer.hpp"
-#include "layout/gltf_model.hpp"
+#include "assets/gltf_model.hpp"
 #include "layout_test_util.hpp"
 
 namespace layout_test {
@@ -35,12 +35,12 @@ protected:
     std::string path(const std::string& name) const { return (dir / name).string(); }
 
     std::vector<ModelTriangle> load_ok(const std::string& file) {
-        auto loaded = impossible::layout::detail::load_gltf_triangles(file, 1000000);
+        auto loaded = impossible::assets::load_gltf_triangles(file, 1000000);
         EXPECT_TRUE(loaded) << (loaded ? "" : loaded.error());
         return loaded ? *loaded : std::vector<ModelTriangle>{};
     }
     std::string load_error(const std::string& file, std::size_t max_triangles = 1000000) {
-        const auto loaded = impossible::layout::detail::load_gltf_triangles(file, max_triangles);
+        const auto loaded = impossible::assets::load_gltf_triangles(file, max_triangles);
         EXPECT_FALSE(loaded);
         return loaded ? "" : loaded.error();
     }
@@ -278,7 +278,7 @@ TEST_F(GltfTest, FilesThatAreNotGltf) {
 
 TEST_F(GltfTest, AModelIsNotLoadedFromADevice) {
     EXPECT_EQ(load_error("/dev/zero.glb"), "does not exist");
-    EXPECT_FALSE(impossible::layout::detail::load_gltf_triangles("/dev/null", 10));
+    EXPECT_FALSE(impossible::assets::load_gltf_triangles("/dev/null", 10));
 }
 
 // A layout with one glTF prop: `fields` go inside the prop.

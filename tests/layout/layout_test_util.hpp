@@ -16,6 +16,7 @@
 namespace layout_test {
 
 using namespace impossible::layout;
+using namespace impossible::assets;  // the model types a glTF prop holds
 
 inline const std::string kLayoutDir = std::string(IMPOSSIBLE_TEST_DATA) + "/layouts";
 inline const std::string kChairGlb = std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/models/chair.glb";

@@ -73,14 +73,14 @@ TEST_F(RoomTextures, AFacesOwnKeyWinsOverAll) {
     EXPECT_EQ(hall.face_texture[int(Face::Floor)]->width, 1);
     EXPECT_EQ(hall.face_texture[int(Face::Floor)]->height, 3);
     const std::vector<std::uint8_t> blue = {0, 0, 255, 255, 0, 0, 255, 255, 0, 0, 255, 255};
-    EXPECT_EQ(hall.face_texture[int(Face::Floor)]->rgba, blue);
+    EXPECT_EQ(hall.face_texture[int(Face::Floor)]->data, blue);
     for (Face f : {Face::Ceiling, Face::NegX, Face::PosX, Face::NegZ, Face::PosZ}) {
         ASSERT_NE(hall.face_texture[int(f)], nullptr);
         EXPECT_EQ(hall.face_texture[int(f)], hall.face_texture[int(Face::Ceiling)]) << "one image, shared";
         EXPECT_EQ(hall.face_texture[int(f)]->width, 2);
     }
     const std::vector<std::uint8_t> red = {255, 0, 0, 255, 255, 0, 0, 255, 255, 0, 0, 255, 255, 0, 0, 255};
-    EXPECT_EQ(hall.face_texture[int(Face::NegX)]->rgba, red);
+    EXPECT_EQ(hall.face_texture[int(Face::NegX)]->data, red);
     EXPECT_EQ(hall.texture_size, 1.0);
     for (const auto& texture : layout.rooms[1].face_texture) EXPECT_EQ(texture, nullptr);
     const std::string summary = summary_text(layout, summarize(layout));

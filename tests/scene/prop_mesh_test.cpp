@@ -50,7 +50,7 @@ layout::GltfProp sample_model() {
     prop.position = {1.0, 0.0, -1.0};
     prop.yaw_deg = 90.0;
     prop.scale = 2.0;
-    layout::ModelTriangle t;  // counter-clockwise seen from +z
+    assets::ModelTriangle t;  // counter-clockwise seen from +z
     t.position = {glm::dvec3(0, 0, 0), glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0)};
     t.normal = {glm::dvec3(0, 0, 1), glm::dvec3(0, 0, 1), glm::dvec3(0, 0, 1)};
     t.color = {0.1, 0.2, 0.3};
@@ -73,7 +73,7 @@ TEST(PropMesh, GltfTrianglesArePlacedWithTheirWinding) {
     ASSERT_EQ(all.size(), 2u);
     for (std::size_t k = 0; k < 2; ++k) {
         const Triangle& t = all[k];
-        const layout::ModelTriangle& m = prop.triangles[k];
+        const assets::ModelTriangle& m = prop.triangles[k];
         for (std::size_t c = 0; c < 3; ++c) {
             EXPECT_EQ(t.v[c]->position, glm::vec3(layout::place_model_point(prop, m.position[c])));
             EXPECT_NEAR(glm::length(glm::dvec3(t.v[c]->normal) -

@@ -224,19 +224,19 @@ TEST(Bvh, NearestTriangleIsTheScansOnAdversarialSoups) {
 // (nearest, repeat); masked and double-sided (linear, mirrored); masked by
 // COLOR_0's alpha alone; and a plain one.
 std::vector<PropMaterial> soup_materials() {
-    auto holes = std::make_shared<layout::Image>();
+    auto holes = std::make_shared<image::Pixels>();
     holes->width = 2;
     holes->height = 2;
-    holes->rgba = {255, 0, 0, 255, 0, 255, 0, 0, 0, 0, 255, 0, 255, 255, 255, 255};
+    holes->data = {255, 0, 0, 255, 0, 255, 0, 0, 0, 0, 255, 0, 255, 255, 255, 255};
     std::vector<PropMaterial> m(5);
     m[0].double_sided = true;
     m[1].mask = true;
     m[1].texture.image = holes;
-    m[1].texture.sampler.mag_filter = layout::sampler_code::kNearest;
+    m[1].texture.sampler.mag_filter = assets::sampler_code::kNearest;
     m[2] = m[1];
     m[2].double_sided = true;
-    m[2].texture.sampler.mag_filter = layout::sampler_code::kLinear;
-    m[2].texture.sampler.wrap_s = layout::sampler_code::kMirroredRepeat;
+    m[2].texture.sampler.mag_filter = assets::sampler_code::kLinear;
+    m[2].texture.sampler.wrap_s = assets::sampler_code::kMirroredRepeat;
     m[2].alpha_cutoff = 0.3;
     m[3].mask = true;
     m[3].alpha = 0.9;
@@ -391,7 +391,7 @@ TEST(Bvh, NoTrianglesNoTree) {
 // A bumpy sphere of about `triangles` triangles (stacks × 2 stacks
 // quads, one triangle at each pole's quads), radius about `radius`, with
 // smooth vertex normals of the unbumped sphere.
-std::vector<layout::ModelTriangle> bumpy_sphere(int triangles, double radius) {
+std::vector<assets::ModelTriangle> bumpy_sphere(int triangles, double radius) {
     const int stacks = static_cast<int>(std::sqrt(triangles / 4.0));
     const int slices = 2 * stacks;
     const double pi = std::acos(-1.0);
@@ -403,9 +403,9 @@ std::vector<layout::ModelTriangle> bumpy_sphere(int triangles, double radius) {
         const dvec3 n = unit(i, j);
         return radius * (1.0 + 0.03 * std::sin(17.0 * n.x) * std::sin(13.0 * n.y + 11.0 * n.z)) * n;
     };
-    std::vector<layout::ModelTriangle> out;
+    std::vector<assets::ModelTriangle> out;
     auto add = [&](int i0, int j0, int i1, int j1, int i2, int j2) {
-        layout::ModelTriangle t;
+        assets::ModelTriangle t;
         t.position = {vertex(i0, j0), vertex(i1, j1), vertex(i2, j2)};
         t.normal = {unit(i0, j0), unit(i1, j1), unit(i2, j2)};
         t.color = dvec3(0.3 + 0.4 * (i0 % 2), 0.5, 0.2 + 0.5 * (j0 % 3 == 0));

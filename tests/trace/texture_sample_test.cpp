@@ -15,29 +15,29 @@ namespace {
 
 using glm::dvec2;
 using glm::dvec4;
-namespace code = layout::sampler_code;
+namespace code = assets::sampler_code;
 
-layout::Image texel_image(int width, int height, std::initializer_list<std::uint8_t> bytes) {
-    layout::Image image;
+image::Pixels texel_image(int width, int height, std::initializer_list<std::uint8_t> bytes) {
+    image::Pixels image;
     image.width = width;
     image.height = height;
-    image.rgba = bytes;
+    image.data = bytes;
     return image;
 }
 
 // 4 × 1, red 0, 85, 170, 255 (0, 1/3, 2/3, 1): the texel's index is 3 · red.
-layout::Image ramp() {
+image::Pixels ramp() {
     return texel_image(4, 1, {0, 0, 0, 255, 85, 0, 0, 255, 170, 0, 0, 255, 255, 0, 0, 255});
 }
 
 // 2 × 2: top row red, green; bottom row blue, transparent white.
-layout::Image quadrant_image() {
+image::Pixels quadrant_image() {
     return texel_image(2, 2, {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 0});
 }
 const dvec4 kTexelRed(1, 0, 0, 1), kTexelGreen(0, 1, 0, 1), kTexelBlue(0, 0, 1, 1), kTexelClear(1, 1, 1, 0);
 
-layout::Sampler sampler(int filter, int wrap_s, int wrap_t = code::kRepeat) {
-    layout::Sampler s;
+assets::Sampler sampler(int filter, int wrap_s, int wrap_t = code::kRepeat) {
+    assets::Sampler s;
     s.mag_filter = filter;
     s.min_filter = code::kLinearMipmapLinear;  // never read at level 0
     s.wrap_s = wrap_s;
@@ -127,8 +127,8 @@ TEST(TextureSample, LinearEachWrap) {
 }
 
 TEST(TextureSample, RowZeroIsTheTopAndTGrowsDown) {
-    const layout::Image image = quadrant_image();
-    const layout::Sampler nearest = sampler(code::kNearest, code::kRepeat, code::kRepeat);
+    const image::Pixels image = quadrant_image();
+    const assets::Sampler nearest = sampler(code::kNearest, code::kRepeat, code::kRepeat);
     EXPECT_EQ(sample_level0(image, nearest, dvec2(0.25, 0.25)), kTexelRed);
     EXPECT_EQ(sample_level0(image, nearest, dvec2(0.75, 0.25)), kTexelGreen);
     EXPECT_EQ(sample_level0(image, nearest, dvec2(0.25, 0.75)), kTexelBlue);
@@ -138,7 +138,7 @@ TEST(TextureSample, RowZeroIsTheTopAndTGrowsDown) {
 }
 
 TEST(TextureSample, LinearTwoAxesWithTheirOwnWraps) {
-    const layout::Image image = quadrant_image();
+    const image::Pixels image = quadrant_image();
     // The centre: all four equally.
     EXPECT_EQ(sample_level0(image, sampler(code::kLinear, code::kRepeat), dvec2(0.5, 0.5)),
               0.25 * (kTexelRed + kTexelGreen + kTexelBlue + kTexelClear));
@@ -166,8 +166,8 @@ TEST(TextureSample, LinearTwoAxesWithTheirOwnWraps) {
 }
 
 TEST(TextureSample, MagFilterDecidesMinFilterIsNotRead) {
-    const layout::Image image = quadrant_image();
-    layout::Sampler s = sampler(code::kNearest, code::kRepeat);
+    const image::Pixels image = quadrant_image();
+    assets::Sampler s = sampler(code::kNearest, code::kRepeat);
     s.min_filter = code::kLinear;
     EXPECT_EQ(sample_level0(image, s, dvec2(0.3, 0.3)), kTexelRed);
     s.mag_filter = code::kLinear;
@@ -176,7 +176,7 @@ TEST(TextureSample, MagFilterDecidesMinFilterIsNotRead) {
 }
 
 TEST(TextureSample, EmptyImageIsWhite) {
-    EXPECT_EQ(sample_level0(layout::Image{}, layout::Sampler{}, dvec2(0.3, 0.3)), dvec4(1.0));
+    EXPECT_EQ(sample_level0(image::Pixels{}, assets::Sampler{}, dvec2(0.3, 0.3)), dvec4(1.0));
 }
 
 }  // namespace

@@ -44,20 +44,20 @@ TEST(TracerAlloc, TraceRayAllocatesNothing) {
     model.position = {0.0, 1.0, -2.0};
     const double pi = std::acos(-1.0);
     // Materials: textured and masked (linear), double-sided (nearest).
-    auto image = std::make_shared<layout::Image>();
+    auto image = std::make_shared<image::Pixels>();
     image->width = 2;
     image->height = 2;
-    image->rgba = {255, 0, 0, 255, 0, 255, 0, 0, 0, 0, 255, 255, 255, 255, 255, 255};
-    model.textures.push_back({image, layout::Sampler{}});
-    model.textures.push_back({image, layout::Sampler{layout::sampler_code::kNearest}});
+    image->data = {255, 0, 0, 255, 0, 255, 0, 0, 0, 0, 255, 255, 255, 255, 255, 255};
+    model.textures.push_back({image, assets::Sampler{}});
+    model.textures.push_back({image, assets::Sampler{assets::sampler_code::kNearest}});
     model.materials.resize(2);
     model.materials[0].texture = 0;
-    model.materials[0].alpha_mode = layout::AlphaMode::Mask;
+    model.materials[0].alpha_mode = assets::AlphaMode::Mask;
     model.materials[1].texture = 1;
     model.materials[1].double_sided = true;
     for (int i = 0; i < 40; ++i) {  // a fan of triangles facing +z
         const double a0 = 2.0 * pi * i / 40, a1 = 2.0 * pi * (i + 1) / 40;
-        layout::ModelTriangle t;
+        assets::ModelTriangle t;
         t.position = {dvec3(0.0), dvec3(std::cos(a0), std::sin(a0), 0.0), dvec3(std::cos(a1), std::sin(a1), 0.0)};
         t.normal = {dvec3(0, 0, 1), dvec3(0, 0, 1), dvec3(0, 0, 1)};
         t.uv = {glm::dvec2(0.5), glm::dvec2(std::cos(a0), std::sin(a0)), glm::dvec2(std::cos(a1), std::sin(a1))};

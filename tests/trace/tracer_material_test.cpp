@@ -26,20 +26,20 @@ using test::kTol;
 using test::one_room;
 using test::make_room;
 using test::shade_by_hand;
-namespace code = layout::sampler_code;
+namespace code = assets::sampler_code;
 
 
-std::shared_ptr<const layout::Image> image_of(int width, int height, std::initializer_list<std::uint8_t> bytes) {
-    auto image = std::make_shared<layout::Image>();
+std::shared_ptr<const image::Pixels> image_of(int width, int height, std::initializer_list<std::uint8_t> bytes) {
+    auto image = std::make_shared<image::Pixels>();
     image->width = width;
     image->height = height;
-    image->rgba = bytes;
+    image->data = bytes;
     return image;
 }
 
 // 2 × 2, all channels different from quadrant to quadrant: top-left,
 // top-right, bottom-left, bottom-right (the last with alpha `last_alpha`).
-std::shared_ptr<const layout::Image> quadrants(std::uint8_t top_right_alpha = 255) {
+std::shared_ptr<const image::Pixels> quadrants(std::uint8_t top_right_alpha = 255) {
     return image_of(2, 2, {255, 128, 64, 255, 64, 255, 128, top_right_alpha, 128, 64, 255, 255, 204, 204, 51, 255});
 }
 // The texel of quadrants() at column i, row j, as the tracer reads bytes.
@@ -59,7 +59,7 @@ void add_quad(layout::GltfProp& model, int material, dvec4 vertex = dvec4(1.0), 
     auto uv = [](const dvec3& p) { return dvec2((p.x + 1.0) / 2.0, (2.5 - p.y) / 2.0); };
     const dvec3 a = corner(-1, 0.5), b = corner(1, 0.5), c = corner(1, 2.5), d = corner(-1, 2.5);
     for (const auto& tri : {std::array<dvec3, 3>{a, b, c}, std::array<dvec3, 3>{a, c, d}}) {
-        layout::ModelTriangle t;
+        assets::ModelTriangle t;
         t.position = tri;
         t.normal = {normal, normal, normal};
         t.color = material >= 0 ? dvec3(model.materials[material].base_color) : dvec3(0.8);
@@ -70,8 +70,8 @@ void add_quad(layout::GltfProp& model, int material, dvec4 vertex = dvec4(1.0), 
     }
 }
 
-layout::Texture texture(std::shared_ptr<const layout::Image> image, int filter) {
-    layout::Texture t;
+assets::Texture texture(std::shared_ptr<const image::Pixels> image, int filter) {
+    assets::Texture t;
     t.image = std::move(image);
     t.sampler.mag_filter = filter;
     return t;
@@ -90,7 +90,7 @@ bool quad_quadrant(const dvec3& p, double margin, int& i, int& j) {
 TEST(TracerMaterial, TexturedQuadShowsFactorTimesColor0TimesTexelAtEveryPixel) {
     layout::Layout l = one_room();
     layout::GltfProp model;
-    layout::Material material;
+    assets::Material material;
     material.base_color = {0.9, 0.8, 0.7, 1.0};
     material.texture = 0;
     model.materials.push_back(material);
@@ -131,12 +131,12 @@ TEST(TracerMaterial, TexturedQuadShowsFactorTimesColor0TimesTexelAtEveryPixel) {
 TEST(TracerMaterial, Color0AndUvAreBlendedWithTheHitsBarycentrics) {
     layout::Layout l = one_room();
     layout::GltfProp model;
-    layout::Material material;
+    assets::Material material;
     material.base_color = {0.5, 0.75, 1.0, 1.0};
     material.texture = 0;
     model.materials.push_back(material);
     model.textures.push_back(texture(quadrants(), code::kNearest));
-    layout::ModelTriangle t;
+    assets::ModelTriangle t;
     t.position = {dvec3(0, 1, -1), dvec3(1, 1, -1), dvec3(0, 2, -1)};  // facing +z
     t.normal = {dvec3(0, 0, 1), dvec3(0, 0, 1), dvec3(0, 0, 1)};
     t.vertex_color = {dvec4(1.0, 0.5, 0.2, 1.0), dvec4(0.2, 1.0, 0.6, 1.0), dvec4(0.6, 0.4, 1.0, 1.0)};
@@ -169,7 +169,7 @@ TEST(TracerMaterial, Color0AndUvAreBlendedWithTheHitsBarycentrics) {
 TEST(TracerMaterial, LinearMagFilterBlendsNeighbours) {
     layout::Layout l = one_room();
     layout::GltfProp model;
-    layout::Material material;
+    assets::Material material;
     material.base_color = {1.0, 1.0, 1.0, 1.0};
     material.texture = 0;
     model.materials.push_back(material);
@@ -184,10 +184,10 @@ TEST(TracerMaterial, LinearMagFilterBlendsNeighbours) {
 }
 
 // The masked quad: its top-right quadrant has alpha `alpha` (the others 1).
-layout::Layout masked_quad(std::uint8_t alpha, layout::AlphaMode mode, double base_alpha = 1.0, double cutoff = 0.5) {
+layout::Layout masked_quad(std::uint8_t alpha, assets::AlphaMode mode, double base_alpha = 1.0, double cutoff = 0.5) {
     layout::Layout l = one_room();
     layout::GltfProp model;
-    layout::Material material;
+    assets::Material material;
     material.base_color = {0.6, 0.7, 0.8, base_alpha};
     material.texture = 0;
     material.alpha_mode = mode;
@@ -200,7 +200,7 @@ layout::Layout masked_quad(std::uint8_t alpha, layout::AlphaMode mode, double ba
 }
 
 TEST(TracerMaterial, MaskedHoleShowsTheWallBehind) {
-    const layout::Layout l = masked_quad(0, layout::AlphaMode::Mask);
+    const layout::Layout l = masked_quad(0, assets::AlphaMode::Mask);
     const Scene scene = prepare_scene(l);
     // Top-right quadrant: through the hole to the -z wall at z = -2.
     const TraceHit hole = trace_ray(scene, {0.5, 2.0, 1.0}, {0, 0, -1}, 0, 8);
@@ -214,7 +214,7 @@ TEST(TracerMaterial, MaskedHoleShowsTheWallBehind) {
         EXPECT_NEAR(solid.point.z, -1.0, kTol);
     }
     // Opaque: alpha is not read; the hole is quad.
-    const TraceHit opaque = trace_ray(prepare_scene(masked_quad(0, layout::AlphaMode::Opaque)), {0.5, 2.0, 1.0},
+    const TraceHit opaque = trace_ray(prepare_scene(masked_quad(0, assets::AlphaMode::Opaque)), {0.5, 2.0, 1.0},
                                       {0, 0, -1}, 0, 8);
     EXPECT_NEAR(opaque.point.z, -1.0, kTol);
 }
@@ -223,21 +223,21 @@ TEST(TracerMaterial, MaskCutoffComparesTheWholeAlpha) {
     // Texel alpha 128/255 ≈ 0.502: kept at cutoff 0.5, a hole at cutoff 0.51
     // or when the factor's alpha 0.9 brings it to 0.452.
     const dvec3 origin(0.5, 2.0, 1.0), dir(0, 0, -1);
-    EXPECT_NEAR(trace_ray(prepare_scene(masked_quad(128, layout::AlphaMode::Mask)), origin, dir, 0, 8).point.z, -1.0,
+    EXPECT_NEAR(trace_ray(prepare_scene(masked_quad(128, assets::AlphaMode::Mask)), origin, dir, 0, 8).point.z, -1.0,
                 kTol);
-    EXPECT_NEAR(trace_ray(prepare_scene(masked_quad(128, layout::AlphaMode::Mask, 1.0, 0.51)), origin, dir, 0, 8)
+    EXPECT_NEAR(trace_ray(prepare_scene(masked_quad(128, assets::AlphaMode::Mask, 1.0, 0.51)), origin, dir, 0, 8)
                     .point.z,
                 -2.0, kTol);
     EXPECT_NEAR(
-        trace_ray(prepare_scene(masked_quad(128, layout::AlphaMode::Mask, 0.9)), origin, dir, 0, 8).point.z, -2.0,
+        trace_ray(prepare_scene(masked_quad(128, assets::AlphaMode::Mask, 0.9)), origin, dir, 0, 8).point.z, -2.0,
         kTol);
     // Exactly at the cutoff is kept (alpha < cutoff is a hole): 0.5 · 1 · 1.
-    layout::Layout half = masked_quad(255, layout::AlphaMode::Mask, 0.5, 0.5);
+    layout::Layout half = masked_quad(255, assets::AlphaMode::Mask, 0.5, 0.5);
     EXPECT_NEAR(trace_ray(prepare_scene(half), origin, dir, 0, 8).point.z, -1.0, kTol);
 }
 
 TEST(TracerMaterial, MaskedFramesAreTheSameWithAndWithoutTheTree) {
-    const Scene with = prepare_scene(masked_quad(0, layout::AlphaMode::Mask));
+    const Scene with = prepare_scene(masked_quad(0, assets::AlphaMode::Mask));
     ASSERT_FALSE(with.rooms[0].bvh.nodes.empty());
     Scene without = with;
     without.rooms[0].bvh = {};
@@ -262,7 +262,7 @@ TEST(TracerMaterial, MaskedFramesAreTheSameWithAndWithoutTheTree) {
 TraceHit from_behind(bool double_sided) {
     layout::Layout l = one_room();
     layout::GltfProp model;
-    layout::Material material;
+    assets::Material material;
     material.base_color = {0.9, 0.5, 0.3, 1.0};
     material.double_sided = double_sided;
     model.materials.push_back(material);
@@ -286,7 +286,7 @@ TEST(TracerMaterial, DoubleSidedIsSeenFromBehindWithItsNormalReversed) {
     // From the front it is the same triangle with its own normal.
     layout::Layout l = one_room();
     layout::GltfProp model;
-    layout::Material material;
+    assets::Material material;
     material.base_color = {0.9, 0.5, 0.3, 1.0};
     material.double_sided = true;
     model.materials.push_back(material);
@@ -363,7 +363,7 @@ TEST(TracerMaterial, WhiteTexturesAndColor0ChangeNoByte) {
         layout::Layout l = one_room();
         l.rooms[0].checker = 0.5;
         layout::GltfProp model;
-        layout::Material material;
+        assets::Material material;
         material.base_color = {0.8, 0.8, 0.8, 1.0};
         if (textured) {
             material.texture = 0;

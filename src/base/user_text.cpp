@@ -1,10 +1,10 @@
-#include "layout/text_util.hpp"
+#include "base/user_text.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
-namespace impossible::layout::detail {
+namespace impossible {
 
 namespace {
 
@@ -120,4 +120,4 @@ std::string count_of(std::size_t n, const char* singular, const char* plural) {
     return std::to_string(n) + " " + (n == 1 ? singular : plural);
 }
 
-}  // namespace impossible::layout::detail
+}  // namespace impossible

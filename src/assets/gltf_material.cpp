@@ -1,4 +1,4 @@
-#include "layout/gltf_material.hpp"
+#include "assets/gltf_material.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,13 +7,15 @@
 #include <glm/common.hpp>
 #include <tiny_gltf.h>
 
-#include "layout/file_io.hpp"
-#include "layout/gltf_preflight.hpp"
-#include "layout/image_decode.hpp"
-#include "layout/limits.hpp"
-#include "layout/text_util.hpp"
+#include "base/file_io.hpp"
+#include "assets/gltf_preflight.hpp"
+#include "image/decode.hpp"
+#include "assets/limits.hpp"
+#include "base/file_io.hpp"
+#include "base/format.hpp"
+#include "base/user_text.hpp"
 
-namespace impossible::layout::detail {
+namespace impossible::assets {
 
 namespace {
 
@@ -186,7 +188,7 @@ Result<void> build_materials(const tinygltf::Model& model, const KeptImages& kep
                              std::vector<Texture>& textures, std::size_t& texels) {
     std::map<int, int> material_of;  // glTF material → index into materials
     std::map<int, int> texture_of;   // glTF texture → index into textures
-    std::map<int, std::shared_ptr<const Image>> image_of;
+    std::map<int, std::shared_ptr<const image::Pixels>> image_of;
     texels = 0;
     for (ModelTriangle& triangle : triangles) {
         if (triangle.material < 0) continue;
@@ -210,24 +212,24 @@ Result<void> build_materials(const tinygltf::Model& model, const KeptImages& kep
                 material.texture = known->second;
             } else {
                 const tinygltf::Texture& texture = model.textures[static_cast<std::size_t>(t)];
-                std::shared_ptr<const Image>& image = image_of[texture.source];
+                std::shared_ptr<const image::Pixels>& image = image_of[texture.source];
                 if (image == nullptr) {
                     const auto bytes = image_bytes(model, kept, texture.source, folder);
                     if (!bytes) return Error{bytes.error()};
                     const std::string who =
                         "has " + named("image", texture.source,
                                        model.images[static_cast<std::size_t>(texture.source)].name);
-                    const Result<ImageSize> size = image_size(bytes->first, bytes->second);
+                    const Result<image::ImageSize> size = image::image_size(bytes->first, bytes->second, limits::kMaxImageSide);
                     if (!size) return Error{who + " that " + size.error()};
                     if (size->texels() > limits::kMaxModelTexels - texels) {
                         return Error{"has images of more than " + std::to_string(limits::kMaxModelTexels) +
                                      " texels together (the limit for one model; " + who.substr(4) + " is " +
                                      std::to_string(size->width) + " x " + std::to_string(size->height) + ")"};
                     }
-                    Result<Image> decoded = decode_image(bytes->first, bytes->second);
+                    Result<image::Pixels> decoded = image::decode_image(bytes->first, bytes->second, limits::kMaxImageSide);
                     if (!decoded) return Error{who + " that " + decoded.error()};
                     texels += size->texels();
-                    image = std::make_shared<const Image>(std::move(*decoded));
+                    image = std::make_shared<const image::Pixels>(std::move(*decoded));
                 }
                 textures.push_back({image, sampler_of(model, texture)});
                 material.texture = static_cast<int>(textures.size()) - 1;
@@ -241,4 +243,4 @@ Result<void> build_materials(const tinygltf::Model& model, const KeptImages& kep
     return {};
 }
 
-}  // namespace impossible::layout::detail
+}  // namespace impossible::assets

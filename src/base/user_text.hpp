@@ -1,20 +1,15 @@
-// Small text helpers for diagnostics: numbers, quoted strings, positions.
+// Text from a user's files in diagnostics: quoted strings, bytes that are not
+// text, counts of things, and line/column positions.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <string>
 
-#include "base/file_io.hpp"
-#include "base/format.hpp"
 #include <string_view>
 #include <vector>
 
-namespace impossible::layout::detail {
-
-using impossible::format_number;  // base/format.hpp
-
-using impossible::format_bytes;   // base/file_io.hpp
+namespace impossible {
 
 // A string as a JSON string literal (quotes, escapes), safe to print.
 std::string quote(std::string_view text);
@@ -43,4 +38,4 @@ TextPosition text_position(std::string_view text, std::size_t offset);
 std::vector<TextPosition> text_positions(std::string_view text,
                                          const std::vector<std::size_t>& offsets);
 
-}  // namespace impossible::layout::detail
+}  // namespace impossible

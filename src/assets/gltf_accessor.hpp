@@ -18,7 +18,7 @@ namespace tinygltf {
 class Model;
 }
 
-namespace impossible::layout::detail {
+namespace impossible::assets {
 
 struct AccessorView {
     const unsigned char* data = nullptr;  // the first element, in the model's buffer; or
@@ -44,4 +44,4 @@ Result<AccessorView> accessor_view(const tinygltf::Model& model, int index, int 
                                    std::initializer_list<int> component_types, const char* what,
                                    std::size_t max_copied);
 
-}  // namespace impossible::layout::detail
+}  // namespace impossible::assets

@@ -1,11 +1,11 @@
-#include "layout/gltf_accessor.hpp"
+#include "assets/gltf_accessor.hpp"
 
 #include <algorithm>
 #include <cstring>
 
 #include <tiny_gltf.h>
 
-namespace impossible::layout::detail {
+namespace impossible::assets {
 
 namespace {
 
@@ -204,4 +204,4 @@ Result<AccessorView> accessor_view(const tinygltf::Model& model, int index, int 
     return out;
 }
 
-}  // namespace impossible::layout::detail
+}  // namespace impossible::assets

@@ -8,14 +8,14 @@
 #include <vector>
 
 #include "base/result.hpp"
-#include "layout/layout.hpp"
+#include "assets/model.hpp"
 
 namespace tinygltf {
 class Model;
 struct Image;
 }  // namespace tinygltf
 
-namespace impossible::layout::detail {
+namespace impossible::assets {
 
 // What tinygltf handed to keep_image_bytes, by image index. Images in a
 // bufferView are read from the model's buffer later; the bytes of data: URIs
@@ -48,4 +48,4 @@ Result<void> build_materials(const tinygltf::Model& model, const KeptImages& kep
                              std::vector<ModelTriangle>& triangles, std::vector<Material>& materials,
                              std::vector<Texture>& textures, std::size_t& texels);
 
-}  // namespace impossible::layout::detail
+}  // namespace impossible::assets

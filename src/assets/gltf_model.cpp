@@ -1,4 +1,4 @@
-#include "layout/gltf_model.hpp"
+#include "assets/gltf_model.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -12,14 +12,16 @@
 #include <glm/matrix.hpp>
 #include <tiny_gltf.h>
 
-#include "layout/file_io.hpp"
-#include "layout/gltf_accessor.hpp"
-#include "layout/gltf_material.hpp"
-#include "layout/gltf_preflight.hpp"
-#include "layout/limits.hpp"
-#include "layout/text_util.hpp"
+#include "base/file_io.hpp"
+#include "assets/gltf_accessor.hpp"
+#include "assets/gltf_material.hpp"
+#include "assets/gltf_preflight.hpp"
+#include "assets/limits.hpp"
+#include "base/file_io.hpp"
+#include "base/format.hpp"
+#include "base/user_text.hpp"
 
-namespace impossible::layout::detail {
+namespace impossible::assets {
 
 namespace {
 
@@ -31,7 +33,7 @@ namespace {
 // such as "../../../../etc/passwd" must not open, or even reveal whether or
 // how large, a file elsewhere. `user_data` is the model's folder, canonical.
 bool inside_model_folder(const std::string& path, void* user_data) {
-    return detail::inside_folder(path, *static_cast<const std::string*>(user_data));
+    return assets::inside_folder(path, *static_cast<const std::string*>(user_data));
 }
 bool fs_file_exists(const std::string& path, void* user_data) {
     if (!inside_model_folder(path, user_data)) return true;  // refused when read, whether it exists or not
@@ -577,4 +579,4 @@ Result<std::vector<ModelTriangle>> load_gltf_triangles(const std::string& path, 
     return std::move(model->triangles);
 }
 
-}  // namespace impossible::layout::detail
+}  // namespace impossible::assets

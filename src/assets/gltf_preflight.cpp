@@ -1,4 +1,4 @@
-#include "layout/gltf_preflight.hpp"
+#include "assets/gltf_preflight.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -10,10 +10,12 @@
 #include <nlohmann/json.hpp>
 #include <sys/stat.h>
 
-#include "layout/limits.hpp"
-#include "layout/text_util.hpp"
+#include "assets/limits.hpp"
+#include "base/file_io.hpp"
+#include "base/format.hpp"
+#include "base/user_text.hpp"
 
-namespace impossible::layout::detail {
+namespace impossible::assets {
 
 namespace {
 
@@ -362,4 +364,4 @@ Result<void> check_gltf_document(std::string_view text, bool binary, long long g
     return check_buffers(doc, binary, glb_bin_size, folder);
 }
 
-}  // namespace impossible::layout::detail
+}  // namespace impossible::assets

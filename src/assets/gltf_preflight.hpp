@@ -12,7 +12,7 @@
 
 #include "base/result.hpp"
 
-namespace impossible::layout::detail {
+namespace impossible::assets {
 
 // The two chunks of a .glb file (glTF 2.0 spec, "GLB File Format
 // Specification"): the JSON text and the binary chunk, if any.
@@ -45,4 +45,4 @@ bool inside_folder(const std::string& path, const std::string& folder);
 // A buffer URI as tinygltf decodes it (dlib::urldecode: %XX and '+').
 std::string decode_uri(const std::string& uri);
 
-}  // namespace impossible::layout::detail
+}  // namespace impossible::assets

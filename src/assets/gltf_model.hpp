@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "base/result.hpp"
-#include "layout/layout.hpp"
+#include "assets/model.hpp"
 
-namespace impossible::layout::detail {
+namespace impossible::assets {
 
 // The triangles of the model's default scene (scene 0 when none is marked;
 // every root node when the file has no scene), with the node transforms
@@ -39,4 +39,4 @@ Result<GltfModel> load_gltf_model(const std::string& path, std::size_t max_trian
 // The triangles of load_gltf_model alone.
 Result<std::vector<ModelTriangle>> load_gltf_triangles(const std::string& path, std::size_t max_triangles);
 
-}  // namespace impossible::layout::detail
+}  // namespace impossible::assets

@@ -1,0 +1,68 @@
+// A model as the asset importer reads it from glTF 2.0 and the renderers
+// draw it: triangles in the model's own coordinates, the materials they use
+// and the textures those use (decoded once, shared).
+#pragma once
+
+#include <array>
+#include <memory>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "image/pixels.hpp"
+
+namespace impossible::assets {
+
+// How a texture is read (glTF 2.0 "samplers"; the codes are glTF's, which are
+// OpenGL's). Texture coordinates (0, 0) are the image's top-left corner.
+namespace sampler_code {
+inline constexpr int kNearest = 9728;
+inline constexpr int kLinear = 9729;
+inline constexpr int kNearestMipmapNearest = 9984;
+inline constexpr int kLinearMipmapNearest = 9985;
+inline constexpr int kNearestMipmapLinear = 9986;
+inline constexpr int kLinearMipmapLinear = 9987;
+inline constexpr int kClampToEdge = 33071;
+inline constexpr int kMirroredRepeat = 33648;
+inline constexpr int kRepeat = 10497;
+}  // namespace sampler_code
+
+struct Sampler {
+    int mag_filter = sampler_code::kLinear;              // kNearest or kLinear
+    int min_filter = sampler_code::kLinearMipmapLinear;  // any of the six filters
+    int wrap_s = sampler_code::kRepeat;
+    int wrap_t = sampler_code::kRepeat;
+};
+
+struct Texture {
+    std::shared_ptr<const image::Pixels> image;  // RGBA; never null in a loaded model
+    Sampler sampler;
+};
+
+// glTF alphaMode. BLEND is refused by the loader (docs/layouts.md says why).
+enum class AlphaMode { Opaque, Mask };
+
+// A glTF material as the renderers use it: the colour at a point of a
+// triangle is base_color.rgb · COLOR_0.rgb · texel.rgb, its alpha
+// base_color.a · COLOR_0.a · texel.a (the texel is white without a texture).
+struct Material {
+    glm::dvec4 base_color{0.8, 0.8, 0.8, 1.0};  // baseColorFactor
+    int texture = -1;                 // into the model's textures; -1: none
+    bool double_sided = false;        // both sides visible, the back's normal reversed
+    AlphaMode alpha_mode = AlphaMode::Opaque;
+    double alpha_cutoff = 0.5;        // Mask: alpha below this is not drawn
+};
+
+// A triangle of a glTF model, in the model's own coordinates (before the
+// prop's scale, yaw and position).
+struct ModelTriangle {
+    std::array<glm::dvec3, 3> position;
+    std::array<glm::dvec3, 3> normal;  // unit
+    glm::dvec3 color{0.8};             // the material's base colour factor (rgb), as in Material
+    std::array<glm::dvec4, 3> vertex_color{glm::dvec4(1.0), glm::dvec4(1.0), glm::dvec4(1.0)};  // COLOR_0
+    std::array<glm::dvec2, 3> uv{};    // the material texture's texCoord set; (0, 0) without
+    int material = -1;                 // into the model's materials; -1: the default (grey, opaque, one-sided)
+};
+
+}  // namespace impossible::assets
