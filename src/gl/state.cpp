@@ -29,8 +29,9 @@ void StateCache::invalidate() {
     known_ = false;
     blend_color_known_ = false;
     scissor_known_ = false;
-    viewport_known_ = false;
-    program_ = vertex_array_ = draw_framebuffer_ = clip_depth_ = kUnknown;
+    for (bool& known : viewport_known_) known = false;
+    program_ = vertex_array_ = draw_framebuffer_ = read_framebuffer_ = clip_depth_ = kUnknown;
+    for (GLuint& t : textures_) t = kUnknown;
 }
 
 void StateCache::apply(const PassState& s, GLint stencil_ref) {
@@ -95,15 +96,23 @@ void StateCache::no_scissor() {
 }
 
 void StateCache::viewport(const WindowRect& rect) {
-    if (viewport_known_ && rect == viewport_) return;
+    bool same = true;
+    for (int i = 0; i < kViewports; ++i) same = same && viewport_known_[i] && viewport_[i] == rect;
+    if (same) return;
     glViewport(rect.x, rect.y, rect.width, rect.height);
-    viewport_ = rect;
-    viewport_known_ = true;
+    for (int i = 0; i < kViewports; ++i) {
+        viewport_[i] = rect;
+        viewport_known_[i] = true;
+    }
 }
 
-void StateCache::viewport_indexed(GLuint index, float x, float y, float width, float height) {
-    glViewportIndexedf(index, x, y, width, height);
-    viewport_known_ = false;  // the indices no longer all hold one rectangle
+void StateCache::viewport_indexed(GLuint index, const WindowRect& rect) {
+    assert(index < static_cast<GLuint>(kViewports));
+    if (viewport_known_[index] && viewport_[index] == rect) return;
+    glViewportIndexedf(index, static_cast<float>(rect.x), static_cast<float>(rect.y), static_cast<float>(rect.width),
+                       static_cast<float>(rect.height));
+    viewport_[index] = rect;
+    viewport_known_[index] = true;
 }
 
 void StateCache::program(GLuint program) {
@@ -122,6 +131,37 @@ void StateCache::draw_framebuffer(GLuint framebuffer) {
     if (framebuffer == draw_framebuffer_) return;
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
     draw_framebuffer_ = framebuffer;
+}
+
+void StateCache::read_framebuffer(GLuint framebuffer) {
+    if (framebuffer == read_framebuffer_) return;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+    read_framebuffer_ = framebuffer;
+}
+
+void StateCache::texture(GLuint unit, GLuint texture) {
+    assert(unit < static_cast<GLuint>(kTextureUnits));
+    if (texture == textures_[unit]) return;
+    glBindTextureUnit(unit, texture);
+    textures_[unit] = texture;
+}
+
+void StateCache::deleting_texture(GLuint texture) {
+    for (GLuint& t : textures_)
+        if (t == texture) t = kUnknown;
+}
+
+void StateCache::deleting_framebuffer(GLuint framebuffer) {
+    if (draw_framebuffer_ == framebuffer) draw_framebuffer_ = kUnknown;
+    if (read_framebuffer_ == framebuffer) read_framebuffer_ = kUnknown;
+}
+
+void StateCache::release_bindings() {
+    vertex_array(0);
+    program(0);
+    draw_framebuffer(0);
+    read_framebuffer(0);
+    for (int unit = 0; unit < kTextureUnits; ++unit) texture(static_cast<GLuint>(unit), 0);
 }
 
 void StateCache::clip_control(GLenum depth) {

@@ -1,16 +1,21 @@
 // Fixed-function state as plain data, applied through one shadow cache that
-// compares before it calls GL. Render code describes each pass with one
-// immutable PassState and never calls glEnable/glDepthFunc/... itself; the
-// bindings (program, vertex array, draw framebuffer), the viewport and the
-// clip control go through the same cache.
+// compares before it calls GL (as filament's OpenGLContext does). Render code
+// describes each pass with one immutable PassState and never calls
+// glEnable/glDepthFunc/... itself; the bindings (program, vertex array, the
+// texture on each unit, the draw and read framebuffers), the viewports and
+// the clip control go through the same cache. Each draw names all of its
+// state; what GL already holds costs nothing, so nothing is ever put back.
 //
 // One cache per GL context, shared by everything that draws with it (every
 // renderer, the preview's present and overlays): the cache then always knows
 // what GL holds, and nothing saves or restores state with glGet. Code that
 // changes any of this state behind the cache's back must call invalidate()
 // before the cache is used again. Objects must not be deleted while the cache
-// thinks them bound (a new object may get the same name): users bind 0
-// through the cache when they are done, as the renderer does after each frame.
+// thinks them bound (a new object may get the same name, and the cache would
+// skip binding it): a user either releases its bindings through the cache
+// when it is done (release_bindings(), as the renderer does after each
+// frame), or tells the cache about an object it deletes while bound
+// (deleting_texture, deleting_framebuffer).
 #pragma once
 
 #include "gl/gl.hpp"
@@ -26,6 +31,14 @@ inline constexpr GLuint color_channels(bool r, bool g, bool b, bool a) {
 
 // Enough for every user here (the scene shader writes five).
 inline constexpr int kMaxClipDistances = 8;
+
+// Texture units the cache tracks (the renderer uses 0 to 2).
+inline constexpr int kTextureUnits = 4;
+
+// Viewport indices the cache tracks: 0, which every draw uses, and 1, the
+// right eye's when the vertex shader writes gl_ViewportIndex. No shader here
+// writes a higher index.
+inline constexpr int kViewports = 2;
 
 struct StencilState {
     bool enabled = false;
@@ -92,15 +105,31 @@ public:
     void no_scissor();
     // Every viewport index at once (glViewport).
     void viewport(const WindowRect& rect);
-    // One viewport index (per-eye viewports); the next viewport() call sets
-    // all of them again.
-    void viewport_indexed(GLuint index, float x, float y, float width, float height);
+    // One viewport index below kViewports (per-eye viewports, or the whole
+    // target through index 0 for a draw without an eye).
+    void viewport_indexed(GLuint index, const WindowRect& rect);
     void program(GLuint program);
     void vertex_array(GLuint vertex_array);
     void draw_framebuffer(GLuint framebuffer);
+    void read_framebuffer(GLuint framebuffer);
+    // glBindTextureUnit: `texture` on its own target of unit `unit` (below
+    // kTextureUnits); 0 unbinds every target of the unit.
+    void texture(GLuint unit, GLuint texture);
     // glClipControl with a lower-left origin and the given depth mode
     // (GL_ZERO_TO_ONE or GL_NEGATIVE_ONE_TO_ONE).
     void clip_control(GLenum depth);
+
+    // Before `texture` (`framebuffer`) is deleted while the cache may hold it
+    // bound: GL unbinds it, and a new object may get its name, so the cache
+    // forgets what those units (bindings) hold and binds them when next asked.
+    void deleting_texture(GLuint texture);
+    void deleting_framebuffer(GLuint framebuffer);
+
+    // Binds 0 for every object binding the cache holds (program, vertex
+    // array, framebuffers, texture units), so that the objects of whoever
+    // drew last may be deleted. Called once when a user is done with the
+    // context for now (the renderer, at the end of a frame).
+    void release_bindings();
 
 private:
     static constexpr GLuint kUnknown = ~GLuint{0};
@@ -113,11 +142,14 @@ private:
     bool scissor_known_ = false;
     bool scissor_on_ = false;
     WindowRect scissor_;
-    bool viewport_known_ = false;
-    WindowRect viewport_;
+    bool viewport_known_[kViewports] = {};
+    WindowRect viewport_[kViewports];
     GLuint program_ = kUnknown;
     GLuint vertex_array_ = kUnknown;
     GLuint draw_framebuffer_ = kUnknown;
+    GLuint read_framebuffer_ = kUnknown;
+    static_assert(kTextureUnits == 4, "one kUnknown per texture unit below");
+    GLuint textures_[kTextureUnits] = {kUnknown, kUnknown, kUnknown, kUnknown};
     GLenum clip_depth_ = kUnknown;
 };
 

@@ -29,10 +29,9 @@ void draw_full_target(DrawContext& ctx) {
     // The triangle has no eye: with per-eye viewports it is drawn through
     // viewport 0, widened to the whole target for the moment.
     const bool indexed = ctx.frame.stereo == StereoMode::ViewportIndex;
-    const float w = static_cast<float>(ctx.frame.eye_width), h = static_cast<float>(ctx.frame.eye_height);
-    if (indexed) r.state->viewport_indexed(0, 0.0f, 0.0f, 2.0f * w, h);
+    if (indexed) r.state->viewport_indexed(0, {0, 0, 2 * ctx.frame.eye_width, ctx.frame.eye_height});
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    if (indexed) r.state->viewport_indexed(0, 0.0f, 0.0f, w, h);
+    if (indexed) r.state->viewport_indexed(0, {0, 0, ctx.frame.eye_width, ctx.frame.eye_height});
     ctx.stats.draw_calls += 1;
     r.state->vertex_array(r.gpu.vao.get());
 }
@@ -76,10 +75,9 @@ void clear_depth_in_portal(DrawContext& ctx, const LevelView& view, int stencil_
         glProgramUniform1i(clear.program.get(), clear.eye_quads, 1);
         r.state->vertex_array(r.empty_vao.get());
         const bool indexed = ctx.frame.stereo == StereoMode::ViewportIndex;
-        const float w = static_cast<float>(ctx.frame.eye_width), h = static_cast<float>(ctx.frame.eye_height);
-        if (indexed) r.state->viewport_indexed(0, 0.0f, 0.0f, 2.0f * w, h);
+        if (indexed) r.state->viewport_indexed(0, {0, 0, 2 * ctx.frame.eye_width, ctx.frame.eye_height});
         glDrawArraysInstanced(GL_TRIANGLES, 0, 6, count);
-        if (indexed) r.state->viewport_indexed(0, 0.0f, 0.0f, w, h);
+        if (indexed) r.state->viewport_indexed(0, {0, 0, ctx.frame.eye_width, ctx.frame.eye_height});
         ctx.stats.draw_calls += 1;
         r.state->vertex_array(r.gpu.vao.get());
         glProgramUniform1i(clear.program.get(), clear.eye_quads, 0);

@@ -6,7 +6,7 @@
 #include "render/passes.hpp"
 #include "render/portal_recursion.hpp"
 #include "render/renderer_data.hpp"
-#include "scene/shading.hpp"
+#include "shading/shading.hpp"
 
 namespace impossible::render {
 namespace {
@@ -92,15 +92,14 @@ void draw_stereo(DrawContext& ctx) {
     const FrameDesc& frame = ctx.frame;
     gl::StateCache& state = *ctx.renderer.state;
     const gl::WindowRect whole{0, 0, 2 * frame.eye_width, frame.eye_height};
-    const float w = static_cast<float>(frame.eye_width), h = static_cast<float>(frame.eye_height);
     switch (frame.stereo) {
         case StereoMode::ClipShift:
             state.viewport(whole);
             draw_level(ctx, root_view(frame, ctx.projection, 3u));
             break;
         case StereoMode::ViewportIndex:
-            state.viewport_indexed(0, 0.0f, 0.0f, w, h);
-            state.viewport_indexed(1, w, 0.0f, w, h);
+            state.viewport_indexed(0, {0, 0, frame.eye_width, frame.eye_height});
+            state.viewport_indexed(1, {frame.eye_width, 0, frame.eye_width, frame.eye_height});
             draw_level(ctx, root_view(frame, ctx.projection, 3u));
             state.viewport(whole);
             break;
@@ -122,7 +121,7 @@ void draw_stereo(DrawContext& ctx) {
 void clear_target(RendererData& r, const Target& target, int stencil) {
     r.state->apply(kClearState, 0);
     r.state->no_scissor();
-    const glm::dvec3 bg = scene::kBackgroundColor;
+    const glm::dvec3 bg = shading::kBackgroundColor;
     const GLfloat color[4] = {static_cast<GLfloat>(bg.r), static_cast<GLfloat>(bg.g),
                               static_cast<GLfloat>(bg.b), 1.0f};
     const GLuint id[4] = {0, 0, 0, 0};
