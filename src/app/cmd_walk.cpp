@@ -13,7 +13,7 @@
 #include "base/text.hpp"
 #include "layout/path_file.hpp"
 #include "math/pose.hpp"
-#include "scene/walk.hpp"
+#include "walk/walker.hpp"
 
 namespace impossible::app {
 
@@ -38,15 +38,15 @@ int run_walk_stream(const layout::Layout& layout, std::istream& in, const std::s
         return 1;
     }
     const std::vector<math::HeadPose>& poses = *path;
-    scene::Walker walker(layout);
+    walk::Walker walker(layout);
     std::string line;
     for (std::size_t frame = 0; frame < poses.size(); ++frame) {
         const std::vector<int> passed = walker.step(poses[frame]);
         // The walker stops testing at the cap (a head moving absurdly far in
         // one frame, or doors that lead into each other): say so, once a frame.
-        if (static_cast<int>(passed.size()) >= scene::kMaxCrossingsPerFrame)
+        if (static_cast<int>(passed.size()) >= walk::kMaxCrossingsPerFrame)
             err << "warning: " << one_line(name, 1000) << ": frame " << frame << " reached the limit of "
-                << scene::kMaxCrossingsPerFrame
+                << walk::kMaxCrossingsPerFrame
                 << " teleports in one frame; portals beyond it were not crossed and the room may be wrong\n";
         line = "{\"frame\":" + std::to_string(frame) + ",\"room\":";
         const int room = walker.room();

@@ -132,7 +132,7 @@ ViewOptions parse_view_options(const ParsedArgs& args) {
 
 trace::TraceDesc trace_desc_for(const render::FrameDesc& frame, int threads) {
     trace::TraceDesc desc;
-    static_cast<scene::View&>(desc) = frame;
+    static_cast<math::View&>(desc) = frame;
     desc.threads = threads;
     desc.samples = frame.samples;
     return desc;

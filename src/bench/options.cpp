@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "layout/path_file.hpp"
-#include "scene/walk.hpp"
+#include "walk/walker.hpp"
 
 namespace impossible::bench {
 

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "layout/path_file.hpp"
-#include "scene/walk.hpp"
+#include "walk/walker.hpp"
 
 namespace impossible::bench {
 
@@ -153,7 +153,7 @@ std::vector<BenchPose> bench_poses(const layout::Layout& layout, const BenchOpti
     }
     const layout::PathFile file = layout::read_path_file(*o.path);
     if (!file) throw InputError(file.error());
-    scene::Walker walker(layout);
+    walk::Walker walker(layout);
     std::vector<BenchPose> poses;
     for (const math::HeadPose& physical : *file) {
         walker.step(physical);

@@ -9,7 +9,7 @@ namespace impossible::design {
 
 Placement place_rooms(const layout::Layout& layout) {
     Placement out;
-    out.links = scene::link_portals(layout);
+    out.links = links::link_portals(layout);
     out.rooms.resize(layout.rooms.size());
     const int start = layout.start.room;
     if (start < 0 || static_cast<std::size_t>(start) >= layout.rooms.size()) return out;

@@ -19,7 +19,7 @@
 
 #include "layout/layout.hpp"
 #include "math/polygon.hpp"
-#include "scene/walk.hpp"
+#include "walk/walker.hpp"
 
 namespace impossible::design {
 
@@ -33,7 +33,7 @@ struct RoomPlacement {
 };
 
 struct Placement {
-    scene::PortalLinks links;
+    links::PortalLinks links;
     std::vector<RoomPlacement> rooms;  // one per layout room
     std::vector<int> order;            // reachable rooms, breadth first from the start
 };

@@ -8,7 +8,7 @@
 
 #include "design/placement.hpp"
 #include "math/rigid.hpp"
-#include "scene/walk.hpp"
+#include "walk/walker.hpp"
 
 namespace impossible::design {
 namespace {
@@ -158,7 +158,7 @@ void replay(const layout::Layout& layout, Tour& tour) {
     tour.physical_distance = tour.virtual_distance = 0.0;
     tour.closest_edge = std::numeric_limits<double>::infinity();
     const math::Polygon2 area = layout.play_area ? layout::outline(*layout.play_area) : math::Polygon2{};
-    scene::Walker walker(layout);
+    walk::Walker walker(layout);
     for (std::size_t i = 0; i < tour.poses.size(); ++i) {
         const math::dvec3 before = walker.position();
         tour.teleports += static_cast<int>(walker.step(tour.poses[i]).size());

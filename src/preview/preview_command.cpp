@@ -60,7 +60,7 @@ math::HeadPose next_physical_head(const PreviewSession& s, long frame, double dt
 // size they have in the window.
 render::FrameDesc frame_desc(const PreviewSession& s, const PixelRect& eye) {
     render::FrameDesc desc = s.options.frame;
-    const scene::Walker& walker = *s.shown.walker;
+    const walk::Walker& walker = *s.shown.walker;
     desc.head = math::head_pose_from(walker.position(), walker.rotation());
     desc.room = walker.room();
     if (!s.options.screenshots) {
@@ -146,7 +146,7 @@ void draw_window(PreviewSession& s, const WindowLayout& places, const render::Fr
     add_hud(batch, hud_text(s.options, hud_facts(s, desc), s.reload_errors), scale);
     if (s.options.minimap) {
         const float side = std::min(0.42f * float(fb_h), 0.3f * float(fb_w));
-        const scene::Walker& walker = *s.shown.walker;
+        const walk::Walker& walker = *s.shown.walker;
         const MinimapInput map{s.shown.layout.get(), desc.room, walker.physical_to_virtual(),
                                &walker.links().transfer, s.physical};
         add_minimap(batch, map, {float(fb_w) - side - 8.0f, float(fb_h) - side - 8.0f}, side);

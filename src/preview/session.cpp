@@ -17,7 +17,7 @@ Result<Shown> build_shown(gl::StateCache& state, layout::Layout layout, const st
     if (!made) return Error{made.error()};
     s.renderer = std::make_unique<render::Renderer>(std::move(*made));
     const int room = layout::find_room(*s.layout, room_id);
-    s.walker = room >= 0 ? std::make_unique<scene::Walker>(*s.layout, room) : std::make_unique<scene::Walker>(*s.layout);
+    s.walker = room >= 0 ? std::make_unique<walk::Walker>(*s.layout, room) : std::make_unique<walk::Walker>(*s.layout);
     return s;
 }
 
@@ -86,7 +86,7 @@ void poll_reload(PreviewSession& s, Clock::time_point now) {
     ReloadPoll r = poll_layout(*s.watcher);
     if (r.kind == ReloadPoll::Failed) s.reload_errors = r.errors;
     if (r.kind != ReloadPoll::Reloaded) return;
-    const scene::Walker& walker = *s.shown.walker;
+    const walk::Walker& walker = *s.shown.walker;
     const std::string room_id = s.shown.layout->rooms[walker.room()].id;
     const bool walking = walker.started();
     const math::dmat4 w = walker.physical_to_virtual();
@@ -104,7 +104,7 @@ void poll_reload(PreviewSession& s, Clock::time_point now) {
 }
 
 void reset_walk(PreviewSession& s) {
-    s.shown.walker = std::make_unique<scene::Walker>(*s.shown.layout);
+    s.shown.walker = std::make_unique<walk::Walker>(*s.shown.layout);
     s.physical = start_pose(*s.shown.layout);
 }
 

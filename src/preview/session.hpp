@@ -24,7 +24,7 @@
 #include "preview/window.hpp"
 #include "render/frame.hpp"
 #include "render/renderer.hpp"
-#include "scene/walk.hpp"
+#include "walk/walker.hpp"
 
 namespace impossible::preview {
 
@@ -38,7 +38,7 @@ inline constexpr double kReloadPollSeconds = 0.25;
 struct Shown {
     std::unique_ptr<layout::Layout> layout;
     std::unique_ptr<render::Renderer> renderer;
-    std::unique_ptr<scene::Walker> walker;
+    std::unique_ptr<walk::Walker> walker;
 };
 
 // Builds the renderer and a walker for `layout`, in the room named `room_id`

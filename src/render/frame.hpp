@@ -8,7 +8,7 @@
 #include "image/image.hpp"
 #include "layout/limits.hpp"
 #include "math/pose.hpp"
-#include "scene/view.hpp"
+#include "math/view.hpp"
 
 namespace impossible::render {
 
@@ -45,7 +45,7 @@ inline constexpr double kNearStandard = layout::limits::kNearStandard;    // 1 c
 inline constexpr int kDefaultMaxPortalPasses = 10'000;
 
 // The view (scene/view.hpp) and how the rasteriser draws it.
-struct FrameDesc : scene::View {
+struct FrameDesc : math::View {
     // Portal passes one frame may draw; past it, portals show the fill colour
     // (FrameStats::budget_fills). Only a frame that needs more changes.
     int max_portal_passes = kDefaultMaxPortalPasses;

@@ -15,13 +15,13 @@
 // whose blend adds r · the copy to (1 - r) · tint · the colour. Each final
 // pixel of each view is blended exactly once.
 //
-// A window branch whose weight falls below scene::kMinBranchWeight is not
+// A window branch whose weight falls below shading::kMinBranchWeight is not
 // drawn and shows the fill colour, as the tracer does.
 #include <algorithm>
 #include <cassert>
 
 #include "render/portal_recursion.hpp"
-#include "scene/shading.hpp"
+#include "shading/shading.hpp"
 
 namespace impossible::render {
 namespace {
@@ -35,7 +35,7 @@ void draw_region(DrawContext& ctx, const LevelView& view, Pass pass) {
     const GLuint program = r.clear_depth.program.get();
     r.state->program(program);
     glProgramUniform1f(program, r.clear_depth.far_depth, ctx.frame.depth == DepthMode::ReversedZ ? 0.0f : 1.0f);
-    const glm::dvec3 bg = scene::kBackgroundColor;
+    const glm::dvec3 bg = shading::kBackgroundColor;
     glProgramUniform4f(program, r.clear_depth.color, float(bg.r), float(bg.g), float(bg.b), 1.0f);
     draw_full_target(ctx);
     r.state->program(ctx.program.program.get());
@@ -94,7 +94,7 @@ void blend_window(DrawContext& ctx, const LevelView& view, const PortalInfo& w, 
     r.state->program(program);
     glProgramUniform1i(program, blend.use_saved, saved != 0 ? 1 : 0);
     glProgramUniform3f(program, blend.scale, float(k), float(k), float(k));
-    const glm::dvec3 fill = k * scene::kPortalFillColor;
+    const glm::dvec3 fill = k * shading::kPortalFillColor;
     glProgramUniform3f(program, blend.constant, float(fill.r), float(fill.g), float(fill.b));
     if (saved != 0) glBindTextureUnit(0, saved);
     draw_full_target(ctx);
@@ -117,7 +117,7 @@ void draw_mirror(DrawContext& ctx, const LevelView& view, int p, const std::arra
     const PortalInfo& m = ctx.renderer.portals[p];
     mark_portal(ctx, view, p, rects);
     ctx.stats.portal_passes_drawn += 1;
-    draw_level(ctx, reflected_view(ctx, view, p, rects, scene::max_channel(m.tint)));
+    draw_level(ctx, reflected_view(ctx, view, p, rects, shading::max_channel(m.tint)));
     if (!is_white(m.tint)) {
         limit_to_portal(ctx, view, rects);
         ctx.renderer.state->blend_color(float(m.tint.r), float(m.tint.g), float(m.tint.b), 1.0f);
@@ -129,9 +129,9 @@ void draw_mirror(DrawContext& ctx, const LevelView& view, int p, const std::arra
 void draw_window(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
     const PortalInfo& w = ctx.renderer.portals[p];
     const double k = w.reflectance;
-    const double through_factor = (1.0 - k) * scene::max_channel(w.tint);
-    const bool reflect = view.weight * k >= scene::kMinBranchWeight;
-    const bool through = view.weight * through_factor >= scene::kMinBranchWeight;
+    const double through_factor = (1.0 - k) * shading::max_channel(w.tint);
+    const bool reflect = view.weight * k >= shading::kMinBranchWeight;
+    const bool through = view.weight * through_factor >= shading::kMinBranchWeight;
     mark_portal(ctx, view, p, rects);
 
     GLuint saved = 0;

@@ -14,7 +14,7 @@
 #include "render/object_culling.hpp"
 #include "render/scene_program.hpp"
 #include "render/target.hpp"
-#include "scene/portal_links.hpp"
+#include "links/portal_links.hpp"
 #include "scene/scene.hpp"
 
 namespace impossible::render {
@@ -50,7 +50,7 @@ struct RendererData {
     std::vector<scene::CellFrame> frames;  // per room: what its vertices are relative to
     std::vector<PortalInfo> portals;       // per layout portal
     bool has_windows = false;              // the window blend's programs are needed
-    scene::PortalLinks links;              // M_AB per portal, the portals of each room
+    links::PortalLinks links;              // M_AB per portal, the portals of each room
     GpuScene gpu;
     std::optional<SceneProgram> programs[kStereoModeCount];  // per StereoMode, built on first use
     std::optional<SceneProgram> material_programs[kStereoModeCount];  // the same with textures and cut-outs

@@ -5,18 +5,18 @@
 #include "embedded.hpp"
 #include "gl/shader.hpp"
 #include "render/gpu_scene.hpp"
-#include "scene/shading.hpp"
+#include "shading/shading.hpp"
 
 namespace impossible::render {
 namespace {
 
 std::string shading_defines() {
-    const glm::dvec3 l = scene::kLightDir;
+    const glm::dvec3 l = shading::kLightDir;
     char buf[512];
     std::snprintf(buf, sizeof buf,
                   "#define LIGHT_DIR vec3(%.9g, %.9g, %.9g)\n#define AMBIENT %.9g\n"
                   "#define DIFFUSE %.9g\n#define CHECKER_DARK %.9g\n",
-                  l.x, l.y, l.z, scene::kAmbient, scene::kDiffuse, scene::kCheckerDark);
+                  l.x, l.y, l.z, shading::kAmbient, shading::kDiffuse, shading::kCheckerDark);
     return buf;
 }
 

@@ -43,7 +43,7 @@ struct LevelView {
     int level = 0;          // portals passed; also the stencil value
     int entered_by = -1;    // the portal of this cell the view came out of (or a mirror's), or -1
     bool mirrored = false;  // an odd number of reflections: triangles wind the other way
-    double weight = 1.0;    // scene::kMinBranchWeight: the share of this view in the pixels
+    double weight = 1.0;    // shading::kMinBranchWeight: the share of this view in the pixels
     std::array<EyeView, 2> eyes;
 };
 

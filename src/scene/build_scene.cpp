@@ -93,7 +93,7 @@ Scene build_scene(const layout::Layout& layout) {
         const bool box = layout.portals[p].kind == layout::PortalKind::Door;
         scene.portals.push_back(box ? append_portal_box(out, rect, front) : append_portal_front(out, rect, front));
     }
-    scene.links = link_portals(layout);
+    scene.links = links::link_portals(layout);
     return scene;
 }
 

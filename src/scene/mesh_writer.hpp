@@ -14,7 +14,7 @@
 #include <glm/vec3.hpp>
 
 #include "scene/scene.hpp"
-#include "scene/shading.hpp"
+#include "shading/shading.hpp"
 
 namespace impossible::scene {
 
@@ -43,7 +43,7 @@ struct MeshWriter {
         glm::dvec2 uv(0.0);
         if (face_uv) {
             const glm::dvec3 p(world(position.x, 0), world(position.y, 1), world(position.z, 2));
-            uv = room_texture_uv(face_uv->face, p, face_uv->size) - face_uv->shift;
+            uv = shading::room_texture_uv(face_uv->face, p, face_uv->size) - face_uv->shift;
         }
         return vertex(position, normal, color, checker, uv, 1.0);
     }

@@ -3,7 +3,7 @@
 #include <array>
 #include <cstdint>
 
-#include "scene/shading.hpp"
+#include "shading/shading.hpp"
 
 namespace impossible::scene {
 
@@ -46,7 +46,7 @@ PortalMesh append_portal_front(MeshWriter& out, const math::PortalRect& rect, co
     // The grid's cells, counter-clockwise seen from +n (r × u = n).
     const std::uint32_t first = out.index_count();
     std::vector<std::uint32_t> ids;
-    for (const glm::vec3& p : front.points) ids.push_back(out.vertex(p, n, kPortalFillColor, 0.0));
+    for (const glm::vec3& p : front.points) ids.push_back(out.vertex(p, n, shading::kPortalFillColor, 0.0));
     const auto id = [&](int i, int j) { return ids[static_cast<std::size_t>(j * front.cols + i)]; };
     for (int j = 0; j + 1 < front.rows; ++j) {
         for (int i = 0; i + 1 < front.cols; ++i) {
@@ -74,13 +74,13 @@ PortalMesh append_portal_box(MeshWriter& out, const math::PortalRect& rect,
     const std::array<glm::dvec3, 4> side_normal = {u, -r, -u, r};
     for (int s = 0; s < 4; ++s) {
         const glm::dvec3& normal = side_normal[static_cast<std::size_t>(s)];
-        const std::uint32_t back_s = out.vertex(out.local(c[4 + s]), normal, kPortalFillColor, 0.0);
+        const std::uint32_t back_s = out.vertex(out.local(c[4 + s]), normal, shading::kPortalFillColor, 0.0);
         const std::uint32_t back_next =
-            out.vertex(out.local(c[4 + (s + 1) % 4]), normal, kPortalFillColor, 0.0);
+            out.vertex(out.local(c[4 + (s + 1) % 4]), normal, shading::kPortalFillColor, 0.0);
         const std::vector<glm::vec3> path = side_path(front, s);
-        std::uint32_t previous = out.vertex(path.front(), normal, kPortalFillColor, 0.0);
+        std::uint32_t previous = out.vertex(path.front(), normal, shading::kPortalFillColor, 0.0);
         for (std::size_t k = 1; k < path.size(); ++k) {
-            const std::uint32_t next = out.vertex(path[k], normal, kPortalFillColor, 0.0);
+            const std::uint32_t next = out.vertex(path[k], normal, shading::kPortalFillColor, 0.0);
             out.triangle(back_s, previous, next);
             previous = next;
         }
@@ -89,7 +89,7 @@ PortalMesh append_portal_box(MeshWriter& out, const math::PortalRect& rect,
     std::array<std::uint32_t, 4> back{};
     for (int k = 0; k < 4; ++k) {
         back[static_cast<std::size_t>(k)] =
-            out.vertex(out.local(c[4 + k]), n, kPortalFillColor, 0.0);
+            out.vertex(out.local(c[4 + k]), n, shading::kPortalFillColor, 0.0);
     }
     out.triangle(back[0], back[1], back[2]);
     out.triangle(back[0], back[2], back[3]);

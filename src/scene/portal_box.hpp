@@ -35,7 +35,7 @@ FrontGrid corner_front(const MeshWriter& out, const math::PortalRect& rect);
 
 // Appends the box of `rect` with the given front; the back corners are
 // math::box_corners' (in float, relative to out's origin). Colour
-// kPortalFillColor, checker 0.
+// shading::kPortalFillColor, checker 0.
 PortalMesh append_portal_box(MeshWriter& out, const math::PortalRect& rect, const FrontGrid& front);
 
 // A mirror's or window's one-sided rectangle facing +n: the front alone,

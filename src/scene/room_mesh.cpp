@@ -220,7 +220,7 @@ std::array<IndexRange, layout::kFaceCount> append_room_faces(MeshWriter& out, co
         if (room.face_texture[fi]) {
             const auto f = static_cast<layout::Face>(face);
             out.face_uv = FaceUv{f, room.texture_size,
-                                 glm::floor(room_texture_uv(f, out.origin, room.texture_size))};
+                                 glm::floor(shading::room_texture_uv(f, out.origin, room.texture_size))};
         }
         append_face(out, room, face, lines, holes[fi], slabs[fi], layout, fronts);
         ranges[fi] = out.range_since(first);

@@ -19,7 +19,7 @@
 #include <glm/vec3.hpp>
 
 #include "layout/layout.hpp"
-#include "scene/portal_links.hpp"
+#include "links/portal_links.hpp"
 
 namespace impossible::scene {
 
@@ -114,7 +114,7 @@ struct Scene {
     std::vector<SceneTexture> textures;           // each image and sampler once
     std::vector<CellFrame> frames;     // per room: the origin of its vertices and its portals'
     std::vector<PortalMesh> portals;   // per portal, relative to its room's frame
-    PortalLinks links;                 // M_AB per portal and the portals of each room, linked once
+    links::PortalLinks links;                 // M_AB per portal and the portals of each room, linked once
 };
 
 // Builds the meshes of every room and portal box, and links the portals. The

@@ -5,7 +5,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "scene/shading.hpp"
+#include "shading/shading.hpp"
 #include "trace/texture_sample.hpp"
 
 namespace impossible::trace {
@@ -134,7 +134,7 @@ dvec4 triangle_color(const PropTriangle& tri, std::span<const PropMaterial> mate
 dvec3 room_face_color(const RoomFace& face, const dvec3& p) {
     if (!face.texture) return face.color;
     const dvec4 texel =
-        sample_level0(*face.texture, assets::Sampler{}, scene::room_texture_uv(face.face, p, face.texture_size));
+        sample_level0(*face.texture, assets::Sampler{}, shading::room_texture_uv(face.face, p, face.texture_size));
     return face.color * dvec3(texel);
 }
 

@@ -43,7 +43,7 @@ struct RoomFace {
     layout::Face face = layout::Face::Floor;
     dvec3 color{0.8};
     std::vector<int> holes;  // portals (indices into Scene::portals) cutting a hole here
-    // Multiplies `color` where set: read at scene::room_texture_uv(face, p,
+    // Multiplies `color` where set: read at shading::room_texture_uv(face, p,
     // texture_size) with the default sampler (docs/tracer.md, "Materials
     // and textures").
     std::shared_ptr<const image::Pixels> texture;

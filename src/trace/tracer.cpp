@@ -13,7 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include "math/projection.hpp"
-#include "scene/shading.hpp"
+#include "shading/shading.hpp"
 #include "trace/bvh.hpp"
 #include "trace/intersect.hpp"
 #include "trace/sample_pattern.hpp"
@@ -166,16 +166,16 @@ dvec3 follow(const Scene& scene, Ray ray, int max_depth, TraceHit* main) {
         const Nearest n = nearest_in_room(scene, ray.room, ray.origin, ray.dir, ray.clip);
         if (!n.found) {
             end_main(kIdNothing, -1, dvec3(0.0), dvec3(0.0));
-            return done + factor * scene::kBackgroundColor;
+            return done + factor * shading::kBackgroundColor;
         }
         const dvec3 point = ray.origin + n.t * ray.dir;
         if (n.portal < 0) {
             end_main(1 + ray.room, ray.room, point, n.normal);
-            return done + factor * scene::shade(base_color(scene, ray.room, n, point), n.normal, point, n.checker);
+            return done + factor * shading::shade(base_color(scene, ray.room, n, point), n.normal, point, n.checker);
         }
         if (ray.portals_passed >= max_depth) {  // step 3, for every kind
             end_main(kIdDepthLimit, ray.room, point, n.normal);
-            return done + factor * scene::kPortalFillColor;
+            return done + factor * shading::kPortalFillColor;
         }
         const ScenePortal& p = scene.portals[n.portal];
         switch (p.kind) {
@@ -183,7 +183,7 @@ dvec3 follow(const Scene& scene, Ray ray, int max_depth, TraceHit* main) {
                 pass_through(scene, p, ray);
                 break;
             case layout::PortalKind::Mirror: {  // step 4; never cut by weight
-                const double weight = ray.weight * scene::max_channel(p.tint);
+                const double weight = ray.weight * shading::max_channel(p.tint);
                 ray = reflected(p, ray);
                 ray.weight = weight;
                 factor *= p.tint;
@@ -194,11 +194,11 @@ dvec3 follow(const Scene& scene, Ray ray, int max_depth, TraceHit* main) {
                 Ray back = reflected(p, ray);
                 back.weight = ray.weight * r;
                 const dvec3 back_factor = factor * r;
-                const double through_weight = ray.weight * ((1.0 - r) * scene::max_channel(p.tint));
+                const double through_weight = ray.weight * ((1.0 - r) * shading::max_channel(p.tint));
                 const dvec3 through_factor = factor * ((1.0 - r) * p.tint);
-                const bool back_on = back.weight >= scene::kMinBranchWeight;
-                const bool through_on = through_weight >= scene::kMinBranchWeight;
-                if (!back_on) done += back_factor * scene::kPortalFillColor;
+                const bool back_on = back.weight >= shading::kMinBranchWeight;
+                const bool through_on = through_weight >= shading::kMinBranchWeight;
+                if (!back_on) done += back_factor * shading::kPortalFillColor;
                 if (through_on) {
                     if (back_on) done += back_factor * follow(scene, back, max_depth, nullptr);
                     pass_through(scene, p, ray);
@@ -208,7 +208,7 @@ dvec3 follow(const Scene& scene, Ray ray, int max_depth, TraceHit* main) {
                 }
                 // The through branch is cut: the main path ends here, as at the limit.
                 end_main(kIdDepthLimit, ray.room, point, n.normal);
-                done += through_factor * scene::kPortalFillColor;
+                done += through_factor * shading::kPortalFillColor;
                 if (!back_on) return done;
                 ray = back;
                 factor = back_factor;

@@ -11,7 +11,7 @@
 #include "layout/layout.hpp"
 #include "image/image.hpp"
 #include "math/pose.hpp"
-#include "scene/view.hpp"
+#include "math/view.hpp"
 #include "trace/trace_scene.hpp"
 
 namespace impossible::trace {
@@ -45,7 +45,7 @@ struct TraceHit {
 TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, int room, int max_depth);
 
 // The view (scene/view.hpp) and how the tracer computes it.
-struct TraceDesc : scene::View {
+struct TraceDesc : math::View {
     int threads = 0;  // 0: std::thread::hardware_concurrency()
     // Supersampling: 1 traces the pixel centre (exactly as before); 2, 4, 8
     // or 16 trace one ray per position of trace/sample_pattern.hpp and give

@@ -9,7 +9,7 @@
 #include "design/plan.hpp"
 #include "design/report.hpp"
 #include "design/tour.hpp"
-#include "scene/walk.hpp"
+#include "walk/walker.hpp"
 
 namespace design_test {
 namespace {
@@ -97,7 +97,7 @@ TEST(DesignMirrors, TheTourWalksThroughTheDoorOnly) {
     EXPECT_EQ(tour->visited, (std::vector<int>{0, 1}));
     EXPECT_TRUE(tour->missed.empty());  // c is unreachable, not missed
     EXPECT_EQ(tour->teleports, 2);      // into b and back
-    scene::Walker walker(l);
+    walk::Walker walker(l);
     for (const math::HeadPose& pose : tour->poses) {
         for (const int p : walker.step(pose)) EXPECT_EQ(l.portals[p].kind, layout::PortalKind::Door) << l.portals[p].id;
     }

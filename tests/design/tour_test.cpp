@@ -8,7 +8,7 @@
 #include "design/path_text.hpp"
 #include "layout/path_file.hpp"
 #include "design/tour.hpp"
-#include "scene/walk.hpp"
+#include "walk/walker.hpp"
 
 namespace design_test {
 namespace {
@@ -21,7 +21,7 @@ TEST(Tour, FourRoomsVisitsEveryRoomInsideThePlayArea) {
     EXPECT_TRUE(tour->missed.empty());
     EXPECT_GE(tour->closest_edge, 0.1 - 1e-9);  // the planner's edge margin
     // Replayed independently: every room, and no step longer than the step size.
-    scene::Walker walker(l);
+    walk::Walker walker(l);
     std::set<int> rooms;
     for (std::size_t i = 0; i < tour->poses.size(); ++i) {
         walker.step(tour->poses[i]);
@@ -41,7 +41,7 @@ TEST(Tour, GoesRoundProps) {
         const auto tour = design::plan_tour(l);
         ASSERT_TRUE(tour.has_value());
         EXPECT_TRUE(tour->missed.empty()) << name;
-        scene::Walker walker(l);
+        walk::Walker walker(l);
         for (std::size_t i = 0; i < tour->poses.size(); ++i) {
             walker.step(tour->poses[i]);
             const math::dvec3 p = walker.position();

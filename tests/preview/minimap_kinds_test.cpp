@@ -7,7 +7,7 @@
 
 #include "layout/layout.hpp"
 #include "preview/minimap.hpp"
-#include "scene/walk.hpp"
+#include "walk/walker.hpp"
 
 namespace impossible::preview {
 namespace {
@@ -19,7 +19,7 @@ int count_lines(const OverlayBatch& batch, glm::vec4 colour) {
 }
 
 OverlayBatch minimap_of(const layout::Layout& l, int room) {
-    const scene::Walker walker(l);
+    const walk::Walker walker(l);
     MinimapInput in;
     in.layout = &l;
     in.room = room;

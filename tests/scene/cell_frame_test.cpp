@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "scene/scene.hpp"
-#include "scene/shading.hpp"
+#include "shading/shading.hpp"
 #include "scene_test_helpers.hpp"
 
 namespace impossible::scene::test {
@@ -71,7 +71,7 @@ TEST(CellFrame, TheCheckerOffsetKeepsThePattern) {
             const glm::dvec3 shifted = glm::dvec3(f.checker_offset) + local;
             if (std::abs(std::remainder(world.x, side)) < 1e-4 || std::abs(std::remainder(world.z, side)) < 1e-4)
                 continue;  // on a square's edge: float rounding may pick either side
-            EXPECT_EQ(checker_dark(world, {0, 1, 0}, side), checker_dark(shifted, {0, 1, 0}, side))
+            EXPECT_EQ(shading::checker_dark(world, {0, 1, 0}, side), shading::checker_dark(shifted, {0, 1, 0}, side))
                 << "side " << side << " point " << k;
         }
     }

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "scene/scene.hpp"
-#include "scene/shading.hpp"
+#include "shading/shading.hpp"
 #include "scene_test_helpers.hpp"
 
 namespace impossible::scene::test {
@@ -17,7 +17,7 @@ void expect_portal_box(const Scene& s, const PortalMesh& m, const math::PortalRe
     const auto front = triangles(s, m.front);
     const auto inner = triangles(s, m.inner);
     ASSERT_FALSE(front.empty());
-    const glm::vec3 fill(kPortalFillColor);
+    const glm::vec3 fill(shading::kPortalFillColor);
     for (const Triangle& t : front) {
         ASSERT_GT(t.area(), 0.0);
         EXPECT_NEAR(glm::length(t.geometric_normal() - rect.normal), 0.0, 1e-6);

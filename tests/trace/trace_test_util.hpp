@@ -14,7 +14,7 @@
 
 #include "common/layouts.hpp"
 #include "layout/layout.hpp"
-#include "scene/shading.hpp"
+#include "shading/shading.hpp"
 #include "trace/tracer.hpp"
 
 namespace impossible::trace::test {
@@ -30,7 +30,7 @@ using impossible::test::make_window;
 // Positions the tracer computes are exact to this (metres).
 inline constexpr double kTol = 1e-12;
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
-inline const dvec3& kFill = scene::kPortalFillColor;
+inline const dvec3& kFill = shading::kPortalFillColor;
 inline const dvec3 kRed{1, 0, 0}, kGreen{0, 1, 0}, kBlue{0, 0, 1};
 
 inline void expect_point(const dvec3& got, const dvec3& want, double tol = kTol) {
@@ -64,8 +64,8 @@ inline dvec3 face_color(const layout::Room& room, layout::Face face) {
 // tracer's own call: the test names the surface's base colour, normal and
 // checker square itself.
 inline dvec3 shade_by_hand(dvec3 base, dvec3 normal, bool dark) {
-    const double lambert = std::max(0.0, glm::dot(normal, scene::kLightDir));
-    return base * ((scene::kAmbient + scene::kDiffuse * lambert) * (dark ? scene::kCheckerDark : 1.0));
+    const double lambert = std::max(0.0, glm::dot(normal, shading::kLightDir));
+    return base * ((shading::kAmbient + shading::kDiffuse * lambert) * (dark ? shading::kCheckerDark : 1.0));
 }
 
 inline std::array<std::uint8_t, 3> bytes_of(dvec3 c) {

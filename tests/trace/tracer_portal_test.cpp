@@ -281,7 +281,7 @@ TEST(TracerPortal, RecursionStopsWithTheFillExactlyAtMaxDepth) {
         const TraceHit hit = trace_ray(scene, {0, 1.5, 0}, {0, 0, -1}, 0, depth);
         EXPECT_EQ(hit.id, kIdDepthLimit) << depth;
         EXPECT_EQ(hit.portals_passed, depth);
-        EXPECT_EQ(hit.color, ::impossible::scene::kPortalFillColor);
+        EXPECT_EQ(hit.color, ::impossible::shading::kPortalFillColor);
         expect_point(hit.origin, {0, 1.5, 4.0 * depth});
         expect_point(hit.point, {0, 1.5, -2});
     }
@@ -306,7 +306,7 @@ TEST(TracerPortal, FrameShowsTheFillWhereTheRecursionEnds) {
     desc.max_depth = 3;
     const image::Image image = trace_frame(scene, desc);
     EXPECT_EQ(test::pixel_id(image, 4, 4), 255);
-    EXPECT_EQ(test::pixel_rgb(image, 4, 4), test::bytes_of(::impossible::scene::kPortalFillColor));
+    EXPECT_EQ(test::pixel_rgb(image, 4, 4), test::bytes_of(::impossible::shading::kPortalFillColor));
     EXPECT_EQ(test::pixel_id(image, 0, 0), 1);  // the corner looks past the portals
     EXPECT_EQ(test::count_id(image, 0), 0);
 }

@@ -99,7 +99,7 @@ TEST(TracerRoom, PropBoxesFaceOutwardsAndAreNotChequered) {
     const TraceHit side = trace_ray(scene, {-1.5, 0.5, 0.1}, {1, 0, 0}, 0, 8);
     EXPECT_NEAR(side.point.x, -0.5, kTol);
     EXPECT_EQ(side.normal, dvec3(-1, 0, 0));
-    EXPECT_NEAR(side.color.x, 0.9 * scene::kAmbient, 1e-12);
+    EXPECT_NEAR(side.color.x, 0.9 * shading::kAmbient, 1e-12);
 
     // From inside the box its faces are back faces: the ray reaches the +x wall.
     const TraceHit inside = trace_ray(scene, {0.0, 0.5, 0.1}, {1, 0, 0}, 0, 8);
@@ -161,7 +161,7 @@ TEST(TracerRoom, AnEyeOutsideEveryRoomSeesNothing) {
     const TraceHit hit = trace_ray(prepare_scene(one_room()), {0, 1.5, 5}, {0, 0, 1}, 0, 8);
     EXPECT_EQ(hit.id, kIdNothing);
     EXPECT_EQ(hit.room, -1);
-    EXPECT_EQ(hit.color, ::impossible::scene::kBackgroundColor);
+    EXPECT_EQ(hit.color, ::impossible::shading::kBackgroundColor);
 }
 
 TEST(TracerRoom, BadFrameDescriptionsThrow) {

@@ -142,7 +142,7 @@ TEST(TracerWindow, AThroughBranchCutByWeightGivesTheIdOfTheLimit) {
 }
 
 TEST(TracerWindow, AReflectionBelowTheMinimumWeightShowsTheFill) {
-    const double cut = ::impossible::scene::kMinBranchWeight;
+    const double cut = ::impossible::shading::kMinBranchWeight;
     // r = 0.001 < 1/256: the reflected branch is not followed and shows the fill.
     {
         const layout::Layout l = window_pair({1, 1, 1}, 0.001);

@@ -6,7 +6,7 @@
 
 #include "math/pose.hpp"
 
-namespace impossible::scene {
+namespace impossible::math {
 
 struct View {
     math::HeadPose head;
@@ -18,4 +18,4 @@ struct View {
     int max_depth = 8;         // portals one line of sight may pass
 };
 
-}  // namespace impossible::scene
+}  // namespace impossible::math

@@ -1,6 +1,6 @@
-#include "scene/portal_links.hpp"
+#include "links/portal_links.hpp"
 
-namespace impossible::scene {
+namespace impossible::links {
 PortalLinks link_portals(const layout::Layout& layout) {
     PortalLinks links;
     links.transfer.assign(layout.portals.size(), math::dmat4(1.0));
@@ -23,4 +23,4 @@ PortalLinks link_portals(const layout::Layout& layout) {
     return links;
 }
 
-}  // namespace impossible::scene
+}  // namespace impossible::links

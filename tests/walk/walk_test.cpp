@@ -4,10 +4,10 @@
 #include <glm/geometric.hpp>
 
 #include "math/rigid.hpp"
-#include "scene/walk.hpp"
-#include "walk_test_layouts.hpp"
+#include "walk/walker.hpp"
+#include "walk/walk_test_layouts.hpp"
 
-namespace impossible::scene {
+namespace impossible::walk {
 namespace {
 
 using namespace testing;
@@ -242,7 +242,7 @@ TEST(Walker, CrossingsPerFrameAreBounded) {
 
 TEST(PortalLinks, TransferMatricesComputedOncePerPortal) {
     const layout::Layout l = chain();
-    const PortalLinks links = link_portals(l);
+    const links::PortalLinks links = links::link_portals(l);
     ASSERT_EQ(links.transfer.size(), 4u);
     for (int i = 0; i < 4; ++i) {
         const auto& p = l.portals[i];
@@ -258,7 +258,7 @@ TEST(PortalLinks, BrokenIndicesAreLeftOut) {
     layout::Layout l = chain();
     l.portals[0].target = 17;
     l.portals[3].room = -1;
-    const PortalLinks links = link_portals(l);
+    const links::PortalLinks links = links::link_portals(l);
     EXPECT_EQ(links.room_portals[0], std::vector<int>{});
     EXPECT_EQ(links.room_portals[2], std::vector<int>{});
     Walker w(l);
@@ -267,4 +267,4 @@ TEST(PortalLinks, BrokenIndicesAreLeftOut) {
 }
 
 }  // namespace
-}  // namespace impossible::scene
+}  // namespace impossible::walk

@@ -7,10 +7,10 @@
 
 #include <glm/geometric.hpp>
 
-#include "scene/walk.hpp"
-#include "walk_test_layouts.hpp"
+#include "walk/walker.hpp"
+#include "walk/walk_test_layouts.hpp"
 
-namespace impossible::scene {
+namespace impossible::walk {
 namespace {
 
 using namespace testing;
@@ -164,4 +164,4 @@ TEST(WalkerMirrors, AMirrorBeforeADoorDoesNotTakeTheCrossing) {
 }
 
 }  // namespace
-}  // namespace impossible::scene
+}  // namespace impossible::walk

@@ -35,9 +35,9 @@
 
 #include "layout/layout.hpp"
 #include "math/pose.hpp"
-#include "scene/portal_links.hpp"
+#include "links/portal_links.hpp"
 
-namespace impossible::scene {
+namespace impossible::walk {
 
 inline constexpr int kMaxCrossingsPerFrame = 64;
 inline constexpr std::size_t kHistoryLength = 256;
@@ -66,7 +66,7 @@ public:
     int room() const { return room_; }
     bool started() const { return started_; }
     const math::dmat4& physical_to_virtual() const { return w_; }
-    const PortalLinks& links() const { return links_; }
+    const links::PortalLinks& links() const { return links_; }
 
     // The virtual head centre and orientation (columns right, up, back) after
     // the last step (before any, the layout's start).
@@ -84,7 +84,7 @@ private:
     void teleport(int portal);
 
     const layout::Layout* layout_;
-    PortalLinks links_;
+    links::PortalLinks links_;
     math::dmat4 w_{1.0};
     int room_ = -1;
     math::dvec3 head_{0.0};                // virtual head centre
@@ -94,4 +94,4 @@ private:
     std::deque<Passed> history_;  // the latest teleports, newest last
 };
 
-}  // namespace impossible::scene
+}  // namespace impossible::walk

@@ -9,7 +9,7 @@
 #include "layout/layout.hpp"
 #include "math/pose.hpp"
 
-namespace impossible::scene::testing {
+namespace impossible::walk::testing {
 
 // A head at p looking along yaw, level.
 inline math::HeadPose at(glm::dvec3 p, double yaw = 0.0) { return math::HeadPose{p, yaw, 0.0, 0.0}; }
@@ -79,4 +79,4 @@ inline layout::Layout skewed_pair() {
     return l;
 }
 
-}  // namespace impossible::scene::testing
+}  // namespace impossible::walk::testing

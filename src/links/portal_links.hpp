@@ -9,7 +9,7 @@
 #include "layout/layout.hpp"
 #include "math/portal.hpp"
 
-namespace impossible::scene {
+namespace impossible::links {
 
 // transfer[i] is M from portal i to its target (doors and windows);
 // reflection[i] is M_P of a mirror or window (identity for a door);
@@ -27,4 +27,4 @@ PortalLinks link_portals(const layout::Layout& layout);
 // Whether i indexes an array of n things.
 inline bool valid_index(int i, std::size_t n) { return i >= 0 && static_cast<std::size_t>(i) < n; }
 
-}  // namespace impossible::scene
+}  // namespace impossible::links

@@ -1,5 +1,5 @@
 // The walker (see walk.hpp).
-#include "scene/walk.hpp"
+#include "walk/walker.hpp"
 
 #include <cmath>
 
@@ -9,7 +9,7 @@
 #include "math/portal.hpp"
 #include "math/rigid.hpp"
 
-namespace impossible::scene {
+namespace impossible::walk {
 
 namespace {
 
@@ -22,7 +22,7 @@ math::dvec3 apply(const math::dmat4& m, const math::dvec3& p) {
 Walker::Walker(const layout::Layout& layout) : Walker(layout, layout.start.room) {}
 
 Walker::Walker(const layout::Layout& layout, int room)
-    : layout_(&layout), links_(link_portals(layout)), room_(room) {
+    : layout_(&layout), links_(links::link_portals(layout)), room_(room) {
     head_ = layout.start.position;
     physical_pose_.position = layout.start.position;
     physical_pose_.yaw_deg = layout.start.yaw_deg;
@@ -52,7 +52,7 @@ std::vector<int> Walker::step(const math::HeadPose& physical) {
     math::dvec3 begin = head_;
     int exclude = -1;  // the portal just come out of
     while (static_cast<int>(passed.size()) < kMaxCrossingsPerFrame &&
-           valid_index(room_, links_.room_portals.size())) {
+           links::valid_index(room_, links_.room_portals.size())) {
         int best = -1;
         math::SegmentCrossing best_crossing;
         for (int i : links_.room_portals[room_]) {
@@ -110,4 +110,4 @@ std::array<math::Eye, 2> Walker::eyes(double ipd) const {
     return {math::transform_eye(w_, e[0]), math::transform_eye(w_, e[1])};
 }
 
-}  // namespace impossible::scene
+}  // namespace impossible::walk

@@ -19,7 +19,7 @@
 
 #include "layout/layout.hpp"
 
-namespace impossible::scene {
+namespace impossible::shading {
 
 // Direction towards the light (unit): from above, slightly from +X and +Z.
 inline const glm::dvec3 kLightDir = glm::normalize(glm::dvec3(0.3, 0.9, 0.4));
@@ -81,4 +81,4 @@ inline glm::dvec3 shade(const glm::dvec3& base, const glm::dvec3& normal,
     return base * ((kAmbient + kDiffuse * lambert) * dark);
 }
 
-}  // namespace impossible::scene
+}  // namespace impossible::shading

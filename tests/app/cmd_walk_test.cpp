@@ -14,13 +14,13 @@
 
 #include "app/cmd_walk.hpp"
 #include "common/temp_dir.hpp"
-#include "scene/walk.hpp"
-#include "scene/walk_test_layouts.hpp"
+#include "walk/walker.hpp"
+#include "walk/walk_test_layouts.hpp"
 
 namespace impossible::app {
 namespace {
 
-using scene::testing::doorway;
+using walk::testing::doorway;
 
 struct Replay {
     int status = -1;
@@ -90,7 +90,7 @@ TEST(RunWalk, WalksThroughTheDoorwayAndBack) {
 
 TEST(RunWalk, NumbersRoundTrip) {
     // A skewed pair gives positions with all their digits.
-    const layout::Layout l = scene::testing::skewed_pair();
+    const layout::Layout l = walk::testing::skewed_pair();
     const math::PortalRect& a = l.portals[0].rect;
     std::ostringstream path;
     path.precision(17);
@@ -106,7 +106,7 @@ TEST(RunWalk, NumbersRoundTrip) {
     EXPECT_EQ(lines[1]["room"], "r1");
     // Replaying the same poses in code gives the very same doubles (17
     // significant digits in the path file read back exactly).
-    scene::Walker w(l);
+    walk::Walker w(l);
     for (double d : {0.4, -0.4}) w.step(math::HeadPose{a.center + d * a.normal, 12.5, -3.0, 7.0});
     for (int k = 0; k < 3; ++k) {
         EXPECT_EQ(lines[1]["position"][k].get<double>(), w.position()[k]);

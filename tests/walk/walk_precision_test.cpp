@@ -9,10 +9,10 @@
 
 #include "math/portal.hpp"
 #include "math/rigid.hpp"
-#include "scene/walk.hpp"
-#include "walk_test_layouts.hpp"
+#include "walk/walker.hpp"
+#include "walk/walk_test_layouts.hpp"
 
-namespace impossible::scene {
+namespace impossible::walk {
 namespace {
 
 using namespace testing;
@@ -29,7 +29,7 @@ dvec3 over_a(const layout::Layout& l, double d) {
 
 TEST(WalkerPrecision, SkewedPairIsNotExactlyRepresentable) {
     const layout::Layout l = skewed_pair();
-    const PortalLinks links = link_portals(l);
+    const links::PortalLinks links = links::link_portals(l);
     const math::dmat4 round_trip = links.transfer[1] * links.transfer[0];
     EXPECT_NE(round_trip, math::dmat4(1.0));  // rounding is there to be survived
     EXPECT_LT(math::max_abs_difference(round_trip, math::dmat4(1.0)), 1e-13);
@@ -81,7 +81,7 @@ TEST(WalkerPrecision, EndingAHairBehindThePlaneTeleportsOnceAndStays) {
     // W after the teleport is the re-orthonormalised transfer matrix. Find a
     // spot where rounding leaves the mapped head on or behind b's plane,
     // so that the nudge is needed, and one where it is not.
-    const math::dmat4 w_after = math::orthonormalize_rigid(link_portals(l).transfer[0]);
+    const math::dmat4 w_after = math::orthonormalize_rigid(links::link_portals(l).transfer[0]);
     dvec3 needs_nudge(0.0), plain(0.0);
     bool found_nudge = false, found_plain = false;
     for (int i = 0; i < 200 && !(found_nudge && found_plain); ++i) {
@@ -201,7 +201,7 @@ math::dmat4 polar_rigid(const math::dmat4& m) {
 
 TEST(WalkerPrecision, StaysRigidOverAMillionTeleportsAroundARing) {
     const layout::Layout l = ring();
-    const PortalLinks links = link_portals(l);
+    const links::PortalLinks links = links::link_portals(l);
     // Six transfers of one rotation Q by 60°: Q⁶ = I up to rounding.
     math::dmat4 q6(1.0);
     for (int k = 0; k < 6; ++k) q6 = links.transfer[2 * k] * q6;
@@ -246,4 +246,4 @@ TEST(WalkerPrecision, StaysRigidOverAMillionTeleportsAroundARing) {
 }
 
 }  // namespace
-}  // namespace impossible::scene
+}  // namespace impossible::walk
