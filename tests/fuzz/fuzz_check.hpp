@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdio>
 #include <cstdlib>
 #include <string_view>
 
@@ -41,9 +42,30 @@ inline bool is_clean_line(std::string_view text) {
     return true;
 }
 
-// Ends the run (a finding) unless `ok`.
-inline void require(bool ok) {
-    if (!ok) std::abort();
+// Ends the run (a finding): says which check failed, then aborts, so that
+// libFuzzer keeps the input and prints the stack.
+[[noreturn]] inline void fail(const char* what) {
+    std::fprintf(stderr, "fuzz check failed: %s\n", what);
+    std::abort();
+}
+
+// Ends the run unless `ok`; `what` names the check in the report.
+inline void require(bool ok, const char* what) {
+    if (!ok) fail(what);
+}
+
+// Ends the run unless `message` is one clean line; the report shows the
+// message with every byte outside printable ASCII as \xNN.
+inline void require_clean_line(std::string_view message) {
+    if (is_clean_line(message)) return;
+    std::fprintf(stderr, "fuzz check failed: an error message that is not one clean line: \"");
+    for (const char ch : message) {
+        const auto c = static_cast<unsigned char>(ch);
+        if (c >= 0x20 && c < 0x7F && c != '\\') std::fputc(c, stderr);
+        else std::fprintf(stderr, "\\x%02X", c);
+    }
+    std::fprintf(stderr, "\"\n");
+    std::abort();
 }
 
 }  // namespace impossible::fuzz

@@ -54,7 +54,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (::ftruncate(file.fd, static_cast<::off_t>(size)) != 0) std::abort();
     const std::string& path = file.path;
     const auto loaded = impossible::assets::load_gltf_triangles(path, 100'000);
-    if (!loaded) impossible::fuzz::require(impossible::fuzz::is_clean_line(loaded.error()));
-    if (loaded) impossible::fuzz::require(!loaded->empty());
+    if (!loaded) impossible::fuzz::require_clean_line(loaded.error());
+    if (loaded) impossible::fuzz::require(!loaded->empty(), "a loaded model has triangles");
     return 0;
 }

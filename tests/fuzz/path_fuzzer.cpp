@@ -33,8 +33,8 @@ namespace {
 using impossible::layout::PathFile;
 using impossible::math::HeadPose;
 
-using impossible::fuzz::is_clean_line;
 using impossible::fuzz::require;
+using impossible::fuzz::require_clean_line;
 
 // The file the input is written to, kept open in a folder of its own. It is
 // rewritten in place (pwrite, then ftruncate to the new length): opening it
@@ -59,8 +59,8 @@ const InputFile& input_file() {
 
 void write_input(const std::string& text) {
     const InputFile& f = input_file();
-    require(::pwrite(f.fd, text.data(), text.size(), 0) == static_cast<::ssize_t>(text.size()));
-    require(::ftruncate(f.fd, static_cast<::off_t>(text.size())) == 0);
+    require(::pwrite(f.fd, text.data(), text.size(), 0) == static_cast<::ssize_t>(text.size()), "write the input");
+    require(::ftruncate(f.fd, static_cast<::off_t>(text.size())) == 0, "write the input");
 }
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
@@ -80,15 +80,15 @@ bool same_poses(const std::vector<HeadPose>& a, const std::vector<HeadPose>& b) 
 
 // "NAME:LINE: message" with LINE in [1, max_line]; returns the message.
 std::string message_after(const std::string& error, const std::string& name, std::size_t max_line) {
-    require(is_clean_line(error));
-    require(error.compare(0, name.size() + 1, name + ":") == 0);
+    require_clean_line(error);
+    require(error.compare(0, name.size() + 1, name + ":") == 0, "an error starts with the name");
     std::size_t i = name.size() + 1;
     std::size_t line = 0;
     const std::size_t digits = i;
     while (i < error.size() && error[i] >= '0' && error[i] <= '9' && i - digits < 12)
         line = line * 10 + static_cast<std::size_t>(error[i++] - '0');
-    require(i > digits && line >= 1 && line <= max_line);
-    require(error.compare(i, 2, ": ") == 0 && error.size() > i + 2);
+    require(i > digits && line >= 1 && line <= max_line, "an error names a line of the input");
+    require(error.compare(i, 2, ": ") == 0 && error.size() > i + 2, "an error is NAME:LINE: message");
     return error.substr(i + 2);
 }
 
@@ -108,19 +108,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
     if (!stream) {
         const std::string message = message_after(stream.error(), "fuzz.txt", lines);
-        require(!file);
-        require(message_after(file.error(), path, lines) == message);
+        require(!file, "the file reader fails where the stream reader does");
+        require(message_after(file.error(), path, lines) == message, "both readers give the same message");
         return 0;
     }
     for (const HeadPose& p : *stream) {
         for (double v : {p.position.x, p.position.y, p.position.z, p.yaw_deg, p.pitch_deg, p.roll_deg})
-            require(std::isfinite(v) && std::abs(v) <= 1e6);
+            require(std::isfinite(v) && std::abs(v) <= 1e6, "every pose finite, within 1e6");
     }
-    require(stream->size() <= lines);
+    require(stream->size() <= lines, "at most a pose a line");
     if (stream->empty()) {
-        require(!file && file.error() == path + ": the path file holds no poses");
+        require(!file && file.error() == path + ": the path file holds no poses",
+                "a file of no poses is an error for the file reader");
     } else {
-        require(file && same_poses(*file, *stream));
+        require(file && same_poses(*file, *stream), "both readers give the same poses");
     }
 
     std::string printed = "# printed again\n";
@@ -132,6 +133,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     std::istringstream again(printed);
     const PathFile reread = impossible::layout::read_path_stream(again, "again.txt");
-    require(reread && same_poses(*reread, *stream));
+    require(reread && same_poses(*reread, *stream), "poses printed with 17 digits read back bit for bit");
     return 0;
 }
