@@ -49,8 +49,8 @@ int run_trace_command(const Args& args, std::ostream& out, std::ostream& err) {
     const trace::TraceDesc desc = trace_desc_for(frame, threads);
 
     const auto start = std::chrono::steady_clock::now();
-    const trace::Scene scene = trace::prepare_scene(layout);
-    const image::Image image = trace::trace_frame(scene, desc);
+    const trace::Scene scene = trace::prepare_scene(layout).value();
+    const image::Image image = trace::trace_frame(scene, desc).value();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     write_frame_pngs(outputs, options, image.width, image.height, image.rgb, image.ids);

@@ -43,16 +43,16 @@ const Result<std::shared_ptr<const image::Pixels>>& AssetCache::load_image(const
     const auto decode = [&]() -> Result<std::shared_ptr<const image::Pixels>> {
         const Result<std::vector<unsigned char>> bytes =
             read_file_bytes(resolved, limits::kMaxImageFileBytes, true);
-        if (!bytes) return Error{bytes.error()};
+        if (!bytes) return bytes;
         if (bytes->empty()) return Error{"is empty (expected a PNG or JPEG image)"};
         const Result<image::ImageSize> size = image::image_size(bytes->data(), bytes->size(), limits::kMaxImageSide);
-        if (!size) return Error{size.error()};
+        if (!size) return size;
         if (size->texels() > limits::kMaxLayoutTexels - total_texels_) {
             return Error{"is " + std::to_string(size->width) + " x " + std::to_string(size->height) +
                          " pixels, which brings the layout " + over_texel_budget()};
         }
         Result<image::Pixels> image = image::decode_image(bytes->data(), bytes->size(), limits::kMaxImageSide);
-        if (!image) return Error{image.error()};
+        if (!image) return image;
         total_texels_ += size->texels();
         return std::make_shared<const image::Pixels>(std::move(*image));
     };

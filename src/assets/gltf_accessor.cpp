@@ -145,7 +145,7 @@ Result<AccessorView> accessor_view(const tinygltf::Model& model, int index, int 
     if (!copied) {
         Result<const unsigned char*> first =
             view_elements(model, accessor.bufferView, accessor.byteOffset, accessor.count, element, out.stride, name);
-        if (!first) return Error{first.error()};
+        if (!first) return first;
         out.data = *first;
         return out;
     }
@@ -160,7 +160,7 @@ Result<AccessorView> accessor_view(const tinygltf::Model& model, int index, int 
         std::size_t stride = 0;
         Result<const unsigned char*> first =
             view_elements(model, accessor.bufferView, accessor.byteOffset, accessor.count, element, stride, name);
-        if (!first) return Error{first.error()};
+        if (!first) return first;
         for (std::size_t i = 0; i < accessor.count; ++i) {
             std::memcpy(out.owned.data() + i * element, *first + i * stride, element);
         }
@@ -184,13 +184,13 @@ Result<AccessorView> accessor_view(const tinygltf::Model& model, int index, int 
     Result<const unsigned char*> index_data =
         view_elements(model, sparse.indices.bufferView, static_cast<std::size_t>(sparse.indices.byteOffset),
                       substitutions, indices.stride, indices.stride, name + "'s sparse indices");
-    if (!index_data) return Error{index_data.error()};
+    if (!index_data) return index_data;
     indices.data = *index_data;
     std::size_t value_stride = element;  // sparse values are tightly packed
     Result<const unsigned char*> values =
         view_elements(model, sparse.values.bufferView, static_cast<std::size_t>(sparse.values.byteOffset),
                       substitutions, element, value_stride, name + "'s sparse values");
-    if (!values) return Error{values.error()};
+    if (!values) return values;
     std::size_t previous = 0;
     for (std::size_t i = 0; i < substitutions; ++i) {
         const std::size_t at = indices.index(i);

@@ -178,7 +178,7 @@ Result<int> check_material(const tinygltf::Model& model, int material) {
                      count_of(model.samplers.size(), "sampler", "samplers") + ")"};
     }
     if (texture.sampler >= 0) {
-        if (Result<void> ok = check_sampler(model, texture.sampler); !ok) return Error{ok.error()};
+        if (Result<void> ok = check_sampler(model, texture.sampler); !ok) return ok;
     }
     return info.texCoord;
 }
@@ -215,7 +215,7 @@ Result<void> build_materials(const tinygltf::Model& model, const KeptImages& kep
                 std::shared_ptr<const image::Pixels>& image = image_of[texture.source];
                 if (image == nullptr) {
                     const auto bytes = image_bytes(model, kept, texture.source, folder);
-                    if (!bytes) return Error{bytes.error()};
+                    if (!bytes) return bytes;
                     const std::string who =
                         "has " + named("image", texture.source,
                                        model.images[static_cast<std::size_t>(texture.source)].name);

@@ -115,9 +115,9 @@ Result<glm::dmat4> local_transform(const tinygltf::Node& node, int index) {
         for (int i = 0; i < 16; ++i) m[i / 4][i % 4] = node.matrix[static_cast<std::size_t>(i)];
         for (int c = 0; c < 3; ++c) {
             for (int r = 0; r < 3; ++r) {
-                if (Result<void> ok = check_scale(m[c][r], "matrix"); !ok) return Error{ok.error()};
+                if (Result<void> ok = check_scale(m[c][r], "matrix"); !ok) return ok;
             }
-            if (Result<void> ok = check_translation(m[3][c], "matrix translation"); !ok) return Error{ok.error()};
+            if (Result<void> ok = check_translation(m[3][c], "matrix translation"); !ok) return ok;
         }
         if (m[0][3] != 0.0 || m[1][3] != 0.0 || m[2][3] != 0.0 || m[3][3] != 1.0) {
             return Error{who + " whose matrix is not affine (its last row must be 0, 0, 0, 1)"};
@@ -130,10 +130,10 @@ Result<glm::dmat4> local_transform(const tinygltf::Node& node, int index) {
         return Error{who + " whose translation, rotation or scale has the wrong number of values"};
     }
     for (double v : node.translation) {
-        if (Result<void> ok = check_translation(v, "translation"); !ok) return Error{ok.error()};
+        if (Result<void> ok = check_translation(v, "translation"); !ok) return ok;
     }
     for (double v : node.scale) {
-        if (Result<void> ok = check_scale(v, "scale"); !ok) return Error{ok.error()};
+        if (Result<void> ok = check_scale(v, "scale"); !ok) return ok;
     }
     glm::dmat4 t(1.0), r(1.0), s(1.0);
     if (!node.translation.empty()) {
@@ -210,7 +210,7 @@ Result<std::vector<MeshInstance>> collect_instances(const tinygltf::Model& model
         }
         const tinygltf::Node& node = model.nodes[index];
         const Result<glm::dmat4> local = local_transform(node, item.node);
-        if (!local) return Error{local.error()};
+        if (!local) return local;
         const glm::dmat4 world = item.parent * *local;
         if (node.mesh >= 0) {
             if (static_cast<std::size_t>(node.mesh) >= model.meshes.size()) {
@@ -349,7 +349,7 @@ Result<PrimitiveData> read_primitive(const tinygltf::Model& model, int mesh, std
     int tex_coord = -1;
     if (primitive.material >= 0) {
         const Result<int> checked = check_material(model, primitive.material);
-        if (!checked) return Error{checked.error()};
+        if (!checked) return checked;
         tex_coord = *checked;
     }
     out.colour = base_colour(model, primitive.material);
@@ -480,7 +480,7 @@ Result<GltfModel> load_model(const std::string& path, std::size_t max_triangles)
     }
     // The file is read here, bounded, and checked before tinygltf sees it.
     Result<std::vector<unsigned char>> bytes = read_file_bytes(path, limits::kMaxModelBytes, true);
-    if (!bytes) return Error{bytes.error()};
+    if (!bytes) return bytes;
     if (bytes->empty()) {
         return Error{"is not a valid glTF 2.0 file: the file is empty"};
     }
@@ -488,11 +488,11 @@ Result<GltfModel> load_model(const std::string& path, std::size_t max_triangles)
     long long bin_size = -1;
     if (binary) {
         Result<GlbChunks> chunks = split_glb(*bytes);
-        if (!chunks) return Error{chunks.error()};
+        if (!chunks) return chunks;
         json_text = chunks->json;
         if (chunks->has_bin) bin_size = static_cast<long long>(chunks->bin_size);
     }
-    if (Result<void> shape = check_json_shape(json_text); !shape) return Error{shape.error()};
+    if (Result<void> shape = check_json_shape(json_text); !shape) return shape;
 
     std::error_code ec;
     std::string folder =
@@ -501,7 +501,7 @@ Result<GltfModel> load_model(const std::string& path, std::size_t max_triangles)
     while (folder.size() > 1 && folder.back() == '/') folder.pop_back();
     if (folder == "/") folder.clear();  // a model at the root: everything is below it
     if (Result<void> checked = check_gltf_document(json_text, binary, bin_size, folder); !checked)
-        return Error{checked.error()};
+        return checked;
 
     tinygltf::TinyGLTF loader;
     KeptImages kept;
@@ -526,7 +526,7 @@ Result<GltfModel> load_model(const std::string& path, std::size_t max_triangles)
         return Error{"requires the unsupported glTF extension " + quote(model.extensionsRequired.front())};
     }
     const Result<std::vector<MeshInstance>> instances = collect_instances(model);
-    if (!instances) return Error{instances.error()};
+    if (!instances) return instances;
 
     // Check every primitive and count triangles before reading any.
     std::vector<std::pair<PrimitiveData, MeshInstance>> work;
@@ -535,7 +535,7 @@ Result<GltfModel> load_model(const std::string& path, std::size_t max_triangles)
         const auto& primitives = model.meshes[static_cast<std::size_t>(instance.mesh)].primitives;
         for (std::size_t p = 0; p < primitives.size(); ++p) {
             Result<PrimitiveData> data = read_primitive(model, instance.mesh, p);
-            if (!data) return Error{data.error()};
+            if (!data) return data;
             triangles += data->triangles;
             if (triangles > max_triangles) {
                 return Error{"has more than " + std::to_string(max_triangles) + " triangles"};
@@ -547,7 +547,7 @@ Result<GltfModel> load_model(const std::string& path, std::size_t max_triangles)
     out.triangles.reserve(triangles);
     for (const auto& [data, instance] : work) {
         if (Result<void> emitted = emit_triangles(data, instance, out.triangles); !emitted)
-            return Error{emitted.error()};
+            return emitted;
     }
     if (out.triangles.empty()) {
         return Error{"has no triangles"};
@@ -555,7 +555,7 @@ Result<GltfModel> load_model(const std::string& path, std::size_t max_triangles)
     if (Result<void> built = build_materials(model, kept, folder, out.triangles, out.materials, out.textures,
                                              out.texels);
         !built) {
-        return Error{built.error()};
+        return built;
     }
     return out;
 }
@@ -575,7 +575,7 @@ Result<GltfModel> load_gltf_model(const std::string& path, std::size_t max_trian
 
 Result<std::vector<ModelTriangle>> load_gltf_triangles(const std::string& path, std::size_t max_triangles) {
     Result<GltfModel> model = load_gltf_model(path, max_triangles);
-    if (!model) return Error{model.error()};
+    if (!model) return model;
     return std::move(model->triangles);
 }
 

@@ -112,7 +112,7 @@ Result<void> check_readable_file(const std::string& path, std::size_t max_bytes,
 Result<std::vector<unsigned char>> read_file_bytes(const std::string& path, std::size_t max_bytes,
                                                   bool regular_only) {
     if (Result<void> readable = check_readable_file(path, max_bytes, regular_only); !readable)
-        return Error{readable.error()};
+        return readable;
     // O_NONBLOCK: opening a FIFO for reading otherwise waits for a writer,
     // forever if none comes; reads then wait in poll() with a timeout.
     Fd file{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};

@@ -164,7 +164,7 @@ Result<void> write_output_files(const std::vector<OutputBytes>& files) {
     std::vector<Plan> plans;
     for (const OutputBytes& f : files) {
         Result<Plan> plan = plan_output(f.path);
-        if (!plan) return Error{plan.error()};
+        if (!plan) return plan;
         plans.push_back(std::move(*plan));
     }
     // Regular files first, into temporary files; then devices and FIFOs;

@@ -8,6 +8,7 @@
 
 #include <cassert>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <variant>
 
@@ -19,10 +20,17 @@ struct Error {
 };
 
 template <class T>
+class Result;
+
+template <class T>
 class [[nodiscard]] Result {
 public:
     Result(T value) : state_(std::in_place_index<0>, std::move(value)) {}  // NOLINT: implicit on purpose
     Result(Error error) : state_(std::in_place_index<1>, std::move(error.message)) {}  // NOLINT
+    // A failed result of another type passes its error on: `if (!r) return r;`.
+    template <class U>
+        requires(!std::is_same_v<U, T>)
+    Result(const Result<U>& failed) : Result(Error{failed.error()}) {}  // NOLINT: implicit on purpose
 
     bool has_value() const { return state_.index() == 0; }
     explicit operator bool() const { return has_value(); }
@@ -48,6 +56,9 @@ class [[nodiscard]] Result<void> {
 public:
     Result() = default;
     Result(Error error) : error_(std::move(error.message)), failed_(true) {}  // NOLINT
+    // A failed result of another type passes its error on: `if (!r) return r;`.
+    template <class U>
+    Result(const Result<U>& failed) : Result(Error{failed.error()}) {}  // NOLINT: implicit on purpose
 
     bool has_value() const { return !failed_; }
     explicit operator bool() const { return has_value(); }

@@ -177,7 +177,7 @@ struct Measurer {
     // size, with the reference depth: ids and colour PSNR, mean over poses.
     void compare_with_tracer() {
         std::vector<trace::Scene> scenes;
-        for (const layout::Layout& l : plan.layouts) scenes.push_back(trace::prepare_scene(l));
+        for (const layout::Layout& l : plan.layouts) scenes.push_back(trace::prepare_scene(l).value());
         std::map<std::tuple<int, size_t, int, int>, image::Image> traced;
         const double n = static_cast<double>(poses.size());
         for (size_t p = 0; p < poses.size(); ++p)
@@ -189,7 +189,7 @@ struct Measurer {
                     trace::TraceDesc t = trace_desc_for(f);
                     t.max_depth = options.reference_depth;
                     t.samples = options.reference_samples;
-                    traced[key] = trace::trace_frame(scenes[r.config.layout_variant], t);
+                    traced[key] = trace::trace_frame(scenes[r.config.layout_variant], t).value();
                 }
                 const image::Image& t = traced[key];
                 Result<render::RenderedFrame> raster = renderer_of(r.config).render(f);

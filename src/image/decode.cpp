@@ -58,7 +58,7 @@ Result<ImageSize> image_size(const unsigned char* bytes, std::size_t size, int m
 
 Result<Pixels> decode_image(const unsigned char* bytes, std::size_t size, int max_side) {
     const Result<ImageSize> header = image_size(bytes, size, max_side);
-    if (!header) return Error{header.error()};
+    if (!header) return header;
     // stbi_load reduces 16-bit PNG channels to 8 bits and expands grey, grey
     // with alpha and RGB to RGBA (alpha 255).
     Result<Pixels> pixels = stb_decode(bytes, size, 4);

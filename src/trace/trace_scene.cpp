@@ -1,7 +1,6 @@
 #include "trace/trace_scene.hpp"
 
 #include <cmath>
-#include <stdexcept>
 #include <string>
 #include <variant>
 
@@ -44,10 +43,10 @@ bool cuts_hole(const AxisRect& face, const math::PortalRect& rect) {
 
 namespace {
 
-void add_prop(SceneRoom& room, const layout::Prop& prop) {
+Result<void> add_prop(SceneRoom& room, const layout::Prop& prop) {
     if (const auto* box = std::get_if<layout::BoxProp>(&prop)) {
         room.boxes.push_back({box->min, box->max, box->color});
-        return;
+        return {};
     }
     const auto& model = std::get<layout::GltfProp>(prop);
     // The model's materials follow the room's earlier ones.
@@ -55,7 +54,7 @@ void add_prop(SceneRoom& room, const layout::Prop& prop) {
     const int texture_count = static_cast<int>(model.textures.size());
     for (const assets::Material& m : model.materials) {
         if (m.texture < -1 || m.texture >= texture_count)
-            throw std::invalid_argument("model '" + model.path + "': a material names no texture of the model");
+            return Error{"model '" + model.path + "': a material names no texture of the model"};
         PropMaterial material;
         material.alpha = m.base_color.a;
         if (m.texture >= 0) material.texture = model.textures[m.texture];
@@ -67,7 +66,7 @@ void add_prop(SceneRoom& room, const layout::Prop& prop) {
     const int material_count = static_cast<int>(model.materials.size());
     for (const assets::ModelTriangle& t : model.triangles) {
         if (t.material < -1 || t.material >= material_count)
-            throw std::invalid_argument("model '" + model.path + "': a triangle names no material of the model");
+            return Error{"model '" + model.path + "': a triangle names no material of the model"};
         PropTriangle placed;
         for (int k = 0; k < 3; ++k) {
             placed.position[k] = layout::place_model_point(model, t.position[k]);
@@ -80,11 +79,12 @@ void add_prop(SceneRoom& room, const layout::Prop& prop) {
         placed.material = t.material >= 0 ? first_material + t.material : -1;
         room.triangles.push_back(placed);
     }
+    return {};
 }
 
 }  // namespace
 
-Scene prepare_scene(const layout::Layout& layout) {
+Result<Scene> prepare_scene(const layout::Layout& layout) {
     Scene scene;
     const int room_count = static_cast<int>(layout.rooms.size());
     const int portal_count = static_cast<int>(layout.portals.size());
@@ -97,7 +97,8 @@ Scene prepare_scene(const layout::Layout& layout) {
             r.faces[f].texture = room.face_texture[f];
             r.faces[f].texture_size = room.texture_size;
         }
-        for (const layout::Prop& prop : room.props) add_prop(r, prop);
+        for (const layout::Prop& prop : room.props)
+            if (Result<void> added = add_prop(r, prop); !added) return added;
         r.bvh = build_bvh(r.triangles);
         if (r.boxes.size() > static_cast<std::size_t>(kBvhLeafSize)) r.box_bvh = build_box_bvh(r.boxes);
         r.checker = room.checker;
@@ -107,7 +108,7 @@ Scene prepare_scene(const layout::Layout& layout) {
         const layout::Portal& p = layout.portals[i];
         const bool mirror = p.kind == layout::PortalKind::Mirror;
         if (p.room < 0 || p.room >= room_count || (!mirror && (p.target < 0 || p.target >= portal_count)))
-            throw std::invalid_argument("portal '" + p.id + "' has no valid room or target");
+            return Error{"portal '" + p.id + "' has no valid room or target"};
         ScenePortal sp;
         sp.rect = p.rect;
         sp.right = math::portal_right(p.rect);

@@ -15,6 +15,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "base/result.hpp"
 #include "layout/layout.hpp"
 #include "math/conventions.hpp"
 #include "math/portal.hpp"
@@ -149,7 +150,7 @@ bool cuts_hole(const AxisRect& face, const math::PortalRect& rect);
 // Builds the tracer's scene. The layout must be valid (as the loader returns
 // it); portal rooms out of range, targets out of range for a door or a
 // window (a mirror's target is not read), and a model's material or texture
-// indices out of range throw std::invalid_argument.
-Scene prepare_scene(const layout::Layout& layout);
+// indices out of range are an error naming the portal or model.
+Result<Scene> prepare_scene(const layout::Layout& layout);
 
 }  // namespace impossible::trace

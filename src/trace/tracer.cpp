@@ -5,7 +5,6 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 #include <string>
 #include <system_error>
 #include <thread>
@@ -281,14 +280,14 @@ PixelRay pixel_ray(const TraceDesc& desc, int eye, int i, int j) {
     return eye_pixel_ray(desc, frustum_of(desc), math::eyes_of(desc.head, desc.ipd)[eye], i, j);
 }
 
-image::Image trace_frame(const Scene& scene, const TraceDesc& desc) {
+Result<image::Image> trace_frame(const Scene& scene, const TraceDesc& desc) {
     if (desc.room < 0 || desc.room >= static_cast<int>(scene.rooms.size()))
-        throw std::invalid_argument("trace: room index " + std::to_string(desc.room) + " is out of range");
+        return Error{"trace: room index " + std::to_string(desc.room) + " is out of range"};
     if (desc.eye_width <= 0 || desc.eye_height <= 0 || desc.eye_width > 1 << 15 || desc.eye_height > 1 << 15)
-        throw std::invalid_argument("trace: bad eye image size");
-    if (desc.max_depth < 0) throw std::invalid_argument("trace: max_depth is negative");
+        return Error{"trace: bad eye image size"};
+    if (desc.max_depth < 0) return Error{"trace: max_depth is negative"};
     if (sample_pattern(desc.samples).empty())
-        throw std::invalid_argument("trace: no sample pattern for " + std::to_string(desc.samples) + " samples");
+        return Error{"trace: no sample pattern for " + std::to_string(desc.samples) + " samples"};
 
     image::Image image;
     image.width = 2 * desc.eye_width;
@@ -329,8 +328,10 @@ image::Image trace_frame(const Scene& scene, const TraceDesc& desc) {
     return image;
 }
 
-image::Image trace_frame(const layout::Layout& layout, const TraceDesc& desc) {
-    return trace_frame(prepare_scene(layout), desc);
+Result<image::Image> trace_frame(const layout::Layout& layout, const TraceDesc& desc) {
+    const Result<Scene> scene = prepare_scene(layout);
+    if (!scene) return scene;
+    return trace_frame(*scene, desc);
 }
 
 }  // namespace impossible::trace

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "base/result.hpp"
 #include "layout/layout.hpp"
 #include "image/image.hpp"
 #include "math/pose.hpp"
@@ -67,9 +68,10 @@ struct PixelRay {
 PixelRay pixel_ray(const TraceDesc& desc, int eye, int i, int j);
 
 // Traces every pixel of both eyes. Rows are split across threads; the image
-// does not depend on the thread count. Throws std::invalid_argument for a bad
-// room index, size, negative depth or a sample count with no pattern.
-image::Image trace_frame(const Scene& scene, const TraceDesc& desc);
-image::Image trace_frame(const layout::Layout& layout, const TraceDesc& desc);
+// does not depend on the thread count. A bad room index, size, negative
+// depth or a sample count with no pattern is an error (docs/choices.md,
+// "Errors and results in the code"), as is a layout prepare_scene refuses.
+Result<image::Image> trace_frame(const Scene& scene, const TraceDesc& desc);
+Result<image::Image> trace_frame(const layout::Layout& layout, const TraceDesc& desc);
 
 }  // namespace impossible::trace

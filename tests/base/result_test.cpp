@@ -42,5 +42,30 @@ TEST(Result, VoidResultsAndMoveOnlyValues) {
     EXPECT_EQ(text->size(), 4u);
 }
 
+// A failed step passes its error on to a caller of another result type.
+Result<std::string> describe_half(int n) {
+    const Result<int> h = half(n);
+    if (!h) return h;
+    return std::to_string(*h);
+}
+
+Result<void> require_even(int n) {
+    const Result<int> h = half(n);
+    if (!h) return h;
+    return {};
+}
+
+TEST(Result, AnErrorConvertsToAResultOfAnotherType) {
+    EXPECT_EQ(*describe_half(8), "4");
+    const Result<std::string> bad = describe_half(7);
+    ASSERT_FALSE(bad);
+    EXPECT_EQ(bad.error(), "7 is odd");
+    EXPECT_TRUE(require_even(4));
+    EXPECT_EQ(require_even(5).error(), "5 is odd");
+    const Result<int> from_void = Result<int>(check_even(3));
+    ASSERT_FALSE(from_void);
+    EXPECT_EQ(from_void.error(), "odd");
+}
+
 }  // namespace
 }  // namespace impossible

@@ -152,7 +152,7 @@ TEST(Multisample, IdsAgreeWithTheTracersCentreRays) {
         ASSERT_TRUE(r.has_value()) << r.error();
         const Result<render::RenderedFrame> ms = r->render(frame);
         ASSERT_TRUE(ms.has_value()) << ms.error();
-        const image::Image centre = trace::trace_frame(l, app::trace_desc_for(frame));  // ids: centre rays
+        const image::Image centre = trace::trace_frame(l, app::trace_desc_for(frame)).value();  // ids: centre rays
         const image::Comparison cmp = image::compare_pictures(ms->image, centre);
         std::printf("  %-56s ids %ld (%.4f%%)\n", label.c_str(), cmp.id_mismatches, cmp.id_mismatch_percent);
         EXPECT_LE(cmp.id_mismatch_percent, 0.01) << label;
@@ -163,7 +163,7 @@ TEST(Multisample, IdsAgreeWithTheTracersCentreRays) {
 // Neighbours that differ here lie on either side of a portal's edge (or of a
 // room's silhouette), even where a portal leads back into the same room.
 std::vector<int> portal_keys(const layout::Layout& l, const trace::TraceDesc& desc) {
-    const trace::Scene scene = trace::prepare_scene(l);
+    const trace::Scene scene = trace::prepare_scene(l).value();
     std::vector<int> keys(static_cast<size_t>(2 * desc.eye_width) * desc.eye_height);
     for (int j = 0; j < desc.eye_height; ++j)
         for (int eye = 0; eye < 2; ++eye)
@@ -202,7 +202,7 @@ TEST(Multisample, PortalEdgesMatchTheSupersampledTracer) {
 
         trace::TraceDesc t = app::trace_desc_for(frame);
         const std::vector<int> keys = portal_keys(l, t);
-        const image::Image super = trace::trace_frame(l, t);
+        const image::Image super = trace::trace_frame(l, t).value();
         const EdgeError edge = edge_error(ms->image, super, keys, 48);
         const EdgeError aliased = edge_error(single->image, super, keys, 48);
         std::printf("  %-56s %4ld edge pixels: 4x mean %5.2f worst %3d over %3ld | 1x mean %5.2f worst %3d over %3ld\n",

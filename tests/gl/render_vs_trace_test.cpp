@@ -32,7 +32,7 @@ TEST_P(RenderVsTrace, IdsAgreeOnEveryLayoutAndPose) {
         f.clip = GetParam();
         const image::Image raster = testing::render_once(gl::Backend::Egl, l, f);
 
-        const image::Image traced = trace::trace_frame(l, app::trace_desc_for(f));
+        const image::Image traced = trace::trace_frame(l, app::trace_desc_for(f)).value();
 
         ASSERT_FALSE(image::incomparable(raster, traced)) << c.layout;
         const image::Comparison cmp = image::compare_pictures(raster, traced);

@@ -164,7 +164,7 @@ TEST(BoxBvh, ACrowdedRoomTracesTheSameWithAndWithoutTheTree) {
     l.portals.push_back(test::make_mirror("mirror", 0, {0.0, 1.5, -4.0}, {0.0, 0.0, 1.0}, 5.0, 2.6));
     l.start.room = 0;
 
-    const Scene with = prepare_scene(l);
+    const Scene with = prepare_scene(l).value();
     ASSERT_FALSE(with.rooms[0].box_bvh.nodes.empty());
     Scene without = with;
     without.rooms[0].box_bvh = {};
@@ -173,7 +173,7 @@ TEST(BoxBvh, ACrowdedRoomTracesTheSameWithAndWithoutTheTree) {
     desc.head.pitch_deg = -25.0;
     desc.eye_width = 64;
     desc.eye_height = 36;
-    const image::Image a = trace_frame(with, desc), b = trace_frame(without, desc);
+    const image::Image a = trace_frame(with, desc).value(), b = trace_frame(without, desc).value();
     EXPECT_EQ(a.rgb, b.rgb);
     EXPECT_EQ(a.ids, b.ids);
 }

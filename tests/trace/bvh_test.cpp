@@ -440,14 +440,14 @@ TEST(Bvh, LargeModelTracesTheSameWithAndWithoutTheTree) {
     l.portals.push_back(test::make_mirror("mirror", 0, {0.0, 1.5, -4.0}, {0.0, 0.0, 1.0}, 5.0, 2.6));
     l.start.room = 0;
 
-    const Scene with = prepare_scene(l);
+    const Scene with = prepare_scene(l).value();
     Scene without = with;
     without.rooms[0].bvh = {};
     TraceDesc desc;
     desc.head.position = {0.2, 1.6, 1.5};
     desc.eye_width = 24;
     desc.eye_height = 14;
-    const image::Image a = trace_frame(with, desc), b = trace_frame(without, desc);
+    const image::Image a = trace_frame(with, desc).value(), b = trace_frame(without, desc).value();
     EXPECT_EQ(a.rgb, b.rgb);
     EXPECT_EQ(a.ids, b.ids);
 

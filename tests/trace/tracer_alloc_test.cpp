@@ -76,7 +76,7 @@ TEST(TracerAlloc, TraceRayAllocatesNothing) {
     test::add_pair(l, test::make_portal("d", 0, {0.0, 1.0, 3.0}, {0, 0, -1}),
                    test::make_portal("d2", 1, {13.0, 1.0, 3.0}, {0, 0, -1}));
     l.start.room = 0;
-    const Scene scene = prepare_scene(l);
+    const Scene scene = prepare_scene(l).value();
     ASSERT_FALSE(scene.rooms[0].bvh.nodes.empty());
 
     const dvec3 eye(0.5, 1.5, 1.0);

@@ -44,7 +44,7 @@ TEST(TracerClosedRoom, EveryRayFromInsideHitsSomething) {
                  make_portal("peer", 1, b + dvec3(0.5, 1.4, 3.0), {0, 0, -1}, size, size));
         add_pair(l, make_portal("free", 0, a + dvec3(0.5, 1.0, 0.5), {1, 0, 0}, 0.6, 1.8),
                  make_portal("free_back", 1, b + dvec3(-1.0, 1.0, 0.0), {0, 0, 1}, 0.6, 1.8));
-        const Scene scene = prepare_scene(l);
+        const Scene scene = prepare_scene(l).value();
         // Eyes in front of both of the cell's portals.
         const dvec3 eye = a + dvec3(-0.9 + 1.3 * u(rng), 0.2 + 2.1 * u(rng), -0.99 + 1.4 * u(rng));
         for (int k = 0; k < 3000; ++k) {

@@ -25,15 +25,15 @@ TraceDesc start_view(const layout::Layout& l) {
 
 TEST(TracerFrame, ThreadCountDoesNotChangeTheImage) {
     const layout::Layout l = load_default();
-    const Scene scene = prepare_scene(l);
+    const Scene scene = prepare_scene(l).value();
     TraceDesc desc = start_view(l);
     desc.head.pitch_deg = -10.0;
     desc.head.roll_deg = 5.0;
     desc.threads = 1;
-    const image::Image one = trace_frame(scene, desc);
+    const image::Image one = trace_frame(scene, desc).value();
     for (int threads : {2, 3, 7}) {
         desc.threads = threads;
-        const image::Image many = trace_frame(scene, desc);
+        const image::Image many = trace_frame(scene, desc).value();
         EXPECT_EQ(many.rgb, one.rgb) << threads;
         EXPECT_EQ(many.ids, one.ids) << threads;
     }
@@ -41,7 +41,7 @@ TEST(TracerFrame, ThreadCountDoesNotChangeTheImage) {
 
 TEST(TracerFrame, DefaultLayoutShowsTheHallAndTheAnnexThroughTheDoor) {
     const layout::Layout l = load_default();
-    const image::Image image = trace_frame(l, start_view(l));
+    const image::Image image = trace_frame(l, start_view(l)).value();
     const std::set<std::uint8_t> ids(image.ids.begin(), image.ids.end());
     EXPECT_EQ(ids, (std::set<std::uint8_t>{1, 2}));
     // The door (x in [-0.5, 0.5], y in [0, 2.2] at z = 0) is ahead and a bit
@@ -73,7 +73,7 @@ TEST(TracerFrame, HoleRuleAgreesWithTheLoader) {
     const layout::LoadResult loaded = layout::load_layout_text(text, "<test>", ".");
     ASSERT_TRUE(loaded.errors.empty()) << loaded.errors.front().str();
     const layout::Layout& l = *loaded.layout;
-    const Scene scene = prepare_scene(l);
+    const Scene scene = prepare_scene(l).value();
     for (size_t p = 0; p < l.portals.size(); ++p) {
         int traced_face = -1;
         const SceneRoom& room = scene.rooms[l.portals[p].room];

@@ -103,7 +103,7 @@ TEST(TracerMaterial, TexturedQuadShowsFactorTimesColor0TimesTexelAtEveryPixel) {
     desc.head.position = {0.0, 1.5, 1.0};
     desc.eye_width = 33;
     desc.eye_height = 33;
-    const image::Image image = trace_frame(l, desc);
+    const image::Image image = trace_frame(l, desc).value();
     int checked = 0;
     int seen[2][2] = {{0, 0}, {0, 0}};
     for (int eye = 0; eye < 2; ++eye) {
@@ -144,7 +144,7 @@ TEST(TracerMaterial, Color0AndUvAreBlendedWithTheHitsBarycentrics) {
     t.material = 0;
     model.triangles.push_back(t);
     l.rooms[0].props.push_back(model);
-    const Scene scene = prepare_scene(l);
+    const Scene scene = prepare_scene(l).value();
 
     // Weights 1/2, 1/4, 1/4 (vertex 0, 1, 2): uv (1/2, 1/2), texel (1, 1).
     const TraceHit a = trace_ray(scene, {0.25, 1.25, 0.5}, {0, 0, -1}, 0, 8);
@@ -177,7 +177,7 @@ TEST(TracerMaterial, LinearMagFilterBlendsNeighbours) {
     add_quad(model, 0);
     l.rooms[0].props.push_back(model);
     // The quad's centre (s, t) = (1/2, 1/2): the four texels equally.
-    const TraceHit hit = trace_ray(prepare_scene(l), {0.0, 1.5, 0.5}, {0, 0, -1}, 0, 8);
+    const TraceHit hit = trace_ray(prepare_scene(l).value(), {0.0, 1.5, 0.5}, {0, 0, -1}, 0, 8);
     const dvec4 mean = 0.25 * (quadrant(0, 0) + quadrant(1, 0) + quadrant(0, 1) + quadrant(1, 1));
     const dvec3 expected = shade_by_hand(dvec3(mean), {0, 0, 1}, false);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(hit.color[c], expected[c], kTol);
@@ -201,7 +201,7 @@ layout::Layout masked_quad(std::uint8_t alpha, assets::AlphaMode mode, double ba
 
 TEST(TracerMaterial, MaskedHoleShowsTheWallBehind) {
     const layout::Layout l = masked_quad(0, assets::AlphaMode::Mask);
-    const Scene scene = prepare_scene(l);
+    const Scene scene = prepare_scene(l).value();
     // Top-right quadrant: through the hole to the -z wall at z = -2.
     const TraceHit hole = trace_ray(scene, {0.5, 2.0, 1.0}, {0, 0, -1}, 0, 8);
     EXPECT_EQ(hole.id, 1);
@@ -214,7 +214,7 @@ TEST(TracerMaterial, MaskedHoleShowsTheWallBehind) {
         EXPECT_NEAR(solid.point.z, -1.0, kTol);
     }
     // Opaque: alpha is not read; the hole is quad.
-    const TraceHit opaque = trace_ray(prepare_scene(masked_quad(0, assets::AlphaMode::Opaque)), {0.5, 2.0, 1.0},
+    const TraceHit opaque = trace_ray(prepare_scene(masked_quad(0, assets::AlphaMode::Opaque)).value(), {0.5, 2.0, 1.0},
                                       {0, 0, -1}, 0, 8);
     EXPECT_NEAR(opaque.point.z, -1.0, kTol);
 }
@@ -223,21 +223,21 @@ TEST(TracerMaterial, MaskCutoffComparesTheWholeAlpha) {
     // Texel alpha 128/255 ≈ 0.502: kept at cutoff 0.5, a hole at cutoff 0.51
     // or when the factor's alpha 0.9 brings it to 0.452.
     const dvec3 origin(0.5, 2.0, 1.0), dir(0, 0, -1);
-    EXPECT_NEAR(trace_ray(prepare_scene(masked_quad(128, assets::AlphaMode::Mask)), origin, dir, 0, 8).point.z, -1.0,
+    EXPECT_NEAR(trace_ray(prepare_scene(masked_quad(128, assets::AlphaMode::Mask)).value(), origin, dir, 0, 8).point.z, -1.0,
                 kTol);
-    EXPECT_NEAR(trace_ray(prepare_scene(masked_quad(128, assets::AlphaMode::Mask, 1.0, 0.51)), origin, dir, 0, 8)
+    EXPECT_NEAR(trace_ray(prepare_scene(masked_quad(128, assets::AlphaMode::Mask, 1.0, 0.51)).value(), origin, dir, 0, 8)
                     .point.z,
                 -2.0, kTol);
     EXPECT_NEAR(
-        trace_ray(prepare_scene(masked_quad(128, assets::AlphaMode::Mask, 0.9)), origin, dir, 0, 8).point.z, -2.0,
+        trace_ray(prepare_scene(masked_quad(128, assets::AlphaMode::Mask, 0.9)).value(), origin, dir, 0, 8).point.z, -2.0,
         kTol);
     // Exactly at the cutoff is kept (alpha < cutoff is a hole): 0.5 · 1 · 1.
     layout::Layout half = masked_quad(255, assets::AlphaMode::Mask, 0.5, 0.5);
-    EXPECT_NEAR(trace_ray(prepare_scene(half), origin, dir, 0, 8).point.z, -1.0, kTol);
+    EXPECT_NEAR(trace_ray(prepare_scene(half).value(), origin, dir, 0, 8).point.z, -1.0, kTol);
 }
 
 TEST(TracerMaterial, MaskedFramesAreTheSameWithAndWithoutTheTree) {
-    const Scene with = prepare_scene(masked_quad(0, assets::AlphaMode::Mask));
+    const Scene with = prepare_scene(masked_quad(0, assets::AlphaMode::Mask)).value();
     ASSERT_FALSE(with.rooms[0].bvh.nodes.empty());
     Scene without = with;
     without.rooms[0].bvh = {};
@@ -245,7 +245,7 @@ TEST(TracerMaterial, MaskedFramesAreTheSameWithAndWithoutTheTree) {
     desc.head.position = {0.1, 1.5, 1.0};
     desc.eye_width = 40;
     desc.eye_height = 30;
-    const image::Image a = trace_frame(with, desc), b = trace_frame(without, desc);
+    const image::Image a = trace_frame(with, desc).value(), b = trace_frame(without, desc).value();
     EXPECT_EQ(a.rgb, b.rgb);
     EXPECT_EQ(a.ids, b.ids);
     // The hole shows the -z wall: its colour is in the frame, beside the quad's.
@@ -268,7 +268,7 @@ TraceHit from_behind(bool double_sided) {
     model.materials.push_back(material);
     add_quad(model, 0, dvec4(1.0), {0.0, -0.6, 0.8});
     l.rooms[0].props.push_back(model);
-    return trace_ray(prepare_scene(l), {0.2, 1.5, -1.5}, {0, 0, 1}, 0, 8);
+    return trace_ray(prepare_scene(l).value(), {0.2, 1.5, -1.5}, {0, 0, 1}, 0, 8);
 }
 
 TEST(TracerMaterial, DoubleSidedIsSeenFromBehindWithItsNormalReversed) {
@@ -292,7 +292,7 @@ TEST(TracerMaterial, DoubleSidedIsSeenFromBehindWithItsNormalReversed) {
     model.materials.push_back(material);
     add_quad(model, 0, dvec4(1.0), {0.0, -0.6, 0.8});
     l.rooms[0].props.push_back(model);
-    const TraceHit front = trace_ray(prepare_scene(l), {0.2, 1.5, 1.5}, {0, 0, -1}, 0, 8);
+    const TraceHit front = trace_ray(prepare_scene(l).value(), {0.2, 1.5, 1.5}, {0, 0, -1}, 0, 8);
     EXPECT_NEAR(front.point.z, -1.0, kTol);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(front.color[c], unlit[c], kTol);
 }
@@ -316,7 +316,7 @@ TEST(TracerMaterial, RoomFaceTexturesAreOrientedAsTheSpecSays) {
     room.checker = 1.0;
     room.texture_size = 2.0;
     for (auto& t : room.face_texture) t = quadrants();
-    const Scene scene = prepare_scene(l);
+    const Scene scene = prepare_scene(l).value();
     const dvec3 eye(2.0, 1.6, 2.0);
     // Texel centres lie at 1/4 and 3/4 of a 2 m tile: 0.5 and 1.5 m past a
     // multiple of 2 m (s and t counted from the image's top-left corner).
@@ -380,24 +380,26 @@ TEST(TracerMaterial, WhiteTexturesAndColor0ChangeNoByte) {
     desc.head.yaw_deg = 10.0;
     desc.eye_width = 48;
     desc.eye_height = 32;
-    const image::Image plain = trace_frame(build(false), desc), white = trace_frame(build(true), desc);
+    const image::Image plain = trace_frame(build(false), desc).value(), white = trace_frame(build(true), desc).value();
     EXPECT_EQ(plain.rgb, white.rgb);
     EXPECT_EQ(plain.ids, white.ids);
 }
 
-TEST(TracerMaterial, BadMaterialOrTextureIndicesThrow) {
+TEST(TracerMaterial, BadMaterialOrTextureIndicesAreErrors) {
     layout::Layout l = one_room();
     layout::GltfProp model;
     add_quad(model, -1);
     model.triangles[0].material = 0;  // no materials
     l.rooms[0].props.push_back(model);
-    EXPECT_THROW(prepare_scene(l), std::invalid_argument);
+    ASSERT_FALSE(prepare_scene(l));
+    EXPECT_NE(prepare_scene(l).error().find("a triangle names no material of the model"), std::string::npos);
     auto& prop = std::get<layout::GltfProp>(l.rooms[0].props[0]);
     prop.materials.emplace_back();
     prop.materials[0].texture = 0;  // no textures
-    EXPECT_THROW(prepare_scene(l), std::invalid_argument);
+    ASSERT_FALSE(prepare_scene(l));
+    EXPECT_NE(prepare_scene(l).error().find("a material names no texture of the model"), std::string::npos);
     prop.materials[0].texture = -1;
-    EXPECT_NO_THROW(prepare_scene(l));
+    EXPECT_TRUE(prepare_scene(l));
 }
 
 }  // namespace

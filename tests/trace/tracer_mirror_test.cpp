@@ -44,7 +44,7 @@ dvec3 reflect_point(dvec3 p) { return {p.x, p.y, -4.0 - p.z}; }
 dvec3 reflect_dir(dvec3 d) { return {d.x, d.y, -d.z}; }
 
 TEST(TracerMirror, TheSceneKeepsTheKindTheTintAndTheReflection) {
-    const Scene scene = prepare_scene(mirror_room({0.5, 0.8, 1.0}));
+    const Scene scene = prepare_scene(mirror_room({0.5, 0.8, 1.0})).value();
     ASSERT_EQ(scene.portals.size(), 1u);
     const ScenePortal& m = scene.portals[0];
     EXPECT_EQ(m.kind, layout::PortalKind::Mirror);
@@ -57,7 +57,7 @@ TEST(TracerMirror, TheSceneKeepsTheKindTheTintAndTheReflection) {
 
 TEST(TracerMirror, AMirrorShowsTheRoomReflected) {
     const layout::Layout l = mirror_room();
-    const Scene scene = prepare_scene(l);
+    const Scene scene = prepare_scene(l).value();
     // From (0.2, 1.4, 1) along (0.05, 0.05, -1) the mirror is met at t = 3,
     // (0.35, 1.55, -2). The virtual eye (0.2, 1.4, -5) looks along
     // (0.05, 0.05, 1) and meets the +z wall at t = 7: (0.55, 1.75, 2).
@@ -74,8 +74,8 @@ TEST(TracerMirror, AMirrorShowsTheRoomReflected) {
 }
 
 TEST(TracerMirror, EveryRayIntoTheMirrorSeesWhatItsReflectionSeesDirectly) {
-    const Scene mirrored = prepare_scene(mirror_room());
-    const Scene plain = prepare_scene(plain_room());
+    const Scene mirrored = prepare_scene(mirror_room()).value();
+    const Scene plain = prepare_scene(plain_room()).value();
     const dvec3 eye{0.3, 1.6, 0.7};
     int in_mirror = 0, beside = 0, on_box = 0;
     for (int i = 0; i <= 40; ++i) {
@@ -116,7 +116,7 @@ TEST(TracerMirror, WhatLiesBehindTheMirrorIsNotInIt) {
     // virtual eye (0, 1.5, -5): the mirror's plane clips it away.
     layout::Layout l = mirror_room();
     l.rooms[0].props.push_back(layout::BoxProp{{-0.3, 1.3, -3.0}, {0.3, 1.7, -2.5}, kRed});
-    const TraceHit hit = trace_ray(prepare_scene(l), {0, 1.5, 1}, {0, 0, -1}, 0, 8);
+    const TraceHit hit = trace_ray(prepare_scene(l).value(), {0, 1.5, 1}, {0, 0, -1}, 0, 8);
     EXPECT_EQ(hit.portals_passed, 1);
     expect_point(hit.origin, {0, 1.5, -5});
     expect_point(hit.point, {0, 1.5, 2});
@@ -125,15 +125,15 @@ TEST(TracerMirror, WhatLiesBehindTheMirrorIsNotInIt) {
 
 TEST(TracerMirror, TheTintMultipliesTheReflection) {
     const dvec3 tint{0.5, 0.8, 0.25};
-    const TraceHit clear = trace_ray(prepare_scene(mirror_room()), {0.2, 1.4, 1}, {0.05, 0.05, -1}, 0, 8);
-    const TraceHit tinted = trace_ray(prepare_scene(mirror_room(tint)), {0.2, 1.4, 1}, {0.05, 0.05, -1}, 0, 8);
+    const TraceHit clear = trace_ray(prepare_scene(mirror_room()).value(), {0.2, 1.4, 1}, {0.05, 0.05, -1}, 0, 8);
+    const TraceHit tinted = trace_ray(prepare_scene(mirror_room(tint)).value(), {0.2, 1.4, 1}, {0.05, 0.05, -1}, 0, 8);
     EXPECT_EQ(tinted.id, clear.id);
     EXPECT_EQ(tinted.point, clear.point);
     expect_point(tinted.color, tint * clear.color);
 }
 
 TEST(TracerMirror, AtTheDepthLimitAMirrorShowsTheFill) {
-    const Scene scene = prepare_scene(mirror_room({0.5, 0.8, 1.0}));
+    const Scene scene = prepare_scene(mirror_room({0.5, 0.8, 1.0})).value();
     const TraceHit limit = trace_ray(scene, {0.2, 1.4, 1}, {0.05, 0.05, -1}, 0, 0);
     EXPECT_EQ(limit.id, kIdDepthLimit);
     EXPECT_EQ(limit.room, 0);
@@ -156,7 +156,7 @@ layout::Layout facing_mirrors(dvec3 far_tint, dvec3 near_tint) {
 TEST(TracerMirror, FacingMirrorsMakeAnEndlessRow) {
     const dvec3 far_tint{0.9, 0.8, 0.7}, near_tint{0.95, 0.9, 0.85};
     const layout::Layout l = facing_mirrors(far_tint, near_tint);
-    const Scene scene = prepare_scene(l);
+    const Scene scene = prepare_scene(l).value();
     // Straight along -Z from the middle: every reflection meets the other
     // mirror. After k reflections the virtual eye is at z = (-1)^k · 4k and
     // looks at the far mirror when k is even, at the near one when it is odd.
@@ -190,8 +190,8 @@ TEST(TracerMirror, FacingMirrorsMakeAnEndlessRow) {
 }
 
 TEST(TracerMirror, AnEyeAtContactDistanceSeesOnlyTheReflection) {
-    const Scene mirrored = prepare_scene(mirror_room());
-    const Scene plain = prepare_scene(plain_room());
+    const Scene mirrored = prepare_scene(mirror_room()).value();
+    const Scene plain = prepare_scene(plain_room()).value();
     for (double gap : {1e-3, 1e-6}) {
         const TraceHit hit = trace_ray(mirrored, {0, 1.5, -2 + gap}, {0, 0, -1}, 0, 8);
         EXPECT_EQ(hit.id, 1) << gap;
@@ -205,7 +205,7 @@ TEST(TracerMirror, AnEyeAtContactDistanceSeesOnlyTheReflection) {
     desc.head.position = {0, 1.5, -1.999};
     desc.eye_width = 16;
     desc.eye_height = 9;
-    const image::Image image = trace_frame(mirrored, desc);
+    const image::Image image = trace_frame(mirrored, desc).value();
     EXPECT_EQ(test::count_id(image, 1), 32 * 9);
     for (int eye = 0; eye < 2; ++eye)
         for (int j = 0; j < desc.eye_height; ++j)
@@ -218,8 +218,8 @@ TEST(TracerMirror, AnEyeAtContactDistanceSeesOnlyTheReflection) {
 }
 
 TEST(TracerMirror, SeenFromBehindAMirrorIsNotThere) {
-    const Scene mirrored = prepare_scene(mirror_room());
-    const Scene plain = prepare_scene(plain_room());
+    const Scene mirrored = prepare_scene(mirror_room()).value();
+    const Scene plain = prepare_scene(plain_room()).value();
     // An eye behind the mirror's wall, outside the room, looking in through
     // the mirror's rectangle: (0.05, 1.6) at z = -2, then the +z wall at t = 5.
     const TraceHit hit = trace_ray(mirrored, {0, 1.5, -3}, {0.05, 0.1, 1}, 0, 8);
@@ -232,7 +232,7 @@ TEST(TracerMirror, SeenFromBehindAMirrorIsNotThere) {
     desc.head.yaw_deg = 180.0;  // looking along +Z
     desc.eye_width = 24;
     desc.eye_height = 16;
-    const image::Image with = trace_frame(mirrored, desc), without = trace_frame(plain, desc);
+    const image::Image with = trace_frame(mirrored, desc).value(), without = trace_frame(plain, desc).value();
     EXPECT_EQ(with.rgb, without.rgb);
     EXPECT_EQ(with.ids, without.ids);
 }
@@ -254,7 +254,7 @@ layout::Layout mirrors_and_doors(dvec3 tint_a, dvec3 tint_b) {
 TEST(TracerMirror, AMirrorSeenThroughADoor) {
     const dvec3 tint_b{0.5, 0.7, 0.9};
     const layout::Layout l = mirrors_and_doors({1, 1, 1}, tint_b);
-    const Scene scene = prepare_scene(l);
+    const Scene scene = prepare_scene(l).value();
     expect_point(dvec3(scene.portals[1].transfer * dvec4(0, 0, 0, 1)), {11, 0, -4});
     // From (1, 1.5, 0) along (0.08, 0, 1): door a at (1.16, 1.5, 2); the
     // virtual eye (12, 1.5, -4) meets mB at (12.48, 1.5, 2); reflected, the
@@ -277,7 +277,7 @@ TEST(TracerMirror, AMirrorSeenThroughADoor) {
 TEST(TracerMirror, ADoorSeenInAMirror) {
     const dvec3 tint_a{0.9, 0.8, 0.6}, tint_b{0.5, 0.7, 0.9};
     const layout::Layout l = mirrors_and_doors(tint_a, tint_b);
-    const Scene scene = prepare_scene(l);
+    const Scene scene = prepare_scene(l).value();
     // From (0.2, 1.5, 0) along (0.1, 0, -1): mA at (0.4, 1.5, -2). Reflected,
     // the eye (0.2, 1.5, -4) looks along (0.1, 0, 1) and meets door a at
     // (0.8, 1.5, 2); through it, the eye (11.2, 1.5, -8) meets mB at

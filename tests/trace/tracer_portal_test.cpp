@@ -34,7 +34,7 @@ layout::Layout coincident_pair() {
 
 TEST(TracerPortal, CoincidentPairShowsTheOtherRoomAndNothingMoves) {
     const layout::Layout l = coincident_pair();
-    const Scene scene = prepare_scene(l);
+    const Scene scene = prepare_scene(l).value();
     EXPECT_EQ(scene.portals[0].transfer, dmat4(1.0));
 
     const TraceHit through = trace_ray(scene, {0, 1.1, 1.5}, {0, 0, -1}, 0, 8);
@@ -71,7 +71,7 @@ layout::Layout rotated_pair() {
 }
 
 TEST(TracerPortal, HolesAreFoundInTheRightFaces) {
-    const Scene scene = prepare_scene(rotated_pair());
+    const Scene scene = prepare_scene(rotated_pair()).value();
     for (int f = 0; f < layout::kFaceCount; ++f) {
         const auto& a_holes = scene.rooms[0].faces[f].holes;
         const auto& b_holes = scene.rooms[1].faces[f].holes;
@@ -82,7 +82,7 @@ TEST(TracerPortal, HolesAreFoundInTheRightFaces) {
 
 TEST(TracerPortal, RotatedPairTurnsTheRayByNinetyDegrees) {
     const layout::Layout l = rotated_pair();
-    const Scene scene = prepare_scene(l);
+    const Scene scene = prepare_scene(l).value();
     // Eye (0, 1.5, 0) is 2 m in front of a; the virtual eye is 2 m behind b:
     // (10 - 2, 1.5, 0), looking along +X, and meets B's +x wall at x = 14.
     const TraceHit straight = trace_ray(scene, {0, 1.5, 0}, {0, 0, -1}, 0, 8);
@@ -106,7 +106,7 @@ TEST(TracerPortal, RotatedPairTurnsTheRayByNinetyDegrees) {
 
 TEST(TracerPortal, ARayThroughAHoleHitsThePortalAndOneBesideItHitsTheWall) {
     const layout::Layout l = rotated_pair();
-    const Scene scene = prepare_scene(l);
+    const Scene scene = prepare_scene(l).value();
     // The hole spans x in [-0.5, 0.5] at z = -2; from (0, 1.5, 0) the ray
     // (s, 0, -1) meets the wall at x = 2s.
     const TraceHit edge = trace_ray(scene, {0, 1.5, 0}, {0.25, 0, -1}, 0, 8);  // x = 0.5: the edge is the hole's
@@ -150,7 +150,7 @@ layout::Layout translated_pair() {
 
 
 TEST(TracerPortal, TranslatedPairMovesTheVirtualEye) {
-    const Scene scene = prepare_scene(translated_pair());
+    const Scene scene = prepare_scene(translated_pair()).value();
     expect_point(dvec3(scene.portals[0].transfer * dvec4(0, 0, 0, 1)), {1, 0, 1});
     expect_point(dmat3(scene.portals[0].transfer) * dvec3(0.3, 0.4, 0.5), {0.3, 0.4, 0.5});
     // Eye (0.2, 1.5, 1) → virtual eye (1.2, 1.5, 2); the ray meets B's -z wall at z = -3.
@@ -169,7 +169,7 @@ TEST(TracerPortal, TargetGeometryBehindThePlaneIsClippedAndInFrontIsSeen) {
     // A box straddling the plane on another line of sight (x = 0.7): its
     // entry face lies behind the plane, the rest are back faces.
     l.rooms[1].props.push_back(layout::BoxProp{{0.6, 1.3, -0.3}, {0.75, 1.7, 0.3}, kRed});
-    const Scene scene = prepare_scene(l);
+    const Scene scene = prepare_scene(l).value();
 
     const TraceHit hit = trace_ray(scene, {0, 1.5, 1}, {0, 0, -1}, 0, 8);
     EXPECT_EQ(hit.id, 2);
@@ -188,7 +188,7 @@ TEST(TracerPortal, TargetGeometryBehindThePlaneIsClippedAndInFrontIsSeen) {
 
 TEST(TracerPortal, AnEyeOneMillimetreInFrontSeesOnlyTheTarget) {
     const layout::Layout l = translated_pair();
-    const Scene scene = prepare_scene(l);
+    const Scene scene = prepare_scene(l).value();
     const TraceHit hit = trace_ray(scene, {0, 1.5, -0.999}, {0, 0, -1}, 0, 8);
     EXPECT_EQ(hit.id, 2);
     expect_point(hit.origin, {1, 1.5, 0.001}, 1e-12);
@@ -199,7 +199,7 @@ TEST(TracerPortal, AnEyeOneMillimetreInFrontSeesOnlyTheTarget) {
     desc.head.position = {0, 1.5, -0.999};
     desc.eye_width = 16;
     desc.eye_height = 9;
-    const image::Image image = trace_frame(scene, desc);
+    const image::Image image = trace_frame(scene, desc).value();
     EXPECT_EQ(test::count_id(image, 2), 32 * 9);
 }
 
@@ -208,7 +208,7 @@ TEST(TracerPortal, AnEyeInsideTheBoxSeesTheTargetOnTheInnerFacesAndItsRoomBehind
     // A green box in B just in front of b's plane, between the virtual eye and
     // the mapped back face.
     l.rooms[1].props.push_back(layout::BoxProp{{0.8, 1.3, -0.2}, {1.2, 1.7, -0.15}, kGreen});
-    const Scene scene = prepare_scene(l);
+    const Scene scene = prepare_scene(l).value();
     const dvec3 eye{0, 1.5, -1.1};  // 0.1 m behind a's plane, in its column
 
     // Along -Z: a's back face at z = -1.25 → virtual eye (1, 1.5, -0.1), which
@@ -237,13 +237,13 @@ TEST(TracerPortal, AnEyeInsideTheBoxSeesTheTargetOnTheInnerFacesAndItsRoomBehind
     desc.head.position = eye;
     desc.eye_width = 16;
     desc.eye_height = 9;
-    EXPECT_EQ(test::count_id(trace_frame(scene, desc), 2), 32 * 9);
+    EXPECT_EQ(test::count_id(trace_frame(scene, desc).value(), 2), 32 * 9);
     desc.head.yaw_deg = 180.0;  // turned round: all A
-    EXPECT_EQ(test::count_id(trace_frame(scene, desc), 1), 32 * 9);
+    EXPECT_EQ(test::count_id(trace_frame(scene, desc).value(), 1), 32 * 9);
 }
 
 TEST(TracerPortal, BesideOrBehindAFreeStandingPortalShowsNothingOfIt) {
-    const Scene scene = prepare_scene(translated_pair());
+    const Scene scene = prepare_scene(translated_pair()).value();
     // Beside, level with the box (z = -1.1), looking across it along -X: the
     // far side face faces the ray but the eye is not in the column.
     const TraceHit across = trace_ray(scene, {2, 1.5, -1.1}, {-1, 0, 0}, 0, 8);
@@ -259,10 +259,10 @@ TEST(TracerPortal, BesideOrBehindAFreeStandingPortalShowsNothingOfIt) {
     desc.eye_height = 9;
     desc.head.position = {2, 1.5, -1.1};
     desc.head.yaw_deg = 90.0;  // looking along -X
-    EXPECT_EQ(test::count_id(trace_frame(scene, desc), 1), 32 * 9);
+    EXPECT_EQ(test::count_id(trace_frame(scene, desc).value(), 1), 32 * 9);
     desc.head.position = {0, 1.5, -2};
     desc.head.yaw_deg = 180.0;  // looking along +Z
-    EXPECT_EQ(test::count_id(trace_frame(scene, desc), 1), 32 * 9);
+    EXPECT_EQ(test::count_id(trace_frame(scene, desc).value(), 1), 32 * 9);
 }
 
 // Two portals of one room facing each other and linked to each other: a hall
@@ -276,7 +276,7 @@ layout::Layout facing_pair() {
 }
 
 TEST(TracerPortal, RecursionStopsWithTheFillExactlyAtMaxDepth) {
-    const Scene scene = prepare_scene(facing_pair());
+    const Scene scene = prepare_scene(facing_pair()).value();
     for (int depth : {0, 1, 2, 5, 8}) {
         const TraceHit hit = trace_ray(scene, {0, 1.5, 0}, {0, 0, -1}, 0, depth);
         EXPECT_EQ(hit.id, kIdDepthLimit) << depth;
@@ -298,13 +298,13 @@ TEST(TracerPortal, RecursionStopsWithTheFillExactlyAtMaxDepth) {
 }
 
 TEST(TracerPortal, FrameShowsTheFillWhereTheRecursionEnds) {
-    const Scene scene = prepare_scene(facing_pair());
+    const Scene scene = prepare_scene(facing_pair()).value();
     TraceDesc desc;
     desc.head.position = {0, 1.5, 0};
     desc.eye_width = 9;
     desc.eye_height = 9;
     desc.max_depth = 3;
-    const image::Image image = trace_frame(scene, desc);
+    const image::Image image = trace_frame(scene, desc).value();
     EXPECT_EQ(test::pixel_id(image, 4, 4), 255);
     EXPECT_EQ(test::pixel_rgb(image, 4, 4), test::bytes_of(::impossible::shading::kPortalFillColor));
     EXPECT_EQ(test::pixel_id(image, 0, 0), 1);  // the corner looks past the portals

@@ -23,7 +23,7 @@ TEST(TracerRoom, EveryPixelOfAClosedRoomShowsIt) {
     desc.head.pitch_deg = -20.0;
     desc.eye_width = 24;
     desc.eye_height = 16;
-    const image::Image image = trace_frame(l, desc);
+    const image::Image image = trace_frame(l, desc).value();
     ASSERT_EQ(image.width, 48);
     ASSERT_EQ(image.height, 16);
     ASSERT_EQ(image.rgb.size(), 48u * 16u * 3u);
@@ -36,7 +36,7 @@ TEST(TracerRoom, CentrePixelsHaveTheWallsShadeComputedByHand) {
     desc.head.position = {0.0, 1.5, 0.0};
     desc.eye_width = 9;  // odd: the centre pixel looks straight ahead, along -Z
     desc.eye_height = 9;
-    const image::Image image = trace_frame(l, desc);
+    const image::Image image = trace_frame(l, desc).value();
     // The -z wall, normal +Z, no checker; both eyes see the same colour.
     const auto expected = bytes_of(shade_by_hand(face_color(l.rooms[0], layout::Face::NegZ), {0, 0, 1}, false));
     EXPECT_EQ(test::pixel_rgb(image, 4, 4), expected);
@@ -53,7 +53,7 @@ TEST(TracerRoom, CentrePixelsHaveTheWallsShadeComputedByHand) {
     EXPECT_NEAR(left.origin.x, -0.032, kTol);
     EXPECT_NEAR(right.origin.x, 0.032, kTol);
     EXPECT_NEAR(left.dir.z, -1.0, kTol);
-    const TraceHit hit = trace_ray(prepare_scene(l), left.origin, left.dir, 0, 8);
+    const TraceHit hit = trace_ray(prepare_scene(l).value(), left.origin, left.dir, 0, 8);
     EXPECT_EQ(hit.id, 1);
     EXPECT_EQ(hit.portals_passed, 0);
     EXPECT_NEAR(hit.point.x, -0.032, kTol);
@@ -65,7 +65,7 @@ TEST(TracerRoom, CentrePixelsHaveTheWallsShadeComputedByHand) {
 TEST(TracerRoom, CheckerDarkensAlternateSquaresOfTheFaces) {
     layout::Layout l = one_room();
     l.rooms[0].checker = 0.5;
-    const Scene scene = prepare_scene(l);
+    const Scene scene = prepare_scene(l).value();
     const dvec3 floor = face_color(l.rooms[0], layout::Face::Floor);
     struct Case {
         double x, z;
@@ -87,7 +87,7 @@ TEST(TracerRoom, PropBoxesFaceOutwardsAndAreNotChequered) {
     l.rooms[0].checker = 0.5;
     const dvec3 red{0.9, 0.2, 0.2};
     l.rooms[0].props.push_back(layout::BoxProp{{-0.5, 0.0, -0.5}, {0.5, 1.0, 0.5}, red});
-    const Scene scene = prepare_scene(l);
+    const Scene scene = prepare_scene(l).value();
 
     const TraceHit top = trace_ray(scene, {0.3, 2.0, 0.2}, {0, -1, 0}, 0, 8);
     EXPECT_EQ(top.id, 1);
@@ -120,7 +120,7 @@ TEST(TracerRoom, GltfTrianglesArePlacedAndSeenFromTheirCounterClockwiseSide) {
                                {dvec3(0, 0, 1), dvec3(0, 0, 1), dvec3(0, 0, 1)},
                                green});
     l.rooms[0].props.push_back(model);
-    const Scene scene = prepare_scene(l);
+    const Scene scene = prepare_scene(l).value();
     ASSERT_EQ(scene.rooms[0].triangles.size(), 1u);
 
     // Placed: vertices (0,0,0), (0,0,-2), (0,2,-1), facing +X.
@@ -147,7 +147,7 @@ TEST(TracerRoom, TriangleNormalsAreInterpolatedBarycentrically) {
     const dvec3 n2 = glm::normalize(dvec3(0, 1, 1));
     model.triangles.push_back({{dvec3(0, 0, 0), dvec3(1, 0, 0), dvec3(0, 1, 0)}, {n0, n1, n2}, dvec3(0.5)});
     l.rooms[0].props.push_back(model);
-    const TraceHit hit = trace_ray(prepare_scene(l), {0.25, 0.25, 1.0}, {0, 0, -1}, 0, 8);
+    const TraceHit hit = trace_ray(prepare_scene(l).value(), {0.25, 0.25, 1.0}, {0, 0, -1}, 0, 8);
     // Weights: 0.5 for vertex 0, 0.25 each for vertices 1 and 2.
     const dvec3 expected = glm::normalize(0.5 * n0 + 0.25 * n1 + 0.25 * n2);
     EXPECT_NEAR(hit.point.z, 0.0, kTol);
@@ -158,25 +158,27 @@ TEST(TracerRoom, TriangleNormalsAreInterpolatedBarycentrically) {
 
 TEST(TracerRoom, AnEyeOutsideEveryRoomSeesNothing) {
     // Looking away from the room's box: no front face anywhere.
-    const TraceHit hit = trace_ray(prepare_scene(one_room()), {0, 1.5, 5}, {0, 0, 1}, 0, 8);
+    const TraceHit hit = trace_ray(prepare_scene(one_room()).value(), {0, 1.5, 5}, {0, 0, 1}, 0, 8);
     EXPECT_EQ(hit.id, kIdNothing);
     EXPECT_EQ(hit.room, -1);
     EXPECT_EQ(hit.color, ::impossible::shading::kBackgroundColor);
 }
 
-TEST(TracerRoom, BadFrameDescriptionsThrow) {
+TEST(TracerRoom, BadFrameDescriptionsAreErrors) {
     const layout::Layout l = one_room();
     TraceDesc desc;
     desc.eye_width = 4;
     desc.eye_height = 4;
     desc.room = 1;
-    EXPECT_THROW(trace_frame(l, desc), std::invalid_argument);
+    EXPECT_EQ(trace_frame(l, desc).error(), "trace: room index 1 is out of range");
     desc.room = 0;
     desc.eye_height = 0;
-    EXPECT_THROW(trace_frame(l, desc), std::invalid_argument);
+    EXPECT_EQ(trace_frame(l, desc).error(), "trace: bad eye image size");
     desc.eye_height = 4;
     desc.max_depth = -1;
-    EXPECT_THROW(trace_frame(l, desc), std::invalid_argument);
+    EXPECT_EQ(trace_frame(l, desc).error(), "trace: max_depth is negative");
+    desc.max_depth = 0;
+    EXPECT_TRUE(trace_frame(l, desc));
 }
 
 }  // namespace

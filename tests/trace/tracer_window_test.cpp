@@ -55,7 +55,7 @@ dvec3 reflected_colour(const layout::Layout& l) {
 }
 
 TEST(TracerWindow, TheSceneKeepsTheKindTheTintAndTheReflectance) {
-    const Scene scene = prepare_scene(window_pair({0.9, 0.7, 0.5}, 0.25));
+    const Scene scene = prepare_scene(window_pair({0.9, 0.7, 0.5}, 0.25)).value();
     ASSERT_EQ(scene.portals.size(), 2u);
     for (const ScenePortal& w : scene.portals) {
         EXPECT_EQ(w.kind, layout::PortalKind::Window);
@@ -71,7 +71,7 @@ TEST(TracerWindow, AWindowBlendsItsTwoBranches) {
     const dvec3 tint{0.9, 0.7, 0.5};
     const double r = 0.25;
     const layout::Layout l = window_pair(tint, r);
-    const Scene scene = prepare_scene(l);
+    const Scene scene = prepare_scene(l).value();
 
     // Each branch on its own, from its virtual eye (nothing lies between the
     // virtual eye and the window's partner, so no plane needs to clip).
@@ -104,14 +104,14 @@ TEST(TracerWindow, BothBranchesAreClippedByThePlanes) {
     layout::Layout l = window_pair(tint, r);
     l.rooms[1].props.push_back(layout::BoxProp{{8.5, 1.3, -0.3}, {9.5, 1.7, 0.5}, {1, 0, 0}});
     l.rooms[0].props.push_back(layout::BoxProp{{-0.3, 1.3, -3.5}, {0.5, 1.7, -2.5}, {1, 0, 0}});
-    const TraceHit hit = trace_ray(prepare_scene(l), kEye, kDir, 0, 8);
+    const TraceHit hit = trace_ray(prepare_scene(l).value(), kEye, kDir, 0, 8);
     EXPECT_EQ(hit.id, 2);
     expect_point(hit.point, {14, 1.5, 1.2});
     expect_point(hit.color, (1 - r) * tint * through_colour(l) + r * reflected_colour(l));
 }
 
 TEST(TracerWindow, AtTheDepthLimitAWindowShowsTheFill) {
-    const Scene scene = prepare_scene(window_pair({0.9, 0.7, 0.5}, 0.25));
+    const Scene scene = prepare_scene(window_pair({0.9, 0.7, 0.5}, 0.25)).value();
     const TraceHit hit = trace_ray(scene, kEye, kDir, 0, 0);
     EXPECT_EQ(hit.id, kIdDepthLimit);
     EXPECT_EQ(hit.room, 0);
@@ -127,7 +127,7 @@ TEST(TracerWindow, AThroughBranchCutByWeightGivesTheIdOfTheLimit) {
     // (times its factor 0) and the id is 255; the reflection is still seen.
     const double r = 0.25;
     const layout::Layout l = window_pair({0, 0, 0}, r);
-    const TraceHit hit = trace_ray(prepare_scene(l), kEye, kDir, 0, 8);
+    const TraceHit hit = trace_ray(prepare_scene(l).value(), kEye, kDir, 0, 8);
     EXPECT_EQ(hit.id, kIdDepthLimit);
     EXPECT_EQ(hit.room, 0);
     EXPECT_EQ(hit.portals_passed, 0);
@@ -136,7 +136,7 @@ TEST(TracerWindow, AThroughBranchCutByWeightGivesTheIdOfTheLimit) {
 
     // Reflectance 1: the same, with the whole reflection.
     const layout::Layout mirror_like = window_pair({1, 1, 1}, 1.0);
-    const TraceHit all_back = trace_ray(prepare_scene(mirror_like), kEye, kDir, 0, 8);
+    const TraceHit all_back = trace_ray(prepare_scene(mirror_like).value(), kEye, kDir, 0, 8);
     EXPECT_EQ(all_back.id, kIdDepthLimit);
     expect_point(all_back.color, reflected_colour(mirror_like));
 }
@@ -146,20 +146,20 @@ TEST(TracerWindow, AReflectionBelowTheMinimumWeightShowsTheFill) {
     // r = 0.001 < 1/256: the reflected branch is not followed and shows the fill.
     {
         const layout::Layout l = window_pair({1, 1, 1}, 0.001);
-        const TraceHit hit = trace_ray(prepare_scene(l), kEye, kDir, 0, 8);
+        const TraceHit hit = trace_ray(prepare_scene(l).value(), kEye, kDir, 0, 8);
         EXPECT_EQ(hit.id, 2);
         expect_point(hit.color, 0.999 * through_colour(l) + 0.001 * kFill);
     }
     // Exactly at the minimum the branch is followed; just below it is not.
     {
         const layout::Layout l = window_pair({1, 1, 1}, cut);
-        const TraceHit hit = trace_ray(prepare_scene(l), kEye, kDir, 0, 8);
+        const TraceHit hit = trace_ray(prepare_scene(l).value(), kEye, kDir, 0, 8);
         expect_point(hit.color, (1 - cut) * through_colour(l) + cut * reflected_colour(l));
     }
     {
         const double r = std::nextafter(cut, 0.0);
         const layout::Layout l = window_pair({1, 1, 1}, r);
-        const TraceHit hit = trace_ray(prepare_scene(l), kEye, kDir, 0, 8);
+        const TraceHit hit = trace_ray(prepare_scene(l).value(), kEye, kDir, 0, 8);
         expect_point(hit.color, (1 - r) * through_colour(l) + r * kFill);
     }
 }
@@ -176,7 +176,7 @@ TEST(TracerWindow, WeightsMultiplyAlongTheView) {
     for (double grey : {1.0, 0.1}) {
         layout::Layout l = window_pair({1, 1, 1}, r);
         l.portals.push_back(make_mirror("m", 0, {0, 1.5, 2}, {0, 0, -1}, 1.0, 2.0, {grey, grey, grey}));
-        const TraceHit hit = trace_ray(prepare_scene(l), kEye, {0.04, 0, 1}, 0, 8);
+        const TraceHit hit = trace_ray(prepare_scene(l).value(), kEye, {0.04, 0, 1}, 0, 8);
         EXPECT_EQ(hit.id, 2);
         EXPECT_EQ(hit.portals_passed, 2);
         expect_point(hit.point, {14, 1.5, 0.4});
@@ -212,7 +212,7 @@ TEST(TracerWindow, FacingWindowsBranchUntilTheWeightRuleStops) {
     // (through, through, ...) ends with 255 after min(max_depth, 8) portals.
     const dvec3 tint{1, 0.5, 0.25};
     const double r = 0.5;
-    const Scene scene = prepare_scene(facing_windows(tint, r));
+    const Scene scene = prepare_scene(facing_windows(tint, r)).value();
     for (int depth : {0, 1, 3, 8, 9, 10, 64}) {
         const TraceHit hit = trace_ray(scene, {0, 1.5, 0}, {0, 0, -1}, 0, depth);
         const int k = std::min(depth, 9);
@@ -230,14 +230,14 @@ TEST(TracerWindow, FacingWindowsAtDepth64FinishQuickly) {
     // splits in two of half its weight) over a whole frame at depth 64.
     // Without the rule a pixel could have 2^64 views; with it, at most 2^9
     // end in a fill. (About 0.1 s; the bound leaves room for a loaded machine.)
-    const Scene scene = prepare_scene(facing_windows({1, 1, 1}, 0.5));
+    const Scene scene = prepare_scene(facing_windows({1, 1, 1}, 0.5)).value();
     TraceDesc desc;
     desc.head.position = {0, 1.5, 0};
     desc.eye_width = 160;
     desc.eye_height = 90;
     desc.max_depth = 64;
     const auto start = std::chrono::steady_clock::now();
-    const image::Image image = trace_frame(scene, desc);
+    const image::Image image = trace_frame(scene, desc).value();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("  facing windows, depth 64, 160x90 per eye: %.3f s\n", seconds);
     EXPECT_LT(seconds, 20.0);
@@ -260,7 +260,7 @@ TEST(TracerWindow, AWindowSeenThroughADoor) {
     layout::Layout l = window_pair(tint, r);
     l.rooms.push_back(make_room("h", {-20, 0, -2}, {-16, 3, 2}, {0, 0.7, 0.3}));
     test::add_pair(l, make_portal("h", 2, {-18, 1.5, -2}, {0, 0, 1}), make_portal("d", 0, {0, 1.5, 2}, {0, 0, -1}));
-    const Scene scene = prepare_scene(l);
+    const Scene scene = prepare_scene(l).value();
     expect_point(dvec3(scene.portals[2].transfer * dvec4(0, 0, 0, 1)), {18, 0, 4});
 
     const dvec3 eye{-18, 1.5, 1}, dir{0.05, 0, -1};
@@ -282,7 +282,7 @@ TEST(TracerWindow, AWindowSeenThroughADoor) {
 
 TEST(TracerWindow, SeenFromBehindAWindowIsNotThere) {
     // An eye behind A's -z wall looking in through window a's rectangle.
-    const TraceHit hit = trace_ray(prepare_scene(window_pair({0.9, 0.7, 0.5}, 0.25)), {0, 1.5, -3}, {0, 0, 1}, 0, 8);
+    const TraceHit hit = trace_ray(prepare_scene(window_pair({0.9, 0.7, 0.5}, 0.25)).value(), {0, 1.5, -3}, {0, 0, 1}, 0, 8);
     EXPECT_EQ(hit.id, 1);
     EXPECT_EQ(hit.portals_passed, 0);
     expect_point(hit.point, {0, 1.5, 2});
