@@ -154,7 +154,8 @@ void draw_cell(DrawContext& ctx, const LevelView& view) {
 }
 
 void draw_portal_box(DrawContext& ctx, const LevelView& view, int portal, const std::array<NdcRect, 2>& rects) {
-    const PortalInfo& info = ctx.renderer.portals[portal];
+    const scene::PortalInfo& info = ctx.renderer.portals[portal];
+    const scene::PortalMesh& mesh = ctx.renderer.portal_meshes[portal];
     assert(info.room == view.cell);  // its box is relative to the cell's frame
     std::array<NdcRect, 2> front = rects, inner = rects;
     bool any_inner = false;
@@ -163,10 +164,10 @@ void draw_portal_box(DrawContext& ctx, const LevelView& view, int portal, const 
         else any_inner = true;
     }
     set_eye_uniforms(ctx, view, front);
-    draw_range(ctx, info.mesh.front);
+    draw_range(ctx, mesh.front);
     if (any_inner) {
         set_eye_uniforms(ctx, view, inner);
-        draw_range(ctx, info.mesh.inner);
+        draw_range(ctx, mesh.inner);
     }
 }
 
@@ -177,7 +178,7 @@ namespace {
 // front of it; behind it, exit's plane clips.
 LevelView moved_view(const DrawContext& ctx, const LevelView& view, const math::dmat4& m, int cell, int exit,
                      const std::array<NdcRect, 2>& rects) {
-    const PortalInfo& b = ctx.renderer.portals[exit];
+    const scene::PortalInfo& b = ctx.renderer.portals[exit];
     LevelView child;
     child.cell = cell;
     child.level = view.level + 1;
@@ -214,7 +215,7 @@ LevelView child_view(const DrawContext& ctx, const LevelView& view, int portal, 
     // A virtual eye behind B sees B's room only in front of B's plane; one
     // already in front of B (the real eye crossed A before the head) stands
     // in B's room and needs no plane.
-    const PortalInfo& a = ctx.renderer.portals[portal];
+    const scene::PortalInfo& a = ctx.renderer.portals[portal];
     LevelView child = moved_view(ctx, view, ctx.renderer.links.transfer[portal], ctx.renderer.portals[a.target].room,
                                  a.target, rects);
     child.weight *= weight_factor;

@@ -81,7 +81,7 @@ GLuint save_colour(DrawContext& ctx, const gl::ScissorRect& region) {
 }
 
 // colour ← r · (the copy, or the fill colour without one) + colour · (1 - r) · tint.
-void blend_window(DrawContext& ctx, const LevelView& view, const PortalInfo& w, GLuint saved) {
+void blend_window(DrawContext& ctx, const LevelView& view, const scene::PortalInfo& w, GLuint saved) {
     RendererData& r = ctx.renderer;
     const std::optional<WindowBlendProgram>& slot = r.window_blend[ctx.target->samples > 1 ? 1 : 0];
     assert(slot);  // prepare_window_blend made it with the frame
@@ -114,7 +114,7 @@ Result<void> prepare_window_blend(RendererData& r, bool multisample) {
 }
 
 void draw_mirror(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
-    const PortalInfo& m = ctx.renderer.portals[p];
+    const scene::PortalInfo& m = ctx.renderer.portals[p];
     mark_portal(ctx, view, p, rects);
     ctx.stats.portal_passes_drawn += 1;
     draw_level(ctx, reflected_view(ctx, view, p, rects, shading::max_channel(m.tint)));
@@ -127,7 +127,7 @@ void draw_mirror(DrawContext& ctx, const LevelView& view, int p, const std::arra
 }
 
 void draw_window(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
-    const PortalInfo& w = ctx.renderer.portals[p];
+    const scene::PortalInfo& w = ctx.renderer.portals[p];
     const double k = w.reflectance;
     const double through_factor = (1.0 - k) * shading::max_channel(w.tint);
     const bool reflect = view.weight * k >= shading::kMinBranchWeight;

@@ -132,7 +132,7 @@ void clear_target(RendererData& r, const Target& target, int stencil) {
                               stencil);
 }
 
-Result<Renderer> Renderer::create(gl::StateCache& state, const layout::Layout& layout, const scene::Scene& scene) {
+Result<Renderer> Renderer::create(gl::StateCache& state, const scene::Scene& scene) {
     auto r = std::make_unique<RendererData>();
     r->state = &state;
     r->cells = scene.batches;
@@ -141,12 +141,10 @@ Result<Renderer> Renderer::create(gl::StateCache& state, const layout::Layout& l
         for (const scene::DrawBatch& b : cell) r->has_materials = r->has_materials || b.texture >= 0 || b.alpha_cutoff >= 0.0f;
     r->frames = scene.frames;
     r->links = scene.links;
-    r->portals.reserve(layout.portals.size());
-    for (size_t i = 0; i < layout.portals.size(); ++i) {
-        const layout::Portal& p = layout.portals[i];
-        r->portals.push_back({p.rect, p.room, p.target, scene.portals[i], p.kind, p.tint, p.reflectance});
+    r->portals = scene.portal_info;
+    r->portal_meshes = scene.portals;
+    for (const scene::PortalInfo& p : scene.portal_info)
         r->has_windows = r->has_windows || p.kind == layout::PortalKind::Window;
-    }
     r->gpu = upload_scene(scene);
     r->empty_vao = gl::create_vertex_array();
     Result<ClearDepthProgram> clear = build_clear_depth_program();

@@ -4,9 +4,10 @@
 // Needs a current GL 4.5 context (gl/context.hpp) and that context's state
 // cache, which every user of the context shares (gl/state.hpp). Talks to the
 // rest of the program through plain data: a FrameDesc in, an Image and
-// FrameStats out. The scene's vertex arrays are uploaded once and not kept;
-// the renderer keeps index ranges, the portal links and the portal
-// rectangles.
+// FrameStats out. Everything it draws comes from the scene (scene::Scene,
+// portals included); it reads nothing of the layout. The scene's vertex
+// arrays are uploaded once and not kept; the renderer keeps index ranges, the
+// portal links and the portals' plain data.
 #pragma once
 
 #include <memory>
@@ -32,7 +33,13 @@ class Renderer {
 public:
     // Uploads the scene and builds the default (clip-shift) program. `state`
     // is the cache of the current context and must outlive the renderer.
-    static Result<Renderer> create(gl::StateCache& state, const layout::Layout& layout, const scene::Scene& scene);
+    static Result<Renderer> create(gl::StateCache& state, const scene::Scene& scene);
+    // The same; the layout is not read (the scene carries all the renderer
+    // needs). Kept until the callers in app, preview and bench pass the
+    // scene alone.
+    static Result<Renderer> create(gl::StateCache& state, const layout::Layout&, const scene::Scene& scene) {
+        return create(state, scene);
+    }
 
     Renderer(Renderer&&) noexcept;
     Renderer& operator=(Renderer&&) noexcept;

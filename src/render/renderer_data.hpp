@@ -19,17 +19,6 @@
 
 namespace impossible::render {
 
-// What drawing needs of a layout portal (no ids, no vertex data).
-struct PortalInfo {
-    math::PortalRect rect;
-    int room = -1;        // the room it stands in
-    int target = -1;      // the portal it leads to; -1 for a mirror
-    scene::PortalMesh mesh;  // index ranges of its box (a mirror's or window's: the front alone)
-    layout::PortalKind kind = layout::PortalKind::Door;
-    glm::dvec3 tint{1.0};
-    double reflectance = 0.0;
-};
-
 inline constexpr int kStereoModeCount = 3;
 
 // A window's reflected view, copied aside while the view through it is drawn
@@ -48,7 +37,8 @@ struct RendererData {
     std::vector<scene::DrawBatch> cull_batches;
     IndirectDraws indirect;                   // FrameDesc::multi_draw's commands, rewritten every frame
     std::vector<scene::CellFrame> frames;  // per room: what its vertices are relative to
-    std::vector<PortalInfo> portals;       // per layout portal
+    std::vector<scene::PortalInfo> portals;  // per portal, as the scene has it
+    std::vector<scene::PortalMesh> portal_meshes;  // per portal: its box (a mirror's or window's: the front alone)
     bool has_windows = false;              // the window blend's programs are needed
     links::PortalLinks links;              // M_AB per portal, the portals of each room
     GpuScene gpu;

@@ -86,12 +86,15 @@ Scene build_scene(const layout::Layout& layout) {
     }
 
     scene.portals.reserve(layout.portals.size());
+    scene.portal_info.reserve(layout.portals.size());
     for (std::size_t p = 0; p < layout.portals.size(); ++p) {
         const math::PortalRect& rect = layout.portals[p].rect;
         out.origin = scene.frames[static_cast<std::size_t>(layout.portals[p].room)].origin;
         const FrontGrid front = fronts[p] ? *fronts[p] : corner_front(out, rect);
         const bool box = layout.portals[p].kind == layout::PortalKind::Door;
         scene.portals.push_back(box ? append_portal_box(out, rect, front) : append_portal_front(out, rect, front));
+        const layout::Portal& lp = layout.portals[p];
+        scene.portal_info.push_back({lp.rect, lp.room, lp.target, lp.kind, lp.tint, lp.reflectance});
     }
     scene.links = links::link_portals(layout);
     return scene;

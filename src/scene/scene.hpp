@@ -74,6 +74,17 @@ struct PortalMesh {
     IndexRange inner;  // four side faces and the back face, facing inwards
 };
 
+// A portal as the rasteriser draws it, copied from the layout as plain data:
+// where it stands, where it leads, and what it does to what is seen in it.
+struct PortalInfo {
+    math::PortalRect rect;     // in layout coordinates
+    int room = -1;             // the room it stands in
+    int target = -1;           // the portal it leads to; -1 for a mirror
+    layout::PortalKind kind = layout::PortalKind::Door;
+    glm::dvec3 tint{1.0};      // mirrors and windows: multiplies what is seen in them
+    double reflectance = 0.0;  // windows: the reflected view's share
+};
+
 // A prop as per-object culling sees it: its bounds in layout coordinates
 // (padded, scene/cell_objects.cpp) and its batches.
 struct CellObject {
@@ -114,6 +125,7 @@ struct Scene {
     std::vector<SceneTexture> textures;           // each image and sampler once
     std::vector<CellFrame> frames;     // per room: the origin of its vertices and its portals'
     std::vector<PortalMesh> portals;   // per portal, relative to its room's frame
+    std::vector<PortalInfo> portal_info;  // per portal
     links::PortalLinks links;                 // M_AB per portal and the portals of each room, linked once
 };
 

@@ -43,7 +43,7 @@ inline image::Image render_once(gl::Backend backend, const layout::Layout& layou
     Result<gl::Context> context = gl::create_context(backend);
     EXPECT_TRUE(context.has_value()) << context.error();
     if (!context) return {};
-    Result<render::Renderer> renderer = render::Renderer::create(context->state(), layout, scene::build_scene(layout));
+    Result<render::Renderer> renderer = render::Renderer::create(context->state(), scene::build_scene(layout));
     EXPECT_TRUE(renderer.has_value()) << renderer.error();
     if (!renderer) return {};
     Result<render::RenderedFrame> result = renderer->render(frame);

@@ -100,7 +100,7 @@ TEST(Multisample, ACountTheDriverLacksIsAClearError) {
         if (!offers(n)) lacking = n;
     if (!lacking) GTEST_SKIP() << "the driver offers every count";
     const layout::Layout l = testing::layout_from_file(std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/default.json");
-    Result<render::Renderer> r = render::Renderer::create(context->state(), l, scene::build_scene(l));
+    Result<render::Renderer> r = render::Renderer::create(context->state(), scene::build_scene(l));
     ASSERT_TRUE(r.has_value()) << r.error();
     const Result<render::RenderedFrame> frame = r->render(start_frame(l, lacking));
     ASSERT_FALSE(frame.has_value());
@@ -148,7 +148,7 @@ TEST(Multisample, IdsAgreeWithTheTracersCentreRays) {
     if (!offers(kSamples)) GTEST_SKIP() << "the driver offers no 4-sample buffers";
     for (const auto& [label, frame] : frames_to_check(kSamples)) {
         const layout::Layout l = testing::example_layout(layout_of(label).c_str());
-        Result<render::Renderer> r = render::Renderer::create(context->state(), l, scene::build_scene(l));
+        Result<render::Renderer> r = render::Renderer::create(context->state(), scene::build_scene(l));
         ASSERT_TRUE(r.has_value()) << r.error();
         const Result<render::RenderedFrame> ms = r->render(frame);
         ASSERT_TRUE(ms.has_value()) << ms.error();
@@ -191,7 +191,7 @@ TEST(Multisample, PortalEdgesMatchTheSupersampledTracer) {
     if (!offers(kSamples)) GTEST_SKIP() << "the driver offers no 4-sample buffers";
     for (const auto& [label, frame] : frames_to_check(kSamples)) {
         const layout::Layout l = testing::example_layout(layout_of(label).c_str());
-        Result<render::Renderer> r = render::Renderer::create(context->state(), l, scene::build_scene(l));
+        Result<render::Renderer> r = render::Renderer::create(context->state(), scene::build_scene(l));
         ASSERT_TRUE(r.has_value()) << r.error();
         const Result<render::RenderedFrame> ms = r->render(frame);
         ASSERT_TRUE(ms.has_value()) << ms.error();

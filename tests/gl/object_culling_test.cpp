@@ -37,7 +37,7 @@ TEST(ObjectCulling, SameImageWithFarFewerTrianglesThroughSixDoors) {
     const layout::Layout l = crowded(150);
     Result<gl::Context> context = gl::create_context(gl::Backend::Egl);
     ASSERT_TRUE(context.has_value()) << context.error();
-    Result<render::Renderer> renderer = render::Renderer::create(context->state(), l, scene::build_scene(l));
+    Result<render::Renderer> renderer = render::Renderer::create(context->state(), scene::build_scene(l));
     ASSERT_TRUE(renderer.has_value()) << renderer.error();
     long culled_total = 0, full_total = 0, culled_draws = 0, separate_draws = 0;
     for (int k = 0; k < 6; ++k) {
@@ -122,7 +122,7 @@ TEST(ObjectCulling, AWalkRoundAPartitionShowsTheDoorInTheFrameItAppears) {
           "width": 1.2, "height": 2.2, "target": "a_n" } ] })");
     Result<gl::Context> context = gl::create_context(gl::Backend::Egl);
     ASSERT_TRUE(context.has_value()) << context.error();
-    Result<render::Renderer> renderer = render::Renderer::create(context->state(), l, scene::build_scene(l));
+    Result<render::Renderer> renderer = render::Renderer::create(context->state(), scene::build_scene(l));
     ASSERT_TRUE(renderer.has_value()) << renderer.error();
     int hidden_frames = 0, shown_frames = 0;
     for (int k = 0; k <= 24; ++k) {

@@ -152,7 +152,7 @@ TEST(PortalCulling, OcclusionTestDropsSubtreesBehindAWall) {
     f.cull_objects = false;
     Result<gl::Context> context = gl::create_context(gl::Backend::Egl);
     ASSERT_TRUE(context) << context.error();
-    Result<render::Renderer> r = render::Renderer::create(context->state(), l, scene::build_scene(l));
+    Result<render::Renderer> r = render::Renderer::create(context->state(), scene::build_scene(l));
     ASSERT_TRUE(r) << r.error();
     auto primitives = [&](bool occlusion_test, image::Image* image) {
         f.occlusion_test = occlusion_test;
@@ -244,7 +244,7 @@ TEST(PortalTexture, NeedsClipShiftStereo) {
     f.stereo = render::StereoMode::TwoPass;
     Result<gl::Context> context = gl::create_context(gl::Backend::Egl);
     ASSERT_TRUE(context) << context.error();
-    Result<render::Renderer> r = render::Renderer::create(context->state(), l, scene::build_scene(l));
+    Result<render::Renderer> r = render::Renderer::create(context->state(), scene::build_scene(l));
     ASSERT_TRUE(r) << r.error();
     Result<render::RenderedFrame> result = r->render(f);
     ASSERT_FALSE(result);

@@ -158,8 +158,8 @@ TEST(StateCache, RenderersSharingAContextDrawAsAlone) {
 
     Result<gl::Context> context = gl::create_context(gl::Backend::Egl);
     ASSERT_TRUE(context) << context.error();
-    Result<render::Renderer> ra = render::Renderer::create(context->state(), a, scene::build_scene(a));
-    Result<render::Renderer> rb = render::Renderer::create(context->state(), b, scene::build_scene(b));
+    Result<render::Renderer> ra = render::Renderer::create(context->state(), scene::build_scene(a));
+    Result<render::Renderer> rb = render::Renderer::create(context->state(), scene::build_scene(b));
     ASSERT_TRUE(ra && rb);
     for (int round = 0; round < 2; ++round) {
         Result<render::RenderedFrame> ia = ra->render(fa);
