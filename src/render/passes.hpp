@@ -19,7 +19,7 @@ enum class Pass {
     PortalMark,    // stencil level → level + 1 where the box is the visible surface
     ClearDepth,    // depth → far where stencil == level + 1 (drawn with ref = level + 1)
     PortalUnmark,  // stencil level + 1 → level, and the box's depth back (ref = level + 1)
-    PortalFill,    // the flat fill colour and id 255 at the recursion limit
+    PortalFill,    // the flat fill colour and id (shading::kFillId) at the recursion limit
     PortalTexture, // render-to-texture portals: the box shows its texture
     // Full-target triangles limited by the stencil to a mirror's or window's
     // pixels (ref = level + 1), after the view through it is drawn:

@@ -8,6 +8,7 @@
 
 #include "math/oblique_projection.hpp"
 #include "render/portal_recursion.hpp"
+#include "shading/shading.hpp"
 
 namespace impossible::render {
 
@@ -169,6 +170,15 @@ void draw_portal_box(DrawContext& ctx, const LevelView& view, int portal, const 
         set_eye_uniforms(ctx, view, inner);
         draw_range(ctx, mesh.inner);
     }
+}
+
+void draw_fill(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects, int stencil_ref) {
+    limit_to_portal(ctx, view, rects);
+    use_pass(ctx, view, Pass::PortalFill, stencil_ref);
+    set_cell_id(ctx, shading::kFillId, true);
+    const ColourQueryScope colour(ctx.profiler);
+    draw_portal_box(ctx, view, p, rects);
+    ctx.stats.portal_fills += 1;
 }
 
 namespace {

@@ -147,10 +147,7 @@ void draw_window(DrawContext& ctx, const LevelView& view, int p, const std::arra
         draw_level(ctx, child_view(ctx, view, p, rects, through_factor));
         limit_to_portal(ctx, view, rects);
     } else {
-        use_pass(ctx, view, Pass::PortalFill, view.level + 1);
-        set_cell_id(ctx, 255, true);
-        draw_portal_box(ctx, view, p, rects);
-        ctx.stats.portal_fills += 1;
+        draw_fill(ctx, view, p, rects, view.level + 1);
     }
     blend_window(ctx, view, w, saved);
     if (reflect) ctx.saved_colours_used -= 1;

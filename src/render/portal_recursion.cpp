@@ -96,11 +96,7 @@ void draw_portal(DrawContext& ctx, const LevelView& view, int p, const std::arra
     // the portal shows the fill colour.
     const bool over_budget = ctx.stats.portal_passes_drawn >= ctx.frame.max_portal_passes;
     if (level >= ctx.frame.max_depth || over_budget) {
-        use_pass(ctx, view, Pass::PortalFill, level);
-        set_cell_id(ctx, 255, true);
-        const ColourQueryScope colour(ctx.profiler);
-        draw_portal_box(ctx, view, p, rects);
-        ctx.stats.portal_fills += 1;
+        draw_fill(ctx, view, p, rects, level);
         if (over_budget && level < ctx.frame.max_depth) ctx.stats.budget_fills += 1;
         return;
     }

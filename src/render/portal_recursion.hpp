@@ -65,6 +65,13 @@ void draw_cell(DrawContext& ctx, const LevelView& view);
 // eyes in front of it, the inner faces for eyes in its column.
 void draw_portal_box(DrawContext& ctx, const LevelView& view, int portal, const std::array<NdcRect, 2>& rects);
 
+// The flat fill colour and id (shading::kPortalFillColor, kFillId) where the
+// portal is the visible surface, in place of a view that is not drawn: at the
+// recursion limit, past the frame's budget of portal passes, or a window's
+// view through it cut by its weight. `stencil_ref` is the level of the pixels
+// it covers (a window's are marked already). Counted as a portal fill.
+void draw_fill(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects, int stencil_ref);
+
 // The view through `portal` (of view.cell, a door or a window) into its
 // target's room, with the given share of the pixels.
 LevelView child_view(const DrawContext& ctx, const LevelView& view, int portal, const std::array<NdcRect, 2>& rects,

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
@@ -27,8 +28,11 @@ inline constexpr double kAmbient = 0.45;
 inline constexpr double kDiffuse = 0.55;
 inline constexpr double kCheckerDark = 0.75;
 
-// What a pixel shows when the recursion limit is reached (id 255).
+// What a pixel shows when the recursion limit is reached, and its id in the
+// id map (rooms have 1 + their index, below it; the rasteriser and the tracer
+// both write it).
 inline const glm::dvec3 kPortalFillColor{0.24, 0.22, 0.30};
+inline constexpr std::uint8_t kFillId = 255;
 // What a pixel shows where no surface is hit (id 0).
 inline const glm::dvec3 kBackgroundColor{0.0, 0.0, 0.0};
 
@@ -38,7 +42,7 @@ inline const glm::dvec3 kBackgroundColor{0.0, 0.0, 0.0};
 // these factors from the eye (the largest channel of each tint). Two facing
 // windows branch at every level, 2^depth views; so a window branch whose
 // weight would fall below kMinBranchWeight (one 8-bit step) is not followed
-// and shows the fill colour, as at the recursion limit (id 255 for a through
+// and shows the fill colour, as at the recursion limit (kFillId for a through
 // branch). The rasteriser and the tracer apply the same rule.
 inline constexpr double kMinBranchWeight = 1.0 / 256.0;
 
