@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "app/layout_source.hpp"
 #include "bench/stats.hpp"
+#include "cli/layout_source.hpp"
 #include "gl/context.hpp"
 #include "gl/gl.hpp"
 #include "render/renderer.hpp"
@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
         else path = a;
     }
     try {
-        const layout::Layout l = app::load_layout_or_default(path);
+        const layout::Layout l = cli::load_layout_or_default(path);
         Result<gl::Context> context = gl::create_context(gl::Backend::Egl);
         if (!context) throw std::runtime_error(context.error());
         Result<render::Renderer> r = render::Renderer::create(context->state(), l, scene::build_scene(l));

@@ -7,13 +7,23 @@
 #include <string>
 #include <vector>
 
-#include "app/cli_args.hpp"
+#include "cli/args.hpp"
 #include "app/commands.hpp"
-#include "app/output_files.hpp"
+#include "cli/output_files.hpp"
 #include "image/png.hpp"
 #include "image/compare.hpp"
 
 namespace impossible::app {
+
+using cli::CommandOutputs;
+using cli::InputError;
+using cli::kExitBadInput;
+using cli::kExitOk;
+using cli::parse_args;
+using cli::parse_number;
+using cli::ParsedArgs;
+using cli::UsageError;
+
 namespace {
 
 const char* kCompareHelp =

@@ -5,13 +5,23 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/cli_args.hpp"
+#include "cli/args.hpp"
 #include "app/commands.hpp"
-#include "app/output_files.hpp"
+#include "cli/output_files.hpp"
 #include "base/file_io.hpp"
 #include "design/generate.hpp"
 
 namespace impossible::app {
+
+using cli::CommandOutputs;
+using cli::InputError;
+using cli::kExitOk;
+using cli::parse_args;
+using cli::parse_int;
+using cli::parse_number;
+using cli::ParsedArgs;
+using cli::UsageError;
+
 namespace {
 
 // "W x D" in metres, centred on the origin.

@@ -2,15 +2,25 @@
 // the top-down plan of the physical floor (design/plan.hpp).
 #include <iostream>
 
-#include "app/cli_args.hpp"
+#include "cli/args.hpp"
 #include "app/commands.hpp"
-#include "app/layout_source.hpp"
+#include "cli/layout_source.hpp"
 #include "image/png.hpp"
-#include "app/output_files.hpp"
+#include "cli/output_files.hpp"
 #include "layout/path_file.hpp"
 #include "design/plan.hpp"
 
 namespace impossible::app {
+
+using cli::CommandOutputs;
+using cli::InputError;
+using cli::kExitOk;
+using cli::load_layout_or_default;
+using cli::parse_args;
+using cli::parse_int;
+using cli::ParsedArgs;
+using cli::UsageError;
+
 namespace {
 
 bool ends_with(const std::string& s, const std::string& tail) {

@@ -1,14 +1,30 @@
 // impossible render [LAYOUT] [options]: one side-by-side stereo frame.
 #include <iostream>
 
-#include "app/cli_args.hpp"
+#include "cli/args.hpp"
 #include "app/commands.hpp"
-#include "app/layout_source.hpp"
-#include "app/view_options.hpp"
+#include "cli/layout_source.hpp"
+#include "cli/view_options.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
 
 namespace impossible::app {
+
+using cli::CommandOutputs;
+using cli::frame_for;
+using cli::frame_outputs;
+using cli::InputError;
+using cli::kExitOk;
+using cli::load_layout_or_default;
+using cli::parse_args;
+using cli::parse_view_options;
+using cli::ParsedArgs;
+using cli::view_flag_options;
+using cli::view_options_help;
+using cli::view_value_options;
+using cli::ViewOptions;
+using cli::write_frame_pngs;
+
 namespace {
 
 const char* kRenderHelp =

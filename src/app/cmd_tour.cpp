@@ -4,14 +4,24 @@
 #include <cstdio>
 #include <iostream>
 
-#include "app/cli_args.hpp"
+#include "cli/args.hpp"
 #include "app/commands.hpp"
-#include "app/layout_source.hpp"
-#include "app/output_files.hpp"
+#include "cli/layout_source.hpp"
+#include "cli/output_files.hpp"
 #include "design/path_text.hpp"
 #include "design/tour.hpp"
 
 namespace impossible::app {
+
+using cli::CommandOutputs;
+using cli::InputError;
+using cli::kExitOk;
+using cli::load_layout_or_default;
+using cli::parse_args;
+using cli::parse_number;
+using cli::ParsedArgs;
+using cli::UsageError;
+
 namespace {
 
 std::string summary(const layout::Layout& layout, const design::Tour& t, std::size_t reachable) {

@@ -6,13 +6,30 @@
 #include <set>
 #include <thread>
 
-#include "app/cli_args.hpp"
+#include "cli/args.hpp"
 #include "app/commands.hpp"
-#include "app/layout_source.hpp"
-#include "app/view_options.hpp"
+#include "cli/layout_source.hpp"
+#include "cli/view_options.hpp"
 #include "trace/tracer.hpp"
 
 namespace impossible::app {
+
+using cli::CommandOutputs;
+using cli::frame_for;
+using cli::frame_outputs;
+using cli::kExitOk;
+using cli::load_layout_or_default;
+using cli::parse_args;
+using cli::parse_int;
+using cli::parse_view_options;
+using cli::ParsedArgs;
+using cli::trace_desc_for;
+using cli::view_flag_options;
+using cli::view_options_help;
+using cli::view_value_options;
+using cli::ViewOptions;
+using cli::write_frame_pngs;
+
 namespace {
 
 const char* kTraceHelp =

@@ -2,13 +2,19 @@
 // the designer's report (design/report.hpp).
 #include <iostream>
 
-#include "app/cli_args.hpp"
+#include "cli/args.hpp"
 #include "app/commands.hpp"
 #include "base/text.hpp"
 #include "design/report.hpp"
 #include "layout/layout.hpp"
 
 namespace impossible::app {
+
+using cli::kExitBadInput;
+using cli::kExitOk;
+using cli::parse_args;
+using cli::ParsedArgs;
+using cli::UsageError;
 
 int run_validate_command(const Args& args, std::ostream& out, std::ostream& err) {
     const ParsedArgs parsed = parse_args(args, {}, {"--json"}, 1);

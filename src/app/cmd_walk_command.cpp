@@ -1,12 +1,18 @@
 // impossible walk LAYOUT --path FILE: argument handling around run_walk.
 #include <iostream>
 
-#include "app/cli_args.hpp"
+#include "cli/args.hpp"
 #include "app/cmd_walk.hpp"
 #include "app/commands.hpp"
-#include "app/layout_source.hpp"
+#include "cli/layout_source.hpp"
 
 namespace impossible::app {
+
+using cli::kExitOk;
+using cli::load_layout_or_default;
+using cli::parse_args;
+using cli::ParsedArgs;
+using cli::UsageError;
 
 int run_walk_command(const Args& args, std::ostream& out, std::ostream& err) {
     const ParsedArgs parsed = parse_args(args, {"--path"}, {}, 1);

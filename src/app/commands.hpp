@@ -4,12 +4,12 @@
 #pragma once
 
 #include <iosfwd>
-#include <string>
-#include <vector>
+
+#include "cli/args.hpp"
 
 namespace impossible::app {
 
-using Args = std::vector<std::string>;
+using cli::Args;
 
 int run_render_command(const Args& args, std::ostream& out, std::ostream& err);
 int run_validate_command(const Args& args, std::ostream& out, std::ostream& err);

@@ -1,13 +1,20 @@
 #include <exception>
 #include <iostream>
 
-#include "app/cli_args.hpp"
+#include "cli/args.hpp"
 #include "base/text.hpp"
 #include "app/commands.hpp"
 #include "bench/bench_command.hpp"
 #include "preview/preview_command.hpp"
 
 namespace impossible::app {
+
+using cli::InputError;
+using cli::kExitBadInput;
+using cli::kExitOk;
+using cli::kExitUsage;
+using cli::UsageError;
+
 namespace {
 
 const char* kOverview =

@@ -6,20 +6,20 @@
 #include "bench/options.hpp"
 #include "bench/report.hpp"
 #include "bench/run.hpp"
-#include "app/cli_args.hpp"
+#include "cli/args.hpp"
 #include "bench/bench_command.hpp"
-#include "app/layout_source.hpp"
-#include "app/output_files.hpp"
+#include "cli/layout_source.hpp"
+#include "cli/output_files.hpp"
 #include "gl/context.hpp"
 
 namespace impossible::bench {
 
-using app::InputError;
-using app::ParsedArgs;
-using app::kExitOk;
-using app::load_layout_or_default;
-using app::parse_args;
-using app::view_options_help;
+using cli::InputError;
+using cli::ParsedArgs;
+using cli::kExitOk;
+using cli::load_layout_or_default;
+using cli::parse_args;
+using cli::view_options_help;
 namespace {
 
 const char* kHelp =
@@ -32,14 +32,14 @@ const char* kHelp =
 
 }  // namespace
 
-int run_bench_command(const app::Args& args, std::ostream& out, std::ostream& err) {
+int run_bench_command(const cli::Args& args, std::ostream& out, std::ostream& err) {
     const ParsedArgs parsed = parse_args(args, bench_value_options(), bench_flag_options(), 1);
     if (parsed.help) {
         out << kHelp << view_options_help() << bench_options_help();
         return kExitOk;
     }
     const BenchOptions options = parse_bench_options(parsed);
-    app::CommandOutputs outputs;
+    cli::CommandOutputs outputs;
     if (options.view.layout_path) outputs.input("the layout", *options.view.layout_path);
     if (options.path) outputs.input("--path", *options.path);
     if (options.json) outputs.output("--json", *options.json);

@@ -4,12 +4,12 @@
 
 #include <ostream>
 
-#include "app/commands.hpp"
+#include "cli/args.hpp"
 
 namespace impossible::bench {
 
 // Takes the arguments after the command name; returns the exit status
 // (errors go to `err` as one line, as for every command).
-int run_bench_command(const app::Args& args, std::ostream& out, std::ostream& err);
+int run_bench_command(const cli::Args& args, std::ostream& out, std::ostream& err);
 
 }  // namespace impossible::bench

@@ -10,11 +10,11 @@
 
 namespace impossible::bench {
 
-using app::InputError;
-using app::ParsedArgs;
-using app::parse_int;
-using app::parse_view_options;
-using app::view_value_options;
+using cli::InputError;
+using cli::ParsedArgs;
+using cli::parse_int;
+using cli::parse_view_options;
+using cli::view_value_options;
 namespace {
 
 void check_sweep(const std::string& sweep) {
@@ -82,7 +82,7 @@ BenchOptions parse_bench_options(const ParsedArgs& args) {
     if (auto v = args.value("--portals")) o.portals = parse_int("--portals", *v, 0, 1000000);
     if (auto v = args.value("--sweep")) o.sweep = *v;
     if (auto v = args.value("--reference-depth")) o.reference_depth = parse_int("--reference-depth", *v, 0, 250);
-    if (auto v = args.value("--reference-samples")) o.reference_samples = app::parse_samples(*v);
+    if (auto v = args.value("--reference-samples")) o.reference_samples = cli::parse_samples(*v);
     check_sweep(o.sweep);
     o.error = args.flag("--error") || o.sweep == "techniques";
     if (o.path && o.view.pose) throw InputError("--path and --pose: give one of them");

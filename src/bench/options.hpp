@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "app/cli_args.hpp"
-#include "app/view_options.hpp"
+#include "cli/args.hpp"
+#include "cli/view_options.hpp"
 #include "layout/layout.hpp"
 #include "render/frame.hpp"
 
@@ -16,7 +16,7 @@ namespace impossible::bench {
 
 
 struct BenchOptions {
-    app::ViewOptions view;
+    cli::ViewOptions view;
     int frames = 20;          // timed frames per configuration and pose
     int warmup = 3;           // untimed frames first
     int profile_frames = 3;   // profiled frames (per-portal times, fragments) per configuration and pose
@@ -35,6 +35,6 @@ const std::set<std::string>& bench_flag_options();
 const char* bench_options_help();
 
 // Throws InputError for a bad value.
-BenchOptions parse_bench_options(const app::ParsedArgs& args);
+BenchOptions parse_bench_options(const cli::ParsedArgs& args);
 
 }  // namespace impossible::bench

@@ -10,12 +10,12 @@
 
 namespace impossible::bench {
 
-using app::ViewOptions;
-using app::frame_for;
-using app::parse_int;
-using app::parse_size;
+using cli::ViewOptions;
+using cli::frame_for;
+using cli::parse_int;
+using cli::parse_size;
 
-using app::InputError;
+using cli::InputError;
 
 namespace {
 
@@ -130,7 +130,7 @@ BenchPlan plan_bench(const layout::Layout& layout, const BenchOptions& o) {
                 c.frame.multi_draw = !separate;
             });
         } else if (kind == "samples") {
-            const int n = app::parse_samples(item);
+            const int n = cli::parse_samples(item);
             add(name, kind, [n](BenchConfig& c) { c.frame.samples = n; });
         } else if (kind == "depth") {
             const int d = parse_int("--sweep depth", item, 0, 250);

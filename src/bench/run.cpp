@@ -8,7 +8,7 @@
 #include <thread>
 #include <tuple>
 
-#include "app/view_options.hpp"
+#include "cli/view_options.hpp"
 #include "gl/gl.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
@@ -17,8 +17,8 @@
 
 namespace impossible::bench {
 
-using app::InputError;
-using app::trace_desc_for;
+using cli::InputError;
+using cli::trace_desc_for;
 namespace {
 
 using Clock = std::chrono::steady_clock;

@@ -3,14 +3,14 @@
 #include <cstdint>
 #include <cstdio>
 
-#include "app/cli_args.hpp"
+#include "cli/errors.hpp"
 #include "base/format.hpp"
 #include "image/png.hpp"
 
 namespace impossible::preview {
 
 namespace fs = std::filesystem;
-using app::InputError;
+using cli::InputError;
 
 namespace {
 

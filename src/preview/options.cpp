@@ -1,21 +1,21 @@
 #include "preview/options.hpp"
-#include "app/view_options.hpp"
+#include "cli/view_options.hpp"
 
 #include <tuple>
 
 namespace impossible::preview {
 
-using app::InputError;
-using app::ParsedArgs;
-using app::UsageError;
-using app::parse_args;
-using app::parse_clip;
-using app::parse_fov;
-using app::parse_int;
-using app::parse_ipd;
-using app::parse_size;
-using app::parse_samples;
-using app::parse_stereo;
+using cli::InputError;
+using cli::ParsedArgs;
+using cli::UsageError;
+using cli::parse_args;
+using cli::parse_clip;
+using cli::parse_fov;
+using cli::parse_int;
+using cli::parse_ipd;
+using cli::parse_size;
+using cli::parse_samples;
+using cli::parse_stereo;
 
 const char* view_name(PreviewView view) {
     switch (view) {

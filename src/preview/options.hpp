@@ -4,7 +4,7 @@
 #include <optional>
 #include <string>
 
-#include "app/cli_args.hpp"
+#include "cli/args.hpp"
 #include "render/frame.hpp"
 
 namespace impossible::preview {

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "app/cli_args.hpp"
+#include "cli/errors.hpp"
 #include "gl/gl.hpp"
 #include "math/projection.hpp"
 #include "preview/grid.hpp"
@@ -26,8 +26,8 @@
 
 namespace impossible::preview {
 
-using app::InputError;
-using app::kExitOk;
+using cli::InputError;
+using cli::kExitOk;
 
 namespace {
 
@@ -192,7 +192,7 @@ bool run_frame(PreviewSession& s, long frame, std::ostream& err) {
 
 }  // namespace
 
-int run_preview_command(const app::Args& args, std::ostream& out, std::ostream& err) {
+int run_preview_command(const cli::Args& args, std::ostream& out, std::ostream& err) {
     bool help = false;
     PreviewOptions options = parse_preview_options(args, &help);
     if (help) {

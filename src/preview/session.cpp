@@ -2,13 +2,13 @@
 
 #include <algorithm>
 
-#include "app/cli_args.hpp"
-#include "app/layout_source.hpp"
+#include "cli/errors.hpp"
+#include "cli/layout_source.hpp"
 #include "scene/scene.hpp"
 
 namespace impossible::preview {
 
-using app::InputError;
+using cli::InputError;
 
 Result<Shown> build_shown(gl::StateCache& state, layout::Layout layout, const std::string& room_id) {
     Shown s;
@@ -53,7 +53,7 @@ std::unique_ptr<PreviewWindow> open_preview_window(const PreviewOptions& o, cons
 void open_session(PreviewSession& s, PreviewOptions options) {
     s.options = std::move(options);
     const PreviewOptions& o = s.options;
-    layout::Layout first = app::load_layout_or_default(o.layout_path);
+    layout::Layout first = cli::load_layout_or_default(o.layout_path);
     if (o.path_file) {
         layout::PathFile path = layout::read_path_file(*o.path_file);
         if (!path) throw InputError(path.error());

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/view_options.hpp"
+#include "cli/view_options.hpp"
 #include "common/depth_precision.hpp"
 #include "gl_fixture.hpp"
 #include "image/compare.hpp"
@@ -38,7 +38,7 @@ long mismatches(const layout::Layout& l, render::FrameDesc f, const std::string&
     for (render::ClipMode clip : {render::ClipMode::ClipDistance, render::ClipMode::Oblique}) {
         f.clip = clip;
         const image::Image raster = testing::render_once(gl::Backend::Egl, l, f);
-        const image::Image traced = trace::trace_frame(l, app::trace_desc_for(f)).value();
+        const image::Image traced = trace::trace_frame(l, cli::trace_desc_for(f)).value();
         const image::Comparison c = image::compare_pictures(raster, traced);
         std::printf("  %-52s %-13s %s\n", what.c_str(), clip == render::ClipMode::Oblique ? "oblique" : "clip-distance",
                     image::summary_line(c).c_str());

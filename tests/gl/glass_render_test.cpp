@@ -5,7 +5,7 @@
 // modes. Ids agree exactly (one-pixel edge tolerance) and colour to 40 dB.
 #include <cstdio>
 
-#include "app/view_options.hpp"
+#include "cli/view_options.hpp"
 #include "gl_fixture.hpp"
 #include "image/compare.hpp"
 #include "trace/tracer.hpp"
@@ -71,7 +71,7 @@ TEST_P(GlassRender, IdsAndColoursAgreeWithTheTracer) {
         f.clip = GetParam().clip;
         render::FrameStats stats;
         const image::Image raster = testing::render_once(gl::Backend::Egl, l, f, &stats);
-        const image::Image traced = trace::trace_frame(l, app::trace_desc_for(f)).value();
+        const image::Image traced = trace::trace_frame(l, cli::trace_desc_for(f)).value();
         ASSERT_FALSE(image::incomparable(raster, traced)) << c.layout;
         const image::Comparison cmp = image::compare_pictures(raster, traced);
         std::printf("  %-18s %-40s passes=%d %s\n", c.layout, c.what, stats.portal_passes_drawn,
@@ -106,7 +106,7 @@ TEST(GlassRender, MultisampledAndWithPortalTextures) {
         render::FrameDesc f = start_frame(l, 128, 80);
         f.samples = 4;
         const image::Image multi = testing::render_once(gl::Backend::Egl, l, f);
-        const image::Image traced_multi = trace::trace_frame(l, app::trace_desc_for(f)).value();
+        const image::Image traced_multi = trace::trace_frame(l, cli::trace_desc_for(f)).value();
         const image::Comparison m = image::compare_pictures(multi, traced_multi);
         std::printf("  %-18s 4 samples      %s\n", file, image::summary_line(m).c_str());
         EXPECT_LE(m.id_mismatch_percent, 0.05) << file;
@@ -115,7 +115,7 @@ TEST(GlassRender, MultisampledAndWithPortalTextures) {
         f.samples = 1;
         f.portal_texture_scale = 1.0;
         const image::Image textured = testing::render_once(gl::Backend::Egl, l, f);
-        const image::Image traced = trace::trace_frame(l, app::trace_desc_for(f)).value();
+        const image::Image traced = trace::trace_frame(l, cli::trace_desc_for(f)).value();
         const image::Comparison t = image::compare_pictures(textured, traced);
         std::printf("  %-18s portal textures %s\n", file, image::summary_line(t).c_str());
         EXPECT_EQ(t.id_mismatches, 0) << file;

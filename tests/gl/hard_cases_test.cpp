@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/view_options.hpp"
+#include "cli/view_options.hpp"
 #include "common/depth_precision.hpp"
 #include "gl_fixture.hpp"
 #include "math/oblique_projection.hpp"
@@ -24,7 +24,7 @@ std::string shipped(const char* name) { return std::string(IMPOSSIBLE_SOURCE_DIR
 // Renders and traces the same frame; prints and returns the comparison.
 image::Comparison render_against_trace(const layout::Layout& l, const render::FrameDesc& f, const char* what) {
     const image::Image raster = testing::render_once(gl::Backend::Egl, l, f);
-    const image::Image traced = trace::trace_frame(l, app::trace_desc_for(f)).value();
+    const image::Image traced = trace::trace_frame(l, cli::trace_desc_for(f)).value();
     EXPECT_FALSE(image::incomparable(raster, traced));
     const image::Comparison c = image::compare_pictures(raster, traced);
     std::printf("  %-58s %s\n", what, image::summary_line(c).c_str());

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <memory>
 
-#include "app/view_options.hpp"
+#include "cli/view_options.hpp"
 #include "gl_fixture.hpp"
 #include "image/compare.hpp"
 #include "trace/tracer.hpp"
@@ -307,7 +307,7 @@ TEST(MaterialsRender, GalleryAgreesWithTheTracer) {
             f.eye_height = 120;
             f.clip = clip;
             const image::Image raster = testing::render_once(gl::Backend::Egl, l, f);
-            const image::Image traced = trace::trace_frame(l, app::trace_desc_for(f)).value();
+            const image::Image traced = trace::trace_frame(l, cli::trace_desc_for(f)).value();
             ASSERT_FALSE(image::incomparable(raster, traced));
             const image::Comparison cmp = image::compare_pictures(raster, traced);
             std::printf("  gallery %-52s mipmaps %s\n", p.what, image::summary_line(cmp).c_str());

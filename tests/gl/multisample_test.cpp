@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <string>
 
-#include "app/view_options.hpp"
+#include "cli/view_options.hpp"
 #include "gl/gl.hpp"
 #include "gl_fixture.hpp"
 #include "pose_cases.hpp"
@@ -152,7 +152,7 @@ TEST(Multisample, IdsAgreeWithTheTracersCentreRays) {
         ASSERT_TRUE(r.has_value()) << r.error();
         const Result<render::RenderedFrame> ms = r->render(frame);
         ASSERT_TRUE(ms.has_value()) << ms.error();
-        const image::Image centre = trace::trace_frame(l, app::trace_desc_for(frame)).value();  // ids: centre rays
+        const image::Image centre = trace::trace_frame(l, cli::trace_desc_for(frame)).value();  // ids: centre rays
         const image::Comparison cmp = image::compare_pictures(ms->image, centre);
         std::printf("  %-56s ids %ld (%.4f%%)\n", label.c_str(), cmp.id_mismatches, cmp.id_mismatch_percent);
         EXPECT_LE(cmp.id_mismatch_percent, 0.01) << label;
@@ -200,7 +200,7 @@ TEST(Multisample, PortalEdgesMatchTheSupersampledTracer) {
         const Result<render::RenderedFrame> single = r->render(single_frame);
         ASSERT_TRUE(single.has_value()) << single.error();
 
-        trace::TraceDesc t = app::trace_desc_for(frame);
+        trace::TraceDesc t = cli::trace_desc_for(frame);
         const std::vector<int> keys = portal_keys(l, t);
         const image::Image super = trace::trace_frame(l, t).value();
         const EdgeError edge = edge_error(ms->image, super, keys, 48);

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/view_options.hpp"
+#include "cli/view_options.hpp"
 #include "gl_fixture.hpp"
 #include "image/compare.hpp"
 #include "trace/tracer.hpp"
@@ -137,7 +137,7 @@ TEST(ObjectCulling, AWalkRoundAPartitionShowsTheDoorInTheFrameItAppears) {
         f.eye_height = 90;
         Result<render::RenderedFrame> drawn = renderer->render(f);
         ASSERT_TRUE(drawn.has_value()) << drawn.error();
-        const image::Image traced = trace::trace_frame(l, app::trace_desc_for(f)).value();
+        const image::Image traced = trace::trace_frame(l, cli::trace_desc_for(f)).value();
         const image::Comparison cmp = image::compare_pictures(drawn->image, traced);
         EXPECT_EQ(cmp.id_mismatch_percent, 0.0) << "frame " << k << ": " << image::summary_line(cmp);
         int room_b = 0;

@@ -5,7 +5,7 @@
 // figures.
 #include <cstdio>
 
-#include "app/view_options.hpp"
+#include "cli/view_options.hpp"
 #include "gl_fixture.hpp"
 #include "pose_cases.hpp"
 #include "image/compare.hpp"
@@ -32,7 +32,7 @@ TEST_P(RenderVsTrace, IdsAgreeOnEveryLayoutAndPose) {
         f.clip = GetParam();
         const image::Image raster = testing::render_once(gl::Backend::Egl, l, f);
 
-        const image::Image traced = trace::trace_frame(l, app::trace_desc_for(f)).value();
+        const image::Image traced = trace::trace_frame(l, cli::trace_desc_for(f)).value();
 
         ASSERT_FALSE(image::incomparable(raster, traced)) << c.layout;
         const image::Comparison cmp = image::compare_pictures(raster, traced);

@@ -1,10 +1,10 @@
-#include "app/cli_args.hpp"
+#include "cli/args.hpp"
 
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 
-namespace impossible::app {
+namespace impossible::cli {
 
 std::optional<std::string> ParsedArgs::value(const std::string& name) const {
     const auto it = values.find(name);
@@ -89,4 +89,4 @@ std::pair<int, int> parse_size(const std::string& option, const std::string& tex
     return {w, h};
 }
 
-}  // namespace impossible::app
+}  // namespace impossible::cli

@@ -6,14 +6,14 @@
 #include <set>
 #include <string>
 
-#include "app/cli_args.hpp"
-#include "app/output_files.hpp"
+#include "cli/args.hpp"
+#include "cli/output_files.hpp"
 #include "gl/context.hpp"
 #include "layout/layout.hpp"
 #include "render/frame.hpp"
 #include "trace/tracer.hpp"
 
-namespace impossible::app {
+namespace impossible::cli {
 
 struct ViewOptions {
     std::optional<std::string> layout_path;  // none: the built-in default
@@ -64,4 +64,4 @@ void write_frame_pngs(CommandOutputs& outputs, const ViewOptions& options, int w
 // The option table for --help texts.
 const char* view_options_help();
 
-}  // namespace impossible::app
+}  // namespace impossible::cli

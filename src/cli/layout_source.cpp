@@ -1,9 +1,9 @@
-#include "app/layout_source.hpp"
+#include "cli/layout_source.hpp"
 
-#include "app/cli_args.hpp"
+#include "cli/errors.hpp"
 #include "embedded.hpp"
 
-namespace impossible::app {
+namespace impossible::cli {
 
 layout::Layout load_layout_or_default(const std::optional<std::string>& path) {
     layout::LoadResult loaded =
@@ -20,4 +20,4 @@ layout::Layout load_layout_or_default(const std::optional<std::string>& path) {
     return std::move(*loaded.layout);
 }
 
-}  // namespace impossible::app
+}  // namespace impossible::cli

@@ -1,11 +1,11 @@
-#include "app/view_options.hpp"
+#include "cli/view_options.hpp"
 
 #include "image/png.hpp"
 
 #include <cmath>
 #include <tuple>
 
-namespace impossible::app {
+namespace impossible::cli {
 
 const std::set<std::string>& view_value_options() {
     static const std::set<std::string> names = {"--pose", "--room",  "--ipd", "--fov",     "--size",
@@ -191,4 +191,4 @@ render::FrameDesc frame_for(const layout::Layout& layout, const ViewOptions& o) 
     return f;
 }
 
-}  // namespace impossible::app
+}  // namespace impossible::cli

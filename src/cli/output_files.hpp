@@ -11,7 +11,7 @@
 
 #include "base/output_file.hpp"
 
-namespace impossible::app {
+namespace impossible::cli {
 
 class CommandOutputs {
 public:
@@ -40,4 +40,4 @@ private:
     std::vector<OutputBytes> pending_;
 };
 
-}  // namespace impossible::app
+}  // namespace impossible::cli

@@ -6,25 +6,15 @@
 #include <map>
 #include <optional>
 #include <set>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
-namespace impossible::app {
+#include "cli/errors.hpp"
 
-// Exit statuses of cli.md.
-inline constexpr int kExitOk = 0;
-inline constexpr int kExitBadInput = 1;
-inline constexpr int kExitUsage = 2;
+namespace impossible::cli {
 
-// A usage error (unknown option, missing value): exit status 2.
-struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-// Wrong input (bad value, bad layout, unknown room): exit status 1.
-struct InputError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
+// A command's arguments, after the command name.
+using Args = std::vector<std::string>;
 
 struct ParsedArgs {
     std::vector<std::string> positional;
@@ -47,4 +37,4 @@ int parse_int(const std::string& option, const std::string& text, int min, int m
 std::vector<double> parse_numbers(const std::string& option, const std::string& text, size_t count);
 std::pair<int, int> parse_size(const std::string& option, const std::string& text);
 
-}  // namespace impossible::app
+}  // namespace impossible::cli

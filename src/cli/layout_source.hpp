@@ -6,7 +6,7 @@
 
 #include "layout/layout.hpp"
 
-namespace impossible::app {
+namespace impossible::cli {
 
 inline constexpr const char* kDefaultLayoutName = "layouts/default.json";
 
@@ -15,4 +15,4 @@ inline constexpr const char* kDefaultLayoutName = "layouts/default.json";
 // how many more there are) on one line.
 layout::Layout load_layout_or_default(const std::optional<std::string>& path);
 
-}  // namespace impossible::app
+}  // namespace impossible::cli

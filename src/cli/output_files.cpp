@@ -1,8 +1,8 @@
-#include "app/output_files.hpp"
+#include "cli/output_files.hpp"
 
-#include "app/cli_args.hpp"
+#include "cli/errors.hpp"
 
-namespace impossible::app {
+namespace impossible::cli {
 
 void CommandOutputs::add(Named named) {
     for (const Named& other : files_) {
@@ -36,4 +36,4 @@ void CommandOutputs::commit() {
     pending_.clear();
 }
 
-}  // namespace impossible::app
+}  // namespace impossible::cli
