@@ -37,13 +37,31 @@ Result<Program> build_program(const std::vector<ShaderSource>& stages, const std
     glLinkProgram(program.get());
     GLint ok = GL_FALSE;
     glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
-    if (ok != GL_TRUE) {
-        std::string names;
-        for (const ShaderSource& s : stages) names += (names.empty() ? "" : " + ") + s.name;
-        return Error{names + ": link error: " + info_log(program.get(), true)};
-    }
+    if (ok != GL_TRUE) return Error{program_name(stages) + ": link error: " + info_log(program.get(), true)};
     for (const Shader& s : shaders) glDetachShader(program.get(), s.get());
     return program;
+}
+
+std::string program_name(const std::vector<ShaderSource>& stages) {
+    std::string names;
+    for (const ShaderSource& s : stages) names += (names.empty() ? "" : " + ") + s.name;
+    return names;
+}
+
+UniformLocations::UniformLocations(GLuint program, std::string shaders)
+    : program_(program), shaders_(std::move(shaders)) {}
+
+GLint UniformLocations::required(const char* name) {
+    const GLint location = glGetUniformLocation(program_, name);
+    if (location < 0) missing_ += (missing_.empty() ? "'" : ", '") + std::string(name) + "'";
+    return location;
+}
+
+GLint UniformLocations::optional(const char* name) const { return glGetUniformLocation(program_, name); }
+
+Result<void> UniformLocations::check() const {
+    if (missing_.empty()) return {};
+    return Error{shaders_ + ": the program has no uniform " + missing_ + " (misspelt, or not used by the shaders)"};
 }
 
 }  // namespace impossible::gl

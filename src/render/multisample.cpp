@@ -42,14 +42,9 @@ Result<gl::Framebuffer> framebuffer_around(GLuint renderbuffer, const char* what
 Result<void> build_id_resolve(Multisampling& m, int samples) {
     if (m.id_resolve.size() <= static_cast<size_t>(samples)) m.id_resolve.resize(samples + 1);
     if (m.id_resolve[samples]) return {};
-    Result<gl::Program> built =
-        gl::build_program({embedded_shader(GL_VERTEX_SHADER, "shaders/clear_depth.vert.glsl"),
-                           embedded_shader(GL_FRAGMENT_SHADER, "shaders/id_resolve.frag.glsl")},
-                          "#define SAMPLES " + std::to_string(samples) + "\n");
+    Result<gl::Program> built = build_id_resolve_program(samples);
     if (!built) return Error{built.error()};
     m.id_resolve[samples] = std::move(*built);
-    const GLuint p = m.id_resolve[samples].get();
-    glProgramUniform1i(p, glGetUniformLocation(p, "u_ids"), 0);
     return {};
 }
 

@@ -1,6 +1,8 @@
 #include "render/scene_program.hpp"
 
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "embedded.hpp"
 #include "gl/shader.hpp"
@@ -28,27 +30,47 @@ gl::ShaderSource embedded_shader(GLenum stage, const char* name) {
 
 namespace {
 
-Result<SceneProgram> link_scene_program(const char* fragment, const std::string& defines) {
-    Result<gl::Program> built = gl::build_program(
-        {embedded_shader(GL_VERTEX_SHADER, "shaders/scene.vert.glsl"), embedded_shader(GL_FRAGMENT_SHADER, fragment)},
-        defines);
+// Which uniforms a variant of the scene's vertex shader and a fragment shader
+// uses, so that the GLSL compiler keeps them.
+struct SceneVariant {
+    const char* fragment = "shaders/scene.frag.glsl";
+    bool single_eye = false;  // STEREO_SINGLE_EYE: u_single_eye
+    bool materials = false;   // MATERIALS: textures and cut-outs
+};
+
+Result<SceneProgram> link_scene_program(const SceneVariant& variant, const std::string& defines) {
+    const std::vector<gl::ShaderSource> stages = {embedded_shader(GL_VERTEX_SHADER, "shaders/scene.vert.glsl"),
+                                                  embedded_shader(GL_FRAGMENT_SHADER, variant.fragment)};
+    Result<gl::Program> built = gl::build_program(stages, defines);
     if (!built) return Error{built.error()};
     SceneProgram p;
     p.program = std::move(*built);
     const GLuint name = p.program.get();
-    p.view_proj = glGetUniformLocation(name, "u_view_proj");
-    p.eye_rect = glGetUniformLocation(name, "u_eye_rect");
-    p.clip_plane = glGetUniformLocation(name, "u_clip_plane");
-    p.checker_offset = glGetUniformLocation(name, "u_checker_offset");
-    p.single_eye = glGetUniformLocation(name, "u_single_eye");
-    p.cell_id = glGetUniformLocation(name, "u_cell_id");
-    p.unshaded = glGetUniformLocation(name, "u_unshaded");
-    p.target_size = glGetUniformLocation(name, "u_target_size");
-    p.textured = glGetUniformLocation(name, "u_textured");
-    p.alpha_cutoff = glGetUniformLocation(name, "u_alpha_cutoff");
-    p.level0 = glGetUniformLocation(name, "u_level0");
-    glProgramUniform1i(name, glGetUniformLocation(name, "u_texture"), static_cast<GLint>(kSceneTextureUnit));
-    glProgramUniform1f(name, p.alpha_cutoff, -1.0f);
+    const bool scene_fragment = std::string(variant.fragment) == "shaders/scene.frag.glsl";
+    gl::UniformLocations u(name, gl::program_name(stages));
+    p.view_proj = u.required("u_view_proj");
+    p.eye_rect = u.required("u_eye_rect");
+    p.clip_plane = u.required("u_clip_plane");
+    // Only the checker pattern reads it: a fragment shader without one (the
+    // portal texture's) leaves it to be optimised out.
+    p.checker_offset = scene_fragment ? u.required("u_checker_offset") : u.optional("u_checker_offset");
+    if (variant.single_eye) p.single_eye = u.required("u_single_eye");
+    if (scene_fragment) {
+        p.cell_id = u.required("u_cell_id");
+        p.unshaded = u.required("u_unshaded");
+    } else {
+        p.target_size = u.required("u_target_size");
+        glProgramUniform1i(name, u.required("u_color_texture"), 0);
+        glProgramUniform1i(name, u.required("u_id_texture"), 1);
+    }
+    if (variant.materials) {
+        p.textured = u.required("u_textured");
+        p.alpha_cutoff = u.required("u_alpha_cutoff");
+        p.level0 = u.required("u_level0");
+        glProgramUniform1i(name, u.required("u_texture"), static_cast<GLint>(kSceneTextureUnit));
+        glProgramUniform1f(name, p.alpha_cutoff, -1.0f);
+    }
+    if (Result<void> all = u.check(); !all) return Error{all.error()};
     return p;
 }
 
@@ -59,48 +81,61 @@ Result<SceneProgram> build_scene_program(StereoMode mode, bool materials) {
     if (materials) defines += "#define MATERIALS\n";
     if (mode == StereoMode::ViewportIndex) defines += "#define STEREO_VIEWPORT_INDEX\n";
     if (mode == StereoMode::TwoPass) defines += "#define STEREO_SINGLE_EYE\n";
-    return link_scene_program("shaders/scene.frag.glsl", defines);
+    SceneVariant variant;
+    variant.single_eye = mode == StereoMode::TwoPass;
+    variant.materials = materials;
+    return link_scene_program(variant, defines);
 }
 
 Result<SceneProgram> build_portal_texture_program() {
-    Result<SceneProgram> out = link_scene_program("shaders/portal_texture.frag.glsl", "");
-    if (out) {
-        const GLuint name = out->program.get();
-        glProgramUniform1i(name, glGetUniformLocation(name, "u_color_texture"), 0);
-        glProgramUniform1i(name, glGetUniformLocation(name, "u_id_texture"), 1);
-    }
-    return out;
+    SceneVariant variant;
+    variant.fragment = "shaders/portal_texture.frag.glsl";
+    return link_scene_program(variant, "");
 }
 
 Result<ClearDepthProgram> build_clear_depth_program() {
-    Result<gl::Program> built = gl::build_program(
-        {embedded_shader(GL_VERTEX_SHADER, "shaders/clear_depth.vert.glsl"),
-         embedded_shader(GL_FRAGMENT_SHADER, "shaders/clear_depth.frag.glsl")},
-        "");
+    const std::vector<gl::ShaderSource> stages = {embedded_shader(GL_VERTEX_SHADER, "shaders/clear_depth.vert.glsl"),
+                                                  embedded_shader(GL_FRAGMENT_SHADER, "shaders/clear_depth.frag.glsl")};
+    Result<gl::Program> built = gl::build_program(stages, "");
     if (!built) return Error{built.error()};
     ClearDepthProgram out;
     out.program = std::move(*built);
-    out.far_depth = glGetUniformLocation(out.program.get(), "u_far_depth");
-    out.color = glGetUniformLocation(out.program.get(), "u_color");
-    out.eye_quads = glGetUniformLocation(out.program.get(), "u_eye_quads");
-    out.rects = glGetUniformLocation(out.program.get(), "u_rects");
+    gl::UniformLocations u(out.program.get(), gl::program_name(stages));
+    out.far_depth = u.required("u_far_depth");
+    out.color = u.required("u_color");
+    out.eye_quads = u.required("u_eye_quads");
+    out.rects = u.required("u_rects");
+    if (Result<void> all = u.check(); !all) return Error{all.error()};
     return out;
 }
 
 Result<WindowBlendProgram> build_window_blend_program(bool multisample) {
-    Result<gl::Program> built = gl::build_program(
-        {embedded_shader(GL_VERTEX_SHADER, "shaders/clear_depth.vert.glsl"),
-         embedded_shader(GL_FRAGMENT_SHADER, "shaders/window_blend.frag.glsl")},
-        multisample ? "#define SAVED_MULTISAMPLE\n" : "");
+    const std::vector<gl::ShaderSource> stages = {
+        embedded_shader(GL_VERTEX_SHADER, "shaders/clear_depth.vert.glsl"),
+        embedded_shader(GL_FRAGMENT_SHADER, "shaders/window_blend.frag.glsl")};
+    Result<gl::Program> built = gl::build_program(stages, multisample ? "#define SAVED_MULTISAMPLE\n" : "");
     if (!built) return Error{built.error()};
     WindowBlendProgram out;
     out.program = std::move(*built);
     const GLuint name = out.program.get();
-    out.use_saved = glGetUniformLocation(name, "u_use_saved");
-    out.scale = glGetUniformLocation(name, "u_scale");
-    out.constant = glGetUniformLocation(name, "u_constant");
-    glProgramUniform1i(name, glGetUniformLocation(name, "u_saved"), 0);
+    gl::UniformLocations u(name, gl::program_name(stages));
+    out.use_saved = u.required("u_use_saved");
+    out.scale = u.required("u_scale");
+    out.constant = u.required("u_constant");
+    glProgramUniform1i(name, u.required("u_saved"), 0);
+    if (Result<void> all = u.check(); !all) return Error{all.error()};
     return out;
+}
+
+Result<gl::Program> build_id_resolve_program(int samples) {
+    const std::vector<gl::ShaderSource> stages = {embedded_shader(GL_VERTEX_SHADER, "shaders/clear_depth.vert.glsl"),
+                                                  embedded_shader(GL_FRAGMENT_SHADER, "shaders/id_resolve.frag.glsl")};
+    Result<gl::Program> built = gl::build_program(stages, "#define SAMPLES " + std::to_string(samples) + "\n");
+    if (!built) return Error{built.error()};
+    gl::UniformLocations u(built->get(), gl::program_name(stages));
+    glProgramUniform1i(built->get(), u.required("u_ids"), 0);
+    if (Result<void> all = u.check(); !all) return Error{all.error()};
+    return built;
 }
 
 }  // namespace impossible::render

@@ -1,5 +1,7 @@
-// The scene shader program (shaders/scene.*.glsl) for one stereo mode, with
-// its uniform locations looked up once.
+// The programs of the renderer (shaders/*.glsl), each with its uniform
+// locations looked up once, when it is built: a uniform that the variant
+// uses and the program lacks (misspelt, or gone from the shader) fails the
+// build with its name and the shaders' (gl::UniformLocations).
 #pragma once
 
 #include "base/result.hpp"
@@ -12,18 +14,22 @@ namespace impossible::render {
 // A shader stage compiled into the binary (embedded.hpp), named by its path.
 gl::ShaderSource embedded_shader(GLenum stage, const char* name);
 
+// The scene's vertex shader with a fragment shader. A location is -1 where
+// the variant has no such uniform, and is then never set; the exception is
+// checker_offset, which the portal texture's fragment shader does not read,
+// so that the compiler may drop it there (setting -1 does nothing).
 struct SceneProgram {
     gl::Program program;
     GLint view_proj = -1;   // mat4[2]
     GLint eye_rect = -1;    // vec4[2]
     GLint clip_plane = -1;  // vec4[2]
     GLint checker_offset = -1;  // vec3
-    GLint single_eye = -1;  // int
-    GLint cell_id = -1;     // uint
-    GLint unshaded = -1;    // bool
-    GLint textured = -1;    // bool: multiply by the texture on kSceneTextureUnit
-    GLint alpha_cutoff = -1;  // float: drop fragments whose alpha is below it; < 0: opaque
-    GLint level0 = -1;        // bool: textures at level 0 only
+    GLint single_eye = -1;  // int, two-pass stereo only
+    GLint cell_id = -1;     // uint, scene.frag.glsl only
+    GLint unshaded = -1;    // bool, scene.frag.glsl only
+    GLint textured = -1;    // bool: multiply by the texture on kSceneTextureUnit (materials only)
+    GLint alpha_cutoff = -1;  // float: drop fragments whose alpha is below it; < 0: opaque (materials only)
+    GLint level0 = -1;        // bool: textures at level 0 only (materials only)
     GLint target_size = -1;  // vec2, only in the portal-texture program
 };
 
@@ -58,5 +64,9 @@ struct WindowBlendProgram {
 
 // `multisample`: the copy is a multisample texture, read per sample.
 Result<WindowBlendProgram> build_window_blend_program(bool multisample);
+
+// The id resolve of a multisampled target (shaders/id_resolve.frag.glsl,
+// render/multisample.hpp) for `samples` samples, reading texture unit 0.
+Result<gl::Program> build_id_resolve_program(int samples);
 
 }  // namespace impossible::render
