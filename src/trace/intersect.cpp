@@ -124,7 +124,7 @@ dvec4 triangle_color(const PropTriangle& tri, std::span<const PropMaterial> mate
     const PropMaterial& material = materials[tri.material];
     double alpha = material.alpha * vertex.a;
     if (material.texture.image) {
-        const dvec4 texel = sample_level0(material.texture, blend_corners(tri.uv, barycentric));
+        const dvec4 texel = sample_mip0(material.texture, blend_corners(tri.uv, barycentric));
         rgb *= dvec3(texel);
         alpha *= texel.a;
     }
@@ -134,7 +134,7 @@ dvec4 triangle_color(const PropTriangle& tri, std::span<const PropMaterial> mate
 dvec3 room_face_color(const RoomFace& face, const dvec3& p) {
     if (!face.texture) return face.color;
     const dvec4 texel =
-        sample_level0(*face.texture, assets::Sampler{}, shading::room_texture_uv(face.face, p, face.texture_size));
+        sample_mip0(*face.texture, assets::Sampler{}, shading::room_texture_uv(face.face, p, face.texture_size));
     return face.color * dvec3(texel);
 }
 

@@ -68,13 +68,13 @@ std::optional<SurfaceHit> hit_triangle(const PropTriangle& tri, std::span<const 
 // rgb its base colour, color · COLOR_0 · texel, and alpha the material's
 // alpha · COLOR_0's · the texel's. COLOR_0 and uv are blended with weights
 // (1 - u - v, u, v), except that three equal corners give their value
-// exactly. The texel is read at level 0 with the sampler's mag filter
+// exactly. The texel is read at mip level 0 with the sampler's mag filter
 // (texture_sample.hpp); without a texture it is white.
 dvec4 triangle_color(const PropTriangle& tri, std::span<const PropMaterial> materials, glm::dvec2 barycentric);
 
 // A room face's base colour at a point p of it: its colour, times the
 // texel of its texture (if any) at shading::room_texture_uv(face, p, size),
-// read at level 0 with the default sampler (repeat, linear).
+// read at mip level 0 with the default sampler (repeat, linear).
 dvec3 room_face_color(const RoomFace& face, const dvec3& p);
 
 // A portal's box for a ray from `origin`, which is the (possibly virtual)

@@ -29,7 +29,7 @@ glm::dvec4 texel(const image::Pixels& image, int i, int j) {
     return glm::dvec4(p[0], p[1], p[2], p[3]) / 255.0;
 }
 
-glm::dvec4 sample_level0(const image::Pixels& image, const assets::Sampler& sampler, glm::dvec2 st) {
+glm::dvec4 sample_mip0(const image::Pixels& image, const assets::Sampler& sampler, glm::dvec2 st) {
     const int w = image.width, h = image.height;
     if (w <= 0 || h <= 0 || image.data.size() < 4 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h))
         return glm::dvec4(1.0);

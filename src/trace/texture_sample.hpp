@@ -1,5 +1,5 @@
 // Reading a texture the way the tracer's colour rule needs it (docs/tracer.md,
-// "Materials and textures"): at mipmap level 0 only, with the sampler's
+// "Materials and textures"): at mip level 0 only, with the sampler's
 // magnification filter, wrapped per axis as OpenGL defines REPEAT,
 // CLAMP_TO_EDGE and MIRRORED_REPEAT (OpenGL 4.6 core, 8.14.2 "Coordinate
 // Wrapping and Texel Selection"). Double precision, no allocation.
@@ -28,15 +28,15 @@ int wrap_texel(double i, int size, int wrap);
 // The texel (i, j), both already wrapped into the image, as bytes / 255.
 glm::dvec4 texel(const image::Pixels& image, int i, int j);
 
-// The image read at (s, t) at level 0 with the sampler's mag filter:
+// The image read at (s, t) at mip level 0 with the sampler's mag filter:
 // NEAREST the texel (⌊s·w⌋, ⌊t·h⌋); LINEAR (any other code) GL's bilinear
 // blend of the texels ⌊x⌋, ⌊x⌋ + 1 (and ⌊y⌋, ⌊y⌋ + 1) at x = s·w - 1/2,
 // y = t·h - 1/2, weighted by the fractional parts; each index wrapped per
 // axis. An empty image reads as white, (1, 1, 1, 1).
-glm::dvec4 sample_level0(const image::Pixels& image, const assets::Sampler& sampler, glm::dvec2 st);
+glm::dvec4 sample_mip0(const image::Pixels& image, const assets::Sampler& sampler, glm::dvec2 st);
 
-inline glm::dvec4 sample_level0(const assets::Texture& texture, glm::dvec2 st) {
-    return sample_level0(*texture.image, texture.sampler, st);
+inline glm::dvec4 sample_mip0(const assets::Texture& texture, glm::dvec2 st) {
+    return sample_mip0(*texture.image, texture.sampler, st);
 }
 
 }  // namespace impossible::trace

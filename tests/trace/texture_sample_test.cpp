@@ -47,7 +47,7 @@ assets::Sampler sampler(int filter, int wrap_s, int wrap_t = code::kRepeat) {
 
 // The red channel of the ramp, read with `filter` and `wrap` at s.
 double ramp_at(int filter, int wrap, double s) {
-    return sample_level0(ramp(), sampler(filter, wrap), dvec2(s, 0.5)).r;
+    return sample_mip0(ramp(), sampler(filter, wrap), dvec2(s, 0.5)).r;
 }
 
 // The texel of the ramp (its index) that nearest filtering reads at whole
@@ -129,39 +129,39 @@ TEST(TextureSample, LinearEachWrap) {
 TEST(TextureSample, RowZeroIsTheTopAndTGrowsDown) {
     const image::Pixels image = quadrant_image();
     const assets::Sampler nearest = sampler(code::kNearest, code::kRepeat, code::kRepeat);
-    EXPECT_EQ(sample_level0(image, nearest, dvec2(0.25, 0.25)), kTexelRed);
-    EXPECT_EQ(sample_level0(image, nearest, dvec2(0.75, 0.25)), kTexelGreen);
-    EXPECT_EQ(sample_level0(image, nearest, dvec2(0.25, 0.75)), kTexelBlue);
-    EXPECT_EQ(sample_level0(image, nearest, dvec2(0.75, 0.75)), kTexelClear);
-    EXPECT_EQ(sample_level0(image, nearest, dvec2(-0.25, -0.25)), kTexelClear);  // repeat: the tile up and left
-    EXPECT_EQ(sample_level0(image, nearest, dvec2(2.25, -1.75)), kTexelRed);
+    EXPECT_EQ(sample_mip0(image, nearest, dvec2(0.25, 0.25)), kTexelRed);
+    EXPECT_EQ(sample_mip0(image, nearest, dvec2(0.75, 0.25)), kTexelGreen);
+    EXPECT_EQ(sample_mip0(image, nearest, dvec2(0.25, 0.75)), kTexelBlue);
+    EXPECT_EQ(sample_mip0(image, nearest, dvec2(0.75, 0.75)), kTexelClear);
+    EXPECT_EQ(sample_mip0(image, nearest, dvec2(-0.25, -0.25)), kTexelClear);  // repeat: the tile up and left
+    EXPECT_EQ(sample_mip0(image, nearest, dvec2(2.25, -1.75)), kTexelRed);
 }
 
 TEST(TextureSample, LinearTwoAxesWithTheirOwnWraps) {
     const image::Pixels image = quadrant_image();
     // The centre: all four equally.
-    EXPECT_EQ(sample_level0(image, sampler(code::kLinear, code::kRepeat), dvec2(0.5, 0.5)),
+    EXPECT_EQ(sample_mip0(image, sampler(code::kLinear, code::kRepeat), dvec2(0.5, 0.5)),
               0.25 * (kTexelRed + kTexelGreen + kTexelBlue + kTexelClear));
     // (0.375, 0.125): x - 1/2 = 0.25 (columns 0 and 1, weighted 3/4 and
     // 1/4), y - 1/2 = -0.25 (rows -1, by repeat row 1, and 0, weighted 1/4
     // and 3/4).
     const dvec4 expected = 0.75 * 0.25 * kTexelBlue + 0.25 * 0.25 * kTexelClear + 0.75 * 0.75 * kTexelRed + 0.25 * 0.75 * kTexelGreen;
-    EXPECT_EQ(sample_level0(image, sampler(code::kLinear, code::kRepeat, code::kRepeat), dvec2(0.375, 0.125)),
+    EXPECT_EQ(sample_mip0(image, sampler(code::kLinear, code::kRepeat, code::kRepeat), dvec2(0.375, 0.125)),
               expected);
     EXPECT_EQ(expected, dvec4(0.625, 0.25, 0.25, 0.9375));
     // Row -1 clamped (or mirrored) is row 0 itself.
     for (int wrap_t : {code::kClampToEdge, code::kMirroredRepeat}) {
-        EXPECT_EQ(sample_level0(image, sampler(code::kLinear, code::kRepeat, wrap_t), dvec2(0.375, 0.125)),
+        EXPECT_EQ(sample_mip0(image, sampler(code::kLinear, code::kRepeat, wrap_t), dvec2(0.375, 0.125)),
                   0.75 * kTexelRed + 0.25 * kTexelGreen);
     }
     // The bottom-left corner (0, 1): columns -1, 0 and rows 1, 2, half each.
-    EXPECT_EQ(sample_level0(image, sampler(code::kLinear, code::kRepeat, code::kClampToEdge), dvec2(0.0, 1.0)),
+    EXPECT_EQ(sample_mip0(image, sampler(code::kLinear, code::kRepeat, code::kClampToEdge), dvec2(0.0, 1.0)),
               0.5 * kTexelBlue + 0.5 * kTexelClear);
-    EXPECT_EQ(sample_level0(image, sampler(code::kLinear, code::kRepeat, code::kMirroredRepeat), dvec2(0.0, 1.0)),
+    EXPECT_EQ(sample_mip0(image, sampler(code::kLinear, code::kRepeat, code::kMirroredRepeat), dvec2(0.0, 1.0)),
               0.5 * kTexelBlue + 0.5 * kTexelClear);
-    EXPECT_EQ(sample_level0(image, sampler(code::kLinear, code::kRepeat, code::kRepeat), dvec2(0.0, 1.0)),
+    EXPECT_EQ(sample_mip0(image, sampler(code::kLinear, code::kRepeat, code::kRepeat), dvec2(0.0, 1.0)),
               0.25 * (kTexelRed + kTexelGreen + kTexelBlue + kTexelClear));
-    EXPECT_EQ(sample_level0(image, sampler(code::kLinear, code::kClampToEdge, code::kClampToEdge), dvec2(0.0, 1.0)),
+    EXPECT_EQ(sample_mip0(image, sampler(code::kLinear, code::kClampToEdge, code::kClampToEdge), dvec2(0.0, 1.0)),
               kTexelBlue);
 }
 
@@ -169,14 +169,14 @@ TEST(TextureSample, MagFilterDecidesMinFilterIsNotRead) {
     const image::Pixels image = quadrant_image();
     assets::Sampler s = sampler(code::kNearest, code::kRepeat);
     s.min_filter = code::kLinear;
-    EXPECT_EQ(sample_level0(image, s, dvec2(0.3, 0.3)), kTexelRed);
+    EXPECT_EQ(sample_mip0(image, s, dvec2(0.3, 0.3)), kTexelRed);
     s.mag_filter = code::kLinear;
     s.min_filter = code::kNearest;
-    EXPECT_NE(sample_level0(image, s, dvec2(0.3, 0.3)), kTexelRed);
+    EXPECT_NE(sample_mip0(image, s, dvec2(0.3, 0.3)), kTexelRed);
 }
 
 TEST(TextureSample, EmptyImageIsWhite) {
-    EXPECT_EQ(sample_level0(image::Pixels{}, assets::Sampler{}, dvec2(0.3, 0.3)), dvec4(1.0));
+    EXPECT_EQ(sample_mip0(image::Pixels{}, assets::Sampler{}, dvec2(0.3, 0.3)), dvec4(1.0));
 }
 
 }  // namespace
