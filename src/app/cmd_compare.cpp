@@ -23,6 +23,7 @@ using cli::parse_args;
 using cli::parse_number;
 using cli::ParsedArgs;
 using cli::UsageError;
+using cli::value_or_throw;
 
 namespace {
 
@@ -50,9 +51,7 @@ const char* kCompareHelp =
 
 // Reads a colour PNG (grey is widened to rgb).
 std::vector<std::uint8_t> read_colour(const std::string& path, int& width, int& height) {
-    Result<image::Pixels> read = image::read_png(path);
-    if (!read) throw InputError(read.error());
-    image::Pixels& png = *read;
+    image::Pixels png = value_or_throw(image::read_png(path));
     width = png.width;
     height = png.height;
     if (png.channels == 3) return std::move(png.data);
@@ -63,9 +62,7 @@ std::vector<std::uint8_t> read_colour(const std::string& path, int& width, int& 
 }
 
 std::vector<std::uint8_t> read_ids(const std::string& path, int width, int height) {
-    Result<image::Pixels> read = image::read_png(path);
-    if (!read) throw InputError(read.error());
-    image::Pixels& png = *read;
+    image::Pixels png = value_or_throw(image::read_png(path));
     // A 16-bit map would decode to its high bytes (all 0 for small ids).
     if (png.channels != 1 || png.bit_depth != 8)
         throw InputError(path + ": a cell-id map must be an 8-bit greyscale PNG (this one is " +
@@ -119,9 +116,7 @@ int run_compare_command(const Args& args, std::ostream& out, std::ostream& err) 
 
     const image::Comparison c = image::compare_pictures(a, b);
     if (diff) {
-        Result<std::string> png = image::encode_png(a.width, a.height, 3, image::diff_picture(a, b));
-        if (!png) throw InputError(*diff + ": " + png.error());
-        outputs.set(*diff, std::move(*png));
+        outputs.set(*diff, value_or_throw(image::encode_png(a.width, a.height, 3, image::diff_picture(a, b)), *diff));
         outputs.commit();
     }
     out << image::summary_line(c) << "\n";

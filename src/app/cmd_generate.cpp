@@ -21,6 +21,7 @@ using cli::parse_int;
 using cli::parse_number;
 using cli::ParsedArgs;
 using cli::UsageError;
+using cli::value_or_throw;
 
 namespace {
 
@@ -39,9 +40,8 @@ constexpr std::size_t kMaxFloorFileBytes = 4u << 20;
 
 // A JSON file holding [[x, z], ...], {"polygon": [...]} or {"play_area": {"polygon": [...]}}.
 math::Polygon2 read_floor_file(const std::string& file) {
-    const Result<std::vector<unsigned char>> bytes = read_file_bytes(file, kMaxFloorFileBytes, false);
-    if (!bytes) throw InputError(file + ": " + bytes.error());
-    const nlohmann::json j = nlohmann::json::parse(bytes->begin(), bytes->end(), nullptr, false);
+    const std::vector<unsigned char> bytes = value_or_throw(read_file_bytes(file, kMaxFloorFileBytes, false), file);
+    const nlohmann::json j = nlohmann::json::parse(bytes.begin(), bytes.end(), nullptr, false);
     if (j.is_discarded()) throw InputError(file + ": not valid JSON");
     const nlohmann::json* list = &j;
     if (j.is_object() && j.contains("play_area")) list = &j["play_area"];
@@ -89,14 +89,13 @@ int run_generate_command(const Args& args, std::ostream& out, std::ostream& err)
         o.max_overlap = parse_number("--max-overlap", *v);
         if (!(*o.max_overlap >= 0.0 && *o.max_overlap <= 100.0)) throw InputError("--max-overlap must be 0..100 %");
     }
-    auto text = design::generate_layout(o);
-    if (!text) throw InputError(text.error());
+    const std::string text = value_or_throw(design::generate_layout(o));
     if (const auto file = parsed.value("--out")) {
-        outputs.set(*file, *text);
+        outputs.set(*file, text);
         outputs.commit();
         err << "generate: wrote " << o.rooms << " rooms to " << *file << "\n";
     } else {
-        out << *text;
+        out << text;
     }
     return kExitOk;
 }

@@ -20,6 +20,7 @@ using cli::parse_args;
 using cli::parse_int;
 using cli::ParsedArgs;
 using cli::UsageError;
+using cli::value_or_throw;
 
 namespace {
 
@@ -50,11 +51,7 @@ int run_plan_command(const Args& args, std::ostream& out, std::ostream& err) {
     if (const auto png = parsed.value("--png")) outputs.output("--png", *png);
     const layout::Layout layout = load_layout_or_default(parsed.positional[0]);
     std::vector<math::HeadPose> path;
-    if (const auto file = parsed.value("--path")) {
-        auto read = layout::read_path_file(*file);
-        if (!read) throw InputError(read.error());
-        path = std::move(*read);
-    }
+    if (const auto file = parsed.value("--path")) path = value_or_throw(layout::read_path_file(*file));
     const design::Report report = design::make_report(layout);
     const design::Drawing drawing = design::plan_drawing(layout, report, path);
     const double scale = design::plan_scale(drawing, max_size);
@@ -67,9 +64,7 @@ int run_plan_command(const Args& args, std::ostream& out, std::ostream& err) {
     }
     for (const std::string& png : pngs) {
         const image::Pixels image = design::plan_raster(drawing, scale);
-        Result<std::string> bytes = image::encode_png(image.width, image.height, 3, image.data);
-        if (!bytes) throw InputError(png + ": " + bytes.error());
-        outputs.set(png, std::move(*bytes));
+        outputs.set(png, value_or_throw(image::encode_png(image.width, image.height, 3, image.data), png));
     }
     outputs.commit();
     err << "plan: " << layout.rooms.size() << " rooms, " << report.overlaps.size() << " overlapping pairs, "

@@ -13,7 +13,7 @@ namespace impossible::app {
 using cli::CommandOutputs;
 using cli::frame_for;
 using cli::frame_outputs;
-using cli::InputError;
+using cli::value_or_throw;
 using cli::kExitOk;
 using cli::load_layout_or_default;
 using cli::parse_args;
@@ -49,27 +49,26 @@ int run_render_command(const Args& args, std::ostream& out, std::ostream& err) {
     const render::FrameDesc frame = frame_for(layout, options);
 
     std::string fallback_note;
-    Result<gl::Context> context = gl::create_context_with_fallback(options.backend, &fallback_note);
-    if (!context) throw InputError("no OpenGL 4.5 context: " + context.error());
+    const gl::Context context =
+        value_or_throw(gl::create_context_with_fallback(options.backend, &fallback_note), "no OpenGL 4.5 context");
     if (!fallback_note.empty()) err << "note: " << fallback_note << "\n";
 
-    Result<render::Renderer> renderer = render::Renderer::create(context->state(), layout, scene::build_scene(layout));
-    if (!renderer) throw InputError(renderer.error());
-    Result<render::RenderedFrame> result = renderer->render(frame);
-    if (!result) throw InputError(result.error());
+    render::Renderer renderer =
+        value_or_throw(render::Renderer::create(context.state(), layout, scene::build_scene(layout)));
+    const render::RenderedFrame result = value_or_throw(renderer.render(frame));
 
-    const image::Image& image = result->image;
+    const image::Image& image = result.image;
     write_frame_pngs(outputs, options, image.width, image.height, image.rgb, image.ids);
     if (options.stats) {
-        const render::FrameStats& s = result->stats;
+        const render::FrameStats& s = result.stats;
         err << "stats: draw_calls=" << s.draw_calls << " triangles=" << s.triangles
             << " portal_passes_drawn=" << s.portal_passes_drawn << " portal_passes_culled=" << s.portal_passes_culled
             << " portal_fills=" << s.portal_fills << " budget_fills=" << s.budget_fills
             << " max_level=" << s.max_level_reached << "\n";
     }
-    if (result->stats.budget_fills > 0)
+    if (result.stats.budget_fills > 0)
         err << "warning: the frame reached its budget of " << frame.max_portal_passes
-            << " portal passes (--max-portal-passes); " << result->stats.budget_fills
+            << " portal passes (--max-portal-passes); " << result.stats.budget_fills
             << " portals show the fill colour instead of what lies behind them\n";
     return kExitOk;
 }

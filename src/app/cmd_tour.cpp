@@ -21,6 +21,7 @@ using cli::parse_args;
 using cli::parse_number;
 using cli::ParsedArgs;
 using cli::UsageError;
+using cli::value_or_throw;
 
 namespace {
 
@@ -76,15 +77,14 @@ int run_tour_command(const Args& args, std::ostream& out, std::ostream& err) {
     outputs.input("the layout", parsed.positional[0]);
     outputs.output("--out", *out_file);
     const layout::Layout layout = load_layout_or_default(parsed.positional[0]);
-    auto tour = design::plan_tour(layout, options);
-    if (!tour) throw InputError(tour.error());
-    const std::size_t reachable = tour->visited.size() + tour->missed.size();
-    const std::string report = summary(layout, *tour, reachable);
+    const design::Tour tour = value_or_throw(design::plan_tour(layout, options));
+    const std::size_t reachable = tour.visited.size() + tour.missed.size();
+    const std::string report = summary(layout, tour, reachable);
     const std::string header = "impossible tour of " + layout.source + "\n" + report;
-    outputs.set(*out_file, design::path_text(tour->poses, header));
+    outputs.set(*out_file, design::path_text(tour.poses, header));
     outputs.commit();
     out << report;
-    for (const int r : tour->missed) err << "warning: the tour could not reach room \"" << layout.rooms[r].id << "\"\n";
+    for (const int r : tour.missed) err << "warning: the tour could not reach room \"" << layout.rooms[r].id << "\"\n";
     return kExitOk;
 }
 

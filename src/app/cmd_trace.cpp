@@ -24,6 +24,7 @@ using cli::parse_int;
 using cli::parse_view_options;
 using cli::ParsedArgs;
 using cli::trace_desc_for;
+using cli::value_or_throw;
 using cli::view_flag_options;
 using cli::view_options_help;
 using cli::view_value_options;
@@ -66,8 +67,8 @@ int run_trace_command(const Args& args, std::ostream& out, std::ostream& err) {
     const trace::TraceDesc desc = trace_desc_for(frame, threads);
 
     const auto start = std::chrono::steady_clock::now();
-    const trace::Scene scene = trace::prepare_scene(layout).value();
-    const image::Image image = trace::trace_frame(scene, desc).value();
+    const trace::Scene scene = value_or_throw(trace::prepare_scene(layout));
+    const image::Image image = value_or_throw(trace::trace_frame(scene, desc));
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     write_frame_pngs(outputs, options, image.width, image.height, image.rgb, image.ids);

@@ -14,7 +14,7 @@
 
 namespace impossible::bench {
 
-using cli::InputError;
+using cli::value_or_throw;
 using cli::ParsedArgs;
 using cli::kExitOk;
 using cli::load_layout_or_default;
@@ -49,11 +49,11 @@ int run_bench_command(const cli::Args& args, std::ostream& out, std::ostream& er
     const BenchPlan plan = plan_bench(layout, options);
 
     std::string fallback_note;
-    Result<gl::Context> context = gl::create_context_with_fallback(options.view.backend, &fallback_note);
-    if (!context) throw InputError("no OpenGL 4.5 context: " + context.error());
+    const gl::Context context =
+        value_or_throw(gl::create_context_with_fallback(options.view.backend, &fallback_note), "no OpenGL 4.5 context");
     if (!fallback_note.empty()) err << "note: " << fallback_note << "\n";
 
-    const BenchResult result = run_bench(plan, poses, options, context->state(), context->renderer);
+    const BenchResult result = run_bench(plan, poses, options, context.state(), context.renderer);
     write_bench_table(result, options, out);
     if (options.json) outputs.set(*options.json, bench_json(result, options));
     if (options.csv) outputs.set(*options.csv, bench_csv(result));

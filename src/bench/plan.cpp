@@ -15,7 +15,7 @@ using cli::frame_for;
 using cli::parse_int;
 using cli::parse_size;
 
-using cli::InputError;
+using cli::value_or_throw;
 
 namespace {
 
@@ -151,11 +151,10 @@ std::vector<BenchPose> bench_poses(const layout::Layout& layout, const BenchOpti
         const render::FrameDesc f = frame_for(layout, o.view);
         return {{f.head, f.room}};
     }
-    const layout::PathFile file = layout::read_path_file(*o.path);
-    if (!file) throw InputError(file.error());
+    const std::vector<math::HeadPose> file = value_or_throw(layout::read_path_file(*o.path));
     walk::Walker walker(layout);
     std::vector<BenchPose> poses;
-    for (const math::HeadPose& physical : *file) {
+    for (const math::HeadPose& physical : file) {
         walker.step(physical);
         poses.push_back({math::head_pose_from(walker.position(), walker.rotation()), walker.room()});
     }

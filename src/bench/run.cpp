@@ -19,6 +19,7 @@ namespace impossible::bench {
 
 using cli::InputError;
 using cli::trace_desc_for;
+using cli::value_or_throw;
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -177,7 +178,7 @@ struct Measurer {
     // size, with the reference depth: ids and colour PSNR, mean over poses.
     void compare_with_tracer() {
         std::vector<trace::Scene> scenes;
-        for (const layout::Layout& l : plan.layouts) scenes.push_back(trace::prepare_scene(l).value());
+        for (const layout::Layout& l : plan.layouts) scenes.push_back(value_or_throw(trace::prepare_scene(l)));
         std::map<std::tuple<int, size_t, int, int>, image::Image> traced;
         const double n = static_cast<double>(poses.size());
         for (size_t p = 0; p < poses.size(); ++p)
@@ -189,7 +190,7 @@ struct Measurer {
                     trace::TraceDesc t = trace_desc_for(f);
                     t.max_depth = options.reference_depth;
                     t.samples = options.reference_samples;
-                    traced[key] = trace::trace_frame(scenes[r.config.layout_variant], t).value();
+                    traced[key] = value_or_throw(trace::trace_frame(scenes[r.config.layout_variant], t));
                 }
                 const image::Image& t = traced[key];
                 Result<render::RenderedFrame> raster = renderer_of(r.config).render(f);
@@ -212,9 +213,8 @@ BenchResult run_bench(const BenchPlan& plan, const std::vector<BenchPose>& poses
                       gl::StateCache& state, const std::string& gl_renderer) {
     Measurer m{plan, poses, options, {}, {}};
     for (const layout::Layout& l : plan.layouts) {
-        Result<render::Renderer> r = render::Renderer::create(state, l, scene::build_scene(l));
-        if (!r) throw InputError(r.error());
-        m.renderers.push_back(std::make_unique<render::Renderer>(std::move(*r)));
+        m.renderers.push_back(std::make_unique<render::Renderer>(
+            value_or_throw(render::Renderer::create(state, l, scene::build_scene(l)))));
     }
     for (const BenchConfig& c : plan.configs) m.results.push_back({c, {}, {}, {}, 0, 0, 0, 0, 0, 0, 0, {}, false, 0, 0, 0});
     m.probe();

@@ -32,7 +32,7 @@ void CommandOutputs::set(const std::string& path, std::string bytes) {
 }
 
 void CommandOutputs::commit() {
-    if (Result<void> written = write_output_files(pending_); !written) throw InputError(written.error());
+    check(write_output_files(pending_));
     pending_.clear();
 }
 

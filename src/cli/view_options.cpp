@@ -149,9 +149,7 @@ CommandOutputs frame_outputs(const ViewOptions& options) {
 void write_frame_pngs(CommandOutputs& outputs, const ViewOptions& options, int width, int height,
                       const std::vector<std::uint8_t>& rgb, const std::vector<std::uint8_t>& ids) {
     auto encode = [&](const std::string& path, int channels, const std::vector<std::uint8_t>& pixels) {
-        Result<std::string> png = image::encode_png(width, height, channels, pixels);
-        if (!png) throw InputError(path + ": " + png.error());
-        outputs.set(path, std::move(*png));
+        outputs.set(path, value_or_throw(image::encode_png(width, height, channels, pixels), path));
     };
     encode(options.out, 3, rgb);
     if (options.ids) encode(*options.ids, 1, ids);

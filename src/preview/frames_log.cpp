@@ -10,6 +10,7 @@
 namespace impossible::preview {
 
 namespace fs = std::filesystem;
+using cli::check;
 using cli::InputError;
 
 namespace {
@@ -84,25 +85,21 @@ std::string numbered(const fs::path& dir, const char* stem, long n, const char* 
     return (dir / name).string();
 }
 
-void write_png_or_throw(const std::string& path, int w, int h, int channels, const std::vector<std::uint8_t>& pixels) {
-    if (Result<void> written = image::write_png(path, w, h, channels, pixels); !written) throw InputError(written.error());
-}
-
 void save_frame(FrameFiles& files, const image::Image& image, const FrameRecord& record) {
-    write_png_or_throw(numbered(files.dir, "frame", record.frame), image.width, image.height, 3, image.rgb);
-    write_png_or_throw(numbered(files.dir, "frame", record.frame, "-ids.png"), image.width, image.height, 1,
-                       image.ids);
+    check(image::write_png(numbered(files.dir, "frame", record.frame), image.width, image.height, 3, image.rgb));
+    check(image::write_png(numbered(files.dir, "frame", record.frame, "-ids.png"), image.width, image.height, 1,
+                           image.ids));
     files.log << frame_line(record) << std::flush;
 }
 
 void save_window(const FrameFiles& files, long frame, int w, int h, const std::vector<std::uint8_t>& rgb) {
-    write_png_or_throw(numbered(files.dir, "window", frame), w, h, 3, rgb);
+    check(image::write_png(numbered(files.dir, "window", frame), w, h, 3, rgb));
 }
 
 std::string save_screenshot(FrameFiles& files, int w, int h, const std::vector<std::uint8_t>& rgb) {
     while (fs::exists(numbered(files.dir, "screenshot", files.shot_number))) ++files.shot_number;
     const std::string name = numbered(files.dir, "screenshot", files.shot_number);
-    write_png_or_throw(name, w, h, 3, rgb);
+    check(image::write_png(name, w, h, 3, rgb));
     return name;
 }
 

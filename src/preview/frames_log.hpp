@@ -52,11 +52,8 @@ FrameFiles open_frame_files(const std::optional<std::string>& screenshots);
 // DIR/STEM-NNNN.png (or another suffix).
 std::string numbered(const std::filesystem::path& dir, const char* stem, long n, const char* suffix = ".png");
 
-// Throws InputError naming the file that could not be written.
-void write_png_or_throw(const std::string& path, int width, int height, int channels,
-                        const std::vector<std::uint8_t>& pixels);
-
-// frame-NNNN.png, frame-NNNN-ids.png and the line of frames.jsonl.
+// frame-NNNN.png, frame-NNNN-ids.png and the line of frames.jsonl. The
+// savers throw InputError naming a file that could not be written.
 void save_frame(FrameFiles& files, const image::Image& image, const FrameRecord& record);
 
 // The window's pixels (RGB rows from the top) as window-NNNN.png, or as the

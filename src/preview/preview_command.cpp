@@ -26,7 +26,7 @@
 
 namespace impossible::preview {
 
-using cli::InputError;
+using cli::check;
 using cli::kExitOk;
 
 namespace {
@@ -182,7 +182,7 @@ bool run_frame(PreviewSession& s, long frame, std::ostream& err) {
     if (fb_w <= 0 || fb_h <= 0) return true;  // minimised
     const WindowLayout places = window_layout(fb_w, fb_h, eye_aspect(s.options), s.options.view);
     const render::FrameDesc desc = frame_desc(s, places.eye_rects[0]);
-    if (Result<void> drawn = s.shown.renderer->draw(desc, &s.stats); !drawn) throw InputError(drawn.error());
+    check(s.shown.renderer->draw(desc, &s.stats));
     s.clock.io_seconds = save_rendered_frame(s, frame, desc, passed);
     draw_window(s, places, desc, fb_w, fb_h);
     s.clock.io_seconds += save_window_files(s, frame, keys.screenshot, fb_w, fb_h, err);

@@ -8,7 +8,7 @@
 
 namespace impossible::preview {
 
-using cli::InputError;
+using cli::value_or_throw;
 
 Result<Shown> build_shown(gl::StateCache& state, layout::Layout layout, const std::string& room_id) {
     Shown s;
@@ -43,9 +43,7 @@ namespace {
 std::unique_ptr<PreviewWindow> open_preview_window(const PreviewOptions& o, const std::string& title) {
     const render::FrameDesc& f = o.frame;
     const int width = o.view == PreviewView::Anaglyph ? f.eye_width : 2 * f.eye_width;
-    Result<std::unique_ptr<PreviewWindow>> opened = open_window(width, f.eye_height, title, o.vsync && !o.screenshots);
-    if (!opened) throw InputError(opened.error());
-    return std::move(*opened);
+    return value_or_throw(open_window(width, f.eye_height, title, o.vsync && !o.screenshots));
 }
 
 }  // namespace
@@ -54,25 +52,15 @@ void open_session(PreviewSession& s, PreviewOptions options) {
     s.options = std::move(options);
     const PreviewOptions& o = s.options;
     layout::Layout first = cli::load_layout_or_default(o.layout_path);
-    if (o.path_file) {
-        layout::PathFile path = layout::read_path_file(*o.path_file);
-        if (!path) throw InputError(path.error());
-        s.path = std::move(*path);
-    }
+    if (o.path_file) s.path = value_or_throw(layout::read_path_file(*o.path_file));
     s.files = open_frame_files(o.screenshots);
 
     s.title = "impossible preview - " + (first.name.empty() ? first.source : first.name);
     s.window = open_preview_window(o, s.title);
     s.state = std::make_unique<gl::StateCache>();
-    Result<Shown> shown = build_shown(*s.state, std::move(first), "");
-    if (!shown) throw InputError(shown.error());
-    s.shown = std::move(*shown);
-    Result<OverlayProgram> overlay = build_overlay_program();
-    if (!overlay) throw InputError(overlay.error());
-    s.overlay = std::move(*overlay);
-    Result<Presenter> presenter = build_presenter();
-    if (!presenter) throw InputError(presenter.error());
-    s.presenter = std::move(*presenter);
+    s.shown = value_or_throw(build_shown(*s.state, std::move(first), ""));
+    s.overlay = value_or_throw(build_overlay_program());
+    s.presenter = value_or_throw(build_presenter());
 
     if (o.layout_path) s.watcher = watch_layout(*o.layout_path);
     s.physical = start_pose(*s.shown.layout);
