@@ -30,7 +30,7 @@ void StateCache::invalidate() {
     blend_color_known_ = false;
     scissor_known_ = false;
     for (bool& known : viewport_known_) known = false;
-    program_ = vertex_array_ = draw_framebuffer_ = read_framebuffer_ = clip_depth_ = kUnknown;
+    program_ = vertex_array_ = draw_framebuffer_ = read_framebuffer_ = draw_indirect_buffer_ = clip_depth_ = kUnknown;
     for (GLuint& t : textures_) t = kUnknown;
 }
 
@@ -139,6 +139,12 @@ void StateCache::read_framebuffer(GLuint framebuffer) {
     read_framebuffer_ = framebuffer;
 }
 
+void StateCache::draw_indirect_buffer(GLuint buffer) {
+    if (buffer == draw_indirect_buffer_) return;
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, buffer);
+    draw_indirect_buffer_ = buffer;
+}
+
 void StateCache::texture(GLuint unit, GLuint texture) {
     assert(unit < static_cast<GLuint>(kTextureUnits));
     if (texture == textures_[unit]) return;
@@ -161,6 +167,7 @@ void StateCache::release_bindings() {
     program(0);
     draw_framebuffer(0);
     read_framebuffer(0);
+    draw_indirect_buffer(0);
     for (int unit = 0; unit < kTextureUnits; ++unit) texture(static_cast<GLuint>(unit), 0);
 }
 

@@ -2,7 +2,8 @@
 // compares before it calls GL (as filament's OpenGLContext does). Render code
 // describes each pass with one immutable PassState and never calls
 // glEnable/glDepthFunc/... itself; the bindings (program, vertex array, the
-// texture on each unit, the draw and read framebuffers), the viewports and
+// texture on each unit, the draw and read framebuffers, the indirect draw
+// buffer), the viewports and
 // the clip control go through the same cache. Each draw names all of its
 // state; what GL already holds costs nothing, so nothing is ever put back.
 //
@@ -112,6 +113,8 @@ public:
     void vertex_array(GLuint vertex_array);
     void draw_framebuffer(GLuint framebuffer);
     void read_framebuffer(GLuint framebuffer);
+    // GL_DRAW_INDIRECT_BUFFER, which glMultiDrawElementsIndirect reads.
+    void draw_indirect_buffer(GLuint buffer);
     // glBindTextureUnit: `texture` on its own target of unit `unit` (below
     // kTextureUnits); 0 unbinds every target of the unit.
     void texture(GLuint unit, GLuint texture);
@@ -126,7 +129,7 @@ public:
     void deleting_framebuffer(GLuint framebuffer);
 
     // Binds 0 for every object binding the cache holds (program, vertex
-    // array, framebuffers, texture units), so that the objects of whoever
+    // array, framebuffers, indirect buffer, texture units), so that the objects of whoever
     // drew last may be deleted. Called once when a user is done with the
     // context for now (the renderer, at the end of a frame).
     void release_bindings();
@@ -148,6 +151,7 @@ private:
     GLuint vertex_array_ = kUnknown;
     GLuint draw_framebuffer_ = kUnknown;
     GLuint read_framebuffer_ = kUnknown;
+    GLuint draw_indirect_buffer_ = kUnknown;
     static_assert(kTextureUnits == 4, "one kUnknown per texture unit below");
     GLuint textures_[kTextureUnits] = {kUnknown, kUnknown, kUnknown, kUnknown};
     GLenum clip_depth_ = kUnknown;

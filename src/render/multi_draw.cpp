@@ -8,12 +8,9 @@ void begin_indirect_frame(IndirectDraws& draws) {
     if (!draws.buffer) draws.buffer = gl::create_buffer();
     draws.used = 0;
     draws.pending.clear();
-    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, draws.buffer.get());
 }
 
-void unbind_indirect() { glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0); }
-
-int submit_indirect(IndirectDraws& draws) {
+int submit_indirect(gl::StateCache& state, IndirectDraws& draws) {
     const std::size_t n = draws.pending.size();
     if (n == 0) return 0;
     if (n == 1) {
@@ -35,6 +32,7 @@ int submit_indirect(IndirectDraws& draws) {
     const std::size_t offset = draws.used * sizeof(IndirectDraw);
     glNamedBufferSubData(draws.buffer.get(), static_cast<GLintptr>(offset),
                          static_cast<GLsizeiptr>(n * sizeof(IndirectDraw)), draws.pending.data());
+    state.draw_indirect_buffer(draws.buffer.get());
     glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, reinterpret_cast<const void*>(offset),
                                 static_cast<GLsizei>(n), 0);
     draws.used += n;

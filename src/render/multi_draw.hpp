@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "gl/handles.hpp"
+#include "gl/state.hpp"
 #include "scene/scene.hpp"
 
 namespace impossible::render {
@@ -33,10 +34,8 @@ struct IndirectDraws {
     std::vector<IndirectDraw> pending;  // not yet submitted
 };
 
-// Binds the buffer as GL_DRAW_INDIRECT_BUFFER and starts writing it from the
-// beginning; unbind_indirect at the end of the frame.
+// Starts writing the buffer from the beginning (made on first use).
 void begin_indirect_frame(IndirectDraws& draws);
-void unbind_indirect();
 
 // Queues a range for both eyes' instances (`instances`: 2, or 1 in two-pass
 // stereo).
@@ -46,8 +45,9 @@ inline void queue_range(IndirectDraws& draws, const scene::IndexRange& range, in
 }
 
 // Submits the queued ranges with the state bound now: nothing for none, one
-// glDrawElementsInstanced for one, one glMultiDrawElementsIndirect for more.
+// glDrawElementsInstanced for one, one glMultiDrawElementsIndirect for more,
+// with the buffer bound as GL_DRAW_INDIRECT_BUFFER through the cache.
 // Returns the number of GL draw calls made (0 or 1).
-int submit_indirect(IndirectDraws& draws);
+int submit_indirect(gl::StateCache& state, IndirectDraws& draws);
 
 }  // namespace impossible::render

@@ -22,8 +22,8 @@ std::vector<int> counts_for(GLenum target, GLenum format) {
 // Kept at most per renderer: enough for a sweep of 2, 4, 8 and 16 samples.
 constexpr size_t kMaxMultisampledTargets = 4;
 
-Target* find_target(Multisampling& m, const FrameDesc& frame) {
-    for (Target& t : m.targets)
+const Target* find_target(const Multisampling& m, const FrameDesc& frame) {
+    for (const Target& t : m.targets)
         if (t.samples == frame.samples && t.width == 2 * frame.eye_width && t.height == frame.eye_height &&
             t.depth == frame.depth)
             return &t;
@@ -39,12 +39,12 @@ Result<gl::Framebuffer> framebuffer_around(GLuint renderbuffer, const char* what
     return fb;
 }
 
-Result<void> build_id_resolve(Multisampling& m, int samples) {
-    if (m.id_resolve.size() <= static_cast<size_t>(samples)) m.id_resolve.resize(samples + 1);
-    if (m.id_resolve[samples]) return {};
+Result<void> build_id_resolve(std::vector<gl::Program>& id_resolve, int samples) {
+    if (id_resolve.size() <= static_cast<size_t>(samples)) id_resolve.resize(samples + 1);
+    if (id_resolve[samples]) return {};
     Result<gl::Program> built = build_id_resolve_program(samples);
     if (!built) return Error{built.error()};
-    m.id_resolve[samples] = std::move(*built);
+    id_resolve[samples] = std::move(*built);
     return {};
 }
 
@@ -77,9 +77,9 @@ Result<void> check_sample_count(int samples, DepthMode depth) {
                  ", GL_MAX_INTEGER_SAMPLES " + std::to_string(max_integer) + ")"};
 }
 
-Result<void> ensure_multisampled(RendererData& r, const FrameDesc& frame) {
+Result<void> ensure_multisampled(Programs& programs, FrameTargets& targets, const FrameDesc& frame) {
     if (frame.samples <= 1) return {};
-    Multisampling& m = r.multisampling;
+    Multisampling& m = targets.multisampling;
     if (!find_target(m, frame)) {
         if (Result<void> offered = check_sample_count(frame.samples, frame.depth); !offered) return offered;
         Result<Target> made = create_multisampled_target(2 * frame.eye_width, frame.eye_height, frame.depth,
@@ -89,27 +89,27 @@ Result<void> ensure_multisampled(RendererData& r, const FrameDesc& frame) {
         m.targets.push_back(std::move(*made));
     }
     if (!m.colour_out) {
-        Result<gl::Framebuffer> colour = framebuffer_around(r.target.color.get(), "colour");
+        Result<gl::Framebuffer> colour = framebuffer_around(targets.target.color.get(), "colour");
         if (!colour) return Error{colour.error()};
-        Result<gl::Framebuffer> ids = framebuffer_around(r.target.ids.get(), "id");
+        Result<gl::Framebuffer> ids = framebuffer_around(targets.target.ids.get(), "id");
         if (!ids) return Error{ids.error()};
         m.colour_out = std::move(*colour);
         m.ids_out = std::move(*ids);
     }
-    return build_id_resolve(m, frame.samples);
+    return build_id_resolve(programs.id_resolve, frame.samples);
 }
 
-Target& drawing_target(RendererData& r, const FrameDesc& frame) {
-    if (frame.samples <= 1) return r.target;
-    Target* t = find_target(r.multisampling, frame);
+const Target& drawing_target(const FrameTargets& targets, const FrameDesc& frame) {
+    if (frame.samples <= 1) return targets.target;
+    const Target* t = find_target(targets.multisampling, frame);
     assert(t);  // ensure_multisampled made it
     return *t;
 }
 
-void resolve_multisampled(RendererData& r, const FrameDesc& frame) {
+void resolve_multisampled(const RendererData& r, const FrameTargets& targets, const FrameDesc& frame) {
     if (frame.samples <= 1) return;
-    Multisampling& m = r.multisampling;
-    const Target& from = drawing_target(r, frame);
+    const Multisampling& m = targets.multisampling;
+    const Target& from = drawing_target(targets, frame);
     gl::StateCache& state = *r.state;
     // Blits obey the scissor; the id pass writes its one attachment everywhere.
     state.apply(gl::plain_2d_state(false), 0);
@@ -121,11 +121,10 @@ void resolve_multisampled(RendererData& r, const FrameDesc& frame) {
 
     state.draw_framebuffer(m.ids_out.get());
     state.viewport({0, 0, w, h});
-    state.program(m.id_resolve[from.samples].get());
-    glBindTextureUnit(0, from.ids_texture.get());
+    state.program(r.programs.id_resolve[static_cast<size_t>(from.samples)].get());
+    state.texture(0, from.ids_texture.get());
     state.vertex_array(r.empty_vao.get());
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindTextureUnit(0, 0);
 }
 
 }  // namespace impossible::render

@@ -31,14 +31,13 @@ std::vector<int> offered_sample_counts(DepthMode depth);
 // An error naming the counts on offer when `samples` is not one of them.
 Result<void> check_sample_count(int samples, DepthMode depth);
 
-// What a renderer keeps for multisampled frames.
+// What a renderer keeps for multisampled frames (the id resolve's programs
+// are with its others, render/renderer_data.hpp).
 struct Multisampling {
     // A few multisampled targets, by size, depth mode and count, so that a
     // benchmark alternating sample counts frame by frame does not re-create
     // them every frame.
     std::vector<Target> targets;
-    // The id resolve program per sample count (index: count), built on first use.
-    std::vector<gl::Program> id_resolve;
     // Framebuffers around the single-sample target's colour and ids alone:
     // a blit writes every draw buffer, and RGBA8 cannot go into R8UI.
     gl::Framebuffer colour_out;

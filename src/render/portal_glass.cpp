@@ -28,23 +28,23 @@ namespace {
 
 bool is_white(const glm::dvec3& c) { return c.x == 1.0 && c.y == 1.0 && c.z == 1.0; }
 
-// A full-target triangle through the clear program, in a region pass.
-void draw_region(DrawContext& ctx, const LevelView& view, Pass pass) {
-    RendererData& r = ctx.renderer;
-    use_pass(ctx, view, pass, view.level + 1);
-    const GLuint program = r.clear_depth.program.get();
-    r.state->program(program);
-    glProgramUniform1f(program, r.clear_depth.far_depth, ctx.frame.depth == DepthMode::ReversedZ ? 0.0f : 1.0f);
+// A full-target triangle through the clear program, in a region pass over
+// the portal's marked pixels; `k` is the blend colour (Tint).
+void draw_region(const DrawContext& ctx, const LevelView& view, Pass pass, const std::array<NdcRect, 2>& rects,
+                 const glm::dvec3& k = glm::dvec3(1.0)) {
+    const ClearDepthProgram& clear = ctx.renderer.programs.clear_depth;
+    const GLuint program = clear.program.get();
+    glProgramUniform1f(program, clear.far_depth, far_depth(ctx.frame));
     const glm::dvec3 bg = shading::kBackgroundColor;
-    glProgramUniform4f(program, r.clear_depth.color, float(bg.r), float(bg.g), float(bg.b), 1.0f);
-    draw_full_target(ctx);
-    r.state->program(ctx.program.program.get());
+    glProgramUniform4f(program, clear.color, float(bg.r), float(bg.g), float(bg.b), 1.0f);
+    glProgramUniform1i(program, clear.eye_quads, 0);
+    draw_full_target(ctx, view, {pass, view.level + 1, program, portal_scissor(ctx, view, rects), glm::vec3(k)});
 }
 
 // The pixels of the drawing target in the portal's scissor (all of them
 // without culling).
 gl::ScissorRect region_of(const DrawContext& ctx, const LevelView& view, const std::array<NdcRect, 2>& rects) {
-    const Target& t = *ctx.target;
+    const Target& t = ctx.target;
     if (!ctx.frame.cull_portals) return {0, 0, t.width, t.height};
     gl::ScissorRect s = scissor_of(ctx, rects, view);
     s.width = std::max(0, std::min(s.width, t.width - s.x));
@@ -54,14 +54,17 @@ gl::ScissorRect region_of(const DrawContext& ctx, const LevelView& view, const s
 
 // Copies the region's colour into the next free saved colour (made, or
 // remade for another size, on first use); returns its texture.
-GLuint save_colour(DrawContext& ctx, const gl::ScissorRect& region) {
-    const Target& t = *ctx.target;
-    std::vector<SavedColour>& saves = ctx.renderer.saved_colours;
-    const size_t slot = ctx.saved_colours_used++;
+GLuint save_colour(const DrawContext& ctx, const gl::ScissorRect& region) {
+    const Target& t = ctx.target;
+    std::vector<SavedColour>& saves = ctx.scratch.saved_colours;
+    const size_t slot = ctx.scratch.saved_colours_used++;
     if (saves.size() <= slot) saves.resize(slot + 1);
     SavedColour& s = saves[slot];
     const GLenum kind = t.samples > 1 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D;
     if (s.texture.get() == 0 || s.width != t.width || s.height != t.height || s.samples != t.samples) {
+        // A render-to-texture portal's windows are of its texture's size:
+        // the old copy may be bound still.
+        if (s.texture) ctx.renderer.state->deleting_texture(s.texture.get());
         s.texture = gl::create_texture(kind);
         if (t.samples > 1)
             glTextureStorage2DMultisample(s.texture.get(), t.samples, GL_RGBA8, t.width, t.height, GL_TRUE);
@@ -81,31 +84,27 @@ GLuint save_colour(DrawContext& ctx, const gl::ScissorRect& region) {
 }
 
 // colour ← r · (the copy, or the fill colour without one) + colour · (1 - r) · tint.
-void blend_window(DrawContext& ctx, const LevelView& view, const scene::PortalInfo& w, GLuint saved) {
-    RendererData& r = ctx.renderer;
-    const std::optional<WindowBlendProgram>& slot = r.window_blend[ctx.target->samples > 1 ? 1 : 0];
+void blend_window(const DrawContext& ctx, const LevelView& view, const std::array<NdcRect, 2>& rects,
+                  const scene::PortalInfo& w, GLuint saved) {
+    const std::optional<WindowBlendProgram>& slot = ctx.renderer.programs.window_blend[ctx.target.samples > 1 ? 1 : 0];
     assert(slot);  // prepare_window_blend made it with the frame
     const WindowBlendProgram& blend = *slot;
     const double k = w.reflectance;
     const glm::dvec3 through = (1.0 - k) * w.tint;
-    r.state->blend_color(float(through.r), float(through.g), float(through.b), 1.0f);
-    use_pass(ctx, view, Pass::WindowBlend, view.level + 1);
     const GLuint program = blend.program.get();
-    r.state->program(program);
     glProgramUniform1i(program, blend.use_saved, saved != 0 ? 1 : 0);
     glProgramUniform3f(program, blend.scale, float(k), float(k), float(k));
     const glm::dvec3 fill = k * shading::kPortalFillColor;
     glProgramUniform3f(program, blend.constant, float(fill.r), float(fill.g), float(fill.b));
-    if (saved != 0) glBindTextureUnit(0, saved);
-    draw_full_target(ctx);
-    if (saved != 0) glBindTextureUnit(0, 0);
-    r.state->program(ctx.program.program.get());
+    ctx.renderer.state->texture(0, saved);  // the copy, or none
+    draw_full_target(ctx, view,
+                     {Pass::WindowBlend, view.level + 1, program, portal_scissor(ctx, view, rects), glm::vec3(through)});
 }
 
 }  // namespace
 
-Result<void> prepare_window_blend(RendererData& r, bool multisample) {
-    std::optional<WindowBlendProgram>& slot = r.window_blend[multisample ? 1 : 0];
+Result<void> prepare_window_blend(Programs& programs, bool multisample) {
+    std::optional<WindowBlendProgram>& slot = programs.window_blend[multisample ? 1 : 0];
     if (slot) return {};
     Result<WindowBlendProgram> built = build_window_blend_program(multisample);
     if (!built) return Error{built.error()};
@@ -113,44 +112,39 @@ Result<void> prepare_window_blend(RendererData& r, bool multisample) {
     return {};
 }
 
-void draw_mirror(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
+void draw_mirror(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
     const scene::PortalInfo& m = ctx.renderer.portals[p];
     mark_portal(ctx, view, p, rects);
-    ctx.stats.portal_passes_drawn += 1;
+    ctx.scratch.stats.portal_passes_drawn += 1;
     draw_level(ctx, reflected_view(ctx, view, p, rects, shading::max_channel(m.tint)));
-    if (!is_white(m.tint)) {
-        limit_to_portal(ctx, view, rects);
-        ctx.renderer.state->blend_color(float(m.tint.r), float(m.tint.g), float(m.tint.b), 1.0f);
-        draw_region(ctx, view, Pass::Tint);
-    }
+    if (!is_white(m.tint)) draw_region(ctx, view, Pass::Tint, rects, m.tint);
     unmark_portal(ctx, view, p, rects);
 }
 
-void draw_window(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
+void draw_window(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
     const scene::PortalInfo& w = ctx.renderer.portals[p];
     const double k = w.reflectance;
     const double through_factor = (1.0 - k) * shading::max_channel(w.tint);
     const bool reflect = view.weight * k >= shading::kMinBranchWeight;
     const bool through = view.weight * through_factor >= shading::kMinBranchWeight;
+    FrameScratch& s = ctx.scratch;
     mark_portal(ctx, view, p, rects);
 
     GLuint saved = 0;
     if (reflect) {
-        ctx.stats.portal_passes_drawn += 1;
+        s.stats.portal_passes_drawn += 1;
         draw_level(ctx, reflected_view(ctx, view, p, rects, k));
-        limit_to_portal(ctx, view, rects);
         saved = save_colour(ctx, region_of(ctx, view, rects));
-        draw_region(ctx, view, Pass::ClearRegion);
+        draw_region(ctx, view, Pass::ClearRegion, rects);
     }
     if (through) {
-        ctx.stats.portal_passes_drawn += 1;
+        s.stats.portal_passes_drawn += 1;
         draw_level(ctx, child_view(ctx, view, p, rects, through_factor));
-        limit_to_portal(ctx, view, rects);
     } else {
         draw_fill(ctx, view, p, rects, view.level + 1);
     }
-    blend_window(ctx, view, w, saved);
-    if (reflect) ctx.saved_colours_used -= 1;
+    blend_window(ctx, view, rects, w, saved);
+    if (reflect) s.saved_colours_used -= 1;
     unmark_portal(ctx, view, p, rects);
 }
 

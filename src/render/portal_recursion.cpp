@@ -9,7 +9,8 @@
 // portal's plane, recurse, then unmark and put the box's depth back so that
 // it occludes what the rest of this level draws. Every draw is one instanced
 // draw for both eyes; an eye that cannot see a portal gets an empty
-// rectangle, which its clip distances turn into no work.
+// rectangle, which its clip distances turn into no work. Every draw names its
+// pass, stencil reference, program and scissor (draw_state.hpp).
 #include <algorithm>
 #include <cassert>
 
@@ -17,35 +18,15 @@
 
 namespace impossible::render {
 
-void set_cell_id(const DrawContext& ctx, unsigned id, bool unshaded) {
-    const GLuint p = ctx.program.program.get();
-    glProgramUniform1ui(p, ctx.program.cell_id, id);
-    glProgramUniform1i(p, ctx.program.unshaded, unshaded ? 1 : 0);
-}
-
-void draw_full_target(DrawContext& ctx) {
-    RendererData& r = ctx.renderer;
-    r.state->vertex_array(r.empty_vao.get());
-    // The triangle has no eye: with per-eye viewports it is drawn through
-    // viewport 0, widened to the whole target for the moment.
-    const bool indexed = ctx.frame.stereo == StereoMode::ViewportIndex;
-    if (indexed) r.state->viewport_indexed(0, {0, 0, 2 * ctx.frame.eye_width, ctx.frame.eye_height});
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    if (indexed) r.state->viewport_indexed(0, {0, 0, ctx.frame.eye_width, ctx.frame.eye_height});
-    ctx.stats.draw_calls += 1;
-    r.state->vertex_array(r.gpu.vao.get());
-}
-
-void clear_depth_in_portal(DrawContext& ctx, const LevelView& view, int stencil_ref,
+void clear_depth_in_portal(const DrawContext& ctx, const LevelView& view, int stencil_ref,
                            const std::array<NdcRect, 2>& rects) {
-    RendererData& r = ctx.renderer;
-    const ClearDepthProgram& clear = r.clear_depth;
-    use_pass(ctx, view, Pass::ClearDepth, stencil_ref);
-    r.state->program(clear.program.get());
-    glProgramUniform1f(clear.program.get(), clear.far_depth, ctx.frame.depth == DepthMode::ReversedZ ? 0.0f : 1.0f);
+    const ClearDepthProgram& clear = ctx.renderer.programs.clear_depth;
+    const GLuint program = clear.program.get();
+    const TargetDraw draw{Pass::ClearDepth, stencil_ref, program, portal_scissor(ctx, view, rects)};
+    glProgramUniform1f(program, clear.far_depth, far_depth(ctx.frame));
     if (!ctx.frame.cull_portals) {
-        draw_full_target(ctx);
-        r.state->program(ctx.program.program.get());
+        glProgramUniform1i(program, clear.eye_quads, 0);
+        draw_full_target(ctx, view, draw);
         return;
     }
     // One rectangle per eye that sees the portal, in one instanced draw: the
@@ -56,48 +37,39 @@ void clear_depth_in_portal(DrawContext& ctx, const LevelView& view, int stencil_
     // viewport's coordinates: the whole target's in clip-shift and
     // viewport-index mode (drawn through the widened viewport 0), the eye's
     // own in two-pass mode.
-    const bool whole_target = ctx.frame.stereo != StereoMode::TwoPass;
+    const bool side_by_side = ctx.frame.stereo != StereoMode::TwoPass;
     float quads[2][4];
     int count = 0;
     for (int e = 0; e < 2; ++e) {
         if (!view.eyes[e].active || rects[e].empty()) continue;
         const NdcRect q = intersect(widened(rects[e], 2.0, ctx.frame.eye_width, ctx.frame.eye_height), NdcRect{});
-        const double shift = whole_target ? (e == 0 ? -1.0 : 1.0) : 0.0;
-        const double scale = whole_target ? 0.5 : 1.0;
+        const double shift = side_by_side ? (e == 0 ? -1.0 : 1.0) : 0.0;
+        const double scale = side_by_side ? 0.5 : 1.0;
         quads[count][0] = static_cast<float>(scale * (q.x0 + shift));
         quads[count][1] = static_cast<float>(q.y0);
         quads[count][2] = static_cast<float>(scale * (q.x1 + shift));
         quads[count][3] = static_cast<float>(q.y1);
         ++count;
     }
-    if (count > 0) {
-        glProgramUniform4fv(clear.program.get(), clear.rects, count, &quads[0][0]);
-        glProgramUniform1i(clear.program.get(), clear.eye_quads, 1);
-        r.state->vertex_array(r.empty_vao.get());
-        const bool indexed = ctx.frame.stereo == StereoMode::ViewportIndex;
-        if (indexed) r.state->viewport_indexed(0, {0, 0, 2 * ctx.frame.eye_width, ctx.frame.eye_height});
-        glDrawArraysInstanced(GL_TRIANGLES, 0, 6, count);
-        if (indexed) r.state->viewport_indexed(0, {0, 0, ctx.frame.eye_width, ctx.frame.eye_height});
-        ctx.stats.draw_calls += 1;
-        r.state->vertex_array(r.gpu.vao.get());
-        glProgramUniform1i(clear.program.get(), clear.eye_quads, 0);
-    }
-    r.state->program(ctx.program.program.get());
+    if (count == 0) return;
+    glProgramUniform4fv(program, clear.rects, count, &quads[0][0]);
+    glProgramUniform1i(program, clear.eye_quads, 1);
+    draw_full_target(ctx, view, draw, count);
 }
 
 namespace {
 
 // One visible portal of `view`: the fill at the depth limit, or mark, depth
 // reset, the view through it (recursively) and unmark.
-void draw_portal(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
+void draw_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
     const int level = view.level;
-    limit_to_portal(ctx, view, rects);
+    FrameStats& stats = ctx.scratch.stats;
     // The recursion limit, or the frame's budget of portal passes spent:
     // the portal shows the fill colour.
-    const bool over_budget = ctx.stats.portal_passes_drawn >= ctx.frame.max_portal_passes;
+    const bool over_budget = stats.portal_passes_drawn >= ctx.frame.max_portal_passes;
     if (level >= ctx.frame.max_depth || over_budget) {
         draw_fill(ctx, view, p, rects, level);
-        if (over_budget && level < ctx.frame.max_depth) ctx.stats.budget_fills += 1;
+        if (over_budget && level < ctx.frame.max_depth) stats.budget_fills += 1;
         return;
     }
     switch (ctx.renderer.portals[p].kind) {
@@ -111,7 +83,7 @@ void draw_portal(DrawContext& ctx, const LevelView& view, int p, const std::arra
             break;
     }
     mark_portal(ctx, view, p, rects);
-    ctx.stats.portal_passes_drawn += 1;
+    stats.portal_passes_drawn += 1;
     draw_level(ctx, child_view(ctx, view, p, rects));
     unmark_portal(ctx, view, p, rects);
 }
@@ -119,42 +91,39 @@ void draw_portal(DrawContext& ctx, const LevelView& view, int p, const std::arra
 // One occlusion query per visible portal of this level, drawn after the
 // cell's surfaces: whether any pixel of the box is visible. Zero for every
 // portal that does not pass (no query there).
-std::vector<GLuint> test_portal_visibility(DrawContext& ctx, const LevelView& view, const std::vector<int>& portals,
+std::vector<GLuint> test_portal_visibility(const DrawContext& ctx, const LevelView& view,
+                                           const std::vector<int>& portals,
                                            const std::vector<std::array<NdcRect, 2>>& visible) {
-    RendererData& r = ctx.renderer;
+    FrameScratch& s = ctx.scratch;
     std::vector<GLuint> queries(portals.size(), 0);
-    use_pass(ctx, view, Pass::PortalTest, view.level);
+    const SceneDraw draw{Pass::PortalTest, view.level, &ctx.scene_program, level_scissor(ctx, view)};
     for (size_t k = 0; k < portals.size(); ++k) {
         if (visible[k][0].empty() && visible[k][1].empty()) continue;
-        if (ctx.mark_queries_used == r.mark_queries.size())
-            r.mark_queries.push_back(gl::create_query(GL_ANY_SAMPLES_PASSED));
-        queries[k] = r.mark_queries[ctx.mark_queries_used++].get();
+        if (s.mark_queries_used == s.mark_queries.size()) s.mark_queries.push_back(gl::create_query(GL_ANY_SAMPLES_PASSED));
+        queries[k] = s.mark_queries[s.mark_queries_used++].get();
         glBeginQuery(GL_ANY_SAMPLES_PASSED, queries[k]);
-        draw_portal_box(ctx, view, portals[k], visible[k]);
+        draw_portal_box(ctx, view, draw, portals[k], visible[k]);
         glEndQuery(GL_ANY_SAMPLES_PASSED);
     }
     return queries;
 }
 
 // draw_portal for a portal of the head's cell, timed by the profiler.
-void draw_top_portal_profiled(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
+void draw_top_portal_profiled(const DrawContext& ctx, const LevelView& view, int p,
+                              const std::array<NdcRect, 2>& rects) {
     ctx.profiler->begin_top_portal(p);
     draw_portal(ctx, view, p, rects);
-    ctx.profiler->end_top_portal(ctx.stats);
+    ctx.profiler->end_top_portal(ctx.scratch.stats);
 }
 
-}  // namespace
-
-void draw_level(DrawContext& ctx, const LevelView& view) {
-    RendererData& r = ctx.renderer;
-    assert(view.cell >= 0 && static_cast<size_t>(view.cell) < r.cells.size());
-    const int level = view.level;
-    ctx.stats.max_level_reached = std::max(ctx.stats.max_level_reached, level);
-    const std::array<NdcRect, 2> view_rects = {view.eyes[0].rect, view.eyes[1].rect};
-
-    // Which portals each eye can see. The portal the view came out of lies
-    // behind a virtual eye that stands behind it, where the plane clips it.
-    const std::vector<int>& portals = r.links.room_portals[view.cell];
+// Which part of each eye's image may show each portal of the view's cell:
+// none where culling finds the portal invisible to the eye. The portal the
+// view came out of lies behind a virtual eye that stands behind it, where
+// the plane clips it.
+std::vector<std::array<NdcRect, 2>> visible_portals(const DrawContext& ctx, const LevelView& view,
+                                                    const std::vector<int>& portals) {
+    const RendererData& r = ctx.renderer;
+    const FrameDesc& f = ctx.frame;
     std::vector<std::array<NdcRect, 2>> visible(portals.size());
     for (size_t k = 0; k < portals.size(); ++k) {
         const int p = portals[k];
@@ -162,30 +131,43 @@ void draw_level(DrawContext& ctx, const LevelView& view) {
             const EyeView& ev = view.eyes[e];
             const bool behind_exit = p == view.entered_by && ev.behind_exit;
             if (behind_exit || !ev.active) visible[k][e] = NdcRect::none();
-            else if (!ctx.frame.cull_portals) visible[k][e] = ev.rect;
+            else if (!f.cull_portals) visible[k][e] = ev.rect;
             else if (const NdcRect rect = portal_rect(r.portals[p].rect, ev);
-                     covers_pixel_centre(rect, ctx.frame.eye_width, ctx.frame.eye_height, ctx.frame.samples) &&
-                     !(ctx.frame.cull_objects &&
+                     covers_pixel_centre(rect, f.eye_width, f.eye_height, f.samples) &&
+                     !(f.cull_objects &&
                        hidden_by_occluder(r.objects[static_cast<size_t>(view.cell)], ev, r.portals[p].rect)))
                 visible[k][e] = rect;
             else visible[k][e] = NdcRect::none();
         }
     }
+    return visible;
+}
+
+}  // namespace
+
+void draw_level(const DrawContext& ctx, const LevelView& view) {
+    const RendererData& r = ctx.renderer;
+    FrameScratch& s = ctx.scratch;
+    assert(view.cell >= 0 && static_cast<size_t>(view.cell) < r.cells.size());
+    const int level = view.level;
+    s.stats.max_level_reached = std::max(s.stats.max_level_reached, level);
+    const std::vector<int>& portals = r.links.room_portals[view.cell];
+    const std::vector<std::array<NdcRect, 2>> visible = visible_portals(ctx, view, portals);
 
     // Portal boxes into depth first, so that portals and surfaces occlude each
     // other, and the cell's surfaces behind a portal fail the depth test
     // instead of being drawn and then covered by the view through it.
-    use_pass(ctx, view, Pass::PortalDepth, level);
+    const Scissor scissor = level_scissor(ctx, view);
+    const SceneDraw depth{Pass::PortalDepth, level, &ctx.scene_program, scissor};
     for (size_t k = 0; k < portals.size(); ++k)
-        if (!visible[k][0].empty() || !visible[k][1].empty()) draw_portal_box(ctx, view, portals[k], visible[k]);
+        if (!visible[k][0].empty() || !visible[k][1].empty()) draw_portal_box(ctx, view, depth, portals[k], visible[k]);
 
     // The cell's own surfaces.
-    use_pass(ctx, view, Pass::Scene, level);
-    set_eye_uniforms(ctx, view, view_rects);
-    set_cell_id(ctx, static_cast<unsigned>(view.cell + 1), false);
+    set_eye_uniforms(ctx, view, ctx.scene_program, {view.eyes[0].rect, view.eyes[1].rect});
+    set_cell_id(ctx.scene_program, static_cast<unsigned>(view.cell + 1), false);
     {
         const ColourQueryScope colour(ctx.profiler);
-        draw_cell(ctx, view);
+        draw_cell(ctx, view, {Pass::Scene, level, &ctx.scene_program, scissor});
     }
 
     // A portal hidden behind the cell's own surfaces (say, a wall) passes the
@@ -194,19 +176,19 @@ void draw_level(DrawContext& ctx, const LevelView& view) {
     // rendering does not nest, so the outermost level decides for everything
     // inside; all its queries are drawn before the first is waited on, so
     // the driver synchronises once.
-    const bool occlusion = ctx.frame.occlusion_test && ctx.frame.cull_portals && !ctx.conditional;
+    const bool occlusion = ctx.frame.occlusion_test && ctx.frame.cull_portals && !s.conditional;
     const std::vector<GLuint> tests =
         occlusion ? test_portal_visibility(ctx, view, portals, visible) : std::vector<GLuint>(portals.size(), 0);
 
     for (size_t k = 0; k < portals.size(); ++k) {
         const std::array<NdcRect, 2>& rects = visible[k];
         if (rects[0].empty() && rects[1].empty()) {
-            ctx.stats.portal_passes_culled += 1;
+            s.stats.portal_passes_culled += 1;
             continue;
         }
         if (tests[k]) {
             glBeginConditionalRender(tests[k], GL_QUERY_WAIT);
-            ctx.conditional = true;
+            s.conditional = true;
         }
         // Mirrors and windows always take the stencil path: their views are
         // blended in place (portal_glass.cpp).
@@ -216,10 +198,9 @@ void draw_level(DrawContext& ctx, const LevelView& view) {
         else draw_portal(ctx, view, portals[k], rects);
         if (tests[k]) {
             glEndConditionalRender();
-            ctx.conditional = false;
+            s.conditional = false;
         }
     }
-    r.state->no_scissor();
 }
 
 }  // namespace impossible::render

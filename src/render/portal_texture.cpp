@@ -23,13 +23,13 @@ FrameDesc inner_frame(const FrameDesc& f) {
 
 }  // namespace
 
-Result<void> ensure_portal_textures(RendererData& r, const FrameDesc& frame) {
+Result<void> ensure_portal_textures(const RendererData& r, FrameTargets& targets, const FrameDesc& frame) {
     assert(frame.room >= 0 && static_cast<size_t>(frame.room) < r.links.room_portals.size());
     const FrameDesc inner = inner_frame(frame);
     const size_t count = r.links.room_portals[frame.room].size();
-    if (r.portal_textures.size() < count) r.portal_textures.resize(count);
+    if (targets.portal_textures.size() < count) targets.portal_textures.resize(count);
     for (size_t slot = 0; slot < count; ++slot) {
-        Target& texture = r.portal_textures[slot];
+        Target& texture = targets.portal_textures[slot];
         if (texture.width == 2 * inner.eye_width && texture.height == inner.eye_height &&
             texture.depth == frame.depth && texture.framebuffer)
             continue;
@@ -40,44 +40,40 @@ Result<void> ensure_portal_textures(RendererData& r, const FrameDesc& frame) {
     return {};
 }
 
-void draw_portal_via_texture(DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects,
-                             size_t slot) {
-    RendererData& r = ctx.renderer;
-    gl::StateCache& state = *r.state;
-    const FrameDesc& f = ctx.frame;
-    const FrameDesc inner = inner_frame(f);
-    assert(slot < r.portal_textures.size());  // ensure_portal_textures made them
-    const Target& texture = r.portal_textures[slot];
+void draw_portal_via_texture(const DrawContext& ctx, const LevelView& view, int p,
+                             const std::array<NdcRect, 2>& rects, size_t slot) {
+    const RendererData& r = ctx.renderer;
+    const FrameDesc inner = inner_frame(ctx.frame);
+    assert(slot < ctx.targets.portal_textures.size());  // ensure_portal_textures made them
+    const Target& texture = ctx.targets.portal_textures[slot];
 
-    // The view through the portal, at level + 1 everywhere in the texture.
-    state.draw_framebuffer(texture.framebuffer.get());
-    state.viewport({0, 0, texture.width, texture.height});
-    clear_target(r, texture, view.level + 1);
-    DrawContext inside{r, ctx.program, inner, ctx.stats, ctx.projection, ctx.profiler};
-    inside.material_program = ctx.material_program;
-    inside.target = &texture;
-    ctx.stats.portal_passes_drawn += 1;
-    draw_level(inside, child_view(ctx, view, p, rects));
+    // The view through the portal, at level + 1 everywhere in the texture,
+    // which is its own target: the view is not limited to the portal's
+    // pixels there.
+    clear_target(*r.state, texture, view.level + 1);
+    const DrawContext inside{.renderer = r,
+                             .frame = inner,
+                             .scene_program = ctx.scene_program,
+                             .material_program = ctx.material_program,
+                             .target = texture,
+                             .targets = ctx.targets,
+                             .projection = ctx.projection,
+                             .eye = ctx.eye,
+                             .profiler = ctx.profiler,
+                             .scratch = ctx.scratch};
+    LevelView through = child_view(ctx, view, p, rects);
+    through.through_portal = false;
+    ctx.scratch.stats.portal_passes_drawn += 1;
+    draw_level(inside, through);
 
     // The box shows the texture where it is the visible surface.
-    state.draw_framebuffer(drawing_target(r, f).framebuffer.get());
-    state.viewport({0, 0, 2 * f.eye_width, f.eye_height});
-    if (f.cull_portals) state.scissor(scissor_of(ctx, rects, view));
-    else state.no_scissor();
-    const SceneProgram& shows = *r.portal_texture_program;
-    state.program(shows.program.get());
-    glProgramUniform2f(shows.program.get(), shows.target_size, float(2 * f.eye_width), float(f.eye_height));
-    glBindTextureUnit(0, texture.color_texture.get());
-    glBindTextureUnit(1, texture.ids_texture.get());
-    DrawContext outside{r, shows, f, ctx.stats, ctx.projection, nullptr};
-    use_pass(outside, view, Pass::PortalTexture, view.level);
-    {
-        const ColourQueryScope colour(ctx.profiler);
-        draw_portal_box(outside, view, p, rects);
-    }
-    glBindTextureUnit(0, 0);
-    glBindTextureUnit(1, 0);
-    state.program(ctx.program.program.get());
+    const SceneProgram& shows = *r.programs.portal_texture;
+    glProgramUniform2f(shows.program.get(), shows.target_size, float(2 * ctx.frame.eye_width),
+                       float(ctx.frame.eye_height));
+    r.state->texture(0, texture.color_texture.get());
+    r.state->texture(1, texture.ids_texture.get());
+    const ColourQueryScope colour(ctx.profiler);
+    draw_portal_box(ctx, view, {Pass::PortalTexture, view.level, &shows, portal_scissor(ctx, view, rects)}, p, rects);
 }
 
 }  // namespace impossible::render

@@ -21,7 +21,7 @@
 
 namespace impossible::render {
 
-struct RendererData;
+struct RendererParts;
 
 // A frame drawn and read back.
 struct RenderedFrame {
@@ -59,8 +59,8 @@ public:
     const Target& target() const;
 
 private:
-    explicit Renderer(std::unique_ptr<RendererData> data);
-    std::unique_ptr<RendererData> data_;
+    explicit Renderer(std::unique_ptr<RendererParts> parts);
+    std::unique_ptr<RendererParts> parts_;
 };
 
 }  // namespace impossible::render

@@ -1,5 +1,14 @@
-// Internal to src/render: what a Renderer keeps between frames, shared by the
-// files that draw a frame (renderer.cpp, portal_*.cpp).
+// Internal to src/render: what a Renderer keeps, by how long it lives.
+//
+// - RendererData is fixed for the renderer's life: the scene's tables, the
+//   GPU scene and the programs (a stereo mode's, or a feature's, built before
+//   the first frame that needs it and never changed after). Drawing a frame
+//   only reads it.
+// - FrameTargets are what frames are drawn into, remade before a frame that
+//   asks for another size, depth mode or sample count.
+// - FrameScratch is the scratch of one frame: pools reused from frame to
+//   frame, how much of them the frame has used, and its counters; reset by
+//   begin_frame().
 #pragma once
 
 #include <optional>
@@ -7,19 +16,50 @@
 
 #include "gl/handles.hpp"
 #include "gl/state.hpp"
-#include "math/portal.hpp"
+#include "links/portal_links.hpp"
+#include "render/frame.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/multi_draw.hpp"
 #include "render/multisample.hpp"
 #include "render/object_culling.hpp"
 #include "render/scene_program.hpp"
 #include "render/target.hpp"
-#include "links/portal_links.hpp"
 #include "scene/scene.hpp"
 
 namespace impossible::render {
 
 inline constexpr int kStereoModeCount = 3;
+
+// Every program a renderer draws with.
+struct Programs {
+    std::optional<SceneProgram> scene[kStereoModeCount];     // per StereoMode
+    std::optional<SceneProgram> material[kStereoModeCount];  // the same with textures and cut-outs
+    std::optional<SceneProgram> portal_texture;              // render-to-texture portals
+    std::optional<WindowBlendProgram> window_blend[2];       // single-sample, multisample copies
+    std::vector<gl::Program> id_resolve;  // the multisample id resolve per sample count (index: count)
+    ClearDepthProgram clear_depth;        // built with the renderer
+};
+
+struct RendererData {
+    gl::StateCache* state = nullptr;  // the context's; outlives the renderer
+    std::vector<std::vector<scene::DrawBatch>> cells;  // per room: its batches, into gpu's index buffer
+    std::vector<scene::CellObjects> objects;           // per room: the same split for per-object culling
+    std::vector<scene::CellFrame> cell_origins;        // per room: the origin its vertices are relative to
+    std::vector<scene::PortalInfo> portals;            // per portal, as the scene has it
+    std::vector<scene::PortalMesh> portal_meshes;      // per portal: its box (a mirror's or window's: the front)
+    links::PortalLinks links;                          // M_AB per portal, the portals of each room
+    bool has_windows = false;    // the window blend's programs are needed
+    bool has_materials = false;  // some batch has a texture or an alpha cutoff
+    GpuScene gpu;
+    gl::VertexArray empty_vao;   // for the attribute-less full-target triangle
+    Programs programs;
+};
+
+struct FrameTargets {
+    Target target;                        // single-sample: what is read back or shown
+    Multisampling multisampling;          // with FrameDesc::samples > 1
+    std::vector<Target> portal_textures;  // one per portal of the head's cell (render-to-texture portals)
+};
 
 // A window's reflected view, copied aside while the view through it is drawn
 // (portal_glass.cpp): a texture like the target's colour, one per window
@@ -29,47 +69,49 @@ struct SavedColour {
     int width = 0, height = 0, samples = 1;
 };
 
-struct RendererData {
-    gl::StateCache* state = nullptr;  // the context's; outlives the renderer
-    std::vector<std::vector<scene::DrawBatch>> cells;  // per room: its batches, into gpu's index buffer
-    std::vector<scene::CellObjects> objects;  // per room: the same split for per-object culling
-    CullScratch cull_scratch;                 // reused by every level (object_culling.hpp)
+struct FrameScratch {
+    FrameStats stats;
+    CullScratch cull;                        // reused by every level (object_culling.hpp)
     std::vector<scene::DrawBatch> cull_batches;
-    IndirectDraws indirect;                   // FrameDesc::multi_draw's commands, rewritten every frame
-    std::vector<scene::CellFrame> frames;  // per room: what its vertices are relative to
-    std::vector<scene::PortalInfo> portals;  // per portal, as the scene has it
-    std::vector<scene::PortalMesh> portal_meshes;  // per portal: its box (a mirror's or window's: the front alone)
-    bool has_windows = false;              // the window blend's programs are needed
-    links::PortalLinks links;              // M_AB per portal, the portals of each room
-    GpuScene gpu;
-    std::optional<SceneProgram> programs[kStereoModeCount];  // per StereoMode, built on first use
-    std::optional<SceneProgram> material_programs[kStereoModeCount];  // the same with textures and cut-outs
-    bool has_materials = false;  // some batch has a texture or an alpha cutoff
-    ClearDepthProgram clear_depth;
-    gl::VertexArray empty_vao;            // for the attribute-less clear triangle
-    Target target;                        // single-sample: what is read back or shown
-    Multisampling multisampling;          // with FrameDesc::samples > 1
-    std::vector<gl::Query> mark_queries;  // occlusion queries of portal marks, reused every frame
-    std::optional<SceneProgram> portal_texture_program;  // render-to-texture portals, built on first use
-    std::vector<Target> portal_textures;  // one per portal of the head's cell, reused every frame
-    std::optional<WindowBlendProgram> window_blend[2];  // single-sample, multisample copies; built on first use
+    IndirectDraws indirect;                  // FrameDesc::multi_draw's commands
+    std::vector<gl::Query> mark_queries;     // occlusion queries of portals, made on first use
+    size_t mark_queries_used = 0;            // of mark_queries, by this frame
     std::vector<SavedColour> saved_colours;  // per window nesting level, made on first use
+    size_t saved_colours_used = 0;           // of saved_colours, by the windows being drawn
+    bool conditional = false;                // inside a portal's conditional rendering
+
+    // Empty counters and nothing of the pools used.
+    void begin_frame() {
+        stats = {};
+        begin_indirect_frame(indirect);
+        mark_queries_used = 0;
+        saved_colours_used = 0;
+        conditional = false;
+    }
+};
+
+// All a Renderer owns.
+struct RendererParts {
+    RendererData data;
+    FrameTargets targets;
+    FrameScratch scratch;
 };
 
 // Clears a target to the background colour, id 0, far depth (for its depth
 // mode) and the given stencil value, through the state cache.
-void clear_target(RendererData& r, const Target& target, int stencil);
+void clear_target(gl::StateCache& state, const Target& target, int stencil);
 
 // For FrameDesc::samples > 1 (multisample.cpp): checks the count, makes the
-// multisampled target of the frame's size and the framebuffers the resolve
-// writes through; nothing for 1 sample. Call after `target` is made.
-Result<void> ensure_multisampled(RendererData& r, const FrameDesc& frame);
+// multisampled target of the frame's size, the framebuffers the resolve
+// writes through and the id resolve's program; nothing for 1 sample. Call
+// after `targets.target` is made.
+Result<void> ensure_multisampled(Programs& programs, FrameTargets& targets, const FrameDesc& frame);
 
 // The target the frame's passes draw into: `target`, or the multisampled one.
-Target& drawing_target(RendererData& r, const FrameDesc& frame);
+const Target& drawing_target(const FrameTargets& targets, const FrameDesc& frame);
 
 // Resolves the frame's multisampled target into `target` (colour averaged,
 // ids by majority); nothing for 1 sample.
-void resolve_multisampled(RendererData& r, const FrameDesc& frame);
+void resolve_multisampled(const RendererData& r, const FrameTargets& targets, const FrameDesc& frame);
 
 }  // namespace impossible::render

@@ -88,7 +88,10 @@ Result<Target> create_multisampled_target(int width, int height, DepthMode depth
     return make_target(width, height, depth, TargetKind::Multisampled, samples);
 }
 
-image::Image read_target(const Target& t) {
+namespace {
+
+// glReadPixels of the bound read framebuffer (the target's), rows from the top.
+image::Image read_bound(const Target& t) {
     image::Image image;
     image.width = t.width;
     image.height = t.height;
@@ -97,11 +100,9 @@ image::Image read_target(const Target& t) {
     std::vector<std::uint8_t> ids(w * h);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glNamedFramebufferReadBuffer(t.framebuffer.get(), GL_COLOR_ATTACHMENT0);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, t.framebuffer.get());
     glReadPixels(0, 0, t.width, t.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
     glNamedFramebufferReadBuffer(t.framebuffer.get(), GL_COLOR_ATTACHMENT1);
     glReadPixels(0, 0, t.width, t.height, GL_RED_INTEGER, GL_UNSIGNED_BYTE, ids.data());
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
 
     // GL rows start at the bottom; images start at the top.
     image.rgb.resize(w * h * 3);
@@ -112,6 +113,20 @@ image::Image read_target(const Target& t) {
         for (size_t x = 0; x < w; ++x)
             for (int c = 0; c < 3; ++c) image.rgb[(y * w + x) * 3 + c] = rgba[(src + x) * 4 + c];
     }
+    return image;
+}
+
+}  // namespace
+
+image::Image read_target(gl::StateCache& state, const Target& t) {
+    state.read_framebuffer(t.framebuffer.get());
+    return read_bound(t);
+}
+
+image::Image read_target(const Target& t) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, t.framebuffer.get());
+    image::Image image = read_bound(t);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     return image;
 }
 

@@ -7,6 +7,7 @@
 
 #include "base/result.hpp"
 #include "gl/handles.hpp"
+#include "gl/state.hpp"
 #include "render/frame.hpp"
 
 namespace impossible::render {
@@ -36,7 +37,15 @@ Result<Target> create_sampled_target(int width, int height, DepthMode depth);
 // first that the driver offers the count (render/multisample.hpp).
 Result<Target> create_multisampled_target(int width, int height, DepthMode depth, int samples);
 
-// Reads colour and ids back, rows from the top.
+// Reads colour and ids back, rows from the top, binding the target as the
+// read framebuffer through the context's cache (left bound: the cache's user
+// releases its bindings when it is done, gl/state.hpp).
+image::Image read_target(gl::StateCache& state, const Target& target);
+
+// The same for a caller that does not pass the context's cache (the
+// preview's screenshots, until it does): binds the read framebuffer behind
+// the cache and binds 0 again after, where a cache that its user released
+// expects it.
 image::Image read_target(const Target& target);
 
 }  // namespace impossible::render

@@ -44,6 +44,10 @@ struct LevelView {
     int entered_by = -1;    // the portal of this cell the view came out of (or a mirror's), or -1
     bool mirrored = false;  // an odd number of reflections: triangles wind the other way
     double weight = 1.0;    // shading::kMinBranchWeight: the share of this view in the pixels
+    // Seen through a portal drawn in the same target, so drawn only within
+    // the portal's pixels (its scissor, with culling); false at the root of
+    // a target (the head's view, a render-to-texture portal's view).
+    bool through_portal = false;
     std::array<EyeView, 2> eyes;
 };
 
