@@ -119,12 +119,11 @@ Result<const unsigned char*> view_elements(const tinygltf::Model& model, int vie
     return buffer.data() + view.byteOffset + byte_offset;
 }
 
-}  // namespace
-
-Result<AccessorView> accessor_view(const tinygltf::Model& model, int index, int type,
-                                   std::initializer_list<int> component_types, const char* what,
-                                   std::size_t max_copied) {
-    const std::string name = std::string(what) + " accessor " + std::to_string(index);
+// Accessor `index`, which must exist and have the wanted type and one of
+// the component types. `name` is "POSITION accessor 3".
+Result<const tinygltf::Accessor*> checked_accessor(const tinygltf::Model& model, int index, int type,
+                                                   std::initializer_list<int> component_types,
+                                                   const std::string& name) {
     if (index < 0 || static_cast<std::size_t>(index) >= model.accessors.size()) {
         return Error{name + " does not exist"};
     }
@@ -137,23 +136,13 @@ Result<AccessorView> accessor_view(const tinygltf::Model& model, int index, int 
         return Error{name + " has the unsupported component type " +
                 std::to_string(accessor.componentType)};
     }
-    const std::size_t element = component_size(accessor.componentType) * component_count(type);
-    AccessorView out;
-    out.count = accessor.count;
-    out.component_type = accessor.componentType;
-    const bool copied = accessor.bufferView < 0 || accessor.sparse.isSparse;
-    if (!copied) {
-        Result<const unsigned char*> first =
-            view_elements(model, accessor.bufferView, accessor.byteOffset, accessor.count, element, out.stride, name);
-        if (!first) return first;
-        out.data = *first;
-        return out;
-    }
-    // Zeros or the dense elements, tightly packed, then the substitutions.
-    if (accessor.count > max_copied) {
-        return Error{name + " has " + std::to_string(accessor.count) + " elements to copy (sparse or without a "
-                     "bufferView); at most " + std::to_string(max_copied) + " are supported"};
-    }
+    return &accessor;
+}
+
+// Copies the accessor's dense elements (zeros without a bufferView) into
+// out.owned, tightly packed.
+Result<void> copy_dense_elements(const tinygltf::Model& model, const tinygltf::Accessor& accessor,
+                                 std::size_t element, const std::string& name, AccessorView& out) {
     out.stride = element;
     out.owned.assign(std::max<std::size_t>(1, accessor.count * element), 0);
     if (accessor.bufferView >= 0 && accessor.count > 0) {
@@ -165,7 +154,12 @@ Result<AccessorView> accessor_view(const tinygltf::Model& model, int index, int 
             std::memcpy(out.owned.data() + i * element, *first + i * stride, element);
         }
     }
-    if (!accessor.sparse.isSparse) return out;
+    return {};
+}
+
+// Applies a sparse accessor's substitutions to the elements in out.owned.
+Result<void> apply_sparse(const tinygltf::Model& model, const tinygltf::Accessor& accessor, std::size_t element,
+                          const std::string& name, AccessorView& out) {
     const auto& sparse = accessor.sparse;
     if (sparse.count < 1 || static_cast<std::size_t>(sparse.count) > accessor.count) {
         return Error{name + " has a sparse count of " + std::to_string(sparse.count) + "; it must be 1 to " +
@@ -200,6 +194,40 @@ Result<AccessorView> accessor_view(const tinygltf::Model& model, int index, int 
         }
         previous = at;
         std::memcpy(out.owned.data() + at * element, *values + i * element, element);
+    }
+    return {};
+}
+
+}  // namespace
+
+Result<AccessorView> accessor_view(const tinygltf::Model& model, int index, int type,
+                                   std::initializer_list<int> component_types, const char* what,
+                                   std::size_t max_copied) {
+    const std::string name = std::string(what) + " accessor " + std::to_string(index);
+    const Result<const tinygltf::Accessor*> checked = checked_accessor(model, index, type, component_types, name);
+    if (!checked) return checked;
+    const tinygltf::Accessor& accessor = **checked;
+    const std::size_t element = component_size(accessor.componentType) * component_count(type);
+    AccessorView out;
+    out.count = accessor.count;
+    out.component_type = accessor.componentType;
+    const bool copied = accessor.bufferView < 0 || accessor.sparse.isSparse;
+    if (!copied) {
+        Result<const unsigned char*> first =
+            view_elements(model, accessor.bufferView, accessor.byteOffset, accessor.count, element, out.stride, name);
+        if (!first) return first;
+        out.data = *first;
+        return out;
+    }
+    // Zeros or the dense elements, tightly packed, then the substitutions.
+    if (accessor.count > max_copied) {
+        return Error{name + " has " + std::to_string(accessor.count) + " elements to copy (sparse or without a "
+                     "bufferView); at most " + std::to_string(max_copied) + " are supported"};
+    }
+    if (Result<void> dense = copy_dense_elements(model, accessor, element, name, out); !dense) return dense;
+    if (!accessor.sparse.isSparse) return out;
+    if (Result<void> substituted = apply_sparse(model, accessor, element, name, out); !substituted) {
+        return substituted;
     }
     return out;
 }

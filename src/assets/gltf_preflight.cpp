@@ -149,15 +149,15 @@ Result<void> check_buffers(const json& doc, bool binary, long long glb_bin_size,
     return {};
 }
 
-Result<void> check_references(const json& doc) {
-    const auto array = [&](const char* key) -> const json& {
-        static const json empty = json::array();
-        const auto it = doc.find(key);
-        return it != doc.end() && it->is_array() ? *it : empty;
-    };
-    const json& buffers = array("buffers");
-    const json& views = array("bufferViews");
-    const json& accessors = array("accessors");
+// doc[key] when it is an array, else an empty array.
+const json& member_array(const json& doc, const char* key) {
+    static const json empty = json::array();
+    const auto it = doc.find(key);
+    return it != doc.end() && it->is_array() ? *it : empty;
+}
+
+// Each buffer view's buffer.
+Result<void> check_view_references(const json& views, const json& buffers) {
     for (std::size_t i = 0; i < views.size(); ++i) {
         if (!views[i].is_object()) continue;
         const std::string who = "has bufferView " + std::to_string(i);
@@ -165,6 +165,11 @@ Result<void> check_references(const json& doc) {
         if (std::string e = bad_reference(views[i], "buffer", buffers.size(), "buffer", "buffers", who); !e.empty())
             return Error{e};
     }
+    return {};
+}
+
+// Each accessor's buffer view, and those of its sparse indices and values.
+Result<void> check_accessor_references(const json& accessors, const json& views) {
     for (std::size_t i = 0; i < accessors.size(); ++i) {
         const json& accessor = accessors[i];
         if (!accessor.is_object()) continue;
@@ -184,9 +189,40 @@ Result<void> check_references(const json& doc) {
                 return Error{e};
         }
     }
-    // tinygltf hands an image's bufferView to the image loader without
-    // checking that it lies inside its buffer.
-    const json& images = array("images");
+    return {};
+}
+
+// That buffer view `v` (which exists) of an image lies inside its buffer.
+// `who` is "has image N".
+Result<void> check_image_view(const json& views, std::size_t v, const json& buffers, const std::string& who) {
+    const json& view = views[v];
+    if (!view.is_object()) return {};
+    const auto offset = view.find("byteOffset");
+    const auto length = view.find("byteLength");
+    const auto buffer = view.find("buffer");
+    const bool numbers = (offset == view.end() || offset->is_number_unsigned()) && length != view.end() &&
+                         length->is_number_unsigned() && buffer != view.end() && buffer->is_number_unsigned();
+    const std::size_t b = numbers ? buffer->get<std::size_t>() : 0;
+    const json* buffer_object = numbers && b < buffers.size() && buffers[b].is_object() ? &buffers[b] : nullptr;
+    const auto size = buffer_object != nullptr ? buffer_object->find("byteLength") : json::const_iterator();
+    if (buffer_object == nullptr || size == buffer_object->end() || !size->is_number_unsigned()) {
+        return Error{who + " whose bufferView " + std::to_string(v) +
+                     " has no valid buffer, byteOffset and byteLength"};
+    }
+    const std::uint64_t from = offset == view.end() ? 0 : offset->get<std::uint64_t>();
+    const std::uint64_t bytes = length->get<std::uint64_t>();
+    const std::uint64_t total = size->get<std::uint64_t>();
+    if (bytes == 0 || from > total || bytes > total - from) {
+        return Error{who + " whose bufferView " + std::to_string(v) + " (" + std::to_string(bytes) +
+                     " bytes from byte " + std::to_string(from) + ") does not lie inside its buffer of " +
+                     std::to_string(total) + " bytes"};
+    }
+    return {};
+}
+
+// tinygltf hands an image's bufferView to the image loader without
+// checking that it lies inside its buffer.
+Result<void> check_image_references(const json& images, const json& views, const json& buffers) {
     for (std::size_t i = 0; i < images.size(); ++i) {
         const json& image = images[i];
         if (!image.is_object() || !image.contains("bufferView")) continue;
@@ -195,31 +231,13 @@ Result<void> check_references(const json& doc) {
             !e.empty())
             return Error{e};
         const std::size_t v = image["bufferView"].get<std::size_t>();
-        const json& view = views[v];
-        if (!view.is_object()) continue;
-        const auto offset = view.find("byteOffset");
-        const auto length = view.find("byteLength");
-        const auto buffer = view.find("buffer");
-        const bool numbers = (offset == view.end() || offset->is_number_unsigned()) && length != view.end() &&
-                             length->is_number_unsigned() && buffer != view.end() && buffer->is_number_unsigned();
-        const std::size_t b = numbers ? buffer->get<std::size_t>() : 0;
-        const json* buffer_object = numbers && b < buffers.size() && buffers[b].is_object() ? &buffers[b] : nullptr;
-        const auto size = buffer_object != nullptr ? buffer_object->find("byteLength") : json::const_iterator();
-        if (buffer_object == nullptr || size == buffer_object->end() || !size->is_number_unsigned()) {
-            return Error{who + " whose bufferView " + std::to_string(v) +
-                         " has no valid buffer, byteOffset and byteLength"};
-        }
-        const std::uint64_t from = offset == view.end() ? 0 : offset->get<std::uint64_t>();
-        const std::uint64_t bytes = length->get<std::uint64_t>();
-        const std::uint64_t total = size->get<std::uint64_t>();
-        if (bytes == 0 || from > total || bytes > total - from) {
-            return Error{who + " whose bufferView " + std::to_string(v) + " (" + std::to_string(bytes) +
-                         " bytes from byte " + std::to_string(from) + ") does not lie inside its buffer of " +
-                         std::to_string(total) + " bytes"};
-        }
+        if (Result<void> inside = check_image_view(views, v, buffers, who); !inside) return inside;
     }
-    // tinygltf keeps the default (white) for a baseColorFactor of the wrong length.
-    const json& materials = array("materials");
+    return {};
+}
+
+// tinygltf keeps the default (white) for a baseColorFactor of the wrong length.
+Result<void> check_base_colour_factors(const json& materials) {
     for (std::size_t i = 0; i < materials.size(); ++i) {
         if (!materials[i].is_object()) continue;
         const auto pbr = materials[i].find("pbrMetallicRoughness");
@@ -230,7 +248,11 @@ Result<void> check_references(const json& doc) {
                                   std::all_of(factor->begin(), factor->end(), [](const json& v) { return v.is_number(); });
         if (!four_numbers) return Error{"has material " + std::to_string(i) + " whose baseColorFactor is not 4 numbers"};
     }
-    const json& meshes = array("meshes");
+    return {};
+}
+
+// Each primitive's index accessor, which must exist and have data.
+Result<void> check_index_references(const json& meshes, const json& accessors) {
     for (std::size_t m = 0; m < meshes.size(); ++m) {
         const auto primitives = meshes[m].is_object() ? meshes[m].find("primitives") : meshes[m].end();
         if (!meshes[m].is_object() || primitives == meshes[m].end() || !primitives->is_array()) continue;
@@ -252,6 +274,17 @@ Result<void> check_references(const json& doc) {
         }
     }
     return {};
+}
+
+Result<void> check_references(const json& doc) {
+    const json& buffers = member_array(doc, "buffers");
+    const json& views = member_array(doc, "bufferViews");
+    const json& accessors = member_array(doc, "accessors");
+    if (Result<void> ok = check_view_references(views, buffers); !ok) return ok;
+    if (Result<void> ok = check_accessor_references(accessors, views); !ok) return ok;
+    if (Result<void> ok = check_image_references(member_array(doc, "images"), views, buffers); !ok) return ok;
+    if (Result<void> ok = check_base_colour_factors(member_array(doc, "materials")); !ok) return ok;
+    return check_index_references(member_array(doc, "meshes"), accessors);
 }
 
 }  // namespace
