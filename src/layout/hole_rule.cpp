@@ -145,62 +145,67 @@ struct Hole {
     double max_a = 0.0;
 };
 
-}  // namespace
+using FaceHoles = std::map<std::pair<int, int>, std::vector<Hole>>;  // (room, face) → holes
 
-void check_holes(Checker& check, std::vector<PortalDraft>& portals,
-                 const std::vector<RoomDraft>& rooms) {
+// A portal in the plane of `face` that is only partly inside it.
+void report_partly_inside(Checker& check, const PortalDraft& draft, int face, const Room& room) {
+    // A mirror or window has only one way out: into the face.
+    const bool boxless = draft.kind_ok && draft.portal.kind != PortalKind::Door;
+    const std::string rule =
+        boxless ? std::string("a ") + kind_name(draft.portal.kind) +
+                      " must lie wholly inside a face of its room, making a hole; move it inside"
+                : "a portal in the plane of a face must lie wholly inside it, making a hole, or wholly "
+                  "outside";
+    check.error(draft.path / "center",
+                "the rectangle lies in the plane of the " +
+                    std::string(kFaceNames[static_cast<std::size_t>(face)]) +
+                    " face of room " + quote(room.id) + " but is only partly inside that face (" +
+                    rule + ")");
+}
+
+// Portal `i`'s hole, if it makes one: sets its hole_face and adds it to
+// `holes`. A portal partly inside a face, or a mirror or window standing
+// free, is an error.
+void find_hole(Checker& check, std::size_t i, PortalDraft& draft, const RoomDraft& room, FaceHoles& holes) {
     const double eps = limits::kHolePlaneTolerance;
-    std::map<std::pair<int, int>, std::vector<Hole>> holes;  // (room, face) → holes
-    for (std::size_t i = 0; i < portals.size(); ++i) {
-        PortalDraft& draft = portals[i];
-        const int room_index = draft.portal.room;
-        if (!draft.rect_ok || room_index < 0) continue;
-        const RoomDraft& room = rooms[static_cast<std::size_t>(room_index)];
-        if (!room.box_ok) continue;
-        const math::PortalRect& rect = draft.portal.rect;
-        const std::array<glm::dvec3, 4> c = corners(rect);
-        bool partly = false;
-        for (int face = 0; face < kFaceCount; ++face) {
-            const FaceFrame f = face_frame(room.room, static_cast<Face>(face));
-            const bool in_plane = std::all_of(c.begin(), c.end(), [&](const glm::dvec3& v) {
-                return std::abs(v[f.axis] - f.coord) <= eps;
-            });
-            if (!in_plane || !(rect.normal[f.axis] * f.inward > 0.5)) continue;
-            Hole hole;
-            hole.portal = i;
-            for (std::size_t k = 0; k < 4; ++k) hole.quad[k] = {c[k][f.a], c[k][f.b]};
-            const bool inside = std::all_of(hole.quad.begin(), hole.quad.end(), [&](const glm::dvec2& v) {
-                return v.x >= f.lo.x - eps && v.x <= f.hi.x + eps && v.y >= f.lo.y - eps &&
-                       v.y <= f.hi.y + eps;
-            });
-            const Quad face_quad = {f.lo, glm::dvec2(f.hi.x, f.lo.y), f.hi, glm::dvec2(f.lo.x, f.hi.y)};
-            if (inside) {
-                draft.portal.hole_face = face;
-                hole.min_a = std::min({hole.quad[0].x, hole.quad[1].x, hole.quad[2].x, hole.quad[3].x});
-                hole.max_a = std::max({hole.quad[0].x, hole.quad[1].x, hole.quad[2].x, hole.quad[3].x});
-                holes[{room_index, face}].push_back(hole);
-            } else if (overlap(hole.quad, face_quad) > eps) {
-                partly = true;
-                // A mirror or window has only one way out: into the face.
-                const bool boxless = draft.kind_ok && draft.portal.kind != PortalKind::Door;
-                const std::string rule =
-                    boxless ? std::string("a ") + kind_name(draft.portal.kind) +
-                                  " must lie wholly inside a face of its room, making a hole; move it inside"
-                            : "a portal in the plane of a face must lie wholly inside it, making a hole, or wholly "
-                              "outside";
-                check.error(draft.path / "center",
-                            "the rectangle lies in the plane of the " +
-                                std::string(kFaceNames[static_cast<std::size_t>(face)]) +
-                                " face of room " + quote(room.room.id) + " but is only partly inside that face (" +
-                                rule + ")");
-            }
-            break;
+    const int room_index = draft.portal.room;
+    const math::PortalRect& rect = draft.portal.rect;
+    const std::array<glm::dvec3, 4> c = corners(rect);
+    bool partly = false;
+    for (int face = 0; face < kFaceCount; ++face) {
+        const FaceFrame f = face_frame(room.room, static_cast<Face>(face));
+        const bool in_plane = std::all_of(c.begin(), c.end(), [&](const glm::dvec3& v) {
+            return std::abs(v[f.axis] - f.coord) <= eps;
+        });
+        if (!in_plane || !(rect.normal[f.axis] * f.inward > 0.5)) continue;
+        Hole hole;
+        hole.portal = i;
+        for (std::size_t k = 0; k < 4; ++k) hole.quad[k] = {c[k][f.a], c[k][f.b]};
+        const bool inside = std::all_of(hole.quad.begin(), hole.quad.end(), [&](const glm::dvec2& v) {
+            return v.x >= f.lo.x - eps && v.x <= f.hi.x + eps && v.y >= f.lo.y - eps &&
+                   v.y <= f.hi.y + eps;
+        });
+        const Quad face_quad = {f.lo, glm::dvec2(f.hi.x, f.lo.y), f.hi, glm::dvec2(f.lo.x, f.hi.y)};
+        if (inside) {
+            draft.portal.hole_face = face;
+            hole.min_a = std::min({hole.quad[0].x, hole.quad[1].x, hole.quad[2].x, hole.quad[3].x});
+            hole.max_a = std::max({hole.quad[0].x, hole.quad[1].x, hole.quad[2].x, hole.quad[3].x});
+            holes[{room_index, face}].push_back(hole);
+        } else if (overlap(hole.quad, face_quad) > eps) {
+            partly = true;
+            report_partly_inside(check, draft, face, room.room);
         }
-        const bool boxless = draft.kind_ok && draft.portal.kind != PortalKind::Door;
-        if (boxless && draft.portal.hole_face < 0 && !partly) report_free_standing(check, draft, room.room, c);
+        break;
     }
-    // Overlapping holes in one face: sweep along the face's first axis.
-    // Each portal is reported once.
+    const bool boxless = draft.kind_ok && draft.portal.kind != PortalKind::Door;
+    if (boxless && draft.portal.hole_face < 0 && !partly) report_free_standing(check, draft, room.room, c);
+}
+
+// Overlapping holes in one face: sweep along the face's first axis.
+// Each portal is reported once.
+void report_overlapping_holes(Checker& check, const std::vector<PortalDraft>& portals,
+                              const std::vector<RoomDraft>& rooms, FaceHoles& holes) {
+    const double eps = limits::kHolePlaneTolerance;
     std::vector<bool> reported(portals.size(), false);
     for (auto& [key, list] : holes) {
         std::sort(list.begin(), list.end(), [](const Hole& x, const Hole& y) { return x.min_a < y.min_a; });
@@ -221,6 +226,22 @@ void check_holes(Checker& check, std::vector<PortalDraft>& portals,
             }
         }
     }
+}
+
+}  // namespace
+
+void check_holes(Checker& check, std::vector<PortalDraft>& portals,
+                 const std::vector<RoomDraft>& rooms) {
+    FaceHoles holes;
+    for (std::size_t i = 0; i < portals.size(); ++i) {
+        PortalDraft& draft = portals[i];
+        const int room_index = draft.portal.room;
+        if (!draft.rect_ok || room_index < 0) continue;
+        const RoomDraft& room = rooms[static_cast<std::size_t>(room_index)];
+        if (!room.box_ok) continue;
+        find_hole(check, i, draft, room, holes);
+    }
+    report_overlapping_holes(check, portals, rooms, holes);
 }
 
 }  // namespace impossible::layout::detail

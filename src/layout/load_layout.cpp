@@ -142,18 +142,9 @@ StartDraft read_start(Checker& check, const Path& at, const json& value) {
     return draft;
 }
 
-// `ids_reliable`: no object repeats a key (a repeated "id" leaves which one
-// counts in doubt).
-void read_layout(Checker& check, const json& root, const std::string& base_dir, Layout& layout,
-                 bool ids_reliable) {
+// "format", "version", "name" and "play_area" of the layout object `root`.
+void read_header(Checker& check, const json& root, Layout& layout) {
     const Path top;
-    if (!root.is_object()) {
-        check.error(top, "a layout must be a JSON object (got " + detail::json_type_name(root) + ")");
-        return;
-    }
-    check.check_fields(top, root,
-                       {"format", "version", "name", "play_area", "start", "rooms", "portals"},
-                       {"format", "version", "start", "rooms"});
     if (const json* v = field(root, "format")) {
         if (const auto format = check.read_string(top / "format", *v)) {
             if (*format != "impossible-layout") {
@@ -173,6 +164,45 @@ void read_layout(Checker& check, const json& root, const std::string& base_dir, 
         if (auto name = check.read_string(top / "name", *v)) layout.name = std::move(*name);
     }
     if (const json* v = field(root, "play_area")) layout.play_area = read_play_area(check, top / "play_area", *v);
+}
+
+// The start's room, found by its id; a warning when the head starts
+// outside it.
+void link_start(Checker& check, StartDraft& start, const std::vector<detail::RoomDraft>& rooms,
+                bool rooms_known) {
+    if (!start.room_id) return;
+    const Path top;
+    const auto room_index = detail::index_by_id(rooms);
+    const auto it = room_index.find(*start.room_id);
+    if (it == room_index.end()) {
+        if (rooms_known) check.error(top / "start" / "room", "no room has the id " + quote(*start.room_id));
+        start.ok = false;
+        return;
+    }
+    start.start.room = it->second;
+    const detail::RoomDraft& room = rooms[static_cast<std::size_t>(it->second)];
+    const glm::dvec3& p = start.start.position;
+    const bool inside = glm::all(glm::greaterThanEqual(p, room.room.min)) &&
+                        glm::all(glm::lessThanEqual(p, room.room.max));
+    if (start.ok && room.box_ok && !inside) {
+        check.warning(top / "start" / "position",
+                      "the head starts outside its room " + quote(room.room.id));
+    }
+}
+
+// `ids_reliable`: no object repeats a key (a repeated "id" leaves which one
+// counts in doubt).
+void read_layout(Checker& check, const json& root, const std::string& base_dir, Layout& layout,
+                 bool ids_reliable) {
+    const Path top;
+    if (!root.is_object()) {
+        check.error(top, "a layout must be a JSON object (got " + detail::json_type_name(root) + ")");
+        return;
+    }
+    check.check_fields(top, root,
+                       {"format", "version", "name", "play_area", "start", "rooms", "portals"},
+                       {"format", "version", "start", "rooms"});
+    read_header(check, root, layout);
 
     assets::AssetCache models(base_dir);
     std::vector<detail::RoomDraft> rooms;
@@ -188,25 +218,8 @@ void read_layout(Checker& check, const json& root, const std::string& base_dir, 
                              std::all_of(rooms.begin(), rooms.end(), [](const auto& r) { return r.has_id; });
     detail::link_portals(check, portals, rooms, rooms_known);
     detail::check_holes(check, portals, rooms);
+    link_start(check, start, rooms, rooms_known);
 
-    if (start.room_id) {
-        const auto room_index = detail::index_by_id(rooms);
-        const auto it = room_index.find(*start.room_id);
-        if (it == room_index.end()) {
-            if (rooms_known) check.error(top / "start" / "room", "no room has the id " + quote(*start.room_id));
-            start.ok = false;
-        } else {
-            start.start.room = it->second;
-            const detail::RoomDraft& room = rooms[static_cast<std::size_t>(it->second)];
-            const glm::dvec3& p = start.start.position;
-            const bool inside = glm::all(glm::greaterThanEqual(p, room.room.min)) &&
-                                glm::all(glm::lessThanEqual(p, room.room.max));
-            if (start.ok && room.box_ok && !inside) {
-                check.warning(top / "start" / "position",
-                              "the head starts outside its room " + quote(room.room.id));
-            }
-        }
-    }
     if (check.has_errors()) return;
     layout.start = start.start;
     for (detail::RoomDraft& room : rooms) layout.rooms.push_back(std::move(room.room));

@@ -218,6 +218,83 @@ PortalDraft read_portal(Checker& check, const Path& at, const json& value) {
     return draft;
 }
 
+// A pair's kinds and sizes, checked at its later portal `draft`.
+void check_pair(Checker& check, const PortalDraft& draft, const PortalDraft& other) {
+    if (draft.kind_ok && other.kind_ok && draft.portal.kind != other.portal.kind) {
+        // At the "kind" that differs, or at the target of a door by default.
+        const std::string kind = kind_name(draft.portal.kind);
+        const std::string other_kind = kind_name(other.portal.kind);
+        check.error(draft.has_kind ? draft.path / "kind" : draft.path / "target",
+                    "a " + kind + " cannot be paired with the " + other_kind + " " + quote(other.portal.id) +
+                        " (paired portals must be of the same kind; make both " + kind + "s or both " +
+                        other_kind + "s)");
+    }
+    if (!draft.rect_ok || !other.rect_ok) return;
+    const math::PortalRect& a = other.portal.rect;
+    const math::PortalRect& b = draft.portal.rect;
+    if (std::abs(a.width - b.width) > limits::kPairSizeTolerance) {
+        check.error(draft.path / "width",
+                    format_number(b.width) + " differs from the width " + format_number(a.width) +
+                        " of its target " + quote(other.portal.id) +
+                        " (paired portals must have the same size)");
+    }
+    if (std::abs(a.height - b.height) > limits::kPairSizeTolerance) {
+        check.error(draft.path / "height",
+                    format_number(b.height) + " differs from the height " +
+                        format_number(a.height) + " of its target " + quote(other.portal.id) +
+                        " (paired portals must have the same size)");
+    }
+}
+
+// A portal's room, found by its id.
+void link_room(Checker& check, PortalDraft& draft, const std::map<std::string, int>& room_index,
+               bool rooms_known) {
+    if (!draft.room_id) return;
+    const auto it = room_index.find(*draft.room_id);
+    if (it == room_index.end()) {
+        if (rooms_known) check.error(draft.path / "room", "no room has the id " + quote(*draft.room_id));
+    } else {
+        draft.portal.room = it->second;
+    }
+}
+
+// Portal `i`'s target, found by its id, which must name it back.
+void link_target(Checker& check, std::size_t i, std::vector<PortalDraft>& portals,
+                 const std::map<std::string, int>& portal_index) {
+    PortalDraft& draft = portals[i];
+    if (!draft.target_id) return;
+    const auto it = portal_index.find(*draft.target_id);
+    if (it == portal_index.end()) {
+        check.error(draft.path / "target", "no portal has the id " + quote(*draft.target_id));
+        return;
+    }
+    if (draft.has_id && *draft.target_id == draft.portal.id) {
+        check.error(draft.path / "target", "a portal cannot target itself");
+        return;
+    }
+    if (static_cast<std::size_t>(it->second) == i) return;  // a repeated id; reported
+    const PortalDraft& other = portals[static_cast<std::size_t>(it->second)];
+    if (other.kind_ok && other.portal.kind == PortalKind::Mirror) {
+        const std::string kind = draft.kind_ok ? kind_name(draft.portal.kind) : "portal";
+        check.error(draft.path / "target",
+                    quote(other.portal.id) + " is a mirror, which has no partner (it reflects its own room); "
+                    "a " + kind + " must target a " + kind + " that names it back");
+        return;
+    }
+    if (!draft.has_id || !other.target_id) return;  // reported where it was read
+    if (*other.target_id != draft.portal.id) {
+        check.error(draft.path / "target",
+                    "portal " + quote(other.portal.id) + " targets " + quote(*other.target_id) +
+                        ", not " + quote(draft.portal.id) +
+                        " (paired portals must name each other)");
+        return;
+    }
+    draft.portal.target = it->second;
+    // Check the pair's kinds and sizes once, at its later portal.
+    if (static_cast<std::size_t>(it->second) > i) return;
+    check_pair(check, draft, other);
+}
+
 }  // namespace
 
 std::vector<PortalDraft> read_portals(Checker& check, const Path& at, const json& portals) {
@@ -244,69 +321,8 @@ void link_portals(Checker& check, std::vector<PortalDraft>& portals,
     const std::map<std::string, int> room_index = index_by_id(rooms);
     const std::map<std::string, int> portal_index = index_by_id(portals);
     for (std::size_t i = 0; i < portals.size(); ++i) {
-        PortalDraft& draft = portals[i];
-        if (draft.room_id) {
-            const auto it = room_index.find(*draft.room_id);
-            if (it == room_index.end()) {
-                if (rooms_known) check.error(draft.path / "room", "no room has the id " + quote(*draft.room_id));
-            } else {
-                draft.portal.room = it->second;
-            }
-        }
-        if (!draft.target_id) continue;
-        const auto it = portal_index.find(*draft.target_id);
-        if (it == portal_index.end()) {
-            check.error(draft.path / "target", "no portal has the id " + quote(*draft.target_id));
-            continue;
-        }
-        if (draft.has_id && *draft.target_id == draft.portal.id) {
-            check.error(draft.path / "target", "a portal cannot target itself");
-            continue;
-        }
-        if (static_cast<std::size_t>(it->second) == i) continue;  // a repeated id; reported
-        const PortalDraft& other = portals[static_cast<std::size_t>(it->second)];
-        if (other.kind_ok && other.portal.kind == PortalKind::Mirror) {
-            const std::string kind = draft.kind_ok ? kind_name(draft.portal.kind) : "portal";
-            check.error(draft.path / "target",
-                        quote(other.portal.id) + " is a mirror, which has no partner (it reflects its own room); "
-                        "a " + kind + " must target a " + kind + " that names it back");
-            continue;
-        }
-        if (!draft.has_id || !other.target_id) continue;  // reported where it was read
-        if (*other.target_id != draft.portal.id) {
-            check.error(draft.path / "target",
-                        "portal " + quote(other.portal.id) + " targets " + quote(*other.target_id) +
-                            ", not " + quote(draft.portal.id) +
-                            " (paired portals must name each other)");
-            continue;
-        }
-        draft.portal.target = it->second;
-        // Check the pair's kinds and sizes once, at its later portal.
-        if (static_cast<std::size_t>(it->second) > i) continue;
-        if (draft.kind_ok && other.kind_ok && draft.portal.kind != other.portal.kind) {
-            // At the "kind" that differs, or at the target of a door by default.
-            const std::string kind = kind_name(draft.portal.kind);
-            const std::string other_kind = kind_name(other.portal.kind);
-            check.error(draft.has_kind ? draft.path / "kind" : draft.path / "target",
-                        "a " + kind + " cannot be paired with the " + other_kind + " " + quote(other.portal.id) +
-                            " (paired portals must be of the same kind; make both " + kind + "s or both " +
-                            other_kind + "s)");
-        }
-        if (!draft.rect_ok || !other.rect_ok) continue;
-        const math::PortalRect& a = other.portal.rect;
-        const math::PortalRect& b = draft.portal.rect;
-        if (std::abs(a.width - b.width) > limits::kPairSizeTolerance) {
-            check.error(draft.path / "width",
-                        format_number(b.width) + " differs from the width " + format_number(a.width) +
-                            " of its target " + quote(other.portal.id) +
-                            " (paired portals must have the same size)");
-        }
-        if (std::abs(a.height - b.height) > limits::kPairSizeTolerance) {
-            check.error(draft.path / "height",
-                        format_number(b.height) + " differs from the height " +
-                            format_number(a.height) + " of its target " + quote(other.portal.id) +
-                            " (paired portals must have the same size)");
-        }
+        link_room(check, portals[i], room_index, rooms_known);
+        link_target(check, i, portals, portal_index);
     }
 }
 
