@@ -83,17 +83,53 @@ std::size_t line_index(const std::vector<float>& lines, float value) {
 
 using Lines = std::array<std::vector<float>, 3>;
 
+// A face's grid: its lines along the face's axes a and b, in the mesh's
+// local coordinates, and their crossings.
+struct FaceGrid {
+    const FaceFrame& f;
+    const std::vector<float>& as;
+    const std::vector<float>& bs;
+    float plane = 0.0f;
+
+    glm::vec3 point(std::size_t i, std::size_t j) const { return plane_point(f.axis, plane, f.in, as[i], bs[j]); }
+};
+
+// The front of a hole covering the grid cells [i0, i1) × [j0, j1): the grid
+// points it spans, in columns along the portal's right and rows along its up.
+FrontGrid hole_front(const FaceGrid& grid, const FaceHole& h, std::size_t i0, std::size_t i1, std::size_t j0,
+                     std::size_t j1) {
+    // The portal's right and up along the face's axes, from its corners.
+    const glm::dvec2 along_r = h.corners[1] - h.corners[0];
+    const glm::dvec2 along_u = h.corners[3] - h.corners[0];
+    const bool r_on_a = std::abs(along_r.x) >= std::abs(along_r.y);
+    const bool r_up = (r_on_a ? along_r.x : along_r.y) > 0.0;  // r along +axis
+    const bool u_up = (r_on_a ? along_u.y : along_u.x) > 0.0;
+    const std::size_t r_lo = r_on_a ? i0 : j0, r_hi = r_on_a ? i1 : j1;
+    const std::size_t u_lo = r_on_a ? j0 : i0, u_hi = r_on_a ? j1 : i1;
+    FrontGrid g;
+    g.cols = static_cast<int>(r_hi - r_lo + 1);
+    g.rows = static_cast<int>(u_hi - u_lo + 1);
+    for (int j = 0; j < g.rows; ++j) {
+        for (int i = 0; i < g.cols; ++i) {
+            const std::size_t ri =
+                r_up ? r_lo + static_cast<std::size_t>(i) : r_hi - static_cast<std::size_t>(i);
+            const std::size_t uj =
+                u_up ? u_lo + static_cast<std::size_t>(j) : u_hi - static_cast<std::size_t>(j);
+            g.points.push_back(r_on_a ? grid.point(ri, uj) : grid.point(uj, ri));
+        }
+    }
+    return g;
+}
+
 // One face on the room's grid; fills the fronts of its holes.
 void append_grid_face(MeshWriter& out, const layout::Room& room, int face, const Lines& lines,
                       const std::vector<FaceHole>& holes,
                       std::vector<std::optional<FrontGrid>>& fronts) {
     const FaceFrame f = face_frame(room, face);
-    const std::vector<float>& as = lines[static_cast<std::size_t>(f.in.a)];
-    const std::vector<float>& bs = lines[static_cast<std::size_t>(f.in.b)];
-    const float plane = out.local(f.plane, f.axis);
-    const auto point = [&](std::size_t i, std::size_t j) {
-        return plane_point(f.axis, plane, f.in, as[i], bs[j]);
-    };
+    const FaceGrid grid{f, lines[static_cast<std::size_t>(f.in.a)], lines[static_cast<std::size_t>(f.in.b)],
+                        out.local(f.plane, f.axis)};
+    const std::vector<float>& as = grid.as;
+    const std::vector<float>& bs = grid.bs;
     const std::size_t na = as.size(), nb = bs.size();
     std::vector<char> open((na - 1) * (nb - 1), 1);  // cell (i, j) at [j * (na - 1) + i]
 
@@ -105,27 +141,7 @@ void append_grid_face(MeshWriter& out, const layout::Room& room, int face, const
         for (std::size_t j = j0; j < j1; ++j) {
             for (std::size_t i = i0; i < i1; ++i) open[j * (na - 1) + i] = 0;
         }
-        // The portal's right and up along the face's axes, from its corners.
-        const glm::dvec2 along_r = h.corners[1] - h.corners[0];
-        const glm::dvec2 along_u = h.corners[3] - h.corners[0];
-        const bool r_on_a = std::abs(along_r.x) >= std::abs(along_r.y);
-        const bool r_up = (r_on_a ? along_r.x : along_r.y) > 0.0;  // r along +axis
-        const bool u_up = (r_on_a ? along_u.y : along_u.x) > 0.0;
-        const std::size_t r_lo = r_on_a ? i0 : j0, r_hi = r_on_a ? i1 : j1;
-        const std::size_t u_lo = r_on_a ? j0 : i0, u_hi = r_on_a ? j1 : i1;
-        FrontGrid g;
-        g.cols = static_cast<int>(r_hi - r_lo + 1);
-        g.rows = static_cast<int>(u_hi - u_lo + 1);
-        for (int j = 0; j < g.rows; ++j) {
-            for (int i = 0; i < g.cols; ++i) {
-                const std::size_t ri =
-                    r_up ? r_lo + static_cast<std::size_t>(i) : r_hi - static_cast<std::size_t>(i);
-                const std::size_t uj =
-                    u_up ? u_lo + static_cast<std::size_t>(j) : u_hi - static_cast<std::size_t>(j);
-                g.points.push_back(r_on_a ? point(ri, uj) : point(uj, ri));
-            }
-        }
-        fronts[static_cast<std::size_t>(h.portal)] = std::move(g);
+        fronts[static_cast<std::size_t>(h.portal)] = hole_front(grid, h, i0, i1, j0, j1);
     }
 
     const glm::dvec3 normal = inward_normal(f);
@@ -134,7 +150,7 @@ void append_grid_face(MeshWriter& out, const layout::Room& room, int face, const
     std::vector<std::uint32_t> ids(na * nb, kNone);  // made when first used
     const auto id = [&](std::size_t i, std::size_t j) {
         std::uint32_t& v = ids[j * na + i];
-        if (v == kNone) v = out.vertex(point(i, j), normal, color, room.checker);
+        if (v == kNone) v = out.vertex(grid.point(i, j), normal, color, room.checker);
         return v;
     };
     for (std::size_t j = 0; j + 1 < nb; ++j) {

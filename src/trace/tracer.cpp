@@ -133,6 +133,65 @@ Ray reflected(const ScenePortal& p, const Ray& ray) {
     return r;
 }
 
+// The state of follow's loop along one path: the ray, the colour of the
+// branches finished so far (each times its factor), the factor that
+// multiplies what the ray shows from here on, and, while the path is the
+// main one (the id's), where its end is written.
+struct PathState {
+    Ray ray;
+    dvec3 done{0.0};
+    dvec3 factor{1.0};
+    TraceHit* main = nullptr;
+
+    // Writes the main path's end (all of TraceHit but the colour), once.
+    void end_main(int id, int room, const dvec3& point, const dvec3& normal) {
+        if (!main) return;
+        main->id = id;
+        main->room = room;
+        main->portals_passed = ray.portals_passed;
+        main->point = point;
+        main->normal = normal;
+        main->origin = ray.origin;
+        main->dir = ray.dir;
+        main = nullptr;
+    }
+};
+
+dvec3 follow(const Scene& scene, Ray ray, int max_depth, TraceHit* main);
+
+// Step 5 at window P, hit at `point`: the reflected branch is followed by a
+// recursive call where the through branch goes on too; where the through
+// branch is cut by weight, the main path ends (id 255) and the loop follows
+// the reflected branch. False where both are cut: the path's colour is then
+// path.done.
+bool window_step(const Scene& scene, const ScenePortal& p, const dvec3& point, const dvec3& normal,
+                 int max_depth, PathState& path) {
+    Ray& ray = path.ray;
+    const double r = p.reflectance;
+    Ray back = reflected(p, ray);
+    back.weight = ray.weight * r;
+    const dvec3 back_factor = path.factor * r;
+    const double through_weight = ray.weight * ((1.0 - r) * shading::max_channel(p.tint));
+    const dvec3 through_factor = path.factor * ((1.0 - r) * p.tint);
+    const bool back_on = back.weight >= shading::kMinBranchWeight;
+    const bool through_on = through_weight >= shading::kMinBranchWeight;
+    if (!back_on) path.done += back_factor * shading::kPortalFillColor;
+    if (through_on) {
+        if (back_on) path.done += back_factor * follow(scene, back, max_depth, nullptr);
+        pass_through(scene, p, ray);
+        ray.weight = through_weight;
+        path.factor = through_factor;
+        return true;
+    }
+    // The through branch is cut: the main path ends here, as at the limit.
+    path.end_main(kIdDepthLimit, ray.room, point, normal);
+    path.done += through_factor * shading::kPortalFillColor;
+    if (!back_on) return false;
+    ray = back;
+    path.factor = back_factor;
+    return true;
+}
+
 // Follows `ray` ("What a pixel shows", steps 1-5) and returns the colour it
 // shows. The loop follows one path: through doors, mirrors and windows'
 // through branches. A window's reflected branch is followed by a recursive
@@ -148,71 +207,39 @@ Ray reflected(const ScenePortal& p, const Ray& ray) {
 // is written there (all of TraceHit but the colour); it ends where that path
 // ends, or at a window whose through branch is cut by weight (id 255).
 dvec3 follow(const Scene& scene, Ray ray, int max_depth, TraceHit* main) {
-    dvec3 done(0.0);    // the finished branches, each times its factor
-    dvec3 factor(1.0);  // multiplies what the ray shows from here on
-    auto end_main = [&](int id, int room, const dvec3& point, const dvec3& normal) {
-        if (!main) return;
-        main->id = id;
-        main->room = room;
-        main->portals_passed = ray.portals_passed;
-        main->point = point;
-        main->normal = normal;
-        main->origin = ray.origin;
-        main->dir = ray.dir;
-        main = nullptr;
-    };
+    PathState path{ray, dvec3(0.0), dvec3(1.0), main};
     for (;;) {
-        const Nearest n = nearest_in_room(scene, ray.room, ray.origin, ray.dir, ray.clip);
+        const Ray& now = path.ray;
+        const Nearest n = nearest_in_room(scene, now.room, now.origin, now.dir, now.clip);
         if (!n.found) {
-            end_main(kIdNothing, -1, dvec3(0.0), dvec3(0.0));
-            return done + factor * shading::kBackgroundColor;
+            path.end_main(kIdNothing, -1, dvec3(0.0), dvec3(0.0));
+            return path.done + path.factor * shading::kBackgroundColor;
         }
-        const dvec3 point = ray.origin + n.t * ray.dir;
+        const dvec3 point = now.origin + n.t * now.dir;
         if (n.portal < 0) {
-            end_main(1 + ray.room, ray.room, point, n.normal);
-            return done + factor * shading::shade(base_color(scene, ray.room, n, point), n.normal, point, n.checker);
+            path.end_main(1 + now.room, now.room, point, n.normal);
+            return path.done +
+                   path.factor * shading::shade(base_color(scene, now.room, n, point), n.normal, point, n.checker);
         }
-        if (ray.portals_passed >= max_depth) {  // step 3, for every kind
-            end_main(kIdDepthLimit, ray.room, point, n.normal);
-            return done + factor * shading::kPortalFillColor;
+        if (now.portals_passed >= max_depth) {  // step 3, for every kind
+            path.end_main(kIdDepthLimit, now.room, point, n.normal);
+            return path.done + path.factor * shading::kPortalFillColor;
         }
         const ScenePortal& p = scene.portals[n.portal];
         switch (p.kind) {
             case layout::PortalKind::Door:
-                pass_through(scene, p, ray);
+                pass_through(scene, p, path.ray);
                 break;
             case layout::PortalKind::Mirror: {  // step 4; never cut by weight
-                const double weight = ray.weight * shading::max_channel(p.tint);
-                ray = reflected(p, ray);
-                ray.weight = weight;
-                factor *= p.tint;
+                const double weight = now.weight * shading::max_channel(p.tint);
+                path.ray = reflected(p, now);
+                path.ray.weight = weight;
+                path.factor *= p.tint;
                 break;
             }
-            case layout::PortalKind::Window: {  // step 5
-                const double r = p.reflectance;
-                Ray back = reflected(p, ray);
-                back.weight = ray.weight * r;
-                const dvec3 back_factor = factor * r;
-                const double through_weight = ray.weight * ((1.0 - r) * shading::max_channel(p.tint));
-                const dvec3 through_factor = factor * ((1.0 - r) * p.tint);
-                const bool back_on = back.weight >= shading::kMinBranchWeight;
-                const bool through_on = through_weight >= shading::kMinBranchWeight;
-                if (!back_on) done += back_factor * shading::kPortalFillColor;
-                if (through_on) {
-                    if (back_on) done += back_factor * follow(scene, back, max_depth, nullptr);
-                    pass_through(scene, p, ray);
-                    ray.weight = through_weight;
-                    factor = through_factor;
-                    break;
-                }
-                // The through branch is cut: the main path ends here, as at the limit.
-                end_main(kIdDepthLimit, ray.room, point, n.normal);
-                done += through_factor * shading::kPortalFillColor;
-                if (!back_on) return done;
-                ray = back;
-                factor = back_factor;
+            case layout::PortalKind::Window:
+                if (!window_step(scene, p, point, n.normal, max_depth, path)) return path.done;
                 break;
-            }
         }
     }
 }
