@@ -114,15 +114,18 @@ struct Parts {
     std::string sampler;                 // its glTF sampler object
 };
 
-// The model as a .glb: buffer views for positions, normals, [uv], [colours],
-// indices and [the PNG], in that order, each with one accessor but the PNG.
-std::vector<unsigned char> glb_of_mesh(const std::string& name, const Mesh& mesh, const Parts& parts) {
+// The binary buffer of a .glb being written, with its buffer views and
+// accessors as glTF JSON (comma-separated objects).
+struct GlbBuffers {
     std::vector<unsigned char> bin;
     std::string views;
     std::string accessors;
     int view_count = 0;
+    int accessor_count = 0;
+
     // Appends the values as a new buffer view; returns its index.
-    const auto add_view = [&](const auto* values, std::size_t count, int target) {
+    template <class T>
+    int add_view(const T* values, std::size_t count, int target) {
         const std::size_t offset = bin.size();
         const std::size_t length = append_bytes(bin, values, count);
         if (!views.empty()) views += ",";
@@ -131,10 +134,13 @@ std::vector<unsigned char> glb_of_mesh(const std::string& name, const Mesh& mesh
         if (target != 0) views += ",\"target\":" + std::to_string(target);
         views += "}";
         return view_count++;
-    };
-    // A float attribute of `width` components: a view and an accessor.
-    int accessor_count = 0;
-    const auto add_attribute = [&](std::size_t width, const char* type, auto member, const std::string& bounds) {
+    }
+
+    // A float attribute of the mesh's vertices, `width` components of
+    // `member`: a view and an accessor (with `bounds`, JSON to add to it).
+    template <class Member>
+    int add_attribute(const Mesh& mesh, std::size_t width, const char* type, Member member,
+                      const std::string& bounds) {
         std::vector<float> values;
         for (const Vertex& v : mesh.vertices) {
             const auto& field = v.*member;
@@ -145,7 +151,11 @@ std::vector<unsigned char> glb_of_mesh(const std::string& name, const Mesh& mesh
         accessors += "{\"bufferView\":" + std::to_string(view) + ",\"componentType\":5126,\"count\":" +
                      std::to_string(mesh.vertices.size()) + ",\"type\":\"" + type + "\"" + bounds + "}";
         return accessor_count++;
-    };
+    }
+};
+
+// The positions' "min" and "max", as JSON to add to their accessor.
+std::string position_bounds(const Mesh& mesh) {
     Vec3 lo = mesh.vertices.front().position;
     Vec3 hi = lo;
     for (const Vertex& v : mesh.vertices) {
@@ -154,22 +164,39 @@ std::vector<unsigned char> glb_of_mesh(const std::string& name, const Mesh& mesh
             hi[i] = std::max(hi[i], v.position[i]);
         }
     }
+    return ",\"min\":" + floats(lo.data(), 3) + ",\"max\":" + floats(hi.data(), 3);
+}
+
+// The primitive's attributes (POSITION, NORMAL, [TEXCOORD_0], [COLOR_0]),
+// written to the buffers; returns the JSON of its "attributes" object's members.
+std::string add_attributes(GlbBuffers& buffers, const Mesh& mesh, const Parts& parts) {
     std::string attributes =
         "\"POSITION\":" +
-        std::to_string(add_attribute(3, "VEC3", &Vertex::position,
-                                     ",\"min\":" + floats(lo.data(), 3) + ",\"max\":" + floats(hi.data(), 3)));
-    attributes += ",\"NORMAL\":" + std::to_string(add_attribute(3, "VEC3", &Vertex::normal, ""));
-    if (parts.uv) attributes += ",\"TEXCOORD_0\":" + std::to_string(add_attribute(2, "VEC2", &Vertex::uv, ""));
-    if (parts.color) attributes += ",\"COLOR_0\":" + std::to_string(add_attribute(4, "VEC4", &Vertex::color, ""));
+        std::to_string(buffers.add_attribute(mesh, 3, "VEC3", &Vertex::position, position_bounds(mesh)));
+    attributes += ",\"NORMAL\":" + std::to_string(buffers.add_attribute(mesh, 3, "VEC3", &Vertex::normal, ""));
+    if (parts.uv) {
+        attributes += ",\"TEXCOORD_0\":" + std::to_string(buffers.add_attribute(mesh, 2, "VEC2", &Vertex::uv, ""));
+    }
+    if (parts.color) {
+        attributes += ",\"COLOR_0\":" + std::to_string(buffers.add_attribute(mesh, 4, "VEC4", &Vertex::color, ""));
+    }
+    return attributes;
+}
 
-    const int index_view = add_view(mesh.indices.data(), mesh.indices.size(), 34963);
-    const int index_accessor = accessor_count++;
-    accessors += ",{\"bufferView\":" + std::to_string(index_view) + ",\"componentType\":5123,\"count\":" +
-                 std::to_string(mesh.indices.size()) + ",\"type\":\"SCALAR\"}";
+// The model as a .glb: buffer views for positions, normals, [uv], [colours],
+// indices and [the PNG], in that order, each with one accessor but the PNG.
+std::vector<unsigned char> glb_of_mesh(const std::string& name, const Mesh& mesh, const Parts& parts) {
+    GlbBuffers buffers;
+    const std::string attributes = add_attributes(buffers, mesh, parts);
+
+    const int index_view = buffers.add_view(mesh.indices.data(), mesh.indices.size(), 34963);
+    const int index_accessor = buffers.accessor_count++;
+    buffers.accessors += ",{\"bufferView\":" + std::to_string(index_view) + ",\"componentType\":5123,\"count\":" +
+                         std::to_string(mesh.indices.size()) + ",\"type\":\"SCALAR\"}";
 
     std::string textures;
     if (!parts.png.empty()) {
-        const int image_view = add_view(parts.png.data(), parts.png.size(), 0);
+        const int image_view = buffers.add_view(parts.png.data(), parts.png.size(), 0);
         textures = ",\"textures\":[{\"sampler\":0,\"source\":0}],"
                    "\"images\":[{\"bufferView\":" + std::to_string(image_view) + ",\"mimeType\":\"image/png\"}],"
                    "\"samplers\":[" + parts.sampler + "]";
@@ -181,11 +208,11 @@ std::vector<unsigned char> glb_of_mesh(const std::string& name, const Mesh& mesh
         "\"meshes\":[{\"name\":\"" + name + "\",\"primitives\":[{\"attributes\":{" + attributes +
         "},\"indices\":" + std::to_string(index_accessor) + ",\"material\":0}]}],"
         "\"materials\":[" + parts.material + "]" + textures + ","
-        "\"accessors\":[" + accessors + "],"
-        "\"bufferViews\":[" + views + "],"
-        "\"buffers\":[{\"byteLength\":" + std::to_string(bin.size()) + "}]}";
+        "\"accessors\":[" + buffers.accessors + "],"
+        "\"bufferViews\":[" + buffers.views + "],"
+        "\"buffers\":[{\"byteLength\":" + std::to_string(buffers.bin.size()) + "}]}";
     while (json.size() % 4 != 0) json += ' ';
-    return glb_of(json, bin);
+    return glb_of(json, buffers.bin);
 }
 
 }  // namespace

@@ -24,15 +24,16 @@ void append_values(std::vector<unsigned char>& out, const std::vector<T>& values
 
 std::string number(float v) { return json_number(v); }
 
-}  // namespace
-
-std::vector<unsigned char> make_sphere_glb(long triangles) {
-    const int stacks = std::max(2, static_cast<int>(std::sqrt(static_cast<double>(std::max(16L, triangles)) / 4.0)));
-    const int slices = 2 * stacks;
-    const double pi = std::acos(-1.0);
-    // (stacks + 1) rings of (slices + 1) vertices: the seam and the poles repeat.
+// The sphere's vertices, their bounds and its triangles.
+struct SphereMesh {
     std::vector<float> positions, normals;
     std::array<float, 3> lo = {1e30f, 1e30f, 1e30f}, hi = {-1e30f, -1e30f, -1e30f};
+    std::vector<std::uint32_t> indices;
+};
+
+// (stacks + 1) rings of (slices + 1) vertices: the seam and the poles repeat.
+void add_sphere_vertices(SphereMesh& mesh, int stacks, int slices) {
+    const double pi = std::acos(-1.0);
     for (int i = 0; i <= stacks; ++i) {
         for (int j = 0; j <= slices; ++j) {
             const double theta = pi * i / stacks, phi = 2.0 * pi * j / slices;
@@ -40,28 +41,34 @@ std::vector<unsigned char> make_sphere_glb(long triangles) {
             const double r = 1.0 + 0.03 * std::sin(17.0 * n[0]) * std::sin(13.0 * n[1] + 11.0 * n[2]);
             for (int k = 0; k < 3; ++k) {
                 const auto p = static_cast<float>(r * n[k]);
-                positions.push_back(p);
-                normals.push_back(static_cast<float>(n[k]));
-                lo[k] = std::min(lo[k], p);
-                hi[k] = std::max(hi[k], p);
+                mesh.positions.push_back(p);
+                mesh.normals.push_back(static_cast<float>(n[k]));
+                mesh.lo[k] = std::min(mesh.lo[k], p);
+                mesh.hi[k] = std::max(mesh.hi[k], p);
             }
         }
     }
+}
+
+void add_sphere_triangles(SphereMesh& mesh, int stacks, int slices) {
     auto vertex = [&](int i, int j) { return static_cast<std::uint32_t>(i * (slices + 1) + j); };
-    std::vector<std::uint32_t> indices;
     for (int i = 0; i < stacks; ++i) {
         for (int j = 0; j < slices; ++j) {
             // Counter-clockwise seen from outside.
-            if (i > 0) indices.insert(indices.end(), {vertex(i, j), vertex(i + 1, j), vertex(i, j + 1)});
-            if (i + 1 < stacks) indices.insert(indices.end(), {vertex(i, j + 1), vertex(i + 1, j), vertex(i + 1, j + 1)});
+            if (i > 0) mesh.indices.insert(mesh.indices.end(), {vertex(i, j), vertex(i + 1, j), vertex(i, j + 1)});
+            if (i + 1 < stacks)
+                mesh.indices.insert(mesh.indices.end(), {vertex(i, j + 1), vertex(i + 1, j), vertex(i + 1, j + 1)});
         }
     }
-    std::vector<unsigned char> bin;
-    append_values(bin, positions);
-    append_values(bin, normals);
-    append_values(bin, indices);
-    const std::size_t vertex_bytes = positions.size() * 4;
-    const std::string count = std::to_string(positions.size() / 3);
+}
+
+// The glTF JSON of the sphere whose buffer (positions, normals, indices)
+// holds `bin_size` bytes, padded to a multiple of 4 bytes.
+std::string sphere_json(const SphereMesh& mesh, std::size_t bin_size) {
+    const std::size_t vertex_bytes = mesh.positions.size() * 4;
+    const std::string count = std::to_string(mesh.positions.size() / 3);
+    const std::array<float, 3>& lo = mesh.lo;
+    const std::array<float, 3>& hi = mesh.hi;
     std::string json =
         "{\"asset\":{\"version\":\"2.0\",\"generator\":\"impossible tools/make_sphere_glb\"},"
         "\"scene\":0,\"scenes\":[{\"nodes\":[0]}],"
@@ -75,17 +82,32 @@ std::vector<unsigned char> make_sphere_glb(long triangles) {
         number(lo[0]) + "," + number(lo[1]) + "," + number(lo[2]) + "],\"max\":[" + number(hi[0]) + "," +
         number(hi[1]) + "," + number(hi[2]) + "]},"
         "{\"bufferView\":1,\"componentType\":5126,\"count\":" + count + ",\"type\":\"VEC3\"},"
-        "{\"bufferView\":2,\"componentType\":5125,\"count\":" + std::to_string(indices.size()) +
+        "{\"bufferView\":2,\"componentType\":5125,\"count\":" + std::to_string(mesh.indices.size()) +
         ",\"type\":\"SCALAR\"}],"
         "\"bufferViews\":["
         "{\"buffer\":0,\"byteOffset\":0,\"byteLength\":" + std::to_string(vertex_bytes) + ",\"target\":34962},"
         "{\"buffer\":0,\"byteOffset\":" + std::to_string(vertex_bytes) + ",\"byteLength\":" +
         std::to_string(vertex_bytes) + ",\"target\":34962},"
         "{\"buffer\":0,\"byteOffset\":" + std::to_string(2 * vertex_bytes) + ",\"byteLength\":" +
-        std::to_string(indices.size() * 4) + ",\"target\":34963}],"
-        "\"buffers\":[{\"byteLength\":" + std::to_string(bin.size()) + "}]}";
+        std::to_string(mesh.indices.size() * 4) + ",\"target\":34963}],"
+        "\"buffers\":[{\"byteLength\":" + std::to_string(bin_size) + "}]}";
     while (json.size() % 4 != 0) json += ' ';  // chunks are 4-byte aligned
-    return glb_of(json, bin);
+    return json;
+}
+
+}  // namespace
+
+std::vector<unsigned char> make_sphere_glb(long triangles) {
+    const int stacks = std::max(2, static_cast<int>(std::sqrt(static_cast<double>(std::max(16L, triangles)) / 4.0)));
+    const int slices = 2 * stacks;
+    SphereMesh mesh;
+    add_sphere_vertices(mesh, stacks, slices);
+    add_sphere_triangles(mesh, stacks, slices);
+    std::vector<unsigned char> bin;
+    append_values(bin, mesh.positions);
+    append_values(bin, mesh.normals);
+    append_values(bin, mesh.indices);
+    return glb_of(sphere_json(mesh, bin.size()), bin);
 }
 
 }  // namespace impossible::tools
