@@ -6,13 +6,17 @@
 
 #include <stb_image.h>
 
+#include "base/user_text.hpp"
+
 namespace impossible::image {
 
 namespace {
 
+// stb_image's reason can quote bytes of the file (an unknown PNG chunk's
+// four type bytes), so it is made printable before it joins a message.
 std::string stb_reason() {
     const char* reason = stbi_failure_reason();
-    return reason != nullptr && *reason != '\0' ? reason : "unknown reason";
+    return reason != nullptr && *reason != '\0' ? printable(reason) : "unknown reason";
 }
 
 // stbi_load_from_memory into Pixels of `want` channels (1, 3 or 4); the

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "base/file_io.hpp"
+#include "base/user_text.hpp"
 
 namespace impossible::layout {
 namespace {
@@ -45,9 +46,9 @@ PathFile read_path_stream(std::istream& in, const std::string& name) {
             if (*first == '+') ++first;
             const auto [ptr, ec] = std::from_chars(first, last, v[k]);
             if (ec != std::errc() || ptr != last || !std::isfinite(v[k]))
-                return fail(std::string(kNames[k]) + ": '" + f[k] + "' is not a finite number");
+                return fail(std::string(kNames[k]) + ": '" + printable(f[k]) + "' is not a finite number");
             if (std::abs(v[k]) > 1e6)
-                return fail(std::string(kNames[k]) + ": " + f[k] + " is out of range (|" + kNames[k] +
+                return fail(std::string(kNames[k]) + ": " + printable(f[k]) + " is out of range (|" + kNames[k] +
                             "| <= " + (k < 3 ? "1e6 m" : "1e6 degrees") + ")");
         }
         poses.push_back(math::HeadPose{{v[0], v[1], v[2]}, v[3], v[4], v[5]});

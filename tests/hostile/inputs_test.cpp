@@ -51,5 +51,14 @@ TEST_F(Hostile, ADirectoryIsNamedAsOne) {
     expect_refused(run("mkdir -p d; $BIN walk lay.json --path d"), 1, "d: is a directory");
 }
 
+// A path file's bad field is quoted with its control bytes written out, so
+// an escape sequence in it cannot clear the terminal (found by path_fuzzer).
+TEST_F(Hostile, APathFileFieldWithAnEscapeSequenceIsQuotedPrintably) {
+    spit(dir_ / "p.txt", "0 1.6 1.0 0 0 0\n0 1.6 \x1b[2J\x1b[31mPWNED 0 0 0\n");
+    const Outcome r = run("$BIN walk lay.json --path p.txt");
+    expect_refused(r, 1, "p.txt:2: Z: '\\x1b[2J\\x1b[31mPWNED' is not a finite number");
+    EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace impossible::hostile

@@ -80,5 +80,20 @@ TEST_F(HostileTextures, ABlendMaterialIsRefusedByName) {
     expect_refused(r, 1, "has material 0 (\"Glass\") with alphaMode \"BLEND\", which is not supported");
 }
 
+// stb_image names an unknown critical chunk by its four type bytes; a type
+// of a newline and an escape sequence must not reach the terminal (found by
+// gltf_fuzzer): the message stays one printable line.
+TEST_F(HostileTextures, AnUnknownChunkTypeWithControlBytesIsQuotedPrintably) {
+    std::string png = png_file(1, 1, 8, 2, std::string("\0\x10\x20\x30", 4));
+    const std::size_t iend = png.size() - 12;
+    png.insert(iend, png_chunk(std::string("\n\x1b[H", 4), "x"));
+    spit(dir_ / "bad.png", png);
+    layout_with_textures(R"({"floor": "bad.png"})");
+    const Outcome r = run("$BIN validate t.json");
+    expect_refused(r, 1, "rooms[0].textures.floor: the image \"bad.png\" could not be decoded");
+    EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("\\x0a\\x1b[H"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace impossible::hostile

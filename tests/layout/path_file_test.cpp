@@ -29,5 +29,16 @@ TEST(PathFile, AFileMustHoldAPoseAndNotBeAFolder) {
     EXPECT_EQ(read_path_file("/tmp").error(), "/tmp: is a directory");
 }
 
+// A bad field is quoted printably: control bytes, a NUL and bytes that are
+// not UTF-8 never reach the message (found by path_fuzzer).
+TEST(PathFile, ABadFieldIsQuotedPrintably) {
+    std::istringstream escape("0 1.6 \x1b[2J 0 0 0\n");
+    EXPECT_EQ(read_path_stream(escape, "p.txt").error(), "p.txt:1: Z: '\\x1b[2J' is not a finite number");
+    std::istringstream binary(std::string("0 1.6 1\0\xff 0 0 0\n", 16));
+    EXPECT_EQ(read_path_stream(binary, "p.txt").error(), "p.txt:1: Z: '1\\x00\\xff' is not a finite number");
+    std::istringstream huge("0 1.6 1e9\x7f 0 0 0\n");
+    EXPECT_EQ(read_path_stream(huge, "p.txt").error(), "p.txt:1: Z: '1e9\\x7f' is not a finite number");
+}
+
 }  // namespace
 }  // namespace impossible::layout
