@@ -1,9 +1,8 @@
 // glTF materials and textured room faces in the tracer (docs/tracer.md,
 // "Materials and textures"): base colour · COLOR_0 · texel, read at level 0
-// with the mag filter; alpha-masked holes that rays pass through;
-// double-sided triangles seen from behind with their normal reversed; and
-// room face textures oriented as layout-format.md says. Layouts are built in
-// code and the expected colours are worked out by hand.
+// with the mag filter; and room face textures oriented as layout-format.md
+// says. Alpha masks and double-sided triangles: tracer_alpha_test.cpp.
+// Layouts are built in code and the expected colours are worked out by hand.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +11,7 @@
 #include <initializer_list>
 #include <memory>
 
+#include "trace/material_test_util.hpp"
 #include "trace/trace_test_util.hpp"
 #include "trace/tracer.hpp"
 
@@ -20,62 +20,16 @@ namespace {
 
 using glm::dvec2;
 using glm::dvec4;
+using test::add_quad;
 using test::bytes_of;
-using test::face_color;
+using test::image_of;
 using test::kTol;
 using test::one_room;
-using test::make_room;
+using test::quadrant;
+using test::quadrants;
 using test::shade_by_hand;
+using test::texture;
 namespace code = assets::sampler_code;
-
-
-std::shared_ptr<const image::Pixels> image_of(int width, int height, std::initializer_list<std::uint8_t> bytes) {
-    auto image = std::make_shared<image::Pixels>();
-    image->width = width;
-    image->height = height;
-    image->data = bytes;
-    return image;
-}
-
-// 2 × 2, all channels different from quadrant to quadrant: top-left,
-// top-right, bottom-left, bottom-right (the last with alpha `last_alpha`).
-std::shared_ptr<const image::Pixels> quadrants(std::uint8_t top_right_alpha = 255) {
-    return image_of(2, 2, {255, 128, 64, 255, 64, 255, 128, top_right_alpha, 128, 64, 255, 255, 204, 204, 51, 255});
-}
-// The texel of quadrants() at column i, row j, as the tracer reads bytes.
-dvec4 quadrant(int i, int j, std::uint8_t top_right_alpha = 255) {
-    const std::uint8_t q[4][4] = {{255, 128, 64, 255}, {64, 255, 128, top_right_alpha}, {128, 64, 255, 255},
-                                  {204, 204, 51, 255}};
-    const std::uint8_t* p = q[2 * j + i];
-    return dvec4(p[0], p[1], p[2], p[3]) / 255.0;
-}
-
-// A quad x ∈ [-1, 1], y ∈ [0.5, 2.5] in the plane z = -1, facing +z (two
-// triangles, counter-clockwise seen from +z), with material `material`,
-// uv (0, 0) at its top-left corner (s = (x + 1) / 2, t = (2.5 - y) / 2),
-// COLOR_0 `vertex` and the vertex normal `normal`.
-void add_quad(layout::GltfProp& model, int material, dvec4 vertex = dvec4(1.0), dvec3 normal = {0, 0, 1}) {
-    auto corner = [](double x, double y) { return dvec3(x, y, -1.0); };
-    auto uv = [](const dvec3& p) { return dvec2((p.x + 1.0) / 2.0, (2.5 - p.y) / 2.0); };
-    const dvec3 a = corner(-1, 0.5), b = corner(1, 0.5), c = corner(1, 2.5), d = corner(-1, 2.5);
-    for (const auto& tri : {std::array<dvec3, 3>{a, b, c}, std::array<dvec3, 3>{a, c, d}}) {
-        assets::ModelTriangle t;
-        t.position = tri;
-        t.normal = {normal, normal, normal};
-        t.color = material >= 0 ? dvec3(model.materials[material].base_color) : dvec3(0.8);
-        t.vertex_color = {vertex, vertex, vertex};
-        t.uv = {uv(tri[0]), uv(tri[1]), uv(tri[2])};
-        t.material = material;
-        model.triangles.push_back(t);
-    }
-}
-
-assets::Texture texture(std::shared_ptr<const image::Pixels> image, int filter) {
-    assets::Texture t;
-    t.image = std::move(image);
-    t.sampler.mag_filter = filter;
-    return t;
-}
 
 // The quad's texel quadrant (column, row) at a point of it; false within
 // `margin` of its edges or of the quadrants' boundaries.
@@ -181,120 +135,6 @@ TEST(TracerMaterial, LinearMagFilterBlendsNeighbours) {
     const dvec4 mean = 0.25 * (quadrant(0, 0) + quadrant(1, 0) + quadrant(0, 1) + quadrant(1, 1));
     const dvec3 expected = shade_by_hand(dvec3(mean), {0, 0, 1}, false);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(hit.color[c], expected[c], kTol);
-}
-
-// The masked quad: its top-right quadrant has alpha `alpha` (the others 1).
-layout::Layout masked_quad(std::uint8_t alpha, assets::AlphaMode mode, double base_alpha = 1.0, double cutoff = 0.5) {
-    layout::Layout l = one_room();
-    layout::GltfProp model;
-    assets::Material material;
-    material.base_color = {0.6, 0.7, 0.8, base_alpha};
-    material.texture = 0;
-    material.alpha_mode = mode;
-    material.alpha_cutoff = cutoff;
-    model.materials.push_back(material);
-    model.textures.push_back(texture(quadrants(alpha), code::kNearest));
-    add_quad(model, 0);
-    l.rooms[0].props.push_back(model);
-    return l;
-}
-
-TEST(TracerMaterial, MaskedHoleShowsTheWallBehind) {
-    const layout::Layout l = masked_quad(0, assets::AlphaMode::Mask);
-    const Scene scene = prepare_scene(l).value();
-    // Top-right quadrant: through the hole to the -z wall at z = -2.
-    const TraceHit hole = trace_ray(scene, {0.5, 2.0, 1.0}, {0, 0, -1}, 0, 8);
-    EXPECT_EQ(hole.id, 1);
-    EXPECT_NEAR(hole.point.z, -2.0, kTol);
-    const dvec3 wall = shade_by_hand(face_color(l.rooms[0], layout::Face::NegZ), {0, 0, 1}, false);
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(hole.color[c], wall[c], kTol);
-    // The other three: the quad.
-    for (const dvec3& o : {dvec3(-0.5, 2.0, 1.0), dvec3(-0.5, 1.0, 1.0), dvec3(0.5, 1.0, 1.0)}) {
-        const TraceHit solid = trace_ray(scene, o, {0, 0, -1}, 0, 8);
-        EXPECT_NEAR(solid.point.z, -1.0, kTol);
-    }
-    // Opaque: alpha is not read; the hole is quad.
-    const TraceHit opaque = trace_ray(prepare_scene(masked_quad(0, assets::AlphaMode::Opaque)).value(), {0.5, 2.0, 1.0},
-                                      {0, 0, -1}, 0, 8);
-    EXPECT_NEAR(opaque.point.z, -1.0, kTol);
-}
-
-TEST(TracerMaterial, MaskCutoffComparesTheWholeAlpha) {
-    // Texel alpha 128/255 ≈ 0.502: kept at cutoff 0.5, a hole at cutoff 0.51
-    // or when the factor's alpha 0.9 brings it to 0.452.
-    const dvec3 origin(0.5, 2.0, 1.0), dir(0, 0, -1);
-    EXPECT_NEAR(trace_ray(prepare_scene(masked_quad(128, assets::AlphaMode::Mask)).value(), origin, dir, 0, 8).point.z, -1.0,
-                kTol);
-    EXPECT_NEAR(trace_ray(prepare_scene(masked_quad(128, assets::AlphaMode::Mask, 1.0, 0.51)).value(), origin, dir, 0, 8)
-                    .point.z,
-                -2.0, kTol);
-    EXPECT_NEAR(
-        trace_ray(prepare_scene(masked_quad(128, assets::AlphaMode::Mask, 0.9)).value(), origin, dir, 0, 8).point.z, -2.0,
-        kTol);
-    // Exactly at the cutoff is kept (alpha < cutoff is a hole): 0.5 · 1 · 1.
-    layout::Layout half = masked_quad(255, assets::AlphaMode::Mask, 0.5, 0.5);
-    EXPECT_NEAR(trace_ray(prepare_scene(half).value(), origin, dir, 0, 8).point.z, -1.0, kTol);
-}
-
-TEST(TracerMaterial, MaskedFramesAreTheSameWithAndWithoutTheTree) {
-    const Scene with = prepare_scene(masked_quad(0, assets::AlphaMode::Mask)).value();
-    ASSERT_FALSE(with.rooms[0].bvh.nodes.empty());
-    Scene without = with;
-    without.rooms[0].bvh = {};
-    TraceDesc desc;
-    desc.head.position = {0.1, 1.5, 1.0};
-    desc.eye_width = 40;
-    desc.eye_height = 30;
-    const image::Image a = trace_frame(with, desc).value(), b = trace_frame(without, desc).value();
-    EXPECT_EQ(a.rgb, b.rgb);
-    EXPECT_EQ(a.ids, b.ids);
-    // The hole shows the -z wall: its colour is in the frame, beside the quad's.
-    const auto wall = bytes_of(shade_by_hand(test::make_room("x", {}, {}).face_color[4], {0, 0, 1}, false));
-    bool wall_seen = false;
-    for (int i = 0; i < a.width && !wall_seen; ++i)
-        for (int j = 0; j < a.height && !wall_seen; ++j) wall_seen = test::pixel_rgb(a, i, j) == wall;
-    EXPECT_TRUE(wall_seen);
-}
-
-// A quad seen from behind (from z = -1.5, looking +z), its vertex normal
-// tilted down (0, -0.6, 0.8): from the front that faces away from the light;
-// reversed, (0, 0.6, -0.8), it is lit.
-TraceHit from_behind(bool double_sided) {
-    layout::Layout l = one_room();
-    layout::GltfProp model;
-    assets::Material material;
-    material.base_color = {0.9, 0.5, 0.3, 1.0};
-    material.double_sided = double_sided;
-    model.materials.push_back(material);
-    add_quad(model, 0, dvec4(1.0), {0.0, -0.6, 0.8});
-    l.rooms[0].props.push_back(model);
-    return trace_ray(prepare_scene(l).value(), {0.2, 1.5, -1.5}, {0, 0, 1}, 0, 8);
-}
-
-TEST(TracerMaterial, DoubleSidedIsSeenFromBehindWithItsNormalReversed) {
-    const TraceHit one = from_behind(false);
-    EXPECT_NEAR(one.point.z, 2.0, kTol);  // through it, to the +z wall
-    const TraceHit two = from_behind(true);
-    EXPECT_EQ(two.id, 1);
-    EXPECT_NEAR(two.point.z, -1.0, kTol);
-    EXPECT_NEAR(two.normal.y, 0.6, kTol);
-    EXPECT_NEAR(two.normal.z, -0.8, kTol);
-    const dvec3 lit = shade_by_hand({0.9, 0.5, 0.3}, {0.0, 0.6, -0.8}, false);
-    const dvec3 unlit = shade_by_hand({0.9, 0.5, 0.3}, {0.0, -0.6, 0.8}, false);
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(two.color[c], lit[c], kTol);
-    EXPECT_GT(lit.x, unlit.x + 0.05);  // the reversal shows
-    // From the front it is the same triangle with its own normal.
-    layout::Layout l = one_room();
-    layout::GltfProp model;
-    assets::Material material;
-    material.base_color = {0.9, 0.5, 0.3, 1.0};
-    material.double_sided = true;
-    model.materials.push_back(material);
-    add_quad(model, 0, dvec4(1.0), {0.0, -0.6, 0.8});
-    l.rooms[0].props.push_back(model);
-    const TraceHit front = trace_ray(prepare_scene(l).value(), {0.2, 1.5, 1.5}, {0, 0, -1}, 0, 8);
-    EXPECT_NEAR(front.point.z, -1.0, kTol);
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(front.color[c], unlit[c], kTol);
 }
 
 // Room faces: a 2 × 2 image on a room [0, 4] × [0, 3] × [0, 4], one tile per
