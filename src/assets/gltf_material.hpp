@@ -1,4 +1,4 @@
-// glTF materials, textures, samplers and images (internal to gltf_model.cpp):
+// glTF materials, textures, samplers and images (internal to load_gltf_model):
 // the checks on a material a primitive uses, the image callback tinygltf
 // calls while parsing, and the decoding of the images the triangles need.
 #pragma once
