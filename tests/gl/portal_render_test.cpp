@@ -231,6 +231,14 @@ TEST(PortalTexture, FullScaleEqualsStencilPortalsAndSmallerScalesBlur) {
         EXPECT_EQ(testing::count_id_differences(stencil, full), 0) << name;
         EXPECT_EQ(testing::count_colour_differences(stencil, full, 0), 0) << name;
         EXPECT_GE(stats.portal_passes_drawn, 1) << name;
+        // The occlusion test with them: a texture's view shares the frame's
+        // queries and its conditional rendering (which does not nest), and
+        // the pixels stay the same.
+        f.occlusion_test = true;
+        const image::Image tested = testing::render_once(gl::Backend::Egl, l, f);
+        EXPECT_EQ(testing::count_id_differences(stencil, tested), 0) << name;
+        EXPECT_EQ(testing::count_colour_differences(stencil, tested, 0), 0) << name;
+        f.occlusion_test = false;
         f.portal_texture_scale = 0.25;
         const image::Image quarter = testing::render_once(gl::Backend::Egl, l, f);
         EXPECT_GT(testing::count_colour_differences(stencil, quarter, 2), 0) << name << ": a quarter-size texture blurs";
