@@ -14,7 +14,7 @@ in float v_alpha;  // alpha before the texel's
 uniform sampler2D u_texture;
 uniform bool u_textured;      // multiply by u_texture
 uniform float u_alpha_cutoff; // alpha below it is not a surface; < 0: opaque
-uniform bool u_level0;        // colour from level 0 too (render::FrameDesc::textures_level0)
+uniform bool u_mip_level0;    // colour from mip level 0 too (render::FrameDesc::textures_mip_level0)
 #endif
 
 uniform uint u_cell_id;
@@ -42,10 +42,10 @@ void main() {
     vec3 base = v_color;
 #if defined(MATERIALS)
     if (u_textured) {
-        // Colour through the mipmaps; the cut-out test at level 0 with the
+        // Colour through the mipmaps; the cut-out test at mip level 0 with the
         // magnification filter, as the tracer samples (docs/tracer.md), so
         // that a surface's outline does not depend on its distance.
-        base *= (u_level0 ? textureLod(u_texture, v_uv, 0.0) : texture(u_texture, v_uv)).rgb;
+        base *= (u_mip_level0 ? textureLod(u_texture, v_uv, 0.0) : texture(u_texture, v_uv)).rgb;
         if (u_alpha_cutoff >= 0.0 && v_alpha * textureLod(u_texture, v_uv, 0.0).a < u_alpha_cutoff) discard;
     } else if (u_alpha_cutoff >= 0.0 && v_alpha < u_alpha_cutoff) {
         discard;

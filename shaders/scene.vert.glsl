@@ -24,7 +24,7 @@ uniform vec4 u_eye_rect[2];
 // Per eye: a plane in this cell's coordinates; only points with
 // dot(plane, (p, 1)) >= 0 are drawn. (0, 0, 0, 1) clips nothing.
 uniform vec4 u_clip_plane[2];
-// Positions are relative to the cell's origin (scene::CellFrame); the checker
+// Positions are relative to the cell's origin (scene::CellFrame::origin); the checker
 // pattern is that of origin + p, and origin modulo the pattern's period is
 // this offset.
 uniform vec3 u_checker_offset;

@@ -135,8 +135,9 @@ void set_eye_uniforms(const DrawContext& ctx, const LevelView& view, const Scene
     const int eye_w = ctx.frame.eye_width, eye_h = ctx.frame.eye_height;
     // The cell's vertices are relative to its origin: the move to layout
     // coordinates is folded into the matrices and planes here, in double.
-    const scene::CellFrame& cell = ctx.renderer.cell_origins[static_cast<size_t>(view.cell)];
-    const math::dmat4 from_cell = glm::translate(math::dmat4(1.0), cell.origin);
+    const scene::CellFrame& cell_origin = ctx.renderer.cell_origins[static_cast<size_t>(view.cell)];
+    const math::dvec3 origin = cell_origin.origin;
+    const math::dmat4 from_cell = glm::translate(math::dmat4(1.0), origin);
     for (int e = 0; e < 2; ++e) {
         const EyeView& ev = view.eyes[e];
         const math::dmat4 view_proj = ev.view_proj * from_cell;
@@ -155,14 +156,14 @@ void set_eye_uniforms(const DrawContext& ctx, const LevelView& view, const Scene
         rect[e][2] = static_cast<float>(nr.x1);
         rect[e][3] = static_cast<float>(nr.y1);
         const math::dvec4 cell_plane(math::dvec3(ev.clip_plane),
-                                     ev.clip_plane.w + glm::dot(math::dvec3(ev.clip_plane), cell.origin));
+                                     ev.clip_plane.w + glm::dot(math::dvec3(ev.clip_plane), origin));
         for (int c = 0; c < 4; ++c) plane[e][c] = static_cast<float>(cell_plane[c]);
     }
     const GLuint p = program.program.get();
     glProgramUniformMatrix4fv(p, program.view_proj, 2, GL_FALSE, &vp[0][0]);
     glProgramUniform4fv(p, program.eye_rect, 2, &rect[0][0]);
     glProgramUniform4fv(p, program.clip_plane, 2, &plane[0][0]);
-    glProgramUniform3fv(p, program.checker_offset, 1, &cell.checker_offset[0]);
+    glProgramUniform3fv(p, program.checker_offset, 1, &cell_origin.checker_offset[0]);
 }
 
 void set_cell_id(const SceneProgram& program, unsigned id, bool unshaded) {

@@ -65,10 +65,10 @@ struct FrameDesc : math::View {
     // glMultiDrawElementsIndirect instead of one draw each (render/multi_draw.hpp);
     // off only to compare the two (bench).
     bool multi_draw = true;
-    // Textures read at level 0 with the magnification filter, as the tracer
-    // reads them, instead of through their mipmaps: for comparing the two
-    // (tests, bench's error), never for viewing (minified textures alias).
-    bool textures_level0 = false;
+    // Textures read at mip level 0 with the magnification filter, as the
+    // tracer reads them, instead of through their mipmaps: for comparing the
+    // two (tests, bench's error), never for viewing (minified textures alias).
+    bool textures_mip_level0 = false;
     // With culling: also test each visible portal of the head's cell for
     // occlusion (a query after the cell's surfaces) and drop the subtree of a
     // hidden one by conditional rendering. Exact, but the driver must

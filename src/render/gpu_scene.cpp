@@ -15,16 +15,16 @@ bool has_mipmaps(int min_filter) {
 
 gl::Texture upload_texture(const scene::SceneTexture& t) {
     const image::Pixels& image = *t.image;
-    int levels = 1;
+    int mip_levels = 1;
     if (has_mipmaps(t.sampler.min_filter))
-        while ((std::max(image.width, image.height) >> levels) > 0) ++levels;
+        while ((std::max(image.width, image.height) >> mip_levels) > 0) ++mip_levels;
     gl::Texture texture = gl::create_texture(GL_TEXTURE_2D);
     const GLuint name = texture.get();
-    glTextureStorage2D(name, levels, GL_RGBA8, image.width, image.height);
+    glTextureStorage2D(name, mip_levels, GL_RGBA8, image.width, image.height);
     // Rows top first: row 0 is t = 0, as texture coordinates put the image's top there.
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glTextureSubImage2D(name, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.data.data());
-    if (levels > 1) glGenerateTextureMipmap(name);
+    if (mip_levels > 1) glGenerateTextureMipmap(name);
     // The sampler codes are glTF's, which are OpenGL's enums.
     glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, t.sampler.mag_filter);
     glTextureParameteri(name, GL_TEXTURE_MIN_FILTER, t.sampler.min_filter);

@@ -53,7 +53,7 @@ void draw_cell(const DrawContext& ctx, const LevelView& view, const SceneDraw& d
         if (!material_ready) {
             set_eye_uniforms(ctx, view, m, {view.eyes[0].rect, view.eyes[1].rect});
             set_cell_id(m, static_cast<unsigned>(view.cell + 1), false);
-            glProgramUniform1i(m.program.get(), m.level0, ctx.frame.textures_level0 ? 1 : 0);
+            glProgramUniform1i(m.program.get(), m.mip_level0, ctx.frame.textures_mip_level0 ? 1 : 0);
             material_ready = true;
         }
         glProgramUniform1i(m.program.get(), m.textured, b.texture >= 0 ? 1 : 0);

@@ -29,16 +29,17 @@ namespace {
 bool is_white(const glm::dvec3& c) { return c.x == 1.0 && c.y == 1.0 && c.z == 1.0; }
 
 // A full-target triangle through the clear program, in a region pass over
-// the portal's marked pixels; `k` is the blend colour (Tint).
+// the portal's marked pixels, with a blend colour (Tint's: the tint).
 void draw_region(const DrawContext& ctx, const LevelView& view, Pass pass, const std::array<NdcRect, 2>& rects,
-                 const glm::dvec3& k = glm::dvec3(1.0)) {
+                 const glm::dvec3& blend_color = glm::dvec3(1.0)) {
     const ClearDepthProgram& clear = ctx.renderer.programs.clear_depth;
     const GLuint program = clear.program.get();
     glProgramUniform1f(program, clear.far_depth, far_depth(ctx.frame));
     const glm::dvec3 bg = shading::kBackgroundColor;
     glProgramUniform4f(program, clear.color, float(bg.r), float(bg.g), float(bg.b), 1.0f);
     glProgramUniform1i(program, clear.eye_quads, 0);
-    draw_full_target(ctx, view, {pass, view.level + 1, program, portal_scissor(ctx, view, rects), glm::vec3(k)});
+    const Scissor scissor = portal_scissor(ctx, view, rects);
+    draw_full_target(ctx, view, {pass, view.level + 1, program, scissor, glm::vec3(blend_color)});
 }
 
 // The pixels of the drawing target in the portal's scissor (all of them
@@ -89,16 +90,16 @@ void blend_window(const DrawContext& ctx, const LevelView& view, const std::arra
     const std::optional<WindowBlendProgram>& slot = ctx.renderer.programs.window_blend[ctx.target.samples > 1 ? 1 : 0];
     assert(slot);  // prepare_window_blend made it with the frame
     const WindowBlendProgram& blend = *slot;
-    const double k = w.reflectance;
-    const glm::dvec3 through = (1.0 - k) * w.tint;
+    const double r = w.reflectance;
+    const glm::dvec3 through = (1.0 - r) * w.tint;
     const GLuint program = blend.program.get();
     glProgramUniform1i(program, blend.use_saved, saved != 0 ? 1 : 0);
-    glProgramUniform3f(program, blend.scale, float(k), float(k), float(k));
-    const glm::dvec3 fill = k * shading::kPortalFillColor;
+    glProgramUniform3f(program, blend.scale, float(r), float(r), float(r));
+    const glm::dvec3 fill = r * shading::kPortalFillColor;
     glProgramUniform3f(program, blend.constant, float(fill.r), float(fill.g), float(fill.b));
     ctx.renderer.state->texture(0, saved);  // the copy, or none
-    draw_full_target(ctx, view,
-                     {Pass::WindowBlend, view.level + 1, program, portal_scissor(ctx, view, rects), glm::vec3(through)});
+    const Scissor scissor = portal_scissor(ctx, view, rects);
+    draw_full_target(ctx, view, {Pass::WindowBlend, view.level + 1, program, scissor, glm::vec3(through)});
 }
 
 }  // namespace
@@ -112,7 +113,7 @@ Result<void> prepare_window_blend(Programs& programs, bool multisample) {
     return {};
 }
 
-void draw_mirror(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
+void draw_mirror_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
     const scene::PortalInfo& m = ctx.renderer.portals[p];
     mark_portal(ctx, view, p, rects);
     ctx.scratch.stats.portal_passes_drawn += 1;
@@ -121,11 +122,11 @@ void draw_mirror(const DrawContext& ctx, const LevelView& view, int p, const std
     unmark_portal(ctx, view, p, rects);
 }
 
-void draw_window(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
+void draw_window_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
     const scene::PortalInfo& w = ctx.renderer.portals[p];
-    const double k = w.reflectance;
-    const double through_factor = (1.0 - k) * shading::max_channel(w.tint);
-    const bool reflect = view.weight * k >= shading::kMinBranchWeight;
+    const double r = w.reflectance;
+    const double through_factor = (1.0 - r) * shading::max_channel(w.tint);
+    const bool reflect = view.weight * r >= shading::kMinBranchWeight;
     const bool through = view.weight * through_factor >= shading::kMinBranchWeight;
     FrameScratch& s = ctx.scratch;
     mark_portal(ctx, view, p, rects);
@@ -133,7 +134,7 @@ void draw_window(const DrawContext& ctx, const LevelView& view, int p, const std
     GLuint saved = 0;
     if (reflect) {
         s.stats.portal_passes_drawn += 1;
-        draw_level(ctx, reflected_view(ctx, view, p, rects, k));
+        draw_level(ctx, reflected_view(ctx, view, p, rects, r));
         saved = save_colour(ctx, region_of(ctx, view, rects));
         draw_region(ctx, view, Pass::ClearRegion, rects);
     }

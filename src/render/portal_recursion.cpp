@@ -74,10 +74,10 @@ void draw_portal(const DrawContext& ctx, const LevelView& view, int p, const std
     }
     switch (ctx.renderer.portals[p].kind) {
         case layout::PortalKind::Mirror:
-            draw_mirror(ctx, view, p, rects);
+            draw_mirror_portal(ctx, view, p, rects);
             return;
         case layout::PortalKind::Window:
-            draw_window(ctx, view, p, rects);
+            draw_window_portal(ctx, view, p, rects);
             return;
         case layout::PortalKind::Door:
             break;
@@ -99,7 +99,8 @@ std::vector<GLuint> test_portal_visibility(const DrawContext& ctx, const LevelVi
     const SceneDraw draw{Pass::PortalTest, view.level, &ctx.scene_program, level_scissor(ctx, view)};
     for (size_t k = 0; k < portals.size(); ++k) {
         if (visible[k][0].empty() && visible[k][1].empty()) continue;
-        if (s.mark_queries_used == s.mark_queries.size()) s.mark_queries.push_back(gl::create_query(GL_ANY_SAMPLES_PASSED));
+        if (s.mark_queries_used == s.mark_queries.size())
+            s.mark_queries.push_back(gl::create_query(GL_ANY_SAMPLES_PASSED));
         queries[k] = s.mark_queries[s.mark_queries_used++].get();
         glBeginQuery(GL_ANY_SAMPLES_PASSED, queries[k]);
         draw_portal_box(ctx, view, draw, portals[k], visible[k]);

@@ -56,8 +56,8 @@ LevelView reflected_view(const DrawContext& ctx, const LevelView& view, int port
 
 // A visible mirror or window of `view` below the recursion limit: the view(s)
 // in it, tinted and blended, drawn where it is the visible surface.
-void draw_mirror(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects);
-void draw_window(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects);
+void draw_mirror_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects);
+void draw_window_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects);
 
 // The window blend's program for single-sample or multisampled targets,
 // built on first use; prepare_frame makes the ones a frame may need.

@@ -63,7 +63,7 @@ struct FrameTargets {
 
 // A window's reflected view, copied aside while the view through it is drawn
 // (portal_glass.cpp): a texture like the target's colour, one per window
-// nesting level in use.
+// being drawn (a window's views may show windows, drawn inside its own).
 struct SavedColour {
     gl::Texture texture;
     int width = 0, height = 0, samples = 1;
@@ -76,7 +76,7 @@ struct FrameScratch {
     IndirectDraws indirect;                  // FrameDesc::multi_draw's commands
     std::vector<gl::Query> mark_queries;     // occlusion queries of portals, made on first use
     size_t mark_queries_used = 0;            // of mark_queries, by this frame
-    std::vector<SavedColour> saved_colours;  // per window nesting level, made on first use
+    std::vector<SavedColour> saved_colours;  // per window being drawn, made on first use
     size_t saved_colours_used = 0;           // of saved_colours, by the windows being drawn
     bool conditional = false;                // inside a portal's conditional rendering
 

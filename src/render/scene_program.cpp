@@ -66,7 +66,7 @@ Result<SceneProgram> link_scene_program(const SceneVariant& variant, const std::
     if (variant.materials) {
         p.textured = u.required("u_textured");
         p.alpha_cutoff = u.required("u_alpha_cutoff");
-        p.level0 = u.required("u_level0");
+        p.mip_level0 = u.required("u_mip_level0");
         glProgramUniform1i(name, u.required("u_texture"), static_cast<GLint>(kSceneTextureUnit));
         glProgramUniform1f(name, p.alpha_cutoff, -1.0f);
     }

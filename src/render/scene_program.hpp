@@ -29,7 +29,7 @@ struct SceneProgram {
     GLint unshaded = -1;    // bool, scene.frag.glsl only
     GLint textured = -1;    // bool: multiply by the texture on kSceneTextureUnit (materials only)
     GLint alpha_cutoff = -1;  // float: drop fragments whose alpha is below it; < 0: opaque (materials only)
-    GLint level0 = -1;        // bool: textures at level 0 only (materials only)
+    GLint mip_level0 = -1;    // bool: textures at mip level 0 only (materials only)
     GLint target_size = -1;  // vec2, only in the portal-texture program
 };
 

@@ -276,9 +276,9 @@ namespace {
 
 // layouts/gallery.json, rendered and traced: ids agree exactly. Colours
 // differ where textures are minified, which at 200 × 120 is nearly
-// everywhere: the rasteriser filters through mipmaps, the tracer reads level 0
-// (docs/tracer.md). With FrameDesc::textures_level0 the rasteriser reads
-// level 0 too, and the two agree as on untextured layouts; with mipmaps the
+// everywhere: the rasteriser filters through mipmaps, the tracer reads mip
+// level 0 (docs/tracer.md). With FrameDesc::textures_mip_level0 the rasteriser
+// reads mip level 0 too, and the two agree as on untextured layouts; with mipmaps the
 // bound is what was measured less a margin (docs/accuracy.md).
 struct GalleryPose {
     const char* room;
@@ -313,7 +313,7 @@ TEST(MaterialsRender, GalleryAgreesWithTheTracer) {
             std::printf("  gallery %-52s mipmaps %s\n", p.what, image::summary_line(cmp).c_str());
             EXPECT_EQ(cmp.id_mismatch_percent, 0.0) << p.what;
             EXPECT_GE(cmp.interior_psnr_db, p.min_psnr) << p.what;
-            f.textures_level0 = true;
+            f.textures_mip_level0 = true;
             const image::Image level0 = testing::render_once(gl::Backend::Egl, l, f);
             const image::Comparison same_rule = image::compare_pictures(level0, traced);
             std::printf("  gallery %-52s level 0 %s\n", p.what, image::summary_line(same_rule).c_str());
