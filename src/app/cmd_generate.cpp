@@ -5,17 +5,20 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli/args.hpp"
 #include "app/commands.hpp"
-#include "cli/output_files.hpp"
 #include "base/file_io.hpp"
+#include "cli/option_table.hpp"
+#include "cli/output_files.hpp"
 #include "design/generate.hpp"
 
 namespace impossible::app {
 
+using cli::apply_options;
 using cli::CommandOutputs;
 using cli::InputError;
 using cli::kExitOk;
+using cli::Option;
+using cli::OptionValue;
 using cli::parse_args;
 using cli::parse_int;
 using cli::parse_number;
@@ -26,12 +29,13 @@ using cli::value_or_throw;
 namespace {
 
 // "W x D" in metres, centred on the origin.
-math::Polygon2 parse_floor(const std::string& text) {
+math::Polygon2 parse_floor(const OptionValue& v) {
+    const std::string& text = v.text;
     const std::size_t x = text.find('x');
-    if (x == std::string::npos) throw InputError("--play-area: expected WxD in metres, e.g. 4x3.5 (got '" + text + "')");
-    const double w = parse_number("--play-area", text.substr(0, x)), d = parse_number("--play-area", text.substr(x + 1));
+    if (x == std::string::npos) throw InputError(v.name + ": expected WxD in metres, e.g. 4x3.5 (got '" + text + "')");
+    const double w = parse_number(v.name, text.substr(0, x)), d = parse_number(v.name, text.substr(x + 1));
     if (!(w >= 1.0 && w <= 1000.0 && d >= 1.0 && d <= 1000.0))
-        throw InputError("--play-area: each side must be 1..1000 m (got '" + text + "')");
+        throw InputError(v.name + ": each side must be 1..1000 m (got '" + text + "')");
     return math::rectangle({-w / 2, -d / 2}, {w / 2, d / 2});
 }
 
@@ -58,11 +62,44 @@ math::Polygon2 read_floor_file(const std::string& file) {
     return poly;
 }
 
+double parse_max_overlap(const OptionValue& v) {
+    const double percent = parse_number(v.name, v.text);
+    if (!(percent >= 0.0 && percent <= 100.0)) throw InputError(v.name + " must be 0..100 %");
+    return percent;
+}
+
+struct GenerateArgs {
+    design::GenerateOptions generate;
+    std::optional<std::string> out;  // none: standard output
+};
+
+// Described in the usage text. In the order of the checks: the floor (one
+// of the two; the file is read here), then the numbers.
+constexpr Option<GenerateArgs> kGenerateOptions[] = {
+    {"--play-area", "WxD", nullptr,
+     [](GenerateArgs& o, const OptionValue& v) {
+         o.generate.rectangle = true;
+         o.generate.play_area = parse_floor(v);
+     }},
+    {"--play-area-file", "POLY.json", nullptr,
+     [](GenerateArgs& o, const OptionValue& v) { o.generate.play_area = read_floor_file(v.text); }},
+    {"--rooms", "N", nullptr,
+     [](GenerateArgs& o, const OptionValue& v) {
+         o.generate.rooms = parse_int(v.name, v.text, 1, design::kMaxGeneratedRooms);
+     }},
+    {"--seed", "S", nullptr,
+     [](GenerateArgs& o, const OptionValue& v) {
+         o.generate.seed = static_cast<std::uint64_t>(parse_int(v.name, v.text, 0, 2'000'000'000));
+     }},
+    {"--max-overlap", "PERCENT", nullptr,
+     [](GenerateArgs& o, const OptionValue& v) { o.generate.max_overlap = parse_max_overlap(v); }},
+    {"--out", "FILE.json", nullptr, [](GenerateArgs& o, const OptionValue& v) { o.out = v.text; }},
+};
+
 }  // namespace
 
 int run_generate_command(const Args& args, std::ostream& out, std::ostream& err) {
-    const ParsedArgs parsed =
-        parse_args(args, {"--play-area", "--play-area-file", "--rooms", "--seed", "--max-overlap", "--out"}, {}, 0);
+    const ParsedArgs parsed = parse_args(args, 0, kGenerateOptions);
     if (parsed.help) {
         out << "usage: impossible generate --play-area WxD | --play-area-file POLY.json --rooms N --seed S\n"
                "                           [--max-overlap PERCENT] [--out FILE.json]\n"
@@ -77,23 +114,17 @@ int run_generate_command(const Args& args, std::ostream& out, std::ostream& err)
     if (!area == !area_file) throw UsageError("generate needs one of --play-area WxD or --play-area-file FILE");
     if (!parsed.value("--rooms")) throw UsageError("generate needs --rooms N");
     if (!parsed.value("--seed")) throw UsageError("generate needs --seed S");
+    // The files, declared before the play-area file is read.
     CommandOutputs outputs;
     if (area_file) outputs.input("--play-area-file", *area_file);
     if (const auto file = parsed.value("--out")) outputs.output("--out", *file);
-    design::GenerateOptions o;
-    o.rectangle = area.has_value();
-    o.play_area = area ? parse_floor(*area) : read_floor_file(*area_file);
-    o.rooms = parse_int("--rooms", *parsed.value("--rooms"), 1, design::kMaxGeneratedRooms);
-    o.seed = static_cast<std::uint64_t>(parse_int("--seed", *parsed.value("--seed"), 0, 2'000'000'000));
-    if (const auto v = parsed.value("--max-overlap")) {
-        o.max_overlap = parse_number("--max-overlap", *v);
-        if (!(*o.max_overlap >= 0.0 && *o.max_overlap <= 100.0)) throw InputError("--max-overlap must be 0..100 %");
-    }
-    const std::string text = value_or_throw(design::generate_layout(o));
-    if (const auto file = parsed.value("--out")) {
-        outputs.set(*file, text);
+    GenerateArgs o;
+    apply_options(kGenerateOptions, parsed, o);
+    const std::string text = value_or_throw(design::generate_layout(o.generate));
+    if (o.out) {
+        outputs.set(*o.out, text);
         outputs.commit();
-        err << "generate: wrote " << o.rooms << " rooms to " << *file << "\n";
+        err << "generate: wrote " << o.generate.rooms << " rooms to " << *o.out << "\n";
     } else {
         out << text;
     }

@@ -1,7 +1,6 @@
 // impossible render [LAYOUT] [options]: one side-by-side stereo frame.
 #include <iostream>
 
-#include "cli/args.hpp"
 #include "app/commands.hpp"
 #include "cli/layout_source.hpp"
 #include "cli/view_options.hpp"
@@ -13,15 +12,15 @@ namespace impossible::app {
 using cli::CommandOutputs;
 using cli::frame_for;
 using cli::frame_outputs;
-using cli::value_or_throw;
 using cli::kExitOk;
+using cli::kViewHelpColumn;
 using cli::load_layout_or_default;
+using cli::options_help;
 using cli::parse_args;
 using cli::parse_view_options;
 using cli::ParsedArgs;
-using cli::view_flag_options;
-using cli::view_options_help;
-using cli::view_value_options;
+using cli::value_or_throw;
+using cli::view_options;
 using cli::ViewOptions;
 using cli::write_frame_pngs;
 
@@ -38,9 +37,9 @@ const char* kRenderHelp =
 }  // namespace
 
 int run_render_command(const Args& args, std::ostream& out, std::ostream& err) {
-    const ParsedArgs parsed = parse_args(args, view_value_options(), view_flag_options(), 1);
+    const ParsedArgs parsed = parse_args(args, 1, view_options());
     if (parsed.help) {
-        out << kRenderHelp << view_options_help();
+        out << kRenderHelp << options_help(view_options(), kViewHelpColumn);
         return kExitOk;
     }
     const ViewOptions options = parse_view_options(parsed);

@@ -4,19 +4,23 @@
 #include <cstdio>
 #include <iostream>
 
-#include "cli/args.hpp"
 #include "app/commands.hpp"
 #include "cli/layout_source.hpp"
+#include "cli/option_table.hpp"
 #include "cli/output_files.hpp"
 #include "design/path_text.hpp"
 #include "design/tour.hpp"
 
 namespace impossible::app {
 
+using cli::apply_options;
 using cli::CommandOutputs;
 using cli::InputError;
 using cli::kExitOk;
 using cli::load_layout_or_default;
+using cli::Option;
+using cli::options_help;
+using cli::OptionValue;
 using cli::parse_args;
 using cli::parse_number;
 using cli::ParsedArgs;
@@ -24,6 +28,33 @@ using cli::UsageError;
 using cli::value_or_throw;
 
 namespace {
+
+const char* kTourUsage =
+    "usage: impossible tour LAYOUT --out PATH.txt [--step M] [--head-height M]\n"
+    "Plans a walk through every room a door leads to, inside the play area and around props,\n"
+    "and writes it as a path file of physical head poses (the walk format) for walk,\n"
+    "preview --path and bench --path. Prints the physical and virtual distance walked, the\n"
+    "rooms visited (replayed with the walker) and the closest approach to the play area's edge.\n";
+
+struct TourArgs {
+    std::string out;  // required
+    design::TourOptions tour;
+};
+
+double parse_in_range(const OptionValue& v, double min, double max, const char* range) {
+    const double x = parse_number(v.name, v.text);
+    if (!(x >= min && x <= max)) throw InputError(v.name + " must be in " + range);
+    return x;
+}
+
+constexpr std::size_t kTourHelpColumn = 19;
+constexpr Option<TourArgs> kTourOptions[] = {
+    {"--out", "PATH.txt", nullptr, [](TourArgs& o, const OptionValue& v) { o.out = v.text; }},
+    {"--step", "M", "metres between poses (default 0.05)",
+     [](TourArgs& o, const OptionValue& v) { o.tour.step = parse_in_range(v, 0.005, 1.0, "0.005..1 m"); }},
+    {"--head-height", "M", "eye height of the walk (default 1.6)",
+     [](TourArgs& o, const OptionValue& v) { o.tour.grid.head_height = parse_in_range(v, 0.2, 3.0, "0.2..3 m"); }},
+};
 
 std::string summary(const layout::Layout& layout, const design::Tour& t, std::size_t reachable) {
     char line[512];
@@ -49,39 +80,24 @@ std::string summary(const layout::Layout& layout, const design::Tour& t, std::si
 }  // namespace
 
 int run_tour_command(const Args& args, std::ostream& out, std::ostream& err) {
-    const ParsedArgs parsed = parse_args(args, {"--out", "--step", "--head-height"}, {}, 1);
+    const ParsedArgs parsed = parse_args(args, 1, kTourOptions);
     if (parsed.help) {
-        out << "usage: impossible tour LAYOUT --out PATH.txt [--step M] [--head-height M]\n"
-               "Plans a walk through every room a door leads to, inside the play area and around props,\n"
-               "and writes it as a path file of physical head poses (the walk format) for walk,\n"
-               "preview --path and bench --path. Prints the physical and virtual distance walked, the\n"
-               "rooms visited (replayed with the walker) and the closest approach to the play area's edge.\n"
-               "  --step M         metres between poses (default 0.05)\n"
-               "  --head-height M  eye height of the walk (default 1.6)\n";
+        out << kTourUsage << options_help(kTourOptions, kTourHelpColumn);
         return kExitOk;
     }
     if (parsed.positional.empty()) throw UsageError("tour needs a LAYOUT file");
-    const std::optional<std::string> out_file = parsed.value("--out");
-    if (!out_file) throw UsageError("tour needs --out PATH.txt");
-    design::TourOptions options;
-    if (const auto v = parsed.value("--step")) {
-        options.step = parse_number("--step", *v);
-        if (!(options.step >= 0.005 && options.step <= 1.0)) throw InputError("--step must be in 0.005..1 m");
-    }
-    if (const auto v = parsed.value("--head-height")) {
-        options.grid.head_height = parse_number("--head-height", *v);
-        if (!(options.grid.head_height >= 0.2 && options.grid.head_height <= 3.0))
-            throw InputError("--head-height must be in 0.2..3 m");
-    }
+    if (!parsed.value("--out")) throw UsageError("tour needs --out PATH.txt");
+    TourArgs o;
+    apply_options(kTourOptions, parsed, o);
     CommandOutputs outputs;
     outputs.input("the layout", parsed.positional[0]);
-    outputs.output("--out", *out_file);
+    outputs.output("--out", o.out);
     const layout::Layout layout = load_layout_or_default(parsed.positional[0]);
-    const design::Tour tour = value_or_throw(design::plan_tour(layout, options));
+    const design::Tour tour = value_or_throw(design::plan_tour(layout, o.tour));
     const std::size_t reachable = tour.visited.size() + tour.missed.size();
     const std::string report = summary(layout, tour, reachable);
     const std::string header = "impossible tour of " + layout.source + "\n" + report;
-    outputs.set(*out_file, design::path_text(tour.poses, header));
+    outputs.set(o.out, design::path_text(tour.poses, header));
     outputs.commit();
     out << report;
     for (const int r : tour.missed) err << "warning: the tour could not reach room \"" << layout.rooms[r].id << "\"\n";

@@ -3,10 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <iostream>
-#include <set>
 #include <thread>
 
-#include "cli/args.hpp"
 #include "app/commands.hpp"
 #include "cli/layout_source.hpp"
 #include "cli/view_options.hpp"
@@ -14,20 +12,23 @@
 
 namespace impossible::app {
 
+using cli::apply_options;
 using cli::CommandOutputs;
 using cli::frame_for;
 using cli::frame_outputs;
 using cli::kExitOk;
+using cli::kViewHelpColumn;
 using cli::load_layout_or_default;
+using cli::Option;
+using cli::options_help;
+using cli::OptionValue;
 using cli::parse_args;
 using cli::parse_int;
 using cli::parse_view_options;
 using cli::ParsedArgs;
 using cli::trace_desc_for;
 using cli::value_or_throw;
-using cli::view_flag_options;
-using cli::view_options_help;
-using cli::view_value_options;
+using cli::view_options;
 using cli::ViewOptions;
 using cli::write_frame_pngs;
 
@@ -41,26 +42,30 @@ const char* kTraceHelp =
     "The options are render's; --backend, --stereo, --clip, --no-cull and --max-portal-passes only\n"
     "matter to the rasteriser and are accepted and ignored. --stats prints rays per second instead.\n\n";
 
-const char* kTraceOnlyHelp = "  --threads N                threads to trace with (default: every core)\n";
+// What trace takes besides the view options.
+struct TraceOptions {
+    int threads = 0;  // 0: every core
+};
 
-std::set<std::string> trace_value_options() {
-    std::set<std::string> names = view_value_options();
-    names.insert("--threads");
-    return names;
-}
+constexpr Option<TraceOptions> kTraceOptions[] = {
+    {"--threads", "N", "threads to trace with (default: every core)",
+     [](TraceOptions& o, const OptionValue& v) { o.threads = parse_int(v.name, v.text, 1, 256); }},
+};
 
 }  // namespace
 
 int run_trace_command(const Args& args, std::ostream& out, std::ostream& err) {
-    const ParsedArgs parsed = parse_args(args, trace_value_options(), view_flag_options(), 1);
+    const ParsedArgs parsed = parse_args(args, 1, view_options(), kTraceOptions);
     if (parsed.help) {
-        out << kTraceHelp << view_options_help() << kTraceOnlyHelp;
+        out << kTraceHelp << options_help(view_options(), kViewHelpColumn)
+            << options_help(kTraceOptions, kViewHelpColumn);
         return kExitOk;
     }
     const ViewOptions options = parse_view_options(parsed);
     CommandOutputs outputs = frame_outputs(options);
-    int threads = 0;
-    if (auto v = parsed.value("--threads")) threads = parse_int("--threads", *v, 1, 256);
+    TraceOptions own;
+    apply_options(kTraceOptions, parsed, own);
+    const int threads = own.threads;
     const layout::Layout layout = load_layout_or_default(options.layout_path);
     const render::FrameDesc frame = frame_for(layout, options);
 

@@ -2,34 +2,56 @@
 // the designer's report (design/report.hpp).
 #include <iostream>
 
-#include "cli/args.hpp"
 #include "app/commands.hpp"
 #include "base/text.hpp"
+#include "cli/option_table.hpp"
 #include "design/report.hpp"
 #include "layout/layout.hpp"
 
 namespace impossible::app {
 
+using cli::apply_options;
 using cli::kExitBadInput;
 using cli::kExitOk;
+using cli::Option;
+using cli::options_help;
+using cli::OptionValue;
 using cli::parse_args;
 using cli::ParsedArgs;
 using cli::UsageError;
 
+namespace {
+
+const char* kValidateUsage =
+    "usage: impossible validate LAYOUT [--json]\n"
+    "Checks a layout file; prints a summary (rooms, portals, pairs, rooms outside the play\n"
+    "area, expansion ratio; door pairs, window pairs and mirrors where there are mirrors or\n"
+    "windows) and the designer's report (room overlaps against Suma et al. 2012,\n"
+    "rooms no door leads to, rooms and doors outside the play area as walked), or every\n"
+    "problem as FILE:LINE:COLUMN: message (exit 1). Findings are warnings (exit 0).\n";
+
+struct ValidateOptions {
+    bool json = false;
+};
+
+constexpr std::size_t kValidateHelpColumn = 10;
+constexpr Option<ValidateOptions> kValidateOptions[] = {
+    {"--json", nullptr, "the whole report (or the errors) as one JSON document on standard output",
+     [](ValidateOptions& o, const OptionValue&) { o.json = true; }},
+};
+
+}  // namespace
+
 int run_validate_command(const Args& args, std::ostream& out, std::ostream& err) {
-    const ParsedArgs parsed = parse_args(args, {}, {"--json"}, 1);
+    const ParsedArgs parsed = parse_args(args, 1, kValidateOptions);
     if (parsed.help) {
-        out << "usage: impossible validate LAYOUT [--json]\n"
-               "Checks a layout file; prints a summary (rooms, portals, pairs, rooms outside the play\n"
-               "area, expansion ratio; door pairs, window pairs and mirrors where there are mirrors or\n"
-               "windows) and the designer's report (room overlaps against Suma et al. 2012,\n"
-               "rooms no door leads to, rooms and doors outside the play area as walked), or every\n"
-               "problem as FILE:LINE:COLUMN: message (exit 1). Findings are warnings (exit 0).\n"
-               "  --json  the whole report (or the errors) as one JSON document on standard output\n";
+        out << kValidateUsage << options_help(kValidateOptions, kValidateHelpColumn);
         return kExitOk;
     }
     if (parsed.positional.empty()) throw UsageError("validate needs a LAYOUT file");
-    const bool json = parsed.flag("--json");
+    ValidateOptions options;
+    apply_options(kValidateOptions, parsed, options);
+    const bool json = options.json;
     const layout::LoadResult loaded = layout::load_layout_file(parsed.positional[0]);
     if (!loaded.errors.empty()) {
         for (const layout::Diagnostic& d : loaded.errors) err << d.str() << "\n";

@@ -1,21 +1,37 @@
 // impossible walk LAYOUT --path FILE: argument handling around run_walk.
 #include <iostream>
 
-#include "cli/args.hpp"
 #include "app/cmd_walk.hpp"
 #include "app/commands.hpp"
 #include "cli/layout_source.hpp"
+#include "cli/option_table.hpp"
 
 namespace impossible::app {
 
+using cli::apply_options;
 using cli::kExitOk;
 using cli::load_layout_or_default;
+using cli::Option;
+using cli::OptionValue;
 using cli::parse_args;
 using cli::ParsedArgs;
 using cli::UsageError;
 
+namespace {
+
+struct WalkOptions {
+    std::optional<std::string> path;  // required
+};
+
+// Described in the usage text.
+constexpr Option<WalkOptions> kWalkOptions[] = {
+    {"--path", "FILE", nullptr, [](WalkOptions& o, const OptionValue& v) { o.path = v.text; }},
+};
+
+}  // namespace
+
 int run_walk_command(const Args& args, std::ostream& out, std::ostream& err) {
-    const ParsedArgs parsed = parse_args(args, {"--path"}, {}, 1);
+    const ParsedArgs parsed = parse_args(args, 1, kWalkOptions);
     if (parsed.help) {
         out << "usage: impossible walk LAYOUT --path FILE\n"
                "Replays a walk: FILE holds one physical head pose a line, X Y Z YAW PITCH ROLL\n"
@@ -26,10 +42,11 @@ int run_walk_command(const Args& args, std::ostream& out, std::ostream& err) {
         return kExitOk;
     }
     if (parsed.positional.empty()) throw UsageError("walk needs a LAYOUT file");
-    const std::optional<std::string> path = parsed.value("--path");
-    if (!path) throw UsageError("walk needs --path FILE");
+    WalkOptions options;
+    apply_options(kWalkOptions, parsed, options);
+    if (!options.path) throw UsageError("walk needs --path FILE");
     const layout::Layout layout = load_layout_or_default(parsed.positional[0]);
-    return run_walk(layout, *path, out, err);
+    return run_walk(layout, *options.path, out, err);
 }
 
 }  // namespace impossible::app

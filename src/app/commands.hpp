@@ -1,9 +1,13 @@
-// The program's commands (cli.md); `bench` is in bench/bench_command.hpp and
-// `preview` in preview/preview_command.hpp. Each takes its arguments after the command
-// name and returns the exit status; errors go to `err` as one line.
+// The program's commands (cli.md), in one table that run_main dispatches
+// from and prints the overview from; `bench` is in bench/bench_command.hpp
+// and `preview` in preview/preview_command.hpp. Each takes its arguments
+// after the command name and returns the exit status; errors go to `err` as
+// one line.
 #pragma once
 
 #include <iosfwd>
+#include <span>
+#include <string>
 
 #include "cli/args.hpp"
 
@@ -20,7 +24,22 @@ int run_plan_command(const Args& args, std::ostream& out, std::ostream& err);
 int run_tour_command(const Args& args, std::ostream& out, std::ostream& err);
 int run_generate_command(const Args& args, std::ostream& out, std::ostream& err);
 
-// Dispatches argv[1] to a command; prints the overview for --help or nothing.
+// One command: its name, its arguments and one line for the overview, and
+// what runs it (UsageError and InputError become the exit status).
+struct Command {
+    const char* name;       // "render"
+    const char* arguments;  // "[LAYOUT]", shown after the name in the overview
+    const char* summary;
+    int (*run)(const Args& args, std::ostream& out, std::ostream& err);
+};
+
+// Every command, in the overview's order.
+std::span<const Command> commands();
+
+// `impossible --help`: the usage line and a line for each command.
+std::string overview();
+
+// Dispatches args[0] to a command; prints the overview for --help or nothing.
 int run_main(const Args& args, std::ostream& out, std::ostream& err);
 
 }  // namespace impossible::app

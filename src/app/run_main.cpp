@@ -1,10 +1,11 @@
 #include <exception>
 #include <iostream>
+#include <string_view>
 
-#include "cli/args.hpp"
-#include "base/text.hpp"
 #include "app/commands.hpp"
+#include "base/text.hpp"
 #include "bench/bench_command.hpp"
+#include "cli/option_table.hpp"
 #include "preview/preview_command.hpp"
 
 namespace impossible::app {
@@ -17,52 +18,65 @@ using cli::UsageError;
 
 namespace {
 
-const char* kOverview =
-    "usage: impossible COMMAND [options]   (impossible COMMAND --help for more)\n"
-    "  render [LAYOUT]          one side-by-side stereo frame with the OpenGL rasteriser\n"
-    "  trace [LAYOUT]           the same frame with the CPU reference ray tracer\n"
-    "  compare A.png B.png      compare two frames (cell ids, colour PSNR), e.g. render vs trace\n"
-    "  validate LAYOUT          check a layout file; the designer's report (--json for JSON)\n"
-    "  walk LAYOUT --path FILE  replay a walk and print where the head goes\n"
-    "  preview [LAYOUT]         a window to walk a layout in stereo (mouse look, WASD, minimap, HUD)\n"
-    "  bench [LAYOUT]           frame time, per-portal cost, fragments and error of the renderer\n"
-    "  plan LAYOUT --out F.svg  a top-down drawing of the physical floor (SVG or PNG)\n"
-    "  tour LAYOUT --out P.txt  a walk through every reachable room, as a path file\n"
-    "  generate --play-area WxD --rooms N --seed S   a random valid layout\n";
+constexpr Command kCommands[] = {
+    {"render", "[LAYOUT]", "one side-by-side stereo frame with the OpenGL rasteriser", run_render_command},
+    {"trace", "[LAYOUT]", "the same frame with the CPU reference ray tracer", run_trace_command},
+    {"compare", "A.png B.png", "compare two frames (cell ids, colour PSNR), e.g. render vs trace",
+     run_compare_command},
+    {"validate", "LAYOUT", "check a layout file; the designer's report (--json for JSON)", run_validate_command},
+    {"walk", "LAYOUT --path FILE", "replay a walk and print where the head goes", run_walk_command},
+    {"preview", "[LAYOUT]", "a window to walk a layout in stereo (mouse look, WASD, minimap, HUD)",
+     preview::run_preview_command},
+    {"bench", "[LAYOUT]", "frame time, per-portal cost, fragments and error of the renderer",
+     bench::run_bench_command},
+    {"plan", "LAYOUT --out F.svg", "a top-down drawing of the physical floor (SVG or PNG)", run_plan_command},
+    {"tour", "LAYOUT --out P.txt", "a walk through every reachable room, as a path file", run_tour_command},
+    {"generate", "--play-area WxD --rooms N --seed S", "a random valid layout", run_generate_command},
+};
+
+constexpr std::size_t kOverviewColumn = 27;
+
+const Command* find_command(std::string_view name) {
+    for (const Command& c : kCommands)
+        if (name == c.name) return &c;
+    return nullptr;
+}
 
 }  // namespace
 
+std::span<const Command> commands() { return kCommands; }
+
+std::string overview() {
+    std::string text = "usage: impossible COMMAND [options]   (impossible COMMAND --help for more)\n";
+    for (const Command& c : kCommands)
+        text += cli::help_row(std::string(c.name) + " " + c.arguments, c.summary, kOverviewColumn);
+    return text;
+}
+
 int run_main(const Args& args, std::ostream& out, std::ostream& err) {
     if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-        (args.empty() ? err : out) << kOverview;
+        (args.empty() ? err : out) << overview();
         return args.empty() ? kExitUsage : kExitOk;
     }
-    const std::string& command = args[0];
+    const std::string& name = args[0];
+    const Command* command = find_command(name);
+    if (!command) {
+        err << "impossible: unknown command '" << one_line(name, 100) << "'\n" << overview();
+        return kExitUsage;
+    }
     const Args rest(args.begin() + 1, args.end());
     try {
-        if (command == "render") return run_render_command(rest, out, err);
-        if (command == "validate") return run_validate_command(rest, out, err);
-        if (command == "walk") return run_walk_command(rest, out, err);
-        if (command == "trace") return run_trace_command(rest, out, err);
-        if (command == "compare") return run_compare_command(rest, out, err);
-        if (command == "bench") return bench::run_bench_command(rest, out, err);
-        if (command == "preview") return preview::run_preview_command(rest, out, err);
-        if (command == "plan") return run_plan_command(rest, out, err);
-        if (command == "tour") return run_tour_command(rest, out, err);
-        if (command == "generate") return run_generate_command(rest, out, err);
-        err << "impossible: unknown command '" << one_line(command, 100) << "'\n" << kOverview;
-        return kExitUsage;
+        return command->run(rest, out, err);
     } catch (const UsageError& e) {
         // Messages name paths and values the user gave, which may hold
         // newlines or megabytes: each is printed as one line, cut.
-        err << "impossible " << command << ": " << one_line(e.what()) << " (see impossible " << command
-            << " --help)\n";
+        err << "impossible " << name << ": " << one_line(e.what()) << " (see impossible " << name << " --help)\n";
         return kExitUsage;
     } catch (const InputError& e) {
-        err << "impossible " << command << ": " << one_line(e.what()) << "\n";
+        err << "impossible " << name << ": " << one_line(e.what()) << "\n";
         return kExitBadInput;
     } catch (const std::exception& e) {
-        err << "impossible " << command << ": " << one_line(e.what()) << "\n";
+        err << "impossible " << name << ": " << one_line(e.what()) << "\n";
         return kExitBadInput;
     }
 }

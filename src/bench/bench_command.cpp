@@ -3,23 +3,25 @@
 // the tracer, of one or several configurations (bench/README.md).
 #include <iostream>
 
+#include "bench/bench_command.hpp"
 #include "bench/options.hpp"
 #include "bench/report.hpp"
 #include "bench/run.hpp"
-#include "cli/args.hpp"
-#include "bench/bench_command.hpp"
 #include "cli/layout_source.hpp"
+#include "cli/option_table.hpp"
 #include "cli/output_files.hpp"
 #include "gl/context.hpp"
 
 namespace impossible::bench {
 
-using cli::value_or_throw;
-using cli::ParsedArgs;
 using cli::kExitOk;
+using cli::kViewHelpColumn;
 using cli::load_layout_or_default;
+using cli::options_help;
 using cli::parse_args;
-using cli::view_options_help;
+using cli::ParsedArgs;
+using cli::value_or_throw;
+
 namespace {
 
 const char* kHelp =
@@ -33,9 +35,10 @@ const char* kHelp =
 }  // namespace
 
 int run_bench_command(const cli::Args& args, std::ostream& out, std::ostream& err) {
-    const ParsedArgs parsed = parse_args(args, bench_value_options(), bench_flag_options(), 1);
+    const ParsedArgs parsed = parse_args(args, 1, bench_view_options(), bench_options());
     if (parsed.help) {
-        out << kHelp << view_options_help() << bench_options_help();
+        out << kHelp << options_help(bench_view_options(), kViewHelpColumn)
+            << options_help(bench_options(), kViewHelpColumn);
         return kExitOk;
     }
     const BenchOptions options = parse_bench_options(parsed);

@@ -10,11 +10,18 @@
 
 namespace impossible::bench {
 
+using cli::apply_options;
 using cli::InputError;
-using cli::ParsedArgs;
+using cli::Option;
+using cli::OptionTable;
+using cli::OptionValue;
 using cli::parse_int;
 using cli::parse_view_options;
-using cli::view_value_options;
+using cli::ParsedArgs;
+using cli::view_options;
+using cli::ViewOptions;
+using cli::without;
+
 namespace {
 
 void check_sweep(const std::string& sweep) {
@@ -28,63 +35,59 @@ void check_sweep(const std::string& sweep) {
                          "' is not techniques, portals:N,..., boxes:N,..., depth:N,..., size:WxH,... or samples:N,...");
 }
 
+// In the order of the help and of the checks.
+constexpr Option<BenchOptions> kBenchOptions[] = {
+    {"--frames", "N", "timed frames per configuration and pose (default 20)",
+     [](BenchOptions& o, const OptionValue& v) { o.frames = parse_int(v.name, v.text, 1, 100000); }},
+    {"--warmup", "N", "untimed frames first (default 3)",
+     [](BenchOptions& o, const OptionValue& v) { o.warmup = parse_int(v.name, v.text, 0, 100000); }},
+    {"--profile-frames", "N",
+     "profiled frames per configuration and pose (default 3): per-portal\n"
+     "times and colour fragments, glFinish around each portal",
+     [](BenchOptions& o, const OptionValue& v) { o.profile_frames = parse_int(v.name, v.text, 0, 100000); }},
+    {"--path", "FILE", "a scripted walk (the `walk` path format) instead of one pose",
+     [](BenchOptions& o, const OptionValue& v) { o.path = v.text; }},
+    {"--portals", "N", "keep only the first N portals of the layout (pairs within them)",
+     [](BenchOptions& o, const OptionValue& v) { o.portals = parse_int(v.name, v.text, 0, 1000000); }},
+    {"--sweep", "WHAT",
+     "configurations measured in one run, interleaved frame by frame:\n"
+     "techniques (stereo, clip, culling, depth 1..64; implies --error),\n"
+     "portals:0,2,4,6  depth:1,16  size:320x180,640x360\n"
+     "boxes:0,1000 (that many 12-triangle boxes on every room's floor;\n"
+     "1000/all: the same without per-object culling; 1000/separate:\n"
+     "one draw per run of visible props instead of a multi-draw)\n"
+     "samples:1,4 (multisampling; counts the driver lacks are reported)",
+     [](BenchOptions& o, const OptionValue& v) { o.sweep = v.text; }},
+    {"--error", nullptr, "compare each configuration with the tracer (ids, PSNR)",
+     [](BenchOptions& o, const OptionValue&) { o.error = true; }},
+    {"--reference-depth", "N", "the tracer's recursion depth for --error (default 64)",
+     [](BenchOptions& o, const OptionValue& v) { o.reference_depth = parse_int(v.name, v.text, 0, 250); }},
+    {"--reference-samples", "N",
+     "the tracer's samples per pixel for --error (default 1; 16 for\n"
+     "the anti-aliased ideal)",
+     [](BenchOptions& o, const OptionValue& v) { o.reference_samples = cli::parse_samples(v.text); }},
+    {"--json", "FILE", "write the results as JSON (schema: bench/README.md)",
+     [](BenchOptions& o, const OptionValue& v) { o.json = v.text; }},
+    {"--csv", "FILE", "write one CSV row per configuration",
+     [](BenchOptions& o, const OptionValue& v) { o.csv = v.text; }},
+};
+
 }  // namespace
 
-const std::set<std::string>& bench_value_options() {
-    static const std::set<std::string> names = [] {
-        std::set<std::string> n = view_value_options();
-        n.erase("--out");
-        n.erase("--ids");
-        for (const char* o : {"--frames", "--warmup", "--profile-frames", "--json", "--csv", "--path", "--portals",
-                              "--sweep", "--reference-depth", "--reference-samples"})
-            n.insert(o);
-        return n;
-    }();
-    return names;
+OptionTable<ViewOptions> bench_view_options() {
+    // Not the image files or --stats: bench writes a table and its own files.
+    static const std::vector<Option<ViewOptions>> table = without(view_options(), {"--out", "--ids", "--stats"});
+    return table;
 }
 
-const std::set<std::string>& bench_flag_options() {
-    static const std::set<std::string> names = {"--no-cull", "--occlusion-test", "--error"};
-    return names;
-}
-
-const char* bench_options_help() {
-    return "  --frames N                 timed frames per configuration and pose (default 20)\n"
-           "  --warmup N                 untimed frames first (default 3)\n"
-           "  --profile-frames N         profiled frames per configuration and pose (default 3): per-portal\n"
-           "                             times and colour fragments, glFinish around each portal\n"
-           "  --path FILE                a scripted walk (the `walk` path format) instead of one pose\n"
-           "  --portals N                keep only the first N portals of the layout (pairs within them)\n"
-           "  --sweep WHAT               configurations measured in one run, interleaved frame by frame:\n"
-           "                             techniques (stereo, clip, culling, depth 1..64; implies --error),\n"
-           "                             portals:0,2,4,6  depth:1,16  size:320x180,640x360\n"
-           "                             boxes:0,1000 (that many 12-triangle boxes on every room's floor;\n"
-           "                             1000/all: the same without per-object culling; 1000/separate:\n"
-           "                             one draw per run of visible props instead of a multi-draw)\n"
-           "                             samples:1,4 (multisampling; counts the driver lacks are reported)\n"
-           "  --error                    compare each configuration with the tracer (ids, PSNR)\n"
-           "  --reference-depth N        the tracer's recursion depth for --error (default 64)\n"
-           "  --reference-samples N      the tracer's samples per pixel for --error (default 1; 16 for\n"
-           "                             the anti-aliased ideal)\n"
-           "  --json FILE                write the results as JSON (schema: bench/README.md)\n"
-           "  --csv FILE                 write one CSV row per configuration\n";
-}
+OptionTable<BenchOptions> bench_options() { return kBenchOptions; }
 
 BenchOptions parse_bench_options(const ParsedArgs& args) {
     BenchOptions o;
-    o.view = parse_view_options(args);
-    if (auto v = args.value("--frames")) o.frames = parse_int("--frames", *v, 1, 100000);
-    if (auto v = args.value("--warmup")) o.warmup = parse_int("--warmup", *v, 0, 100000);
-    if (auto v = args.value("--profile-frames")) o.profile_frames = parse_int("--profile-frames", *v, 0, 100000);
-    if (auto v = args.value("--json")) o.json = *v;
-    if (auto v = args.value("--csv")) o.csv = *v;
-    if (auto v = args.value("--path")) o.path = *v;
-    if (auto v = args.value("--portals")) o.portals = parse_int("--portals", *v, 0, 1000000);
-    if (auto v = args.value("--sweep")) o.sweep = *v;
-    if (auto v = args.value("--reference-depth")) o.reference_depth = parse_int("--reference-depth", *v, 0, 250);
-    if (auto v = args.value("--reference-samples")) o.reference_samples = cli::parse_samples(*v);
+    o.view = parse_view_options(args, bench_view_options());
+    apply_options(kBenchOptions, args, o);
     check_sweep(o.sweep);
-    o.error = args.flag("--error") || o.sweep == "techniques";
+    o.error = o.error || o.sweep == "techniques";
     if (o.path && o.view.pose) throw InputError("--path and --pose: give one of them");
     return o;
 }

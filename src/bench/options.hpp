@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/args.hpp"
+#include "cli/option_table.hpp"
 #include "cli/view_options.hpp"
 #include "layout/layout.hpp"
 #include "render/frame.hpp"
@@ -30,9 +31,10 @@ struct BenchOptions {
     int reference_samples = 1;        // the tracer's samples per pixel for the error
 };
 
-const std::set<std::string>& bench_value_options();
-const std::set<std::string>& bench_flag_options();
-const char* bench_options_help();
+// bench's options: the view options without the image files and --stats,
+// then its own, both at cli::kViewHelpColumn in the help.
+cli::OptionTable<cli::ViewOptions> bench_view_options();
+cli::OptionTable<BenchOptions> bench_options();
 
 // Throws InputError for a bad value.
 BenchOptions parse_bench_options(const cli::ParsedArgs& args);

@@ -12,8 +12,7 @@ std::optional<std::string> ParsedArgs::value(const std::string& name) const {
     return it->second;
 }
 
-ParsedArgs parse_args(const std::vector<std::string>& args, const std::set<std::string>& with_value,
-                      const std::set<std::string>& flags, size_t max_positional) {
+ParsedArgs parse_args(const Args& args, const ArgNames& names, size_t max_positional) {
     ParsedArgs out;
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
@@ -24,11 +23,11 @@ ParsedArgs parse_args(const std::vector<std::string>& args, const std::set<std::
         if (a.size() > 2 && a.rfind("--", 0) == 0) {
             const size_t eq = a.find('=');
             const std::string name = a.substr(0, eq);
-            if (with_value.count(name)) {
+            if (names.with_value.count(name)) {
                 if (eq != std::string::npos) out.values[name] = a.substr(eq + 1);
                 else if (i + 1 < args.size()) out.values[name] = args[++i];
                 else throw UsageError("option " + name + " needs a value");
-            } else if (flags.count(name)) {
+            } else if (names.flags.count(name)) {
                 if (eq != std::string::npos) throw UsageError("option " + name + " takes no value");
                 out.flags.insert(name);
             } else {

@@ -1,6 +1,7 @@
 // Command-line parsing shared by every command (cli.md): "--name VALUE" takes
 // the next argument as the value even when it starts with '-', and
-// "--name=VALUE" works too. Flags take no value.
+// "--name=VALUE" works too. Flags take no value. Commands name their options
+// in tables (cli/option_table.hpp), from which the names here are drawn.
 #pragma once
 
 #include <map>
@@ -26,10 +27,15 @@ struct ParsedArgs {
     bool flag(const std::string& name) const { return flags.count(name) != 0; }
 };
 
-// `with_value` and `flags` list the options a command accepts (e.g. "--pose").
-// Throws UsageError for anything else.
-ParsedArgs parse_args(const std::vector<std::string>& args, const std::set<std::string>& with_value,
-                      const std::set<std::string>& flags, size_t max_positional);
+// The options a command accepts (e.g. "--pose"): those that take a value, and flags.
+struct ArgNames {
+    std::set<std::string> with_value;
+    std::set<std::string> flags;
+};
+
+// Throws UsageError for an option not in `names`, a missing value, a value
+// given to a flag, or more than max_positional positional arguments.
+ParsedArgs parse_args(const Args& args, const ArgNames& names, size_t max_positional);
 
 // Value parsers; they throw InputError naming the option.
 double parse_number(const std::string& option, const std::string& text);

@@ -1,52 +1,104 @@
 #include "cli/view_options.hpp"
 
-#include "image/png.hpp"
-
 #include <cmath>
 #include <tuple>
 
+#include "image/png.hpp"
+
 namespace impossible::cli {
 
-const std::set<std::string>& view_value_options() {
-    static const std::set<std::string> names = {"--pose", "--room",  "--ipd", "--fov",     "--size",
-                                                "--max-depth", "--out", "--ids", "--backend", "--stereo",
-                                                "--clip", "--depth", "--portal-texture", "--samples",
-                                                "--max-portal-passes"};
-    return names;
+namespace {
+
+math::HeadPose parse_pose(const OptionValue& v) {
+    const std::vector<double> n = parse_numbers(v.name, v.text, 6);
+    for (double x : n)
+        if (std::abs(x) > 1e7) throw InputError(v.name + ": " + v.text + " has a value beyond 1e7");
+    math::HeadPose pose;
+    pose.position = {n[0], n[1], n[2]};
+    pose.yaw_deg = n[3];
+    pose.pitch_deg = n[4];
+    pose.roll_deg = n[5];
+    return pose;
 }
 
-const std::set<std::string>& view_flag_options() {
-    static const std::set<std::string> names = {"--no-cull", "--occlusion-test", "--stats"};
-    return names;
+gl::Backend parse_backend(const OptionValue& v) {
+    if (const std::optional<gl::Backend> backend = gl::parse_backend(v.text)) return *backend;
+    throw InputError(v.name + ": '" + v.text + "' is not egl or osmesa");
 }
 
-const char* view_options_help() {
-    return "  --pose X,Y,Z,YAW,PITCH,ROLL  head centre and orientation (degrees); default: the layout's start\n"
-           "  --room ID                  the room the head is in; default: start.room, or with --pose the\n"
-           "                             one room whose box holds the head\n"
-           "  --ipd M                    distance between the eyes (default 0.064)\n"
-           "  --fov DEG                  vertical field of view of each eye (default 90)\n"
-           "  --size WxH                 size of each eye's image (default 1280x720); the image is 2W x H\n"
-           "  --max-depth N              portals one line of sight may pass (default 8, at most 250)\n"
-           "  --max-portal-passes N      portal passes one frame may draw (default 10000); past it, the\n"
-           "                             remaining portals show the fill colour and a warning says so\n"
-           "  --out FILE.png             side-by-side colour image (default stereo.png)\n"
-           "  --ids FILE.png             cell-id map: 1 + room index, 0 nothing, 255 recursion limit\n"
-           "  --backend egl|osmesa       headless OpenGL context (default egl, falling back to osmesa)\n"
-           "  --stereo MODE              clip-shift (default), viewport-index or two-pass\n"
-           "  --clip MODE                clip-distance (default) or oblique\n"
-           "  --depth MODE               reversed-z (default: float depth, infinite far plane) or standard\n"
-           "                             (24-bit depth, far plane at 200 km)\n"
-           "  --no-cull                  draw every portal and prop without per-eye culling and scissor\n"
-           "  --portal-texture SCALE     render-to-texture portals (the classic technique, for comparison):\n"
-           "                             each portal's view at SCALE x the eye size, e.g. 0.25, 0.5, 1\n"
-           "  --occlusion-test           also skip portals hidden behind the room's props or walls (an\n"
-           "                             occlusion query and conditional rendering; costs one sync a frame)\n"
-           "  --samples N                anti-aliasing: 1 (default), 2, 4, 8 or 16 samples per pixel;\n"
-           "                             render: multisampling (the counts the driver offers; llvmpipe: 4);\n"
-           "                             trace: supersampling at the standard sample positions\n"
-           "  --stats                    print draw calls, triangles and portal passes to stderr\n";
+render::DepthMode parse_depth(const OptionValue& v) {
+    if (v.text == "reversed-z") return render::DepthMode::ReversedZ;
+    if (v.text == "standard") return render::DepthMode::Standard;
+    throw InputError(v.name + ": '" + v.text + "' is not reversed-z or standard");
 }
+
+double parse_portal_texture(const OptionValue& v) {
+    const double scale = parse_number(v.name, v.text);
+    if (!(scale > 0.0 && scale <= 4.0)) throw InputError(v.name + ": " + v.text + " is not in (0, 4]");
+    return scale;
+}
+
+// In the order of the help and of the checks (the first bad value in this
+// order is the one reported).
+constexpr Option<ViewOptions> kViewOptions[] = {
+    {"--pose", "X,Y,Z,YAW,PITCH,ROLL", "head centre and orientation (degrees); default: the layout's start",
+     [](ViewOptions& o, const OptionValue& v) { o.pose = parse_pose(v); }},
+    {"--room", "ID",
+     "the room the head is in; default: start.room, or with --pose the\n"
+     "one room whose box holds the head",
+     [](ViewOptions& o, const OptionValue& v) { o.room = v.text; }},
+    {"--ipd", "M", "distance between the eyes (default 0.064)",
+     [](ViewOptions& o, const OptionValue& v) { o.frame.ipd = parse_ipd(v.text); }},
+    {"--fov", "DEG", "vertical field of view of each eye (default 90)",
+     [](ViewOptions& o, const OptionValue& v) { o.frame.fov_y_deg = parse_fov(v.text); }},
+    {"--size", "WxH", "size of each eye's image (default 1280x720); the image is 2W x H",
+     [](ViewOptions& o, const OptionValue& v) {
+         std::tie(o.frame.eye_width, o.frame.eye_height) = parse_size(v.name, v.text);
+     }},
+    {"--max-depth", "N", "portals one line of sight may pass (default 8, at most 250)",
+     [](ViewOptions& o, const OptionValue& v) { o.frame.max_depth = parse_int(v.name, v.text, 0, 250); }},
+    {"--max-portal-passes", "N",
+     "portal passes one frame may draw (default 10000); past it, the\n"
+     "remaining portals show the fill colour and a warning says so",
+     [](ViewOptions& o, const OptionValue& v) {
+         o.frame.max_portal_passes = parse_int(v.name, v.text, 0, 10'000'000);
+     }},
+    {"--out", "FILE.png", "side-by-side colour image (default stereo.png)",
+     [](ViewOptions& o, const OptionValue& v) { o.out = v.text; }},
+    {"--ids", "FILE.png", "cell-id map: 1 + room index, 0 nothing, 255 recursion limit",
+     [](ViewOptions& o, const OptionValue& v) { o.ids = v.text; }},
+    {"--backend", "egl|osmesa", "headless OpenGL context (default egl, falling back to osmesa)",
+     [](ViewOptions& o, const OptionValue& v) { o.backend = parse_backend(v); }},
+    {"--stereo", "MODE", "clip-shift (default), viewport-index or two-pass",
+     [](ViewOptions& o, const OptionValue& v) { o.frame.stereo = parse_stereo(v.text); }},
+    {"--clip", "MODE", "clip-distance (default) or oblique",
+     [](ViewOptions& o, const OptionValue& v) { o.frame.clip = parse_clip(v.text); }},
+    {"--depth", "MODE",
+     "reversed-z (default: float depth, infinite far plane) or standard\n"
+     "(24-bit depth, far plane at 200 km)",
+     [](ViewOptions& o, const OptionValue& v) { o.frame.depth = parse_depth(v); }},
+    {"--no-cull", nullptr, "draw every portal and prop without per-eye culling and scissor",
+     [](ViewOptions& o, const OptionValue&) { o.frame.cull_portals = false; }},
+    {"--portal-texture", "SCALE",
+     "render-to-texture portals (the classic technique, for comparison):\n"
+     "each portal's view at SCALE x the eye size, e.g. 0.25, 0.5, 1",
+     [](ViewOptions& o, const OptionValue& v) { o.frame.portal_texture_scale = parse_portal_texture(v); }},
+    {"--occlusion-test", nullptr,
+     "also skip portals hidden behind the room's props or walls (an\n"
+     "occlusion query and conditional rendering; costs one sync a frame)",
+     [](ViewOptions& o, const OptionValue&) { o.frame.occlusion_test = true; }},
+    {"--samples", "N",
+     "anti-aliasing: 1 (default), 2, 4, 8 or 16 samples per pixel;\n"
+     "render: multisampling (the counts the driver offers; llvmpipe: 4);\n"
+     "trace: supersampling at the standard sample positions",
+     [](ViewOptions& o, const OptionValue& v) { o.frame.samples = parse_samples(v.text); }},
+    {"--stats", nullptr, "print draw calls, triangles and portal passes to stderr",
+     [](ViewOptions& o, const OptionValue&) { o.stats = true; }},
+};
+
+}  // namespace
+
+OptionTable<ViewOptions> view_options() { return kViewOptions; }
 
 double parse_ipd(const std::string& text) {
     const double ipd = parse_number("--ipd", text);
@@ -84,49 +136,10 @@ render::ClipMode parse_clip(const std::string& text) {
     throw InputError("--clip: '" + text + "' is not clip-distance or oblique");
 }
 
-ViewOptions parse_view_options(const ParsedArgs& args) {
+ViewOptions parse_view_options(const ParsedArgs& args, OptionTable<ViewOptions> table) {
     ViewOptions o;
     if (!args.positional.empty()) o.layout_path = args.positional[0];
-    if (auto v = args.value("--pose")) {
-        const std::vector<double> n = parse_numbers("--pose", *v, 6);
-        math::HeadPose pose;
-        pose.position = {n[0], n[1], n[2]};
-        pose.yaw_deg = n[3];
-        pose.pitch_deg = n[4];
-        pose.roll_deg = n[5];
-        for (double x : n)
-            if (std::abs(x) > 1e7) throw InputError("--pose: " + *v + " has a value beyond 1e7");
-        o.pose = pose;
-    }
-    if (auto v = args.value("--room")) o.room = *v;
-    if (auto v = args.value("--ipd")) o.frame.ipd = parse_ipd(*v);
-    if (auto v = args.value("--fov")) o.frame.fov_y_deg = parse_fov(*v);
-    if (auto v = args.value("--size")) std::tie(o.frame.eye_width, o.frame.eye_height) = parse_size("--size", *v);
-    if (auto v = args.value("--max-depth")) o.frame.max_depth = parse_int("--max-depth", *v, 0, 250);
-    if (auto v = args.value("--max-portal-passes"))
-        o.frame.max_portal_passes = parse_int("--max-portal-passes", *v, 0, 10'000'000);
-    if (auto v = args.value("--out")) o.out = *v;
-    if (auto v = args.value("--ids")) o.ids = *v;
-    if (auto v = args.value("--backend")) {
-        o.backend = gl::parse_backend(*v);
-        if (!o.backend) throw InputError("--backend: '" + *v + "' is not egl or osmesa");
-    }
-    if (auto v = args.value("--stereo")) o.frame.stereo = parse_stereo(*v);
-    if (auto v = args.value("--clip")) o.frame.clip = parse_clip(*v);
-    if (auto v = args.value("--depth")) {
-        if (*v == "reversed-z") o.frame.depth = render::DepthMode::ReversedZ;
-        else if (*v == "standard") o.frame.depth = render::DepthMode::Standard;
-        else throw InputError("--depth: '" + *v + "' is not reversed-z or standard");
-    }
-    o.frame.cull_portals = !args.flag("--no-cull");
-    o.frame.occlusion_test = args.flag("--occlusion-test");
-    if (auto v = args.value("--portal-texture")) {
-        o.frame.portal_texture_scale = parse_number("--portal-texture", *v);
-        if (!(o.frame.portal_texture_scale > 0.0 && o.frame.portal_texture_scale <= 4.0))
-            throw InputError("--portal-texture: " + *v + " is not in (0, 4]");
-    }
-    if (auto v = args.value("--samples")) o.frame.samples = parse_samples(*v);
-    o.stats = args.flag("--stats");
+    apply_options(table, args, o);
     return o;
 }
 

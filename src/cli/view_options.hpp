@@ -1,12 +1,13 @@
-// The options that `render` and `trace` share (cli.md), parsed into plain data,
-// and how they become a frame description.
+// The options that `render`, `trace` and `bench` share (cli.md), parsed into
+// plain data, and how they become a frame description.
 #pragma once
 
+#include <cstddef>
 #include <optional>
-#include <set>
 #include <string>
 
 #include "cli/args.hpp"
+#include "cli/option_table.hpp"
 #include "cli/output_files.hpp"
 #include "gl/context.hpp"
 #include "layout/layout.hpp"
@@ -28,12 +29,14 @@ struct ViewOptions {
     bool stats = false;
 };
 
-// Options that take a value / flags, for parse_args.
-const std::set<std::string>& view_value_options();
-const std::set<std::string>& view_flag_options();
+// The view options of render and trace (bench drops the image files), in
+// the order of the help and of the checks; their help column.
+OptionTable<ViewOptions> view_options();
+inline constexpr std::size_t kViewHelpColumn = 29;
 
-// Throws InputError for a bad value.
-ViewOptions parse_view_options(const ParsedArgs& args);
+// The layout (the first positional argument) and the options of `table`
+// that were given; throws InputError for a bad value.
+ViewOptions parse_view_options(const ParsedArgs& args, OptionTable<ViewOptions> table = view_options());
 
 // The narrowest field of view that renders like the tracer at every size.
 inline constexpr double kMinFovDeg = 1.0;
@@ -60,8 +63,5 @@ CommandOutputs frame_outputs(const ViewOptions& options);
 // throws InputError naming the file that could not be written.
 void write_frame_pngs(CommandOutputs& outputs, const ViewOptions& options, int width, int height,
                       const std::vector<std::uint8_t>& rgb, const std::vector<std::uint8_t>& ids);
-
-// The option table for --help texts.
-const char* view_options_help();
 
 }  // namespace impossible::cli

@@ -41,6 +41,6 @@ struct PreviewOptions {
 // InputError (exit 1) for bad values.
 PreviewOptions parse_preview_options(const std::vector<std::string>& args, bool* help);
 
-const char* preview_help();
+std::string preview_help();
 
 }  // namespace impossible::preview

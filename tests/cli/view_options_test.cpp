@@ -1,0 +1,90 @@
+// The view options of render, trace and bench through their table: each
+// option reaches its field, the first bad value in table order is reported,
+// and bench's table lacks the image files.
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "cli/view_options.hpp"
+
+namespace impossible::cli {
+namespace {
+
+ViewOptions parse(const Args& args, OptionTable<ViewOptions> table = view_options()) {
+    return parse_view_options(parse_args(args, 1, table), table);
+}
+
+std::string input_error(const Args& args) {
+    try {
+        parse(args);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "(no InputError)";
+}
+
+TEST(ViewOptions, EachOptionReachesItsField) {
+    const ViewOptions o = parse({"lay.json", "--pose", "1,2,3,90,-5,0", "--room", "hall", "--ipd", "0.07", "--fov",
+                                 "60", "--size", "320x180", "--max-depth", "3", "--max-portal-passes", "99", "--out",
+                                 "a.png", "--ids", "b.png", "--backend", "osmesa", "--stereo", "two-pass", "--clip",
+                                 "oblique", "--depth", "standard", "--no-cull", "--portal-texture", "0.5",
+                                 "--occlusion-test", "--samples", "4", "--stats"});
+    EXPECT_EQ(o.layout_path, "lay.json");
+    ASSERT_TRUE(o.pose);
+    EXPECT_EQ(o.pose->position.z, 3.0);
+    EXPECT_EQ(o.pose->yaw_deg, 90.0);
+    EXPECT_EQ(o.pose->pitch_deg, -5.0);
+    EXPECT_EQ(o.room, "hall");
+    EXPECT_DOUBLE_EQ(o.frame.ipd, 0.07);
+    EXPECT_DOUBLE_EQ(o.frame.fov_y_deg, 60.0);
+    EXPECT_EQ(o.frame.eye_width, 320);
+    EXPECT_EQ(o.frame.eye_height, 180);
+    EXPECT_EQ(o.frame.max_depth, 3);
+    EXPECT_EQ(o.frame.max_portal_passes, 99);
+    EXPECT_EQ(o.out, "a.png");
+    EXPECT_EQ(o.ids, "b.png");
+    EXPECT_EQ(o.backend, gl::Backend::OSMesa);
+    EXPECT_EQ(o.frame.stereo, render::StereoMode::TwoPass);
+    EXPECT_EQ(o.frame.clip, render::ClipMode::Oblique);
+    EXPECT_EQ(o.frame.depth, render::DepthMode::Standard);
+    EXPECT_FALSE(o.frame.cull_portals);
+    EXPECT_DOUBLE_EQ(o.frame.portal_texture_scale, 0.5);
+    EXPECT_TRUE(o.frame.occlusion_test);
+    EXPECT_EQ(o.frame.samples, 4);
+    EXPECT_TRUE(o.stats);
+}
+
+TEST(ViewOptions, DefaultsWithoutOptions) {
+    const ViewOptions o = parse({});
+    const render::FrameDesc defaults;
+    EXPECT_FALSE(o.layout_path || o.pose || o.room || o.ids || o.backend);
+    EXPECT_EQ(o.out, "stereo.png");
+    EXPECT_TRUE(o.frame.cull_portals);
+    EXPECT_FALSE(o.frame.occlusion_test);
+    EXPECT_EQ(o.frame.eye_width, defaults.eye_width);
+    EXPECT_FALSE(o.stats);
+}
+
+TEST(ViewOptions, BadValuesNameTheirOption) {
+    EXPECT_EQ(input_error({"--fov", "200"}), "--fov: 200 is not in 1..179 degrees (at least 1, less than 179)");
+    EXPECT_EQ(input_error({"--pose", "1e8,0,0,0,0,0"}), "--pose: 1e8,0,0,0,0,0 has a value beyond 1e7");
+    EXPECT_EQ(input_error({"--backend", "vulkan"}), "--backend: 'vulkan' is not egl or osmesa");
+    EXPECT_EQ(input_error({"--depth", "w"}), "--depth: 'w' is not reversed-z or standard");
+    EXPECT_EQ(input_error({"--portal-texture", "5"}), "--portal-texture: 5 is not in (0, 4]");
+    // The first in table order, whatever the order on the command line.
+    EXPECT_EQ(input_error({"--samples", "3", "--ipd", "-1"}), "--ipd: -1 is not in 0..10 m");
+}
+
+TEST(ViewOptions, TheHelpHasEveryOptionAtColumn29) {
+    const std::string help = options_help(view_options(), kViewHelpColumn);
+    for (const Option<ViewOptions>& o : view_options()) {
+        const std::string left = option_label(o.name, o.value_name, o.label);
+        EXPECT_NE(help.find("  " + left + " "), std::string::npos) << left;
+    }
+    EXPECT_NE(help.find("\n  --room ID                  the room the head is in;"), std::string::npos);
+    EXPECT_TRUE(help.ends_with("\n  --stats                    print draw calls, triangles and portal passes"
+                               " to stderr\n"));
+}
+
+}  // namespace
+}  // namespace impossible::cli
