@@ -28,8 +28,10 @@ void bind_common(const DrawContext& ctx, const LevelView& view, Pass pass, int s
     state.clip_control(reversed_z ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
     state.apply(pass_state(pass, reversed_z, view.mirrored), stencil_ref);
     state.program(program);
-    if (scissor) state.scissor(*scissor);
-    else state.no_scissor();
+    if (scissor)
+        state.scissor(*scissor);
+    else
+        state.no_scissor();
 }
 
 }  // namespace
@@ -39,16 +41,12 @@ void bind_draw(const DrawContext& ctx, const LevelView& view, const SceneDraw& d
     bind_common(ctx, view, draw.pass, draw.stencil_ref, draw.program->program.get(), draw.scissor);
     gl::StateCache& state = *ctx.renderer.state;
     switch (ctx.frame.stereo) {
-        case StereoMode::ClipShift:
-            state.viewport(whole_target(ctx.frame));
-            break;
+        case StereoMode::ClipShift: state.viewport(whole_target(ctx.frame)); break;
         case StereoMode::ViewportIndex:
             state.viewport_indexed(0, eye_viewport(ctx.frame, 0));
             state.viewport_indexed(1, eye_viewport(ctx.frame, 1));
             break;
-        case StereoMode::TwoPass:
-            state.viewport(eye_viewport(ctx.frame, ctx.eye));
-            break;
+        case StereoMode::TwoPass: state.viewport(eye_viewport(ctx.frame, ctx.eye)); break;
     }
     state.vertex_array(ctx.renderer.gpu.vao.get());
 }
@@ -61,15 +59,9 @@ void bind_draw(const DrawContext& ctx, const LevelView& view, const TargetDraw& 
     // The triangle has no eye: with per-eye viewports it is drawn through
     // viewport 0, which then spans the whole target.
     switch (ctx.frame.stereo) {
-        case StereoMode::ClipShift:
-            state.viewport(whole_target(ctx.frame));
-            break;
-        case StereoMode::ViewportIndex:
-            state.viewport_indexed(0, whole_target(ctx.frame));
-            break;
-        case StereoMode::TwoPass:
-            state.viewport(eye_viewport(ctx.frame, ctx.eye));
-            break;
+        case StereoMode::ClipShift: state.viewport(whole_target(ctx.frame)); break;
+        case StereoMode::ViewportIndex: state.viewport_indexed(0, whole_target(ctx.frame)); break;
+        case StereoMode::TwoPass: state.viewport(eye_viewport(ctx.frame, ctx.eye)); break;
     }
     state.vertex_array(ctx.renderer.empty_vao.get());
 }
@@ -85,8 +77,7 @@ void submit_queued(const DrawContext& ctx, const LevelView& view, const SceneDra
     ctx.scratch.stats.draw_calls += submit_indirect(*ctx.renderer.state, queue);
 }
 
-void draw_range(const DrawContext& ctx, const LevelView& view, const SceneDraw& draw,
-                const scene::IndexRange& range) {
+void draw_range(const DrawContext& ctx, const LevelView& view, const SceneDraw& draw, const scene::IndexRange& range) {
     assert(ctx.scratch.indirect.pending.empty());  // nothing queued for another draw
     queue_range(ctx.scratch.indirect, range, instances_of(ctx));
     submit_queued(ctx, view, draw);
@@ -94,8 +85,10 @@ void draw_range(const DrawContext& ctx, const LevelView& view, const SceneDraw& 
 
 void draw_full_target(const DrawContext& ctx, const LevelView& view, const TargetDraw& draw, int quads) {
     bind_draw(ctx, view, draw);
-    if (quads > 0) glDrawArraysInstanced(GL_TRIANGLES, 0, 6, quads);
-    else glDrawArrays(GL_TRIANGLES, 0, 3);
+    if (quads > 0)
+        glDrawArraysInstanced(GL_TRIANGLES, 0, 6, quads);
+    else
+        glDrawArrays(GL_TRIANGLES, 0, 3);
     ctx.scratch.stats.draw_calls += 1;
 }
 
@@ -110,8 +103,10 @@ gl::ScissorRect scissor_of(const DrawContext& ctx, const std::array<NdcRect, 2>&
         y0 = std::min(y0, static_cast<int>(std::floor((r.y0 + 1.0) * 0.5 * h)) - 1);
         y1 = std::max(y1, static_cast<int>(std::ceil((r.y1 + 1.0) * 0.5 * h)) + 1);
     }
-    x0 = std::max(x0, 0); y0 = std::max(y0, 0);
-    x1 = std::min(x1, 2 * w); y1 = std::min(y1, h);
+    x0 = std::max(x0, 0);
+    y0 = std::max(y0, 0);
+    x1 = std::min(x1, 2 * w);
+    y1 = std::min(y1, h);
     return {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
 }
 

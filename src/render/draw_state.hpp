@@ -29,14 +29,14 @@ namespace impossible::render {
 struct DrawContext {
     const RendererData& renderer;
     const FrameDesc& frame;
-    const SceneProgram& scene_program;       // the frame's stereo mode's
-    const SceneProgram* material_program;    // the same with materials; null when no batch has them
-    const Target& target;                    // what is drawn into
-    const FrameTargets& targets;             // the portal textures
+    const SceneProgram& scene_program;     // the frame's stereo mode's
+    const SceneProgram* material_program;  // the same with materials; null when no batch has them
+    const Target& target;                  // what is drawn into
+    const FrameTargets& targets;           // the portal textures
     math::dmat4 projection{1.0};
-    int eye = -1;                            // two-pass stereo: the eye being drawn; -1: both
-    FrameProfiler* profiler = nullptr;       // null unless FrameDesc::profile
-    FrameScratch& scratch;                   // the only thing drawing writes, besides GL
+    int eye = -1;                       // two-pass stereo: the eye being drawn; -1: both
+    FrameProfiler* profiler = nullptr;  // null unless FrameDesc::profile
+    FrameScratch& scratch;              // the only thing drawing writes, besides GL
 };
 
 // Where a draw may write: a rectangle of the target, or all of it.
@@ -47,7 +47,7 @@ using Scissor = std::optional<gl::ScissorRect>;
 // viewports.
 struct SceneDraw {
     Pass pass = Pass::Scene;
-    int stencil_ref = 0;                   // the recursion level (or the next, passes.hpp)
+    int stencil_ref = 0;  // the recursion level (or the next, passes.hpp)
     const SceneProgram* program = nullptr;
     Scissor scissor;
 };
@@ -69,8 +69,7 @@ void bind_draw(const DrawContext& ctx, const LevelView& view, const SceneDraw& d
 void bind_draw(const DrawContext& ctx, const LevelView& view, const TargetDraw& draw);
 
 // One instanced draw (one per eye in two-pass stereo) of an index range.
-void draw_range(const DrawContext& ctx, const LevelView& view, const SceneDraw& draw,
-                const scene::IndexRange& range);
+void draw_range(const DrawContext& ctx, const LevelView& view, const SceneDraw& draw, const scene::IndexRange& range);
 
 // Submits the ranges queued in the scratch's IndirectDraws (multi_draw.hpp)
 // as `draw`, and counts them.

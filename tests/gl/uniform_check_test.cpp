@@ -58,8 +58,7 @@ TEST(UniformCheck, AMisspeltUniformFailsWithItsAndTheShadersNames) {
     const Result<void> checked = wrong.check();
     ASSERT_FALSE(checked);
     EXPECT_NE(checked.error().find("'u_far_dept'"), std::string::npos) << checked.error();
-    EXPECT_NE(checked.error().find("shaders/clear_depth.vert.glsl + shaders/clear_depth.frag.glsl"),
-              std::string::npos)
+    EXPECT_NE(checked.error().find("shaders/clear_depth.vert.glsl + shaders/clear_depth.frag.glsl"), std::string::npos)
         << checked.error();
     EXPECT_EQ(checked.error().find("u_color"), std::string::npos) << checked.error();
 
