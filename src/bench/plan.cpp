@@ -66,6 +66,92 @@ layout::Layout with_extra_boxes(const layout::Layout& layout, int n) {
     return out;
 }
 
+namespace {
+
+// Adds configurations to a plan: the base frame, changed.
+struct PlanBuilder {
+    BenchPlan& plan;
+    render::FrameDesc base;
+    std::map<int, int> box_layouts;  // boxes per room → its layout variant
+
+    template <class Change>
+    void add(const std::string& name, const std::string& group, Change change) {
+        BenchConfig c{name, group, 0, base};
+        change(c);
+        plan.configs.push_back(c);
+    }
+};
+
+// --sweep techniques: each technique against the default, and depths.
+void add_techniques(PlanBuilder& b) {
+    b.add("stereo=two-pass", "stereo", [](BenchConfig& c) { c.frame.stereo = render::StereoMode::TwoPass; });
+    b.add("stereo=viewport-index", "stereo",
+          [](BenchConfig& c) { c.frame.stereo = render::StereoMode::ViewportIndex; });
+    b.add("clip=oblique", "clip", [](BenchConfig& c) { c.frame.clip = render::ClipMode::Oblique; });
+    b.add("clip=clip-distance", "clip", [](BenchConfig& c) { c.frame.clip = render::ClipMode::ClipDistance; });
+    b.add("cull=off", "cull", [](BenchConfig& c) { c.frame.cull_portals = false; });
+    b.add("cull=on", "cull", [](BenchConfig& c) { c.frame.cull_portals = true; });
+    b.add("occlusion=on", "occlusion", [](BenchConfig& c) { c.frame.occlusion_test = true; });
+    b.add("multi-draw=off", "multi-draw", [](BenchConfig& c) { c.frame.multi_draw = false; });
+    for (double scale : {0.25, 0.5, 1.0}) {
+        char name[32];
+        std::snprintf(name, sizeof name, "texture=%g", scale);
+        b.add(name, "technique", [scale](BenchConfig& c) { c.frame.portal_texture_scale = scale; });
+    }
+    for (int d : {1, 2, 4, 8, 16, 64})
+        b.add("depth=" + std::to_string(d), "depth", [d](BenchConfig& c) { c.frame.max_depth = d; });
+}
+
+// One item of --sweep boxes: "N", or "N/all" (the same boxes with per-object
+// culling off), or "N/separate" (one draw per run of visible props instead of
+// a multi-draw), to compare in one run.
+void add_boxes(PlanBuilder& b, const std::string& name, const std::string& item) {
+    const auto suffixed = [&](const std::string& suffix) {
+        return item.size() > suffix.size() && item.compare(item.size() - suffix.size(), suffix.size(), suffix) == 0;
+    };
+    const bool all = suffixed("/all"), separate = suffixed("/separate");
+    const std::string count = all || separate ? item.substr(0, item.find('/')) : item;
+    const int n = parse_int("--sweep boxes", count, 0, 100000);
+    // One layout per count, shared by its variants (the tracer then
+    // draws each count's reference once).
+    BenchPlan& plan = b.plan;
+    auto [at, made] = b.box_layouts.try_emplace(n, static_cast<int>(plan.layouts.size()));
+    if (made) plan.layouts.push_back(with_extra_boxes(plan.layouts[0], n));
+    const int variant = at->second;
+    b.add(name, "boxes", [&](BenchConfig& c) {
+        c.layout_variant = variant;
+        c.frame.cull_objects = !all;
+        c.frame.multi_draw = !separate;
+    });
+}
+
+// One item of --sweep KIND:ITEM,... (KIND checked by the options).
+void add_sweep_item(PlanBuilder& b, const layout::Layout& layout, const std::string& kind, const std::string& item) {
+    const std::string name = kind + "=" + item;
+    if (kind == "portals") {
+        const int n = parse_int("--sweep portals", item, 0, 1000000);
+        b.plan.layouts.push_back(keep_first_portals(layout, n));
+        const int variant = static_cast<int>(b.plan.layouts.size()) - 1;
+        b.add(name, kind, [variant](BenchConfig& c) { c.layout_variant = variant; });
+    } else if (kind == "boxes") {
+        add_boxes(b, name, item);
+    } else if (kind == "samples") {
+        const int n = cli::parse_samples(item);
+        b.add(name, kind, [n](BenchConfig& c) { c.frame.samples = n; });
+    } else if (kind == "depth") {
+        const int d = parse_int("--sweep depth", item, 0, 250);
+        b.add(name, kind, [d](BenchConfig& c) { c.frame.max_depth = d; });
+    } else {
+        const auto [w, h] = parse_size("--sweep size", item);
+        b.add(name, kind, [w = w, h = h](BenchConfig& c) {
+            c.frame.eye_width = w;
+            c.frame.eye_height = h;
+        });
+    }
+}
+
+}  // namespace
+
 BenchPlan plan_bench(const layout::Layout& layout, const BenchOptions& o) {
     BenchPlan plan;
     plan.layouts.push_back(o.portals ? keep_first_portals(layout, *o.portals) : layout);
@@ -73,75 +159,15 @@ BenchPlan plan_bench(const layout::Layout& layout, const BenchOptions& o) {
     ViewOptions view = o.view;
     view.pose.reset();
     view.room.reset();
-    render::FrameDesc base = frame_for(plan.layouts[0], view);
-    plan.configs.push_back({"base", "base", 0, base});
-    auto add = [&](const std::string& name, const std::string& group, auto change) {
-        BenchConfig c{name, group, 0, base};
-        change(c);
-        plan.configs.push_back(c);
-    };
+    PlanBuilder builder{plan, frame_for(plan.layouts[0], view), {}};
+    builder.add("base", "base", [](BenchConfig&) {});
     if (o.sweep == "techniques") {
-        add("stereo=two-pass", "stereo", [](BenchConfig& c) { c.frame.stereo = render::StereoMode::TwoPass; });
-        add("stereo=viewport-index", "stereo",
-            [](BenchConfig& c) { c.frame.stereo = render::StereoMode::ViewportIndex; });
-        add("clip=oblique", "clip", [](BenchConfig& c) { c.frame.clip = render::ClipMode::Oblique; });
-        add("clip=clip-distance", "clip", [](BenchConfig& c) { c.frame.clip = render::ClipMode::ClipDistance; });
-        add("cull=off", "cull", [](BenchConfig& c) { c.frame.cull_portals = false; });
-        add("cull=on", "cull", [](BenchConfig& c) { c.frame.cull_portals = true; });
-        add("occlusion=on", "occlusion", [](BenchConfig& c) { c.frame.occlusion_test = true; });
-        add("multi-draw=off", "multi-draw", [](BenchConfig& c) { c.frame.multi_draw = false; });
-        for (double scale : {0.25, 0.5, 1.0}) {
-            char name[32];
-            std::snprintf(name, sizeof name, "texture=%g", scale);
-            add(name, "technique", [scale](BenchConfig& c) { c.frame.portal_texture_scale = scale; });
-        }
-        for (int d : {1, 2, 4, 8, 16, 64})
-            add("depth=" + std::to_string(d), "depth", [d](BenchConfig& c) { c.frame.max_depth = d; });
-        return plan;
-    }
-    if (o.sweep.empty()) return plan;
-    const size_t colon = o.sweep.find(':');
-    const std::string kind = o.sweep.substr(0, colon);
-    std::map<int, int> box_layouts;  // boxes per room → its layout variant
-    for (const std::string& item : split(o.sweep.substr(colon + 1), ',')) {
-        const std::string name = kind + "=" + item;
-        if (kind == "portals") {
-            const int n = parse_int("--sweep portals", item, 0, 1000000);
-            plan.layouts.push_back(keep_first_portals(layout, n));
-            add(name, kind, [&](BenchConfig& c) { c.layout_variant = static_cast<int>(plan.layouts.size()) - 1; });
-        } else if (kind == "boxes") {
-            // "N/all": the same boxes with per-object culling off; "N/separate": one
-            // draw per run of visible props instead of a multi-draw; to compare in one run.
-            const auto suffixed = [&](const char* s) {
-                const std::string suffix(s);
-                return item.size() > suffix.size() && item.compare(item.size() - suffix.size(), suffix.size(), suffix) == 0;
-            };
-            const bool all = suffixed("/all"), separate = suffixed("/separate");
-            const std::string count = all || separate ? item.substr(0, item.find('/')) : item;
-            const int n = parse_int("--sweep boxes", count, 0, 100000);
-            // One layout per count, shared by its variants (the tracer then
-            // draws each count's reference once).
-            auto [at, made] = box_layouts.try_emplace(n, static_cast<int>(plan.layouts.size()));
-            if (made) plan.layouts.push_back(with_extra_boxes(plan.layouts[0], n));
-            const int variant = at->second;
-            add(name, kind, [&](BenchConfig& c) {
-                c.layout_variant = variant;
-                c.frame.cull_objects = !all;
-                c.frame.multi_draw = !separate;
-            });
-        } else if (kind == "samples") {
-            const int n = cli::parse_samples(item);
-            add(name, kind, [n](BenchConfig& c) { c.frame.samples = n; });
-        } else if (kind == "depth") {
-            const int d = parse_int("--sweep depth", item, 0, 250);
-            add(name, kind, [d](BenchConfig& c) { c.frame.max_depth = d; });
-        } else {
-            const auto [w, h] = parse_size("--sweep size", item);
-            add(name, kind, [w = w, h = h](BenchConfig& c) {
-                c.frame.eye_width = w;
-                c.frame.eye_height = h;
-            });
-        }
+        add_techniques(builder);
+    } else if (!o.sweep.empty()) {
+        const size_t colon = o.sweep.find(':');
+        const std::string kind = o.sweep.substr(0, colon);
+        for (const std::string& item : split(o.sweep.substr(colon + 1), ','))
+            add_sweep_item(builder, layout, kind, item);
     }
     return plan;
 }

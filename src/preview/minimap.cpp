@@ -96,6 +96,69 @@ MapBounds minimap_bounds(const MinimapInput& in) {
     return {lo - margin, hi + margin};
 }
 
+namespace {
+
+// The play area: filled, and its outline.
+void add_play_area(OverlayBatch& batch, const MapView& view, const layout::PlayArea& a) {
+    glm::vec2 p0 = glm::clamp(view.to_pixel(a.min), view.lo, view.hi);
+    glm::vec2 p1 = glm::clamp(view.to_pixel(a.max), view.lo, view.hi);
+    batch.rect(p0, p1, {0.2f, 0.8f, 0.3f, 0.15f});
+    const std::vector<glm::dvec2> poly = layout::outline(a);  // the rectangle, or the polygon
+    for (std::size_t i = 0; i < poly.size(); ++i)
+        view.segment(batch, poly[i], poly[(i + 1) % poly.size()], {0.3f, 0.9f, 0.4f, 1.0f});
+}
+
+// Rooms one door away, where they lie on the same physical floor (a mirror
+// or window leads nowhere one can walk).
+void add_neighbours(OverlayBatch& batch, const MapView& view, const MinimapInput& in, const math::dmat4& to_physical) {
+    const layout::Layout& layout = *in.layout;
+    for (std::size_t i = 0; i < layout.portals.size(); ++i) {
+        const layout::Portal& p = layout.portals[i];
+        if (p.room != in.room || p.kind != layout::PortalKind::Door) continue;
+        const layout::Portal& target = layout.portals[p.target];
+        const math::dmat4 m = to_physical * (*in.transfer)[p.target];  // B's room → A's → physical
+        view.loop(batch, floor_of(layout.rooms[target.room], m), {0.35f, 0.55f, 1.0f, 0.7f});
+    }
+}
+
+// The head's room and its portals, each with a short line along its normal.
+void add_room(OverlayBatch& batch, const MapView& view, const layout::Layout& layout, int room,
+              const math::dmat4& to_physical) {
+    view.loop(batch, floor_of(layout.rooms[room], to_physical), {1.0f, 0.95f, 0.5f, 1.0f});
+    for (const layout::Portal& p : layout.portals) {
+        if (p.room != room) continue;
+        const math::PortalRect& r = p.rect;
+        const math::dvec3 right = math::portal_right(r);
+        const math::dvec3 hw = right * (0.5 * r.width), hh = r.up * (0.5 * r.height);
+        Quad q;
+        const math::dvec3 corners[4] = {r.center - hw - hh, r.center + hw - hh, r.center + hw + hh,
+                                        r.center - hw + hh};
+        for (int k = 0; k < 4; ++k) {
+            const math::dvec4 c = to_physical * math::dvec4(corners[k], 1.0);
+            q[k] = {c.x, c.z};
+        }
+        const glm::vec4 colour = minimap_portal_colour(p.kind);
+        view.loop(batch, q, colour);
+        const math::dvec4 c0 = to_physical * math::dvec4(r.center, 1.0);
+        const math::dvec4 c1 = to_physical * math::dvec4(r.center + r.normal * 0.25, 1.0);
+        view.segment(batch, {c0.x, c0.z}, {c1.x, c1.z}, colour);
+    }
+}
+
+// The head: a dot and its (physical) view direction.
+void add_head(OverlayBatch& batch, const MapView& view, const math::HeadPose& head) {
+    const math::dvec3 h = head.position;
+    const math::dvec3 f = math::forward_of(math::head_rotation(head));
+    const glm::vec2 hp = view.to_pixel({h.x, h.z});
+    if (hp.x >= view.lo.x && hp.x <= view.hi.x && hp.y >= view.lo.y && hp.y <= view.hi.y)
+        batch.rect(hp - 3.0f, hp + 3.0f, {1.0f, 0.2f, 0.2f, 1.0f});
+    glm::dvec2 dir{f.x, f.z};
+    if (glm::length(dir) > 1e-6) dir = glm::normalize(dir);
+    view.segment(batch, {h.x, h.z}, glm::dvec2{h.x, h.z} + dir * (18.0 / view.scale), {1.0f, 0.2f, 0.2f, 1.0f});
+}
+
+}  // namespace
+
 void add_minimap(OverlayBatch& batch, const MinimapInput& in, glm::vec2 corner, float size) {
     const layout::Layout& layout = *in.layout;
     MapView view;
@@ -109,58 +172,11 @@ void add_minimap(OverlayBatch& batch, const MinimapInput& in, glm::vec2 corner, 
 
     batch.rect(corner, corner + size, {0.0f, 0.0f, 0.0f, 0.65f});
     const math::dmat4 to_physical = math::rigid_inverse(in.physical_to_virtual);
-
-    if (layout.play_area) {
-        const layout::PlayArea& a = *layout.play_area;
-        glm::vec2 p0 = glm::clamp(view.to_pixel(a.min), view.lo, view.hi);
-        glm::vec2 p1 = glm::clamp(view.to_pixel(a.max), view.lo, view.hi);
-        batch.rect(p0, p1, {0.2f, 0.8f, 0.3f, 0.15f});
-        const std::vector<glm::dvec2> poly = layout::outline(a);  // the rectangle, or the polygon
-        for (std::size_t i = 0; i < poly.size(); ++i)
-            view.segment(batch, poly[i], poly[(i + 1) % poly.size()], {0.3f, 0.9f, 0.4f, 1.0f});
-    }
+    if (layout.play_area) add_play_area(batch, view, *layout.play_area);
     const bool room_ok = in.room >= 0 && static_cast<std::size_t>(in.room) < layout.rooms.size();
-    if (room_ok && in.transfer) {
-        // Rooms one door away, where they lie on the same physical floor (a
-        // mirror or window leads nowhere one can walk).
-        for (std::size_t i = 0; i < layout.portals.size(); ++i) {
-            const layout::Portal& p = layout.portals[i];
-            if (p.room != in.room || p.kind != layout::PortalKind::Door) continue;
-            const layout::Portal& target = layout.portals[p.target];
-            const math::dmat4 m = to_physical * (*in.transfer)[p.target];  // B's room → A's → physical
-            view.loop(batch, floor_of(layout.rooms[target.room], m), {0.35f, 0.55f, 1.0f, 0.7f});
-        }
-    }
-    if (room_ok) {
-        view.loop(batch, floor_of(layout.rooms[in.room], to_physical), {1.0f, 0.95f, 0.5f, 1.0f});
-        for (const layout::Portal& p : layout.portals) {
-            if (p.room != in.room) continue;
-            const math::PortalRect& r = p.rect;
-            const math::dvec3 right = math::portal_right(r);
-            const math::dvec3 hw = right * (0.5 * r.width), hh = r.up * (0.5 * r.height);
-            Quad q;
-            const math::dvec3 corners[4] = {r.center - hw - hh, r.center + hw - hh, r.center + hw + hh,
-                                            r.center - hw + hh};
-            for (int k = 0; k < 4; ++k) {
-                const math::dvec4 c = to_physical * math::dvec4(corners[k], 1.0);
-                q[k] = {c.x, c.z};
-            }
-            const glm::vec4 colour = minimap_portal_colour(p.kind);
-            view.loop(batch, q, colour);
-            const math::dvec4 c0 = to_physical * math::dvec4(r.center, 1.0);
-            const math::dvec4 c1 = to_physical * math::dvec4(r.center + r.normal * 0.25, 1.0);
-            view.segment(batch, {c0.x, c0.z}, {c1.x, c1.z}, colour);
-        }
-    }
-    // The head: a dot and its (physical) view direction.
-    const math::dvec3 h = in.physical_head.position;
-    const math::dvec3 f = math::forward_of(math::head_rotation(in.physical_head));
-    const glm::vec2 hp = view.to_pixel({h.x, h.z});
-    if (hp.x >= view.lo.x && hp.x <= view.hi.x && hp.y >= view.lo.y && hp.y <= view.hi.y)
-        batch.rect(hp - 3.0f, hp + 3.0f, {1.0f, 0.2f, 0.2f, 1.0f});
-    glm::dvec2 dir{f.x, f.z};
-    if (glm::length(dir) > 1e-6) dir = glm::normalize(dir);
-    view.segment(batch, {h.x, h.z}, glm::dvec2{h.x, h.z} + dir * (18.0 / view.scale), {1.0f, 0.2f, 0.2f, 1.0f});
+    if (room_ok && in.transfer) add_neighbours(batch, view, in, to_physical);
+    if (room_ok) add_room(batch, view, layout, in.room, to_physical);
+    add_head(batch, view, in.physical_head);
     add_text(batch, corner.x + 4.0f, corner.y + 4.0f, "physical floor", {0.8f, 0.8f, 0.8f, 0.9f}, 1.0f);
 }
 
