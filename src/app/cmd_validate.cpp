@@ -1,6 +1,7 @@
 // impossible validate LAYOUT [--json]: every problem, or a short summary and
 // the designer's report (design/report.hpp).
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
 #include "base/text.hpp"

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>  // the report as JSON: include <nlohmann/json.hpp> to use it
 
 #include "design/overlap.hpp"
 #include "design/placement.hpp"

@@ -1,5 +1,6 @@
 // The designer's report as one JSON document (`validate --json`).
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 #include "design/report.hpp"
 

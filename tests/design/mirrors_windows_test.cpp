@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <set>
+#include <nlohmann/json.hpp>
 
 #include "design/plan.hpp"
 #include "design/report.hpp"

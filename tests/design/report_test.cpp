@@ -1,4 +1,6 @@
 // The designer's report on hand-made layouts whose answers are known.
+#include <nlohmann/json.hpp>
+
 #include "design_test_util.hpp"
 
 #include "design/report.hpp"
