@@ -81,7 +81,7 @@ int run_trace_command(const Args& args, std::ostream& out, std::ostream& err) {
         const long rays = static_cast<long>(image.width) * image.height;
         long fills = 0, nothing = 0;
         for (std::uint8_t id : image.ids) {
-            fills += id == trace::kIdDepthLimit;
+            fills += id == shading::kFillId;
             nothing += id == trace::kIdNothing;
         }
         const int used = threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));

@@ -27,7 +27,7 @@ using Quad = std::array<glm::dvec2, 4>;
 
 // A face of a room: the plane coordinate on `axis`, the inward direction
 // along it, and the face rectangle over axes (a, b).
-struct FaceFrame {
+struct FaceAxes {
     int axis = 0;
     double coord = 0.0;
     double inward = 1.0;
@@ -37,8 +37,8 @@ struct FaceFrame {
     glm::dvec2 hi{0.0};
 };
 
-FaceFrame face_frame(const Room& room, Face face) {
-    FaceFrame f;
+FaceAxes face_axes(const Room& room, Face face) {
+    FaceAxes f;
     switch (face) {
         case Face::Floor: f = {1, room.min.y, 1.0, 0, 2}; break;
         case Face::Ceiling: f = {1, room.max.y, -1.0, 0, 2}; break;
@@ -96,18 +96,18 @@ void report_free_standing(Checker& check, const PortalDraft& draft, const Room& 
     const math::PortalRect& rect = draft.portal.rect;
     static const char* const axes[] = {"x", "y", "z"};
     const auto name = [&](int face) {
-        const FaceFrame f = face_frame(room, static_cast<Face>(face));
+        const FaceAxes f = face_axes(room, static_cast<Face>(face));
         return std::string("the ") + kFaceNames[static_cast<std::size_t>(face)] + " face (" + axes[f.axis] + " = " +
                format_number(f.coord) + ")";
     };
-    const auto farthest_corner = [&](const FaceFrame& f) {
+    const auto farthest_corner = [&](const FaceAxes& f) {
         double away = 0.0;
         for (const glm::dvec3& v : c) away = std::max(away, std::abs(v[f.axis] - f.coord));
         return away;
     };
     std::string why;
     for (int face = 0; face < kFaceCount && why.empty(); ++face) {
-        const FaceFrame f = face_frame(room, static_cast<Face>(face));
+        const FaceAxes f = face_axes(room, static_cast<Face>(face));
         if (farthest_corner(f) > eps) continue;
         // In the plane: either the normal points out of the room, or the
         // rectangle lies beside the face (partly inside is reported apart).
@@ -120,11 +120,11 @@ void report_free_standing(Checker& check, const PortalDraft& draft, const Room& 
         // The face the normal looks away from, where it would belong.
         int best = 0;
         for (int face = 1; face < kFaceCount; ++face) {
-            const FaceFrame f = face_frame(room, static_cast<Face>(face));
-            const FaceFrame b = face_frame(room, static_cast<Face>(best));
+            const FaceAxes f = face_axes(room, static_cast<Face>(face));
+            const FaceAxes b = face_axes(room, static_cast<Face>(best));
             if (rect.normal[f.axis] * f.inward > rect.normal[b.axis] * b.inward) best = face;
         }
-        const FaceFrame f = face_frame(room, static_cast<Face>(best));
+        const FaceAxes f = face_axes(room, static_cast<Face>(best));
         const double away = std::round(farthest_corner(f) * 1e6) / 1e6;  // micrometres: no 0.30000000000000004
         why = rect.normal[f.axis] * f.inward > 0.5
                   ? "a corner is " + format_number(away) + " m from " + name(best) +
@@ -173,7 +173,7 @@ void find_hole(Checker& check, std::size_t i, PortalDraft& draft, const RoomDraf
     const std::array<glm::dvec3, 4> c = corners(rect);
     bool partly = false;
     for (int face = 0; face < kFaceCount; ++face) {
-        const FaceFrame f = face_frame(room.room, static_cast<Face>(face));
+        const FaceAxes f = face_axes(room.room, static_cast<Face>(face));
         const bool in_plane = std::all_of(c.begin(), c.end(), [&](const glm::dvec3& v) {
             return std::abs(v[f.axis] - f.coord) <= eps;
         });

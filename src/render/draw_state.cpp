@@ -130,7 +130,7 @@ void set_eye_uniforms(const DrawContext& ctx, const LevelView& view, const Scene
     const int eye_w = ctx.frame.eye_width, eye_h = ctx.frame.eye_height;
     // The cell's vertices are relative to its origin: the move to layout
     // coordinates is folded into the matrices and planes here, in double.
-    const scene::CellFrame& cell_origin = ctx.renderer.cell_origins[static_cast<size_t>(view.cell)];
+    const scene::CellOrigin& cell_origin = ctx.renderer.cell_origins[static_cast<size_t>(view.cell)];
     const math::dvec3 origin = cell_origin.origin;
     const math::dmat4 from_cell = glm::translate(math::dmat4(1.0), origin);
     for (int e = 0; e < 2; ++e) {

@@ -165,7 +165,7 @@ Result<Renderer> Renderer::create(gl::StateCache& state, const scene::Scene& sce
     r.objects = scene.objects;
     for (const auto& cell : scene.batches)
         for (const scene::DrawBatch& b : cell) r.has_materials = r.has_materials || b.texture >= 0 || b.alpha_cutoff >= 0.0f;
-    r.cell_origins = scene.frames;
+    r.cell_origins = scene.origins;
     r.links = scene.links;
     r.portals = scene.portal_info;
     r.portal_meshes = scene.portals;

@@ -44,7 +44,7 @@ struct RendererData {
     gl::StateCache* state = nullptr;  // the context's; outlives the renderer
     std::vector<std::vector<scene::DrawBatch>> cells;  // per room: its batches, into gpu's index buffer
     std::vector<scene::CellObjects> objects;           // per room: the same split for per-object culling
-    std::vector<scene::CellFrame> cell_origins;        // per room: the origin its vertices are relative to
+    std::vector<scene::CellOrigin> cell_origins;        // per room: the origin its vertices are relative to
     std::vector<scene::PortalInfo> portals;            // per portal, as the scene has it
     std::vector<scene::PortalMesh> portal_meshes;      // per portal: its box (a mirror's or window's: the front)
     links::PortalLinks links;                          // M_AB per portal, the portals of each room

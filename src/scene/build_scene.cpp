@@ -15,8 +15,8 @@
 
 namespace impossible::scene {
 
-CellFrame cell_frame(const layout::Room& room) {
-    CellFrame f;
+CellOrigin origin_of_cell(const layout::Room& room) {
+    CellOrigin f;
     for (int axis = 0; axis < 3; ++axis) {
         const double centre = 0.5 * (room.min[axis] + room.max[axis]);
         f.origin[axis] = kCellOriginGrid * std::round(centre / kCellOriginGrid);
@@ -27,73 +27,88 @@ CellFrame cell_frame(const layout::Room& room) {
     return f;
 }
 
-Scene build_scene(const layout::Layout& layout) {
-    Scene scene;
-    MeshWriter out{scene};
-    // Fronts of portals that are holes in their room's faces, set while the
-    // room is built so that they share the wall's vertices.
-    std::vector<std::optional<FrontGrid>> fronts(layout.portals.size());
-    // Each room's portals, in file order: one pass over the portals, so that
-    // building n rooms does not look at every portal n times.
+namespace {
+
+// Each room's portals, in file order: one pass over the portals, so that
+// building n rooms does not look at every portal n times.
+std::vector<std::vector<int>> portals_by_room(const layout::Layout& layout) {
     std::vector<std::vector<int>> room_portals(layout.rooms.size());
     for (std::size_t p = 0; p < layout.portals.size(); ++p) {
         const int room = layout.portals[p].room;
         if (room >= 0 && static_cast<std::size_t>(room) < layout.rooms.size())
             room_portals[static_cast<std::size_t>(room)].push_back(static_cast<int>(p));
     }
+    return room_portals;
+}
 
+// One prop's triangles, appended as its own batches; the object bounds them.
+void append_prop(Scene& scene, MeshWriter& out, const layout::Prop& prop, CellObjects& objects) {
+    const auto first_vertex = static_cast<std::uint32_t>(scene.vertices.size());
+    std::vector<DrawBatch> own;
+    std::visit(
+        [&](const auto& p) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(p)>, layout::BoxProp>) {
+                const std::uint32_t box_first = out.index_count();
+                append_box_prop(out, p);
+                add_batch(own, DrawBatch{out.range_since(box_first)});
+            } else {
+                append_gltf_prop(out, p, own);
+            }
+        },
+        prop);
+    CellObject object;
+    bound_object(scene, first_vertex, out.origin, object);
+    object.first_batch = static_cast<std::uint32_t>(objects.batches.size());
+    object.batch_count = static_cast<std::uint32_t>(own.size());
+    objects.objects.push_back(object);
+    objects.batches.insert(objects.batches.end(), own.begin(), own.end());
+}
+
+// Room r's cell: its faces (holes for its portals, the fronts of portals in
+// them kept in `fronts`), then its props, one contiguous index range.
+void append_cell(Scene& scene, MeshWriter& out, const layout::Layout& layout, std::size_t r,
+                 const std::vector<int>& room_portals, std::vector<std::optional<FrontGrid>>& fronts) {
+    const layout::Room& room = layout.rooms[r];
+    scene.origins.push_back(origin_of_cell(room));
+    out.origin = scene.origins.back().origin;
+    const std::uint32_t first = out.index_count();
+    CellObjects objects;
+    const auto faces = append_room_faces(out, layout, static_cast<int>(r), room_portals, fronts);
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+        DrawBatch b;
+        b.range = faces[f];
+        if (room.face_texture[f]) b.texture = out.texture(room.face_texture[f], assets::Sampler{});
+        add_batch(objects.surfaces, b);
+    }
+    for (const layout::Prop& prop : room.props) append_prop(scene, out, prop, objects);
+    scene.cells.push_back(out.range_since(first));
+    scene.batches.push_back(finish_cell(scene, objects));
+    objects.occluders = occluders_of(room);
+    scene.objects.push_back(std::move(objects));
+}
+
+}  // namespace
+
+Scene build_scene(const layout::Layout& layout) {
+    Scene scene;
+    MeshWriter out{scene};
+    // Fronts of portals that are holes in their room's faces, set while the
+    // room is built so that they share the wall's vertices.
+    std::vector<std::optional<FrontGrid>> fronts(layout.portals.size());
+    const std::vector<std::vector<int>> room_portals = portals_by_room(layout);
     scene.cells.reserve(layout.rooms.size());
     scene.batches.reserve(layout.rooms.size());
-    scene.frames.reserve(layout.rooms.size());
-    for (std::size_t r = 0; r < layout.rooms.size(); ++r) {
-        scene.frames.push_back(cell_frame(layout.rooms[r]));
-        out.origin = scene.frames.back().origin;
-        const layout::Room& room = layout.rooms[r];
-        const std::uint32_t first = out.index_count();
-        CellObjects objects;
-        const auto faces = append_room_faces(out, layout, static_cast<int>(r), room_portals[r], fronts);
-        for (std::size_t f = 0; f < faces.size(); ++f) {
-            DrawBatch b;
-            b.range = faces[f];
-            if (room.face_texture[f]) b.texture = out.texture(room.face_texture[f], assets::Sampler{});
-            add_batch(objects.surfaces, b);
-        }
-        for (const layout::Prop& prop : room.props) {
-            const auto first_vertex = static_cast<std::uint32_t>(scene.vertices.size());
-            std::vector<DrawBatch> own;
-            std::visit(
-                [&](const auto& p) {
-                    if constexpr (std::is_same_v<std::decay_t<decltype(p)>, layout::BoxProp>) {
-                        const std::uint32_t box_first = out.index_count();
-                        append_box_prop(out, p);
-                        add_batch(own, DrawBatch{out.range_since(box_first)});
-                    } else {
-                        append_gltf_prop(out, p, own);
-                    }
-                },
-                prop);
-            CellObject object;
-            bound_object(scene, first_vertex, out.origin, object);
-            object.first_batch = static_cast<std::uint32_t>(objects.batches.size());
-            object.batch_count = static_cast<std::uint32_t>(own.size());
-            objects.objects.push_back(object);
-            objects.batches.insert(objects.batches.end(), own.begin(), own.end());
-        }
-        scene.cells.push_back(out.range_since(first));
-        scene.batches.push_back(finish_cell(scene, objects));
-        objects.occluders = occluders_of(room);
-        scene.objects.push_back(std::move(objects));
-    }
+    scene.origins.reserve(layout.rooms.size());
+    for (std::size_t r = 0; r < layout.rooms.size(); ++r) append_cell(scene, out, layout, r, room_portals[r], fronts);
 
     scene.portals.reserve(layout.portals.size());
     scene.portal_info.reserve(layout.portals.size());
     for (std::size_t p = 0; p < layout.portals.size(); ++p) {
-        const math::PortalRect& rect = layout.portals[p].rect;
-        out.origin = scene.frames[static_cast<std::size_t>(layout.portals[p].room)].origin;
-        const FrontGrid front = fronts[p] ? *fronts[p] : corner_front(out, rect);
-        const bool box = layout.portals[p].kind == layout::PortalKind::Door;
-        scene.portals.push_back(box ? append_portal_box(out, rect, front) : append_portal_front(out, rect, front));
         const layout::Portal& lp = layout.portals[p];
+        out.origin = scene.origins[static_cast<std::size_t>(lp.room)].origin;
+        const FrontGrid front = fronts[p] ? *fronts[p] : corner_front(out, lp.rect);
+        const bool box = lp.kind == layout::PortalKind::Door;
+        scene.portals.push_back(box ? append_portal_box(out, lp.rect, front) : append_portal_front(out, lp.rect, front));
         scene.portal_info.push_back({lp.rect, lp.room, lp.target, lp.kind, lp.tint, lp.reflectance});
     }
     scene.links = links::link_portals(layout);

@@ -29,7 +29,7 @@ struct FaceUv {
 
 struct MeshWriter {
     Scene& scene;
-    glm::dvec3 origin{0.0};  // the current cell's CellFrame::origin
+    glm::dvec3 origin{0.0};  // the current cell's CellOrigin::origin
     std::optional<FaceUv> face_uv{};  // set while a textured room face is written
 
     // A layout coordinate on `axis`, or a layout point, as a vertex coordinate.

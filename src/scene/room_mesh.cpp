@@ -20,16 +20,16 @@ namespace {
 // corners counts as axis-aligned (below float resolution at room scale).
 constexpr double kAlignTolerance = 1e-6;
 
-struct FaceFrame {
+struct FaceAxes {
     int axis = 0;          // the normal's axis
     double plane = 0.0;    // the face's coordinate on that axis
     bool positive = true;  // the normal into the room is +e_axis
     PlaneAxes in;          // e_a × e_b = normal into the room
 };
 
-FaceFrame face_frame(const layout::Room& room, int face) {
+FaceAxes face_axes(const layout::Room& room, int face) {
     static constexpr std::array<int, layout::kFaceCount> kAxis = {1, 1, 0, 0, 2, 2};
-    FaceFrame f;
+    FaceAxes f;
     f.axis = kAxis[static_cast<std::size_t>(face)];
     f.positive = face % 2 == 0;  // floor, -x and -z lie at the minimum and face +axis
     f.plane = f.positive ? room.min[f.axis] : room.max[f.axis];
@@ -37,7 +37,7 @@ FaceFrame face_frame(const layout::Room& room, int face) {
     return f;
 }
 
-glm::dvec3 inward_normal(const FaceFrame& f) {
+glm::dvec3 inward_normal(const FaceAxes& f) {
     glm::dvec3 n(0.0);
     n[f.axis] = f.positive ? 1.0 : -1.0;
     return n;
@@ -51,7 +51,7 @@ struct FaceHole {
     bool aligned = true;
 };
 
-FaceHole make_hole(const layout::Room& room, const FaceFrame& f, int portal,
+FaceHole make_hole(const layout::Room& room, const FaceAxes& f, int portal,
                    const math::PortalRect& rect) {
     math::dvec3 c[8];
     math::box_corners(rect, c);
@@ -86,7 +86,7 @@ using Lines = std::array<std::vector<float>, 3>;
 // A face's grid: its lines along the face's axes a and b, in the mesh's
 // local coordinates, and their crossings.
 struct FaceGrid {
-    const FaceFrame& f;
+    const FaceAxes& f;
     const std::vector<float>& as;
     const std::vector<float>& bs;
     float plane = 0.0f;
@@ -125,7 +125,7 @@ FrontGrid hole_front(const FaceGrid& grid, const FaceHole& h, std::size_t i0, st
 void append_grid_face(MeshWriter& out, const layout::Room& room, int face, const Lines& lines,
                       const std::vector<FaceHole>& holes,
                       std::vector<std::optional<FrontGrid>>& fronts) {
-    const FaceFrame f = face_frame(room, face);
+    const FaceAxes f = face_axes(room, face);
     const FaceGrid grid{f, lines[static_cast<std::size_t>(f.in.a)], lines[static_cast<std::size_t>(f.in.b)],
                         out.local(f.plane, f.axis)};
     const std::vector<float>& as = grid.as;
@@ -170,7 +170,7 @@ void append_face(MeshWriter& out, const layout::Room& room, int face, const Line
         append_grid_face(out, room, face, lines, holes, fronts);
         return;
     }
-    const FaceFrame f = face_frame(room, face);
+    const FaceAxes f = face_axes(room, face);
     SlabFace s;
     s.axis = f.axis;
     s.plane = f.plane;
@@ -202,7 +202,7 @@ std::array<IndexRange, layout::kFaceCount> append_room_faces(MeshWriter& out, co
         if (portal.room != room_index || portal.hole_face < 0) continue;
         const int fi = portal.hole_face;
         assert(fi < layout::kFaceCount);
-        const FaceHole h = make_hole(room, face_frame(room, fi), p, portal.rect);
+        const FaceHole h = make_hole(room, face_axes(room, fi), p, portal.rect);
         slabs[static_cast<std::size_t>(fi)] = slabs[static_cast<std::size_t>(fi)] || !h.aligned;
         holes[static_cast<std::size_t>(fi)].push_back(h);
     }
@@ -215,7 +215,7 @@ std::array<IndexRange, layout::kFaceCount> append_room_faces(MeshWriter& out, co
     }
     for (int face = 0; face < layout::kFaceCount; ++face) {
         if (slabs[static_cast<std::size_t>(face)]) continue;
-        const PlaneAxes in = face_frame(room, face).in;
+        const PlaneAxes in = face_axes(room, face).in;
         for (const FaceHole& h : holes[static_cast<std::size_t>(face)]) {
             for (const double v : {h.lo.x, h.hi.x})
                 lines[static_cast<std::size_t>(in.a)].push_back(out.local(v, in.a));

@@ -3,7 +3,7 @@
 //
 // Positions are in the layout's own coordinates (a room seen through a portal
 // is drawn with its own geometry from a virtual camera, never moved), but
-// measured from an origin of the room's own (CellFrame): 32-bit floats a
+// measured from an origin of the room's own (CellOrigin): 32-bit floats a
 // kilometre from the layout's origin are 61 µm apart, too coarse for an eye
 // 0.1 mm from a wall; relative to the room they are as fine as the room's size
 // allows. The renderer folds the origin into its double-precision matrices. All
@@ -56,7 +56,7 @@ struct DrawBatch {
 };
 
 // Where a room's vertices, and its portals' boxes', are measured from.
-struct CellFrame {
+struct CellOrigin {
     glm::dvec3 origin{0.0};          // vertex position = layout coordinates - origin
     glm::vec3 checker_offset{0.0};   // origin modulo twice the room's checker side
 };
@@ -67,7 +67,7 @@ struct CellFrame {
 // 32 m plus half the room's size from its cell's origin (float spacing 3.8 µm
 // at 32 m), wherever the room is.
 inline constexpr double kCellOriginGrid = 64.0;
-CellFrame cell_frame(const layout::Room& room);
+CellOrigin origin_of_cell(const layout::Room& room);
 
 struct PortalMesh {
     IndexRange front;  // the rectangle in the plane, facing +normal
@@ -123,7 +123,7 @@ struct Scene {
     std::vector<std::vector<DrawBatch>> batches;  // per room: cells[room] split by material state
     std::vector<CellObjects> objects;             // per room: the same, split for culling
     std::vector<SceneTexture> textures;           // each image and sampler once
-    std::vector<CellFrame> frames;     // per room: the origin of its vertices and its portals'
+    std::vector<CellOrigin> origins;    // per room: the origin of its vertices and its portals'
     std::vector<PortalMesh> portals;   // per portal, relative to its room's frame
     std::vector<PortalInfo> portal_info;  // per portal
     links::PortalLinks links;                 // M_AB per portal and the portals of each room, linked once

@@ -184,7 +184,7 @@ bool window_step(const Scene& scene, const ScenePortal& p, const dvec3& point, c
         return true;
     }
     // The through branch is cut: the main path ends here, as at the limit.
-    path.end_main(kIdDepthLimit, ray.room, point, normal);
+    path.end_main(shading::kFillId, ray.room, point, normal);
     path.done += through_factor * shading::kPortalFillColor;
     if (!back_on) return false;
     ray = back;
@@ -222,7 +222,7 @@ dvec3 follow(const Scene& scene, Ray ray, int max_depth, TraceHit* main) {
                    path.factor * shading::shade(base_color(scene, now.room, n, point), n.normal, point, n.checker);
         }
         if (now.portals_passed >= max_depth) {  // step 3, for every kind
-            path.end_main(kIdDepthLimit, now.room, point, n.normal);
+            path.end_main(shading::kFillId, now.room, point, n.normal);
             return path.done + path.factor * shading::kPortalFillColor;
         }
         const ScenePortal& p = scene.portals[n.portal];

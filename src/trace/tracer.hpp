@@ -13,13 +13,13 @@
 #include "image/image.hpp"
 #include "math/pose.hpp"
 #include "math/view.hpp"
+#include "shading/shading.hpp"
 #include "trace/trace_scene.hpp"
 
 namespace impossible::trace {
 
-// Cell ids (layout-format.md, "Cell-id maps").
+// Cell ids (layout-format.md, "Cell-id maps"); the fill's is shading::kFillId.
 inline constexpr std::uint8_t kIdNothing = 0;
-inline constexpr std::uint8_t kIdDepthLimit = 255;
 
 // What one ray shows. `color` is the whole pixel's, with every window's
 // blend of its branches in it. The other fields describe the main path, the
@@ -28,7 +28,7 @@ inline constexpr std::uint8_t kIdDepthLimit = 255;
 // recursion limit, or at a window whose through branch is cut by the weight
 // rule (scene/shading.hpp, kMinBranchWeight: id 255, as at the limit).
 struct TraceHit {
-    int id = kIdNothing;     // 1 + room index, kIdNothing, or kIdDepthLimit
+    int id = kIdNothing;     // 1 + room index, kIdNothing, or shading::kFillId
     int room = -1;           // the room the path ended in (-1 when nothing was hit)
     dvec3 color{0.0};        // linear colour, 0..1
     int portals_passed = 0;  // portals (doors, mirrors, windows) the path went through

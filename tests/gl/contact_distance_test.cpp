@@ -20,7 +20,7 @@ namespace {
 // The contact layout at the origin, and moved 2 km away (contact_far.json),
 // where 32-bit float coordinates are 122 µm apart: there an eye 0.1 mm from a
 // wall is exact only because each cell's vertices are relative to an origin
-// of its own (scene::CellFrame).
+// of its own (scene::CellOrigin).
 struct Placement {
     const char* file;
     math::dvec3 offset;

@@ -135,7 +135,7 @@ TEST(TracerMirror, TheTintMultipliesTheReflection) {
 TEST(TracerMirror, AtTheDepthLimitAMirrorShowsTheFill) {
     const Scene scene = prepare_scene(mirror_room({0.5, 0.8, 1.0})).value();
     const TraceHit limit = trace_ray(scene, {0.2, 1.4, 1}, {0.05, 0.05, -1}, 0, 0);
-    EXPECT_EQ(limit.id, kIdDepthLimit);
+    EXPECT_EQ(limit.id, shading::kFillId);
     EXPECT_EQ(limit.room, 0);
     EXPECT_EQ(limit.portals_passed, 0);
     EXPECT_EQ(limit.color, kFill);  // the fill is not tinted: nothing came back from the mirror
@@ -163,7 +163,7 @@ TEST(TracerMirror, FacingMirrorsMakeAnEndlessRow) {
     dvec3 tint_product(1.0);
     for (int depth = 0; depth <= 12; ++depth) {
         const TraceHit hit = trace_ray(scene, {0, 1.5, 0}, {0, 0, -1}, 0, depth);
-        EXPECT_EQ(hit.id, kIdDepthLimit) << depth;
+        EXPECT_EQ(hit.id, shading::kFillId) << depth;
         EXPECT_EQ(hit.portals_passed, depth);
         expect_point(hit.origin, {0, 1.5, (depth % 2 ? -4.0 : 4.0) * depth}, 1e-9);
         expect_point(hit.point, {0, 1.5, depth % 2 ? 2.0 : -2.0}, 1e-9);
@@ -176,7 +176,7 @@ TEST(TracerMirror, FacingMirrorsMakeAnEndlessRow) {
     // mirrors' edge: the +z wall at (1.98, 1.5, 2).
     for (int depth = 0; depth < 5; ++depth) {
         const TraceHit hit = trace_ray(scene, {0, 1.5, 0}, {0.09, 0, -1}, 0, depth);
-        EXPECT_EQ(hit.id, kIdDepthLimit) << depth;
+        EXPECT_EQ(hit.id, shading::kFillId) << depth;
         EXPECT_EQ(hit.portals_passed, depth);
     }
     for (int depth : {5, 6, 64}) {
@@ -269,7 +269,7 @@ TEST(TracerMirror, AMirrorSeenThroughADoor) {
     expect_point(hit.color, tint_b * wall);
 
     const TraceHit limit = trace_ray(scene, {1, 1.5, 0}, {0.08, 0, 1}, 0, 1);
-    EXPECT_EQ(limit.id, kIdDepthLimit);
+    EXPECT_EQ(limit.id, shading::kFillId);
     EXPECT_EQ(limit.room, 1);
     expect_point(limit.point, {12.48, 1.5, 2});
 }
@@ -301,7 +301,7 @@ TEST(TracerMirror, ADoorSeenInAMirror) {
 
     // Depth 2: the door is passed, mB is the limit (the fill, tinted by mA).
     const TraceHit limit = trace_ray(scene, {0.2, 1.5, 0}, {0.1, 0, -1}, 0, 2);
-    EXPECT_EQ(limit.id, kIdDepthLimit);
+    EXPECT_EQ(limit.id, shading::kFillId);
     EXPECT_EQ(limit.portals_passed, 2);
     expect_point(limit.point, {12.2, 1.5, 2});
     expect_point(limit.color, tint_a * kFill);

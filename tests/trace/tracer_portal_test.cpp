@@ -279,7 +279,7 @@ TEST(TracerPortal, RecursionStopsWithTheFillExactlyAtMaxDepth) {
     const Scene scene = prepare_scene(facing_pair()).value();
     for (int depth : {0, 1, 2, 5, 8}) {
         const TraceHit hit = trace_ray(scene, {0, 1.5, 0}, {0, 0, -1}, 0, depth);
-        EXPECT_EQ(hit.id, kIdDepthLimit) << depth;
+        EXPECT_EQ(hit.id, shading::kFillId) << depth;
         EXPECT_EQ(hit.portals_passed, depth);
         EXPECT_EQ(hit.color, ::impossible::shading::kPortalFillColor);
         expect_point(hit.origin, {0, 1.5, 4.0 * depth});
@@ -288,7 +288,7 @@ TEST(TracerPortal, RecursionStopsWithTheFillExactlyAtMaxDepth) {
     // Slanted by 0.1: the first crossing is at x = 0.2 (inside), the next
     // would be at x = 0.6 (outside the 1 m wide portal), so after one pass
     // the ray meets the -z wall at x = 0.7.
-    EXPECT_EQ(trace_ray(scene, {0, 1.5, 0}, {0.1, 0, -1}, 0, 0).id, kIdDepthLimit);
+    EXPECT_EQ(trace_ray(scene, {0, 1.5, 0}, {0.1, 0, -1}, 0, 0).id, shading::kFillId);
     for (int depth : {1, 2, 8}) {
         const TraceHit hit = trace_ray(scene, {0, 1.5, 0}, {0.1, 0, -1}, 0, depth);
         EXPECT_EQ(hit.id, 1) << depth;

@@ -113,7 +113,7 @@ TEST(TracerWindow, BothBranchesAreClippedByThePlanes) {
 TEST(TracerWindow, AtTheDepthLimitAWindowShowsTheFill) {
     const Scene scene = prepare_scene(window_pair({0.9, 0.7, 0.5}, 0.25)).value();
     const TraceHit hit = trace_ray(scene, kEye, kDir, 0, 0);
-    EXPECT_EQ(hit.id, kIdDepthLimit);
+    EXPECT_EQ(hit.id, shading::kFillId);
     EXPECT_EQ(hit.room, 0);
     EXPECT_EQ(hit.portals_passed, 0);
     EXPECT_EQ(hit.color, kFill);
@@ -128,7 +128,7 @@ TEST(TracerWindow, AThroughBranchCutByWeightGivesTheIdOfTheLimit) {
     const double r = 0.25;
     const layout::Layout l = window_pair({0, 0, 0}, r);
     const TraceHit hit = trace_ray(prepare_scene(l).value(), kEye, kDir, 0, 8);
-    EXPECT_EQ(hit.id, kIdDepthLimit);
+    EXPECT_EQ(hit.id, shading::kFillId);
     EXPECT_EQ(hit.room, 0);
     EXPECT_EQ(hit.portals_passed, 0);
     expect_point(hit.point, {0.4, 1.5, -2});
@@ -137,7 +137,7 @@ TEST(TracerWindow, AThroughBranchCutByWeightGivesTheIdOfTheLimit) {
     // Reflectance 1: the same, with the whole reflection.
     const layout::Layout mirror_like = window_pair({1, 1, 1}, 1.0);
     const TraceHit all_back = trace_ray(prepare_scene(mirror_like).value(), kEye, kDir, 0, 8);
-    EXPECT_EQ(all_back.id, kIdDepthLimit);
+    EXPECT_EQ(all_back.id, shading::kFillId);
     expect_point(all_back.color, reflected_colour(mirror_like));
 }
 
@@ -219,7 +219,7 @@ TEST(TracerWindow, FacingWindowsBranchUntilTheWeightRuleStops) {
         const dvec3 per_level = (1 - r) * tint + r;
         const dvec3 want{kFill.x * std::pow(per_level.x, k), kFill.y * std::pow(per_level.y, k),
                          kFill.z * std::pow(per_level.z, k)};
-        EXPECT_EQ(hit.id, kIdDepthLimit) << depth;
+        EXPECT_EQ(hit.id, shading::kFillId) << depth;
         EXPECT_EQ(hit.portals_passed, std::min(depth, 8)) << depth;
         expect_point(hit.color, want);
     }
@@ -241,7 +241,7 @@ TEST(TracerWindow, FacingWindowsAtDepth64FinishQuickly) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("  facing windows, depth 64, 160x90 per eye: %.3f s\n", seconds);
     EXPECT_LT(seconds, 20.0);
-    EXPECT_GT(test::count_id(image, kIdDepthLimit), 0);
+    EXPECT_GT(test::count_id(image, shading::kFillId), 0);
     EXPECT_GT(test::count_id(image, 1), 0);
     EXPECT_EQ(test::count_id(image, 0), 0);
 }
@@ -273,7 +273,7 @@ TEST(TracerWindow, AWindowSeenThroughADoor) {
 
     // The window is the second portal: at depth 1 it shows the fill.
     const TraceHit limit = trace_ray(scene, eye, dir, 2, 1);
-    EXPECT_EQ(limit.id, kIdDepthLimit);
+    EXPECT_EQ(limit.id, shading::kFillId);
     EXPECT_EQ(limit.room, 0);
     EXPECT_EQ(limit.portals_passed, 1);
     expect_point(limit.point, {0.35, 1.5, -2});

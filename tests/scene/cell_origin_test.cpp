@@ -1,4 +1,4 @@
-// Cell frames: each room's vertices are relative to an origin of its own, so
+// Cell origins: each room's vertices are relative to an origin of its own, so
 // that float vertices stay fine far from the layout's origin.
 #include <gtest/gtest.h>
 
@@ -11,22 +11,22 @@
 namespace impossible::scene::test {
 namespace {
 
-TEST(CellFrame, RoomsNearTheOriginKeepTheLayoutsCoordinates) {
+TEST(CellOrigin, RoomsNearTheOriginKeepTheLayoutsCoordinates) {
     const layout::Layout l = one_room_layout();
     const Scene s = build_scene(l);
-    ASSERT_EQ(s.frames.size(), 1u);
-    EXPECT_EQ(s.frames[0].origin, glm::dvec3(0.0));
-    EXPECT_EQ(s.frames[0].checker_offset, glm::vec3(0.0f));
+    ASSERT_EQ(s.origins.size(), 1u);
+    EXPECT_EQ(s.origins[0].origin, glm::dvec3(0.0));
+    EXPECT_EQ(s.origins[0].checker_offset, glm::vec3(0.0f));
     // Centre (-30, 0, 31): within 32 m on every axis.
-    EXPECT_EQ(cell_frame(make_room("r", {-40, -3, 21}, {-20, 3, 41})).origin, glm::dvec3(0.0));
+    EXPECT_EQ(origin_of_cell(make_room("r", {-40, -3, 21}, {-20, 3, 41})).origin, glm::dvec3(0.0));
     // Centre (-50, 0, 33): the nearest multiples of 64 m.
-    EXPECT_EQ(cell_frame(make_room("r", {-60, -3, 23}, {-40, 3, 43})).origin, glm::dvec3(-64, 0, 64));
+    EXPECT_EQ(origin_of_cell(make_room("r", {-60, -3, 23}, {-40, 3, 43})).origin, glm::dvec3(-64, 0, 64));
 }
 
 // Far from the origin the origin is the room's centre on a 64 m grid, and a
 // vertex plus its cell's origin is the layout point to within the float
 // spacing of the local coordinate (not of the far-away one).
-TEST(CellFrame, FarRoomsAreExactRelativeToTheirOrigin) {
+TEST(CellOrigin, FarRoomsAreExactRelativeToTheirOrigin) {
     layout::Layout l;
     l.source = "<test>";
     const glm::dvec3 lo{1598.3, 0.0, -1302.7}, hi{1602.3, 3.0, -1298.7};
@@ -35,7 +35,7 @@ TEST(CellFrame, FarRoomsAreExactRelativeToTheirOrigin) {
     impossible::test::add_pair(l, make_portal("a", 0, {1599.3, 1.1, -1300.2}, {0, 0, 1}, 0.9, 2.2),
              make_portal("b", 0, {1601.3, 1.1, -1299.5}, {0, 0, 1}, 0.9, 2.2));
     const Scene s = build_scene(l);
-    const glm::dvec3 origin = s.frames[0].origin;
+    const glm::dvec3 origin = s.origins[0].origin;
     EXPECT_EQ(origin, glm::dvec3(1600, 0, -1280));
     // Every coordinate the layout gives on each axis: room, prop, the doors'
     // edges and the back of their 0.25 m boxes.
@@ -60,11 +60,11 @@ TEST(CellFrame, FarRoomsAreExactRelativeToTheirOrigin) {
 
 // The shader evaluates the checker at vertex + checker_offset; its parity
 // there equals the parity at the layout point.
-TEST(CellFrame, TheCheckerOffsetKeepsThePattern) {
+TEST(CellOrigin, TheCheckerOffsetKeepsThePattern) {
     layout::Room r = make_room("far", {1598.3, 0.0, -1302.7}, {1602.3, 3.0, -1298.7});
     for (const double side : {0.25, 0.3, 0.7, 1.0}) {
         r.checker = side;
-        const CellFrame f = cell_frame(r);
+        const CellOrigin f = origin_of_cell(r);
         for (int k = 0; k < 50; ++k) {
             const glm::dvec3 local{0.037 * k - 1.3, 0.0, 0.051 * k - 2.1};
             const glm::dvec3 world = f.origin + local;
