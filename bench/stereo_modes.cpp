@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
         const layout::Layout l = cli::load_layout_or_default(path);
         Result<gl::Context> context = gl::create_context(gl::Backend::Egl);
         if (!context) throw std::runtime_error(context.error());
-        Result<render::Renderer> r = render::Renderer::create(context->state(), l, scene::build_scene(l));
+        Result<render::Renderer> r = render::Renderer::create(context->state(), scene::build_scene(l));
         if (!r) throw std::runtime_error(r.error());
 
         const render::StereoMode modes[] = {render::StereoMode::ClipShift, render::StereoMode::ViewportIndex,

@@ -40,9 +40,9 @@ mkdir -p "$img"
   "$build/tests/gl_tests" --gtest_filter='HardCases.TenKilometres*' 2>/dev/null |
     sed -n 's/^  resolvable depth separation at 1230 m, \([^ ].*[^ ]\)  *\([0-9][0-9.e+-]*\) m$/- \1: \2 m/p'
   echo
-  echo "Walker drift (tests/scene/walk_precision_test.cpp):"
+  echo "Walker drift (tests/walk/walk_precision_test.cpp):"
   echo
-  "$build/tests/unit_scene" --gtest_filter='WalkerPrecision.*' 2>/dev/null |
+  "$build/tests/unit_walk" --gtest_filter='WalkerPrecision.*' 2>/dev/null |
     sed -n 's/^\[ drift    \] /- /p'
 } > "$out"
 

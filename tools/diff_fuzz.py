@@ -32,7 +32,7 @@ anywhere looking at the glass; 0.1 mm to 5 cm in front of it (one eye often
 behind its plane); straight into it, near or far (facing mirrors or
 windows); grazing it 0.1 mm to 0.5 m off its plane; millimetres from a wall;
 random looks; depth 1 to 64. A window branch below 1/256 of the light is cut
-by both programs alike (scene/shading.hpp, kMinBranchWeight). A failure
+by both programs alike (shading/shading.hpp, kMinBranchWeight). A failure
 says so when its render reached the portal-pass budget (docs/bounded-work.md)
 or an eye lies inside the rasteriser's 10 µm near plane of a face of its
 room (docs/accuracy.md, "Mirrors and windows", has a long run's failures).

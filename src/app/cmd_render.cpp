@@ -53,7 +53,7 @@ int run_render_command(const Args& args, std::ostream& out, std::ostream& err) {
     if (!fallback_note.empty()) err << "note: " << fallback_note << "\n";
 
     render::Renderer renderer =
-        value_or_throw(render::Renderer::create(context.state(), layout, scene::build_scene(layout)));
+        value_or_throw(render::Renderer::create(context.state(), scene::build_scene(layout)));
     const render::RenderedFrame result = value_or_throw(renderer.render(frame));
 
     const image::Image& image = result.image;

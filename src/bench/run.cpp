@@ -214,7 +214,7 @@ BenchResult run_bench(const BenchPlan& plan, const std::vector<BenchPose>& poses
     Measurer m{plan, poses, options, {}, {}};
     for (const layout::Layout& l : plan.layouts) {
         m.renderers.push_back(std::make_unique<render::Renderer>(
-            value_or_throw(render::Renderer::create(state, l, scene::build_scene(l)))));
+            value_or_throw(render::Renderer::create(state, scene::build_scene(l)))));
     }
     for (const BenchConfig& c : plan.configs) m.results.push_back({c, {}, {}, {}, 0, 0, 0, 0, 0, 0, 0, {}, false, 0, 0, 0});
     m.probe();

@@ -1,7 +1,7 @@
 #include "cli/layout_source.hpp"
 
 #include "cli/errors.hpp"
-#include "embedded.hpp"
+#include "base/embedded.hpp"
 
 namespace impossible::cli {
 

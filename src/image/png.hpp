@@ -15,7 +15,7 @@ Result<std::string> encode_png(int width, int height, int channels, const std::v
 
 // Encodes and writes one PNG through base/output_file.hpp: whole or not at
 // all, never replacing a link or a device. Commands with several outputs
-// encode with encode_png and write them together (app/output_files.hpp).
+// encode with encode_png and write them together (cli/output_files.hpp).
 Result<void> write_png(const std::string& path, int width, int height, int channels,
                       const std::vector<std::uint8_t>& pixels);
 

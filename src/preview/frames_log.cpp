@@ -3,6 +3,8 @@
 #include <cstdint>
 #include <cstdio>
 
+#include <nlohmann/json.hpp>
+
 #include "cli/errors.hpp"
 #include "base/format.hpp"
 #include "image/png.hpp"

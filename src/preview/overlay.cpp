@@ -36,7 +36,7 @@ Result<OverlayProgram> build_overlay_program() {
     Result<gl::Program> built = gl::build_program({render::embedded_shader(GL_VERTEX_SHADER, "shaders/preview_overlay.vert.glsl"),
                                                    render::embedded_shader(GL_FRAGMENT_SHADER, "shaders/preview_overlay.frag.glsl")},
                                                   "");
-    if (!built) return Error{built.error()};
+    if (!built) return built;
     out.program = std::move(*built);
     out.vao = gl::create_vertex_array();
     const GLuint vao = out.vao.get();

@@ -28,7 +28,7 @@ Result<Presenter> build_presenter() {
     Result<gl::Program> built = gl::build_program({render::embedded_shader(GL_VERTEX_SHADER, "shaders/preview_present.vert.glsl"),
                                                    render::embedded_shader(GL_FRAGMENT_SHADER, "shaders/preview_present.frag.glsl")},
                                                   "");
-    if (!built) return Error{built.error()};
+    if (!built) return built;
     p.program = std::move(*built);
     p.u_eye = glGetUniformLocation(p.program.get(), "u_eye");
     glProgramUniform1i(p.program.get(), glGetUniformLocation(p.program.get(), "u_view"), 0);
@@ -39,6 +39,9 @@ Result<Presenter> build_presenter() {
 void present(Presenter& p, gl::StateCache& state, const render::Target& target, const WindowLayout& layout, PreviewView view,
              int fb_width, int fb_height) {
     if (p.width != target.width || p.height != target.height || !p.texture) {
+        // The old texture and framebuffer go: the cache forgets them first.
+        if (p.texture) state.deleting_texture(p.texture.get());
+        if (p.framebuffer) state.deleting_framebuffer(p.framebuffer.get());
         p.texture = gl::create_texture(GL_TEXTURE_2D);
         glTextureStorage2D(p.texture.get(), 1, GL_RGBA8, target.width, target.height);
         glTextureParameteri(p.texture.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
@@ -61,7 +64,7 @@ void present(Presenter& p, gl::StateCache& state, const render::Target& target, 
     const GLfloat grey[4] = {0.12f, 0.12f, 0.13f, 1.0f};
     glClearNamedFramebufferfv(0, GL_COLOR, 0, grey);
     state.program(p.program.get());
-    glBindTextureUnit(0, p.texture.get());
+    state.texture(0, p.texture.get());
     state.vertex_array(p.empty_vao.get());
     const int draws = view == PreviewView::Anaglyph ? 1 : 2;
     for (int e = 0; e < draws; ++e) {
@@ -70,15 +73,13 @@ void present(Presenter& p, gl::StateCache& state, const render::Target& target, 
         glProgramUniform1i(p.program.get(), p.u_eye, view == PreviewView::Anaglyph ? -1 : e);
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
-    state.vertex_array(0);
-    glBindTextureUnit(0, 0);
-    state.program(0);
+    // The overlay draws over the whole window next.
     state.viewport({0, 0, fb_width, fb_height});
 }
 
-std::vector<std::uint8_t> read_window(int w, int h) {
+std::vector<std::uint8_t> read_window(gl::StateCache& state, int w, int h) {
     std::vector<std::uint8_t> rgb(static_cast<std::size_t>(w) * h * 3), row(static_cast<std::size_t>(w) * 3);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    state.read_framebuffer(0);
     glNamedFramebufferReadBuffer(0, GL_BACK);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, w, h, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());

@@ -47,6 +47,6 @@ void present(Presenter& presenter, gl::StateCache& state, const render::Target& 
              int fb_width, int fb_height);
 
 // The default framebuffer's back buffer as RGB rows from the top.
-std::vector<std::uint8_t> read_window(int fb_width, int fb_height);
+std::vector<std::uint8_t> read_window(gl::StateCache& state, int fb_width, int fb_height);
 
 }  // namespace impossible::preview

@@ -93,7 +93,7 @@ double save_rendered_frame(PreviewSession& s, long frame, const render::FrameDes
     if (!s.files.every_frame) return 0.0;
     glFinish();
     const Clock::time_point start = Clock::now();
-    save_frame(s.files, render::read_target(s.shown.renderer->target()), frame_record(s, frame, desc, passed));
+    save_frame(s.files, render::read_target(*s.state, s.shown.renderer->target()), frame_record(s, frame, desc, passed));
     return seconds_since(start);
 }
 
@@ -159,8 +159,8 @@ void draw_window(PreviewSession& s, const WindowLayout& places, const render::Fr
 double save_window_files(PreviewSession& s, long frame, bool screenshot, int fb_w, int fb_h, std::ostream& err) {
     if (s.files.every_frame) glFinish();
     const Clock::time_point start = Clock::now();
-    if (s.files.every_frame) save_window(s.files, frame, fb_w, fb_h, read_window(fb_w, fb_h));
-    if (screenshot) err << "saved " << save_screenshot(s.files, fb_w, fb_h, read_window(fb_w, fb_h)) << "\n";
+    if (s.files.every_frame) save_window(s.files, frame, fb_w, fb_h, read_window(*s.state, fb_w, fb_h));
+    if (screenshot) err << "saved " << save_screenshot(s.files, fb_w, fb_h, read_window(*s.state, fb_w, fb_h)) << "\n";
     return seconds_since(start);
 }
 
@@ -186,6 +186,9 @@ bool run_frame(PreviewSession& s, long frame, std::ostream& err) {
     s.clock.io_seconds = save_rendered_frame(s, frame, desc, passed);
     draw_window(s, places, desc, fb_w, fb_h);
     s.clock.io_seconds += save_window_files(s, frame, keys.screenshot, fb_w, fb_h, err);
+    // As the renderer does: nothing stays bound between frames, so an object
+    // deleted by a reload cannot leave the cache believing its name bound.
+    s.state->release_bindings();
     swap_buffers(*s.window);
     return true;
 }

@@ -13,8 +13,8 @@ using cli::value_or_throw;
 Result<Shown> build_shown(gl::StateCache& state, layout::Layout layout, const std::string& room_id) {
     Shown s;
     s.layout = std::make_unique<layout::Layout>(std::move(layout));
-    Result<render::Renderer> made = render::Renderer::create(state, *s.layout, scene::build_scene(*s.layout));
-    if (!made) return Error{made.error()};
+    Result<render::Renderer> made = render::Renderer::create(state, scene::build_scene(*s.layout));
+    if (!made) return made;
     s.renderer = std::make_unique<render::Renderer>(std::move(*made));
     const int room = layout::find_room(*s.layout, room_id);
     s.walker = room >= 0 ? std::make_unique<walk::Walker>(*s.layout, room) : std::make_unique<walk::Walker>(*s.layout);

@@ -43,7 +43,7 @@ Result<void> build_id_resolve(std::vector<gl::Program>& id_resolve, int samples)
     if (id_resolve.size() <= static_cast<size_t>(samples)) id_resolve.resize(samples + 1);
     if (id_resolve[samples]) return {};
     Result<gl::Program> built = build_id_resolve_program(samples);
-    if (!built) return Error{built.error()};
+    if (!built) return built;
     id_resolve[samples] = std::move(*built);
     return {};
 }
@@ -90,9 +90,9 @@ Result<void> ensure_multisampled(Programs& programs, FrameTargets& targets, cons
     }
     if (!m.colour_out) {
         Result<gl::Framebuffer> colour = framebuffer_around(targets.target.color.get(), "colour");
-        if (!colour) return Error{colour.error()};
+        if (!colour) return colour;
         Result<gl::Framebuffer> ids = framebuffer_around(targets.target.ids.get(), "id");
-        if (!ids) return Error{ids.error()};
+        if (!ids) return ids;
         m.colour_out = std::move(*colour);
         m.ids_out = std::move(*ids);
     }

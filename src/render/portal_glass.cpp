@@ -108,7 +108,7 @@ Result<void> prepare_window_blend(Programs& programs, bool multisample) {
     std::optional<WindowBlendProgram>& slot = programs.window_blend[multisample ? 1 : 0];
     if (slot) return {};
     Result<WindowBlendProgram> built = build_window_blend_program(multisample);
-    if (!built) return Error{built.error()};
+    if (!built) return built;
     slot = std::move(*built);
     return {};
 }

@@ -21,7 +21,7 @@ Result<void> ensure_target(FrameTargets& targets, int width, int height, DepthMo
     Target& t = targets.target;
     if (t.width == width && t.height == height && t.depth == depth && t.framebuffer) return {};
     Result<Target> made = create_target(width, height, depth);
-    if (!made) return Error{made.error()};
+    if (!made) return made;
     t = std::move(*made);
     // The resolve's framebuffers hold the old target's buffers.
     targets.multisampling.colour_out = {};
@@ -36,7 +36,7 @@ Result<void> ensure_program(Programs& programs, StereoMode mode, bool materials)
     if (!built) {
         if (mode == StereoMode::ViewportIndex)
             return Error{"stereo mode 'viewport-index' needs GL_ARB_shader_viewport_layer_array: " + built.error()};
-        return Error{built.error()};
+        return built;
     }
     slot = std::move(*built);
     return {};
@@ -61,7 +61,7 @@ Result<void> prepare_frame(RendererData& r, FrameTargets& targets, const FrameDe
     if (frame.stereo != StereoMode::ClipShift) return Error{"render-to-texture portals need --stereo clip-shift"};
     if (!programs.portal_texture) {
         Result<SceneProgram> built = build_portal_texture_program();
-        if (!built) return Error{built.error()};
+        if (!built) return built;
         programs.portal_texture = std::move(*built);
     }
     return ensure_portal_textures(r, targets, frame);
@@ -174,9 +174,9 @@ Result<Renderer> Renderer::create(gl::StateCache& state, const scene::Scene& sce
     r.gpu = upload_scene(scene);
     r.empty_vao = gl::create_vertex_array();
     Result<ClearDepthProgram> clear = build_clear_depth_program();
-    if (!clear) return Error{clear.error()};
+    if (!clear) return clear;
     r.programs.clear_depth = std::move(*clear);
-    if (Result<void> made = ensure_program(r.programs, StereoMode::ClipShift, false); !made) return Error{made.error()};
+    if (Result<void> made = ensure_program(r.programs, StereoMode::ClipShift, false); !made) return made;
     return Renderer(std::move(parts));
 }
 
@@ -193,7 +193,7 @@ Result<void> Renderer::draw(const FrameDesc& frame, FrameStats* stats_out) {
 
 Result<RenderedFrame> Renderer::render(const FrameDesc& frame) {
     RenderedFrame out;
-    if (Result<void> drawn = draw_frame(*parts_, frame, &out.stats, &out.image); !drawn) return Error{drawn.error()};
+    if (Result<void> drawn = draw_frame(*parts_, frame, &out.stats, &out.image); !drawn) return drawn;
     return out;
 }
 

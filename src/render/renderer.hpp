@@ -14,7 +14,6 @@
 
 #include "base/result.hpp"
 #include "gl/state.hpp"
-#include "layout/layout.hpp"
 #include "render/frame.hpp"
 #include "render/target.hpp"
 #include "scene/scene.hpp"
@@ -34,12 +33,6 @@ public:
     // Uploads the scene and builds the default (clip-shift) program. `state`
     // is the cache of the current context and must outlive the renderer.
     static Result<Renderer> create(gl::StateCache& state, const scene::Scene& scene);
-    // The same; the layout is not read (the scene carries all the renderer
-    // needs). Kept until the callers in app, preview and bench pass the
-    // scene alone.
-    static Result<Renderer> create(gl::StateCache& state, const layout::Layout&, const scene::Scene& scene) {
-        return create(state, scene);
-    }
 
     Renderer(Renderer&&) noexcept;
     Renderer& operator=(Renderer&&) noexcept;

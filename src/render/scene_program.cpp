@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "embedded.hpp"
+#include "base/embedded.hpp"
 #include "gl/shader.hpp"
 #include "render/gpu_scene.hpp"
 #include "shading/shading.hpp"
@@ -42,7 +42,7 @@ Result<SceneProgram> link_scene_program(const SceneVariant& variant, const std::
     const std::vector<gl::ShaderSource> stages = {embedded_shader(GL_VERTEX_SHADER, "shaders/scene.vert.glsl"),
                                                   embedded_shader(GL_FRAGMENT_SHADER, variant.fragment)};
     Result<gl::Program> built = gl::build_program(stages, defines);
-    if (!built) return Error{built.error()};
+    if (!built) return built;
     SceneProgram p;
     p.program = std::move(*built);
     const GLuint name = p.program.get();
@@ -70,7 +70,7 @@ Result<SceneProgram> link_scene_program(const SceneVariant& variant, const std::
         glProgramUniform1i(name, u.required("u_texture"), static_cast<GLint>(kSceneTextureUnit));
         glProgramUniform1f(name, p.alpha_cutoff, -1.0f);
     }
-    if (Result<void> all = u.check(); !all) return Error{all.error()};
+    if (Result<void> all = u.check(); !all) return all;
     return p;
 }
 
@@ -97,7 +97,7 @@ Result<ClearDepthProgram> build_clear_depth_program() {
     const std::vector<gl::ShaderSource> stages = {embedded_shader(GL_VERTEX_SHADER, "shaders/clear_depth.vert.glsl"),
                                                   embedded_shader(GL_FRAGMENT_SHADER, "shaders/clear_depth.frag.glsl")};
     Result<gl::Program> built = gl::build_program(stages, "");
-    if (!built) return Error{built.error()};
+    if (!built) return built;
     ClearDepthProgram out;
     out.program = std::move(*built);
     gl::UniformLocations u(out.program.get(), gl::program_name(stages));
@@ -105,7 +105,7 @@ Result<ClearDepthProgram> build_clear_depth_program() {
     out.color = u.required("u_color");
     out.eye_quads = u.required("u_eye_quads");
     out.rects = u.required("u_rects");
-    if (Result<void> all = u.check(); !all) return Error{all.error()};
+    if (Result<void> all = u.check(); !all) return all;
     return out;
 }
 
@@ -114,7 +114,7 @@ Result<WindowBlendProgram> build_window_blend_program(bool multisample) {
         embedded_shader(GL_VERTEX_SHADER, "shaders/clear_depth.vert.glsl"),
         embedded_shader(GL_FRAGMENT_SHADER, "shaders/window_blend.frag.glsl")};
     Result<gl::Program> built = gl::build_program(stages, multisample ? "#define SAVED_MULTISAMPLE\n" : "");
-    if (!built) return Error{built.error()};
+    if (!built) return built;
     WindowBlendProgram out;
     out.program = std::move(*built);
     const GLuint name = out.program.get();
@@ -123,7 +123,7 @@ Result<WindowBlendProgram> build_window_blend_program(bool multisample) {
     out.scale = u.required("u_scale");
     out.constant = u.required("u_constant");
     glProgramUniform1i(name, u.required("u_saved"), 0);
-    if (Result<void> all = u.check(); !all) return Error{all.error()};
+    if (Result<void> all = u.check(); !all) return all;
     return out;
 }
 
@@ -131,10 +131,10 @@ Result<gl::Program> build_id_resolve_program(int samples) {
     const std::vector<gl::ShaderSource> stages = {embedded_shader(GL_VERTEX_SHADER, "shaders/clear_depth.vert.glsl"),
                                                   embedded_shader(GL_FRAGMENT_SHADER, "shaders/id_resolve.frag.glsl")};
     Result<gl::Program> built = gl::build_program(stages, "#define SAMPLES " + std::to_string(samples) + "\n");
-    if (!built) return Error{built.error()};
+    if (!built) return built;
     gl::UniformLocations u(built->get(), gl::program_name(stages));
     glProgramUniform1i(built->get(), u.required("u_ids"), 0);
-    if (Result<void> all = u.check(); !all) return Error{all.error()};
+    if (Result<void> all = u.check(); !all) return all;
     return built;
 }
 

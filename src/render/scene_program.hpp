@@ -11,7 +11,7 @@
 
 namespace impossible::render {
 
-// A shader stage compiled into the binary (embedded.hpp), named by its path.
+// A shader stage compiled into the binary (base/embedded.hpp), named by its path.
 gl::ShaderSource embedded_shader(GLenum stage, const char* name);
 
 // The scene's vertex shader with a fragment shader. A location is -1 where

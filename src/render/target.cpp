@@ -123,11 +123,4 @@ image::Image read_target(gl::StateCache& state, const Target& t) {
     return read_bound(t);
 }
 
-image::Image read_target(const Target& t) {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, t.framebuffer.get());
-    image::Image image = read_bound(t);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    return image;
-}
-
 }  // namespace impossible::render

@@ -42,10 +42,4 @@ Result<Target> create_multisampled_target(int width, int height, DepthMode depth
 // releases its bindings when it is done, gl/state.hpp).
 image::Image read_target(gl::StateCache& state, const Target& target);
 
-// The same for a caller that does not pass the context's cache (the
-// preview's screenshots, until it does): binds the read framebuffer behind
-// the cache and binds 0 again after, where a cache that its user released
-// expects it.
-image::Image read_target(const Target& target);
-
 }  // namespace impossible::render

@@ -9,6 +9,8 @@
 
 #include "base/format.hpp"
 #include "common/temp_dir.hpp"
+#include <nlohmann/json.hpp>
+
 #include "preview/frames_log.hpp"
 
 namespace impossible::preview {
