@@ -28,9 +28,12 @@ int main(int argc, char** argv) {
     int frames = 30, width = 1280, height = 720;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        if (a == "--frames" && i + 1 < argc) frames = std::max(1, std::atoi(argv[++i]));
-        else if (a == "--size" && i + 1 < argc) std::sscanf(argv[++i], "%dx%d", &width, &height);
-        else path = a;
+        if (a == "--frames" && i + 1 < argc)
+            frames = std::max(1, std::atoi(argv[++i]));
+        else if (a == "--size" && i + 1 < argc)
+            std::sscanf(argv[++i], "%dx%d", &width, &height);
+        else
+            path = a;
     }
     try {
         const layout::Layout l = cli::load_layout_or_default(path);
@@ -68,8 +71,8 @@ int main(int argc, char** argv) {
         }
         std::printf("%s, %dx%d per eye, %d frames per mode, %s\n", l.source.c_str(), width, height, frames,
                     context->renderer.c_str());
-        std::printf("%-15s %10s %10s %10s %12s %10s %10s\n", "mode", "median ms", "p10 ms", "p90 ms",
-                    "submit ms", "draws", "vs clip");
+        std::printf("%-15s %10s %10s %10s %12s %10s %10s\n", "mode", "median ms", "p10 ms", "p90 ms", "submit ms",
+                    "draws", "vs clip");
         const double base = percentile(ms[0], 0.5);
         for (int m = 0; m < 3; ++m)
             std::printf("%-15s %10.3f %10.3f %10.3f %12.4f %10ld %10.3f\n", names[m], percentile(ms[m], 0.5),

@@ -81,7 +81,7 @@ std::array<Arrays, 2> chair_parts() {
             add_box(wood, {{x, 0.0f, z}, {x + leg, seat_height, z + leg}});
         }
     }
-    add_box(wood, {{-half, seat_height, -half}, {half, seat_height + 0.04f, half}});    // seat
+    add_box(wood, {{-half, seat_height, -half}, {half, seat_height + 0.04f, half}});     // seat
     add_box(wood, {{-half, seat_height + 0.04f, -half}, {half, 0.92f, -half + 0.04f}});  // back
     Arrays fabric;
     add_box(fabric, {{-half + 0.02f, seat_height + 0.04f, -half + 0.04f},
@@ -110,17 +110,16 @@ std::pair<std::string, std::string> accessors_and_primitives(const std::array<Ar
         const std::string count = std::to_string(a.positions.size() / 3);
         const int base = 3 * p;
         if (p > 0) accessors += ",";
-        accessors += "{\"bufferView\":" + std::to_string(base) + ",\"componentType\":5126,\"count\":" +
-                     count + ",\"type\":\"VEC3\",\"min\":" + vec3_json(lo) + ",\"max\":" + vec3_json(hi) + "}";
-        accessors += ",{\"bufferView\":" + std::to_string(base + 1) +
-                     ",\"componentType\":5126,\"count\":" + count + ",\"type\":\"VEC3\"}";
+        accessors += "{\"bufferView\":" + std::to_string(base) + ",\"componentType\":5126,\"count\":" + count +
+                     ",\"type\":\"VEC3\",\"min\":" + vec3_json(lo) + ",\"max\":" + vec3_json(hi) + "}";
+        accessors += ",{\"bufferView\":" + std::to_string(base + 1) + ",\"componentType\":5126,\"count\":" + count +
+                     ",\"type\":\"VEC3\"}";
         accessors += ",{\"bufferView\":" + std::to_string(base + 2) +
-                     ",\"componentType\":5123,\"count\":" + std::to_string(a.indices.size()) +
-                     ",\"type\":\"SCALAR\"}";
+                     ",\"componentType\":5123,\"count\":" + std::to_string(a.indices.size()) + ",\"type\":\"SCALAR\"}";
         if (p > 0) mesh_primitives += ",";
         mesh_primitives += "{\"attributes\":{\"POSITION\":" + std::to_string(base) +
-                           ",\"NORMAL\":" + std::to_string(base + 1) + "},\"indices\":" +
-                           std::to_string(base + 2) + ",\"material\":" + std::to_string(p) + "}";
+                           ",\"NORMAL\":" + std::to_string(base + 1) + "},\"indices\":" + std::to_string(base + 2) +
+                           ",\"material\":" + std::to_string(p) + "}";
     }
     return {accessors, mesh_primitives};
 }
@@ -130,8 +129,8 @@ std::string buffer_views_json(const std::vector<BufferView>& views) {
     for (std::size_t i = 0; i < views.size(); ++i) {
         if (i > 0) out += ",";
         out += "{\"buffer\":0,\"byteOffset\":" + std::to_string(views[i].offset) +
-               ",\"byteLength\":" + std::to_string(views[i].length) +
-               ",\"target\":" + std::to_string(views[i].target) + "}";
+               ",\"byteLength\":" + std::to_string(views[i].length) + ",\"target\":" + std::to_string(views[i].target) +
+               "}";
     }
     return out;
 }
@@ -159,15 +158,22 @@ std::vector<unsigned char> make_chair_glb() {
         "{\"asset\":{\"version\":\"2.0\",\"generator\":\"impossible tools/make_glb\"},"
         "\"scene\":0,\"scenes\":[{\"nodes\":[0]}],"
         "\"nodes\":[{\"name\":\"chair\",\"mesh\":0}],"
-        "\"meshes\":[{\"name\":\"chair\",\"primitives\":[" + mesh_primitives + "]}],"
+        "\"meshes\":[{\"name\":\"chair\",\"primitives\":[" +
+        mesh_primitives +
+        "]}],"
         "\"materials\":["
         "{\"name\":\"wood\",\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.55,0.35,0.2,1],"
         "\"metallicFactor\":0,\"roughnessFactor\":0.8}},"
         "{\"name\":\"fabric\",\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.7,0.12,0.1,1],"
         "\"metallicFactor\":0,\"roughnessFactor\":1}}],"
-        "\"accessors\":[" + accessors + "],"
-        "\"bufferViews\":[" + buffer_views_json(views) + "],"
-        "\"buffers\":[{\"byteLength\":" + std::to_string(bin.size()) + "}]}";
+        "\"accessors\":[" +
+        accessors +
+        "],"
+        "\"bufferViews\":[" +
+        buffer_views_json(views) +
+        "],"
+        "\"buffers\":[{\"byteLength\":" +
+        std::to_string(bin.size()) + "}]}";
     while (json.size() % 4 != 0) json += ' ';  // chunks are 4-byte aligned
     return glb_of(json, bin);
 }

@@ -30,8 +30,8 @@ Picture mural();        // 128 × 128 RGB: an upward arrow, a sun at the top rig
                         // the letter F at the left, to see that it is upright and not mirrored
 
 // Model textures.
-Picture crate_side();   // 64 × 64 RGB: framed horizontal boards with a stencilled 7
-Picture plant_leaves(); // 128 × 128 RGBA: a stem with leaves; alpha 255 on the plant, 0 around it
+Picture crate_side();    // 64 × 64 RGB: framed horizontal boards with a stencilled 7
+Picture plant_leaves();  // 128 × 128 RGBA: a stem with leaves; alpha 255 on the plant, 0 around it
 
 // The picture as a PNG file (stb_image_write, default compression).
 std::vector<unsigned char> png_of(const Picture& picture);

@@ -51,8 +51,7 @@ struct Mesh {
 // A rectangle centred on `centre`, facing along right × up, with the whole
 // texture on it: (0, 0), the image's top-left corner, at the top left as seen
 // from the front.
-void add_quad(Mesh& mesh, const Vec3& centre, const Vec3& right, const Vec3& up, float half_width,
-              float half_height) {
+void add_quad(Mesh& mesh, const Vec3& centre, const Vec3& right, const Vec3& up, float half_width, float half_height) {
     const Vec3 normal = cross(right, up);
     std::array<std::uint16_t, 4> corner{};
     const std::array<std::array<float, 2>, 4> at = {{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}};
@@ -109,9 +108,9 @@ std::string floats(const float* values, std::size_t count) {
 struct Parts {
     bool uv = false;
     bool color = false;
-    std::string material;                // a glTF material object
-    std::vector<unsigned char> png;      // a base colour texture's image, if any
-    std::string sampler;                 // its glTF sampler object
+    std::string material;            // a glTF material object
+    std::vector<unsigned char> png;  // a base colour texture's image, if any
+    std::string sampler;             // its glTF sampler object
 };
 
 // The binary buffer of a .glb being written, with its buffer views and
@@ -129,8 +128,7 @@ struct GlbBuffers {
         const std::size_t offset = bin.size();
         const std::size_t length = append_bytes(bin, values, count);
         if (!views.empty()) views += ",";
-        views += "{\"buffer\":0,\"byteOffset\":" + std::to_string(offset) +
-                 ",\"byteLength\":" + std::to_string(length);
+        views += "{\"buffer\":0,\"byteOffset\":" + std::to_string(offset) + ",\"byteLength\":" + std::to_string(length);
         if (target != 0) views += ",\"target\":" + std::to_string(target);
         views += "}";
         return view_count++;
@@ -139,8 +137,7 @@ struct GlbBuffers {
     // A float attribute of the mesh's vertices, `width` components of
     // `member`: a view and an accessor (with `bounds`, JSON to add to it).
     template <class Member>
-    int add_attribute(const Mesh& mesh, std::size_t width, const char* type, Member member,
-                      const std::string& bounds) {
+    int add_attribute(const Mesh& mesh, std::size_t width, const char* type, Member member, const std::string& bounds) {
         std::vector<float> values;
         for (const Vertex& v : mesh.vertices) {
             const auto& field = v.*member;
@@ -148,8 +145,9 @@ struct GlbBuffers {
         }
         const int view = add_view(values.data(), values.size(), 34962);
         if (!accessors.empty()) accessors += ",";
-        accessors += "{\"bufferView\":" + std::to_string(view) + ",\"componentType\":5126,\"count\":" +
-                     std::to_string(mesh.vertices.size()) + ",\"type\":\"" + type + "\"" + bounds + "}";
+        accessors += "{\"bufferView\":" + std::to_string(view) +
+                     ",\"componentType\":5126,\"count\":" + std::to_string(mesh.vertices.size()) + ",\"type\":\"" +
+                     type + "\"" + bounds + "}";
         return accessor_count++;
     }
 };
@@ -170,9 +168,8 @@ std::string position_bounds(const Mesh& mesh) {
 // The primitive's attributes (POSITION, NORMAL, [TEXCOORD_0], [COLOR_0]),
 // written to the buffers; returns the JSON of its "attributes" object's members.
 std::string add_attributes(GlbBuffers& buffers, const Mesh& mesh, const Parts& parts) {
-    std::string attributes =
-        "\"POSITION\":" +
-        std::to_string(buffers.add_attribute(mesh, 3, "VEC3", &Vertex::position, position_bounds(mesh)));
+    std::string attributes = "\"POSITION\":" + std::to_string(buffers.add_attribute(mesh, 3, "VEC3", &Vertex::position,
+                                                                                    position_bounds(mesh)));
     attributes += ",\"NORMAL\":" + std::to_string(buffers.add_attribute(mesh, 3, "VEC3", &Vertex::normal, ""));
     if (parts.uv) {
         attributes += ",\"TEXCOORD_0\":" + std::to_string(buffers.add_attribute(mesh, 2, "VEC2", &Vertex::uv, ""));
@@ -191,26 +188,41 @@ std::vector<unsigned char> glb_of_mesh(const std::string& name, const Mesh& mesh
 
     const int index_view = buffers.add_view(mesh.indices.data(), mesh.indices.size(), 34963);
     const int index_accessor = buffers.accessor_count++;
-    buffers.accessors += ",{\"bufferView\":" + std::to_string(index_view) + ",\"componentType\":5123,\"count\":" +
-                         std::to_string(mesh.indices.size()) + ",\"type\":\"SCALAR\"}";
+    buffers.accessors += ",{\"bufferView\":" + std::to_string(index_view) +
+                         ",\"componentType\":5123,\"count\":" + std::to_string(mesh.indices.size()) +
+                         ",\"type\":\"SCALAR\"}";
 
     std::string textures;
     if (!parts.png.empty()) {
         const int image_view = buffers.add_view(parts.png.data(), parts.png.size(), 0);
-        textures = ",\"textures\":[{\"sampler\":0,\"source\":0}],"
-                   "\"images\":[{\"bufferView\":" + std::to_string(image_view) + ",\"mimeType\":\"image/png\"}],"
-                   "\"samplers\":[" + parts.sampler + "]";
+        textures =
+            ",\"textures\":[{\"sampler\":0,\"source\":0}],"
+            "\"images\":[{\"bufferView\":" +
+            std::to_string(image_view) +
+            ",\"mimeType\":\"image/png\"}],"
+            "\"samplers\":[" +
+            parts.sampler + "]";
     }
     std::string json =
         "{\"asset\":{\"version\":\"2.0\",\"generator\":\"impossible tools/make_gallery_assets\"},"
         "\"scene\":0,\"scenes\":[{\"nodes\":[0]}],"
-        "\"nodes\":[{\"name\":\"" + name + "\",\"mesh\":0}],"
-        "\"meshes\":[{\"name\":\"" + name + "\",\"primitives\":[{\"attributes\":{" + attributes +
-        "},\"indices\":" + std::to_string(index_accessor) + ",\"material\":0}]}],"
-        "\"materials\":[" + parts.material + "]" + textures + ","
-        "\"accessors\":[" + buffers.accessors + "],"
-        "\"bufferViews\":[" + buffers.views + "],"
-        "\"buffers\":[{\"byteLength\":" + std::to_string(buffers.bin.size()) + "}]}";
+        "\"nodes\":[{\"name\":\"" +
+        name +
+        "\",\"mesh\":0}],"
+        "\"meshes\":[{\"name\":\"" +
+        name + "\",\"primitives\":[{\"attributes\":{" + attributes + "},\"indices\":" + std::to_string(index_accessor) +
+        ",\"material\":0}]}],"
+        "\"materials\":[" +
+        parts.material + "]" + textures +
+        ","
+        "\"accessors\":[" +
+        buffers.accessors +
+        "],"
+        "\"bufferViews\":[" +
+        buffers.views +
+        "],"
+        "\"buffers\":[{\"byteLength\":" +
+        std::to_string(buffers.bin.size()) + "}]}";
     while (json.size() % 4 != 0) json += ' ';
     return glb_of(json, buffers.bin);
 }

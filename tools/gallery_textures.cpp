@@ -67,8 +67,8 @@ bool glyph_bit(const std::array<std::uint8_t, 7>& glyph, int column, int row) {
 
 // Draws a glyph with its top-left corner at (x0, y0), each glyph cell
 // `scale` pixels square, with an outline one pixel wide in `outline`.
-void draw_glyph(Picture& p, const std::array<std::uint8_t, 7>& glyph, int x0, int y0, int scale,
-                const Rgb& ink, const Rgb& outline) {
+void draw_glyph(Picture& p, const std::array<std::uint8_t, 7>& glyph, int x0, int y0, int scale, const Rgb& ink,
+                const Rgb& outline) {
     const auto inked = [&](int x, int y) {
         const int dx = x - x0;
         const int dy = y - y0;
@@ -106,7 +106,8 @@ Picture brick_wall() {
             if (y % 16 < 2 || along % 32 < 2) {
                 set(p, x, y, add(mortar, n));
             } else {
-                const int which = jitter(static_cast<std::uint32_t>(course), static_cast<std::uint32_t>(along / 32), 18);
+                const int which =
+                    jitter(static_cast<std::uint32_t>(course), static_cast<std::uint32_t>(along / 32), 18);
                 Rgb c = add(brick, which + n);
                 if (y % 16 == 2) c = add(c, 14);  // a lit upper edge
                 if (y % 16 == 15) c = add(c, -16);
@@ -200,7 +201,7 @@ Picture crate_side() {
             const int board = y / 16;
             const int n = jitter(static_cast<std::uint32_t>(x) + 900, static_cast<std::uint32_t>(y), 5);
             Rgb c = add({176, 130, 78}, jitter(static_cast<std::uint32_t>(board), 3, 10) + n);
-            if (y % 16 == 0) c = add(c, -55);  // gaps between boards
+            if (y % 16 == 0) c = add(c, -55);                                            // gaps between boards
             if (wave(x + 5 * board) == 0 && y % 16 > 4 && y % 16 < 12) c = add(c, -20);  // knots of grain
             const bool frame = x < 6 || y < 6 || x >= 58 || y >= 58;
             if (frame) c = add({120, 82, 46}, n);
@@ -226,7 +227,7 @@ Picture plant_leaves() {
     for (int pair = 0; pair < 5; ++pair) {
         const int cy = 112 - 18 * pair;
         const int a = 24 - 3 * pair;  // half length
-        const int b = 6;               // half width
+        const int b = 6;              // half width
         const Rgb leaf = mix({40, 120, 40}, {110, 180, 60}, pair, 4);
         for (const int side : {-1, 1}) {
             const int cx = 64 + side * (a + 2);

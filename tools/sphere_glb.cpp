@@ -78,19 +78,28 @@ std::string sphere_json(const SphereMesh& mesh, std::size_t bin_size) {
         "\"materials\":[{\"name\":\"clay\",\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.75,0.45,0.3,1],"
         "\"metallicFactor\":0,\"roughnessFactor\":1}}],"
         "\"accessors\":["
-        "{\"bufferView\":0,\"componentType\":5126,\"count\":" + count + ",\"type\":\"VEC3\",\"min\":[" +
-        number(lo[0]) + "," + number(lo[1]) + "," + number(lo[2]) + "],\"max\":[" + number(hi[0]) + "," +
-        number(hi[1]) + "," + number(hi[2]) + "]},"
-        "{\"bufferView\":1,\"componentType\":5126,\"count\":" + count + ",\"type\":\"VEC3\"},"
-        "{\"bufferView\":2,\"componentType\":5125,\"count\":" + std::to_string(mesh.indices.size()) +
+        "{\"bufferView\":0,\"componentType\":5126,\"count\":" +
+        count + ",\"type\":\"VEC3\",\"min\":[" + number(lo[0]) + "," + number(lo[1]) + "," + number(lo[2]) +
+        "],\"max\":[" + number(hi[0]) + "," + number(hi[1]) + "," + number(hi[2]) +
+        "]},"
+        "{\"bufferView\":1,\"componentType\":5126,\"count\":" +
+        count +
+        ",\"type\":\"VEC3\"},"
+        "{\"bufferView\":2,\"componentType\":5125,\"count\":" +
+        std::to_string(mesh.indices.size()) +
         ",\"type\":\"SCALAR\"}],"
         "\"bufferViews\":["
-        "{\"buffer\":0,\"byteOffset\":0,\"byteLength\":" + std::to_string(vertex_bytes) + ",\"target\":34962},"
-        "{\"buffer\":0,\"byteOffset\":" + std::to_string(vertex_bytes) + ",\"byteLength\":" +
-        std::to_string(vertex_bytes) + ",\"target\":34962},"
-        "{\"buffer\":0,\"byteOffset\":" + std::to_string(2 * vertex_bytes) + ",\"byteLength\":" +
-        std::to_string(mesh.indices.size() * 4) + ",\"target\":34963}],"
-        "\"buffers\":[{\"byteLength\":" + std::to_string(bin_size) + "}]}";
+        "{\"buffer\":0,\"byteOffset\":0,\"byteLength\":" +
+        std::to_string(vertex_bytes) +
+        ",\"target\":34962},"
+        "{\"buffer\":0,\"byteOffset\":" +
+        std::to_string(vertex_bytes) + ",\"byteLength\":" + std::to_string(vertex_bytes) +
+        ",\"target\":34962},"
+        "{\"buffer\":0,\"byteOffset\":" +
+        std::to_string(2 * vertex_bytes) + ",\"byteLength\":" + std::to_string(mesh.indices.size() * 4) +
+        ",\"target\":34963}],"
+        "\"buffers\":[{\"byteLength\":" +
+        std::to_string(bin_size) + "}]}";
     while (json.size() % 4 != 0) json += ' ';  // chunks are 4-byte aligned
     return json;
 }

@@ -160,8 +160,7 @@ int run_compare_command(const Args& args, std::ostream& out, std::ostream& err) 
         return kExitBadInput;
     }
     if (o.min_psnr && c.psnr_db < *o.min_psnr) {
-        err << "impossible compare: colour PSNR " << c.psnr_db << " dB is below --min-psnr " << *o.min_psnr
-            << " dB\n";
+        err << "impossible compare: colour PSNR " << c.psnr_db << " dB is below --min-psnr " << *o.min_psnr << " dB\n";
         return kExitBadInput;
     }
     return kExitOk;

@@ -52,8 +52,7 @@ int run_render_command(const Args& args, std::ostream& out, std::ostream& err) {
         value_or_throw(gl::create_context_with_fallback(options.backend, &fallback_note), "no OpenGL 4.5 context");
     if (!fallback_note.empty()) err << "note: " << fallback_note << "\n";
 
-    render::Renderer renderer =
-        value_or_throw(render::Renderer::create(context.state(), scene::build_scene(layout)));
+    render::Renderer renderer = value_or_throw(render::Renderer::create(context.state(), scene::build_scene(layout)));
     const render::RenderedFrame result = value_or_throw(renderer.render(frame));
 
     const image::Image& image = result.image;

@@ -30,8 +30,8 @@ void write_vec(std::string& s, const math::dvec3& v) {
 
 }  // namespace
 
-int run_walk_stream(const layout::Layout& layout, std::istream& in, const std::string& name,
-                    std::ostream& out, std::ostream& err) {
+int run_walk_stream(const layout::Layout& layout, std::istream& in, const std::string& name, std::ostream& out,
+                    std::ostream& err) {
     const layout::PathFile path = layout::read_path_stream(in, name);
     if (!path) {
         err << one_line(path.error()) << '\n';
@@ -50,9 +50,8 @@ int run_walk_stream(const layout::Layout& layout, std::istream& in, const std::s
                 << " teleports in one frame; portals beyond it were not crossed and the room may be wrong\n";
         line = "{\"frame\":" + std::to_string(frame) + ",\"room\":";
         const int room = walker.room();
-        line += nlohmann::json(room >= 0 && static_cast<std::size_t>(room) < layout.rooms.size()
-                                   ? layout.rooms[room].id
-                                   : std::string())
+        line += nlohmann::json(room >= 0 && static_cast<std::size_t>(room) < layout.rooms.size() ? layout.rooms[room].id
+                                                                                                 : std::string())
                     .dump();
         line += ",\"teleports\":[";
         for (std::size_t k = 0; k < passed.size(); ++k) {
@@ -71,10 +70,8 @@ int run_walk_stream(const layout::Layout& layout, std::istream& in, const std::s
     return 0;
 }
 
-int run_walk(const layout::Layout& layout, const std::string& path_file, std::ostream& out,
-             std::ostream& err) {
-    const Result<std::vector<unsigned char>> bytes =
-        read_file_bytes(path_file, layout::kMaxPathFileBytes, false);
+int run_walk(const layout::Layout& layout, const std::string& path_file, std::ostream& out, std::ostream& err) {
+    const Result<std::vector<unsigned char>> bytes = read_file_bytes(path_file, layout::kMaxPathFileBytes, false);
     if (!bytes) {
         err << one_line(path_file + ": " + bytes.error()) << '\n';
         return 1;

@@ -26,12 +26,10 @@ namespace impossible::app {
 
 // Reads the path file and replays it. Returns 0, or 1 on a bad or unreadable
 // path file (one line on err).
-int run_walk(const layout::Layout& layout, const std::string& path_file, std::ostream& out,
-             std::ostream& err);
+int run_walk(const layout::Layout& layout, const std::string& path_file, std::ostream& out, std::ostream& err);
 
 // The same on an already open stream; `name` is the FILE of error messages.
-int run_walk_stream(const layout::Layout& layout, std::istream& in, const std::string& name,
-                    std::ostream& out, std::ostream& err);
-
+int run_walk_stream(const layout::Layout& layout, std::istream& in, const std::string& name, std::ostream& out,
+                    std::ostream& err);
 
 }  // namespace impossible::app

@@ -27,8 +27,8 @@ int close_standard_output(int status) {
         failed = true;
     }
     if (!failed) return status;
-    std::cerr << "impossible: cannot write to standard output: "
-              << (error ? std::strerror(error) : "write error") << "\n";
+    std::cerr << "impossible: cannot write to standard output: " << (error ? std::strerror(error) : "write error")
+              << "\n";
     return status == 0 ? 1 : status;
 }
 

@@ -41,8 +41,7 @@ const Result<std::shared_ptr<const image::Pixels>>& AssetCache::load_image(const
     auto it = images_.find(resolved);
     if (it != images_.end()) return it->second;
     const auto decode = [&]() -> Result<std::shared_ptr<const image::Pixels>> {
-        const Result<std::vector<unsigned char>> bytes =
-            read_file_bytes(resolved, limits::kMaxImageFileBytes, true);
+        const Result<std::vector<unsigned char>> bytes = read_file_bytes(resolved, limits::kMaxImageFileBytes, true);
         if (!bytes) return bytes;
         if (bytes->empty()) return Error{"is empty (expected a PNG or JPEG image)"};
         const Result<image::ImageSize> size = image::image_size(bytes->data(), bytes->size(), limits::kMaxImageSide);

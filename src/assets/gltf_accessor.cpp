@@ -98,8 +98,8 @@ Result<const unsigned char*> view_elements(const tinygltf::Model& model, int vie
     }
     const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(view_index)];
     if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size()) {
-        return Error{name + ": its bufferView " + std::to_string(view_index) +
-                     " names buffer " + std::to_string(view.buffer) + ", which does not exist"};
+        return Error{name + ": its bufferView " + std::to_string(view_index) + " names buffer " +
+                     std::to_string(view.buffer) + ", which does not exist"};
     }
     const std::vector<unsigned char>& buffer = model.buffers[static_cast<std::size_t>(view.buffer)].data;
     if (stride == 0) stride = view.byteStride == 0 ? element : view.byteStride;
@@ -131,18 +131,16 @@ Result<const tinygltf::Accessor*> checked_accessor(const tinygltf::Model& model,
     if (accessor.type != type) {
         return Error{name + " must be " + type_name(type) + ", not " + type_name(accessor.type)};
     }
-    if (std::find(component_types.begin(), component_types.end(), accessor.componentType) ==
-        component_types.end()) {
-        return Error{name + " has the unsupported component type " +
-                std::to_string(accessor.componentType)};
+    if (std::find(component_types.begin(), component_types.end(), accessor.componentType) == component_types.end()) {
+        return Error{name + " has the unsupported component type " + std::to_string(accessor.componentType)};
     }
     return &accessor;
 }
 
 // Copies the accessor's dense elements (zeros without a bufferView) into
 // out.owned, tightly packed.
-Result<void> copy_dense_elements(const tinygltf::Model& model, const tinygltf::Accessor& accessor,
-                                 std::size_t element, const std::string& name, AccessorView& out) {
+Result<void> copy_dense_elements(const tinygltf::Model& model, const tinygltf::Accessor& accessor, std::size_t element,
+                                 const std::string& name, AccessorView& out) {
     out.stride = element;
     out.owned.assign(std::max<std::size_t>(1, accessor.count * element), 0);
     if (accessor.bufferView >= 0 && accessor.count > 0) {
@@ -221,8 +219,10 @@ Result<AccessorView> accessor_view(const tinygltf::Model& model, int index, int 
     }
     // Zeros or the dense elements, tightly packed, then the substitutions.
     if (accessor.count > max_copied) {
-        return Error{name + " has " + std::to_string(accessor.count) + " elements to copy (sparse or without a "
-                     "bufferView); at most " + std::to_string(max_copied) + " are supported"};
+        return Error{name + " has " + std::to_string(accessor.count) +
+                     " elements to copy (sparse or without a "
+                     "bufferView); at most " +
+                     std::to_string(max_copied) + " are supported"};
     }
     if (Result<void> dense = copy_dense_elements(model, accessor, element, name, out); !dense) return dense;
     if (!accessor.sparse.isSparse) return out;

@@ -9,16 +9,16 @@
 #include <string_view>
 #include <vector>
 
+#include <tiny_gltf.h>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
-#include <tiny_gltf.h>
 
-#include "base/format.hpp"
-#include "base/result.hpp"
 #include "assets/gltf_accessor.hpp"
 #include "assets/gltf_material.hpp"
 #include "assets/limits.hpp"
 #include "assets/model.hpp"
+#include "base/format.hpp"
+#include "base/result.hpp"
 
 namespace impossible::assets {
 
@@ -54,7 +54,7 @@ Result<std::vector<MeshInstance>> collect_instances(const tinygltf::Model& model
 // --- gltf_primitives.cpp
 
 struct PrimitiveData {
-    std::string name;         // "mesh 0 primitive 1"
+    std::string name;  // "mesh 0 primitive 1"
     int position_accessor = -1;
     int mode = TINYGLTF_MODE_TRIANGLES;
     std::size_t corners = 0;  // vertices or indices
@@ -64,17 +64,16 @@ struct PrimitiveData {
     bool indexed = false;
     std::size_t triangles = 0;
     glm::dvec3 colour{0.8};
-    int material = -1;        // the glTF material
-    AccessorView colours;     // COLOR_0; count 0: none
+    int material = -1;                  // the glTF material
+    AccessorView colours;               // COLOR_0; count 0: none
     std::size_t colour_components = 0;  // 3 or 4
-    AccessorView uvs;         // the base colour texture's TEXCOORD_n; count 0: none
+    AccessorView uvs;                   // the base colour texture's TEXCOORD_n; count 0: none
 };
 
 // Checks primitive `p` of mesh `mesh` (which exists) and views its accessors.
 Result<PrimitiveData> read_primitive(const tinygltf::Model& model, int mesh, std::size_t p);
 
 // Appends the primitive's triangles, placed by the instance, to `out`.
-Result<void> emit_triangles(const PrimitiveData& data, const MeshInstance& instance,
-                            std::vector<ModelTriangle>& out);
+Result<void> emit_triangles(const PrimitiveData& data, const MeshInstance& instance, std::vector<ModelTriangle>& out);
 
 }  // namespace impossible::assets

@@ -4,16 +4,15 @@
 #include <cmath>
 #include <map>
 
-#include <glm/common.hpp>
 #include <tiny_gltf.h>
+#include <glm/common.hpp>
 
-#include "base/file_io.hpp"
 #include "assets/gltf_preflight.hpp"
-#include "image/decode.hpp"
 #include "assets/limits.hpp"
 #include "base/file_io.hpp"
 #include "base/format.hpp"
 #include "base/user_text.hpp"
+#include "image/decode.hpp"
 
 namespace impossible::assets {
 
@@ -51,8 +50,7 @@ Result<void> check_sampler(const tinygltf::Model& model, int index) {
     const tinygltf::Sampler& s = model.samplers[static_cast<std::size_t>(index)];
     const std::string who = "has " + named("sampler", index, s.name);
     if (s.magFilter != -1 && !valid_mag_filter(s.magFilter)) {
-        return Error{who + " whose magFilter " + std::to_string(s.magFilter) +
-                     " is not a glTF filter (9728 or 9729)"};
+        return Error{who + " whose magFilter " + std::to_string(s.magFilter) + " is not a glTF filter (9728 or 9729)"};
     }
     if (s.minFilter != -1 && !valid_min_filter(s.minFilter)) {
         return Error{who + " whose minFilter " + std::to_string(s.minFilter) +
@@ -66,9 +64,8 @@ Result<void> check_sampler(const tinygltf::Model& model, int index) {
 }
 
 // The encoded bytes of image `index`, or why there are none.
-Result<std::pair<const unsigned char*, std::size_t>> image_bytes(const tinygltf::Model& model,
-                                                                 const KeptImages& kept, int index,
-                                                                 const std::string& folder) {
+Result<std::pair<const unsigned char*, std::size_t>> image_bytes(const tinygltf::Model& model, const KeptImages& kept,
+                                                                 int index, const std::string& folder) {
     const tinygltf::Image& image = model.images[static_cast<std::size_t>(index)];
     const std::string who = "has " + named("image", index, image.name);
     if (!image.mimeType.empty() && image.mimeType != "image/png" && image.mimeType != "image/jpeg") {
@@ -87,8 +84,7 @@ Result<std::pair<const unsigned char*, std::size_t>> image_bytes(const tinygltf:
                 }
             }
         }
-        return Error{who + " whose bufferView " + std::to_string(image.bufferView) +
-                     " does not lie inside its buffer"};
+        return Error{who + " whose bufferView " + std::to_string(image.bufferView) + " does not lie inside its buffer"};
     }
     const auto at = static_cast<std::size_t>(index);
     if (at < kept.delivered.size() && kept.delivered[at]) {
@@ -122,8 +118,8 @@ bool keep_image_bytes(tinygltf::Image* image, int index, std::string* err, std::
     if (image->bufferView >= 0) return true;  // read from the buffer when needed
     const std::size_t n = size > 0 ? static_cast<std::size_t>(size) : 0;
     if (n > limits::kMaxModelBytes - kept.total) {
-        kept.error = "has images of more than " + format_bytes(limits::kMaxModelBytes) +
-                     " together in data: URIs and files";
+        kept.error =
+            "has images of more than " + format_bytes(limits::kMaxModelBytes) + " together in data: URIs and files";
         if (err != nullptr) *err += kept.error + "\n";
         return false;
     }
@@ -141,8 +137,9 @@ Result<int> check_material(const tinygltf::Model& model, int material) {
         return Error{who + " whose baseColorFactor is not 4 finite numbers"};
     }
     if (m.alphaMode == "BLEND") {
-        return Error{who + " with alphaMode \"BLEND\", which is not supported (the renderers do not blend "
-                           "surfaces); use \"MASK\" with an alphaCutoff, or \"OPAQUE\""};
+        return Error{who +
+                     " with alphaMode \"BLEND\", which is not supported (the renderers do not blend "
+                     "surfaces); use \"MASK\" with an alphaCutoff, or \"OPAQUE\""};
     }
     if (m.alphaMode != "OPAQUE" && m.alphaMode != "MASK") {
         return Error{who + " with alphaMode " + quote(m.alphaMode.substr(0, 60)) +
@@ -165,17 +162,19 @@ Result<int> check_material(const tinygltf::Model& model, int material) {
     const tinygltf::Texture& texture = model.textures[static_cast<std::size_t>(info.index)];
     const std::string texture_who = "has " + named("texture", info.index, texture.name);
     if (texture.source == -1) {
-        return Error{texture_who + " without a source image (images only in extensions, such as "
-                                   "KHR_texture_basisu or EXT_texture_webp, are not supported)"};
+        return Error{texture_who +
+                     " without a source image (images only in extensions, such as "
+                     "KHR_texture_basisu or EXT_texture_webp, are not supported)"};
     }
     if (texture.source < 0 || static_cast<std::size_t>(texture.source) >= model.images.size()) {
         return Error{texture_who + " whose source names image " + std::to_string(texture.source) +
                      ", which does not exist (the model has " + count_of(model.images.size(), "image", "images") + ")"};
     }
-    if (texture.sampler < -1 || (texture.sampler >= 0 && static_cast<std::size_t>(texture.sampler) >= model.samplers.size())) {
+    if (texture.sampler < -1 ||
+        (texture.sampler >= 0 && static_cast<std::size_t>(texture.sampler) >= model.samplers.size())) {
         return Error{texture_who + " whose sampler names sampler " + std::to_string(texture.sampler) +
-                     ", which does not exist (the model has " +
-                     count_of(model.samplers.size(), "sampler", "samplers") + ")"};
+                     ", which does not exist (the model has " + count_of(model.samplers.size(), "sampler", "samplers") +
+                     ")"};
     }
     if (texture.sampler >= 0) {
         if (Result<void> ok = check_sampler(model, texture.sampler); !ok) return ok;
@@ -216,17 +215,18 @@ Result<void> build_materials(const tinygltf::Model& model, const KeptImages& kep
                 if (image == nullptr) {
                     const auto bytes = image_bytes(model, kept, texture.source, folder);
                     if (!bytes) return bytes;
-                    const std::string who =
-                        "has " + named("image", texture.source,
-                                       model.images[static_cast<std::size_t>(texture.source)].name);
-                    const Result<image::ImageSize> size = image::image_size(bytes->first, bytes->second, limits::kMaxImageSide);
+                    const std::string who = "has " + named("image", texture.source,
+                                                           model.images[static_cast<std::size_t>(texture.source)].name);
+                    const Result<image::ImageSize> size =
+                        image::image_size(bytes->first, bytes->second, limits::kMaxImageSide);
                     if (!size) return Error{who + " that " + size.error()};
                     if (size->texels() > limits::kMaxModelTexels - texels) {
                         return Error{"has images of more than " + std::to_string(limits::kMaxModelTexels) +
                                      " texels together (the limit for one model; " + who.substr(4) + " is " +
                                      std::to_string(size->width) + " x " + std::to_string(size->height) + ")"};
                     }
-                    Result<image::Pixels> decoded = image::decode_image(bytes->first, bytes->second, limits::kMaxImageSide);
+                    Result<image::Pixels> decoded =
+                        image::decode_image(bytes->first, bytes->second, limits::kMaxImageSide);
                     if (!decoded) return Error{who + " that " + decoded.error()};
                     texels += size->texels();
                     image = std::make_shared<const image::Pixels>(std::move(*decoded));

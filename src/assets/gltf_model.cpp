@@ -61,8 +61,7 @@ Result<void> read_model_file(const std::string& path, ModelFile& file) {
     if (Result<void> shape = check_json_shape(file.json_text); !shape) return shape;
 
     std::error_code ec;
-    file.folder =
-        std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec).parent_path(), ec).string();
+    file.folder = std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec).parent_path(), ec).string();
     if (ec) return Error{"cannot be opened: " + ec.message()};
     while (file.folder.size() > 1 && file.folder.back() == '/') file.folder.pop_back();
     if (file.folder == "/") file.folder.clear();  // a model at the root: everything is below it
@@ -122,14 +121,13 @@ Result<GltfModel> load_model(const std::string& path, std::size_t max_triangles)
     GltfModel out;
     out.triangles.reserve(triangles);
     for (const auto& [data, instance] : *work) {
-        if (Result<void> emitted = emit_triangles(data, instance, out.triangles); !emitted)
-            return emitted;
+        if (Result<void> emitted = emit_triangles(data, instance, out.triangles); !emitted) return emitted;
     }
     if (out.triangles.empty()) {
         return Error{"has no triangles"};
     }
-    if (Result<void> built = build_materials(model, kept, file.folder, out.triangles, out.materials, out.textures,
-                                             out.texels);
+    if (Result<void> built =
+            build_materials(model, kept, file.folder, out.triangles, out.materials, out.textures, out.texels);
         !built) {
         return built;
     }

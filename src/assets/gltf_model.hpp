@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "base/result.hpp"
 #include "assets/model.hpp"
+#include "base/result.hpp"
 
 namespace impossible::assets {
 

@@ -68,8 +68,7 @@ Result<glm::dmat4> rotation_transform(const std::vector<double>& q, const std::s
 // translation · rotation · scale, each optional, checked.
 Result<glm::dmat4> trs_transform(const tinygltf::Node& node, const std::string& who) {
     if ((!node.translation.empty() && node.translation.size() != 3) ||
-        (!node.rotation.empty() && node.rotation.size() != 4) ||
-        (!node.scale.empty() && node.scale.size() != 3)) {
+        (!node.rotation.empty() && node.rotation.size() != 4) || (!node.scale.empty() && node.scale.size() != 3)) {
         return Error{who + " whose translation, rotation or scale has the wrong number of values"};
     }
     for (double v : node.translation) {
@@ -153,8 +152,7 @@ Result<std::vector<MeshInstance>> collect_instances(const tinygltf::Model& model
         }
         const auto index = static_cast<std::size_t>(item.node);
         if (visited[index]) {
-            return Error{"reaches node " + std::to_string(item.node) +
-                    " twice (its nodes must form a tree)"};
+            return Error{"reaches node " + std::to_string(item.node) + " twice (its nodes must form a tree)"};
         }
         visited[index] = true;
         if (item.depth > limits::kMaxNodeDepth) {

@@ -10,6 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "base/result.hpp"
 
 namespace impossible::assets {
@@ -35,8 +37,12 @@ Result<void> check_json_shape(std::string_view text);
 // (canonical; "" for the root), where external buffers are looked for;
 // `glb_bin_size` is the .glb binary chunk's size (or -1: a .gltf file, or a
 // .glb without one).
-Result<void> check_gltf_document(std::string_view text, bool binary, long long glb_bin_size,
-                                 const std::string& folder);
+Result<void> check_gltf_document(std::string_view text, bool binary, long long glb_bin_size, const std::string& folder);
+
+// The buffers of the parsed document (gltf_buffers.cpp): each byteLength
+// against the .glb's binary chunk (`glb_bin_size`, -1 without one), its
+// data: URI or its file in `folder`.
+Result<void> check_buffers(const nlohmann::json& doc, bool binary, long long glb_bin_size, const std::string& folder);
 
 // Whether `path` lies in `folder` (canonical, "" for the root) or below it,
 // symbolic links followed: a model reads files only there.

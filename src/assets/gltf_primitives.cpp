@@ -37,10 +37,10 @@ Error primitive_error(const std::string& name, const std::string& reason) {
 // TEXCOORD_n): float, or normalized unsigned byte or short.
 Result<AccessorView> vertex_values(const tinygltf::Model& model, int index, int type, const std::string& what,
                                    std::size_t vertices) {
-    Result<AccessorView> view = accessor_view(model, index, type,
-                                              {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                                               TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
-                                              what.c_str(), kMaxCopied);
+    Result<AccessorView> view = accessor_view(
+        model, index, type,
+        {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+        what.c_str(), kMaxCopied);
     if (!view) return view;
     if (view->count != vertices) {
         return Error{what + " accessor " + std::to_string(index) + " has " + std::to_string(view->count) +
@@ -62,8 +62,7 @@ Result<AccessorView> vertex_values(const tinygltf::Model& model, int index, int 
 Result<int> primitive_mode(const tinygltf::Primitive& primitive, const std::string& name) {
     static const char* const mode_names[] = {"points", "lines", "line loop", "line strip"};
     const int mode = primitive.mode == -1 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
-    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
-        mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
         const bool named = mode >= 0 && mode < 4;
         return Error{"has " + name + " in mode " + std::to_string(mode) +
                      (named ? std::string(" (") + mode_names[mode] + ")" : std::string()) +
@@ -97,19 +96,18 @@ Result<void> read_geometry(const tinygltf::Model& model, const tinygltf::Primiti
     }
     std::size_t corners = out.positions.count;
     if (primitive.indices >= 0) {
-        Result<AccessorView> indices = accessor_view(model, primitive.indices, TINYGLTF_TYPE_SCALAR,
-                                                     {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                                                      TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
-                                                      TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
-                                                     "index", kMaxCopied);
+        Result<AccessorView> indices =
+            accessor_view(model, primitive.indices, TINYGLTF_TYPE_SCALAR,
+                          {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                           TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
+                          "index", kMaxCopied);
         if (!indices) return primitive_error(name, indices.error());
         out.indices = std::move(*indices);
         out.indexed = true;
         corners = out.indices.count;
     }
     if (out.mode == TINYGLTF_MODE_TRIANGLES && corners % 3 != 0) {
-        return Error{"has " + name + " whose vertex count " + std::to_string(corners) +
-                " is not a multiple of 3"};
+        return Error{"has " + name + " whose vertex count " + std::to_string(corners) + " is not a multiple of 3"};
     }
     out.corners = corners;
     out.triangles = out.mode == TINYGLTF_MODE_TRIANGLES ? corners / 3 : corners >= 3 ? corners - 2 : 0;
@@ -132,8 +130,7 @@ Result<void> read_vertex_colours(const tinygltf::Model& model, int index, Primit
 
 // The material (checked), its base colour, COLOR_0 and the texture
 // coordinates its base colour texture reads.
-Result<void> read_appearance(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
-                             PrimitiveData& out) {
+Result<void> read_appearance(const tinygltf::Model& model, const tinygltf::Primitive& primitive, PrimitiveData& out) {
     out.material = primitive.material;
     int tex_coord = -1;
     if (primitive.material >= 0) {
@@ -160,9 +157,7 @@ Result<void> read_appearance(const tinygltf::Model& model, const tinygltf::Primi
     return {};
 }
 
-bool finite(const glm::dvec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
+bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 bool within(const glm::dvec3& v, double limit) {
     return std::abs(v.x) <= limit && std::abs(v.y) <= limit && std::abs(v.z) <= limit;
@@ -192,7 +187,7 @@ Result<void> triangle_vertices(const PrimitiveData& data, std::size_t t, std::si
         v[k] = corner(data, t, k);
         if (v[k] >= data.positions.count) {
             return Error{"has an index " + std::to_string(v[k]) + " past the end of its " +
-                    std::to_string(data.positions.count) + " vertices"};
+                         std::to_string(data.positions.count) + " vertices"};
         }
     }
     return {};
@@ -211,9 +206,9 @@ Result<void> place_vertices(const PrimitiveData& data, const MeshInstance& insta
         }
         triangle.position[k] = glm::dvec3(instance.world * glm::dvec4(p, 1.0));
         if (!finite(triangle.position[k]) || !within(triangle.position[k], limits::kMaxCoordinate)) {
-            return Error{"has node " + std::to_string(instance.node) + " that places vertex " +
-                         std::to_string(v[k]) + " of " + data.name + " at " + format_vec(triangle.position[k]) +
-                         ", " + beyond_coordinate_limit()};
+            return Error{"has node " + std::to_string(instance.node) + " that places vertex " + std::to_string(v[k]) +
+                         " of " + data.name + " at " + format_vec(triangle.position[k]) + ", " +
+                         beyond_coordinate_limit()};
         }
     }
     return {};
@@ -254,8 +249,7 @@ Result<PrimitiveData> read_primitive(const tinygltf::Model& model, int mesh, std
     return out;
 }
 
-Result<void> emit_triangles(const PrimitiveData& data, const MeshInstance& instance,
-                            std::vector<ModelTriangle>& out) {
+Result<void> emit_triangles(const PrimitiveData& data, const MeshInstance& instance, std::vector<ModelTriangle>& out) {
     const glm::dmat3 linear(instance.world);
     const double det = glm::determinant(linear);
     const bool mirrored = det < 0.0;
@@ -267,8 +261,8 @@ Result<void> emit_triangles(const PrimitiveData& data, const MeshInstance& insta
         if (mirrored) std::swap(v[1], v[2]);  // keep front faces counter-clockwise
         ModelTriangle triangle;
         if (Result<void> placed = place_vertices(data, instance, v, triangle); !placed) return placed;
-        const glm::dvec3 cross = glm::cross(triangle.position[1] - triangle.position[0],
-                                            triangle.position[2] - triangle.position[0]);
+        const glm::dvec3 cross =
+            glm::cross(triangle.position[1] - triangle.position[0], triangle.position[2] - triangle.position[0]);
         const double area2 = glm::length(cross);
         if (!(area2 > 1e-300) || !std::isfinite(area2)) continue;  // degenerate: invisible
         const glm::dvec3 flat = cross / area2;

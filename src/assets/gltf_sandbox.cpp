@@ -30,8 +30,7 @@ bool fs_file_exists(const std::string& path, void* user_data) {
     return std::filesystem::is_regular_file(path, ec);
 }
 std::string fs_expand_path(const std::string& path, void*) { return path; }
-bool fs_read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path,
-                        void* user_data) {
+bool fs_read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user_data) {
     if (!inside_model_folder(path, user_data)) {
         if (err != nullptr) *err += "file " + quote(path) + " lies outside the model's folder\n";
         return false;
@@ -44,8 +43,7 @@ bool fs_read_whole_file(std::vector<unsigned char>* out, std::string* err, const
     if (err != nullptr) *err += "file " + quote(path) + " " + bytes.error() + "\n";
     return false;
 }
-bool fs_write_whole_file(std::string* err, const std::string&, const std::vector<unsigned char>&,
-                         void*) {
+bool fs_write_whole_file(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
     if (err != nullptr) *err += "writing is disabled\n";
     return false;
 }
@@ -72,8 +70,8 @@ Result<void> parse_sandboxed(const std::vector<unsigned char>& bytes, std::strin
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&keep_image_bytes, &kept);
     // The callbacks only read the folder (user_data is not const in tinygltf).
-    loader.SetFsCallbacks({&fs_file_exists, &fs_expand_path, &fs_read_whole_file,
-                           &fs_write_whole_file, const_cast<std::string*>(&folder)});
+    loader.SetFsCallbacks({&fs_file_exists, &fs_expand_path, &fs_read_whole_file, &fs_write_whole_file,
+                           const_cast<std::string*>(&folder)});
     std::string err, warn;
     const std::string base_dir = folder.empty() ? "/" : folder;
     const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),

@@ -48,10 +48,10 @@ enum class AlphaMode { Opaque, Mask };
 // base_color.a · COLOR_0.a · texel.a (the texel is white without a texture).
 struct Material {
     glm::dvec4 base_color{0.8, 0.8, 0.8, 1.0};  // baseColorFactor
-    int texture = -1;                 // into the model's textures; -1: none
-    bool double_sided = false;        // both sides visible, the back's normal reversed
+    int texture = -1;                           // into the model's textures; -1: none
+    bool double_sided = false;                  // both sides visible, the back's normal reversed
     AlphaMode alpha_mode = AlphaMode::Opaque;
-    double alpha_cutoff = 0.5;        // Mask: alpha below this is not drawn
+    double alpha_cutoff = 0.5;  // Mask: alpha below this is not drawn
 };
 
 // A triangle of a glTF model, in the model's own coordinates (before the
@@ -61,8 +61,8 @@ struct ModelTriangle {
     std::array<glm::dvec3, 3> normal;  // unit
     glm::dvec3 color{0.8};             // the material's base colour factor (rgb), as in Material
     std::array<glm::dvec4, 3> vertex_color{glm::dvec4(1.0), glm::dvec4(1.0), glm::dvec4(1.0)};  // COLOR_0
-    std::array<glm::dvec2, 3> uv{};    // the material texture's texCoord set; (0, 0) without
-    int material = -1;                 // into the model's materials; -1: the default (grey, opaque, one-sided)
+    std::array<glm::dvec2, 3> uv{};  // the material texture's texCoord set; (0, 0) without
+    int material = -1;               // into the model's materials; -1: the default (grey, opaque, one-sided)
 };
 
 }  // namespace impossible::assets

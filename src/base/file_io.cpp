@@ -18,8 +18,8 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string too_large(std::uintmax_t size, std::size_t max_bytes, bool exact) {
-    return "is too large (" + std::string(exact ? "" : "more than ") + format_bytes(size) +
-           "; the limit is " + format_bytes(max_bytes) + ")";
+    return "is too large (" + std::string(exact ? "" : "more than ") + format_bytes(size) + "; the limit is " +
+           format_bytes(max_bytes) + ")";
 }
 
 int idle_timeout_ms() {
@@ -89,9 +89,8 @@ Result<void> check_readable_file(const std::string& path, std::size_t max_bytes,
     std::error_code ec;
     const fs::file_status status = fs::status(path, ec);
     if (ec || !fs::exists(status)) {
-        return Error{ec && ec != std::errc::no_such_file_or_directory
-                    ? "cannot be opened: " + ec.message()
-                    : "does not exist"};
+        return Error{ec && ec != std::errc::no_such_file_or_directory ? "cannot be opened: " + ec.message()
+                                                                      : "does not exist"};
     }
     if (fs::is_directory(status)) {
         return Error{"is a directory"};
@@ -109,10 +108,8 @@ Result<void> check_readable_file(const std::string& path, std::size_t max_bytes,
     return {};
 }
 
-Result<std::vector<unsigned char>> read_file_bytes(const std::string& path, std::size_t max_bytes,
-                                                  bool regular_only) {
-    if (Result<void> readable = check_readable_file(path, max_bytes, regular_only); !readable)
-        return readable;
+Result<std::vector<unsigned char>> read_file_bytes(const std::string& path, std::size_t max_bytes, bool regular_only) {
+    if (Result<void> readable = check_readable_file(path, max_bytes, regular_only); !readable) return readable;
     // O_NONBLOCK: opening a FIFO for reading otherwise waits for a writer,
     // forever if none comes; reads then wait in poll() with a timeout.
     Fd file{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};

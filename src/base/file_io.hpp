@@ -24,8 +24,7 @@ inline constexpr int kInputIdleTimeoutMs = 10'000;
 // devices such as /dev/zero) are read without blocking, up to the same limit,
 // and fail after kInputIdleTimeoutMs without data.
 // `regular_only` refuses them instead.
-Result<std::vector<unsigned char>> read_file_bytes(const std::string& path, std::size_t max_bytes,
-                                                  bool regular_only);
+Result<std::vector<unsigned char>> read_file_bytes(const std::string& path, std::size_t max_bytes, bool regular_only);
 
 // The same checks without reading (size, kind), for a clear message before
 // handing the path to a library.

@@ -19,12 +19,12 @@ namespace {
 
 // Where and how one output goes.
 struct Plan {
-    std::string path;         // as given, for messages
-    std::string final_path;   // the file that ends up holding the bytes
-    bool direct = false;      // a device, FIFO or socket: written in place
-    int descriptor = -1;      // /dev/stdout and the like: this open descriptor
-    mode_t mode = 0666;       // of a new or replaced regular file
-    std::string temp;         // the temporary file, once created
+    std::string path;        // as given, for messages
+    std::string final_path;  // the file that ends up holding the bytes
+    bool direct = false;     // a device, FIFO or socket: written in place
+    int descriptor = -1;     // /dev/stdout and the like: this open descriptor
+    mode_t mode = 0666;      // of a new or replaced regular file
+    std::string temp;        // the temporary file, once created
 };
 
 std::string errno_text(int error) { return std::strerror(error); }

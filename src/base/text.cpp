@@ -7,9 +7,12 @@ std::string one_line(std::string_view text, std::size_t max_bytes) {
     std::size_t i = 0;
     for (; i < text.size() && out.size() < max_bytes; ++i) {
         const auto b = static_cast<unsigned char>(text[i]);
-        if (b == '\n') out += "\\n";
-        else if (b == '\r') out += "\\r";
-        else if (b == '\t') out += "\\t";
+        if (b == '\n')
+            out += "\\n";
+        else if (b == '\r')
+            out += "\\r";
+        else if (b == '\t')
+            out += "\\t";
         else if (b < 0x20 || b == 0x7F) {
             static const char digits[] = "0123456789abcdef";
             out += "\\x";

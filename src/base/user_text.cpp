@@ -78,8 +78,7 @@ std::string printable(std::string_view text) {
     return out;
 }
 
-std::vector<TextPosition> text_positions(std::string_view text,
-                                         const std::vector<std::size_t>& offsets) {
+std::vector<TextPosition> text_positions(std::string_view text, const std::vector<std::size_t>& offsets) {
     std::vector<TextPosition> out;
     out.reserve(offsets.size());
     const bool has_bom = text.substr(0, 3) == "\xEF\xBB\xBF";
@@ -105,9 +104,7 @@ std::vector<TextPosition> text_positions(std::string_view text,
     return out;
 }
 
-TextPosition text_position(std::string_view text, std::size_t offset) {
-    return text_positions(text, {offset}).front();
-}
+TextPosition text_position(std::string_view text, std::size_t offset) { return text_positions(text, {offset}).front(); }
 
 bool has_control_character(std::string_view text) {
     for (char c : text) {

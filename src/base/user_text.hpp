@@ -35,7 +35,6 @@ TextPosition text_position(std::string_view text, std::size_t offset);
 
 // The same for many offsets at once, in one pass over the text: `offsets`
 // must be sorted ascending.
-std::vector<TextPosition> text_positions(std::string_view text,
-                                         const std::vector<std::size_t>& offsets);
+std::vector<TextPosition> text_positions(std::string_view text, const std::vector<std::size_t>& offsets);
 
 }  // namespace impossible

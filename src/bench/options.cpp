@@ -28,8 +28,8 @@ void check_sweep(const std::string& sweep) {
     if (sweep.empty() || sweep == "techniques") return;
     const size_t colon = sweep.find(':');
     const std::string kind = sweep.substr(0, colon);
-    if (colon == std::string::npos || (kind != "portals" && kind != "depth" && kind != "size" && kind != "boxes" &&
-                                   kind != "samples") ||
+    if (colon == std::string::npos ||
+        (kind != "portals" && kind != "depth" && kind != "size" && kind != "boxes" && kind != "samples") ||
         colon + 1 == sweep.size())
         throw InputError("--sweep: '" + sweep +
                          "' is not techniques, portals:N,..., boxes:N,..., depth:N,..., size:WxH,... or samples:N,...");

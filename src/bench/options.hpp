@@ -15,12 +15,11 @@
 
 namespace impossible::bench {
 
-
 struct BenchOptions {
     cli::ViewOptions view;
-    int frames = 20;          // timed frames per configuration and pose
-    int warmup = 3;           // untimed frames first
-    int profile_frames = 3;   // profiled frames (per-portal times, fragments) per configuration and pose
+    int frames = 20;         // timed frames per configuration and pose
+    int warmup = 3;          // untimed frames first
+    int profile_frames = 3;  // profiled frames (per-portal times, fragments) per configuration and pose
     std::optional<std::string> json;
     std::optional<std::string> csv;
     std::optional<std::string> path;  // a walk file: physical poses, one a line (as `walk`)

@@ -10,10 +10,10 @@
 
 namespace impossible::bench {
 
-using cli::ViewOptions;
 using cli::frame_for;
 using cli::parse_int;
 using cli::parse_size;
+using cli::ViewOptions;
 
 using cli::value_or_throw;
 

@@ -42,5 +42,4 @@ struct BenchPose {
 };
 std::vector<BenchPose> bench_poses(const layout::Layout& layout, const BenchOptions& options);
 
-
 }  // namespace impossible::bench

@@ -42,7 +42,9 @@ json config_json(const ConfigResult& r, double base_median) {
     j["portal_fills"] = r.portal_fills;
     json portals = json::array();
     for (const PortalResult& p : r.portals)
-        portals.push_back({{"pose", p.pose}, {"portal", p.portal}, {"ms_median", p.ms_median},
+        portals.push_back({{"pose", p.pose},
+                           {"portal", p.portal},
+                           {"ms_median", p.ms_median},
                            {"fragments_per_pixel", p.fragments_per_pixel}});
     j["portals"] = portals;
     if (r.has_error) {
@@ -104,8 +106,8 @@ std::string bench_csv(const BenchResult& result) {
 void write_bench_table(const BenchResult& result, const BenchOptions& options, std::ostream& out) {
     char line[512];
     out << "bench: " << options.view.layout_path.value_or("<default>") << ", " << result.poses << " pose(s), "
-        << options.frames << " timed frames each after " << options.warmup << " warm-up, " << result.gl_renderer
-        << ", " << result.cores << " cores\n";
+        << options.frames << " timed frames each after " << options.warmup << " warm-up, " << result.gl_renderer << ", "
+        << result.cores << " cores\n";
     std::snprintf(line, sizeof line, "%-22s %10s %8s %8s %7s %9s %7s %8s %7s %7s %6s %9s %7s\n", "config", "median ms",
                   "p10", "p90", "vs base", "submit ms", "frag/px", "draws", "drawn", "culled", "fills", "id mism%",
                   "PSNR");
@@ -120,7 +122,8 @@ void write_bench_table(const BenchResult& result, const BenchOptions& options, s
         std::snprintf(line, sizeof line, "%-22s %10.3f %8.3f %8.3f %7.3f %9.3f %7.3f %8.1f %7.1f %7.1f %6.1f %9s %7s\n",
                       r.config.name.c_str(), frame.median, frame.p10, frame.p90, frame.median / base,
                       spread_of(r.submit_ms).median, r.fragments_per_pixel, r.draw_calls, r.portal_passes_drawn,
-                      r.portal_passes_culled, r.portal_fills, r.has_error ? fixed(r.id_mismatch_percent, 4).c_str() : "-",
+                      r.portal_passes_culled, r.portal_fills,
+                      r.has_error ? fixed(r.id_mismatch_percent, 4).c_str() : "-",
                       r.has_error ? fixed(r.psnr_db, 2).c_str() : "-");
         out << line;
     }

@@ -3,16 +3,16 @@
 #include <algorithm>
 #include <chrono>
 #include <map>
-#include <random>
 #include <memory>
+#include <random>
 #include <thread>
 #include <tuple>
 
 #include "cli/view_options.hpp"
 #include "gl/gl.hpp"
+#include "image/compare.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
-#include "image/compare.hpp"
 #include "trace/tracer.hpp"
 
 namespace impossible::bench {
@@ -213,10 +213,11 @@ BenchResult run_bench(const BenchPlan& plan, const std::vector<BenchPose>& poses
                       gl::StateCache& state, const std::string& gl_renderer) {
     Measurer m{plan, poses, options, {}, {}};
     for (const layout::Layout& l : plan.layouts) {
-        m.renderers.push_back(std::make_unique<render::Renderer>(
-            value_or_throw(render::Renderer::create(state, scene::build_scene(l)))));
+        m.renderers.push_back(
+            std::make_unique<render::Renderer>(value_or_throw(render::Renderer::create(state, scene::build_scene(l)))));
     }
-    for (const BenchConfig& c : plan.configs) m.results.push_back({c, {}, {}, {}, 0, 0, 0, 0, 0, 0, 0, {}, false, 0, 0, 0});
+    for (const BenchConfig& c : plan.configs)
+        m.results.push_back({c, {}, {}, {}, 0, 0, 0, 0, 0, 0, 0, {}, false, 0, 0, 0});
     m.probe();
     m.time_frames();
     m.profile_frames();

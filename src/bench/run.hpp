@@ -13,20 +13,20 @@ namespace impossible::bench {
 
 struct PortalResult {
     int pose = 0;
-    std::string portal;        // its id
-    double ms_median = 0.0;    // subtree time, median over the profiled frames
+    std::string portal;                // its id
+    double ms_median = 0.0;            // subtree time, median over the profiled frames
     double fragments_per_pixel = 0.0;  // colour fragments of its subtree per output pixel
 };
 
 struct ConfigResult {
     BenchConfig config;
-    std::string error;                 // e.g. a stereo mode the driver cannot do: not measured
-    std::vector<double> frame_ms;      // every timed frame (all poses)
-    std::vector<double> submit_ms;     // CPU time of the draw calls (before glFinish)
+    std::string error;              // e.g. a stereo mode the driver cannot do: not measured
+    std::vector<double> frame_ms;   // every timed frame (all poses)
+    std::vector<double> submit_ms;  // CPU time of the draw calls (before glFinish)
     // Per frame, averaged over the poses (exact counts for one pose).
     double draw_calls = 0, triangles = 0, portal_passes_drawn = 0, portal_passes_culled = 0, portal_fills = 0;
-    double fragments_per_pixel = 0;    // from the profiled frames
-    double profiled_frame_ms = 0;      // median of the profiled frames (perturbed by glFinish)
+    double fragments_per_pixel = 0;  // from the profiled frames
+    double profiled_frame_ms = 0;    // median of the profiled frames (perturbed by glFinish)
     std::vector<PortalResult> portals;
     // With --error: against the tracer at the reference depth, averaged over poses.
     bool has_error = false;

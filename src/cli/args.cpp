@@ -24,9 +24,12 @@ ParsedArgs parse_args(const Args& args, const ArgNames& names, size_t max_positi
             const size_t eq = a.find('=');
             const std::string name = a.substr(0, eq);
             if (names.with_value.count(name)) {
-                if (eq != std::string::npos) out.values[name] = a.substr(eq + 1);
-                else if (i + 1 < args.size()) out.values[name] = args[++i];
-                else throw UsageError("option " + name + " needs a value");
+                if (eq != std::string::npos)
+                    out.values[name] = a.substr(eq + 1);
+                else if (i + 1 < args.size())
+                    out.values[name] = args[++i];
+                else
+                    throw UsageError("option " + name + " needs a value");
             } else if (names.flags.count(name)) {
                 if (eq != std::string::npos) throw UsageError("option " + name + " takes no value");
                 out.flags.insert(name);
@@ -60,8 +63,7 @@ int parse_int(const std::string& option, const std::string& text, int min, int m
     if (text.empty() || end != begin + text.size() || errno == ERANGE)
         throw InputError(option + ": '" + text + "' is not an integer");
     if (v < min || v > max)
-        throw InputError(option + ": " + text + " is out of range " + std::to_string(min) + ".." +
-                         std::to_string(max));
+        throw InputError(option + ": " + text + " is out of range " + std::to_string(min) + ".." + std::to_string(max));
     return static_cast<int>(v);
 }
 

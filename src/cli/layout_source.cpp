@@ -1,7 +1,7 @@
 #include "cli/layout_source.hpp"
 
-#include "cli/errors.hpp"
 #include "base/embedded.hpp"
+#include "cli/errors.hpp"
 
 namespace impossible::cli {
 

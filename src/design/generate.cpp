@@ -36,7 +36,7 @@ struct Box {  // decimetres
 
 struct Door {  // a coincident pair: `a`'s door in its wall, `b`'s facing the other way
     int a = -1, b = -1;
-    int side = 0;            // A's wall: 0 -x, 1 +x, 2 -z, 3 +z
+    int side = 0;             // A's wall: 0 -x, 1 +x, 2 -z, 3 +z
     int wall = 0, along = 0;  // dm: the wall's coordinate, the door's centre along it
     glm::dvec2 centre() const {
         return side < 2 ? glm::dvec2(wall / 10.0, along / 10.0) : glm::dvec2(along / 10.0, wall / 10.0);
@@ -96,7 +96,8 @@ std::optional<Draft> attempt(const GenerateOptions& o, Rng& rng) {
     glm::dvec2 lo = o.play_area[0], hi = lo;
     for (const glm::dvec2& p : o.play_area) lo = glm::min(lo, p), hi = glm::max(hi, p);
     const int bx0 = static_cast<int>(std::ceil(lo.x * 10 - 1e-9)), bz0 = static_cast<int>(std::ceil(lo.y * 10 - 1e-9));
-    const int bx1 = static_cast<int>(std::floor(hi.x * 10 + 1e-9)), bz1 = static_cast<int>(std::floor(hi.y * 10 + 1e-9));
+    const int bx1 = static_cast<int>(std::floor(hi.x * 10 + 1e-9)),
+              bz1 = static_cast<int>(std::floor(hi.y * 10 + 1e-9));
     const int max_side = std::min(kMaxRoomSide, std::max(bx1 - bx0, bz1 - bz0));
     Draft d;
     for (int tries = 0; tries < 2000 && d.rooms.empty(); ++tries) {

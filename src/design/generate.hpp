@@ -37,8 +37,8 @@ inline constexpr int kDoorSideRoom = 8;  // dm beside a free-standing door
 inline constexpr int kMaxGeneratedRooms = 64;
 
 struct GenerateOptions {
-    math::Polygon2 play_area;    // metres (x, z), simple
-    bool rectangle = false;      // write play_area as min/max (a W x D floor)
+    math::Polygon2 play_area;  // metres (x, z), simple
+    bool rectangle = false;    // write play_area as min/max (a W x D floor)
     int rooms = 4;
     std::uint64_t seed = 1;
     std::optional<double> max_overlap;  // percent of the smaller floor

@@ -16,15 +16,14 @@ namespace {
 
 using nlohmann::ordered_json;
 
-const char* const kNames[] = {"hall",    "library", "studio",  "garden", "kitchen", "gallery", "attic",
-                              "cellar",  "chapel",  "workshop", "pantry", "parlour", "nursery", "study",
-                              "armoury", "observatory"};
+const char* const kNames[] = {"hall",    "library", "studio",  "garden",     "kitchen", "gallery",
+                              "attic",   "cellar",  "chapel",  "workshop",   "pantry",  "parlour",
+                              "nursery", "study",   "armoury", "observatory"};
 constexpr int kNameCount = sizeof kNames / sizeof kNames[0];
 
 std::string room_id(int i) {
     return i < kNameCount ? kNames[i] : std::string(kNames[i % kNameCount]) + "_" + std::to_string(i / kNameCount + 1);
 }
-
 
 // HSV to RGB, rounded to hundredths.
 ordered_json hsv(double h, double s, double v) {
@@ -102,8 +101,8 @@ std::string layout_text(const GenerateOptions& o, const std::vector<std::array<i
         j["play_area"] = {{"polygon", poly}};
     }
     const auto& r0 = rooms[0];
-    j["start"] = {{"room", room_id(0)}, {"position", vec(dm(r0[0] + r0[2]) / 2, 1.6, dm(r0[1] + r0[3]) / 2)},
-                  {"yaw_deg", 0.0}};
+    j["start"] = {
+        {"room", room_id(0)}, {"position", vec(dm(r0[0] + r0[2]) / 2, 1.6, dm(r0[1] + r0[3]) / 2)}, {"yaw_deg", 0.0}};
     std::vector<std::vector<DoorPlace>> places(rooms.size());
     ordered_json portals = ordered_json::array();
     for (const auto& d : doors) {

@@ -17,11 +17,10 @@ using nlohmann::ordered_json;
 constexpr int kSide = 40;  // dm: every room is kSide x kSide on the floor
 constexpr int kHeight = 30;
 
-
 struct Cell {
     int row = 0, column = 0;
-    int x0() const { return kSide * row; }             // dm
-    int z1() const { return -kSide * column; }         // dm; the room reaches from z1 - kSide to z1
+    int x0() const { return kSide * row; }      // dm
+    int z1() const { return -kSide * column; }  // dm; the room reaches from z1 - kSide to z1
 };
 
 Cell cell_of(int k) {
@@ -69,9 +68,9 @@ ordered_json room(int k) {
 
 ordered_json portal(const std::string& id, int room, std::array<double, 3> centre, std::array<int, 3> normal,
                     const std::string& target) {
-    return {{"id", id},           {"room", "r" + std::to_string(room)},
-            {"center", centre},   {"normal", normal},
-            {"width", 0.9},       {"height", 2.1},
+    return {{"id", id},         {"room", "r" + std::to_string(room)},
+            {"center", centre}, {"normal", normal},
+            {"width", 0.9},     {"height", 2.1},
             {"target", target}};
 }
 

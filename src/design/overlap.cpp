@@ -35,12 +35,12 @@ std::vector<Overlap> room_overlaps(const std::vector<math::Polygon2>& floors) {
     std::vector<Bounds> bounds(floors.size());
     for (std::size_t i = 0; i < floors.size(); ++i) {
         const math::Polygon2& f = floors[i];
-        const bool finite = std::all_of(f.begin(), f.end(), [](const glm::dvec2& p) {
-            return std::isfinite(p.x) && std::isfinite(p.y);
-        });
+        const bool finite = std::all_of(f.begin(), f.end(),
+                                        [](const glm::dvec2& p) { return std::isfinite(p.x) && std::isfinite(p.y); });
         if (!finite || f.empty()) continue;
         bounds[i].lo = bounds[i].hi = f[0];
-        for (const glm::dvec2& p : f) bounds[i].lo = glm::min(bounds[i].lo, p), bounds[i].hi = glm::max(bounds[i].hi, p);
+        for (const glm::dvec2& p : f)
+            bounds[i].lo = glm::min(bounds[i].lo, p), bounds[i].hi = glm::max(bounds[i].hi, p);
     }
     std::vector<std::size_t> by_x(floors.size());
     std::iota(by_x.begin(), by_x.end(), std::size_t{0});

@@ -19,21 +19,21 @@
 
 namespace impossible::design {
 
-inline constexpr double kSmallRoomArea = 16.0;    // m²
-inline constexpr double kSmallRoomLimit = 56.0;   // %
-inline constexpr double kLargeRoomLimit = 31.0;   // %
-inline constexpr double kMinSharedArea = 1e-6;    // m²; less is touching, not sharing
+inline constexpr double kSmallRoomArea = 16.0;   // m²
+inline constexpr double kSmallRoomLimit = 56.0;  // %
+inline constexpr double kLargeRoomLimit = 31.0;  // %
+inline constexpr double kMinSharedArea = 1e-6;   // m²; less is touching, not sharing
 
 // The published threshold for a pair whose smaller floor is `smaller_area` m².
 double overlap_limit_percent(double smaller_area);
 
 struct Overlap {
-    int a = -1, b = -1;     // room indices, a < b
-    double area = 0.0;       // m² shared
-    double percent = 0.0;    // of the smaller floor
-    double limit = 0.0;      // overlap_limit_percent of the smaller floor
-    bool noticeable = false; // percent > limit
-    math::Polygon2 shared;   // the shared floor
+    int a = -1, b = -1;       // room indices, a < b
+    double area = 0.0;        // m² shared
+    double percent = 0.0;     // of the smaller floor
+    double limit = 0.0;       // overlap_limit_percent of the smaller floor
+    bool noticeable = false;  // percent > limit
+    math::Polygon2 shared;    // the shared floor
 };
 
 // The overlaps of convex floors (one per room), every pair that shares more

@@ -25,11 +25,11 @@ namespace impossible::design {
 
 struct RoomPlacement {
     bool reachable = false;
-    bool inconsistent = false;      // reached elsewhere on the floor by another way
-    math::dmat4 to_physical{1.0};   // the room's coordinates → physical
-    int parent = -1;                // the room it is entered from; -1 for the start
-    int via = -1;                   // the door (of `parent`) walked through
-    int doors = 0;                  // doors passed from the start
+    bool inconsistent = false;     // reached elsewhere on the floor by another way
+    math::dmat4 to_physical{1.0};  // the room's coordinates → physical
+    int parent = -1;               // the room it is entered from; -1 for the start
+    int via = -1;                  // the door (of `parent`) walked through
+    int doors = 0;                 // doors passed from the start
 };
 
 struct Placement {

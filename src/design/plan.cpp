@@ -39,12 +39,14 @@ void arrow(Drawing& d, const std::string& group, const std::string& name, glm::d
     const glm::dvec2 dir = (to - from) / length, side{-dir.y, dir.x};
     const double head = std::min(0.18, 0.6 * length);
     d.shapes.push_back(stroke(group, name, {from, to - dir * head}, c, width, false, dashed));
-    d.shapes.push_back(fill(group, name, {to, to - dir * head + side * (0.45 * head), to - dir * head - side * (0.45 * head)}, c));
+    d.shapes.push_back(
+        fill(group, name, {to, to - dir * head + side * (0.45 * head), to - dir * head - side * (0.45 * head)}, c));
 }
 
 math::Polygon2 circle(glm::dvec2 c, double r) {
     math::Polygon2 out;
-    for (int i = 0; i < 24; ++i) out.push_back(c + r * glm::dvec2(std::cos(i * math::kPi / 12), std::sin(i * math::kPi / 12)));
+    for (int i = 0; i < 24; ++i)
+        out.push_back(c + r * glm::dvec2(std::cos(i * math::kPi / 12), std::sin(i * math::kPi / 12)));
     return out;
 }
 
@@ -113,8 +115,7 @@ void add_windows(Drawing& d, const layout::Layout& layout, const Report& r) {
         if (p.target < 0) continue;
         const layout::Portal& t = layout.portals[p.target];
         const auto other = door_line(t, r.placement.rooms[t.room].to_physical);
-        arrow(d, "windows", p.id, 0.5 * (line.ends[0] + line.ends[1]), 0.5 * (other[0] + other[1]), glass, 0.015,
-              true);
+        arrow(d, "windows", p.id, 0.5 * (line.ends[0] + line.ends[1]), 0.5 * (other[0] + other[1]), glass, 0.015, true);
     }
 }
 
@@ -143,7 +144,8 @@ void add_floor(Drawing& d, const layout::Layout& layout, const Report& r) {
         const bool reachable = r.placement.rooms[i].reachable;
         const int h = static_cast<int>(i);
         d.shapes.push_back(fill("rooms", layout.rooms[i].id, r.floors[i], hue(h, 0.6, 0.9, 0.22)));
-        d.shapes.push_back(stroke("rooms", layout.rooms[i].id, r.floors[i], hue(h, 0.8, 0.6, 1.0), 0.03, true, !reachable));
+        d.shapes.push_back(
+            stroke("rooms", layout.rooms[i].id, r.floors[i], hue(h, 0.8, 0.6, 1.0), 0.03, true, !reachable));
     }
     for (const Overlap& o : r.overlaps) {
         // Light, so that several pairs stacked on one spot still show the rooms under them.
@@ -190,7 +192,8 @@ Drawing plan_drawing(const layout::Layout& layout, const Report& r, const std::v
     const glm::dvec2 s{layout.start.position.x, layout.start.position.z};
     const double yaw = math::radians(layout.start.yaw_deg);
     d.shapes.push_back(fill("start", "start", circle(s, 0.12), {0.85, 0.1, 0.1, 1.0}));
-    arrow(d, "start", "start", s, s + 0.45 * glm::dvec2(-std::sin(yaw), -std::cos(yaw)), {0.85, 0.1, 0.1, 1.0}, 0.035, false);
+    arrow(d, "start", "start", s, s + 0.45 * glm::dvec2(-std::sin(yaw), -std::cos(yaw)), {0.85, 0.1, 0.1, 1.0}, 0.035,
+          false);
     if (!path.empty()) {
         math::Polygon2 line;
         for (const math::HeadPose& p : path) line.push_back({p.position.x, p.position.z});

@@ -37,10 +37,10 @@ struct Shape {
     math::Polygon2 points;  // Fill: a polygon; Stroke: a polyline; Text: its anchor
     bool closed = false;    // Stroke: join the last point to the first
     bool dashed = false;
-    double width = 0.02;    // Stroke: m
+    double width = 0.02;  // Stroke: m
     Rgba colour;
-    std::string text;       // Text
-    double size = 0.2;      // Text: m
+    std::string text;   // Text
+    double size = 0.2;  // Text: m
 };
 
 struct Drawing {

@@ -19,7 +19,8 @@ struct Canvas {
         if (poly.size() < 3) return;
         double top = poly[0].y, bottom = poly[0].y;
         for (const glm::dvec2& p : poly) top = std::min(top, p.y), bottom = std::max(bottom, p.y);
-        const int y0 = std::max(0, static_cast<int>(std::floor(top))), y1 = std::min(h - 1, static_cast<int>(std::ceil(bottom)));
+        const int y0 = std::max(0, static_cast<int>(std::floor(top))),
+                  y1 = std::min(h - 1, static_cast<int>(std::ceil(bottom)));
         std::vector<double> xs;
         for (int y = y0; y <= y1; ++y) {
             const double sy = y + 0.5;
@@ -46,7 +47,8 @@ struct Canvas {
 
 math::Polygon2 disc(glm::dvec2 c, double r) {
     math::Polygon2 out;
-    for (int i = 0; i < 16; ++i) out.push_back(c + r * glm::dvec2(std::cos(i * math::kPi / 8), std::sin(i * math::kPi / 8)));
+    for (int i = 0; i < 16; ++i)
+        out.push_back(c + r * glm::dvec2(std::cos(i * math::kPi / 8), std::sin(i * math::kPi / 8)));
     return out;
 }
 
@@ -104,9 +106,12 @@ image::Pixels plan_raster(const Drawing& d, double k_out) {
                 float sum = 0.0f;
                 for (int sy = 0; sy < kSuper; ++sy)
                     for (int sx = 0; sx < kSuper; ++sx)
-                        sum += canvas.rgb[((static_cast<std::size_t>(y) * kSuper + sy) * canvas.w + x * kSuper + sx) * 3 + c];
+                        sum +=
+                            canvas.rgb[((static_cast<std::size_t>(y) * kSuper + sy) * canvas.w + x * kSuper + sx) * 3 +
+                                       c];
                 const float v = std::clamp(sum / (kSuper * kSuper), 0.0f, 1.0f);
-                image.data[(static_cast<std::size_t>(y) * image.width + x) * 3 + c] = static_cast<std::uint8_t>(std::lround(v * 255.0f));
+                image.data[(static_cast<std::size_t>(y) * image.width + x) * 3 + c] =
+                    static_cast<std::uint8_t>(std::lround(v * 255.0f));
             }
     return image;
 }

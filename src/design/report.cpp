@@ -40,9 +40,9 @@ void write_findings(const layout::Layout& layout, Report& r) {
         r.findings.push_back("no door leads from the start to room \"" + layout.rooms[room].id + "\"");
     for (const Overlap& o : r.overlaps) {
         if (!o.noticeable) continue;
-        r.findings.push_back("rooms \"" + layout.rooms[o.a].id + "\" and \"" + layout.rooms[o.b].id +
-                             "\" overlap by " + fixed(o.percent, 1) + " % of the smaller floor (more than " +
-                             fixed(o.limit, 0) + " % is likely to be noticed)");
+        r.findings.push_back("rooms \"" + layout.rooms[o.a].id + "\" and \"" + layout.rooms[o.b].id + "\" overlap by " +
+                             fixed(o.percent, 1) + " % of the smaller floor (more than " + fixed(o.limit, 0) +
+                             " % is likely to be noticed)");
     }
     for (const RoomFinding& f : r.rooms_outside)
         r.findings.push_back("room \"" + layout.rooms[f.room].id + "\" reaches " + fixed(f.outside_area, 2) +
@@ -84,8 +84,8 @@ std::string report_text(const layout::Layout& layout, const Report& r) {
     out += "\n";
     for (const Overlap& o : r.overlaps) {
         out += "  " + layout.rooms[o.a].id + " / " + layout.rooms[o.b].id + ": " + fixed(o.area, 2) + " m2, " +
-               fixed(o.percent, 1) + " % (limit " + fixed(o.limit, 0) + " %)" +
-               (o.noticeable ? " noticeable" : " ok") + "\n";
+               fixed(o.percent, 1) + " % (limit " + fixed(o.limit, 0) + " %)" + (o.noticeable ? " noticeable" : " ok") +
+               "\n";
     }
     if (layout.play_area) {
         std::vector<int> rooms;

@@ -25,12 +25,12 @@ struct RoomFinding {
 struct Report {
     layout::Summary summary;
     Placement placement;
-    std::vector<math::Polygon2> floors;   // physical floor of each room
+    std::vector<math::Polygon2> floors;  // physical floor of each room
     std::vector<Overlap> overlaps;
-    std::vector<int> unreachable;          // rooms, file order
+    std::vector<int> unreachable;            // rooms, file order
     std::vector<RoomFinding> rooms_outside;  // with a play area: physical floors not inside it
-    std::vector<int> doors_outside;        // portals whose floor line is not inside the play area
-    std::vector<std::string> findings;     // one line each, for people
+    std::vector<int> doors_outside;          // portals whose floor line is not inside the play area
+    std::vector<std::string> findings;       // one line each, for people
 };
 
 Report make_report(const layout::Layout& layout);

@@ -58,8 +58,7 @@ RoomGrid::RoomGrid(const layout::Layout& layout, int room_index, const math::dma
     const std::vector<Footprint> props = prop_footprints(room, o.head_height);
     std::vector<std::array<glm::dvec2, 2>> doors;
     for (const layout::Portal& p : layout.portals)
-        if (p.room == room_index && p.kind == layout::PortalKind::Door)
-            doors.push_back(door_line(p, math::dmat4(1.0)));
+        if (p.room == room_index && p.kind == layout::PortalKind::Door) doors.push_back(door_line(p, math::dmat4(1.0)));
     free_.assign(static_cast<std::size_t>(nx_) * nz_, 0);
     for (int k = 0; k < nz_; ++k) {
         for (int i = 0; i < nx_; ++i) {

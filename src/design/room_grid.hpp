@@ -22,10 +22,10 @@
 namespace impossible::design {
 
 struct GridOptions {
-    double cell = 0.05;          // m; grown for large rooms so a side has at most kMaxCells cells
-    double body_radius = 0.25;   // m from walls, props and doors
-    double edge_margin = 0.1;    // m from the play area's edge
-    double head_height = 1.6;    // props wholly above this + 0.2 m are not obstacles
+    double cell = 0.05;         // m; grown for large rooms so a side has at most kMaxCells cells
+    double body_radius = 0.25;  // m from walls, props and doors
+    double edge_margin = 0.1;   // m from the play area's edge
+    double head_height = 1.6;   // props wholly above this + 0.2 m are not obstacles
 };
 
 inline constexpr int kMaxCells = 400;
@@ -33,8 +33,8 @@ inline constexpr int kMaxCells = 400;
 class RoomGrid {
 public:
     // `to_physical` places the room on the floor; `play_area` may be empty.
-    RoomGrid(const layout::Layout& layout, int room, const math::dmat4& to_physical,
-             const math::Polygon2& play_area, const GridOptions& options);
+    RoomGrid(const layout::Layout& layout, int room, const math::dmat4& to_physical, const math::Polygon2& play_area,
+             const GridOptions& options);
 
     bool free(const glm::dvec2& p) const;  // the cell holding p is free
     // The free point nearest p (p itself if free), or nothing in a room with no free cell.

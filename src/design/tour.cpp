@@ -73,8 +73,9 @@ std::optional<glm::dvec2> Planner::cross(int room, const glm::dvec2& at_in, int 
     const double h = o_.grid.head_height;
     const double y = std::clamp(h, r.center.y - half + 0.05, r.center.y + half - 0.05);
     const glm::dvec2 front = c + n * o_.door_clearance, back = c - n * o_.door_clearance;
-    if (!area_.empty() && !math::segment_inside(area_, to_floor(placement_.rooms[room].to_physical, {front.x, 0, front.y}),
-                                                to_floor(placement_.rooms[room].to_physical, {back.x, 0, back.y})))
+    if (!area_.empty() &&
+        !math::segment_inside(area_, to_floor(placement_.rooms[room].to_physical, {front.x, 0, front.y}),
+                              to_floor(placement_.rooms[room].to_physical, {back.x, 0, back.y})))
         return std::nullopt;
     emit(room, {front.x, y, front.y});
     emit(room, {back.x, y, back.y});

@@ -22,7 +22,7 @@ namespace impossible::design {
 
 struct TourOptions {
     GridOptions grid;
-    double step = 0.05;          // m between poses at most
+    double step = 0.05;            // m between poses at most
     double door_clearance = 0.35;  // m in front of and behind a door where the crossing starts and ends
 };
 
@@ -31,8 +31,8 @@ struct Tour {
     std::vector<int> visited;           // rooms the walker was in, in order of first visit
     std::vector<int> missed;            // rooms a door leads to that the tour could not reach
     int teleports = 0;
-    double physical_distance = 0.0;     // m walked on the floor
-    double virtual_distance = 0.0;      // m between successive virtual heads, portal jumps included
+    double physical_distance = 0.0;  // m walked on the floor
+    double virtual_distance = 0.0;   // m between successive virtual heads, portal jumps included
     // Closest approach of the head to the play area's edge (m; +inf without one).
     double closest_edge = std::numeric_limits<double>::infinity();
 };

@@ -43,7 +43,6 @@ Result<Context> create_context(Backend backend);
 
 // The CLI's default: EGL, falling back to OSMesa when EGL fails.
 // `fallback_note` receives the EGL failure when the fallback was taken.
-Result<Context> create_context_with_fallback(std::optional<Backend> requested,
-                                             std::string* fallback_note = nullptr);
+Result<Context> create_context_with_fallback(std::optional<Backend> requested, std::string* fallback_note = nullptr);
 
 }  // namespace impossible::gl

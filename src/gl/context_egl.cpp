@@ -37,8 +37,8 @@ BackendContext create_egl_context() {
     // messages several lines long; the failure still comes back to us.
     // Unless the user asked for a log level.
     ::setenv("EGL_LOG_LEVEL", "fatal", 0);
-    auto get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
-        eglGetProcAddress("eglGetPlatformDisplayEXT"));
+    auto get_platform_display =
+        reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
     if (!get_platform_display) {
         out.error = "EGL: eglGetPlatformDisplayEXT is not available";
         return out;
@@ -56,9 +56,9 @@ BackendContext create_egl_context() {
         out.error = "EGL: desktop OpenGL is not available";
         return out;
     }
-    const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                              EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                              EGL_NONE};
+    const EGLint attribs[] = {
+        EGL_CONTEXT_MAJOR_VERSION,           4,       EGL_CONTEXT_MINOR_VERSION, 5, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
     state->context = eglCreateContext(state->display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attribs);
     if (state->context == EGL_NO_CONTEXT) {
         out.error = "EGL: cannot create an OpenGL 4.5 core context";

@@ -46,9 +46,19 @@ BackendContext create_osmesa_context() {
     if (!osmesa_driver_ok(&out.error)) return out;
     auto* state = new OSMesaState;
     out.state = {state, destroy_osmesa_state};
-    const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_STENCIL_BITS, 0,
-                           OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 4,
-                           OSMESA_CONTEXT_MINOR_VERSION, 5, 0};
+    const int attribs[] = {OSMESA_FORMAT,
+                           OSMESA_RGBA,
+                           OSMESA_DEPTH_BITS,
+                           0,
+                           OSMESA_STENCIL_BITS,
+                           0,
+                           OSMESA_PROFILE,
+                           OSMESA_CORE_PROFILE,
+                           OSMESA_CONTEXT_MAJOR_VERSION,
+                           4,
+                           OSMESA_CONTEXT_MINOR_VERSION,
+                           5,
+                           0};
     state->context = OSMesaCreateContextAttribs(attribs, nullptr);
     if (!state->context) {
         out.error = "OSMesa: cannot create an OpenGL 4.5 core context";

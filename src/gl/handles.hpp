@@ -56,11 +56,35 @@ using Query = Handle<detail::delete_query>;
 using Program = Handle<detail::delete_program>;
 using Shader = Handle<detail::delete_shader>;
 
-inline Buffer create_buffer() { GLuint n = 0; glCreateBuffers(1, &n); return Buffer(n); }
-inline VertexArray create_vertex_array() { GLuint n = 0; glCreateVertexArrays(1, &n); return VertexArray(n); }
-inline Texture create_texture(GLenum target) { GLuint n = 0; glCreateTextures(target, 1, &n); return Texture(n); }
-inline Renderbuffer create_renderbuffer() { GLuint n = 0; glCreateRenderbuffers(1, &n); return Renderbuffer(n); }
-inline Framebuffer create_framebuffer() { GLuint n = 0; glCreateFramebuffers(1, &n); return Framebuffer(n); }
-inline Query create_query(GLenum target) { GLuint n = 0; glCreateQueries(target, 1, &n); return Query(n); }
+inline Buffer create_buffer() {
+    GLuint n = 0;
+    glCreateBuffers(1, &n);
+    return Buffer(n);
+}
+inline VertexArray create_vertex_array() {
+    GLuint n = 0;
+    glCreateVertexArrays(1, &n);
+    return VertexArray(n);
+}
+inline Texture create_texture(GLenum target) {
+    GLuint n = 0;
+    glCreateTextures(target, 1, &n);
+    return Texture(n);
+}
+inline Renderbuffer create_renderbuffer() {
+    GLuint n = 0;
+    glCreateRenderbuffers(1, &n);
+    return Renderbuffer(n);
+}
+inline Framebuffer create_framebuffer() {
+    GLuint n = 0;
+    glCreateFramebuffers(1, &n);
+    return Framebuffer(n);
+}
+inline Query create_query(GLenum target) {
+    GLuint n = 0;
+    glCreateQueries(target, 1, &n);
+    return Query(n);
+}
 
 }  // namespace impossible::gl

@@ -5,12 +5,16 @@ namespace {
 
 std::string info_log(GLuint object, bool is_program) {
     GLint length = 0;
-    if (is_program) glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
-    else glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+    if (is_program)
+        glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
+    else
+        glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
     std::string log(static_cast<size_t>(length > 0 ? length : 0), '\0');
     if (length > 0) {
-        if (is_program) glGetProgramInfoLog(object, length, nullptr, log.data());
-        else glGetShaderInfoLog(object, length, nullptr, log.data());
+        if (is_program)
+            glGetProgramInfoLog(object, length, nullptr, log.data());
+        else
+            glGetShaderInfoLog(object, length, nullptr, log.data());
     }
     while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
     return log;

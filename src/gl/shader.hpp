@@ -13,9 +13,9 @@
 namespace impossible::gl {
 
 struct ShaderSource {
-    GLenum stage;        // GL_VERTEX_SHADER, GL_FRAGMENT_SHADER
-    std::string name;    // e.g. "shaders/scene.vert.glsl", for messages
-    std::string text;    // the source, without the #version line
+    GLenum stage;      // GL_VERTEX_SHADER, GL_FRAGMENT_SHADER
+    std::string name;  // e.g. "shaders/scene.vert.glsl", for messages
+    std::string text;  // the source, without the #version line
 };
 
 // Compiles each stage as "#version 450 core" + `defines` + text and links.

@@ -9,17 +9,12 @@ void enable(GLenum cap, bool on) { on ? glEnable(cap) : glDisable(cap); }
 
 void blend_func(Blend blend) {
     switch (blend) {
-        case Blend::Replace:
-            break;
+        case Blend::Replace: break;
         case Blend::AlphaOver:
             glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
             break;
-        case Blend::ScaleTarget:
-            glBlendFunc(GL_ZERO, GL_CONSTANT_COLOR);
-            break;
-        case Blend::AddScaledTarget:
-            glBlendFunc(GL_ONE, GL_CONSTANT_COLOR);
-            break;
+        case Blend::ScaleTarget: glBlendFunc(GL_ZERO, GL_CONSTANT_COLOR); break;
+        case Blend::AddScaledTarget: glBlendFunc(GL_ONE, GL_CONSTANT_COLOR); break;
     }
 }
 
@@ -52,8 +47,7 @@ void StateCache::apply(const PassState& s, GLint stencil_ref) {
     }
     const StencilState& t = s.stencil;
     if (all || t.enabled != state_.stencil.enabled) enable(GL_STENCIL_TEST, t.enabled);
-    if (all || t.func != state_.stencil.func || t.read_mask != state_.stencil.read_mask ||
-        stencil_ref != stencil_ref_)
+    if (all || t.func != state_.stencil.func || t.read_mask != state_.stencil.read_mask || stencil_ref != stencil_ref_)
         glStencilFunc(t.func, stencil_ref, t.read_mask);
     if (all || t.fail != state_.stencil.fail || t.depth_fail != state_.stencil.depth_fail ||
         t.pass != state_.stencil.pass)

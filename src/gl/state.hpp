@@ -43,7 +43,7 @@ inline constexpr int kViewports = 2;
 
 struct StencilState {
     bool enabled = false;
-    GLenum func = GL_ALWAYS;   // compared against the reference given with apply()
+    GLenum func = GL_ALWAYS;  // compared against the reference given with apply()
     GLuint read_mask = 0xff;
     GLenum fail = GL_KEEP, depth_fail = GL_KEEP, pass = GL_KEEP;
     GLuint write_mask = 0xff;
@@ -66,9 +66,9 @@ struct PassState {
     GLuint color_mask = kColorAll;   // all colour attachments
     bool write_ids = true;           // draw buffer 1 (ids) too, as color_mask says; false: never
     bool cull_back_faces = true;
-    bool front_clockwise = false;    // fronts wind clockwise (a view through a mirror)
+    bool front_clockwise = false;  // fronts wind clockwise (a view through a mirror)
     StencilState stencil;
-    int clip_distances = 0;          // GL_CLIP_DISTANCE0 .. n - 1 enabled
+    int clip_distances = 0;  // GL_CLIP_DISTANCE0 .. n - 1 enabled
     Blend blend = Blend::Replace;
     bool operator==(const PassState&) const = default;
 };

@@ -48,8 +48,8 @@ double psnr(double sum_sq, double samples) {
 std::optional<std::string> incomparable(const Image& a, const Image& b) {
     if (a.width <= 0 || a.height <= 0) return std::string("the first image is empty");
     if (a.width != b.width || a.height != b.height)
-        return "the images differ in size (" + std::to_string(a.width) + "x" + std::to_string(a.height) +
-               " and " + std::to_string(b.width) + "x" + std::to_string(b.height) + ")";
+        return "the images differ in size (" + std::to_string(a.width) + "x" + std::to_string(a.height) + " and " +
+               std::to_string(b.width) + "x" + std::to_string(b.height) + ")";
     const size_t n = pixel_count(a);
     if (a.rgb.size() != 3 * n || b.rgb.size() != 3 * n) return std::string("internal error: bad colour buffer size");
     if (a.ids.empty() != b.ids.empty()) return std::string("an id map is given for one image only");
@@ -125,8 +125,10 @@ std::vector<std::uint8_t> diff_picture(const Image& a, const Image& b) {
 std::string summary_line(const Comparison& c) {
     std::ostringstream s;
     auto db = [&](double v) {
-        if (std::isinf(v)) s << "inf";
-        else s << v;
+        if (std::isinf(v))
+            s << "inf";
+        else
+            s << v;
     };
     s.setf(std::ios::fixed);
     s.precision(2);

@@ -54,8 +54,8 @@ Result<ImageSize> image_size(const unsigned char* bytes, std::size_t size, int m
     }
     if (out.width < 1 || out.height < 1) return Error{"could not be decoded (it has no pixels)"};
     if (out.width > max_side || out.height > max_side) {
-        return Error{"is " + std::to_string(out.width) + " x " + std::to_string(out.height) +
-                     " pixels; the limit is " + std::to_string(max_side) + " pixels on a side"};
+        return Error{"is " + std::to_string(out.width) + " x " + std::to_string(out.height) + " pixels; the limit is " +
+                     std::to_string(max_side) + " pixels on a side"};
     }
     return out;
 }

@@ -12,7 +12,7 @@ namespace impossible::image {
 // `ids` one cell id a pixel (layout-format.md), or empty where a frame has
 // no id map (a colour PNG read on its own).
 struct Image {
-    int width = 0;   // 2 × eye width for a stereo frame
+    int width = 0;  // 2 × eye width for a stereo frame
     int height = 0;
     std::vector<std::uint8_t> rgb;  // width × height × 3
     std::vector<std::uint8_t> ids;  // width × height, or empty

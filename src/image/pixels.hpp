@@ -16,8 +16,8 @@ namespace impossible::image {
 struct Pixels {
     int width = 0;
     int height = 0;
-    int channels = 4;   // 1 grey, 3 RGB or 4 RGBA
-    int bit_depth = 8;  // of the file it came from (the channels here are always 8-bit)
+    int channels = 4;                // 1 grey, 3 RGB or 4 RGBA
+    int bit_depth = 8;               // of the file it came from (the channels here are always 8-bit)
     std::vector<std::uint8_t> data;  // width × height × channels bytes
 
     std::size_t texels() const { return static_cast<std::size_t>(width) * static_cast<std::size_t>(height); }

@@ -32,7 +32,7 @@ Result<std::string> encode_png(int width, int height, int channels, const std::v
 }
 
 Result<void> write_png(const std::string& path, int width, int height, int channels,
-                      const std::vector<std::uint8_t>& pixels) {
+                       const std::vector<std::uint8_t>& pixels) {
     Result<std::string> encoded = encode_png(width, height, channels, pixels);
     if (!encoded) return Error{path + ": " + encoded.error()};
     return write_output_file(path, *encoded);

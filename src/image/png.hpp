@@ -17,7 +17,7 @@ Result<std::string> encode_png(int width, int height, int channels, const std::v
 // all, never replacing a link or a device. Commands with several outputs
 // encode with encode_png and write them together (cli/output_files.hpp).
 Result<void> write_png(const std::string& path, int width, int height, int channels,
-                      const std::vector<std::uint8_t>& pixels);
+                       const std::vector<std::uint8_t>& pixels);
 
 // Reads a PNG, keeping it as 1 or 3 channels (grey stays grey), with the
 // file's bit depth. The file is

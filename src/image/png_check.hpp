@@ -17,8 +17,8 @@ inline constexpr std::uint64_t kMaxPngPixels = 2ull * 8192 * 8192;
 
 struct PngHeader {
     std::uint32_t width = 0, height = 0;
-    int bit_depth = 0;   // 1, 2, 4, 8 or 16
-    int colour_type = 0; // 0 grey, 2 rgb, 3 palette, 4 grey + alpha, 6 rgba
+    int bit_depth = 0;    // 1, 2, 4, 8 or 16
+    int colour_type = 0;  // 0 grey, 2 rgb, 3 palette, 4 grey + alpha, 6 rgba
 };
 
 // The header of a well-formed PNG, or why it is not one, in words ("is not a

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "layout/limits.hpp"
 #include "base/file_io.hpp"
 #include "base/format.hpp"
 #include "base/user_text.hpp"
+#include "layout/limits.hpp"
 
 namespace impossible::layout::detail {
 
@@ -15,8 +15,8 @@ namespace {
 bool is_identifier_key(std::string_view key) {
     if (key.empty()) return false;
     return std::all_of(key.begin(), key.end(), [](char c) {
-        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-               c == '_' || c == '-' || c == '+';
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-' ||
+               c == '+';
     });
 }
 
@@ -31,8 +31,8 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
     for (std::size_t j = 0; j <= b.size(); ++j) d[j] = j;
     for (std::size_t i = 1; i <= a.size(); ++i) {
         for (std::size_t j = 1; j <= b.size(); ++j) {
-            std::size_t v = std::min({d[(i - 1) * w + j] + 1, d[i * w + j - 1] + 1,
-                                      d[(i - 1) * w + j - 1] + (a[i - 1] != b[j - 1])});
+            std::size_t v = std::min(
+                {d[(i - 1) * w + j] + 1, d[i * w + j - 1] + 1, d[(i - 1) * w + j - 1] + (a[i - 1] != b[j - 1])});
             if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
                 v = std::min(v, d[(i - 2) * w + j - 2] + 1);
             d[i * w + j] = v;
@@ -153,14 +153,12 @@ std::vector<Diagnostic> Checker::finish(std::vector<Pending> pending) const {
 std::vector<Diagnostic> Checker::take_errors() const { return finish(errors_); }
 std::vector<Diagnostic> Checker::take_warnings() const { return finish(warnings_); }
 
-bool Checker::check_fields(const Path& at, const json& object,
-                           std::initializer_list<const char*> known,
+bool Checker::check_fields(const Path& at, const json& object, std::initializer_list<const char*> known,
                            std::initializer_list<const char*> required) {
     for (auto it = object.begin(); it != object.end(); ++it) {
         const std::string& key = it.key();
         if (!key.empty() && key.front() == '_') continue;  // a comment
-        const bool is_known = std::any_of(known.begin(), known.end(),
-                                          [&](const char* k) { return key == k; });
+        const bool is_known = std::any_of(known.begin(), known.end(), [&](const char* k) { return key == k; });
         if (is_known) continue;
         std::string message = "unknown field " + quote(key);
         // The closest known name within two edits ("knid" is "kind", not "id");
@@ -196,8 +194,8 @@ bool Checker::expect_array(const Path& at, const json& value, std::size_t max_si
         return false;
     }
     if (value.size() > max_size) {
-        error(at, "has " + std::to_string(value.size()) + " entries; at most " +
-                      std::to_string(max_size) + " are allowed");
+        error(at,
+              "has " + std::to_string(value.size()) + " entries; at most " + std::to_string(max_size) + " are allowed");
         return false;
     }
     return true;
@@ -215,12 +213,10 @@ std::optional<std::string> Checker::read_id(const Path& at, const json& value) {
     std::optional<std::string> id = read_string(at, value);
     if (!id) return std::nullopt;
     const bool ok = !id->empty() && std::all_of(id->begin(), id->end(), [](char c) {
-        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-               c == '_' || c == '-';
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
     });
     if (!ok) {
-        error(at, "id " + quote(*id) +
-                      " must be letters, digits, '_' and '-' only ([A-Za-z0-9_-]+)");
+        error(at, "id " + quote(*id) + " must be letters, digits, '_' and '-' only ([A-Za-z0-9_-]+)");
         return std::nullopt;
     }
     return id;
@@ -238,8 +234,7 @@ std::optional<double> Checker::read_number(const Path& at, const json& value, Nu
         return std::nullopt;
     }
     const auto out_of_range = [&](double limit, const char* unit) {
-        error(at, shown + " is out of range (|value| must be at most " + format_number(limit) +
-                      unit + ")");
+        error(at, shown + " is out of range (|value| must be at most " + format_number(limit) + unit + ")");
         return std::nullopt;
     };
     const auto at_least = [&](double low, double high, const char* unit) -> std::optional<double> {
@@ -289,8 +284,8 @@ std::optional<double> Checker::read_number(const Path& at, const json& value, Nu
 
 std::optional<glm::dvec2> Checker::read_vec2(const Path& at, const json& value, NumberKind kind) {
     if (!value.is_array() || value.size() != 2) {
-        const std::string got = value.is_array() ? "an array of " + std::to_string(value.size())
-                                                 : json_type_name(value);
+        const std::string got =
+            value.is_array() ? "an array of " + std::to_string(value.size()) : json_type_name(value);
         error(at, "must be an array of 2 numbers [x, z] (got " + got + ")");
         return std::nullopt;
     }
@@ -303,8 +298,8 @@ std::optional<glm::dvec2> Checker::read_vec2(const Path& at, const json& value, 
 std::optional<glm::dvec3> Checker::read_vec3(const Path& at, const json& value, NumberKind kind) {
     const char* shape = kind == NumberKind::Colour ? "[r, g, b]" : "[x, y, z]";
     if (!value.is_array() || value.size() != 3) {
-        const std::string got = value.is_array() ? "an array of " + std::to_string(value.size())
-                                                 : json_type_name(value);
+        const std::string got =
+            value.is_array() ? "an array of " + std::to_string(value.size()) : json_type_name(value);
         error(at, std::string("must be an array of 3 numbers ") + shape + " (got " + got + ")");
         return std::nullopt;
     }

@@ -13,11 +13,11 @@
 
 #include <glm/geometric.hpp>
 
-#include "layout/limits.hpp"
-#include "layout/readers.hpp"
 #include "base/file_io.hpp"
 #include "base/format.hpp"
 #include "base/user_text.hpp"
+#include "layout/limits.hpp"
+#include "layout/readers.hpp"
 
 namespace impossible::layout::detail {
 
@@ -55,8 +55,7 @@ FaceAxes face_axes(const Room& room, Face face) {
 std::array<glm::dvec3, 4> corners(const math::PortalRect& p) {
     const glm::dvec3 right = glm::cross(p.up, p.normal) * (p.width / 2);
     const glm::dvec3 up = p.up * (p.height / 2);
-    return {p.center - right - up, p.center + right - up, p.center + right + up,
-            p.center - right + up};
+    return {p.center - right - up, p.center + right - up, p.center + right + up, p.center - right + up};
 }
 
 // The least overlap of the projections of two convex quads over their edge
@@ -156,11 +155,9 @@ void report_partly_inside(Checker& check, const PortalDraft& draft, int face, co
                       " must lie wholly inside a face of its room, making a hole; move it inside"
                 : "a portal in the plane of a face must lie wholly inside it, making a hole, or wholly "
                   "outside";
-    check.error(draft.path / "center",
-                "the rectangle lies in the plane of the " +
-                    std::string(kFaceNames[static_cast<std::size_t>(face)]) +
-                    " face of room " + quote(room.id) + " but is only partly inside that face (" +
-                    rule + ")");
+    check.error(draft.path / "center", "the rectangle lies in the plane of the " +
+                                           std::string(kFaceNames[static_cast<std::size_t>(face)]) + " face of room " +
+                                           quote(room.id) + " but is only partly inside that face (" + rule + ")");
 }
 
 // Portal `i`'s hole, if it makes one: sets its hole_face and adds it to
@@ -174,16 +171,14 @@ void find_hole(Checker& check, std::size_t i, PortalDraft& draft, const RoomDraf
     bool partly = false;
     for (int face = 0; face < kFaceCount; ++face) {
         const FaceAxes f = face_axes(room.room, static_cast<Face>(face));
-        const bool in_plane = std::all_of(c.begin(), c.end(), [&](const glm::dvec3& v) {
-            return std::abs(v[f.axis] - f.coord) <= eps;
-        });
+        const bool in_plane =
+            std::all_of(c.begin(), c.end(), [&](const glm::dvec3& v) { return std::abs(v[f.axis] - f.coord) <= eps; });
         if (!in_plane || !(rect.normal[f.axis] * f.inward > 0.5)) continue;
         Hole hole;
         hole.portal = i;
         for (std::size_t k = 0; k < 4; ++k) hole.quad[k] = {c[k][f.a], c[k][f.b]};
         const bool inside = std::all_of(hole.quad.begin(), hole.quad.end(), [&](const glm::dvec2& v) {
-            return v.x >= f.lo.x - eps && v.x <= f.hi.x + eps && v.y >= f.lo.y - eps &&
-                   v.y <= f.hi.y + eps;
+            return v.x >= f.lo.x - eps && v.x <= f.hi.x + eps && v.y >= f.lo.y - eps && v.y <= f.hi.y + eps;
         });
         const Quad face_quad = {f.lo, glm::dvec2(f.hi.x, f.lo.y), f.hi, glm::dvec2(f.lo.x, f.hi.y)};
         if (inside) {
@@ -217,12 +212,10 @@ void report_overlapping_holes(Checker& check, const std::vector<PortalDraft>& po
                 if (overlap(list[i].quad, list[j].quad) <= eps) continue;
                 reported[later] = true;
                 check.error(portals[later].path / "center",
-                            "its hole in the " +
-                                std::string(kFaceNames[static_cast<std::size_t>(key.second)]) +
-                                " face of room " +
-                                quote(rooms[static_cast<std::size_t>(key.first)].room.id) +
-                                " overlaps the hole of portal " + quote(portals[first].portal.id) +
-                                " (portals[" + std::to_string(first) + "])");
+                            "its hole in the " + std::string(kFaceNames[static_cast<std::size_t>(key.second)]) +
+                                " face of room " + quote(rooms[static_cast<std::size_t>(key.first)].room.id) +
+                                " overlaps the hole of portal " + quote(portals[first].portal.id) + " (portals[" +
+                                std::to_string(first) + "])");
             }
         }
     }
@@ -230,8 +223,7 @@ void report_overlapping_holes(Checker& check, const std::vector<PortalDraft>& po
 
 }  // namespace
 
-void check_holes(Checker& check, std::vector<PortalDraft>& portals,
-                 const std::vector<RoomDraft>& rooms) {
+void check_holes(Checker& check, std::vector<PortalDraft>& portals, const std::vector<RoomDraft>& rooms) {
     FaceHoles holes;
     for (std::size_t i = 0; i < portals.size(); ++i) {
         PortalDraft& draft = portals[i];

@@ -2,10 +2,10 @@
 
 #include <utility>
 
-#include "layout/limits.hpp"
 #include "base/file_io.hpp"
 #include "base/format.hpp"
 #include "base/user_text.hpp"
+#include "layout/limits.hpp"
 
 namespace impossible::layout::detail {
 
@@ -25,9 +25,7 @@ public:
     bool boolean(bool v) { return place(json(v)) != nullptr; }
     bool number_integer(json::number_integer_t v) { return place(json(v)) != nullptr; }
     bool number_unsigned(json::number_unsigned_t v) { return place(json(v)) != nullptr; }
-    bool number_float(json::number_float_t v, const json::string_t&) {
-        return place(json(v)) != nullptr;
-    }
+    bool number_float(json::number_float_t v, const json::string_t&) { return place(json(v)) != nullptr; }
     bool string(json::string_t& v) { return place(json(std::move(v))) != nullptr; }
     bool binary(json::binary_t&) { return false; }  // never produced by JSON text
     bool start_object(std::size_t) { return open(json::value_t::object); }
@@ -116,9 +114,7 @@ bool is_number_char(char c) {
     return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.' || c == 'e' || c == 'E';
 }
 
-bool is_literal_char(char c) {
-    return is_number_char(c) || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
-}
+bool is_literal_char(char c) { return is_number_char(c) || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
 
 // nlohmann reports where it noticed a problem: for a bad literal or number
 // that is past its start ("tru}" at the "}"), for a misplaced string at its
@@ -208,8 +204,8 @@ private:
     std::vector<Frame> stack_;
 
     void skip_space() {
-        while (pos_ < text_.size() && (text_[pos_] == ' ' || text_[pos_] == '\t' ||
-                                       text_[pos_] == '\n' || text_[pos_] == '\r')) {
+        while (pos_ < text_.size() &&
+               (text_[pos_] == ' ' || text_[pos_] == '\t' || text_[pos_] == '\n' || text_[pos_] == '\r')) {
             ++pos_;
         }
     }
@@ -219,8 +215,7 @@ private:
         if (pos_ >= text_.size()) return false;
         if (++values_ > limits::kMaxValues) {
             limit_offset = pos_;
-            limit_reason = "the JSON holds more than " + std::to_string(limits::kMaxValues) +
-                           " values";
+            limit_reason = "the JSON holds more than " + std::to_string(limits::kMaxValues) + " values";
             return false;
         }
         if (positions_ != nullptr) (*positions_)[pointer] = {pos_, key};
@@ -228,8 +223,7 @@ private:
         if (c == '{' || c == '[') {
             if (stack_.size() >= limits::kMaxDepth) {
                 limit_offset = pos_;
-                limit_reason = "the JSON is nested deeper than " +
-                               std::to_string(limits::kMaxDepth) + " levels";
+                limit_reason = "the JSON is nested deeper than " + std::to_string(limits::kMaxDepth) + " levels";
                 return false;
             }
             Frame frame;
@@ -249,8 +243,7 @@ private:
         }
         if (c == '"') return skip_string();
         const std::size_t start = pos_;
-        while (pos_ < text_.size() && (is_number_char(text_[pos_]) ||
-                                       (text_[pos_] >= 'a' && text_[pos_] <= 'z'))) {
+        while (pos_ < text_.size() && (is_number_char(text_[pos_]) || (text_[pos_] >= 'a' && text_[pos_] <= 'z'))) {
             ++pos_;
         }
         return pos_ > start;
@@ -328,8 +321,7 @@ std::string pointer_token(std::string_view key) {
 JsonParse parse_json(std::string_view text) {
     JsonParse result;
     DomBuilder builder;
-    const bool parsed = json::sax_parse(text.begin(), text.end(), &builder,
-                                        json::input_format_t::json, /*strict=*/true,
+    const bool parsed = json::sax_parse(text.begin(), text.end(), &builder, json::input_format_t::json, /*strict=*/true,
                                         /*ignore_comments=*/false);
     if (!parsed) {
         if (builder.error) {
@@ -341,8 +333,7 @@ JsonParse parse_json(std::string_view text) {
             scanner.run();
             JsonError error;
             error.offset = scanner.limit_offset == kNoOffset ? 0 : scanner.limit_offset;
-            error.message = scanner.limit_reason.empty() ? "the JSON passes a size limit"
-                                                         : scanner.limit_reason;
+            error.message = scanner.limit_reason.empty() ? "the JSON passes a size limit" : scanner.limit_reason;
             result.error = std::move(error);
         }
         return result;

@@ -27,8 +27,7 @@ namespace impossible::layout {
 // Face order used everywhere (room colours, meshes, tracer hits).
 enum class Face : int { Floor = 0, Ceiling, NegX, PosX, NegZ, PosZ };
 inline constexpr int kFaceCount = 6;
-inline constexpr std::array<const char*, kFaceCount> kFaceNames = {"floor", "ceiling", "-x",
-                                                                   "+x",    "-z",      "+z"};
+inline constexpr std::array<const char*, kFaceCount> kFaceNames = {"floor", "ceiling", "-x", "+x", "-z", "+z"};
 
 struct BoxProp {
     glm::dvec3 min{0.0};
@@ -129,9 +128,9 @@ struct Diagnostic {
 };
 
 struct LoadResult {
-    std::optional<Layout> layout;         // set exactly when errors is empty
-    std::vector<Diagnostic> errors;       // every problem found, in file order
-    std::vector<Diagnostic> warnings;     // legal but suspicious, in file order
+    std::optional<Layout> layout;      // set exactly when errors is empty
+    std::vector<Diagnostic> errors;    // every problem found, in file order
+    std::vector<Diagnostic> warnings;  // legal but suspicious, in file order
 };
 
 // Reads and validates a layout file. Never throws for bad input.
@@ -139,8 +138,7 @@ LoadResult load_layout_file(const std::string& path);
 
 // Parses layout text; `source` names it in diagnostics and `base_dir`
 // resolves relative glTF paths (glTF files must exist and parse).
-LoadResult load_layout_text(const std::string& text, const std::string& source,
-                            const std::string& base_dir);
+LoadResult load_layout_text(const std::string& text, const std::string& source, const std::string& base_dir);
 
 // Finds a room by id; -1 if absent.
 int find_room(const Layout& layout, const std::string& id);
@@ -149,18 +147,18 @@ int find_room(const Layout& layout, const std::string& id);
 struct Summary {
     int rooms = 0;
     int portals = 0;
-    int pairs = 0;         // linked portal pairs, doors and windows
+    int pairs = 0;  // linked portal pairs, doors and windows
     int door_pairs = 0;
     int window_pairs = 0;
-    int mirrors = 0;       // mirrors have no pair
+    int mirrors = 0;  // mirrors have no pair
     // Ids of the rooms whose floor rectangle [x, z] is not inside the play
     // area, in file order; empty without a play area.
     std::vector<std::string> rooms_outside_play_area;
     double floor_area = 0.0;                // summed floor areas of the rooms, m²
     std::optional<double> play_area_area;   // m², absent without a play area
     std::optional<double> expansion_ratio;  // floor_area / play_area_area
-    int textured_faces = 0;  // room faces with a texture
-    int images = 0;          // distinct decoded images: room textures and glTF props' textures
+    int textured_faces = 0;                 // room faces with a texture
+    int images = 0;                         // distinct decoded images: room textures and glTF props' textures
 };
 
 Summary summarize(const Layout& layout);

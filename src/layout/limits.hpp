@@ -50,8 +50,8 @@ inline constexpr double kDefaultDepth = 0.25;  // a door's box without "depth"
 // crosses a door one eye can be that far behind the door's plane: the box
 // must reach further than that, plus the near distance, or the eye sees out
 // of its back (or through a clipped back face) into its own room.
-inline constexpr double kHalfTypicalIpd = 0.032;      // half of the default IPD, 0.064 m
-inline constexpr double kNearReversedZ = 1e-5;        // the default depth mode
-inline constexpr double kNearStandard = 0.01;         // --depth standard
+inline constexpr double kHalfTypicalIpd = 0.032;  // half of the default IPD, 0.064 m
+inline constexpr double kNearReversedZ = 1e-5;    // the default depth mode
+inline constexpr double kNearStandard = 0.01;     // --depth standard
 
 }  // namespace impossible::layout::limits

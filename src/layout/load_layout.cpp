@@ -5,12 +5,11 @@
 #include <new>
 
 #include "base/file_io.hpp"
+#include "base/format.hpp"
+#include "base/user_text.hpp"
 #include "layout/json_doc.hpp"
 #include "layout/limits.hpp"
 #include "layout/readers.hpp"
-#include "base/file_io.hpp"
-#include "base/format.hpp"
-#include "base/user_text.hpp"
 #include "math/polygon.hpp"
 
 namespace impossible::layout {
@@ -18,10 +17,10 @@ namespace impossible::layout {
 namespace {
 
 using detail::Checker;
+using detail::field;
 using detail::json;
 using detail::NumberKind;
 using detail::Path;
-using detail::field;
 using impossible::quote;
 
 // The Path of a JSON pointer, for messages about keys found by the scanner.
@@ -74,8 +73,8 @@ std::optional<PlayArea> read_play_polygon(Checker& check, const Path& at, const 
         return std::nullopt;
     }
     if (math::area(area.polygon) < limits::kMinLength * limits::kMinLength) {
-        check.error(list, "the play area is too small (its area is " +
-                              format_number(math::area(area.polygon)) + " m2)");
+        check.error(list,
+                    "the play area is too small (its area is " + format_number(math::area(area.polygon)) + " m2)");
         return std::nullopt;
     }
     area.min = area.max = area.polygon[0];
@@ -97,15 +96,13 @@ std::optional<PlayArea> read_play_area(Checker& check, const Path& at, const jso
     static const char* const axes[] = {"x", "z"};
     for (int a = 0; a < 2; ++a) {
         if (!((*max)[a] > (*min)[a])) {
-            check.error(at / "max", std::string("must be greater than min on both axes (") + axes[a] +
-                                        ": " + format_number((*max)[a]) + " <= " +
-                                        format_number((*min)[a]) + ")");
+            check.error(at / "max", std::string("must be greater than min on both axes (") + axes[a] + ": " +
+                                        format_number((*max)[a]) + " <= " + format_number((*min)[a]) + ")");
             return std::nullopt;
         }
         if ((*max)[a] - (*min)[a] < limits::kMinLength) {
             check.error(at / "max", std::string("the play area is too small (") + axes[a] + ": " +
-                                        format_number((*max)[a] - (*min)[a]) +
-                                        " m; the minimum is " +
+                                        format_number((*max)[a] - (*min)[a]) + " m; the minimum is " +
                                         format_number(limits::kMinLength) + " m)");
             return std::nullopt;
         }
@@ -156,8 +153,8 @@ void read_header(Checker& check, const json& root, Layout& layout) {
         if (!v->is_number()) {
             check.error(top / "version", "must be the number 1 (got " + detail::json_type_name(*v) + ")");
         } else if (v->get<double>() != 1.0) {
-            check.error(top / "version", "unsupported version " + format_number(v->get<double>()) +
-                                             " (this program reads version 1)");
+            check.error(top / "version",
+                        "unsupported version " + format_number(v->get<double>()) + " (this program reads version 1)");
         }
     }
     if (const json* v = field(root, "name")) {
@@ -168,8 +165,7 @@ void read_header(Checker& check, const json& root, Layout& layout) {
 
 // The start's room, found by its id; a warning when the head starts
 // outside it.
-void link_start(Checker& check, StartDraft& start, const std::vector<detail::RoomDraft>& rooms,
-                bool rooms_known) {
+void link_start(Checker& check, StartDraft& start, const std::vector<detail::RoomDraft>& rooms, bool rooms_known) {
     if (!start.room_id) return;
     const Path top;
     const auto room_index = detail::index_by_id(rooms);
@@ -182,25 +178,22 @@ void link_start(Checker& check, StartDraft& start, const std::vector<detail::Roo
     start.start.room = it->second;
     const detail::RoomDraft& room = rooms[static_cast<std::size_t>(it->second)];
     const glm::dvec3& p = start.start.position;
-    const bool inside = glm::all(glm::greaterThanEqual(p, room.room.min)) &&
-                        glm::all(glm::lessThanEqual(p, room.room.max));
+    const bool inside =
+        glm::all(glm::greaterThanEqual(p, room.room.min)) && glm::all(glm::lessThanEqual(p, room.room.max));
     if (start.ok && room.box_ok && !inside) {
-        check.warning(top / "start" / "position",
-                      "the head starts outside its room " + quote(room.room.id));
+        check.warning(top / "start" / "position", "the head starts outside its room " + quote(room.room.id));
     }
 }
 
 // `ids_reliable`: no object repeats a key (a repeated "id" leaves which one
 // counts in doubt).
-void read_layout(Checker& check, const json& root, const std::string& base_dir, Layout& layout,
-                 bool ids_reliable) {
+void read_layout(Checker& check, const json& root, const std::string& base_dir, Layout& layout, bool ids_reliable) {
     const Path top;
     if (!root.is_object()) {
         check.error(top, "a layout must be a JSON object (got " + detail::json_type_name(root) + ")");
         return;
     }
-    check.check_fields(top, root,
-                       {"format", "version", "name", "play_area", "start", "rooms", "portals"},
+    check.check_fields(top, root, {"format", "version", "name", "play_area", "start", "rooms", "portals"},
                        {"format", "version", "start", "rooms"});
     read_header(check, root, layout);
 
@@ -232,8 +225,7 @@ bool blank(std::string_view text) {
                        [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; });
 }
 
-Diagnostic diagnostic_at(std::string_view text, const std::string& source, std::size_t offset,
-                         std::string message) {
+Diagnostic diagnostic_at(std::string_view text, const std::string& source, std::size_t offset, std::string message) {
     const TextPosition position = text_position(text, offset);
     return {source, position.line, position.column, std::move(message)};
 }
@@ -242,8 +234,7 @@ LoadResult load(std::string_view text, const std::string& source, const std::str
     LoadResult result;
     if (text.size() > limits::kMaxFileBytes) {
         result.errors.push_back({source, 0, 0,
-                                 "the file is too large (" + format_bytes(text.size()) +
-                                     "; the limit is " +
+                                 "the file is too large (" + format_bytes(text.size()) + "; the limit is " +
                                      format_bytes(limits::kMaxFileBytes) + ")"});
         return result;
     }
@@ -260,8 +251,7 @@ LoadResult load(std::string_view text, const std::string& source, const std::str
     Checker check(text, source);
     for (const detail::DuplicateKey& duplicate : document.duplicates) {
         const Path at = path_of_pointer(document.root, duplicate.pointer);
-        check.error_at_offset(duplicate.key,
-                              at.display + ": repeated field (an object names each field once)");
+        check.error_at_offset(duplicate.key, at.display + ": repeated field (an object names each field once)");
     }
     Layout layout;
     layout.source = source;
@@ -274,8 +264,7 @@ LoadResult load(std::string_view text, const std::string& source, const std::str
 
 }  // namespace
 
-LoadResult load_layout_text(const std::string& text, const std::string& source,
-                            const std::string& base_dir) {
+LoadResult load_layout_text(const std::string& text, const std::string& source, const std::string& base_dir) {
     try {
         return load(text, source, base_dir);
     } catch (const std::bad_alloc&) {

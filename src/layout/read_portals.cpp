@@ -4,11 +4,11 @@
 
 #include <glm/geometric.hpp>
 
-#include "layout/limits.hpp"
-#include "layout/readers.hpp"
 #include "base/file_io.hpp"
 #include "base/format.hpp"
 #include "base/user_text.hpp"
+#include "layout/limits.hpp"
+#include "layout/readers.hpp"
 #include "math/conventions.hpp"
 
 namespace impossible::layout::detail {
@@ -27,8 +27,10 @@ void warn_if_shallow(Checker& check, const Path& at, double depth) {
                                         " m) behind the door's plane sees out of its back; make it at least " +
                                         format_number(needed) + " m");
     } else if (depth < limits::kHalfTypicalIpd + limits::kNearStandard) {
-        check.warning(at / "depth", "the box is " + format_number(depth) + " m deep: with --depth standard (near plane " +
-                                        format_number(limits::kNearStandard) + " m) an eye half an IPD behind the "
+        check.warning(at / "depth", "the box is " + format_number(depth) +
+                                        " m deep: with --depth standard (near plane " +
+                                        format_number(limits::kNearStandard) +
+                                        " m) an eye half an IPD behind the "
                                         "door's plane sees through its back; make it at least " +
                                         format_number(needed_standard) + " m");
     }
@@ -82,9 +84,9 @@ bool read_up(Checker& check, const Path& at, const json& value, const std::optio
     if (!(angle > limits::kMinUpAngleDeg)) {
         const std::string angles = "(the angle between them is " + format_number(angle) + "°; it must exceed " +
                                    format_number(limits::kMinUpAngleDeg) + "°)";
-        check.error(up_at, up_value ? "must not be parallel to the normal " + angles
-                                    : "is parallel to the default up [0, 1, 0] " + angles +
-                                          "; give the portal an \"up\"");
+        check.error(up_at, up_value
+                               ? "must not be parallel to the normal " + angles
+                               : "is parallel to the default up [0, 1, 0] " + angles + "; give the portal an \"up\"");
         return false;
     }
     rect.normal = n;
@@ -139,8 +141,7 @@ bool read_kind(Checker& check, const Path& at, const json& value, PortalKind& ki
     const std::string shown = name->size() <= kShown ? quote(*name)
                                                      : quote(name->substr(0, kShown)) + "... (" +
                                                            std::to_string(name->size() - kShown) + " more bytes)";
-    check.error(at, "unknown kind " + shown +
-                        " (the kinds are \"door\", the default, \"mirror\" and \"window\")");
+    check.error(at, "unknown kind " + shown + " (the kinds are \"door\", the default, \"mirror\" and \"window\")");
     return false;
 }
 
@@ -152,23 +153,29 @@ void check_kind_fields(Checker& check, const Path& at, const json& value, Portal
     };
     switch (kind) {
         case PortalKind::Door:
-            refuse("tint", "a door has no tint (only mirrors and windows tint the light); remove it, or set "
-                           "\"kind\" to \"mirror\" or \"window\"");
-            refuse("reflectance", "a door has no reflectance (only a window's glass reflects); remove it, or set "
-                                  "\"kind\" to \"window\"");
+            refuse("tint",
+                   "a door has no tint (only mirrors and windows tint the light); remove it, or set "
+                   "\"kind\" to \"mirror\" or \"window\"");
+            refuse("reflectance",
+                   "a door has no reflectance (only a window's glass reflects); remove it, or set "
+                   "\"kind\" to \"window\"");
             break;
         case PortalKind::Mirror:
-            refuse("reflectance", "a mirror has no reflectance (it reflects all the light, times its \"tint\"); "
-                                  "remove it, or set \"kind\" to \"window\" for glass that shows its target "
-                                  "and reflects a share");
-            refuse("depth", "a mirror has no depth (it has no box, only its rectangle in a face of its room); "
-                            "remove it");
-            refuse("target", "a mirror has no target (it reflects its own room); remove it, or set \"kind\" "
-                             "to \"window\" to look into the target's room");
+            refuse("reflectance",
+                   "a mirror has no reflectance (it reflects all the light, times its \"tint\"); "
+                   "remove it, or set \"kind\" to \"window\" for glass that shows its target "
+                   "and reflects a share");
+            refuse("depth",
+                   "a mirror has no depth (it has no box, only its rectangle in a face of its room); "
+                   "remove it");
+            refuse("target",
+                   "a mirror has no target (it reflects its own room); remove it, or set \"kind\" "
+                   "to \"window\" to look into the target's room");
             break;
         case PortalKind::Window:
-            refuse("depth", "a window has no depth (it has no box, only its rectangle in a face of its room); "
-                            "remove it");
+            refuse("depth",
+                   "a window has no depth (it has no box, only its rectangle in a face of its room); "
+                   "remove it");
             break;
     }
 }
@@ -187,15 +194,16 @@ PortalDraft read_portal(Checker& check, const Path& at, const json& value) {
     const bool door = draft.kind_ok && portal.kind == PortalKind::Door;
     const bool mirror = draft.kind_ok && portal.kind == PortalKind::Mirror;
     const bool window = draft.kind_ok && portal.kind == PortalKind::Window;
-    check.check_fields(at, value,
-                       {"id", "room", "center", "normal", "up", "width", "height", "depth", "kind", "target", "tint",
-                        "reflectance"},
-                       {"id", "room", "center", "normal", "width", "height"});
+    check.check_fields(
+        at, value,
+        {"id", "room", "center", "normal", "up", "width", "height", "depth", "kind", "target", "tint", "reflectance"},
+        {"id", "room", "center", "normal", "width", "height"});
     if (field(value, "target") == nullptr) {
         if (door) check.error(at, "missing required field \"target\" (the id of the door it leads to)");
         if (window) {
-            check.error(at, "missing required field \"target\" (a window is one of a pair: the id of the window "
-                            "whose room it shows)");
+            check.error(at,
+                        "missing required field \"target\" (a window is one of a pair: the id of the window "
+                        "whose room it shows)");
         }
     }
     if (draft.kind_ok) check_kind_fields(check, at, value, portal.kind);
@@ -226,29 +234,26 @@ void check_pair(Checker& check, const PortalDraft& draft, const PortalDraft& oth
         const std::string other_kind = kind_name(other.portal.kind);
         check.error(draft.has_kind ? draft.path / "kind" : draft.path / "target",
                     "a " + kind + " cannot be paired with the " + other_kind + " " + quote(other.portal.id) +
-                        " (paired portals must be of the same kind; make both " + kind + "s or both " +
-                        other_kind + "s)");
+                        " (paired portals must be of the same kind; make both " + kind + "s or both " + other_kind +
+                        "s)");
     }
     if (!draft.rect_ok || !other.rect_ok) return;
     const math::PortalRect& a = other.portal.rect;
     const math::PortalRect& b = draft.portal.rect;
     if (std::abs(a.width - b.width) > limits::kPairSizeTolerance) {
-        check.error(draft.path / "width",
-                    format_number(b.width) + " differs from the width " + format_number(a.width) +
-                        " of its target " + quote(other.portal.id) +
-                        " (paired portals must have the same size)");
+        check.error(draft.path / "width", format_number(b.width) + " differs from the width " + format_number(a.width) +
+                                              " of its target " + quote(other.portal.id) +
+                                              " (paired portals must have the same size)");
     }
     if (std::abs(a.height - b.height) > limits::kPairSizeTolerance) {
-        check.error(draft.path / "height",
-                    format_number(b.height) + " differs from the height " +
-                        format_number(a.height) + " of its target " + quote(other.portal.id) +
-                        " (paired portals must have the same size)");
+        check.error(draft.path / "height", format_number(b.height) + " differs from the height " +
+                                               format_number(a.height) + " of its target " + quote(other.portal.id) +
+                                               " (paired portals must have the same size)");
     }
 }
 
 // A portal's room, found by its id.
-void link_room(Checker& check, PortalDraft& draft, const std::map<std::string, int>& room_index,
-               bool rooms_known) {
+void link_room(Checker& check, PortalDraft& draft, const std::map<std::string, int>& room_index, bool rooms_known) {
     if (!draft.room_id) return;
     const auto it = room_index.find(*draft.room_id);
     if (it == room_index.end()) {
@@ -276,17 +281,17 @@ void link_target(Checker& check, std::size_t i, std::vector<PortalDraft>& portal
     const PortalDraft& other = portals[static_cast<std::size_t>(it->second)];
     if (other.kind_ok && other.portal.kind == PortalKind::Mirror) {
         const std::string kind = draft.kind_ok ? kind_name(draft.portal.kind) : "portal";
-        check.error(draft.path / "target",
-                    quote(other.portal.id) + " is a mirror, which has no partner (it reflects its own room); "
-                    "a " + kind + " must target a " + kind + " that names it back");
+        check.error(draft.path / "target", quote(other.portal.id) +
+                                               " is a mirror, which has no partner (it reflects its own room); "
+                                               "a " +
+                                               kind + " must target a " + kind + " that names it back");
         return;
     }
     if (!draft.has_id || !other.target_id) return;  // reported where it was read
     if (*other.target_id != draft.portal.id) {
-        check.error(draft.path / "target",
-                    "portal " + quote(other.portal.id) + " targets " + quote(*other.target_id) +
-                        ", not " + quote(draft.portal.id) +
-                        " (paired portals must name each other)");
+        check.error(draft.path / "target", "portal " + quote(other.portal.id) + " targets " + quote(*other.target_id) +
+                                               ", not " + quote(draft.portal.id) +
+                                               " (paired portals must name each other)");
         return;
     }
     draft.portal.target = it->second;
@@ -306,8 +311,7 @@ std::vector<PortalDraft> read_portals(Checker& check, const Path& at, const json
         if (draft.has_id) {
             const auto [it, inserted] = first_use.emplace(draft.portal.id, i);
             if (!inserted) {
-                check.error(at / i / "id", "duplicate portal id " + quote(draft.portal.id) +
-                                               " (also used by portals[" +
+                check.error(at / i / "id", "duplicate portal id " + quote(draft.portal.id) + " (also used by portals[" +
                                                std::to_string(it->second) + "])");
             }
         }
@@ -316,8 +320,8 @@ std::vector<PortalDraft> read_portals(Checker& check, const Path& at, const json
     return drafts;
 }
 
-void link_portals(Checker& check, std::vector<PortalDraft>& portals,
-                  const std::vector<RoomDraft>& rooms, bool rooms_known) {
+void link_portals(Checker& check, std::vector<PortalDraft>& portals, const std::vector<RoomDraft>& rooms,
+                  bool rooms_known) {
     const std::map<std::string, int> room_index = index_by_id(rooms);
     const std::map<std::string, int> portal_index = index_by_id(portals);
     for (std::size_t i = 0; i < portals.size(); ++i) {

@@ -1,21 +1,19 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "base/file_io.hpp"
 #include "assets/gltf_model.hpp"
-#include "image/decode.hpp"
-#include "layout/limits.hpp"
-#include "layout/readers.hpp"
 #include "base/file_io.hpp"
 #include "base/format.hpp"
 #include "base/user_text.hpp"
+#include "image/decode.hpp"
+#include "layout/limits.hpp"
+#include "layout/readers.hpp"
 
 namespace impossible::layout::detail {
 
 namespace {
 
-std::optional<BoxProp> read_box_prop(Checker& check, const Path& at, const json& value,
-                                     const glm::dvec3& room_colour) {
+std::optional<BoxProp> read_box_prop(Checker& check, const Path& at, const json& value, const glm::dvec3& room_colour) {
     check.check_fields(at, value, {"box", "color"}, {"box"});
     BoxProp prop;
     prop.color = room_colour;
@@ -39,15 +37,13 @@ std::optional<BoxProp> read_box_prop(Checker& check, const Path& at, const json&
     static const char* const axes[] = {"x", "y", "z"};
     for (int a = 0; a < 3; ++a) {
         if (!((*max)[a] > (*min)[a])) {
-            check.error(box_at / "max", std::string("must be greater than min on every axis (") +
-                                            axes[a] + ": " + format_number((*max)[a]) + " <= " +
-                                            format_number((*min)[a]) + ")");
+            check.error(box_at / "max", std::string("must be greater than min on every axis (") + axes[a] + ": " +
+                                            format_number((*max)[a]) + " <= " + format_number((*min)[a]) + ")");
             return std::nullopt;
         }
         if ((*max)[a] - (*min)[a] < limits::kMinLength) {
             check.error(box_at / "max", std::string("the box is too thin (") + axes[a] + ": " +
-                                            format_number((*max)[a] - (*min)[a]) +
-                                            " m; the minimum is " +
+                                            format_number((*max)[a] - (*min)[a]) + " m; the minimum is " +
                                             format_number(limits::kMinLength) + " m)");
             return std::nullopt;
         }
@@ -58,8 +54,7 @@ std::optional<BoxProp> read_box_prop(Checker& check, const Path& at, const json&
     return prop;
 }
 
-std::optional<GltfProp> read_gltf_prop(Checker& check, const Path& at, const json& value,
-                                       assets::AssetCache& models) {
+std::optional<GltfProp> read_gltf_prop(Checker& check, const Path& at, const json& value, assets::AssetCache& models) {
     check.check_fields(at, value, {"gltf", "position", "yaw_deg", "scale"}, {"gltf"});
     GltfProp prop;
     bool ok = true;

@@ -2,11 +2,11 @@
 #include <map>
 #include <memory>
 
-#include "layout/limits.hpp"
-#include "layout/readers.hpp"
 #include "base/file_io.hpp"
 #include "base/format.hpp"
 #include "base/user_text.hpp"
+#include "layout/limits.hpp"
+#include "layout/readers.hpp"
 
 namespace impossible::layout::detail {
 
@@ -79,7 +79,8 @@ RoomDraft read_room(Checker& check, const Path& at, const json& value, assets::A
     RoomDraft draft;
     draft.path = at;
     if (!check.expect_object(at, value)) return draft;
-    check.check_fields(at, value, {"id", "min", "max", "color", "face_colors", "checker", "textures", "texture_size", "props"},
+    check.check_fields(at, value,
+                       {"id", "min", "max", "color", "face_colors", "checker", "textures", "texture_size", "props"},
                        {"id", "min", "max"});
     Room& room = draft.room;
     if (const json* id = field(value, "id")) {
@@ -98,14 +99,12 @@ RoomDraft read_room(Checker& check, const Path& at, const json& value, assets::A
         static const char* const axes[] = {"x", "y", "z"};
         for (int a = 0; a < 3 && draft.box_ok; ++a) {
             if (!((*max)[a] > (*min)[a])) {
-                check.error(at / "max", std::string("must be greater than min on every axis (") +
-                                            axes[a] + ": " + format_number((*max)[a]) +
-                                            " <= " + format_number((*min)[a]) + ")");
+                check.error(at / "max", std::string("must be greater than min on every axis (") + axes[a] + ": " +
+                                            format_number((*max)[a]) + " <= " + format_number((*min)[a]) + ")");
                 draft.box_ok = false;
             } else if ((*max)[a] - (*min)[a] < limits::kMinLength) {
                 check.error(at / "max", std::string("the room is too thin (") + axes[a] + ": " +
-                                            format_number((*max)[a] - (*min)[a]) +
-                                            " m; the minimum is " +
+                                            format_number((*max)[a] - (*min)[a]) + " m; the minimum is " +
                                             format_number(limits::kMinLength) + " m)");
                 draft.box_ok = false;
             }
@@ -136,8 +135,7 @@ RoomDraft read_room(Checker& check, const Path& at, const json& value, assets::A
 
 }  // namespace
 
-std::vector<RoomDraft> read_rooms(Checker& check, const Path& at, const json& rooms,
-                                  assets::AssetCache& models) {
+std::vector<RoomDraft> read_rooms(Checker& check, const Path& at, const json& rooms, assets::AssetCache& models) {
     std::vector<RoomDraft> drafts;
     if (!check.expect_array(at, rooms, limits::kMaxRooms)) return drafts;
     if (rooms.empty()) {
@@ -150,8 +148,7 @@ std::vector<RoomDraft> read_rooms(Checker& check, const Path& at, const json& ro
         if (draft.has_id) {
             const auto [it, inserted] = first_use.emplace(draft.room.id, i);
             if (!inserted) {
-                check.error(at / i / "id", "duplicate room id " + quote(draft.room.id) +
-                                               " (also used by rooms[" +
+                check.error(at / i / "id", "duplicate room id " + quote(draft.room.id) + " (also used by rooms[" +
                                                std::to_string(it->second) + "])");
             }
         }

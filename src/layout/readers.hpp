@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "assets/asset_cache.hpp"
+#include "assets/gltf_model.hpp"
 #include "base/result.hpp"
 #include "layout/checker.hpp"
-#include "assets/gltf_model.hpp"
 #include "layout/layout.hpp"
 
 namespace impossible::layout::detail {
@@ -31,14 +31,12 @@ struct PortalDraft {
     std::optional<std::string> room_id;
     std::optional<std::string> target_id;
     bool has_id = false;
-    bool rect_ok = false;  // center, normal, up, width, height, depth read
+    bool rect_ok = false;   // center, normal, up, width, height, depth read
     bool has_kind = false;  // "kind" is written
     bool kind_ok = true;    // "kind" is absent (a door) or one of the three kinds
 };
 
-
-std::vector<RoomDraft> read_rooms(Checker& check, const Path& at, const json& rooms,
-                                  assets::AssetCache& models);
+std::vector<RoomDraft> read_rooms(Checker& check, const Path& at, const json& rooms, assets::AssetCache& models);
 
 void read_props(Checker& check, const Path& at, const json& props, const glm::dvec3& room_colour,
                 assets::AssetCache& models, std::vector<Prop>& out);
@@ -47,14 +45,13 @@ std::vector<PortalDraft> read_portals(Checker& check, const Path& at, const json
 
 // Resolves each portal's room and target, and checks the pairs. Without
 // `rooms_known` (the room list had errors) an unknown room id is not reported.
-void link_portals(Checker& check, std::vector<PortalDraft>& portals,
-                  const std::vector<RoomDraft>& rooms, bool rooms_known);
+void link_portals(Checker& check, std::vector<PortalDraft>& portals, const std::vector<RoomDraft>& rooms,
+                  bool rooms_known);
 
 // The hole rule (layout-format.md, "The portal box"): sets hole_face, and
 // reports rectangles partly inside a face, overlapping holes, and mirrors
 // and windows that stand free (they must lie in a face of their room).
-void check_holes(Checker& check, std::vector<PortalDraft>& portals,
-                 const std::vector<RoomDraft>& rooms);
+void check_holes(Checker& check, std::vector<PortalDraft>& portals, const std::vector<RoomDraft>& rooms);
 
 // Index of each id (the first, where ids repeat).
 template <class Draft>

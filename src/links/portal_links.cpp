@@ -13,8 +13,7 @@ PortalLinks link_portals(const layout::Layout& layout) {
             if (valid_index(p.room, layout.rooms.size())) links.room_portals[p.room].push_back(static_cast<int>(i));
             continue;
         }
-        if (!valid_index(p.room, layout.rooms.size()) ||
-            !valid_index(p.target, layout.portals.size()) ||
+        if (!valid_index(p.room, layout.rooms.size()) || !valid_index(p.target, layout.portals.size()) ||
             !valid_index(layout.portals[p.target].room, layout.rooms.size()))
             continue;
         links.transfer[i] = math::transfer_matrix(p.rect, layout.portals[p.target].rect);

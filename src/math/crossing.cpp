@@ -10,12 +10,10 @@ namespace impossible::math {
 
 bool within_rectangle(const PortalRect& p, const dvec3& point) {
     const dvec3 v = point - p.center;
-    return std::abs(glm::dot(v, portal_right(p))) <= 0.5 * p.width &&
-           std::abs(glm::dot(v, p.up)) <= 0.5 * p.height;
+    return std::abs(glm::dot(v, portal_right(p))) <= 0.5 * p.width && std::abs(glm::dot(v, p.up)) <= 0.5 * p.height;
 }
 
-std::optional<SegmentCrossing> segment_crossing(const PortalRect& p, const dvec3& p0,
-                                                const dvec3& p1) {
+std::optional<SegmentCrossing> segment_crossing(const PortalRect& p, const dvec3& p0, const dvec3& p1) {
     const double d0 = signed_distance(p, p0);
     const double d1 = signed_distance(p, p1);
     if (!(d0 >= 0.0 && d1 < 0.0)) return std::nullopt;  // also rejects NaN

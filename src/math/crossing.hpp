@@ -16,14 +16,13 @@
 namespace impossible::math {
 
 struct SegmentCrossing {
-    double t = 0.0;   // parameter along p0 → p1, in [0, 1]
+    double t = 0.0;    // parameter along p0 → p1, in [0, 1]
     dvec3 point{0.0};  // p0 + t·(p1 - p0), on the plane up to rounding
 };
 
 // t = d0 / (d0 - d1): both distances are computed once and the division of
 // two same-signed quantities keeps t in [0, 1] without cancellation.
-std::optional<SegmentCrossing> segment_crossing(const PortalRect& p, const dvec3& p0,
-                                                const dvec3& p1);
+std::optional<SegmentCrossing> segment_crossing(const PortalRect& p, const dvec3& p0, const dvec3& p1);
 
 // A point (assumed on the plane) lies within the rectangle, edges included.
 bool within_rectangle(const PortalRect& p, const dvec3& point);

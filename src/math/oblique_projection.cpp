@@ -23,8 +23,7 @@ void set_row(dmat4& m, int r, const dvec4& v) {
 double plane_scale(const dmat4& projection, const dvec4& plane, double far_z, double k) {
     const dmat4 inv = glm::inverse(projection);
     const dvec4 plane_clip = glm::transpose(inv) * plane;  // C' = P⁻ᵀ·C
-    const dvec4 q_clip(plane_clip.x >= 0.0 ? 1.0 : -1.0, plane_clip.y >= 0.0 ? 1.0 : -1.0, far_z,
-                       1.0);
+    const dvec4 q_clip(plane_clip.x >= 0.0 ? 1.0 : -1.0, plane_clip.y >= 0.0 ? 1.0 : -1.0, far_z, 1.0);
     const dvec4 q = inv * q_clip;
     const double w_q = glm::dot(row(projection, 3), q);  // = q_clip.w = 1 up to rounding
     const double c_q = glm::dot(plane, q);
@@ -51,4 +50,3 @@ dmat4 oblique_reversed_z(const dmat4& projection, const dvec4& plane_eye) {
 }
 
 }  // namespace impossible::math
-

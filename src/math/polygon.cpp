@@ -28,9 +28,7 @@ double signed_area(const Polygon2& poly) {
 
 double area(const Polygon2& poly) { return std::abs(signed_area(poly)); }
 
-Polygon2 rectangle(const glm::dvec2& min, const glm::dvec2& max) {
-    return {min, {max.x, min.y}, max, {min.x, max.y}};
-}
+Polygon2 rectangle(const glm::dvec2& min, const glm::dvec2& max) { return {min, {max.x, min.y}, max, {min.x, max.y}}; }
 
 double distance_to_segment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
     const glm::dvec2 ab = b - a;
@@ -64,8 +62,8 @@ bool contains(const Polygon2& poly, const glm::dvec2& p, double tolerance) {
 bool segments_intersect(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c, const glm::dvec2& d) {
     const double d1 = orient(c, d, a), d2 = orient(c, d, b), d3 = orient(a, b, c), d4 = orient(a, b, d);
     if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
-    return (d1 == 0 && on_segment(c, d, a)) || (d2 == 0 && on_segment(c, d, b)) ||
-           (d3 == 0 && on_segment(a, b, c)) || (d4 == 0 && on_segment(a, b, d));
+    return (d1 == 0 && on_segment(c, d, a)) || (d2 == 0 && on_segment(c, d, b)) || (d3 == 0 && on_segment(a, b, c)) ||
+           (d4 == 0 && on_segment(a, b, d));
 }
 
 std::optional<PolygonProblem> simple_polygon_problem(const Polygon2& poly) {
@@ -119,9 +117,7 @@ Polygon2 clip_to_convex(const Polygon2& subject, const Polygon2& convex) {
     return out;
 }
 
-double intersection_area(const Polygon2& poly, const Polygon2& convex) {
-    return area(clip_to_convex(poly, convex));
-}
+double intersection_area(const Polygon2& poly, const Polygon2& convex) { return area(clip_to_convex(poly, convex)); }
 
 bool convex_inside(const Polygon2& convex, const Polygon2& poly, double tolerance) {
     return area(convex) - intersection_area(poly, convex) <= tolerance;

@@ -27,8 +27,7 @@ dmat4 portal_frame_inverse(const PortalRect& p) {
         inv[c][1] = p.up[c];
         inv[c][2] = p.normal[c];
     }
-    inv[3] = dvec4(-glm::dot(r, p.center), -glm::dot(p.up, p.center),
-                   -glm::dot(p.normal, p.center), 1.0);
+    inv[3] = dvec4(-glm::dot(r, p.center), -glm::dot(p.up, p.center), -glm::dot(p.normal, p.center), 1.0);
     return inv;
 }
 
@@ -63,9 +62,7 @@ dmat4 transfer_matrix(const PortalRect& a, const PortalRect& b) {
     return m;
 }
 
-double signed_distance(const PortalRect& p, const dvec3& point) {
-    return glm::dot(point - p.center, p.normal);
-}
+double signed_distance(const PortalRect& p, const dvec3& point) { return glm::dot(point - p.center, p.normal); }
 
 dvec4 portal_plane(const PortalRect& p) { return dvec4(p.normal, -glm::dot(p.normal, p.center)); }
 
@@ -77,16 +74,15 @@ dvec4 transform_plane(const dmat4& m, const dvec4& plane) {
 
 bool in_column(const PortalRect& p, const dvec3& eye) {
     const dvec3 v = eye - p.center;
-    return std::abs(glm::dot(v, portal_right(p))) <= 0.5 * p.width &&
-           std::abs(glm::dot(v, p.up)) <= 0.5 * p.height && glm::dot(v, p.normal) >= -p.depth;
+    return std::abs(glm::dot(v, portal_right(p))) <= 0.5 * p.width && std::abs(glm::dot(v, p.up)) <= 0.5 * p.height &&
+           glm::dot(v, p.normal) >= -p.depth;
 }
 
 void box_corners(const PortalRect& p, dvec3 out[8]) {
     const dvec3 r = (0.5 * p.width) * portal_right(p);
     const dvec3 u = (0.5 * p.height) * p.up;
     const dvec3 back = -p.depth * p.normal;
-    const dvec3 front[4] = {p.center - r - u, p.center + r - u, p.center + r + u,
-                            p.center - r + u};
+    const dvec3 front[4] = {p.center - r - u, p.center + r - u, p.center + r + u, p.center - r + u};
     for (int k = 0; k < 4; ++k) {
         out[k] = front[k];
         out[k + 4] = front[k] + back;

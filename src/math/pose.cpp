@@ -45,8 +45,7 @@ dmat3 rotation_z_deg(double deg) {
 }
 
 dmat3 head_rotation(const HeadPose& pose) {
-    return rotation_y_deg(pose.yaw_deg) * rotation_x_deg(pose.pitch_deg) *
-           rotation_z_deg(-pose.roll_deg);
+    return rotation_y_deg(pose.yaw_deg) * rotation_x_deg(pose.pitch_deg) * rotation_z_deg(-pose.roll_deg);
 }
 
 HeadPose head_pose_from(const dvec3& position, const dmat3& r) {

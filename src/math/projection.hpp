@@ -13,7 +13,7 @@
 namespace impossible::math {
 
 struct Frustum {
-    double fov_y_deg = 90.0;  // vertical field of view, symmetric
+    double fov_y_deg = 90.0;     // vertical field of view, symmetric
     double aspect = 16.0 / 9.0;  // width / height
     double near = 0.01;
 };

@@ -10,12 +10,12 @@ namespace impossible::math {
 
 struct View {
     math::HeadPose head;
-    int room = 0;              // index of the room the head is in
-    double ipd = 0.064;        // metres between the eyes
-    double fov_y_deg = 90.0;   // vertical field of view of each eye
-    int eye_width = 1280;      // each eye's image; the side-by-side image is 2 × width
+    int room = 0;             // index of the room the head is in
+    double ipd = 0.064;       // metres between the eyes
+    double fov_y_deg = 90.0;  // vertical field of view of each eye
+    int eye_width = 1280;     // each eye's image; the side-by-side image is 2 × width
     int eye_height = 720;
-    int max_depth = 8;         // portals one line of sight may pass
+    int max_depth = 8;  // portals one line of sight may pass
 };
 
 }  // namespace impossible::math

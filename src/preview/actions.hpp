@@ -23,9 +23,9 @@ enum class Action {
 
 // The movement keys held down now: -1, 0 or +1 on each axis.
 struct HeldKeys {
-    int forward = 0;  // W or Up / S or Down
-    int right = 0;    // D or Right / A or Left
-    int up = 0;       // E / Q
+    int forward = 0;    // W or Up / S or Down
+    int right = 0;      // D or Right / A or Left
+    int up = 0;         // E / Q
     bool fast = false;  // Shift
 };
 

@@ -5,8 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli/errors.hpp"
 #include "base/format.hpp"
+#include "cli/errors.hpp"
 #include "image/png.hpp"
 
 namespace impossible::preview {

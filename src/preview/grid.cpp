@@ -3,14 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "preview/head.hpp"
 #include "math/polygon.hpp"
+#include "preview/head.hpp"
 
 namespace impossible::preview {
 
-float grid_alpha(double d) {
-    return static_cast<float>(std::clamp(1.0 - d / kGridDistance, 0.0, 1.0));
-}
+float grid_alpha(double d) { return static_cast<float>(std::clamp(1.0 - d / kGridDistance, 0.0, 1.0)); }
 
 namespace {
 
@@ -44,10 +42,9 @@ int add_polygon_grid(OverlayBatch& batch, const std::vector<glm::dvec2>& poly, c
 
 }  // namespace
 
-int add_boundary_grid(OverlayBatch& batch, const layout::PlayArea& area, const math::dvec3& head,
-                      const math::Eye& eye, const math::dmat4& projection) {
-    if (!area.polygon.empty())
-        return add_polygon_grid(batch, area.polygon, head, projection * math::view_matrix(eye));
+int add_boundary_grid(OverlayBatch& batch, const layout::PlayArea& area, const math::dvec3& head, const math::Eye& eye,
+                      const math::dmat4& projection) {
+    if (!area.polygon.empty()) return add_polygon_grid(batch, area.polygon, head, projection * math::view_matrix(eye));
     const std::optional<std::array<double, 4>> d = edge_distances(head, area);
     const math::dmat4 vp = projection * math::view_matrix(eye);
     auto clip = [&](const math::dvec3& p) { return glm::vec4(vp * math::dvec4(p, 1.0)); };
@@ -62,9 +59,7 @@ int add_boundary_grid(OverlayBatch& batch, const layout::PlayArea& area, const m
         const bool along_x = w >= 2;
         const double fixed = w == 0 ? area.min.x : w == 1 ? area.max.x : w == 2 ? area.min.y : area.max.y;
         const double lo = along_x ? area.min.x : area.min.y, hi = along_x ? area.max.x : area.max.y;
-        auto point = [&](double s, double y) {
-            return along_x ? math::dvec3{s, y, fixed} : math::dvec3{fixed, y, s};
-        };
+        auto point = [&](double s, double y) { return along_x ? math::dvec3{s, y, fixed} : math::dvec3{fixed, y, s}; };
         const int columns = static_cast<int>(std::floor((hi - lo) / kGridSpacing + 1e-9));
         for (int i = 0; i <= columns + 1; ++i) {
             const double s = std::min(lo + i * kGridSpacing, hi);

@@ -5,15 +5,15 @@
 // picture as the play area mapped by W and seen by the virtual eye.
 #pragma once
 
-#include "preview/overlay.hpp"
 #include "layout/layout.hpp"
 #include "math/pose.hpp"
+#include "preview/overlay.hpp"
 
 namespace impossible::preview {
 
-inline constexpr double kGridDistance = 0.5;   // m from an edge
-inline constexpr double kGridSpacing = 0.25;   // m between grid lines
-inline constexpr double kGridHeight = 2.5;     // m, top of the walls
+inline constexpr double kGridDistance = 0.5;  // m from an edge
+inline constexpr double kGridSpacing = 0.25;  // m between grid lines
+inline constexpr double kGridHeight = 2.5;    // m, top of the walls
 
 // Opacity of the wall at distance d (negative outside): 0 at kGridDistance
 // and beyond, rising to 1 at the edge and outside.

@@ -7,8 +7,7 @@
 
 namespace impossible::preview {
 
-math::HeadPose move_head(const math::HeadPose& head, const MoveInput& in,
-                         const std::optional<layout::PlayArea>& area) {
+math::HeadPose move_head(const math::HeadPose& head, const MoveInput& in, const std::optional<layout::PlayArea>& area) {
     math::HeadPose out = head;
     out.yaw_deg = std::remainder(head.yaw_deg - in.mouse_dx * kMouseDegPerPixel, 360.0);
     out.pitch_deg = std::clamp(head.pitch_deg - in.mouse_dy * kMouseDegPerPixel, -kMaxPitch, kMaxPitch);
@@ -19,13 +18,13 @@ math::HeadPose move_head(const math::HeadPose& head, const MoveInput& in,
     const double speed = kWalkSpeed * (in.fast ? kFastFactor : 1.0);
     out.position += (forward * double(in.forward) + right * double(in.right)) * (speed * in.dt);
     out.position.y += double(in.up) * kClimbSpeed * (in.fast ? kFastFactor : 1.0) * in.dt;
-    out.position.y = std::clamp(out.position.y, std::min(kMinHeight, head.position.y),
-                                std::max(kMaxHeight, head.position.y));
+    out.position.y =
+        std::clamp(out.position.y, std::min(kMinHeight, head.position.y), std::max(kMaxHeight, head.position.y));
     if (area) {
-        out.position.x = std::clamp(out.position.x, std::min(area->min.x, head.position.x),
-                                    std::max(area->max.x, head.position.x));
-        out.position.z = std::clamp(out.position.z, std::min(area->min.y, head.position.z),
-                                    std::max(area->max.y, head.position.z));
+        out.position.x =
+            std::clamp(out.position.x, std::min(area->min.x, head.position.x), std::max(area->max.x, head.position.x));
+        out.position.z =
+            std::clamp(out.position.z, std::min(area->min.y, head.position.z), std::max(area->max.y, head.position.z));
         // A polygon: a step that would leave it is not taken.
         if (!area->polygon.empty() && !math::contains(area->polygon, {out.position.x, out.position.z}) &&
             math::contains(area->polygon, {head.position.x, head.position.z})) {
@@ -36,8 +35,7 @@ math::HeadPose move_head(const math::HeadPose& head, const MoveInput& in,
     return out;
 }
 
-std::optional<std::array<double, 4>> edge_distances(const math::dvec3& p,
-                                                    const std::optional<layout::PlayArea>& area) {
+std::optional<std::array<double, 4>> edge_distances(const math::dvec3& p, const std::optional<layout::PlayArea>& area) {
     if (!area) return std::nullopt;
     return std::array<double, 4>{p.x - area->min.x, area->max.x - p.x, p.z - area->min.y, area->max.y - p.z};
 }

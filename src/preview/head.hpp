@@ -13,15 +13,15 @@ namespace impossible::preview {
 
 // What the user did during one frame.
 struct MoveInput {
-    double dt = 0.0;                 // seconds since the last frame
+    double dt = 0.0;                     // seconds since the last frame
     int forward = 0, right = 0, up = 0;  // -1, 0 or +1 each
     bool fast = false;
     double mouse_dx = 0.0, mouse_dy = 0.0;  // pixels, +x right, +y down
 };
 
-inline constexpr double kWalkSpeed = 1.4;       // m/s
+inline constexpr double kWalkSpeed = 1.4;  // m/s
 inline constexpr double kFastFactor = 3.0;
-inline constexpr double kClimbSpeed = 0.8;      // m/s, Q / E
+inline constexpr double kClimbSpeed = 0.8;  // m/s, Q / E
 inline constexpr double kMouseDegPerPixel = 0.12;
 inline constexpr double kMaxPitch = 89.0;
 inline constexpr double kMinHeight = 0.2, kMaxHeight = 3.0;

@@ -16,10 +16,10 @@ namespace impossible::preview {
 // What the HUD reports of one frame besides the options.
 struct HudFacts {
     std::string title;
-    double median_ms = 0.0;          // of the last timed frames
-    std::size_t timed_frames = 0;    // how many
+    double median_ms = 0.0;             // of the last timed frames
+    std::size_t timed_frames = 0;       // how many
     int eye_width = 0, eye_height = 0;  // as drawn this frame
-    std::string room;                // the room's id
+    std::string room;                   // the room's id
     int portal_passes_drawn = 0, portal_passes_culled = 0, max_level_reached = 0;
     math::HeadPose physical;
     bool cursor_captured = false;

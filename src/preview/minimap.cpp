@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <array>
 
-#include "preview/hud.hpp"
 #include "math/rigid.hpp"
+#include "preview/hud.hpp"
 
 namespace impossible::preview {
 namespace {
@@ -38,8 +38,10 @@ bool clip_segment(glm::vec2& a, glm::vec2& b, glm::vec2 lo, glm::vec2 hi) {
             continue;
         }
         const float t = q[i] / p[i];
-        if (p[i] < 0.0f) t0 = std::max(t0, t);
-        else t1 = std::min(t1, t);
+        if (p[i] < 0.0f)
+            t0 = std::max(t0, t);
+        else
+            t1 = std::min(t1, t);
         if (t0 > t1) return false;
     }
     const glm::vec2 a0 = a;
@@ -72,9 +74,9 @@ struct MapView {
 
 glm::vec4 minimap_portal_colour(layout::PortalKind kind) {
     switch (kind) {
-        case layout::PortalKind::Door: return {1.0f, 0.55f, 0.1f, 1.0f};     // orange
-        case layout::PortalKind::Mirror: return {0.8f, 0.85f, 0.9f, 1.0f};   // silver
-        case layout::PortalKind::Window: return {0.35f, 0.7f, 1.0f, 1.0f};   // sky blue
+        case layout::PortalKind::Door: return {1.0f, 0.55f, 0.1f, 1.0f};    // orange
+        case layout::PortalKind::Mirror: return {0.8f, 0.85f, 0.9f, 1.0f};  // silver
+        case layout::PortalKind::Window: return {0.35f, 0.7f, 1.0f, 1.0f};  // sky blue
     }
     return {1.0f, 0.55f, 0.1f, 1.0f};
 }
@@ -131,8 +133,7 @@ void add_room(OverlayBatch& batch, const MapView& view, const layout::Layout& la
         const math::dvec3 right = math::portal_right(r);
         const math::dvec3 hw = right * (0.5 * r.width), hh = r.up * (0.5 * r.height);
         Quad q;
-        const math::dvec3 corners[4] = {r.center - hw - hh, r.center + hw - hh, r.center + hw + hh,
-                                        r.center - hw + hh};
+        const math::dvec3 corners[4] = {r.center - hw - hh, r.center + hw - hh, r.center + hw + hh, r.center - hw + hh};
         for (int k = 0; k < 4; ++k) {
             const math::dvec4 c = to_physical * math::dvec4(corners[k], 1.0);
             q[k] = {c.x, c.z};

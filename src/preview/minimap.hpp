@@ -12,9 +12,9 @@
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
-#include "preview/overlay.hpp"
 #include "layout/layout.hpp"
 #include "math/pose.hpp"
+#include "preview/overlay.hpp"
 
 namespace impossible::preview {
 

@@ -121,9 +121,7 @@ constexpr Option<PreviewOptions> kPreviewOptions[] = {
 
 }  // namespace
 
-std::string preview_help() {
-    return kPreviewUsage + options_help(kPreviewOptions, kPreviewHelpColumn) + kPreviewKeys;
-}
+std::string preview_help() { return kPreviewUsage + options_help(kPreviewOptions, kPreviewHelpColumn) + kPreviewKeys; }
 
 PreviewOptions parse_preview_options(const std::vector<std::string>& args, bool* help) {
     const ParsedArgs a = parse_args(args, 1, kPreviewOptions);

@@ -11,9 +11,9 @@ namespace impossible::preview {
 
 // How the two eyes reach the window.
 enum class PreviewView {
-    Parallel,   // left eye in the left half (parallel viewing)
-    Cross,      // halves swapped, for cross-eyed viewing
-    Anaglyph,   // one picture: red = left eye, cyan = right eye
+    Parallel,  // left eye in the left half (parallel viewing)
+    Cross,     // halves swapped, for cross-eyed viewing
+    Anaglyph,  // one picture: red = left eye, cyan = right eye
 };
 
 const char* view_name(PreviewView view);

@@ -33,9 +33,10 @@ void OverlayBatch::clip_line(glm::vec4 a, glm::vec4 b, glm::vec4 color) {
 
 Result<OverlayProgram> build_overlay_program() {
     OverlayProgram out;
-    Result<gl::Program> built = gl::build_program({render::embedded_shader(GL_VERTEX_SHADER, "shaders/preview_overlay.vert.glsl"),
-                                                   render::embedded_shader(GL_FRAGMENT_SHADER, "shaders/preview_overlay.frag.glsl")},
-                                                  "");
+    Result<gl::Program> built =
+        gl::build_program({render::embedded_shader(GL_VERTEX_SHADER, "shaders/preview_overlay.vert.glsl"),
+                           render::embedded_shader(GL_FRAGMENT_SHADER, "shaders/preview_overlay.frag.glsl")},
+                          "");
     if (!built) return built;
     out.program = std::move(*built);
     out.vao = gl::create_vertex_array();

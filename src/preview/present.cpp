@@ -18,16 +18,17 @@ WindowLayout window_layout(int fb_width, int fb_height, double aspect, PreviewVi
     WindowLayout out;
     const PixelRect first{x0, y0, w, h};
     const PixelRect second{x0 + (panels - 1) * w, y0, w, h};
-    out.eye_rects = view == PreviewView::Cross ? std::array<PixelRect, 2>{second, first}
-                                               : std::array<PixelRect, 2>{first, second};
+    out.eye_rects =
+        view == PreviewView::Cross ? std::array<PixelRect, 2>{second, first} : std::array<PixelRect, 2>{first, second};
     return out;
 }
 
 Result<Presenter> build_presenter() {
     Presenter p;
-    Result<gl::Program> built = gl::build_program({render::embedded_shader(GL_VERTEX_SHADER, "shaders/preview_present.vert.glsl"),
-                                                   render::embedded_shader(GL_FRAGMENT_SHADER, "shaders/preview_present.frag.glsl")},
-                                                  "");
+    Result<gl::Program> built =
+        gl::build_program({render::embedded_shader(GL_VERTEX_SHADER, "shaders/preview_present.vert.glsl"),
+                           render::embedded_shader(GL_FRAGMENT_SHADER, "shaders/preview_present.frag.glsl")},
+                          "");
     if (!built) return built;
     p.program = std::move(*built);
     p.u_eye = glGetUniformLocation(p.program.get(), "u_eye");
@@ -36,8 +37,8 @@ Result<Presenter> build_presenter() {
     return p;
 }
 
-void present(Presenter& p, gl::StateCache& state, const render::Target& target, const WindowLayout& layout, PreviewView view,
-             int fb_width, int fb_height) {
+void present(Presenter& p, gl::StateCache& state, const render::Target& target, const WindowLayout& layout,
+             PreviewView view, int fb_width, int fb_height) {
     if (p.width != target.width || p.height != target.height || !p.texture) {
         // The old texture and framebuffer go: the cache forgets them first.
         if (p.texture) state.deleting_texture(p.texture.get());

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "preview/options.hpp"
 #include "base/result.hpp"
 #include "gl/handles.hpp"
 #include "gl/state.hpp"
+#include "preview/options.hpp"
 #include "render/target.hpp"
 
 namespace impossible::preview {
@@ -43,8 +43,8 @@ Result<Presenter> build_presenter();
 // Clears the default framebuffer and draws the renderer's colour image into
 // the eye rectangles, through the window context's state cache; leaves the
 // default framebuffer bound with the whole window as the viewport.
-void present(Presenter& presenter, gl::StateCache& state, const render::Target& target, const WindowLayout& layout, PreviewView view,
-             int fb_width, int fb_height);
+void present(Presenter& presenter, gl::StateCache& state, const render::Target& target, const WindowLayout& layout,
+             PreviewView view, int fb_width, int fb_height);
 
 // The default framebuffer's back buffer as RGB rows from the top.
 std::vector<std::uint8_t> read_window(gl::StateCache& state, int fb_width, int fb_height);

@@ -31,9 +31,7 @@ using cli::kExitOk;
 
 namespace {
 
-double seconds_since(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 double eye_aspect(const PreviewOptions& o) { return double(o.frame.eye_width) / o.frame.eye_height; }
 
@@ -93,7 +91,8 @@ double save_rendered_frame(PreviewSession& s, long frame, const render::FrameDes
     if (!s.files.every_frame) return 0.0;
     glFinish();
     const Clock::time_point start = Clock::now();
-    save_frame(s.files, render::read_target(*s.state, s.shown.renderer->target()), frame_record(s, frame, desc, passed));
+    save_frame(s.files, render::read_target(*s.state, s.shown.renderer->target()),
+               frame_record(s, frame, desc, passed));
     return seconds_since(start);
 }
 
@@ -111,9 +110,9 @@ void draw_boundary_grids(PreviewSession& s, const WindowLayout& places, int fb_w
         if (add_boundary_grid(grid, *area, s.physical.position, eyes[e], projection) == 0) break;
         const PixelRect& r = places.eye_rects[e];
         s.state->viewport({r.x, r.y, r.width, r.height});
-        draw_overlay(s.overlay, *s.state, grid,
-                     s.options.view == PreviewView::Anaglyph ? gl::color_channels(e == 0, e == 1, e == 1, true)
-                                                             : gl::kColorAll);
+        draw_overlay(
+            s.overlay, *s.state, grid,
+            s.options.view == PreviewView::Anaglyph ? gl::color_channels(e == 0, e == 1, e == 1, true) : gl::kColorAll);
     }
     s.state->viewport({0, 0, fb_w, fb_h});
 }
@@ -147,8 +146,8 @@ void draw_window(PreviewSession& s, const WindowLayout& places, const render::Fr
     if (s.options.minimap) {
         const float side = std::min(0.42f * float(fb_h), 0.3f * float(fb_w));
         const walk::Walker& walker = *s.shown.walker;
-        const MinimapInput map{s.shown.layout.get(), desc.room, walker.physical_to_virtual(),
-                               &walker.links().transfer, s.physical};
+        const MinimapInput map{s.shown.layout.get(), desc.room, walker.physical_to_virtual(), &walker.links().transfer,
+                               s.physical};
         add_minimap(batch, map, {float(fb_w) - side - 8.0f, float(fb_h) - side - 8.0f}, side);
     }
     draw_overlay(s.overlay, *s.state, batch);

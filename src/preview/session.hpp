@@ -62,7 +62,7 @@ double tick(FrameClock& clock, long frame, Clock::time_point now);
 struct PreviewSession {
     PreviewOptions options;
     std::string title;
-    std::vector<math::HeadPose> path;       // --path: one physical pose a frame
+    std::vector<math::HeadPose> path;  // --path: one physical pose a frame
     FrameFiles files;
     std::unique_ptr<PreviewWindow> window;  // declared before the GL objects: outlives them
     // The window context's one state cache, for the renderer, the present
@@ -71,7 +71,7 @@ struct PreviewSession {
     Shown shown;
     OverlayProgram overlay;
     Presenter presenter;
-    std::optional<LayoutWatcher> watcher;   // with a layout file
+    std::optional<LayoutWatcher> watcher;    // with a layout file
     std::vector<std::string> reload_errors;  // of the last failed reload
     math::HeadPose physical;
     FrameClock clock;

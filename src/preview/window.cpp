@@ -27,11 +27,14 @@ std::optional<Action> action_of_key(int key) {
         case GLFW_KEY_V: return Action::NextView;
         case GLFW_KEY_LEFT_BRACKET: return Action::DepthDown;
         case GLFW_KEY_RIGHT_BRACKET: return Action::DepthUp;
-        case GLFW_KEY_MINUS: case GLFW_KEY_KP_SUBTRACT: return Action::IpdDown;
-        case GLFW_KEY_EQUAL: case GLFW_KEY_KP_ADD: return Action::IpdUp;
+        case GLFW_KEY_MINUS:
+        case GLFW_KEY_KP_SUBTRACT: return Action::IpdDown;
+        case GLFW_KEY_EQUAL:
+        case GLFW_KEY_KP_ADD: return Action::IpdUp;
         case GLFW_KEY_C: return Action::NextClip;
         case GLFW_KEY_X: return Action::ToggleCulling;
-        case GLFW_KEY_P: case GLFW_KEY_F12: return Action::Screenshot;
+        case GLFW_KEY_P:
+        case GLFW_KEY_F12: return Action::Screenshot;
         case GLFW_KEY_R: return Action::Reset;
         default: return std::nullopt;
     }
@@ -121,9 +124,7 @@ void capture_cursor(PreviewWindow& w, bool capture) {
     w.input.have_cursor = false;  // no jump from the old cursor position
 }
 
-bool cursor_captured(const PreviewWindow& w) {
-    return glfwGetInputMode(w.window, GLFW_CURSOR) == GLFW_CURSOR_DISABLED;
-}
+bool cursor_captured(const PreviewWindow& w) { return glfwGetInputMode(w.window, GLFW_CURSOR) == GLFW_CURSOR_DISABLED; }
 
 void poll_input(PreviewWindow& w) {
     w.input.actions.clear();

@@ -49,8 +49,8 @@ struct FrameDesc : math::View {
     // Portal passes one frame may draw; past it, portals show the fill colour
     // (FrameStats::budget_fills). Only a frame that needs more changes.
     int max_portal_passes = kDefaultMaxPortalPasses;
-    double near = 0.0;         // 0: the depth mode's own (kNearReversedZ, kNearStandard)
-    double far = 2e5;          // only for DepthMode::Standard: beyond any valid layout
+    double near = 0.0;  // 0: the depth mode's own (kNearReversedZ, kNearStandard)
+    double far = 2e5;   // only for DepthMode::Standard: beyond any valid layout
     StereoMode stereo = StereoMode::ClipShift;
     ClipMode clip = ClipMode::ClipDistance;
     DepthMode depth = DepthMode::ReversedZ;
@@ -103,16 +103,16 @@ inline double near_distance(const FrameDesc& frame) {
 
 struct FrameStats {
     long draw_calls = 0;
-    long triangles = 0;             // scene and portal-box triangles submitted, all instances
-                                    // counted (not the full-screen depth-clear triangles)
-    int portal_passes_drawn = 0;    // portals whose target was drawn (both eyes count once)
-    int portal_passes_culled = 0;   // portals skipped as invisible to both eyes
-    int portal_fills = 0;           // portals shown as the flat fill (depth limit or budget)
-    int budget_fills = 0;           // of those, the ones drawn so because max_portal_passes was spent
+    long triangles = 0;            // scene and portal-box triangles submitted, all instances
+                                   // counted (not the full-screen depth-clear triangles)
+    int portal_passes_drawn = 0;   // portals whose target was drawn (both eyes count once)
+    int portal_passes_culled = 0;  // portals skipped as invisible to both eyes
+    int portal_fills = 0;          // portals shown as the flat fill (depth limit or budget)
+    int budget_fills = 0;          // of those, the ones drawn so because max_portal_passes was spent
     int max_level_reached = 0;
     // Only with FrameDesc::profile:
-    long colour_fragments = 0;      // samples that passed every test in the colour passes (Scene,
-                                    // PortalFill): fragments written to the colour buffer
+    long colour_fragments = 0;  // samples that passed every test in the colour passes (Scene,
+                                // PortalFill): fragments written to the colour buffer
     struct PortalCost {
         int portal = -1;            // index into the layout's portals (a portal of the head's room)
         double ms = 0.0;            // its whole subtree (mark, depth reset, the view through it and

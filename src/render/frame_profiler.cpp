@@ -17,8 +17,10 @@ void FrameProfiler::end_top_portal(FrameStats& stats) {
     top_portal_ = -1;
     std::vector<FrameStats::PortalCost>& costs = stats.portal_costs;
     auto it = std::find_if(costs.begin(), costs.end(), [p](const auto& c) { return c.portal == p; });
-    if (it == costs.end()) costs.push_back({p, ms, 0});
-    else it->ms += ms;
+    if (it == costs.end())
+        costs.push_back({p, ms, 0});
+    else
+        it->ms += ms;
 }
 
 void FrameProfiler::collect(FrameStats& stats) {

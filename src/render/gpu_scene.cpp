@@ -41,17 +41,13 @@ GpuScene upload_scene(const scene::Scene& scene) {
     gpu.indices = gl::create_buffer();
     gpu.vao = gl::create_vertex_array();
     // Zero-size buffers are valid GL but glNamedBufferStorage rejects size 0.
-    glNamedBufferStorage(gpu.vertices.get(),
-                         static_cast<GLsizeiptr>(scene.vertices.size() * sizeof(scene::Vertex) + 1),
+    glNamedBufferStorage(gpu.vertices.get(), static_cast<GLsizeiptr>(scene.vertices.size() * sizeof(scene::Vertex) + 1),
                          nullptr, GL_DYNAMIC_STORAGE_BIT);
-    glNamedBufferSubData(gpu.vertices.get(), 0,
-                         static_cast<GLsizeiptr>(scene.vertices.size() * sizeof(scene::Vertex)),
+    glNamedBufferSubData(gpu.vertices.get(), 0, static_cast<GLsizeiptr>(scene.vertices.size() * sizeof(scene::Vertex)),
                          scene.vertices.data());
-    glNamedBufferStorage(gpu.indices.get(),
-                         static_cast<GLsizeiptr>(scene.indices.size() * sizeof(std::uint32_t) + 4),
+    glNamedBufferStorage(gpu.indices.get(), static_cast<GLsizeiptr>(scene.indices.size() * sizeof(std::uint32_t) + 4),
                          nullptr, GL_DYNAMIC_STORAGE_BIT);
-    glNamedBufferSubData(gpu.indices.get(), 0,
-                         static_cast<GLsizeiptr>(scene.indices.size() * sizeof(std::uint32_t)),
+    glNamedBufferSubData(gpu.indices.get(), 0, static_cast<GLsizeiptr>(scene.indices.size() * sizeof(std::uint32_t)),
                          scene.indices.data());
 
     const GLuint vao = gpu.vao.get();

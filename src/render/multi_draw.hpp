@@ -29,8 +29,8 @@ static_assert(sizeof(IndirectDraw) == 20);
 // needs more).
 struct IndirectDraws {
     gl::Buffer buffer;
-    std::size_t capacity = 0;  // commands the buffer holds
-    std::size_t used = 0;      // commands written this frame
+    std::size_t capacity = 0;           // commands the buffer holds
+    std::size_t used = 0;               // commands written this frame
     std::vector<IndirectDraw> pending;  // not yet submitted
 };
 

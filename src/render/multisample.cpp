@@ -71,9 +71,8 @@ Result<void> check_sample_count(int samples, DepthMode depth) {
     glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
     glGetIntegerv(GL_MAX_INTEGER_SAMPLES, &max_integer);
     const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    return Error{"--samples " + std::to_string(samples) + ": the OpenGL driver (" +
-                 (renderer ? renderer : "unknown") + ") offers " + list +
-                 " samples for these buffers (GL_MAX_SAMPLES " + std::to_string(max_samples) +
+    return Error{"--samples " + std::to_string(samples) + ": the OpenGL driver (" + (renderer ? renderer : "unknown") +
+                 ") offers " + list + " samples for these buffers (GL_MAX_SAMPLES " + std::to_string(max_samples) +
                  ", GL_MAX_INTEGER_SAMPLES " + std::to_string(max_integer) + ")"};
 }
 
@@ -82,8 +81,8 @@ Result<void> ensure_multisampled(Programs& programs, FrameTargets& targets, cons
     Multisampling& m = targets.multisampling;
     if (!find_target(m, frame)) {
         if (Result<void> offered = check_sample_count(frame.samples, frame.depth); !offered) return offered;
-        Result<Target> made = create_multisampled_target(2 * frame.eye_width, frame.eye_height, frame.depth,
-                                                         frame.samples);
+        Result<Target> made =
+            create_multisampled_target(2 * frame.eye_width, frame.eye_height, frame.depth, frame.samples);
         if (!made) return Error{"multisampled " + made.error()};
         if (m.targets.size() == kMaxMultisampledTargets) m.targets.erase(m.targets.begin());
         m.targets.push_back(std::move(*made));

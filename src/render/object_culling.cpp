@@ -97,7 +97,8 @@ void visible_batches(const scene::CellObjects& cell, const LevelView& view, int 
     int eye_count = 0;
     for (const EyeView& ev : view.eyes) {
         if (!ev.active || ev.rect.empty()) continue;
-        eyes[static_cast<std::size_t>(eye_count++)] = eye_planes(ev, widened(ev.rect, margin_px, eye_width, eye_height));
+        eyes[static_cast<std::size_t>(eye_count++)] =
+            eye_planes(ev, widened(ev.rect, margin_px, eye_width, eye_height));
     }
     const auto hidden = [&](const glm::dvec3& lo, const glm::dvec3& hi) {
         for (int e = 0; e < eye_count; ++e)

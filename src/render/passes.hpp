@@ -13,19 +13,19 @@
 namespace impossible::render {
 
 enum class Pass {
-    Scene,         // the cell's rooms and props: colour, ids and depth where stencil == level
-    PortalDepth,   // portal boxes into depth only, so they occlude and are occluded
-    PortalTest,    // nothing written: an occlusion query of where the box is visible
-    PortalMark,    // stencil level → level + 1 where the box is the visible surface
-    ClearDepth,    // depth → far where stencil == level + 1 (drawn with ref = level + 1)
-    PortalUnmark,  // stencil level + 1 → level, and the box's depth back (ref = level + 1)
-    PortalFill,    // the flat fill colour and id (shading::kFillId) at the recursion limit
-    PortalTexture, // render-to-texture portals: the box shows its texture
+    Scene,          // the cell's rooms and props: colour, ids and depth where stencil == level
+    PortalDepth,    // portal boxes into depth only, so they occlude and are occluded
+    PortalTest,     // nothing written: an occlusion query of where the box is visible
+    PortalMark,     // stencil level → level + 1 where the box is the visible surface
+    ClearDepth,     // depth → far where stencil == level + 1 (drawn with ref = level + 1)
+    PortalUnmark,   // stencil level + 1 → level, and the box's depth back (ref = level + 1)
+    PortalFill,     // the flat fill colour and id (shading::kFillId) at the recursion limit
+    PortalTexture,  // render-to-texture portals: the box shows its texture
     // Full-target triangles limited by the stencil to a mirror's or window's
     // pixels (ref = level + 1), after the view through it is drawn:
-    Tint,          // colour ← colour · tint (the blend colour); ids kept
-    ClearRegion,   // colour, ids and depth back to the background, between a window's two views
-    WindowBlend,   // colour ← (r · reflected view) + colour · (1 - r) · tint; ids kept
+    Tint,         // colour ← colour · tint (the blend colour); ids kept
+    ClearRegion,  // colour, ids and depth back to the background, between a window's two views
+    WindowBlend,  // colour ← (r · reflected view) + colour · (1 - r) · tint; ids kept
     Count
 };
 
@@ -69,17 +69,17 @@ inline constexpr gl::PassState region_pass(bool write_depth, bool write_ids, gl:
 
 inline constexpr std::array<gl::PassState, static_cast<size_t>(Pass::Count)> kPassStates = {{
     // depth_write, depth_func, colour, cull_back_faces, stencil pass op
-    portal_pass(true, GL_GREATER, kColor, true, GL_KEEP),     // Scene
-    portal_pass(true, GL_GREATER, kNoColor, true, GL_KEEP),   // PortalDepth
-    portal_pass(false, GL_GEQUAL, kNoColor, true, GL_KEEP),   // PortalTest
-    portal_pass(false, GL_GEQUAL, kNoColor, true, GL_INCR),   // PortalMark
-    portal_pass(true, GL_ALWAYS, kNoColor, false, GL_KEEP),   // ClearDepth
-    portal_pass(true, GL_ALWAYS, kNoColor, true, GL_DECR),    // PortalUnmark
-    portal_pass(false, GL_GEQUAL, kColor, true, GL_KEEP),     // PortalFill
-    portal_pass(false, GL_GEQUAL, kColor, true, GL_KEEP),     // PortalTexture
-    region_pass(false, false, gl::Blend::ScaleTarget),         // Tint
-    region_pass(true, true, gl::Blend::Replace),               // ClearRegion
-    region_pass(false, false, gl::Blend::AddScaledTarget),     // WindowBlend
+    portal_pass(true, GL_GREATER, kColor, true, GL_KEEP),    // Scene
+    portal_pass(true, GL_GREATER, kNoColor, true, GL_KEEP),  // PortalDepth
+    portal_pass(false, GL_GEQUAL, kNoColor, true, GL_KEEP),  // PortalTest
+    portal_pass(false, GL_GEQUAL, kNoColor, true, GL_INCR),  // PortalMark
+    portal_pass(true, GL_ALWAYS, kNoColor, false, GL_KEEP),  // ClearDepth
+    portal_pass(true, GL_ALWAYS, kNoColor, true, GL_DECR),   // PortalUnmark
+    portal_pass(false, GL_GEQUAL, kColor, true, GL_KEEP),    // PortalFill
+    portal_pass(false, GL_GEQUAL, kColor, true, GL_KEEP),    // PortalTexture
+    region_pass(false, false, gl::Blend::ScaleTarget),       // Tint
+    region_pass(true, true, gl::Blend::Replace),             // ClearRegion
+    region_pass(false, false, gl::Blend::AddScaledTarget),   // WindowBlend
 }};
 
 // Clearing a target (glClearNamedFramebuffer* obeys the write masks and the
@@ -93,8 +93,10 @@ inline constexpr gl::PassState kClearState = [] {
 // The table above is for reversed-Z; with standard depth (nearer is less)
 // every comparison flips.
 inline constexpr gl::PassState with_standard_depth(gl::PassState s) {
-    if (s.depth_func == GL_GREATER) s.depth_func = GL_LESS;
-    else if (s.depth_func == GL_GEQUAL) s.depth_func = GL_LEQUAL;
+    if (s.depth_func == GL_GREATER)
+        s.depth_func = GL_LESS;
+    else if (s.depth_func == GL_GEQUAL)
+        s.depth_func = GL_LEQUAL;
     return s;
 }
 

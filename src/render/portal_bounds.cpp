@@ -47,8 +47,10 @@ NdcRect portal_rect(const math::PortalRect& portal, const EyeView& view) {
     double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
     auto add = [&](const math::dvec4& c) {
         const double x = c.x / c.w, y = c.y / c.w;
-        x0 = std::min(x0, x); x1 = std::max(x1, x);
-        y0 = std::min(y0, y); y1 = std::max(y1, y);
+        x0 = std::min(x0, x);
+        x1 = std::max(x1, x);
+        y0 = std::min(y0, y);
+        y1 = std::max(y1, y);
     };
     for (int i = 0; i < count; ++i)
         if (clip[i].w >= eps) add(clip[i]);

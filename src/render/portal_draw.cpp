@@ -12,8 +12,8 @@
 namespace impossible::render {
 
 void mark_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
-    draw_portal_box(ctx, view, {Pass::PortalMark, view.level, &ctx.scene_program, portal_scissor(ctx, view, rects)},
-                    p, rects);
+    draw_portal_box(ctx, view, {Pass::PortalMark, view.level, &ctx.scene_program, portal_scissor(ctx, view, rects)}, p,
+                    rects);
     clear_depth_in_portal(ctx, view, view.level + 1, rects);
 }
 
@@ -30,8 +30,7 @@ void draw_cell(const DrawContext& ctx, const LevelView& view, const SceneDraw& d
     const std::vector<scene::DrawBatch>* batches = &r.cells[cell];
     if (ctx.frame.cull_portals && ctx.frame.cull_objects && !r.objects[cell].objects.empty()) {
         // Two pixels of margin: one more than the eye rectangles' own.
-        visible_batches(r.objects[cell], view, ctx.frame.eye_width, ctx.frame.eye_height, 2.0, s.cull,
-                        s.cull_batches);
+        visible_batches(r.objects[cell], view, ctx.frame.eye_width, ctx.frame.eye_height, 2.0, s.cull, s.cull_batches);
         batches = &s.cull_batches;
     }
     // Plain batches queued and submitted together (FrameDesc::multi_draw)
@@ -73,8 +72,10 @@ void draw_portal_box(const DrawContext& ctx, const LevelView& view, const SceneD
     std::array<NdcRect, 2> front = rects, inner = rects;
     bool any_inner = false;
     for (int e = 0; e < 2; ++e) {
-        if (!math::in_column(info.rect, view.eyes[e].eye.position)) inner[e] = NdcRect::none();
-        else any_inner = true;
+        if (!math::in_column(info.rect, view.eyes[e].eye.position))
+            inner[e] = NdcRect::none();
+        else
+            any_inner = true;
     }
     set_eye_uniforms(ctx, view, *draw.program, front);
     draw_range(ctx, view, draw, mesh.front);
@@ -88,8 +89,8 @@ void draw_fill(const DrawContext& ctx, const LevelView& view, int p, const std::
                int stencil_ref) {
     set_cell_id(ctx.scene_program, shading::kFillId, true);
     const ColourQueryScope colour(ctx.profiler);
-    draw_portal_box(ctx, view, {Pass::PortalFill, stencil_ref, &ctx.scene_program, portal_scissor(ctx, view, rects)},
-                    p, rects);
+    draw_portal_box(ctx, view, {Pass::PortalFill, stencil_ref, &ctx.scene_program, portal_scissor(ctx, view, rects)}, p,
+                    rects);
     ctx.scratch.stats.portal_fills += 1;
 }
 
@@ -120,12 +121,11 @@ LevelView moved_view(const DrawContext& ctx, const LevelView& view, const math::
         const math::dvec4 plane = math::portal_plane(b.rect);
         if (ctx.frame.clip == ClipMode::Oblique) {
             const math::dvec4 plane_eye = math::transform_plane(view_matrix, plane);
-            ev.view_proj = (ctx.frame.depth == DepthMode::ReversedZ
-                                ? math::oblique_reversed_z(ctx.projection, plane_eye)
-                                : math::oblique_standard(ctx.projection, plane_eye)) *
-                           view_matrix;
-        }
-        else
+            ev.view_proj =
+                (ctx.frame.depth == DepthMode::ReversedZ ? math::oblique_reversed_z(ctx.projection, plane_eye)
+                                                         : math::oblique_standard(ctx.projection, plane_eye)) *
+                view_matrix;
+        } else
             ev.clip_plane = plane;
     }
     return child;
@@ -145,8 +145,8 @@ LevelView child_view(const DrawContext& ctx, const LevelView& view, int portal, 
     return child;
 }
 
-LevelView reflected_view(const DrawContext& ctx, const LevelView& view, int portal,
-                         const std::array<NdcRect, 2>& rects, double weight_factor) {
+LevelView reflected_view(const DrawContext& ctx, const LevelView& view, int portal, const std::array<NdcRect, 2>& rects,
+                         double weight_factor) {
     // The mirrored eye is behind the plane (the real one is in front, or the
     // mirror would not be visible); the plane clips what lies behind it.
     LevelView child = moved_view(ctx, view, ctx.renderer.links.reflection[portal], view.cell, portal, rects);

@@ -73,14 +73,9 @@ void draw_portal(const DrawContext& ctx, const LevelView& view, int p, const std
         return;
     }
     switch (ctx.renderer.portals[p].kind) {
-        case layout::PortalKind::Mirror:
-            draw_mirror_portal(ctx, view, p, rects);
-            return;
-        case layout::PortalKind::Window:
-            draw_window_portal(ctx, view, p, rects);
-            return;
-        case layout::PortalKind::Door:
-            break;
+        case layout::PortalKind::Mirror: draw_mirror_portal(ctx, view, p, rects); return;
+        case layout::PortalKind::Window: draw_window_portal(ctx, view, p, rects); return;
+        case layout::PortalKind::Door: break;
     }
     mark_portal(ctx, view, p, rects);
     stats.portal_passes_drawn += 1;
@@ -131,14 +126,17 @@ std::vector<std::array<NdcRect, 2>> visible_portals(const DrawContext& ctx, cons
         for (int e = 0; e < 2; ++e) {
             const EyeView& ev = view.eyes[e];
             const bool behind_exit = p == view.entered_by && ev.behind_exit;
-            if (behind_exit || !ev.active) visible[k][e] = NdcRect::none();
-            else if (!f.cull_portals) visible[k][e] = ev.rect;
+            if (behind_exit || !ev.active)
+                visible[k][e] = NdcRect::none();
+            else if (!f.cull_portals)
+                visible[k][e] = ev.rect;
             else if (const NdcRect rect = portal_rect(r.portals[p].rect, ev);
                      covers_pixel_centre(rect, f.eye_width, f.eye_height, f.samples) &&
                      !(f.cull_objects &&
                        hidden_by_occluder(r.objects[static_cast<size_t>(view.cell)], ev, r.portals[p].rect)))
                 visible[k][e] = rect;
-            else visible[k][e] = NdcRect::none();
+            else
+                visible[k][e] = NdcRect::none();
         }
     }
     return visible;
@@ -194,9 +192,12 @@ void draw_level(const DrawContext& ctx, const LevelView& view) {
         // Mirrors and windows always take the stencil path: their views are
         // blended in place (portal_glass.cpp).
         const bool door = r.portals[portals[k]].kind == layout::PortalKind::Door;
-        if (level == 0 && door && ctx.frame.portal_texture_scale > 0.0) draw_portal_via_texture(ctx, view, portals[k], rects, k);
-        else if (ctx.profiler && level == 0) draw_top_portal_profiled(ctx, view, portals[k], rects);
-        else draw_portal(ctx, view, portals[k], rects);
+        if (level == 0 && door && ctx.frame.portal_texture_scale > 0.0)
+            draw_portal_via_texture(ctx, view, portals[k], rects, k);
+        else if (ctx.profiler && level == 0)
+            draw_top_portal_profiled(ctx, view, portals[k], rects);
+        else
+            draw_portal(ctx, view, portals[k], rects);
         if (tests[k]) {
             glEndConditionalRender();
             s.conditional = false;

@@ -49,8 +49,8 @@ LevelView child_view(const DrawContext& ctx, const LevelView& view, int portal, 
 
 // The view reflected in `portal` (of view.cell, a mirror or a window): the
 // same cell from the eyes mirrored in its plane, clipped at it.
-LevelView reflected_view(const DrawContext& ctx, const LevelView& view, int portal,
-                         const std::array<NdcRect, 2>& rects, double weight_factor);
+LevelView reflected_view(const DrawContext& ctx, const LevelView& view, int portal, const std::array<NdcRect, 2>& rects,
+                         double weight_factor);
 
 // --- Mirrors and windows (portal_glass.cpp).
 
@@ -79,7 +79,7 @@ Result<void> ensure_portal_textures(const RendererData& r, FrameTargets& targets
 
 // The view through portal `p` of the head's cell drawn into portal texture
 // `slot`, which the box then shows where it is the visible surface.
-void draw_portal_via_texture(const DrawContext& ctx, const LevelView& view, int p,
-                             const std::array<NdcRect, 2>& rects, size_t slot);
+void draw_portal_via_texture(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects,
+                             size_t slot);
 
 }  // namespace impossible::render

@@ -40,8 +40,8 @@ Result<void> ensure_portal_textures(const RendererData& r, FrameTargets& targets
     return {};
 }
 
-void draw_portal_via_texture(const DrawContext& ctx, const LevelView& view, int p,
-                             const std::array<NdcRect, 2>& rects, size_t slot) {
+void draw_portal_via_texture(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects,
+                             size_t slot) {
     const RendererData& r = ctx.renderer;
     const FrameDesc inner = inner_frame(ctx.frame);
     assert(slot < ctx.targets.portal_textures.size());  // ensure_portal_textures made them

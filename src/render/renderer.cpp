@@ -147,14 +147,12 @@ void clear_target(gl::StateCache& state, const Target& target, int stencil) {
     state.apply(kClearState, 0);
     state.no_scissor();
     const glm::dvec3 bg = shading::kBackgroundColor;
-    const GLfloat color[4] = {static_cast<GLfloat>(bg.r), static_cast<GLfloat>(bg.g),
-                              static_cast<GLfloat>(bg.b), 1.0f};
+    const GLfloat color[4] = {static_cast<GLfloat>(bg.r), static_cast<GLfloat>(bg.g), static_cast<GLfloat>(bg.b), 1.0f};
     const GLuint id[4] = {0, 0, 0, 0};
     const GLuint fb = target.framebuffer.get();
     glClearNamedFramebufferfv(fb, GL_COLOR, 0, color);
     glClearNamedFramebufferuiv(fb, GL_COLOR, 1, id);
-    glClearNamedFramebufferfi(fb, GL_DEPTH_STENCIL, 0, target.depth == DepthMode::ReversedZ ? 0.0f : 1.0f,
-                              stencil);
+    glClearNamedFramebufferfi(fb, GL_DEPTH_STENCIL, 0, target.depth == DepthMode::ReversedZ ? 0.0f : 1.0f, stencil);
 }
 
 Result<Renderer> Renderer::create(gl::StateCache& state, const scene::Scene& scene) {
@@ -164,7 +162,8 @@ Result<Renderer> Renderer::create(gl::StateCache& state, const scene::Scene& sce
     r.cells = scene.batches;
     r.objects = scene.objects;
     for (const auto& cell : scene.batches)
-        for (const scene::DrawBatch& b : cell) r.has_materials = r.has_materials || b.texture >= 0 || b.alpha_cutoff >= 0.0f;
+        for (const scene::DrawBatch& b : cell)
+            r.has_materials = r.has_materials || b.texture >= 0 || b.alpha_cutoff >= 0.0f;
     r.cell_origins = scene.origins;
     r.links = scene.links;
     r.portals = scene.portal_info;

@@ -41,17 +41,17 @@ struct Programs {
 };
 
 struct RendererData {
-    gl::StateCache* state = nullptr;  // the context's; outlives the renderer
+    gl::StateCache* state = nullptr;                   // the context's; outlives the renderer
     std::vector<std::vector<scene::DrawBatch>> cells;  // per room: its batches, into gpu's index buffer
     std::vector<scene::CellObjects> objects;           // per room: the same split for per-object culling
-    std::vector<scene::CellOrigin> cell_origins;        // per room: the origin its vertices are relative to
+    std::vector<scene::CellOrigin> cell_origins;       // per room: the origin its vertices are relative to
     std::vector<scene::PortalInfo> portals;            // per portal, as the scene has it
     std::vector<scene::PortalMesh> portal_meshes;      // per portal: its box (a mirror's or window's: the front)
     links::PortalLinks links;                          // M_AB per portal, the portals of each room
-    bool has_windows = false;    // the window blend's programs are needed
-    bool has_materials = false;  // some batch has a texture or an alpha cutoff
+    bool has_windows = false;                          // the window blend's programs are needed
+    bool has_materials = false;                        // some batch has a texture or an alpha cutoff
     GpuScene gpu;
-    gl::VertexArray empty_vao;   // for the attribute-less full-target triangle
+    gl::VertexArray empty_vao;  // for the attribute-less full-target triangle
     Programs programs;
 };
 
@@ -71,7 +71,7 @@ struct SavedColour {
 
 struct FrameScratch {
     FrameStats stats;
-    CullScratch cull;                        // reused by every level (object_culling.hpp)
+    CullScratch cull;  // reused by every level (object_culling.hpp)
     std::vector<scene::DrawBatch> cull_batches;
     IndirectDraws indirect;                  // FrameDesc::multi_draw's commands
     std::vector<gl::Query> mark_queries;     // occlusion queries of portals, made on first use

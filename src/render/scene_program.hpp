@@ -20,17 +20,17 @@ gl::ShaderSource embedded_shader(GLenum stage, const char* name);
 // so that the compiler may drop it there (setting -1 does nothing).
 struct SceneProgram {
     gl::Program program;
-    GLint view_proj = -1;   // mat4[2]
-    GLint eye_rect = -1;    // vec4[2]
-    GLint clip_plane = -1;  // vec4[2]
+    GLint view_proj = -1;       // mat4[2]
+    GLint eye_rect = -1;        // vec4[2]
+    GLint clip_plane = -1;      // vec4[2]
     GLint checker_offset = -1;  // vec3
-    GLint single_eye = -1;  // int, two-pass stereo only
-    GLint cell_id = -1;     // uint, scene.frag.glsl only
-    GLint unshaded = -1;    // bool, scene.frag.glsl only
-    GLint textured = -1;    // bool: multiply by the texture on kSceneTextureUnit (materials only)
-    GLint alpha_cutoff = -1;  // float: drop fragments whose alpha is below it; < 0: opaque (materials only)
-    GLint mip_level0 = -1;    // bool: textures at mip level 0 only (materials only)
-    GLint target_size = -1;  // vec2, only in the portal-texture program
+    GLint single_eye = -1;      // int, two-pass stereo only
+    GLint cell_id = -1;         // uint, scene.frag.glsl only
+    GLint unshaded = -1;        // bool, scene.frag.glsl only
+    GLint textured = -1;        // bool: multiply by the texture on kSceneTextureUnit (materials only)
+    GLint alpha_cutoff = -1;    // float: drop fragments whose alpha is below it; < 0: opaque (materials only)
+    GLint mip_level0 = -1;      // bool: textures at mip level 0 only (materials only)
+    GLint target_size = -1;     // vec2, only in the portal-texture program
 };
 
 // `materials`: the variant that reads textures and drops cut-out fragments

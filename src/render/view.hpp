@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <array>
 
-#include "math/pose.hpp"
 #include "math/portal.hpp"
+#include "math/pose.hpp"
 
 namespace impossible::render {
 
@@ -31,11 +31,11 @@ inline NdcRect widened(const NdcRect& r, double px, int width, int height) {
 
 struct EyeView {
     bool active = false;
-    math::Eye eye;                      // in the cell's coordinates
-    math::dmat4 view_proj{1.0};         // cell coordinates → clip space
+    math::Eye eye;                       // in the cell's coordinates
+    math::dmat4 view_proj{1.0};          // cell coordinates → clip space
     math::dvec4 clip_plane{0, 0, 0, 1};  // keep dot(plane, (p, 1)) >= 0
-    NdcRect rect;                       // where this level is visible
-    bool behind_exit = false;           // the eye stands behind the portal it came out of
+    NdcRect rect;                        // where this level is visible
+    bool behind_exit = false;            // the eye stands behind the portal it came out of
 };
 
 struct LevelView {

@@ -22,7 +22,8 @@ CellOrigin origin_of_cell(const layout::Room& room) {
         f.origin[axis] = kCellOriginGrid * std::round(centre / kCellOriginGrid);
         // The checker's parity at origin + p is its parity at offset + p.
         const double period = 2.0 * room.checker;
-        if (period > 0.0) f.checker_offset[axis] = static_cast<float>(f.origin[axis] - period * std::floor(f.origin[axis] / period));
+        if (period > 0.0)
+            f.checker_offset[axis] = static_cast<float>(f.origin[axis] - period * std::floor(f.origin[axis] / period));
     }
     return f;
 }
@@ -108,7 +109,8 @@ Scene build_scene(const layout::Layout& layout) {
         out.origin = scene.origins[static_cast<std::size_t>(lp.room)].origin;
         const FrontGrid front = fronts[p] ? *fronts[p] : corner_front(out, lp.rect);
         const bool box = lp.kind == layout::PortalKind::Door;
-        scene.portals.push_back(box ? append_portal_box(out, lp.rect, front) : append_portal_front(out, lp.rect, front));
+        scene.portals.push_back(box ? append_portal_box(out, lp.rect, front)
+                                    : append_portal_front(out, lp.rect, front));
         scene.portal_info.push_back({lp.rect, lp.room, lp.target, lp.kind, lp.tint, lp.reflectance});
     }
     scene.links = links::link_portals(layout);

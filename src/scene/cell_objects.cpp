@@ -55,8 +55,10 @@ struct TreeBuilder {
         const int half = count / 2;
         // Ties by index, so the tree does not depend on the sort's whims.
         std::nth_element(begin, begin + half, begin + count, [&](int a, int b) {
-            const double ca = cell.objects[static_cast<std::size_t>(a)].lo[axis] + cell.objects[static_cast<std::size_t>(a)].hi[axis];
-            const double cb = cell.objects[static_cast<std::size_t>(b)].lo[axis] + cell.objects[static_cast<std::size_t>(b)].hi[axis];
+            const double ca =
+                cell.objects[static_cast<std::size_t>(a)].lo[axis] + cell.objects[static_cast<std::size_t>(a)].hi[axis];
+            const double cb =
+                cell.objects[static_cast<std::size_t>(b)].lo[axis] + cell.objects[static_cast<std::size_t>(b)].hi[axis];
             return ca < cb || (ca == cb && a < b);
         });
         build(first, half);
@@ -92,7 +94,8 @@ std::vector<std::pair<glm::dvec3, glm::dvec3>> occluders_of(const layout::Room& 
         const glm::dvec3 pad = 1e-6 + 1e-9 * glm::max(glm::abs(box->min), glm::abs(box->max));
         found.push_back({area, i, box->min + pad, box->max - pad});
     }
-    std::stable_sort(found.begin(), found.end(), [](const Candidate& a, const Candidate& b) { return a.area > b.area; });
+    std::stable_sort(found.begin(), found.end(),
+                     [](const Candidate& a, const Candidate& b) { return a.area > b.area; });
     if (found.size() > kMaxOccluders) found.resize(kMaxOccluders);
     std::vector<std::pair<glm::dvec3, glm::dvec3>> out;
     for (const Candidate& c : found) out.emplace_back(c.lo, c.hi);
@@ -108,8 +111,8 @@ std::vector<DrawBatch> finish_cell(Scene& scene, CellObjects& cell) {
     }
     // The cell's indices, surfaces then objects as written, become objects
     // in leaf order then surfaces.
-    const std::uint32_t begin = cell.surfaces.empty() ? cell.batches.front().range.first
-                                                      : cell.surfaces.front().range.first;
+    const std::uint32_t begin =
+        cell.surfaces.empty() ? cell.batches.front().range.first : cell.surfaces.front().range.first;
     std::vector<std::uint32_t> moved;
     moved.reserve(scene.indices.size() - begin);
     const auto move = [&](DrawBatch batch) {

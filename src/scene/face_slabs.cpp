@@ -67,8 +67,8 @@ void append_face_slabs(MeshWriter& out, const SlabFace& face) {
     const auto id = [&](double a, double b) {
         const auto [it, added] = ids.try_emplace({a, b}, 0u);
         if (added) {
-            const glm::vec3 p = plane_point(face.axis, plane, face.in, out.local(a, face.in.a),
-                                            out.local(b, face.in.b));
+            const glm::vec3 p =
+                plane_point(face.axis, plane, face.in, out.local(a, face.in.a), out.local(b, face.in.b));
             it->second = out.vertex(p, face.normal, face.color, face.checker);
         }
         return it->second;
@@ -86,8 +86,7 @@ void append_face_slabs(MeshWriter& out, const SlabFace& face) {
             Span span;
             if (hole_span(hole, x0, x1, span)) spans.push_back(span);
         }
-        std::sort(spans.begin(), spans.end(),
-                  [](const Span& l, const Span& r) { return l.middle < r.middle; });
+        std::sort(spans.begin(), spans.end(), [](const Span& l, const Span& r) { return l.middle < r.middle; });
         // The trapezoids between the face's bottom, the holes and its top.
         double floor0 = face.lo.y, floor1 = face.lo.y;
         const auto region = [&](double top0, double top1) {

@@ -29,7 +29,7 @@ struct FaceUv {
 
 struct MeshWriter {
     Scene& scene;
-    glm::dvec3 origin{0.0};  // the current cell's CellOrigin::origin
+    glm::dvec3 origin{0.0};           // the current cell's CellOrigin::origin
     std::optional<FaceUv> face_uv{};  // set while a textured room face is written
 
     // A layout coordinate on `axis`, or a layout point, as a vertex coordinate.
@@ -38,8 +38,7 @@ struct MeshWriter {
     // A vertex coordinate back in layout coordinates (exact).
     double world(float v, int axis) const { return static_cast<double>(v) + origin[axis]; }
 
-    std::uint32_t vertex(const glm::vec3& position, const glm::dvec3& normal,
-                         const glm::dvec3& color, double checker) {
+    std::uint32_t vertex(const glm::vec3& position, const glm::dvec3& normal, const glm::dvec3& color, double checker) {
         glm::dvec2 uv(0.0);
         if (face_uv) {
             const glm::dvec3 p(world(position.x, 0), world(position.y, 1), world(position.z, 2));
@@ -48,8 +47,8 @@ struct MeshWriter {
         return vertex(position, normal, color, checker, uv, 1.0);
     }
 
-    std::uint32_t vertex(const glm::vec3& position, const glm::dvec3& normal, const glm::dvec3& color,
-                         double checker, const glm::dvec2& uv, double alpha) {
+    std::uint32_t vertex(const glm::vec3& position, const glm::dvec3& normal, const glm::dvec3& color, double checker,
+                         const glm::dvec2& uv, double alpha) {
         assert(scene.vertices.size() < std::numeric_limits<std::uint32_t>::max());
         scene.vertices.push_back(Vertex{position, glm::vec3(normal), glm::vec3(color), static_cast<float>(checker),
                                         glm::vec2(uv), static_cast<float>(alpha)});
@@ -75,7 +74,8 @@ struct MeshWriter {
                    a.wrap_t == b.wrap_t;
         };
         for (std::size_t i = 0; i < scene.textures.size(); ++i)
-            if (scene.textures[i].image == image && same(scene.textures[i].sampler, sampler)) return static_cast<int>(i);
+            if (scene.textures[i].image == image && same(scene.textures[i].sampler, sampler))
+                return static_cast<int>(i);
         scene.textures.push_back({image, sampler});
         return static_cast<int>(scene.textures.size() - 1);
     }

@@ -58,8 +58,7 @@ PortalMesh append_portal_front(MeshWriter& out, const math::PortalRect& rect, co
     return mesh;
 }
 
-PortalMesh append_portal_box(MeshWriter& out, const math::PortalRect& rect,
-                             const FrontGrid& front) {
+PortalMesh append_portal_box(MeshWriter& out, const math::PortalRect& rect, const FrontGrid& front) {
     math::dvec3 c[8];
     math::box_corners(rect, c);
     const glm::dvec3 n = rect.normal;
@@ -88,8 +87,7 @@ PortalMesh append_portal_box(MeshWriter& out, const math::PortalRect& rect,
     }
     std::array<std::uint32_t, 4> back{};
     for (int k = 0; k < 4; ++k) {
-        back[static_cast<std::size_t>(k)] =
-            out.vertex(out.local(c[4 + k]), n, shading::kPortalFillColor, 0.0);
+        back[static_cast<std::size_t>(k)] = out.vertex(out.local(c[4 + k]), n, shading::kPortalFillColor, 0.0);
     }
     out.triangle(back[0], back[1], back[2]);
     out.triangle(back[0], back[2], back[3]);

@@ -24,9 +24,7 @@ struct FrontGrid {
     int rows = 0;
     std::vector<glm::vec3> points;
 
-    const glm::vec3& at(int i, int j) const {
-        return points[static_cast<std::size_t>(j * cols + i)];
-    }
+    const glm::vec3& at(int i, int j) const { return points[static_cast<std::size_t>(j * cols + i)]; }
 };
 
 // The plain front of a portal: its four box corners (a 2 × 2 grid), relative

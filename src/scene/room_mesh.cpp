@@ -51,8 +51,7 @@ struct FaceHole {
     bool aligned = true;
 };
 
-FaceHole make_hole(const layout::Room& room, const FaceAxes& f, int portal,
-                   const math::PortalRect& rect) {
+FaceHole make_hole(const layout::Room& room, const FaceAxes& f, int portal, const math::PortalRect& rect) {
     math::dvec3 c[8];
     math::box_corners(rect, c);
     FaceHole h;
@@ -111,10 +110,8 @@ FrontGrid hole_front(const FaceGrid& grid, const FaceHole& h, std::size_t i0, st
     g.rows = static_cast<int>(u_hi - u_lo + 1);
     for (int j = 0; j < g.rows; ++j) {
         for (int i = 0; i < g.cols; ++i) {
-            const std::size_t ri =
-                r_up ? r_lo + static_cast<std::size_t>(i) : r_hi - static_cast<std::size_t>(i);
-            const std::size_t uj =
-                u_up ? u_lo + static_cast<std::size_t>(j) : u_hi - static_cast<std::size_t>(j);
+            const std::size_t ri = r_up ? r_lo + static_cast<std::size_t>(i) : r_hi - static_cast<std::size_t>(i);
+            const std::size_t uj = u_up ? u_lo + static_cast<std::size_t>(j) : u_hi - static_cast<std::size_t>(j);
             g.points.push_back(r_on_a ? grid.point(ri, uj) : grid.point(uj, ri));
         }
     }
@@ -123,8 +120,7 @@ FrontGrid hole_front(const FaceGrid& grid, const FaceHole& h, std::size_t i0, st
 
 // One face on the room's grid; fills the fronts of its holes.
 void append_grid_face(MeshWriter& out, const layout::Room& room, int face, const Lines& lines,
-                      const std::vector<FaceHole>& holes,
-                      std::vector<std::optional<FrontGrid>>& fronts) {
+                      const std::vector<FaceHole>& holes, std::vector<std::optional<FrontGrid>>& fronts) {
     const FaceAxes f = face_axes(room, face);
     const FaceGrid grid{f, lines[static_cast<std::size_t>(f.in.a)], lines[static_cast<std::size_t>(f.in.b)],
                         out.local(f.plane, f.axis)};
@@ -210,17 +206,14 @@ std::array<IndexRange, layout::kFaceCount> append_room_faces(MeshWriter& out, co
     // The grid lines every face shares: the room's bounds and the hole edges.
     Lines lines;
     for (int axis = 0; axis < 3; ++axis) {
-        lines[static_cast<std::size_t>(axis)] = {out.local(room.min[axis], axis),
-                                                 out.local(room.max[axis], axis)};
+        lines[static_cast<std::size_t>(axis)] = {out.local(room.min[axis], axis), out.local(room.max[axis], axis)};
     }
     for (int face = 0; face < layout::kFaceCount; ++face) {
         if (slabs[static_cast<std::size_t>(face)]) continue;
         const PlaneAxes in = face_axes(room, face).in;
         for (const FaceHole& h : holes[static_cast<std::size_t>(face)]) {
-            for (const double v : {h.lo.x, h.hi.x})
-                lines[static_cast<std::size_t>(in.a)].push_back(out.local(v, in.a));
-            for (const double v : {h.lo.y, h.hi.y})
-                lines[static_cast<std::size_t>(in.b)].push_back(out.local(v, in.b));
+            for (const double v : {h.lo.x, h.hi.x}) lines[static_cast<std::size_t>(in.a)].push_back(out.local(v, in.a));
+            for (const double v : {h.lo.y, h.hi.y}) lines[static_cast<std::size_t>(in.b)].push_back(out.local(v, in.b));
         }
     }
     for (std::vector<float>& l : lines) {
@@ -235,8 +228,8 @@ std::array<IndexRange, layout::kFaceCount> append_room_faces(MeshWriter& out, co
         out.face_uv.reset();
         if (room.face_texture[fi]) {
             const auto f = static_cast<layout::Face>(face);
-            out.face_uv = FaceUv{f, room.texture_size,
-                                 glm::floor(shading::room_texture_uv(f, out.origin, room.texture_size))};
+            out.face_uv =
+                FaceUv{f, room.texture_size, glm::floor(shading::room_texture_uv(f, out.origin, room.texture_size))};
         }
         append_face(out, room, face, lines, holes[fi], slabs[fi], layout, fronts);
         ranges[fi] = out.range_since(first);

@@ -33,8 +33,8 @@ namespace impossible::scene {
 // hole_face, sets fronts[p] (fronts has one entry per portal) to the front
 // that matches the hole's edges. A face with a texture gets texture
 // coordinates (FaceUv). Returns each face's index range, in layout::Face order.
-std::array<IndexRange, layout::kFaceCount> append_room_faces(MeshWriter& out, const layout::Layout& layout,
-                                                             int room, const std::vector<int>& room_portals,
+std::array<IndexRange, layout::kFaceCount> append_room_faces(MeshWriter& out, const layout::Layout& layout, int room,
+                                                             const std::vector<int>& room_portals,
                                                              std::vector<std::optional<FrontGrid>>& fronts);
 
 }  // namespace impossible::scene

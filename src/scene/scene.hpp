@@ -25,11 +25,11 @@ namespace impossible::scene {
 
 struct Vertex {
     glm::vec3 position;
-    glm::vec3 normal;   // unit, on the visible side
-    glm::vec3 color;    // base colour before shading (and before the texel)
-    float checker;      // checker square side in metres; 0: plain
-    glm::vec2 uv{0.0f}; // texture coordinates, (0, 0) the image's top-left; unused untextured
-    float alpha = 1.0f; // alpha before the texel's, for alpha-masked batches
+    glm::vec3 normal;    // unit, on the visible side
+    glm::vec3 color;     // base colour before shading (and before the texel)
+    float checker;       // checker square side in metres; 0: plain
+    glm::vec2 uv{0.0f};  // texture coordinates, (0, 0) the image's top-left; unused untextured
+    float alpha = 1.0f;  // alpha before the texel's, for alpha-masked batches
 };
 
 struct IndexRange {
@@ -57,8 +57,8 @@ struct DrawBatch {
 
 // Where a room's vertices, and its portals' boxes', are measured from.
 struct CellOrigin {
-    glm::dvec3 origin{0.0};          // vertex position = layout coordinates - origin
-    glm::vec3 checker_offset{0.0};   // origin modulo twice the room's checker side
+    glm::dvec3 origin{0.0};         // vertex position = layout coordinates - origin
+    glm::vec3 checker_offset{0.0};  // origin modulo twice the room's checker side
 };
 
 // The room's centre rounded to the nearest multiple of kCellOriginGrid on each
@@ -77,9 +77,9 @@ struct PortalMesh {
 // A portal as the rasteriser draws it, copied from the layout as plain data:
 // where it stands, where it leads, and what it does to what is seen in it.
 struct PortalInfo {
-    math::PortalRect rect;     // in layout coordinates
-    int room = -1;             // the room it stands in
-    int target = -1;           // the portal it leads to; -1 for a mirror
+    math::PortalRect rect;  // in layout coordinates
+    int room = -1;          // the room it stands in
+    int target = -1;        // the portal it leads to; -1 for a mirror
     layout::PortalKind kind = layout::PortalKind::Door;
     glm::dvec3 tint{1.0};      // mirrors and windows: multiplies what is seen in them
     double reflectance = 0.0;  // windows: the reflected view's share
@@ -119,14 +119,14 @@ struct CellObjects {
 struct Scene {
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;
-    std::vector<IndexRange> cells;     // per room: faces (with holes) and props
+    std::vector<IndexRange> cells;                // per room: faces (with holes) and props
     std::vector<std::vector<DrawBatch>> batches;  // per room: cells[room] split by material state
     std::vector<CellObjects> objects;             // per room: the same, split for culling
     std::vector<SceneTexture> textures;           // each image and sampler once
-    std::vector<CellOrigin> origins;    // per room: the origin of its vertices and its portals'
-    std::vector<PortalMesh> portals;   // per portal, relative to its room's frame
-    std::vector<PortalInfo> portal_info;  // per portal
-    links::PortalLinks links;                 // M_AB per portal and the portals of each room, linked once
+    std::vector<CellOrigin> origins;              // per room: the origin of its vertices and its portals'
+    std::vector<PortalMesh> portals;              // per portal, relative to its room's frame
+    std::vector<PortalInfo> portal_info;          // per portal
+    links::PortalLinks links;                     // M_AB per portal and the portals of each room, linked once
 };
 
 // Builds the meshes of every room and portal box, and links the portals. The

@@ -51,11 +51,16 @@ inline double max_channel(const glm::dvec3& c) { return std::max(c.x, std::max(c
 inline bool checker_dark(const glm::dvec3& position, const glm::dvec3& normal, double side) {
     if (side <= 0.0) return false;
     const glm::dvec3 a = glm::abs(normal);
-    double u = position.y, v = position.z;              // normal mostly along x
-    if (a.y >= a.x && a.y >= a.z) { u = position.x; v = position.z; }
-    else if (a.z >= a.x && a.z >= a.y) { u = position.x; v = position.y; }
-    const long long parity = static_cast<long long>(std::floor(u / side)) +
-                             static_cast<long long>(std::floor(v / side));
+    double u = position.y, v = position.z;  // normal mostly along x
+    if (a.y >= a.x && a.y >= a.z) {
+        u = position.x;
+        v = position.z;
+    } else if (a.z >= a.x && a.z >= a.y) {
+        u = position.x;
+        v = position.y;
+    }
+    const long long parity =
+        static_cast<long long>(std::floor(u / side)) + static_cast<long long>(std::floor(v / side));
     return (parity & 1) != 0;
 }
 
@@ -78,8 +83,7 @@ inline glm::dvec2 room_texture_uv(layout::Face face, const glm::dvec3& p, double
     return glm::dvec2(0.0);
 }
 
-inline glm::dvec3 shade(const glm::dvec3& base, const glm::dvec3& normal,
-                        const glm::dvec3& position, double checker) {
+inline glm::dvec3 shade(const glm::dvec3& base, const glm::dvec3& normal, const glm::dvec3& position, double checker) {
     const double lambert = std::max(0.0, glm::dot(normal, kLightDir));
     const double dark = checker_dark(position, normal, checker) ? kCheckerDark : 1.0;
     return base * ((kAmbient + kDiffuse * lambert) * dark);

@@ -28,9 +28,7 @@ constexpr double kPad = 1e-9;
 // Bins per axis of the surface-area heuristic.
 constexpr int kBins = 16;
 
-double max_abs(const dvec3& v) {
-    return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
-}
+double max_abs(const dvec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
 
 struct Box {
     dvec3 lo{kInf};
@@ -52,7 +50,7 @@ struct Box {
 };
 
 struct Item {
-    Box box;      // padded
+    Box box;       // padded
     dvec3 centre;  // of the box
 };
 
@@ -180,9 +178,8 @@ private:
         if (best_axis < 0) return begin + (end - begin) / 2;
         const double lo = centres.lo[best_axis];
         const double scale = kBins / (centres.hi[best_axis] - lo);
-        const auto mid = std::stable_partition(first, last, [&](int t) {
-            return bin_of(items_[t].centre[best_axis], lo, scale) < best_plane;
-        });
+        const auto mid = std::stable_partition(
+            first, last, [&](int t) { return bin_of(items_[t].centre[best_axis], lo, scale) < best_plane; });
         return static_cast<int>(mid - bvh_.order.begin());
     }
 
@@ -336,8 +333,8 @@ TriangleHit nearest_triangle(const Bvh& bvh, const std::vector<PropTriangle>& tr
     return best;
 }
 
-BoxHit nearest_box_scan(const std::vector<PropBox>& boxes, const dvec3& origin, const dvec3& dir,
-                        const ClipPlane& clip, double t_limit) {
+BoxHit nearest_box_scan(const std::vector<PropBox>& boxes, const dvec3& origin, const dvec3& dir, const ClipPlane& clip,
+                        double t_limit) {
     BoxHit best;
     double best_t = t_limit;
     const int n = static_cast<int>(boxes.size());

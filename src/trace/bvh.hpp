@@ -54,8 +54,8 @@ struct BoxHit {
     std::optional<SurfaceHit> hit;
     int index = -1;
 };
-BoxHit nearest_box_scan(const std::vector<PropBox>& boxes, const dvec3& origin, const dvec3& dir,
-                        const ClipPlane& clip, double t_limit);
+BoxHit nearest_box_scan(const std::vector<PropBox>& boxes, const dvec3& origin, const dvec3& dir, const ClipPlane& clip,
+                        double t_limit);
 Bvh build_box_bvh(const std::vector<PropBox>& boxes);
 BoxHit nearest_box(const Bvh& bvh, const std::vector<PropBox>& boxes, const dvec3& origin, const dvec3& dir,
                    const ClipPlane& clip, double t_limit);

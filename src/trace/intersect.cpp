@@ -38,8 +38,8 @@ std::optional<double> hit_axis_rect(const AxisRect& rect, const dvec3& origin, c
     return t;
 }
 
-std::optional<SurfaceHit> hit_room_face(const RoomFace& face, const Scene& scene, const dvec3& origin,
-                                        const dvec3& dir, const ClipPlane& clip) {
+std::optional<SurfaceHit> hit_room_face(const RoomFace& face, const Scene& scene, const dvec3& origin, const dvec3& dir,
+                                        const ClipPlane& clip) {
     const std::optional<double> t = hit_axis_rect(face.rect, origin, dir);
     if (!t) return std::nullopt;
     const dvec3 p = origin + *t * dir;

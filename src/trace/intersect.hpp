@@ -18,7 +18,7 @@ namespace impossible::trace {
 struct SurfaceHit {
     double t = 0.0;
     dvec3 normal{0.0};
-    int portal = -1;  // ≥ 0: the front face of this portal, met in its hole
+    int portal = -1;              // ≥ 0: the front face of this portal, met in its hole
     glm::dvec2 barycentric{0.0};  // a triangle's: the weights (u, v) of its vertices 1 and 2
 };
 
@@ -47,8 +47,8 @@ std::optional<double> hit_axis_rect(const AxisRect& rect, const dvec3& origin, c
 // face's plane too (scene/room_mesh.cpp). Mirrors and windows fill their
 // holes the same way: the face is seen only from inside the room, so they
 // are seen only from their front.
-std::optional<SurfaceHit> hit_room_face(const RoomFace& face, const Scene& scene, const dvec3& origin,
-                                        const dvec3& dir, const ClipPlane& clip);
+std::optional<SurfaceHit> hit_room_face(const RoomFace& face, const Scene& scene, const dvec3& origin, const dvec3& dir,
+                                        const ClipPlane& clip);
 
 // A prop box from outside: the face where the ray enters it.
 std::optional<SurfaceHit> hit_prop_box(const PropBox& box, const dvec3& origin, const dvec3& dir,

@@ -14,7 +14,7 @@ int wrap_texel(double i, int size, int wrap) {
         w = std::clamp(i, 0.0, n - 1.0);
     } else if (wrap == assets::sampler_code::kMirroredRepeat) {
         const double m = i - 2.0 * n * std::floor(i / (2.0 * n));  // i mod 2·size, in [0, 2·size]
-        w = m < n ? m : 2.0 * n - 1.0 - m;  // = (size - 1) - mirror(m - size)
+        w = m < n ? m : 2.0 * n - 1.0 - m;                         // = (size - 1) - mirror(m - size)
     } else {
         w = i - n * std::floor(i / n);  // i mod size
     }

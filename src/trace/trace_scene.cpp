@@ -15,12 +15,36 @@ AxisRect room_face_rect(const dvec3& room_min, const dvec3& room_max, layout::Fa
     r.lo = room_min;
     r.hi = room_max;
     switch (face) {
-        case layout::Face::Floor: r.axis = 1; r.coord = room_min.y; r.sign = 1.0; break;
-        case layout::Face::Ceiling: r.axis = 1; r.coord = room_max.y; r.sign = -1.0; break;
-        case layout::Face::NegX: r.axis = 0; r.coord = room_min.x; r.sign = 1.0; break;
-        case layout::Face::PosX: r.axis = 0; r.coord = room_max.x; r.sign = -1.0; break;
-        case layout::Face::NegZ: r.axis = 2; r.coord = room_min.z; r.sign = 1.0; break;
-        case layout::Face::PosZ: r.axis = 2; r.coord = room_max.z; r.sign = -1.0; break;
+        case layout::Face::Floor:
+            r.axis = 1;
+            r.coord = room_min.y;
+            r.sign = 1.0;
+            break;
+        case layout::Face::Ceiling:
+            r.axis = 1;
+            r.coord = room_max.y;
+            r.sign = -1.0;
+            break;
+        case layout::Face::NegX:
+            r.axis = 0;
+            r.coord = room_min.x;
+            r.sign = 1.0;
+            break;
+        case layout::Face::PosX:
+            r.axis = 0;
+            r.coord = room_max.x;
+            r.sign = -1.0;
+            break;
+        case layout::Face::NegZ:
+            r.axis = 2;
+            r.coord = room_min.z;
+            r.sign = 1.0;
+            break;
+        case layout::Face::PosZ:
+            r.axis = 2;
+            r.coord = room_max.z;
+            r.sign = -1.0;
+            break;
     }
     return r;
 }

@@ -62,10 +62,10 @@ struct PropBox {
 // texture looked up). A triangle without one (PropTriangle::material < 0)
 // is opaque, one-sided and untextured.
 struct PropMaterial {
-    double alpha = 1.0;          // baseColorFactor's alpha (its rgb is PropTriangle::color)
-    assets::Texture texture;     // image null: none (the texel is white)
-    bool double_sided = false;   // hit from both sides, the back's normal reversed
-    bool mask = false;           // alphaMode MASK: alpha below alpha_cutoff is no surface
+    double alpha = 1.0;         // baseColorFactor's alpha (its rgb is PropTriangle::color)
+    assets::Texture texture;    // image null: none (the texel is white)
+    bool double_sided = false;  // hit from both sides, the back's normal reversed
+    bool mask = false;          // alphaMode MASK: alpha below alpha_cutoff is no surface
     double alpha_cutoff = 0.5;
 };
 
@@ -74,11 +74,11 @@ struct PropMaterial {
 // the blended uv), its alpha the material's · COLOR_0's · texel's.
 struct PropTriangle {
     std::array<dvec3, 3> position;
-    int material = -1;            // into the room's SceneRoom::materials; -1: none (see PropMaterial)
+    int material = -1;  // into the room's SceneRoom::materials; -1: none (see PropMaterial)
     // Only what a ray may need before it knows it hits lies next to the
     // positions, which every ray reads; the rest is read for hits only.
-    std::array<dvec3, 3> normal;  // unit vertex normals
-    dvec3 color{0.8};             // the material's base colour factor (rgb)
+    std::array<dvec3, 3> normal;                                            // unit vertex normals
+    dvec3 color{0.8};                                                       // the material's base colour factor (rgb)
     std::array<dvec4, 3> vertex_color{dvec4(1.0), dvec4(1.0), dvec4(1.0)};  // COLOR_0
     std::array<glm::dvec2, 3> uv{};
 };
@@ -88,17 +88,17 @@ struct PropTriangle {
 // facing +n (it always fills a hole, so hit_room_face meets it).
 struct ScenePortal {
     math::PortalRect rect;
-    dvec3 right{0.0};          // u × n
-    int room = -1;             // the room it belongs to
-    int target = -1;           // the paired portal; -1 for a mirror
+    dvec3 right{0.0};  // u × n
+    int room = -1;     // the room it belongs to
+    int target = -1;   // the paired portal; -1 for a mirror
     layout::PortalKind kind = layout::PortalKind::Door;
-    dvec3 tint{1.0};           // mirror, window: multiplies what is seen through or in it
-    double reflectance = 0.0;  // window: the reflection's share r
-    dmat4 to_local{1.0};       // layout → portal frame (x right, y up, z normal)
-    dmat4 transfer{1.0};       // M_AB, onto the target portal (door, window)
-    dmat4 reflection{1.0};     // M_P, the reflection in the plane (mirror, window)
+    dvec3 tint{1.0};              // mirror, window: multiplies what is seen through or in it
+    double reflectance = 0.0;     // window: the reflection's share r
+    dmat4 to_local{1.0};          // layout → portal frame (x right, y up, z normal)
+    dmat4 transfer{1.0};          // M_AB, onto the target portal (door, window)
+    dmat4 reflection{1.0};        // M_P, the reflection in the plane (mirror, window)
     double clip_tolerance = 0.0;  // 1e-9 · (1 + |centre|): "strictly in front" of this plane
-    bool in_hole = false;      // fills a hole of one of its room's faces
+    bool in_hole = false;         // fills a hole of one of its room's faces
 };
 
 // A node of a room's bounding-volume hierarchy over its triangles or its

@@ -75,8 +75,7 @@ Nearest nearest_in_room(const Scene& scene, int room_index, const dvec3& origin,
         nearest.triangle = tri.index;
         nearest.barycentric = tri.hit->barycentric;
     }
-    for (int p : room.portals)
-        nearest.offer(hit_portal_box(scene.portals[p], origin, dir, clip), p, dvec3(0.0), 0.0);
+    for (int p : room.portals) nearest.offer(hit_portal_box(scene.portals[p], origin, dir, clip), p, dvec3(0.0), 0.0);
     return nearest;
 }
 
@@ -164,8 +163,8 @@ dvec3 follow(const Scene& scene, Ray ray, int max_depth, TraceHit* main);
 // branch is cut by weight, the main path ends (id 255) and the loop follows
 // the reflected branch. False where both are cut: the path's colour is then
 // path.done.
-bool window_step(const Scene& scene, const ScenePortal& p, const dvec3& point, const dvec3& normal,
-                 int max_depth, PathState& path) {
+bool window_step(const Scene& scene, const ScenePortal& p, const dvec3& point, const dvec3& normal, int max_depth,
+                 PathState& path) {
     Ray& ray = path.ray;
     const double r = p.reflectance;
     Ray back = reflected(p, ray);
@@ -227,9 +226,7 @@ dvec3 follow(const Scene& scene, Ray ray, int max_depth, TraceHit* main) {
         }
         const ScenePortal& p = scene.portals[n.portal];
         switch (p.kind) {
-            case layout::PortalKind::Door:
-                pass_through(scene, p, path.ray);
-                break;
+            case layout::PortalKind::Door: pass_through(scene, p, path.ray); break;
             case layout::PortalKind::Mirror: {  // step 4; never cut by weight
                 const double weight = now.weight * shading::max_channel(p.tint);
                 path.ray = reflected(p, now);
@@ -256,9 +253,7 @@ TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, in
     return hit;
 }
 
-std::uint8_t to_byte(double c) {
-    return static_cast<std::uint8_t>(std::lround(std::clamp(c, 0.0, 1.0) * 255.0));
-}
+std::uint8_t to_byte(double c) { return static_cast<std::uint8_t>(std::lround(std::clamp(c, 0.0, 1.0) * 255.0)); }
 
 namespace {
 
@@ -275,16 +270,15 @@ PixelRay eye_pixel_ray(const TraceDesc& desc, const math::Frustum& frustum, cons
 }
 
 // The ray through a point of an eye's image (pixel units, rows from the top).
-PixelRay eye_point_ray(const TraceDesc& desc, const math::Frustum& frustum, const math::Eye& eye, double x,
-                       double y) {
+PixelRay eye_point_ray(const TraceDesc& desc, const math::Frustum& frustum, const math::Eye& eye, double x, double y) {
     const dvec3 dir_eye = math::image_point_ray_eye(frustum, desc.eye_width, desc.eye_height, x, y);
     return {eye.position, glm::normalize(eye.rotation * dir_eye)};
 }
 
 // One pixel's id and bytes: the centre ray's id; with several samples, the
 // mean of the samples' bytes rounded to nearest (half up), like a resolve.
-void trace_pixel(const Scene& scene, const TraceDesc& desc, const math::Frustum& frustum, const math::Eye& eye,
-                 int i, int j, std::uint8_t* id, std::uint8_t* rgb) {
+void trace_pixel(const Scene& scene, const TraceDesc& desc, const math::Frustum& frustum, const math::Eye& eye, int i,
+                 int j, std::uint8_t* id, std::uint8_t* rgb) {
     const PixelRay centre = eye_pixel_ray(desc, frustum, eye, i, j);
     const TraceHit hit = trace_ray(scene, centre.origin, centre.dir, desc.room, desc.max_depth);
     *id = static_cast<std::uint8_t>(hit.id);

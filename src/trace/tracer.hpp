@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "base/result.hpp"
-#include "layout/layout.hpp"
 #include "image/image.hpp"
+#include "layout/layout.hpp"
 #include "math/pose.hpp"
 #include "math/view.hpp"
 #include "shading/shading.hpp"

@@ -13,9 +13,7 @@ namespace impossible::walk {
 
 namespace {
 
-math::dvec3 apply(const math::dmat4& m, const math::dvec3& p) {
-    return math::dvec3(m * math::dvec4(p, 1.0));
-}
+math::dvec3 apply(const math::dmat4& m, const math::dvec3& p) { return math::dvec3(m * math::dvec4(p, 1.0)); }
 
 }  // namespace
 

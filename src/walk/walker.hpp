@@ -34,8 +34,8 @@
 #include <vector>
 
 #include "layout/layout.hpp"
-#include "math/pose.hpp"
 #include "links/portal_links.hpp"
+#include "math/pose.hpp"
 
 namespace impossible::walk {
 
@@ -87,9 +87,9 @@ private:
     links::PortalLinks links_;
     math::dmat4 w_{1.0};
     int room_ = -1;
-    math::dvec3 head_{0.0};                // virtual head centre
-    math::dmat3 physical_rotation_{1.0};   // of the last physical pose
-    math::HeadPose physical_pose_{};        // the last physical pose
+    math::dvec3 head_{0.0};               // virtual head centre
+    math::dmat3 physical_rotation_{1.0};  // of the last physical pose
+    math::HeadPose physical_pose_{};      // the last physical pose
     bool started_ = false;
     std::deque<Passed> history_;  // the latest teleports, newest last
 };

@@ -14,8 +14,8 @@
 
 #include "app/cmd_walk.hpp"
 #include "common/temp_dir.hpp"
-#include "walk/walker.hpp"
 #include "walk/walk_test_layouts.hpp"
+#include "walk/walker.hpp"
 
 namespace impossible::app {
 namespace {

@@ -28,8 +28,8 @@ class OutputFile : public test::TempDirTest {};
 
 TEST_F(OutputFile, WritesAllOrNothing) {
     std::ofstream(dir_ / "old.txt") << "old";
-    const Result<void> failed = write_output_files(
-        {{(dir_ / "old.txt").string(), "new"}, {(dir_ / "missing/x.txt").string(), "x"}});
+    const Result<void> failed =
+        write_output_files({{(dir_ / "old.txt").string(), "new"}, {(dir_ / "missing/x.txt").string(), "x"}});
     ASSERT_FALSE(failed);
     EXPECT_NE(failed.error().find("missing/x.txt: cannot write: No such file or directory"), std::string::npos)
         << failed.error();

@@ -27,10 +27,18 @@ TEST(BenchOptions, TheViewOptionsLackTheImageFilesAndStats) {
 }
 
 TEST(BenchOptions, EachOptionReachesItsField) {
-    const BenchOptions o =
-        parse({"lay.json", "--size", "64x32", "--frames", "5", "--warmup", "0", "--profile-frames", "1", "--path",
-               "walk.txt", "--portals", "2", "--sweep", "depth:1,4", "--reference-depth", "9",
-               "--reference-samples", "4", "--json", "b.json", "--csv", "b.csv", "--no-cull"});
+    const BenchOptions o = parse({"lay.json",  "--size",
+                                  "64x32",     "--frames",
+                                  "5",         "--warmup",
+                                  "0",         "--profile-frames",
+                                  "1",         "--path",
+                                  "walk.txt",  "--portals",
+                                  "2",         "--sweep",
+                                  "depth:1,4", "--reference-depth",
+                                  "9",         "--reference-samples",
+                                  "4",         "--json",
+                                  "b.json",    "--csv",
+                                  "b.csv",     "--no-cull"});
     EXPECT_EQ(o.view.layout_path, "lay.json");
     EXPECT_EQ(o.view.frame.eye_width, 64);
     EXPECT_FALSE(o.view.frame.cull_portals);

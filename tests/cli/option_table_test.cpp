@@ -44,8 +44,8 @@ struct Extra {
 };
 
 constexpr Option<Extra> kExtraOptions[] = {
-    {"--colour", "C", "the colour", [](Extra& e, const OptionValue& v) { e.colour = v.text; },
-     "--colour C, --color C", "Extra options:"},
+    {"--colour", "C", "the colour", [](Extra& e, const OptionValue& v) { e.colour = v.text; }, "--colour C, --color C",
+     "Extra options:"},
     {"--color", "C", nullptr, [](Extra& e, const OptionValue& v) { e.colour = v.text; }},
 };
 

@@ -24,11 +24,40 @@ std::string input_error(const Args& args) {
 }
 
 TEST(ViewOptions, EachOptionReachesItsField) {
-    const ViewOptions o = parse({"lay.json", "--pose", "1,2,3,90,-5,0", "--room", "hall", "--ipd", "0.07", "--fov",
-                                 "60", "--size", "320x180", "--max-depth", "3", "--max-portal-passes", "99", "--out",
-                                 "a.png", "--ids", "b.png", "--backend", "osmesa", "--stereo", "two-pass", "--clip",
-                                 "oblique", "--depth", "standard", "--no-cull", "--portal-texture", "0.5",
-                                 "--occlusion-test", "--samples", "4", "--stats"});
+    const ViewOptions o = parse({"lay.json",
+                                 "--pose",
+                                 "1,2,3,90,-5,0",
+                                 "--room",
+                                 "hall",
+                                 "--ipd",
+                                 "0.07",
+                                 "--fov",
+                                 "60",
+                                 "--size",
+                                 "320x180",
+                                 "--max-depth",
+                                 "3",
+                                 "--max-portal-passes",
+                                 "99",
+                                 "--out",
+                                 "a.png",
+                                 "--ids",
+                                 "b.png",
+                                 "--backend",
+                                 "osmesa",
+                                 "--stereo",
+                                 "two-pass",
+                                 "--clip",
+                                 "oblique",
+                                 "--depth",
+                                 "standard",
+                                 "--no-cull",
+                                 "--portal-texture",
+                                 "0.5",
+                                 "--occlusion-test",
+                                 "--samples",
+                                 "4",
+                                 "--stats"});
     EXPECT_EQ(o.layout_path, "lay.json");
     ASSERT_TRUE(o.pose);
     EXPECT_EQ(o.pose->position.z, 3.0);
@@ -82,8 +111,9 @@ TEST(ViewOptions, TheHelpHasEveryOptionAtColumn29) {
         EXPECT_NE(help.find("  " + left + " "), std::string::npos) << left;
     }
     EXPECT_NE(help.find("\n  --room ID                  the room the head is in;"), std::string::npos);
-    EXPECT_TRUE(help.ends_with("\n  --stats                    print draw calls, triangles and portal passes"
-                               " to stderr\n"));
+    EXPECT_TRUE(
+        help.ends_with("\n  --stats                    print draw calls, triangles and portal passes"
+                       " to stderr\n"));
 }
 
 }  // namespace

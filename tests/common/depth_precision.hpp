@@ -20,8 +20,8 @@ inline double resolvable_separation(const math::dmat4& clip, double z, bool floa
     const double h = z * 1e-6;
     const double slope = std::abs(window_depth(z + h) - window_depth(z - h)) / (2 * h);
     const double depth = window_depth(z);
-    const double step = float_depth ? std::nextafter(static_cast<float>(depth), 2.0f) - static_cast<float>(depth)
-                                    : 1.0 / 16777215.0;
+    const double step =
+        float_depth ? std::nextafter(static_cast<float>(depth), 2.0f) - static_cast<float>(depth) : 1.0 / 16777215.0;
     return step / slope;
 }
 

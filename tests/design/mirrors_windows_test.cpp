@@ -4,8 +4,8 @@
 #include "design_test_util.hpp"
 
 #include <algorithm>
-#include <set>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "design/plan.hpp"
 #include "design/report.hpp"

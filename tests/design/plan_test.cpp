@@ -33,10 +33,12 @@ std::vector<Element> parse_xml(const std::string& xml) {
             const std::string text = xml.substr(i, next - i);
             for (std::size_t a = text.find('&'); a != std::string::npos; a = text.find('&', a + 1)) {
                 const std::string entity = text.substr(a, text.find(';', a) - a + 1);
-                if (entity != "&amp;" && entity != "&lt;" && entity != "&gt;" && entity != "&quot;" && entity != "&apos;")
+                if (entity != "&amp;" && entity != "&lt;" && entity != "&gt;" && entity != "&quot;" &&
+                    entity != "&apos;")
                     return fail("bad entity " + entity);
             }
-            if (open.empty() && text.find_first_not_of(" \n") != std::string::npos) return fail("text outside the root");
+            if (open.empty() && text.find_first_not_of(" \n") != std::string::npos)
+                return fail("text outside the root");
             i = next == std::string::npos ? xml.size() : next;
             continue;
         }
@@ -57,7 +59,8 @@ std::vector<Element> parse_xml(const std::string& xml) {
         if (open.empty() && !out.empty()) return fail("a second root element");
         while (p != std::string::npos && (p = tag.find_first_not_of(" \n", p)) != std::string::npos) {
             const std::size_t eq = tag.find('=', p);
-            if (eq == std::string::npos || eq + 1 >= tag.size() || tag[eq + 1] != '"') return fail("unquoted attribute");
+            if (eq == std::string::npos || eq + 1 >= tag.size() || tag[eq + 1] != '"')
+                return fail("unquoted attribute");
             const std::size_t close = tag.find('"', eq + 2);
             if (close == std::string::npos) return fail("unterminated attribute");
             const std::string key = tag.substr(p, eq - p);

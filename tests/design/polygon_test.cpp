@@ -20,9 +20,9 @@ TEST(Polygon, AreaOfEitherWinding) {
 
 TEST(Polygon, ContainsWithEdgesIncluded) {
     EXPECT_TRUE(m::contains(kL, {-1, -1}));
-    EXPECT_TRUE(m::contains(kL, {2, -1}));   // on an edge
-    EXPECT_TRUE(m::contains(kL, {0, 0}));    // the inner corner
-    EXPECT_FALSE(m::contains(kL, {1, 1}));   // the missing quarter
+    EXPECT_TRUE(m::contains(kL, {2, -1}));  // on an edge
+    EXPECT_TRUE(m::contains(kL, {0, 0}));   // the inner corner
+    EXPECT_FALSE(m::contains(kL, {1, 1}));  // the missing quarter
     EXPECT_FALSE(m::contains(kL, {3, 0}));
     EXPECT_DOUBLE_EQ(m::distance_to_boundary(kL, {-1, -1}), 1.0);
 }

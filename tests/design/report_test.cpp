@@ -12,8 +12,8 @@ const std::string kSquare4 = "{ \"min\": [-2, -2], \"max\": [2, 2] }";
 
 TEST(DesignReport, HalfOverlappingSmallRoomsAreUnnoticed) {
     // Two 2 x 4 m rooms sharing a 1 x 4 m strip: 4 of 8 m² = 50 % <= 56 %.
-    const auto l = load(kSquare4, "a", room("a", -2, -2, 0, 2) + "," + room("b", -1, -2, 1, 2),
-                        door_pair("a", "b", -0.5, 0));
+    const auto l =
+        load(kSquare4, "a", room("a", -2, -2, 0, 2) + "," + room("b", -1, -2, 1, 2), door_pair("a", "b", -0.5, 0));
     const design::Report r = design::make_report(l);
     ASSERT_EQ(r.overlaps.size(), 1u);
     EXPECT_NEAR(r.overlaps[0].area, 4.0, 1e-9);
@@ -38,8 +38,8 @@ TEST(DesignReport, LargeRoomsHaveTheLowerLimit) {
 }
 
 TEST(DesignReport, ARoomInsideAnotherOverlapsFully) {
-    const auto l = load(kSquare4, "a", room("a", -2, -2, 2, 2) + "," + room("b", -1, -1, 1, 1.5),
-                        door_pair("a", "b", 0, 0));
+    const auto l =
+        load(kSquare4, "a", room("a", -2, -2, 2, 2) + "," + room("b", -1, -1, 1, 1.5), door_pair("a", "b", 0, 0));
     const design::Report r = design::make_report(l);
     ASSERT_EQ(r.overlaps.size(), 1u);
     EXPECT_NEAR(r.overlaps[0].percent, 100.0, 1e-9);  // of the smaller room
@@ -55,8 +55,8 @@ TEST(DesignReport, RoomsThatOnlyTouchDoNotOverlap) {
 TEST(DesignReport, RoomsNoDoorLeadsToAreUnreachable) {
     // a - b joined; c and d joined to each other only.
     const auto l = load(kSquare4, "a",
-                        room("a", -2, -2, 2, 2) + "," + room("b", -2, -2, 2, 2) + "," + room("c", -2, -2, 2, 2) +
-                            "," + room("d", -2, -2, 2, 2),
+                        room("a", -2, -2, 2, 2) + "," + room("b", -2, -2, 2, 2) + "," + room("c", -2, -2, 2, 2) + "," +
+                            room("d", -2, -2, 2, 2),
                         door_pair("a", "b", 0, 0) + "," + door_pair("c", "d", 1, 0));
     const design::Report r = design::make_report(l);
     EXPECT_EQ(r.unreachable, (std::vector<int>{2, 3}));
@@ -70,12 +70,13 @@ TEST(DesignReport, RoomsNoDoorLeadsToAreUnreachable) {
 TEST(DesignReport, RoomsAndDoorsOutsideAnLShapedPlayArea) {
     const std::string l_shape = "{ \"polygon\": [[-2, -2], [2, -2], [2, 0], [0, 0], [0, 2], [-2, 2]] }";
     // b covers the missing north-east quarter by 1 m²; its door stands at (1, 1), outside.
-    const auto l = load(l_shape, "a", room("a", -2, -2, 0, 2) + "," + room("b", -1, -2, 1, 2) + "," + room("c", -2, -2, 2, 0),
-                        door_pair("a", "b", -0.5, 0) + "," + door_pair("b", "c", 0.5, -1) + "," +
-                            "{ \"id\": \"b_out\", \"room\": \"b\", \"center\": [0.5, 1.05, 1], \"normal\": [0, 0, 1], "
-                            "\"width\": 0.9, \"height\": 2.1, \"target\": \"b_out2\" }, "
-                            "{ \"id\": \"b_out2\", \"room\": \"b\", \"center\": [-0.5, 1.05, 1.5], \"normal\": [0, 0, 1], "
-                            "\"width\": 0.9, \"height\": 2.1, \"target\": \"b_out\" }");
+    const auto l =
+        load(l_shape, "a", room("a", -2, -2, 0, 2) + "," + room("b", -1, -2, 1, 2) + "," + room("c", -2, -2, 2, 0),
+             door_pair("a", "b", -0.5, 0) + "," + door_pair("b", "c", 0.5, -1) + "," +
+                 "{ \"id\": \"b_out\", \"room\": \"b\", \"center\": [0.5, 1.05, 1], \"normal\": [0, 0, 1], "
+                 "\"width\": 0.9, \"height\": 2.1, \"target\": \"b_out2\" }, "
+                 "{ \"id\": \"b_out2\", \"room\": \"b\", \"center\": [-0.5, 1.05, 1.5], \"normal\": [0, 0, 1], "
+                 "\"width\": 0.9, \"height\": 2.1, \"target\": \"b_out\" }");
     const design::Report r = design::make_report(l);
     ASSERT_EQ(r.rooms_outside.size(), 1u);
     EXPECT_EQ(r.rooms_outside[0].room, 1);

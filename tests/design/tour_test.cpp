@@ -6,8 +6,8 @@
 #include <set>
 
 #include "design/path_text.hpp"
-#include "layout/path_file.hpp"
 #include "design/tour.hpp"
+#include "layout/path_file.hpp"
 #include "walk/walker.hpp"
 
 namespace design_test {

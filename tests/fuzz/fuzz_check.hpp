@@ -26,10 +26,14 @@ inline bool is_clean_line(std::string_view text) {
         std::size_t length = 0;
         unsigned min = 0;
         unsigned code = 0;
-        if (c >= 0xC2 && c <= 0xDF) length = 2, min = 0x80, code = c & 0x1F;
-        else if (c >= 0xE0 && c <= 0xEF) length = 3, min = 0x800, code = c & 0x0F;
-        else if (c >= 0xF0 && c <= 0xF4) length = 4, min = 0x10000, code = c & 0x07;
-        else return false;
+        if (c >= 0xC2 && c <= 0xDF)
+            length = 2, min = 0x80, code = c & 0x1F;
+        else if (c >= 0xE0 && c <= 0xEF)
+            length = 3, min = 0x800, code = c & 0x0F;
+        else if (c >= 0xF0 && c <= 0xF4)
+            length = 4, min = 0x10000, code = c & 0x07;
+        else
+            return false;
         if (i + length > text.size()) return false;
         for (std::size_t k = 1; k < length; ++k) {
             const auto b = static_cast<unsigned char>(text[i + k]);
@@ -61,8 +65,10 @@ inline void require_clean_line(std::string_view message) {
     std::fprintf(stderr, "fuzz check failed: an error message that is not one clean line: \"");
     for (const char ch : message) {
         const auto c = static_cast<unsigned char>(ch);
-        if (c >= 0x20 && c < 0x7F && c != '\\') std::fputc(c, stderr);
-        else std::fprintf(stderr, "\\x%02X", c);
+        if (c >= 0x20 && c < 0x7F && c != '\\')
+            std::fputc(c, stderr);
+        else
+            std::fprintf(stderr, "\\x%02X", c);
     }
     std::fprintf(stderr, "\"\n");
     std::abort();

@@ -15,8 +15,8 @@
 #include <cstring>
 #include <string>
 
-#include "fuzz_check.hpp"
 #include "assets/gltf_model.hpp"
+#include "fuzz_check.hpp"
 
 namespace {
 

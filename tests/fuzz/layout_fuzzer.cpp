@@ -14,8 +14,7 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
-    const impossible::layout::LoadResult result =
-        impossible::layout::load_layout_text(text, "fuzz.json", ".");
+    const impossible::layout::LoadResult result = impossible::layout::load_layout_text(text, "fuzz.json", ".");
     impossible::fuzz::require(result.layout.has_value() == result.errors.empty(),
                               "a layout, or errors, never both or neither");
     for (const impossible::layout::Diagnostic& d : result.errors) {

@@ -30,10 +30,9 @@ struct BenchRun {
 
 class BenchCli : public test::TempDirTest {
 protected:
-
     BenchRun run(const std::string& args) {
-        const std::string command = "cd '" + dir_.string() + "' && '" IMPOSSIBLE_BINARY "' bench " + args +
-                                    " >stdout.txt 2>stderr.txt";
+        const std::string command =
+            "cd '" + dir_.string() + "' && '" IMPOSSIBLE_BINARY "' bench " + args + " >stdout.txt 2>stderr.txt";
         const int raw = std::system(command.c_str());
         return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text("stderr.txt")};
     }
@@ -52,9 +51,9 @@ TEST_F(BenchCli, WritesTheDocumentedKeysWithSaneCounts) {
     const BenchRun r = run(std::string(kQuick) + " --json b.json --csv b.csv");
     ASSERT_EQ(r.status, 0) << r.err;
     const nlohmann::json j = json("b.json");
-    for (const char* key : {"frame_ms_median", "frame_ms_p90", "fragments_per_pixel", "draw_calls",
-                            "portal_passes_drawn", "portal_passes_culled", "submit_ms_median", "triangles",
-                            "portals", "configs", "gl_renderer"})
+    for (const char* key :
+         {"frame_ms_median", "frame_ms_p90", "fragments_per_pixel", "draw_calls", "portal_passes_drawn",
+          "portal_passes_culled", "submit_ms_median", "triangles", "portals", "configs", "gl_renderer"})
         EXPECT_TRUE(j.contains(key)) << key;
     EXPECT_GT(j["frame_ms_median"].get<double>(), 0.0);
     EXPECT_GE(j["frame_ms_p90"].get<double>(), j["frame_ms_median"].get<double>());
@@ -110,7 +109,8 @@ TEST_F(BenchCli, TechniqueSweepMeasuresEveryConfigurationWithItsError) {
 // fragments per pixel sample as with one sample and a smaller error against
 // the anti-aliased tracer; a count it lacks is that configuration's error.
 TEST_F(BenchCli, SampleSweepMeasuresOfferedCountsAndReportsTheOthers) {
-    const BenchRun r = run(std::string(kQuick) + " --sweep samples:1,4,16 --error --reference-samples 16 --json s.json");
+    const BenchRun r =
+        run(std::string(kQuick) + " --sweep samples:1,4,16 --error --reference-samples 16 --json s.json");
     ASSERT_EQ(r.status, 0) << r.err;
     const nlohmann::json j = json("s.json");
     EXPECT_EQ(j["reference_samples"], 16);
@@ -179,8 +179,8 @@ TEST_F(BenchCli, ScriptedWalkMeasuresEveryPose) {
 }
 
 TEST_F(BenchCli, BadInputAndUsageErrors) {
-    for (const char* args : {"--frames 0", "--sweep bogus", "--sweep depth:x", "--path missing.txt",
-                             "--portals -1", "missing.json"})
+    for (const char* args :
+         {"--frames 0", "--sweep bogus", "--sweep depth:x", "--path missing.txt", "--portals -1", "missing.json"})
         EXPECT_EQ(run(args).status, 1) << args;
     for (const char* args : {"--out x.png", "--frames", "--bogus"}) EXPECT_EQ(run(args).status, 2) << args;
     // Six doors without culling at depth 8: exponentially many passes, refused.

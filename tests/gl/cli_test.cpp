@@ -9,9 +9,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "common/temp_dir.hpp"
 #include "common/png.hpp"
 #include "common/program_run.hpp"
+#include "common/temp_dir.hpp"
 
 namespace impossible {
 namespace {
@@ -57,7 +57,7 @@ TEST_F(Cli, RenderWithoutArgumentsWritesStereoPngOfTheDefaultLayout) {
     const ProgramRun run = run_program("render --size 160x90", dir_);
     ASSERT_EQ(run.status, 0) << run.err;
     const image::Pixels png = testing::read_png_ok((dir_ / "stereo.png").string());
-        EXPECT_EQ(png.width, 320);
+    EXPECT_EQ(png.width, 320);
     EXPECT_EQ(png.height, 90);
     EXPECT_EQ(png.channels, 3);
 }
@@ -81,7 +81,7 @@ TEST_F(Cli, RenderIsDeterministic) {
 TEST_F(Cli, IdsMapIsGreyWithRoomNumbers) {
     ASSERT_EQ(run_program("render --size 64x48 --ids ids.png --backend osmesa", dir_).status, 0);
     const image::Pixels ids = testing::read_png_ok((dir_ / "ids.png").string());
-        EXPECT_EQ(ids.channels, 1);
+    EXPECT_EQ(ids.channels, 1);
     for (std::uint8_t v : ids.data) EXPECT_TRUE(v == 1 || v == 2) << int(v);
 }
 
@@ -101,10 +101,9 @@ TEST_F(Cli, PoseInSeveralRoomsNeedsRoom) {
 
 TEST_F(Cli, BadInputExitsOneWithOneLineAndNoFile) {
     const char* cases[] = {
-        "render --size 0x10",          "render --size 10",        "render --pose 1,2,3",
-        "render --pose 1,2,3,4,5,nan", "render --room nowhere",   "render --fov 0",
-        "render --max-depth -1",       "render --backend vulkan", "render missing-file.json",
-        "render --ipd abc",            "validate missing-file.json",
+        "render --size 0x10",       "render --size 10", "render --pose 1,2,3",        "render --pose 1,2,3,4,5,nan",
+        "render --room nowhere",    "render --fov 0",   "render --max-depth -1",      "render --backend vulkan",
+        "render missing-file.json", "render --ipd abc", "validate missing-file.json",
     };
     for (const char* args : cases) {
         const ProgramRun run = run_program(args, dir_);
@@ -158,8 +157,7 @@ TEST_F(Cli, WalkThroughTheDefaultDoorTeleportsIntoTheAnnex) {
         std::ofstream path(dir_ / "path.txt");
         path << "# x y z yaw pitch roll\n0 1.6 1 0 0 0\n\n0 1.6 0.2 0 0 0\n0 1.6 -0.3 0 0 0\n0 1.6 0.5 0 0 0\n";
     }
-    const ProgramRun run =
-        run_program("walk '" IMPOSSIBLE_SOURCE_DIR "/layouts/default.json' --path path.txt", dir_);
+    const ProgramRun run = run_program("walk '" IMPOSSIBLE_SOURCE_DIR "/layouts/default.json' --path path.txt", dir_);
     ASSERT_EQ(run.status, 0) << run.err;
     std::istringstream lines(run.out);
     std::string line;

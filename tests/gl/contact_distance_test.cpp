@@ -27,9 +27,7 @@ struct Placement {
 };
 const Placement kPlacements[] = {{"contact.json", {0, 0, 0}}, {"contact_far.json", {1600.3, 0, -1300.7}}};
 
-std::string layout_path(const Placement& at) {
-    return std::string(IMPOSSIBLE_TEST_DATA) + "/layouts/hard/" + at.file;
-}
+std::string layout_path(const Placement& at) { return std::string(IMPOSSIBLE_TEST_DATA) + "/layouts/hard/" + at.file; }
 
 long mismatches(const layout::Layout& l, render::FrameDesc f, const std::string& what) {
     f.eye_width = 200;
@@ -87,8 +85,8 @@ TEST(ContactDistance, OneEyeAtTheBackOfAShallowDoorBox) {
                 const double x = b.z == 0.5 ? -1.0 : 1.0;
                 const math::dvec3 head = at.offset + math::dvec3{x - s * b.ipd / 2 + 0.1, 1.5, b.z + head_d};
                 char what[112];
-                std::snprintf(what, sizeof what, "%s: right eye %g mm from the back of a %s deep box", at.file,
-                              d * 1e3, b.door);
+                std::snprintf(what, sizeof what, "%s: right eye %g mm from the back of a %s deep box", at.file, d * 1e3,
+                              b.door);
                 EXPECT_EQ(mismatches(l, pose(l, head, 45, b.ipd), what), 0) << what;
             }
         }
@@ -110,8 +108,10 @@ TEST(ContactDistance, TheSmallNearPlaneCostsNoDepthPrecisionUnderReversedZ) {
         const double std_cm = testing::resolvable_separation(math::perspective_standard(wide, 2e5), z, false, false);
         wide.near = render::kNearReversedZ;
         const double std_small = testing::resolvable_separation(math::perspective_standard(wide, 2e5), z, false, false);
-        std::printf("  at %5g m: reversed-Z near 10 um %.3g m, near 1 cm %.3g m; standard near 1 cm %.3g m, near 10 um %.3g m\n",
-                    z, rev_small, rev_cm, std_cm, std_small);
+        std::printf(
+            "  at %5g m: reversed-Z near 10 um %.3g m, near 1 cm %.3g m; standard near 1 cm %.3g m, near 10 um %.3g "
+            "m\n",
+            z, rev_small, rev_cm, std_cm, std_small);
         EXPECT_LT(rev_small, rev_cm * 1.01);
         EXPECT_LT(rev_small, z * 2e-7);  // about z · 2^-24 · 2
         EXPECT_GT(std_small, std_cm * 100.0);

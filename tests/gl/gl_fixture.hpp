@@ -38,8 +38,8 @@ inline layout::Layout example_layout(const char* name) {
     return layout_from_file(std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/" + name);
 }
 
-inline image::Image render_once(gl::Backend backend, const layout::Layout& layout,
-                                 const render::FrameDesc& frame, render::FrameStats* stats = nullptr) {
+inline image::Image render_once(gl::Backend backend, const layout::Layout& layout, const render::FrameDesc& frame,
+                                render::FrameStats* stats = nullptr) {
     Result<gl::Context> context = gl::create_context(backend);
     EXPECT_TRUE(context.has_value()) << context.error();
     if (!context) return {};

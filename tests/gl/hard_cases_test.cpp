@@ -10,9 +10,9 @@
 #include "cli/view_options.hpp"
 #include "common/depth_precision.hpp"
 #include "gl_fixture.hpp"
+#include "image/compare.hpp"
 #include "math/oblique_projection.hpp"
 #include "math/projection.hpp"
-#include "image/compare.hpp"
 #include "trace/tracer.hpp"
 
 namespace impossible {
@@ -111,7 +111,8 @@ TEST(HardCases, TenKilometresFromTheOriginPortalAKilometreAway) {
         render::FrameDesc f = frame(l, "far_hall", {9996, 2.0, 0}, 0, 0, 0.4);
         f.depth = modes[m].depth;
         f.clip = modes[m].clip;
-        mismatch[m] = render_against_trace(l, f, (std::string("far_away: ") + modes[m].name).c_str()).id_mismatch_percent;
+        mismatch[m] =
+            render_against_trace(l, f, (std::string("far_away: ") + modes[m].name).c_str()).id_mismatch_percent;
     }
     EXPECT_LE(mismatch[0], 0.01) << "reversed-Z resolves bars 2 cm in front of a portal 1205 m away";
     EXPECT_LE(mismatch[1], 0.01);
@@ -126,7 +127,7 @@ TEST(HardCases, TenKilometresFromTheOriginPortalAKilometreAway) {
     fr.fov_y_deg = 0.4;
     fr.aspect = 200.0 / 120.0;
     const double s80 = std::sin(math::radians(80)), c80 = std::cos(math::radians(80));
-    const math::dvec4 square(0, 0, -1, -1205);     // keeps z < -1205
+    const math::dvec4 square(0, 0, -1, -1205);      // keeps z < -1205
     const math::dvec4 grazing(s80, 0, -c80, -1.0);  // keeps the far side of a turned plane
     const math::dmat4 rev = math::perspective_reversed_z(fr), std = math::perspective_standard(fr, 2e5);
     struct Row {
@@ -135,11 +136,15 @@ TEST(HardCases, TenKilometresFromTheOriginPortalAKilometreAway) {
     };
     const Row rows[] = {
         {"reversed-Z, clip plane", testing::resolvable_separation(rev, 1230, true, true)},
-        {"reversed-Z, oblique, square door", testing::resolvable_separation(math::oblique_reversed_z(rev, square), 1230, true, true)},
-        {"reversed-Z, oblique, grazing door", testing::resolvable_separation(math::oblique_reversed_z(rev, grazing), 1230, true, true)},
+        {"reversed-Z, oblique, square door",
+         testing::resolvable_separation(math::oblique_reversed_z(rev, square), 1230, true, true)},
+        {"reversed-Z, oblique, grazing door",
+         testing::resolvable_separation(math::oblique_reversed_z(rev, grazing), 1230, true, true)},
         {"standard, clip plane", testing::resolvable_separation(std, 1230, false, false)},
-        {"standard, oblique, square door", testing::resolvable_separation(math::oblique_standard(std, square), 1230, false, false)},
-        {"standard, oblique, grazing door", testing::resolvable_separation(math::oblique_standard(std, grazing), 1230, false, false)},
+        {"standard, oblique, square door",
+         testing::resolvable_separation(math::oblique_standard(std, square), 1230, false, false)},
+        {"standard, oblique, grazing door",
+         testing::resolvable_separation(math::oblique_standard(std, grazing), 1230, false, false)},
     };
     for (const Row& r : rows) std::printf("  resolvable depth separation at 1230 m, %-34s %.3g m\n", r.name, r.sep);
     EXPECT_LT(rows[0].sep, 1e-3);
@@ -176,7 +181,8 @@ TEST(HardCases, Depth64ThroughATurnedAndShiftedPair) {
 TEST(HardCases, NearDegenerateInputs) {
     // `up` 1.1 degrees from the normal: valid, and made orthogonal.
     const layout::Layout up = testing::layout_from_file(hard("near_parallel_up.json"));
-    EXPECT_EQ(render_against_trace(up, frame(up, "a", {0.2, 1.4, 2.0}, 5), "up 1.1 deg from the normal").id_mismatches, 0);
+    EXPECT_EQ(render_against_trace(up, frame(up, "a", {0.2, 1.4, 2.0}, 5), "up 1.1 deg from the normal").id_mismatches,
+              0);
     // A portal one micrometre wide, seen from 5 micrometres.
     const layout::Layout tiny = testing::layout_from_file(hard("tiny_portal.json"));
     EXPECT_LE(render_against_trace(tiny, frame(tiny, "a", {0, 1.5, 5e-6}, 0), "1e-6 m portal from 5e-6 m")

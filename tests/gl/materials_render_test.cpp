@@ -24,7 +24,8 @@ std::array<int, 3> shaded(std::array<double, 3> base, std::array<double, 3> n) {
 
 void expect_near(const image::Image& image, int x, int y, std::array<int, 3> want, const std::string& what) {
     const std::uint8_t* got = pixel(image, x, y);
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(int(got[c]), want[c], 1) << what << " at (" << x << ", " << y << ") channel " << c;
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(int(got[c]), want[c], 1) << what << " at (" << x << ", " << y << ") channel " << c;
 }
 
 // A side×side image whose quadrants are red, green (top right), blue (bottom
@@ -36,7 +37,8 @@ std::shared_ptr<const image::Pixels> quadrants(int side, std::array<std::uint8_t
     for (int y = 0; y < side; ++y) {
         for (int x = 0; x < side; ++x) {
             const int q = (y < side / 2 ? 0 : 2) + (x < side / 2 ? 0 : 1);
-            image->data.insert(image->data.end(), {kRgb[q][0], kRgb[q][1], kRgb[q][2], alpha[static_cast<std::size_t>(q)]});
+            image->data.insert(image->data.end(),
+                               {kRgb[q][0], kRgb[q][1], kRgb[q][2], alpha[static_cast<std::size_t>(q)]});
         }
     }
     return image;
@@ -75,7 +77,8 @@ TEST(MaterialsRender, FloorTextureTilesFromWholeMultiplesWithItsTopTowardsMinusZ
     const image::Image image = testing::render_once(gl::Backend::Egl, l, frame_at({2, 1, 2}, -90));
     for (int eye = 0; eye < 2; ++eye)
         for (int q = 0; q < 4; ++q)
-            expect_near(image, eye * 65 + kQx[q], kQy[q], shaded(kQuadrantRgb[q], {0, 1, 0}), "floor quadrant " + std::to_string(q));
+            expect_near(image, eye * 65 + kQx[q], kQy[q], shaded(kQuadrantRgb[q], {0, 1, 0}),
+                        "floor quadrant " + std::to_string(q));
 }
 
 TEST(MaterialsRender, WallTextureReadsUprightAndIsMultipliedByTheFaceColour) {
@@ -136,7 +139,8 @@ TEST(MaterialsRender, GltfTextureShowsItsTexelsAtKnownPixels) {
     const image::Image image = testing::render_once(gl::Backend::Egl, l, frame_at({0, 1.5, 0}, 0));
     for (int eye = 0; eye < 2; ++eye)
         for (int q = 0; q < 4; ++q)
-            expect_near(image, eye * 65 + kQx[q], kQy[q], shaded(kQuadrantRgb[q], {0, 0, 1}), "quad quadrant " + std::to_string(q));
+            expect_near(image, eye * 65 + kQx[q], kQy[q], shaded(kQuadrantRgb[q], {0, 0, 1}),
+                        "quad quadrant " + std::to_string(q));
 }
 
 TEST(MaterialsRender, VertexColoursMultiplyTheFactor) {

@@ -10,8 +10,8 @@
 #include "cli/view_options.hpp"
 #include "gl/gl.hpp"
 #include "gl_fixture.hpp"
-#include "pose_cases.hpp"
 #include "image/compare.hpp"
+#include "pose_cases.hpp"
 #include "render/multisample.hpp"
 #include "trace/sample_pattern.hpp"
 #include "trace/tracer.hpp"
@@ -21,8 +21,8 @@ namespace {
 
 constexpr int kSamples = 4;  // llvmpipe's only multisample count
 
-const char* const kLayouts[] = {"default.json",  "four_rooms.json", "tunnel.json",   "rotated.json",
-                                "corridor.json", "corridor_wall.json", "loop.json", "vr_study.json"};
+const char* const kLayouts[] = {"default.json",  "four_rooms.json",    "tunnel.json", "rotated.json",
+                                "corridor.json", "corridor_wall.json", "loop.json",   "vr_study.json"};
 
 render::FrameDesc start_frame(const layout::Layout& l, int samples) {
     render::FrameDesc f;
@@ -45,8 +45,8 @@ bool offers(int samples) {
 // horizontal or vertical neighbours (both pixels of such a pair count).
 struct EdgeError {
     long pixels = 0;
-    double mean = 0.0;     // mean over edge pixels of the largest channel error
-    long over = 0;         // edge pixels whose largest channel error exceeds the tolerance
+    double mean = 0.0;  // mean over edge pixels of the largest channel error
+    long over = 0;      // edge pixels whose largest channel error exceeds the tolerance
     int worst = 0;
 };
 
@@ -125,8 +125,10 @@ render::FrameDesc case_frame(const layout::Layout& l, const testing::PoseCase& c
 std::vector<std::pair<std::string, render::FrameDesc>> frames_to_check(int samples) {
     std::vector<std::pair<std::string, render::FrameDesc>> out;
     for (const testing::PoseCase& c : testing::kPoseCases)
-        out.emplace_back(std::string(c.layout) + ": " + c.what, case_frame(testing::example_layout(c.layout), c, samples));
-    for (const char* name : kLayouts) out.emplace_back(std::string(name) + ": start, rolled", start_frame(testing::example_layout(name), samples));
+        out.emplace_back(std::string(c.layout) + ": " + c.what,
+                         case_frame(testing::example_layout(c.layout), c, samples));
+    for (const char* name : kLayouts)
+        out.emplace_back(std::string(name) + ": start, rolled", start_frame(testing::example_layout(name), samples));
     return out;
 }
 

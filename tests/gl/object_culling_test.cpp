@@ -7,8 +7,8 @@
 #include "cli/view_options.hpp"
 #include "gl_fixture.hpp"
 #include "image/compare.hpp"
-#include "trace/tracer.hpp"
 #include "scene/cell_objects.hpp"
+#include "trace/tracer.hpp"
 
 namespace impossible {
 namespace {
@@ -85,7 +85,8 @@ TEST(ObjectCulling, ATreeOverManyObjectsKeepsEveryObjectOnceAndBoundsItsChildren
             if (node.count == 0) continue;
             EXPECT_LE(node.count, scene::kCullLeafSize);
             for (int i = node.first; i < node.first + node.count; ++i) {
-                const scene::CellObject& o = cell.objects[static_cast<std::size_t>(cell.order[static_cast<std::size_t>(i)])];
+                const scene::CellObject& o =
+                    cell.objects[static_cast<std::size_t>(cell.order[static_cast<std::size_t>(i)])];
                 seen[static_cast<std::size_t>(cell.order[static_cast<std::size_t>(i)])] += 1;
                 for (int a = 0; a < 3; ++a) {
                     EXPECT_LE(node.lo[a], o.lo[a]);
@@ -130,8 +131,9 @@ TEST(ObjectCulling, AWalkRoundAPartitionShowsTheDoorInTheFrameItAppears) {
         render::FrameDesc f;
         f.room = 0;
         const double s = k / 8.0;
-        f.head.position = k <= 8 ? glm::dvec3(2.6 * s, 1.6, 2.0)
-                                 : k <= 16 ? glm::dvec3(2.6, 1.6, 2.0 - 5.0 * (s - 1.0)) : glm::dvec3(2.6, 1.6, -3.0);
+        f.head.position = k <= 8    ? glm::dvec3(2.6 * s, 1.6, 2.0)
+                          : k <= 16 ? glm::dvec3(2.6, 1.6, 2.0 - 5.0 * (s - 1.0))
+                                    : glm::dvec3(2.6, 1.6, -3.0);
         f.head.yaw_deg = k <= 16 ? 0.0 : 10.0 * (k - 16);
         f.eye_width = 160;
         f.eye_height = 90;
@@ -160,7 +162,8 @@ TEST(ObjectCulling, AWalkRoundAPartitionShowsTheDoorInTheFrameItAppears) {
 }
 
 TEST(ObjectCulling, AWallAcrossTheCorridorSkipsTheWholeRecursionBehindIt) {
-    const layout::Layout l = testing::layout_from_file(std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/corridor_wall.json");
+    const layout::Layout l =
+        testing::layout_from_file(std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/corridor_wall.json");
     render::FrameDesc f;
     f.room = l.start.room;
     f.head.position = l.start.position;

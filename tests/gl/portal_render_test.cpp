@@ -111,11 +111,11 @@ TEST(PortalCulling, CulledAndUnculledRendersAreEqual) {
         double yaw, pitch;
     };
     const Case cases[] = {
-        {"default.json", "hall", {0.3, 1.6, 1.6}, 8, 0},   {"default.json", "annex", {0.2, 1.5, -1.0}, 170, -5},
-        {"four_rooms.json", "hall", {0, 1.6, 1.5}, 0, 0},  {"four_rooms.json", "library", {-1, 1.6, -1}, 150, 0},
-        {"four_rooms.json", "hall", {1.8, 1.6, 1.8}, 40, 0}, {"tunnel.json", "yard", {0.6, 1.6, 2.6}, 8, 0},
-        {"tunnel.json", "tunnel", {0, 1.6, -0.5}, 0, 0},  {"rotated.json", "hall", {0.2, 1.6, 1.6}, 5, 0},
-        {"rotated.json", "gallery", {1.0, 1.6, 0.5}, 100, 0}, {"corridor.json", "corridor", {0.25, 1.6, 2}, 4, 0},
+        {"default.json", "hall", {0.3, 1.6, 1.6}, 8, 0},        {"default.json", "annex", {0.2, 1.5, -1.0}, 170, -5},
+        {"four_rooms.json", "hall", {0, 1.6, 1.5}, 0, 0},       {"four_rooms.json", "library", {-1, 1.6, -1}, 150, 0},
+        {"four_rooms.json", "hall", {1.8, 1.6, 1.8}, 40, 0},    {"tunnel.json", "yard", {0.6, 1.6, 2.6}, 8, 0},
+        {"tunnel.json", "tunnel", {0, 1.6, -0.5}, 0, 0},        {"rotated.json", "hall", {0.2, 1.6, 1.6}, 5, 0},
+        {"rotated.json", "gallery", {1.0, 1.6, 0.5}, 100, 0},   {"corridor.json", "corridor", {0.25, 1.6, 2}, 4, 0},
         {"corridor.json", "corridor", {0.5, 1.6, -3}, 170, 10}, {"loop.json", "red", {0, 1.6, -0.8}, 0, 0},
         {"loop.json", "green", {0.5, 1.6, -4}, -60, 0},
     };
@@ -220,8 +220,8 @@ namespace {
 TEST(PortalTexture, FullScaleEqualsStencilPortalsAndSmallerScalesBlur) {
     for (const char* name : {"default.json", "corridor.json", "four_rooms.json"}) {
         const layout::Layout l = testing::example_layout(name);
-        render::FrameDesc f = pose(l, layout::find_room(l, "hall") >= 0 ? "hall" : "corridor", l.start.position,
-                                   l.start.yaw_deg);
+        render::FrameDesc f =
+            pose(l, layout::find_room(l, "hall") >= 0 ? "hall" : "corridor", l.start.position, l.start.yaw_deg);
         f.eye_width = 160;
         f.eye_height = 90;
         const image::Image stencil = testing::render_once(gl::Backend::Egl, l, f);
@@ -241,7 +241,8 @@ TEST(PortalTexture, FullScaleEqualsStencilPortalsAndSmallerScalesBlur) {
         f.occlusion_test = false;
         f.portal_texture_scale = 0.25;
         const image::Image quarter = testing::render_once(gl::Backend::Egl, l, f);
-        EXPECT_GT(testing::count_colour_differences(stencil, quarter, 2), 0) << name << ": a quarter-size texture blurs";
+        EXPECT_GT(testing::count_colour_differences(stencil, quarter, 2), 0)
+            << name << ": a quarter-size texture blurs";
     }
 }
 
@@ -262,14 +263,14 @@ TEST(PortalTexture, NeedsClipShiftStereo) {
 // The rule that bounds the recursion (docs/bounded-work.md): a rectangle
 // matters only if it holds a pixel centre, (2i + 1)/n - 1 in NDC.
 TEST(PixelCentres, ARectangleMattersOnlyWithAPixelCentreInside) {
-    using render::NdcRect;
     using render::covers_pixel_centre;
+    using render::NdcRect;
     // 4 x 2 pixels: centres at x = -0.75, -0.25, 0.25, 0.75 and y = -0.5, 0.5.
     EXPECT_TRUE(covers_pixel_centre(NdcRect{-1, -1, 1, 1}, 4, 2));
     EXPECT_TRUE(covers_pixel_centre(NdcRect{-0.3, 0.4, -0.2, 0.6}, 4, 2));
-    EXPECT_FALSE(covers_pixel_centre(NdcRect{-0.2, 0.4, 0.2, 0.6}, 4, 2));   // between two columns
+    EXPECT_FALSE(covers_pixel_centre(NdcRect{-0.2, 0.4, 0.2, 0.6}, 4, 2));    // between two columns
     EXPECT_FALSE(covers_pixel_centre(NdcRect{-0.3, -0.4, -0.2, 0.4}, 4, 2));  // between the rows
-    EXPECT_FALSE(covers_pixel_centre(NdcRect{0.8, -1, 1, 1}, 4, 2));         // right of the last column
+    EXPECT_FALSE(covers_pixel_centre(NdcRect{0.8, -1, 1, 1}, 4, 2));          // right of the last column
     EXPECT_FALSE(covers_pixel_centre(NdcRect::none(), 4, 2));
     // Multisampled, a rectangle between the centres may still hold samples.
     EXPECT_TRUE(covers_pixel_centre(NdcRect{-0.2, 0.4, 0.2, 0.6}, 4, 2, 4));

@@ -18,9 +18,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "common/temp_dir.hpp"
 #include "common/png.hpp"
 #include "common/program_run.hpp"
+#include "common/temp_dir.hpp"
 
 namespace impossible {
 namespace {
@@ -39,8 +39,8 @@ std::string slurp(const fs::path& p) {
 // Runs the program with `args` (already quoted) and `env` (e.g. "DISPLAY=:5").
 ProgramRun run_program(const std::string& env, const std::string& args, const fs::path& dir) {
     const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-    const std::string cmd = "env " + env + " '" IMPOSSIBLE_BINARY "' " + args + " >'" + out.string() + "' 2>'" +
-                            err.string() + "'";
+    const std::string cmd =
+        "env " + env + " '" IMPOSSIBLE_BINARY "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
     const int raw = std::system(cmd.c_str());
     ProgramRun r;
     r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
@@ -121,11 +121,12 @@ void expect_frame_matches_render(const nlohmann::json& f, size_t i, const fs::pa
     std::string pose;
     for (int k = 0; k < 6; ++k) pose += (k ? "," : "") + f["pose"][k].dump();
     // OSMesa is llvmpipe everywhere, like GLX under Xvfb, even where EGL finds a GPU.
-    const ProgramRun r = run_program("", "render --backend osmesa " + q(layout) + " --pose=" + pose + " --room " +
-                                             f["room"].get<std::string>() + " --size " + std::to_string(kEyeW) + "x" +
-                                             std::to_string(kEyeH) + " --out " + q(dir / "r.png") + " --ids " +
-                                             q(dir / "r-ids.png"),
-                                     dir);
+    const ProgramRun r =
+        run_program("",
+                    "render --backend osmesa " + q(layout) + " --pose=" + pose + " --room " +
+                        f["room"].get<std::string>() + " --size " + std::to_string(kEyeW) + "x" +
+                        std::to_string(kEyeH) + " --out " + q(dir / "r.png") + " --ids " + q(dir / "r-ids.png"),
+                    dir);
     ASSERT_EQ(r.status, 0) << r.err;
     char name[32];
     std::snprintf(name, sizeof name, "frame-%04zu", i);
@@ -166,9 +167,9 @@ TEST_F(Preview, ScriptedWalkThroughAPortalMatchesRenderAndWalk) {
     const fs::path path = fs::path(IMPOSSIBLE_TEST_DATA) / "preview/through_rotated_door.txt";
     const fs::path shots = dir_ / "shots";
     const ProgramRun run = run_program("DISPLAY=" + x.display,
-                                "preview " + q(layout) + " --path " + q(path) + " --screenshots " + q(shots) +
-                                    " --frames 7 --size " + std::to_string(kEyeW) + "x" + std::to_string(kEyeH),
-                                dir_);
+                                       "preview " + q(layout) + " --path " + q(path) + " --screenshots " + q(shots) +
+                                           " --frames 7 --size " + std::to_string(kEyeW) + "x" + std::to_string(kEyeH),
+                                       dir_);
     ASSERT_EQ(run.status, 0) << run.err;
 
     // The poses against `walk` of the same path: same rooms, teleports,
@@ -208,7 +209,7 @@ TEST_F(Preview, ScriptedWalkThroughAPortalMatchesRenderAndWalk) {
     // The window shot is the whole window: both eyes plus the HUD over them.
     const image::Pixels window = testing::read_png_ok((shots / "window-0006.png").string());
     const image::Pixels frame = testing::read_png_ok((shots / "frame-0006.png").string());
-        EXPECT_EQ(window.width, 2 * kEyeW);
+    EXPECT_EQ(window.width, 2 * kEyeW);
     EXPECT_EQ(window.height, kEyeH);
     EXPECT_NE(window.data, frame.data);
 }
@@ -245,13 +246,13 @@ TEST_F(Preview, CrossSwapsTheEyesInTheWindow) {
 TEST_F(Preview, MultisampledFramesMatchRender) {
     const Xvfb x;
     ASSERT_FALSE(x.display.empty()) << x.error;
-    const ProgramRun preview = run_program(
-        "DISPLAY=" + x.display, "preview --samples 4 --frames 1 --no-vsync --size 80x60 --screenshots " + q(dir_ / "s"),
-        dir_);
+    const ProgramRun preview =
+        run_program("DISPLAY=" + x.display,
+                    "preview --samples 4 --frames 1 --no-vsync --size 80x60 --screenshots " + q(dir_ / "s"), dir_);
     if (preview.status != 0 && preview.err.find("offers") != std::string::npos) GTEST_SKIP() << preview.err;
     ASSERT_EQ(preview.status, 0) << preview.err;
-    const ProgramRun render = run_program("", "render --samples 4 --size 80x60 --out " + q(dir_ / "r.png") + " --ids " + q(dir_ / "r-ids.png"),
-                                          dir_);
+    const ProgramRun render = run_program(
+        "", "render --samples 4 --size 80x60 --out " + q(dir_ / "r.png") + " --ids " + q(dir_ / "r-ids.png"), dir_);
     ASSERT_EQ(render.status, 0) << render.err;
     EXPECT_EQ(testing::read_png_ok((dir_ / "s/frame-0000.png").string()).data,
               testing::read_png_ok((dir_ / "r.png").string()).data);
@@ -265,12 +266,12 @@ TEST_F(Preview, MaterialsMatchRender) {
     const Xvfb x;
     ASSERT_FALSE(x.display.empty()) << x.error;
     const std::string layout = q(fs::path(IMPOSSIBLE_SOURCE_DIR) / "layouts/gallery.json");
-    const ProgramRun preview = run_program(
-        "DISPLAY=" + x.display, "preview " + layout + " --frames 1 --no-vsync --size 160x90 --screenshots " + q(dir_ / "s"),
-        dir_);
+    const ProgramRun preview =
+        run_program("DISPLAY=" + x.display,
+                    "preview " + layout + " --frames 1 --no-vsync --size 160x90 --screenshots " + q(dir_ / "s"), dir_);
     ASSERT_EQ(preview.status, 0) << preview.err;
-    const ProgramRun render =
-        run_program("", "render " + layout + " --size 160x90 --out " + q(dir_ / "r.png") + " --ids " + q(dir_ / "r-ids.png"), dir_);
+    const ProgramRun render = run_program(
+        "", "render " + layout + " --size 160x90 --out " + q(dir_ / "r.png") + " --ids " + q(dir_ / "r-ids.png"), dir_);
     ASSERT_EQ(render.status, 0) << render.err;
     EXPECT_EQ(testing::read_png_ok((dir_ / "s/frame-0000.png").string()).data,
               testing::read_png_ok((dir_ / "r.png").string()).data);

@@ -7,8 +7,8 @@
 
 #include "cli/view_options.hpp"
 #include "gl_fixture.hpp"
-#include "pose_cases.hpp"
 #include "image/compare.hpp"
+#include "pose_cases.hpp"
 #include "trace/tracer.hpp"
 
 namespace impossible {
@@ -22,8 +22,7 @@ class RenderVsTrace : public ::testing::TestWithParam<render::ClipMode> {};
 TEST_P(RenderVsTrace, IdsAgreeOnEveryLayoutAndPose) {
     double worst = 0.0;
     for (const PoseCase& c : kPoseCases) {
-        const layout::Layout l =
-            testing::layout_from_file(std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/" + c.layout);
+        const layout::Layout l = testing::layout_from_file(std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/" + c.layout);
         render::FrameDesc f;
         f.head = {c.position, c.yaw, c.pitch, c.roll};
         f.room = layout::find_room(l, c.room);

@@ -71,14 +71,14 @@ TEST(StateCache, SkipsRedundantTextureAndFramebufferBinds) {
 
     state.texture(1, a.get());
     EXPECT_EQ(bound_2d(1), a.get());
-    glBindTextureUnit(1, b.get());    // behind the cache's back
-    state.texture(1, a.get());        // redundant for the cache: not sent
+    glBindTextureUnit(1, b.get());  // behind the cache's back
+    state.texture(1, a.get());      // redundant for the cache: not sent
     EXPECT_EQ(bound_2d(1), b.get());
-    state.texture(1, 0);              // a change: sent
+    state.texture(1, 0);  // a change: sent
     EXPECT_EQ(bound_2d(1), 0u);
     state.texture(1, a.get());
     EXPECT_EQ(bound_2d(1), a.get());
-    EXPECT_EQ(bound_2d(0), 0u);       // other units untouched
+    EXPECT_EQ(bound_2d(0), 0u);  // other units untouched
     glBindTextureUnit(1, b.get());
     state.deleting_texture(a.get());  // forgets unit 1: the next bind is sent
     state.texture(1, a.get());
@@ -98,7 +98,7 @@ TEST(StateCache, SkipsRedundantTextureAndFramebufferBinds) {
         glBindFramebuffer(target, g.get());
         bind(f.get());  // redundant: not sent
         EXPECT_EQ(static_cast<GLuint>(get_int(binding)), g.get()) << read;
-        bind(0);        // a change: sent
+        bind(0);  // a change: sent
         EXPECT_EQ(get_int(binding), 0) << read;
         bind(f.get());
         EXPECT_EQ(static_cast<GLuint>(get_int(binding)), f.get()) << read;
@@ -133,10 +133,10 @@ TEST(StateCache, SkipsRedundantViewports) {
     state.viewport_indexed(1, {8, 0, 8, 8});
     EXPECT_EQ(viewport(0), (gl::WindowRect{0, 0, 16, 8}));
     EXPECT_EQ(viewport(1), (gl::WindowRect{8, 0, 8, 8}));
-    glViewportIndexedf(1, 0, 0, 1, 1);   // behind the cache's back
+    glViewportIndexedf(1, 0, 0, 1, 1);        // behind the cache's back
     state.viewport_indexed(1, {8, 0, 8, 8});  // redundant: not sent
     EXPECT_EQ(viewport(1), (gl::WindowRect{0, 0, 1, 1}));
-    state.viewport({0, 0, 16, 8});      // index 1 differs: sent, to every index
+    state.viewport({0, 0, 16, 8});  // index 1 differs: sent, to every index
     EXPECT_EQ(viewport(1), (gl::WindowRect{0, 0, 16, 8}));
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }

@@ -36,8 +36,7 @@ TEST(StereoModes, ClipShiftEqualsTwoPass) {
 TEST(StereoModes, ViewportIndexEqualsTwoPass) {
     const layout::Layout l = default_layout();
     const image::Image two = testing::render_once(gl::Backend::Egl, l, frame_of(l, render::StereoMode::TwoPass));
-    const image::Image one =
-        testing::render_once(gl::Backend::Egl, l, frame_of(l, render::StereoMode::ViewportIndex));
+    const image::Image one = testing::render_once(gl::Backend::Egl, l, frame_of(l, render::StereoMode::ViewportIndex));
     EXPECT_EQ(testing::count_id_differences(one, two), 0);
     EXPECT_EQ(testing::count_colour_differences(one, two, 0), 0);
 }

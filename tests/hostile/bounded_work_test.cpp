@@ -25,7 +25,8 @@ std::string corridor(int n) {
     return "{\"format\":\"impossible-layout\",\"version\":1,\"play_area\":{\"min\":[-1,-4],\"max\":[1,4]},"
            "\"start\":{\"room\":\"c\",\"position\":[0.25,1.6,2.0],\"yaw_deg\":4.0},"
            "\"rooms\":[{\"id\":\"c\",\"min\":[-1,0,-4],\"max\":[1,2.6,4],\"color\":[0.8,0.76,0.68],\"checker\":1.0}],"
-           "\"portals\":[" + portals + "]}";
+           "\"portals\":[" +
+           portals + "]}";
 }
 
 TEST_F(Hostile, ACorridorOf1000DoorsAtDepth250RendersInSeconds) {
@@ -40,9 +41,9 @@ TEST_F(Hostile, ACorridorOf200DoorsMatchesTheTracer) {
     spit(dir_ / "c.json", corridor(200));
     const std::string view = " c.json --size 96x64 --max-depth 250";
     const Outcome r = run("$BIN render" + view + " --out r.png --ids r-ids.png && $BIN trace" + view +
-                          " --out t.png --ids t-ids.png && $BIN compare r.png t.png --ids-a r-ids.png --ids-b "
-                          "t-ids.png --max-mismatch 0",
-                      120);
+                              " --out t.png --ids t-ids.png && $BIN compare r.png t.png --ids-a r-ids.png --ids-b "
+                              "t-ids.png --max-mismatch 0",
+                          120);
     EXPECT_EQ(r.status, 0) << r.err << r.out;
     EXPECT_NE(r.out.find("id_mismatches=0"), std::string::npos) << r.out;
 }
@@ -58,7 +59,7 @@ TEST_F(Hostile, ThePortalPassBudgetShowsTheFillAndSaysSo) {
     // Within the budget (the default, or one just large enough) the image is
     // the same, byte for byte.
     const Outcome big = run("$BIN render" + view + " --out b.png --ids b-ids.png && $BIN render" + view +
-                        " --max-portal-passes 1000000 --out c.png --ids c-ids.png");
+                            " --max-portal-passes 1000000 --out c.png --ids c-ids.png");
     ASSERT_EQ(big.status, 0) << big.err;
     EXPECT_EQ(big.err.find("warning"), std::string::npos) << big.err;
     EXPECT_EQ(slurp(dir_ / "b.png"), slurp(dir_ / "c.png"));

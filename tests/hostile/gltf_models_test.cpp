@@ -21,11 +21,11 @@ protected:
 
 TEST_F(HostileGltf, JsonNestedTwentyThousandDeepIsAnErrorNotACrash) {
     fs::create_directories(dir_ / "models");
-    spit(dir_ / "models/deep.gltf", R"({"asset":{"version":"2.0"},"extras":)" + std::string(20'000, '[') +
-                                        std::string(20'000, ']') + "}");
+    spit(dir_ / "models/deep.gltf",
+         R"({"asset":{"version":"2.0"},"extras":)" + std::string(20'000, '[') + std::string(20'000, ']') + "}");
     layout_with("deep.gltf");
-    for (const std::string command : {"validate g.json", "render g.json --size 32x24 --out o.png",
-                                      "trace g.json --size 32x24 --out o.png"}) {
+    for (const std::string command :
+         {"validate g.json", "render g.json --size 32x24 --out o.png", "trace g.json --size 32x24 --out o.png"}) {
         const Outcome r = run("$BIN " + command);
         expect_refused(r, 1, "deep.gltf\" nests its JSON more than 64 levels deep");
     }

@@ -43,9 +43,7 @@ inline std::string slurp(const fs::path& p) {
     return s.str();
 }
 
-inline void spit(const fs::path& p, const std::string& text) {
-    std::ofstream(p, std::ios::binary) << text;
-}
+inline void spit(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
 
 // Single-quotes a word for bash.
 inline std::string q(const std::string& s) {
@@ -60,10 +58,10 @@ inline const std::string kBin = q(IMPOSSIBLE_BINARY);
 // script's own stdout and stderr are captured unless it redirects them.
 inline Outcome run_script(const std::string& script, const fs::path& cwd, int limit_s = 30) {
     const fs::path out_file = cwd / ".stdout", err_file = cwd / ".stderr", script_file = cwd / ".script";
-    spit(script_file, "BIN=" + kBin + "\nexport IMPOSSIBLE_INPUT_TIMEOUT_MS=${IMPOSSIBLE_INPUT_TIMEOUT_MS:-700}\n" + script + "\n");
-    const std::string command = "cd " + q(cwd.string()) + " && timeout -k 5 " + std::to_string(limit_s) +
-                                " bash " + q(script_file.string()) + " >" + q(out_file.string()) + " 2>" +
-                                q(err_file.string());
+    spit(script_file,
+         "BIN=" + kBin + "\nexport IMPOSSIBLE_INPUT_TIMEOUT_MS=${IMPOSSIBLE_INPUT_TIMEOUT_MS:-700}\n" + script + "\n");
+    const std::string command = "cd " + q(cwd.string()) + " && timeout -k 5 " + std::to_string(limit_s) + " bash " +
+                                q(script_file.string()) + " >" + q(out_file.string()) + " 2>" + q(err_file.string());
     const auto start = std::chrono::steady_clock::now();
     const int raw = std::system(command.c_str());
     Outcome run;

@@ -20,8 +20,8 @@ TEST_F(Hostile, AFieldOfViewTooNarrowToRenderIsARangeError) {
     // The narrowest accepted view agrees with the tracer, edges and all.
     const std::string view = " --pose 0.9,1.2,0.5,30,-10,0 --room hall --fov 1 --size 64x48";
     const Outcome r = run("$BIN render" + view + " --out r.png --ids ri.png && $BIN trace" + view +
-                      " --out t.png --ids ti.png && $BIN compare r.png t.png --ids-a ri.png --ids-b ti.png "
-                      "--max-mismatch 0");
+                          " --out t.png --ids ti.png && $BIN compare r.png t.png --ids-a ri.png --ids-b ti.png "
+                          "--max-mismatch 0");
     EXPECT_EQ(r.status, 0) << r.err << r.out;
 }
 
@@ -65,8 +65,8 @@ TEST_F(Hostile, ComparePngFaultsInWords) {
 
 TEST_F(Hostile, AWalkThatReachesTheTeleportCapSaysSo) {
     const std::string corridor = q(std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/corridor.json");
-    const Outcome r = run("printf '0.25 1.6 2 0 0 0\\n0.25 1.6 -900000 0 0 0\\n' > p.txt; $BIN walk " + corridor +
-                      " --path p.txt");
+    const Outcome r =
+        run("printf '0.25 1.6 2 0 0 0\\n0.25 1.6 -900000 0 0 0\\n' > p.txt; $BIN walk " + corridor + " --path p.txt");
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.err_lines(), 1) << r.err;
     EXPECT_NE(r.err.find("warning: p.txt: frame 1 reached the limit of 64 teleports"), std::string::npos) << r.err;
@@ -77,15 +77,18 @@ TEST_F(Hostile, ValidateAddsNoFollowOnErrors) {
     std::string rooms;
     for (int i = 0; i <= 10000; ++i)
         rooms += std::string(i ? "," : "") + "{\"id\":\"r" + std::to_string(i) + "\",\"min\":[0,0,0],\"max\":[1,1,1]}";
-    spit(dir_ / "many.json", "{\"format\":\"impossible-layout\",\"version\":1,\"start\":{\"room\":\"r0\","
-                             "\"position\":[0.5,0.5,0.5]},\"rooms\":[" + rooms + "]}");
+    spit(dir_ / "many.json",
+         "{\"format\":\"impossible-layout\",\"version\":1,\"start\":{\"room\":\"r0\","
+         "\"position\":[0.5,0.5,0.5]},\"rooms\":[" +
+             rooms + "]}");
     expect_refused(run("$BIN validate many.json"), 1, "rooms: has 10001 entries; at most 10000 are allowed");
-    spit(dir_ / "dup.json", "{\"format\":\"impossible-layout\",\"version\":1,\"start\":{\"room\":\"a\","
-                            "\"position\":[0.5,0.5,0.5]},\"rooms\":[{\"id\":\"a\",\"id\":\"b\",\"min\":[0,0,0],"
-                            "\"max\":[1,1,1]}],\"portals\":[{\"id\":\"p\",\"room\":\"a\",\"center\":[0.5,0.5,0],"
-                            "\"normal\":[0,0,1],\"width\":0.5,\"height\":0.5,\"target\":\"q\"},"
-                            "{\"id\":\"q\",\"room\":\"a\",\"center\":[0.5,0.5,1],"
-                            "\"normal\":[0,0,-1],\"width\":0.5,\"height\":0.5,\"target\":\"p\"}]}");
+    spit(dir_ / "dup.json",
+         "{\"format\":\"impossible-layout\",\"version\":1,\"start\":{\"room\":\"a\","
+         "\"position\":[0.5,0.5,0.5]},\"rooms\":[{\"id\":\"a\",\"id\":\"b\",\"min\":[0,0,0],"
+         "\"max\":[1,1,1]}],\"portals\":[{\"id\":\"p\",\"room\":\"a\",\"center\":[0.5,0.5,0],"
+         "\"normal\":[0,0,1],\"width\":0.5,\"height\":0.5,\"target\":\"q\"},"
+         "{\"id\":\"q\",\"room\":\"a\",\"center\":[0.5,0.5,1],"
+         "\"normal\":[0,0,-1],\"width\":0.5,\"height\":0.5,\"target\":\"p\"}]}");
     expect_refused(run("$BIN validate dup.json"), 1, "rooms[0].id: repeated field");
 }
 

@@ -10,7 +10,7 @@ const char* kSmall = " --size 32x24";
 
 TEST_F(Hostile, OutputThroughASymlinkWritesItsTargetAndKeepsTheLink) {
     const Outcome r = run("ln -s target.png link.png && $BIN render" + std::string(kSmall) +
-                      " --out link.png && test -L link.png && test -f target.png");
+                          " --out link.png && test -L link.png && test -f target.png");
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(slurp(dir_ / "target.png").substr(1, 3), "PNG");
     EXPECT_EQ(listing(dir_), "lay.json\nlink.png\ntarget.png\n");
@@ -18,7 +18,7 @@ TEST_F(Hostile, OutputThroughASymlinkWritesItsTargetAndKeepsTheLink) {
 
 TEST_F(Hostile, ADanglingSymlinkCreatesItsTarget) {
     const Outcome r = run("mkdir sub && ln -s sub/new.png link.png && $BIN render" + std::string(kSmall) +
-                      " --out link.png && test -L link.png && test -f sub/new.png");
+                          " --out link.png && test -L link.png && test -f sub/new.png");
     EXPECT_EQ(r.status, 0) << r.err;
 }
 
@@ -72,7 +72,7 @@ TEST_F(Hostile, AnOutputThatIsAnInputIsAUsageError) {
     expect_refused(run("ln -s lay.json l2.json; $BIN render l2.json --ids lay.json"), 2, "the same file as");
     EXPECT_EQ(slurp(dir_ / "lay.json"), before);
     Outcome r = run("$BIN render" + std::string(kSmall) + " --out a.png && $BIN render" + std::string(kSmall) +
-                " --out b.png && cp a.png a0.png && $BIN compare a.png b.png --diff a.png");
+                    " --out b.png && cp a.png a0.png && $BIN compare a.png b.png --diff a.png");
     expect_refused(r, 2, "--diff a.png is the same file as image A a.png");
     EXPECT_EQ(slurp(dir_ / "a.png"), slurp(dir_ / "a0.png"));
     r = run("printf '0 1.6 1 0 0 0\\n' > p.txt; $BIN plan lay.json --path p.txt --out p.txt");
@@ -98,8 +98,10 @@ TEST_F(Hostile, AFailedRunLeavesNoFile) {
 }
 
 TEST_F(Hostile, BenchWritesBothReportsOrNeither) {
-    const Outcome r = run("$BIN bench lay.json --size 32x24 --frames 1 --warmup 0 --profile-frames 1 --json x.json "
-                      "--csv /missing/x.csv", 120);
+    const Outcome r =
+        run("$BIN bench lay.json --size 32x24 --frames 1 --warmup 0 --profile-frames 1 --json x.json "
+            "--csv /missing/x.csv",
+            120);
     EXPECT_EQ(r.status, 1) << r.err;
     EXPECT_NE(r.err.find("/missing/x.csv: cannot write"), std::string::npos) << r.err;
     EXPECT_EQ(listing(dir_), "lay.json\n");
@@ -108,8 +110,11 @@ TEST_F(Hostile, BenchWritesBothReportsOrNeither) {
 TEST_F(Hostile, AFullDiskDoesNotTruncateThePreviousFile) {
     // A full device as the second output: the earlier report at x.json is
     // untouched when it fails (written together or not at all).
-    const Outcome r = run("echo previous > x.json; $BIN bench lay.json --size 32x24 --frames 1 --warmup 0 "
-                          "--profile-frames 1 --json x.json --csv " + device("full"), 120);
+    const Outcome r =
+        run("echo previous > x.json; $BIN bench lay.json --size 32x24 --frames 1 --warmup 0 "
+            "--profile-frames 1 --json x.json --csv " +
+                device("full"),
+            120);
     EXPECT_EQ(r.status, 1) << r.err;
     EXPECT_EQ(slurp(dir_ / "x.json"), "previous\n");
 }
@@ -118,8 +123,8 @@ TEST_F(Hostile, FailedWritesToStandardOutputAreErrors) {
     // (validate warns about the default layout's overlapping rooms first)
     const Outcome v = run("$BIN validate lay.json > /dev/full");
     EXPECT_EQ(v.status, 1);
-    EXPECT_NE(v.err.find("impossible: cannot write to standard output: No space left on device\n"),
-              std::string::npos) << v.err;
+    EXPECT_NE(v.err.find("impossible: cannot write to standard output: No space left on device\n"), std::string::npos)
+        << v.err;
     expect_refused(run("printf '0 1.6 1 0 0 0\\n%.0s' {1..3000} > p.txt; $BIN walk lay.json --path p.txt > /dev/full"),
                    1, "cannot write to standard output");
     const Outcome r = run("$BIN render" + std::string(kSmall) + " --out a.png && $BIN compare a.png a.png > /dev/full");

@@ -17,9 +17,7 @@ inline std::uint32_t png_crc(const std::string& bytes) {
     return c ^ 0xFFFFFFFFu;
 }
 
-inline std::string be32(std::uint32_t v) {
-    return {char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
-}
+inline std::string be32(std::uint32_t v) { return {char(v >> 24), char(v >> 16), char(v >> 8), char(v)}; }
 
 inline std::string png_chunk(const std::string& type, const std::string& data) {
     return be32(static_cast<std::uint32_t>(data.size())) + type + data + be32(png_crc(type + data));
@@ -39,8 +37,7 @@ inline std::string png_file(std::uint32_t width, std::uint32_t height, int bit_d
     const auto n = static_cast<std::uint16_t>(rows.size());
     std::string z = {0x78, 0x01, 0x01, char(n & 0xFF), char(n >> 8), char(~n & 0xFF), char((~n >> 8) & 0xFF)};
     z += rows + be32((b << 16) | a);
-    return std::string("\x89PNG\r\n\x1a\n", 8) + png_chunk("IHDR", ihdr) + png_chunk("IDAT", z) +
-           png_chunk("IEND", "");
+    return std::string("\x89PNG\r\n\x1a\n", 8) + png_chunk("IHDR", ihdr) + png_chunk("IDAT", z) + png_chunk("IEND", "");
 }
 
 }  // namespace impossible::hostile

@@ -37,9 +37,11 @@ protected:
              R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"},)"
              R"({"bufferView":1,"componentType":5126,"count":3,"type":"VEC2"}],)"
              R"("meshes":[{"primitives":[{"attributes":{"POSITION":0,"TEXCOORD_0":1},"material":0}]}],)"
-             R"("materials":[{"name":"Glass","alphaMode":")" + alpha_mode +
+             R"("materials":[{"name":"Glass","alphaMode":")" +
+                 alpha_mode +
                  R"(","pbrMetallicRoughness":{"baseColorTexture":{"index":0}}}],)"
-                 R"("textures":[{"source":0}],"images":[{"uri":")" + image + R"("}],"nodes":[{"mesh":0}]})");
+                 R"("textures":[{"source":0}],"images":[{"uri":")" +
+                 image + R"("}],"nodes":[{"mesh":0}]})");
     }
 };
 

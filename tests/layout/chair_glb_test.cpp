@@ -10,7 +10,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-
 TEST(ChairGlb, RegeneratingGivesIdenticalBytes) {
     const std::string out = temp_path("chair_regenerated.glb");
     fs::remove(out);
@@ -33,8 +32,8 @@ TEST(ChairGlb, IsAWellFormedBinaryGltf) {
                std::uint32_t(std::uint8_t(glb[at + 2])) << 16 | std::uint32_t(std::uint8_t(glb[at + 3])) << 24;
     };
     EXPECT_EQ(glb.substr(0, 4), "glTF");
-    EXPECT_EQ(u32(4), 2u);           // version
-    EXPECT_EQ(u32(8), glb.size());   // total length
+    EXPECT_EQ(u32(4), 2u);          // version
+    EXPECT_EQ(u32(8), glb.size());  // total length
     const std::uint32_t json_length = u32(12);
     EXPECT_EQ(u32(16), 0x4E4F534Au);  // "JSON"
     EXPECT_EQ(json_length % 4, 0u);

@@ -4,8 +4,8 @@
 // keeps every promise of layout.hpp; nothing may crash or take long.
 #include <cctype>
 #include <chrono>
-#include <iterator>
 #include <cmath>
+#include <iterator>
 #include <random>
 
 #include <glm/geometric.hpp>
@@ -17,9 +17,7 @@ namespace {
 
 bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-bool in_unit_range(const glm::dvec3& c) {
-    return c.x >= 0 && c.x <= 1 && c.y >= 0 && c.y <= 1 && c.z >= 0 && c.z <= 1;
-}
+bool in_unit_range(const glm::dvec3& c) { return c.x >= 0 && c.x <= 1 && c.y >= 0 && c.y <= 1 && c.z >= 0 && c.z <= 1; }
 
 // The promises of a loaded layout (layout.hpp).
 void check_invariants(const Layout& layout) {
@@ -135,27 +133,75 @@ public:
 
 private:
     static constexpr const char* kTokens[] = {
-        "{", "}", "[", "]", ",", ":", "\"", "null", "true", "false", "0", "-0", "1e308", "NaN",
-        "\"_c\": 1,", "\"id\": \"x\",", "\"rooms\": [],", "[[[[[[[[", "\xFF", "\\u0000", "\"\\ud800\"",
-        "\xEF\xBB\xBF", "\"room\": \"annex\",", "\"target\": \"hall_east\",", "\"up\": [0, 1, 0],", "\n",
-        "\"kind\": \"mirror\",", "\"kind\": \"window\",", "\"kind\": \"door\",", "\"tint\": [1, 0.5, 0],",
-        "\"reflectance\": 0.5,", "\"depth\": 0.1,", "\"target\": \"hall_mirror\",",
+        "{",
+        "}",
+        "[",
+        "]",
+        ",",
+        ":",
+        "\"",
+        "null",
+        "true",
+        "false",
+        "0",
+        "-0",
+        "1e308",
+        "NaN",
+        "\"_c\": 1,",
+        "\"id\": \"x\",",
+        "\"rooms\": [],",
+        "[[[[[[[[",
+        "\xFF",
+        "\\u0000",
+        "\"\\ud800\"",
+        "\xEF\xBB\xBF",
+        "\"room\": \"annex\",",
+        "\"target\": \"hall_east\",",
+        "\"up\": [0, 1, 0],",
+        "\n",
+        "\"kind\": \"mirror\",",
+        "\"kind\": \"window\",",
+        "\"kind\": \"door\",",
+        "\"tint\": [1, 0.5, 0],",
+        "\"reflectance\": 0.5,",
+        "\"depth\": 0.1,",
+        "\"target\": \"hall_mirror\",",
     };
     static constexpr const char* kNumbers[] = {
-        "NaN", "Infinity", "-Infinity", "1e308", "-1e308", "1e400", "-0", "0", "4e-324", "1e-9",
-        "99999999999999999999999", "-1", "1.0009", "1.002", "2", "0.5", "-2.5", "1e5", "100001",
+        "NaN",
+        "Infinity",
+        "-Infinity",
+        "1e308",
+        "-1e308",
+        "1e400",
+        "-0",
+        "0",
+        "4e-324",
+        "1e-9",
+        "99999999999999999999999",
+        "-1",
+        "1.0009",
+        "1.002",
+        "2",
+        "0.5",
+        "-2.5",
+        "1e5",
+        "100001",
     };
 
     std::mt19937 random_;
 
-    std::size_t pick(std::size_t n) { return n == 0 ? 0 : std::uniform_int_distribution<std::size_t>(0, n - 1)(random_); }
+    std::size_t pick(std::size_t n) {
+        return n == 0 ? 0 : std::uniform_int_distribution<std::size_t>(0, n - 1)(random_);
+    }
 
     void replace_number(std::string& text) {
         std::vector<std::size_t> starts;
         for (std::size_t i = 1; i < text.size(); ++i) {
             const char c = text[i];
             const char before = text[i - 1];
-            if ((c == '-' || (c >= '0' && c <= '9')) && (before == ' ' || before == '[' || before == ',' || before == ':')) {
+            if ((c == '-' || (c >= '0' && c <= '9')) &&
+                (before == ' ' || before == '[' || before == ',' || before == ':')) {
                 starts.push_back(i);
             }
         }

@@ -15,7 +15,6 @@ namespace fs = std::filesystem;
 
 const std::string kGalleryDir = std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/gallery";
 
-
 std::string make_assets(const fs::path& dir) {
     return "'" + std::string(IMPOSSIBLE_MAKE_GALLERY_ASSETS) + "' '" + dir.string() + "'";
 }

@@ -10,15 +10,14 @@
 #include <filesystem>
 #include <fstream>
 
-#include "gltf_writer.hpp"
 #include "assets/gltf_model.hpp"
+#include "gltf_writer.hpp"
 #include "layout_test_util.hpp"
 
 namespace layout_test {
 namespace {
 
 namespace fs = std::filesystem;
-
 
 class GltfHardening : public impossible::test::TempDirTest {
 protected:
@@ -138,8 +137,9 @@ TEST_F(GltfHardening, AVertexBeyondOneHundredKilometresIsRefused) {
     GltfWriter w;
     w.node({{"mesh", w.mesh({{"attributes", {{"POSITION", w.vec3({0, 0, 0, 3e38f, 0, 0, 0, 1, 0})}}}})}});
     w.write(path("far.gltf"));
-    EXPECT_EQ(load_error(path("far.gltf")).rfind("has mesh 0 primitive 0 whose POSITION accessor 0 has vertex 1 at (3", 0),
-              0u)
+    EXPECT_EQ(
+        load_error(path("far.gltf")).rfind("has mesh 0 primitive 0 whose POSITION accessor 0 has vertex 1 at (3", 0),
+        0u)
         << load_error(path("far.gltf"));
     EXPECT_NE(load_error(path("far.gltf")).find("beyond the 100 km coordinate limit (100000 m)"), std::string::npos);
 }
@@ -202,11 +202,13 @@ TEST_F(GltfHardening, SparseAccessorsHaveTheirSubstitutionsApplied) {
     const int zeros = int(w.doc["accessors"].size());
     const std::vector<std::uint8_t> at2 = {1, 2};
     const std::vector<float> values2 = {0, 0, 1, 0, 1, 0};
-    w.doc["accessors"].push_back(
-        {{"componentType", 5126}, {"count", 3}, {"type", "VEC3"},
-         {"sparse", {{"count", 2},
-                     {"indices", {{"bufferView", w.view(at2.data(), 2)}, {"componentType", 5121}}},
-                     {"values", {{"bufferView", w.view(values2.data(), 24)}}}}}});
+    w.doc["accessors"].push_back({{"componentType", 5126},
+                                  {"count", 3},
+                                  {"type", "VEC3"},
+                                  {"sparse",
+                                   {{"count", 2},
+                                    {"indices", {{"bufferView", w.view(at2.data(), 2)}, {"componentType", 5121}}},
+                                    {"values", {{"bufferView", w.view(values2.data(), 24)}}}}}});
     w.node({{"mesh", w.mesh({{"attributes", {{"POSITION", positions}}}})}});
     w.node({{"mesh", w.mesh({{"attributes", {{"POSITION", zeros}}}})}});
     w.write(path("sparse.gltf"));
@@ -230,7 +232,8 @@ TEST_F(GltfHardening, TriangleStripsAndFansBecomeCounterClockwiseTriangles) {
     GltfWriter w;
     w.node({{"mesh", w.mesh({{"attributes", {{"POSITION", w.vec3(strip)}}}, {"mode", 5}})}});
     w.node({{"mesh", w.mesh({{"attributes", {{"POSITION", w.vec3(fan)}}},
-                             {"indices", w.indices(std::vector<std::uint8_t>{0, 1, 2, 3})}, {"mode", 6}})}});
+                             {"indices", w.indices(std::vector<std::uint8_t>{0, 1, 2, 3})},
+                             {"mode", 6}})}});
     w.write(path("strips.gltf"));
     const auto triangles = load_ok(path("strips.gltf"));
     ASSERT_EQ(triangles.size(), 4u);
@@ -252,7 +255,8 @@ TEST_F(GltfHardening, SkinsAndMorphTargetsAreDrawnInTheBindPose) {
     const int joint_view = w.view(joints.data(), joints.size());
     w.doc["accessors"].push_back({{"bufferView", joint_view}, {"componentType", 5121}, {"count", 3}, {"type", "VEC4"}});
     const int weight_view = w.view(weights.data(), weights.size() * sizeof(float));
-    w.doc["accessors"].push_back({{"bufferView", weight_view}, {"componentType", 5126}, {"count", 3}, {"type", "VEC4"}});
+    w.doc["accessors"].push_back(
+        {{"bufferView", weight_view}, {"componentType", 5126}, {"count", 3}, {"type", "VEC4"}});
     const int mesh = w.mesh({{"attributes", {{"POSITION", positions}, {"JOINTS_0", 2}, {"WEIGHTS_0", 3}}},
                              {"targets", {{{"POSITION", offsets}}}}});
     w.doc["meshes"][mesh]["weights"] = {1.0};

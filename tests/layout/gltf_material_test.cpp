@@ -7,9 +7,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "assets/gltf_model.hpp"
 #include "gltf_writer.hpp"
 #include "hostile/png_bytes.hpp"
-#include "assets/gltf_model.hpp"
 #include "layout_test_util.hpp"
 
 namespace layout_test {
@@ -19,7 +19,6 @@ namespace fs = std::filesystem;
 using impossible::assets::GltfModel;
 using impossible::assets::load_gltf_model;
 using nlohmann::json;
-
 
 // A 2x2 RGBA PNG: red, green / blue, half-transparent white.
 std::string png_2x2() {
@@ -40,8 +39,8 @@ protected:
     fs::path dir;
 
     void SetUp() override {
-        dir = temp_path("gltf_material_" +
-                        std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        dir =
+            temp_path("gltf_material_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
         fs::remove_all(dir);
         fs::create_directories(dir);
     }
@@ -55,15 +54,18 @@ protected:
         GltfWriter w;
         const std::vector<float> uv = {0, 0, 1, 0, 0, 1};
         const int uv_view = w.view(uv.data(), uv.size() * sizeof(float));
-        w.doc["accessors"].push_back({{"bufferView", uv_view}, {"componentType", 5126}, {"count", 3}, {"type", "VEC2"}});
+        w.doc["accessors"].push_back(
+            {{"bufferView", uv_view}, {"componentType", 5126}, {"count", 3}, {"type", "VEC2"}});
         const int uv_accessor = int(w.doc["accessors"].size()) - 1;
         w.node({{"mesh", w.mesh({{"attributes", {{"POSITION", w.vec3(kTriangle)}, {"TEXCOORD_0", uv_accessor}}},
                                  {"material", 0}})}});
-        w.doc["materials"] = json::array(
-            {{{"name", "Tiles"},
-              {"pbrMetallicRoughness", {{"baseColorFactor", {1.0, 0.5, 0.25, 1.0}}, {"baseColorTexture", {{"index", 0}}}}}}});
+        w.doc["materials"] =
+            json::array({{{"name", "Tiles"},
+                          {"pbrMetallicRoughness",
+                           {{"baseColorFactor", {1.0, 0.5, 0.25, 1.0}}, {"baseColorTexture", {{"index", 0}}}}}}});
         w.doc["textures"] = json::array({{{"source", 0}, {"sampler", 0}}});
-        w.doc["samplers"] = json::array({{{"magFilter", 9728}, {"minFilter", 9729}, {"wrapS", 33071}, {"wrapT", 33648}}});
+        w.doc["samplers"] =
+            json::array({{{"magFilter", 9728}, {"minFilter", 9729}, {"wrapS", 33071}, {"wrapT", 33648}}});
         if (where == ImageIn::BufferView) {
             const int view = w.view(image.data(), image.size());
             w.doc["images"] = json::array({{{"bufferView", view}, {"mimeType", "image/png"}}});
@@ -257,16 +259,19 @@ TEST_F(GltfMaterial, ABlendMaterialNoPrimitiveUsesIsNoError) {
 TEST_F(GltfMaterial, MissingTextureSamplerAndImageIndicesAreNamed) {
     GltfWriter w = textured(ImageIn::BufferView);
     w.doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["index"] = 3;
-    EXPECT_EQ(load_error(w), "has material 0 (\"Tiles\") whose baseColorTexture names texture 3, which does not "
-                             "exist (the model has 1 texture)");
+    EXPECT_EQ(load_error(w),
+              "has material 0 (\"Tiles\") whose baseColorTexture names texture 3, which does not "
+              "exist (the model has 1 texture)");
     GltfWriter s = textured(ImageIn::BufferView);
     s.doc["textures"][0]["sampler"] = 2;
-    EXPECT_EQ(load_error(s), "has texture 0 whose sampler names sampler 2, which does not exist (the model has 1 "
-                             "sampler)");
+    EXPECT_EQ(load_error(s),
+              "has texture 0 whose sampler names sampler 2, which does not exist (the model has 1 "
+              "sampler)");
     GltfWriter i = textured(ImageIn::BufferView);
     i.doc["textures"][0]["source"] = 4;
-    EXPECT_EQ(load_error(i), "has texture 0 whose source names image 4, which does not exist (the model has 1 "
-                             "image)");
+    EXPECT_EQ(load_error(i),
+              "has texture 0 whose source names image 4, which does not exist (the model has 1 "
+              "image)");
     GltfWriter n = textured(ImageIn::BufferView);
     n.doc["textures"][0].erase("source");
     EXPECT_EQ(load_error(n).substr(0, 40), "has texture 0 without a source image (im");
@@ -278,8 +283,9 @@ TEST_F(GltfMaterial, MissingTextureSamplerAndImageIndicesAreNamed) {
 TEST_F(GltfMaterial, ATextureWithoutItsTexCoordSetIsAnError) {
     GltfWriter w = textured(ImageIn::BufferView);
     w.doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["texCoord"] = 2;
-    EXPECT_EQ(load_error(w), "has mesh 0 primitive 0 whose material 0 reads its base colour texture with "
-                             "TEXCOORD_2, which the primitive does not have");
+    EXPECT_EQ(load_error(w),
+              "has mesh 0 primitive 0 whose material 0 reads its base colour texture with "
+              "TEXCOORD_2, which the primitive does not have");
 }
 
 TEST_F(GltfMaterial, NonFiniteFactorsAndCutoffsAreErrors) {
@@ -313,8 +319,9 @@ TEST_F(GltfMaterial, ImagesThatDoNotDecodeAreNamedWithTheReason) {
     EXPECT_EQ(error.substr(0, 36), "has image 0 that could not be decode") << error;
     GltfWriter m = textured(ImageIn::BufferView);
     m.doc["images"][0]["mimeType"] = "image/webp";
-    EXPECT_EQ(load_error(m), "has image 0 of the unsupported mimeType \"image/webp\" (only image/png and image/jpeg "
-                             "are supported)");
+    EXPECT_EQ(load_error(m),
+              "has image 0 of the unsupported mimeType \"image/webp\" (only image/png and image/jpeg "
+              "are supported)");
 }
 
 TEST_F(GltfMaterial, AnImageWiderThanTheLimitIsRefused) {
@@ -377,8 +384,8 @@ TEST_F(GltfMaterial, TwoTexturesOfOneImageShareIt) {
 TEST_F(GltfMaterial, APropInALayoutCarriesItsMaterialsAndTextures) {
     GltfWriter w = textured(ImageIn::BufferView);
     w.write(path("m.gltf"));
-    const std::string text = replace_once(two_rooms(), "\"props\": [",
-                                          "\"props\": [ { \"gltf\": \"m.gltf\" }, { \"gltf\": \"./m.gltf\" },");
+    const std::string text =
+        replace_once(two_rooms(), "\"props\": [", "\"props\": [ { \"gltf\": \"m.gltf\" }, { \"gltf\": \"./m.gltf\" },");
     const LoadResult r = load_layout_text(text, "t.json", dir.string());
     ASSERT_TRUE(r.layout) << all_messages(r.errors);
     const auto& props = r.layout->rooms[0].props;

@@ -9,8 +9,8 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
-#include "gltf_writer.hpp"
 #include "assets/gltf_model.hpp"
+#include "gltf_writer.hpp"
 #include "layout_test_util.hpp"
 
 namespace layout_test {
@@ -155,7 +155,8 @@ TEST_F(GltfTest, NodeTransformsApplyToPositionsAndNormals) {
     expect_vec_near(trs[0].normal[0], {1, 0, 0});  // +z turned 90° about +Y
 
     // The same transform as a column-major matrix.
-    const std::string file = one_triangle("matrix.gltf", {{"matrix", {0, 0, -2, 0, 0, 2, 0, 0, 2, 0, 0, 0, 1, 2, 3, 1}}});
+    const std::string file =
+        one_triangle("matrix.gltf", {{"matrix", {0, 0, -2, 0, 0, 2, 0, 0, 2, 0, 0, 0, 1, 2, 3, 1}}});
     const std::vector<ModelTriangle> m = load_ok(file);
     ASSERT_EQ(m.size(), 1u);
     for (int k = 0; k < 3; ++k) expect_vec_near(m[0].position[k], trs[0].position[k]);
@@ -251,7 +252,8 @@ TEST_F(GltfTest, FilesThatAreNotGltf) {
     std::ofstream(path("junk.gltf"), std::ios::binary) << "{\"asset\": ";
     EXPECT_EQ(load_error(path("junk.gltf")).rfind("is not a valid glTF 2.0 file: ", 0), 0u);
     std::ofstream(path("empty.glb"), std::ios::binary).flush();
-    EXPECT_EQ(load_error(path("empty.glb")).rfind("is not a valid glTF 2.0 file: ", 0), 0u) << load_error(path("empty.glb"));
+    EXPECT_EQ(load_error(path("empty.glb")).rfind("is not a valid glTF 2.0 file: ", 0), 0u)
+        << load_error(path("empty.glb"));
     // A valid header whose chunk lengths point past the end.
     std::vector<unsigned char> chair;
     {
@@ -286,13 +288,15 @@ std::string layout_with_prop(const std::string& fields) {
     return "{ \"format\": \"impossible-layout\", \"version\": 1,\n"
            "  \"start\": { \"room\": \"r\", \"position\": [0, 1.6, 0] },\n"
            "  \"rooms\": [ { \"id\": \"r\", \"min\": [-2, 0, -2], \"max\": [2, 3, 2],\n"
-           "    \"props\": [ { " + fields + " } ] } ] }\n";
+           "    \"props\": [ { " +
+           fields + " } ] } ] }\n";
 }
 
 TEST_F(GltfTest, PropFieldsInALayout) {
     const std::string chair = "\"gltf\": \"../../../layouts/models/chair.glb\"";
     expect_valid(layout_with_prop(chair + ", \"position\": [0, 0, 0], \"yaw_deg\": -45, \"scale\": 0.5"));
-    expect_one_error(layout_with_prop(chair + ", \"scale\": 0"), "0 }", "rooms[0].props[0].scale: must be greater than 0 (got 0)");
+    expect_one_error(layout_with_prop(chair + ", \"scale\": 0"), "0 }",
+                     "rooms[0].props[0].scale: must be greater than 0 (got 0)");
     expect_one_error(layout_with_prop(chair + ", \"scale\": 1e9"), "1e9",
                      "rooms[0].props[0].scale: 1000000000 is too large (the maximum is 1000000)");
     expect_one_error(layout_with_prop(chair + ", \"yaw_deg\": \"left\""), "\"left\"",

@@ -51,16 +51,16 @@ struct GltfWriter {
     }
     int vec3(const std::vector<float>& v, int component_type = 5126) {
         const int bv = view(v.data(), v.size() * sizeof(float));
-        doc["accessors"].push_back({{"bufferView", bv}, {"componentType", component_type},
-                                    {"count", v.size() / 3}, {"type", "VEC3"}});
+        doc["accessors"].push_back(
+            {{"bufferView", bv}, {"componentType", component_type}, {"count", v.size() / 3}, {"type", "VEC3"}});
         return int(doc["accessors"].size()) - 1;
     }
     template <class T>
     int indices(const std::vector<T>& v) {
         const int bv = view(v.data(), v.size() * sizeof(T));
         const int type = sizeof(T) == 1 ? 5121 : sizeof(T) == 2 ? 5123 : 5125;
-        doc["accessors"].push_back({{"bufferView", bv}, {"componentType", type},
-                                    {"count", v.size()}, {"type", "SCALAR"}});
+        doc["accessors"].push_back(
+            {{"bufferView", bv}, {"componentType", type}, {"count", v.size()}, {"type", "SCALAR"}});
         return int(doc["accessors"].size()) - 1;
     }
     // A mesh with one primitive; returns the mesh index.
@@ -73,8 +73,8 @@ struct GltfWriter {
         return int(doc["nodes"].size()) - 1;
     }
     void write(const std::string& path) {
-        doc["buffers"] = json::array({{{"byteLength", bin.size()},
-                                       {"uri", "data:application/octet-stream;base64," + base64(bin)}}});
+        doc["buffers"] =
+            json::array({{{"byteLength", bin.size()}, {"uri", "data:application/octet-stream;base64," + base64(bin)}}});
         if (!doc.contains("scenes")) {
             json roots = json::array();
             for (std::size_t i = 0; i < doc["nodes"].size(); ++i) roots.push_back(i);

@@ -31,11 +31,11 @@ std::string layout_with(const std::vector<TestPortal>& portals) {
         const TestPortal& p = portals[i];
         const std::string size = "\"width\": " + std::to_string(p.width) + ", \"height\": " + std::to_string(p.height);
         text += "    { \"id\": \"" + p.id + "\", \"room\": \"r\", \"center\": " + p.center +
-                ", \"normal\": " + p.normal + ", \"up\": " + p.up + ", " + size +
-                ", \"target\": \"" + p.id + "_back\" },\n";
+                ", \"normal\": " + p.normal + ", \"up\": " + p.up + ", " + size + ", \"target\": \"" + p.id +
+                "_back\" },\n";
         text += "    { \"id\": \"" + p.id + "_back\", \"room\": \"s\", \"center\": [0, 1.5, " +
-                std::to_string(-0.5 * double(i)) + "], \"normal\": [0, 0, 1], " + size +
-                ", \"target\": \"" + p.id + "\" }";
+                std::to_string(-0.5 * double(i)) + "], \"normal\": [0, 0, 1], " + size + ", \"target\": \"" + p.id +
+                "\" }";
         text += i + 1 < portals.size() ? ",\n" : "\n";
     }
     text += "  ]\n}\n";

@@ -32,9 +32,7 @@ inline std::string read_text(const std::string& path) {
 }
 
 // Loads JSON text as "t.json" living in tests/data/layouts.
-inline LoadResult load(const std::string& text) {
-    return load_layout_text(text, "t.json", kLayoutDir);
-}
+inline LoadResult load(const std::string& text) { return load_layout_text(text, "t.json", kLayoutDir); }
 
 inline std::string all_messages(const std::vector<Diagnostic>& list) {
     std::string out;
@@ -100,8 +98,8 @@ inline bool has_error(const LoadResult& r, Pos pos, const std::string& message_s
 
 // Loads `text` and expects exactly one error: at the first `needle` in the
 // text, with a message starting with `message_start` (which names the field).
-inline void expect_one_error(const std::string& text, const std::string& needle,
-                             const std::string& message_start, int nth = 0) {
+inline void expect_one_error(const std::string& text, const std::string& needle, const std::string& message_start,
+                             int nth = 0) {
     const LoadResult r = load(text);
     EXPECT_FALSE(r.layout.has_value());
     ASSERT_EQ(r.errors.size(), 1u) << all_messages(r.errors);
@@ -114,13 +112,14 @@ inline void expect_one_error(const std::string& text, const std::string& needle,
 
 // Loads `text` and expects, among its errors, one at the nth `needle` with a
 // message starting with `message_start`.
-inline void expect_error(const std::string& text, const std::string& needle,
-                         const std::string& message_start, int nth = 0) {
+inline void expect_error(const std::string& text, const std::string& needle, const std::string& message_start,
+                         int nth = 0) {
     const LoadResult r = load(text);
     EXPECT_FALSE(r.layout.has_value());
     EXPECT_TRUE(has_error(r, position_of(text, needle, nth), message_start))
         << "wanted " << message_start << " at " << position_of(text, needle, nth).line << ":"
-        << position_of(text, needle, nth).column << "; got\n" << all_messages(r.errors);
+        << position_of(text, needle, nth).column << "; got\n"
+        << all_messages(r.errors);
 }
 
 // Loads `text` and expects no errors.

@@ -51,7 +51,8 @@ TEST(LayoutParseErrors, MalformedJsonPointsAtTheBadToken) {
 
 TEST(LayoutParseErrors, TruncatedFilesPointAtTheEnd) {
     const std::string whole = two_rooms();
-    for (const std::size_t length : {std::size_t{1}, std::size_t{57}, std::size_t{200}, whole.size() / 2, whole.size() - 3}) {
+    for (const std::size_t length :
+         {std::size_t{1}, std::size_t{57}, std::size_t{200}, whole.size() / 2, whole.size() - 3}) {
         const std::string text = whole.substr(0, length);
         SCOPED_TRACE(length);
         expect_json_error(text, end_of(text), "invalid JSON: ");
@@ -67,14 +68,15 @@ TEST(LayoutParseErrors, EmptyFilesSaySo) {
 TEST(LayoutParseErrors, InvalidUtf8IsAnErrorAtTheByte) {
     expect_json_error("{\"name\": \"a\xFF\"}", {1, 12}, "invalid JSON: ");
     expect_json_error("{\"name\": \"\xC3\"}", {1, 11}, "invalid JSON: ");  // cut sequence
-    expect_json_error("{\"na\xE9me\": 1}", {1, 5}, "invalid JSON: ");       // Latin-1 in a key
-    expect_json_error("\xFF\xFE{}", {1, 1}, "invalid JSON: ");                // UTF-16 BOM
+    expect_json_error("{\"na\xE9me\": 1}", {1, 5}, "invalid JSON: ");      // Latin-1 in a key
+    expect_json_error("\xFF\xFE{}", {1, 1}, "invalid JSON: ");             // UTF-16 BOM
 }
 
 TEST(LayoutParseErrors, ColumnsCountCharactersNotBytes) {
     // "é" and "→" take 2 and 3 bytes but one column each.
-    const std::string text = "{\"format\": \"impossible-layout\", \"name\": \"café → x\", \"version\": 7,\n"
-                             "\"start\": {}, \"rooms\": []}";
+    const std::string text =
+        "{\"format\": \"impossible-layout\", \"name\": \"café → x\", \"version\": 7,\n"
+        "\"start\": {}, \"rooms\": []}";
     const LoadResult r = load(text);
     EXPECT_TRUE(has_error(r, {1, 64}, "version: unsupported version 7")) << all_messages(r.errors);
 }

@@ -25,9 +25,7 @@ TEST(PathFile, ReadsPosesAndReportsTheBadLine) {
     EXPECT_FALSE(read_path_file("/nonexistent/p.txt"));
 }
 
-TEST(PathFile, AFileMustHoldAPoseAndNotBeAFolder) {
-    EXPECT_EQ(read_path_file("/tmp").error(), "/tmp: is a directory");
-}
+TEST(PathFile, AFileMustHoldAPoseAndNotBeAFolder) { EXPECT_EQ(read_path_file("/tmp").error(), "/tmp: is a directory"); }
 
 // A bad field is quoted printably: control bytes, a NUL and bytes that are
 // not UTF-8 never reach the message (found by path_fuzzer).

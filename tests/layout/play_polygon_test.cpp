@@ -11,7 +11,8 @@ std::string with_play_area(const std::string& play_area) {
 }
 
 TEST(PlayPolygon, AnLShapeLoads) {
-    const Layout l = expect_valid(with_play_area("{ \"polygon\": [[-2, -2], [6, -2], [6, 0], [0, 0], [0, 2], [-2, 2]] }"));
+    const Layout l =
+        expect_valid(with_play_area("{ \"polygon\": [[-2, -2], [6, -2], [6, 0], [0, 0], [0, 2], [-2, 2]] }"));
     ASSERT_TRUE(l.play_area.has_value());
     EXPECT_EQ(l.play_area->polygon.size(), 6u);
     EXPECT_EQ(l.play_area->min, glm::dvec2(-2, -2));  // the bounding box
@@ -32,17 +33,21 @@ TEST(PlayPolygon, EitherWindingAndARectangleOutline) {
 
 TEST(PlayPolygon, SelfIntersectionIsAnErrorAtTheCorner) {
     const std::string text = with_play_area("{ \"polygon\": [[-2, -2], [2, 2], [2, -2], [-2, 2]] }");
-    expect_one_error(text, "[2, -2]", "play_area.polygon[2]: the play area must be a simple polygon: edge 2 crosses edge 0");
+    expect_one_error(text, "[2, -2]",
+                     "play_area.polygon[2]: the play area must be a simple polygon: edge 2 crosses edge 0");
 }
 
 TEST(PlayPolygon, RepeatedCornerIsAnError) {
     const std::string text = with_play_area("{ \"polygon\": [[-2, -2], [2, -2], [2, 2], [2, -2], [-2, 2]] }");
-    expect_one_error(text, "[2, -2], [-2, 2]]", "play_area.polygon[3]: the play area must be a simple polygon: corner 3 repeats corner 1");
+    expect_one_error(text, "[2, -2], [-2, 2]]",
+                     "play_area.polygon[3]: the play area must be a simple polygon: corner 3 repeats corner 1");
 }
 
 TEST(PlayPolygon, FewerThanThreeCornersIsAnError) {
     const std::string text = with_play_area("{ \"polygon\": [[-2, -2], [2, 2]] }");
-    expect_one_error(text, "[[-2, -2], [2, 2]]", "play_area.polygon: the play area must be a simple polygon: a polygon needs at least 3 corners (got 2)");
+    expect_one_error(
+        text, "[[-2, -2], [2, 2]]",
+        "play_area.polygon: the play area must be a simple polygon: a polygon needs at least 3 corners (got 2)");
 }
 
 TEST(PlayPolygon, BadCornersAndFields) {

@@ -12,9 +12,7 @@ const char* const kEastPortal =
     "      \"width\": 1.0, \"height\": 2.2, \"depth\": 0.25,\n"
     "      \"target\": \"annex_west\" }";
 
-TEST(LayoutPortals, TheTestTextMatchesTheFile) {
-    EXPECT_NE(two_rooms().find(kEastPortal), std::string::npos);
-}
+TEST(LayoutPortals, TheTestTextMatchesTheFile) { EXPECT_NE(two_rooms().find(kEastPortal), std::string::npos); }
 
 TEST(LayoutPortals, RoomMustExist) {
     expect_one_error(replace_once(two_rooms(), "\"room\": \"annex\"", "\"room\": \"attic\""), "\"attic\"",
@@ -24,13 +22,14 @@ TEST(LayoutPortals, RoomMustExist) {
 }
 
 TEST(LayoutPortals, TargetMustExistAndNameThePortalBack) {
-    expect_error(replace_once(two_rooms(), "\"target\": \"annex_west\"", "\"target\": \"nowhere\""),
-                 "\"nowhere\"", "portals[0].target: no portal has the id \"nowhere\"");
+    expect_error(replace_once(two_rooms(), "\"target\": \"annex_west\"", "\"target\": \"nowhere\""), "\"nowhere\"",
+                 "portals[0].target: no portal has the id \"nowhere\"");
     // Three portals in a cycle: hall_east → annex_west → third → hall_east.
     std::string text = replace_once(two_rooms(), "\"target\": \"hall_east\"", "\"target\": \"third\"");
-    text = replace_once(text, "\n  ]\n}", ",\n    { \"id\": \"third\", \"room\": \"annex\", \"center\": [4, 1, 0], "
-                                         "\"normal\": [-1, 0, 0], \"width\": 1, \"height\": 2.2, "
-                                         "\"target\": \"hall_east\" }\n  ]\n}");
+    text = replace_once(text, "\n  ]\n}",
+                        ",\n    { \"id\": \"third\", \"room\": \"annex\", \"center\": [4, 1, 0], "
+                        "\"normal\": [-1, 0, 0], \"width\": 1, \"height\": 2.2, "
+                        "\"target\": \"hall_east\" }\n  ]\n}");
     const LoadResult r = load(text);
     EXPECT_TRUE(has_error(r, position_of(text, "\"annex_west\""),
                           "portals[0].target: portal \"annex_west\" targets \"third\", not \"hall_east\" "
@@ -53,7 +52,8 @@ TEST(LayoutPortals, APortalCannotTargetItself) {
 }
 
 TEST(LayoutPortals, RequiredFieldsAreReportedAtThePortal) {
-    const std::string text = replace_once(two_rooms(), "\"center\": [2.0, 1.1, 0.0], \"normal\": [-1, 0, 0], ", "\"normal\": [-1, 0, 0], ");
+    const std::string text =
+        replace_once(two_rooms(), "\"center\": [2.0, 1.1, 0.0], \"normal\": [-1, 0, 0], ", "\"normal\": [-1, 0, 0], ");
     expect_one_error(text, "{ \"id\": \"hall_east\"", "portals[0]: missing required field \"center\"");
     const std::string no_target = replace_once(two_rooms(), ",\n      \"target\": \"annex_west\"", "");
     const LoadResult r = load(no_target);
@@ -67,10 +67,11 @@ TEST(LayoutPortals, NormalMustBeUnitWithinATolerance) {
                      "portals[0].normal: must be a unit vector (its length is 2; allowed is 1 ± 0.001)");
     expect_one_error(replace_once(two_rooms(), "\"normal\": [-1, 0, 0]", "\"normal\": [0, 0, 0]"), "[0, 0, 0]",
                      "portals[0].normal: must not be the zero vector");
-    const Layout layout = expect_valid(replace_once(two_rooms(), "\"normal\": [-1, 0, 0]", "\"normal\": [-1.0009, 0, 0]"));
+    const Layout layout =
+        expect_valid(replace_once(two_rooms(), "\"normal\": [-1, 0, 0]", "\"normal\": [-1.0009, 0, 0]"));
     EXPECT_EQ(layout.portals[0].rect.normal, glm::dvec3(-1, 0, 0));  // normalised
-    const Layout tilted = expect_valid(
-        replace_once(two_rooms(), "\"normal\": [1, 0, 0]", "\"normal\": [0.8, 0.0005, 0.6]"));
+    const Layout tilted =
+        expect_valid(replace_once(two_rooms(), "\"normal\": [1, 0, 0]", "\"normal\": [0.8, 0.0005, 0.6]"));
     EXPECT_NEAR(glm::length(tilted.portals[1].rect.normal), 1.0, 1e-15);
 }
 
@@ -98,7 +99,8 @@ TEST(LayoutPortals, AFloorPortalNeedsAnUp) {
 }
 
 TEST(LayoutPortals, SizesMustBePositive) {
-    expect_error(replace_once(two_rooms(), "\"width\": 1.0, \"height\": 2.2, \"depth\"", "\"width\": 0, \"height\": 2.2, \"depth\""),
+    expect_error(replace_once(two_rooms(), "\"width\": 1.0, \"height\": 2.2, \"depth\"",
+                              "\"width\": 0, \"height\": 2.2, \"depth\""),
                  "0, \"height\"", "portals[0].width: must be greater than 0 (got 0)");
     expect_error(replace_once(two_rooms(), "\"height\": 2.2, \"depth\"", "\"height\": -2.2, \"depth\""), "-2.2",
                  "portals[0].height: must be greater than 0 (got -2.2)");
@@ -109,8 +111,9 @@ TEST(LayoutPortals, SizesMustBePositive) {
 }
 
 TEST(LayoutPortals, PairedPortalsMustHaveTheSameSize) {
-    const std::string text = replace_all(two_rooms(), "\"width\": 1.0, \"height\": 2.2,\n      \"target\": \"hall_east\"",
-                                         "\"width\": 1.1, \"height\": 2.3,\n      \"target\": \"hall_east\"");
+    const std::string text =
+        replace_all(two_rooms(), "\"width\": 1.0, \"height\": 2.2,\n      \"target\": \"hall_east\"",
+                    "\"width\": 1.1, \"height\": 2.3,\n      \"target\": \"hall_east\"");
     const LoadResult r = load(text);
     EXPECT_TRUE(has_error(r, position_of(text, "1.1, \"height\""),
                           "portals[1].width: 1.1 differs from the width 1 of its target \"hall_east\""))

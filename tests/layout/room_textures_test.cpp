@@ -27,8 +27,8 @@ protected:
     fs::path dir;
 
     void SetUp() override {
-        dir = temp_path("room_textures_" +
-                        std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        dir =
+            temp_path("room_textures_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
         fs::remove_all(dir);
         fs::create_directories(dir / "tex");
         write("tex/red.png", png(2, 2, 255, 0, 0));
@@ -145,9 +145,9 @@ TEST_F(RoomTextures, FilesThatAreMissingNotImagesOrTooLargeAreErrorsAtThePath) {
     std::string cut = png(2, 2, 1, 2, 3);
     cut.resize(cut.size() - 30);
     write("tex/cut.png", cut);
-    expect_one_error_here(hall_with(R"("textures": { "all": "tex/cut.png" })"), "\"tex/cut.png\"",
-                          "rooms[0].textures.all: the image \"" + (dir / "tex/cut.png").string() +
-                              "\" could not be decoded (");
+    expect_one_error_here(
+        hall_with(R"("textures": { "all": "tex/cut.png" })"), "\"tex/cut.png\"",
+        "rooms[0].textures.all: the image \"" + (dir / "tex/cut.png").string() + "\" could not be decoded (");
     write("tex/wide.png", png(9000, 1, 0, 0, 0));
     expect_one_error_here(hall_with(R"("textures": { "+z": "tex/wide.png" })"), "\"tex/wide.png\"",
                           "rooms[0].textures.+z: the image \"" + (dir / "tex/wide.png").string() +
@@ -156,8 +156,9 @@ TEST_F(RoomTextures, FilesThatAreMissingNotImagesOrTooLargeAreErrorsAtThePath) {
     expect_one_error_here(hall_with(R"("textures": { "-x": "tex/empty.png" })"), "\"tex/empty.png\"",
                           "rooms[0].textures.-x: the image \"" + (dir / "tex/empty.png").string() + "\" is empty");
     fs::create_directories(dir / "tex/folder.png");
-    expect_one_error_here(hall_with(R"("textures": { "-x": "tex/folder.png" })"), "\"tex/folder.png\"",
-                          "rooms[0].textures.-x: the image \"" + (dir / "tex/folder.png").string() + "\" is a directory");
+    expect_one_error_here(
+        hall_with(R"("textures": { "-x": "tex/folder.png" })"), "\"tex/folder.png\"",
+        "rooms[0].textures.-x: the image \"" + (dir / "tex/folder.png").string() + "\" is a directory");
 }
 
 TEST_F(RoomTextures, ABrokenImageSharedByTwoRoomsIsReportedAtBoth) {

@@ -6,7 +6,7 @@ namespace {
 
 TEST(LayoutRooms, IdsMustMatchThePatternAndBeUnique) {
     expect_error(replace_once(two_rooms(), "\"id\": \"annex\"", "\"id\": \"an nex\""), "\"an nex\"",
-                     "rooms[1].id: id \"an nex\" must be letters, digits, '_' and '-' only");
+                 "rooms[1].id: id \"an nex\" must be letters, digits, '_' and '-' only");
     const std::string empty = replace_once(two_rooms(), "\"id\": \"annex\"", "\"id\": \"\"");
     const LoadResult r = load(empty);
     EXPECT_TRUE(has_error(r, position_of(empty, "\"\", \"min\""), "rooms[1].id: id \"\" must be"))
@@ -17,7 +17,7 @@ TEST(LayoutRooms, IdsMustMatchThePatternAndBeUnique) {
                           "rooms[1].id: duplicate room id \"hall\" (also used by rooms[0])"))
         << all_messages(d.errors);
     expect_error(replace_once(two_rooms(), "\"id\": \"annex\"", "\"id\": 5"), "5, \"min\"",
-                     "rooms[1].id: must be a string (got a number)");
+                 "rooms[1].id: must be a string (got a number)");
     const Layout layout = expect_valid(replace_all(two_rooms(), "\"annex\"", "\"Annex_2-b\""));
     EXPECT_EQ(layout.rooms[1].id, "Annex_2-b");
 }
@@ -28,21 +28,21 @@ TEST(LayoutRooms, MissingRequiredFieldsAreReportedAtTheRoom) {
 }
 
 TEST(LayoutRooms, MaxMustExceedMinOnEveryAxis) {
-    expect_one_error(replace_once(two_rooms(), "\"max\": [5, 2.6, 1.5]", "\"max\": [5, 0, 1.5]"),
-                     "[5, 0, 1.5]", "rooms[1].max: must be greater than min on every axis (y: 0 <= 0)");
-    expect_one_error(replace_once(two_rooms(), "\"max\": [5, 2.6, 1.5]", "\"max\": [1, 2.6, 1.5]"),
-                     "[1, 2.6, 1.5]", "rooms[1].max: must be greater than min on every axis (x: 1 <= 2)");
+    expect_one_error(replace_once(two_rooms(), "\"max\": [5, 2.6, 1.5]", "\"max\": [5, 0, 1.5]"), "[5, 0, 1.5]",
+                     "rooms[1].max: must be greater than min on every axis (y: 0 <= 0)");
+    expect_one_error(replace_once(two_rooms(), "\"max\": [5, 2.6, 1.5]", "\"max\": [1, 2.6, 1.5]"), "[1, 2.6, 1.5]",
+                     "rooms[1].max: must be greater than min on every axis (x: 1 <= 2)");
     expect_one_error(replace_once(two_rooms(), "\"max\": [5, 2.6, 1.5]", "\"max\": [5, 2.6, -1.4999999999]"),
                      "[5, 2.6, -1.4999999999]", "rooms[1].max: the room is too thin (z: ");
 }
 
 TEST(LayoutRooms, CoordinatesMustBeNumbersOfSaneSize) {
-    expect_one_error(replace_once(two_rooms(), "\"min\": [2, 0, -1.5]", "\"min\": [2, \"0\", -1.5]"),
-                     "\"0\"", "rooms[1].min[1]: must be a number (got a string)");
-    expect_one_error(replace_once(two_rooms(), "\"min\": [2, 0, -1.5]", "\"min\": [2, 0, -1e308]"),
-                     "-1e308", "rooms[1].min[2]: -1e+308 is out of range (|value| must be at most 100000 m)");
-    expect_one_error(replace_once(two_rooms(), "\"min\": [2, 0, -1.5]", "\"min\": [2, 0, null]"),
-                     "null", "rooms[1].min[2]: must be a number (got null)");
+    expect_one_error(replace_once(two_rooms(), "\"min\": [2, 0, -1.5]", "\"min\": [2, \"0\", -1.5]"), "\"0\"",
+                     "rooms[1].min[1]: must be a number (got a string)");
+    expect_one_error(replace_once(two_rooms(), "\"min\": [2, 0, -1.5]", "\"min\": [2, 0, -1e308]"), "-1e308",
+                     "rooms[1].min[2]: -1e+308 is out of range (|value| must be at most 100000 m)");
+    expect_one_error(replace_once(two_rooms(), "\"min\": [2, 0, -1.5]", "\"min\": [2, 0, null]"), "null",
+                     "rooms[1].min[2]: must be a number (got null)");
     expect_one_error(replace_once(two_rooms(), "\"min\": [2, 0, -1.5]", "\"min\": {}"), "{}",
                      "rooms[1].min: must be an array of 3 numbers [x, y, z] (got an object)");
     // -0 and integers written with exponents are ordinary numbers.
@@ -55,8 +55,7 @@ TEST(LayoutRooms, ColoursAreThreeComponentsInZeroToOne) {
                      "rooms[0].color[1]: colour component 1.5 is outside 0..1");
     expect_one_error(replace_once(two_rooms(), "[0.80, 0.78, 0.72]", "[0.80, 0.78, -0.1]"), "-0.1",
                      "rooms[0].color[2]: colour component -0.1 is outside 0..1");
-    expect_one_error(replace_once(two_rooms(), "[0.80, 0.78, 0.72]", "[0.80, 0.78, 0.72, 1]"),
-                     "[0.80, 0.78, 0.72, 1]",
+    expect_one_error(replace_once(two_rooms(), "[0.80, 0.78, 0.72]", "[0.80, 0.78, 0.72, 1]"), "[0.80, 0.78, 0.72, 1]",
                      "rooms[0].color: must be an array of 3 numbers [r, g, b] (got an array of 4)");
     const Layout layout = expect_valid(replace_once(two_rooms(), "[0.80, 0.78, 0.72]", "[0, 1, 0.5]"));
     EXPECT_EQ(layout.rooms[0].face_color[int(Face::Ceiling)], glm::dvec3(0, 1, 0.5));
@@ -111,7 +110,8 @@ TEST(LayoutRooms, BoxPropsNeedMinBelowMaxAndTakeTheRoomColour) {
 TEST(LayoutRooms, APropIsABoxOrAModel) {
     const std::string both = replace_once(two_rooms(), "\"color\": [0.9, 0.2, 0.2]", "\"gltf\": \"x.glb\"");
     expect_one_error(both, "{ \"box\"", "rooms[0].props[0]: a prop is either a \"box\" or a \"gltf\" model, not both");
-    const std::string neither = replace_once(two_rooms(), "{ \"box\": { \"min\": [-0.3, 0, -0.3], \"max\": [0.3, 0.9, 0.3] }, ", "{ ");
+    const std::string neither =
+        replace_once(two_rooms(), "{ \"box\": { \"min\": [-0.3, 0, -0.3], \"max\": [0.3, 0.9, 0.3] }, ", "{ ");
     expect_one_error(neither, "{ \"color\"", "rooms[0].props[0]: a prop needs a \"box\" or a \"gltf\" field");
     expect_one_error(replace_once(two_rooms(), "\"props\": [", "\"props\": [ 33, "), "33, ",
                      "rooms[0].props[0]: must be an object (got a number)");

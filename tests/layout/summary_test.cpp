@@ -55,8 +55,8 @@ TEST(LayoutSummary, RoomsPartlyOutsideAreListedInFileOrder) {
     Summary s = summarize(expect_valid(text));
     EXPECT_EQ(s.rooms_outside_play_area, std::vector<std::string>{"hall"});  // x from -2 < -1
     EXPECT_DOUBLE_EQ(*s.expansion_ratio, 25.0 / 28.0);
-    text = replace_once(two_rooms(), "\"min\": [-2.0, -2.0], \"max\": [2.0, 2.0]",
-                        "\"min\": [10, 10], \"max\": [11, 11]");
+    text =
+        replace_once(two_rooms(), "\"min\": [-2.0, -2.0], \"max\": [2.0, 2.0]", "\"min\": [10, 10], \"max\": [11, 11]");
     s = summarize(expect_valid(text));
     EXPECT_EQ(s.rooms_outside_play_area, (std::vector<std::string>{"hall", "annex"}));
 }

@@ -61,8 +61,8 @@ TEST(LayoutTopLevel, ReadsAFileAndNamesItInDiagnostics) {
 }
 
 TEST(LayoutTopLevel, FormatMustBeImpossibleLayout) {
-    expect_one_error(replace_once(two_rooms(), "\"impossible-layout\"", "\"impossible\""),
-                     "\"impossible\"", "format: must be \"impossible-layout\" (got \"impossible\")");
+    expect_one_error(replace_once(two_rooms(), "\"impossible-layout\"", "\"impossible\""), "\"impossible\"",
+                     "format: must be \"impossible-layout\" (got \"impossible\")");
     expect_one_error(replace_once(two_rooms(), "\"impossible-layout\"", "7"), "7,",
                      "format: must be a string (got a number)");
 }
@@ -70,8 +70,7 @@ TEST(LayoutTopLevel, FormatMustBeImpossibleLayout) {
 TEST(LayoutTopLevel, RequiredTopLevelFieldsAreReportedAtTheObject) {
     const std::string text = replace_once(two_rooms(), "\"format\": \"impossible-layout\",", "");
     expect_one_error(text, "{", "missing required field \"format\"");
-    expect_one_error(replace_once(two_rooms(), "\"version\": 1,", ""), "{",
-                     "missing required field \"version\"");
+    expect_one_error(replace_once(two_rooms(), "\"version\": 1,", ""), "{", "missing required field \"version\"");
 }
 
 TEST(LayoutTopLevel, VersionMustBeOne) {
@@ -118,8 +117,8 @@ TEST(LayoutTopLevel, StartNeedsAnExistingRoomAndAPosition) {
     expect_one_error(no_position, "{ \"room\": \"hall\"", "start: missing required field \"position\"");
     expect_one_error(replace_once(two_rooms(), "[0.0, 1.6, 1.0]", "[0.0, 1.6]"), "[0.0, 1.6]",
                      "start.position: must be an array of 3 numbers [x, y, z] (got an array of 2)");
-    expect_one_error(replace_once(two_rooms(), "\"yaw_deg\": 0.0", "\"yaw_deg\": \"north\""),
-                     "\"north\"", "start.yaw_deg: must be a number (got a string)");
+    expect_one_error(replace_once(two_rooms(), "\"yaw_deg\": 0.0", "\"yaw_deg\": \"north\""), "\"north\"",
+                     "start.yaw_deg: must be a number (got a string)");
     expect_one_error(replace_once(two_rooms(), "\"yaw_deg\": 0.0", "\"yaw_deg\": 1e300"), "1e300",
                      "start.yaw_deg: 1e+300 is out of range");
     const std::string no_start = replace_once(
@@ -147,20 +146,19 @@ TEST(LayoutTopLevel, StartingOutsideTheRoomIsAWarningOnly) {
 }
 
 TEST(LayoutTopLevel, PlayAreaIsOptionalWithMinBelowMax) {
-    const Layout none = expect_valid(
-        replace_once(two_rooms(), "\"play_area\": { \"min\": [-2.0, -2.0], \"max\": [2.0, 2.0] },", ""));
+    const Layout none =
+        expect_valid(replace_once(two_rooms(), "\"play_area\": { \"min\": [-2.0, -2.0], \"max\": [2.0, 2.0] },", ""));
     EXPECT_FALSE(none.play_area.has_value());
-    expect_one_error(replace_once(two_rooms(), "\"max\": [2.0, 2.0]", "\"max\": [2.0, -2.0]"),
-                     "[2.0, -2.0]", "play_area.max: must be greater than min on both axes (z: -2 <= -2)");
+    expect_one_error(replace_once(two_rooms(), "\"max\": [2.0, 2.0]", "\"max\": [2.0, -2.0]"), "[2.0, -2.0]",
+                     "play_area.max: must be greater than min on both axes (z: -2 <= -2)");
     expect_one_error(replace_once(two_rooms(), "\"max\": [2.0, 2.0]", "\"max\": [-1.9999999, 2.0]"),
                      "[-1.9999999, 2.0]", "play_area.max: the play area is too small (x: ");
-    expect_one_error(replace_once(two_rooms(), "\"min\": [-2.0, -2.0]", "\"min\": [-2.0, 0, -2.0]"),
-                     "[-2.0, 0, -2.0]",
+    expect_one_error(replace_once(two_rooms(), "\"min\": [-2.0, -2.0]", "\"min\": [-2.0, 0, -2.0]"), "[-2.0, 0, -2.0]",
                      "play_area.min: must be an array of 2 numbers [x, z] (got an array of 3)");
     expect_one_error(replace_once(two_rooms(), "\"min\": [-2.0, -2.0], ", ""), "{ \"max\"",
                      "play_area: missing required field \"min\"");
-    expect_one_error(replace_once(two_rooms(), "{ \"min\": [-2.0, -2.0], \"max\": [2.0, 2.0] }", "true"),
-                     "true", "play_area: must be an object (got a boolean)");
+    expect_one_error(replace_once(two_rooms(), "{ \"min\": [-2.0, -2.0], \"max\": [2.0, 2.0] }", "true"), "true",
+                     "play_area: must be an object (got a boolean)");
 }
 
 TEST(LayoutTopLevel, RoomsMustBeANonEmptyArray) {
@@ -172,14 +170,13 @@ TEST(LayoutTopLevel, RoomsMustBeANonEmptyArray) {
     const Pos at = position_of(empty_rooms, "[],");
     EXPECT_TRUE(has_error(r, at, "rooms: must hold at least one room")) << all_messages(r.errors);
     const std::string object_rooms = text.substr(0, begin) + "\"rooms\": {},\n  " + text.substr(end);
-    EXPECT_TRUE(has_error(load(object_rooms), position_of(object_rooms, "{},"),
-                          "rooms: must be an array (got an object)"));
+    EXPECT_TRUE(
+        has_error(load(object_rooms), position_of(object_rooms, "{},"), "rooms: must be an array (got an object)"));
 }
 
 TEST(LayoutTopLevel, DiagnosticStrFormats) {
     EXPECT_EQ((Diagnostic{"a.json", 12, 17, "rooms[1].max: bad"}).str(), "a.json:12:17: rooms[1].max: bad");
-    EXPECT_EQ((Diagnostic{"a.json", 0, 0, "the file does not exist"}).str(),
-              "a.json: the file does not exist");
+    EXPECT_EQ((Diagnostic{"a.json", 0, 0, "the file does not exist"}).str(), "a.json: the file does not exist");
 }
 
 TEST(LayoutTopLevel, FindRoom) {

@@ -50,9 +50,9 @@ TEST(SegmentCrossing, OnThePlaneIsInFront) {
 }
 
 TEST(SegmentCrossing, EdgesIncluded) {
-    EXPECT_TRUE(segment_crossing(door(), {0.5, 1.0, 1}, {0.5, 1.0, -1}));    // a corner
+    EXPECT_TRUE(segment_crossing(door(), {0.5, 1.0, 1}, {0.5, 1.0, -1}));  // a corner
     EXPECT_TRUE(segment_crossing(door(), {-0.5, -1.0, 1}, {-0.5, -1.0, -1}));
-    EXPECT_TRUE(segment_crossing(door(), {0.0, 1.0, 1}, {0.0, 1.0, -1}));    // the top edge
+    EXPECT_TRUE(segment_crossing(door(), {0.0, 1.0, 1}, {0.0, 1.0, -1}));  // the top edge
     const double just_out = std::nextafter(0.5, 1.0);
     EXPECT_FALSE(segment_crossing(door(), {just_out, 0, 1}, {just_out, 0, -1}));
     EXPECT_FALSE(segment_crossing(door(), {0, std::nextafter(-1.0, -2.0), 1}, {0, std::nextafter(-1.0, -2.0), -1}));
@@ -81,8 +81,8 @@ TEST(SegmentCrossing, TinyDistancesKeepTInRange) {
     // d0 = 1e-300, d1 = -1e-300 and extreme ratios: t stays in [0, 1] and the
     // point stays on the rectangle.
     const PortalRect p = door();
-    for (auto [z0, z1] : {std::pair{1e-300, -1e-300}, std::pair{1e-300, -1.0}, std::pair{1.0, -1e-300},
-                          std::pair{5e-324, -5e-324}}) {
+    for (auto [z0, z1] :
+         {std::pair{1e-300, -1e-300}, std::pair{1e-300, -1.0}, std::pair{1.0, -1e-300}, std::pair{5e-324, -5e-324}}) {
         const auto c = segment_crossing(p, {0.1, 0.1, z0}, {0.2, 0.1, z1});
         ASSERT_TRUE(c) << z0 << " " << z1;
         EXPECT_GE(c->t, 0.0);

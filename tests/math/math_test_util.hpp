@@ -16,9 +16,8 @@ inline ::testing::AssertionResult near_vec(const dvec3& a, const dvec3& b, doubl
     for (int k = 0; k < 3; ++k)
         if (!(std::abs(a[k] - b[k]) <= tol))
             return ::testing::AssertionFailure()
-                   << "(" << a.x << ", " << a.y << ", " << a.z << ") vs (" << b.x << ", " << b.y
-                   << ", " << b.z << "), component " << k << " differs by " << std::abs(a[k] - b[k])
-                   << " > " << tol;
+                   << "(" << a.x << ", " << a.y << ", " << a.z << ") vs (" << b.x << ", " << b.y << ", " << b.z
+                   << "), component " << k << " differs by " << std::abs(a[k] - b[k]) << " > " << tol;
     return ::testing::AssertionSuccess();
 }
 
@@ -27,9 +26,8 @@ inline ::testing::AssertionResult near_mat(const dmat4& a, const dmat4& b, doubl
         for (int r = 0; r < 4; ++r)
             if (!(std::abs(a[c][r] - b[c][r]) <= tol))
                 return ::testing::AssertionFailure()
-                       << "entry [col " << c << "][row " << r << "]: " << a[c][r] << " vs "
-                       << b[c][r] << " (differs by " << std::abs(a[c][r] - b[c][r]) << " > " << tol
-                       << ")";
+                       << "entry [col " << c << "][row " << r << "]: " << a[c][r] << " vs " << b[c][r]
+                       << " (differs by " << std::abs(a[c][r] - b[c][r]) << " > " << tol << ")";
     return ::testing::AssertionSuccess();
 }
 

@@ -45,8 +45,8 @@ TEST(PortalFrame, ColumnsAreRightUpNormalCenter) {
 }
 
 TEST(PortalFrame, InverseIsExactTransposeForm) {
-    for (const PortalRect& p : {general_rect({1.5, -2.25, 7.125}, 37.0, 11.0, -3.0),
-                                general_rect({-100.0, 3.0, 0.5}, -150.0, 80.0, 45.0)}) {
+    for (const PortalRect& p :
+         {general_rect({1.5, -2.25, 7.125}, 37.0, 11.0, -3.0), general_rect({-100.0, 3.0, 0.5}, -150.0, 80.0, 45.0)}) {
         const dmat4 t = portal_frame(p);
         const dmat4 inv = portal_frame_inverse(p);
         const double scale = 1.0 + glm::length(p.center);
@@ -162,15 +162,14 @@ TEST(TransformPlane, MapsThePlaneOfTheMappedPoints) {
     const dvec4 plane(0.6, 0.0, 0.8, -1.25);
     const dvec4 moved = transform_plane(m, plane);
     for (dvec3 p : {dvec3(0, 0, 0), dvec3(1, 2, 3), dvec3(-7, 0.5, 11)})
-        EXPECT_NEAR(glm::dot(moved, dvec4(apply(m, p), 1.0)), glm::dot(plane, dvec4(p, 1.0)),
-                    1e-13);
+        EXPECT_NEAR(glm::dot(moved, dvec4(apply(m, p), 1.0)), glm::dot(plane, dvec4(p, 1.0)), 1e-13);
 }
 
 TEST(InColumn, EdgesIncluded) {
     PortalRect p = rect({0, 0, 0}, {0, 0, 1}, {0, 1, 0}, 2.0, 1.0);
     p.depth = 0.25;
     EXPECT_TRUE(in_column(p, {0, 0, 0}));
-    EXPECT_TRUE(in_column(p, {0, 0, 100}));       // far in front, over the rectangle
+    EXPECT_TRUE(in_column(p, {0, 0, 100}));        // far in front, over the rectangle
     EXPECT_TRUE(in_column(p, {1.0, 0.5, -0.25}));  // the corner of the back face
     EXPECT_TRUE(in_column(p, {-1.0, -0.5, 0.0}));
     EXPECT_FALSE(in_column(p, {std::nextafter(1.0, 2.0), 0.0, 0.0}));
@@ -196,7 +195,7 @@ TEST(BoxCorners, OrderAndPositions) {
     dvec3 c[8];
     box_corners(p, c);
     // r = +z, u = +y; front at x = 2, back at x = 2.25.
-    const dvec3 expected[8] = {{2, 0.0, -0.5},   {2, 0.0, 0.5},   {2, 2.2, 0.5},   {2, 2.2, -0.5},
+    const dvec3 expected[8] = {{2, 0.0, -0.5},    {2, 0.0, 0.5},    {2, 2.2, 0.5},    {2, 2.2, -0.5},
                                {2.25, 0.0, -0.5}, {2.25, 0.0, 0.5}, {2.25, 2.2, 0.5}, {2.25, 2.2, -0.5}};
     for (int k = 0; k < 8; ++k) EXPECT_TRUE(near_vec(c[k], expected[k], 4 * kEps)) << k;
     for (int k = 0; k < 4; ++k) {

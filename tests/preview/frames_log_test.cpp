@@ -7,9 +7,9 @@
 #include <random>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
 #include "base/format.hpp"
 #include "common/temp_dir.hpp"
-#include <nlohmann/json.hpp>
 
 #include "preview/frames_log.hpp"
 

@@ -9,9 +9,8 @@ namespace {
 
 TEST(PreviewKeys, TogglesAndStepsTheOptions) {
     PreviewOptions o;
-    const KeyEffects e = apply_actions({Action::ToggleHud, Action::ToggleMinimap, Action::NextView,
-                                        Action::DepthUp, Action::DepthUp, Action::IpdDown, Action::NextClip,
-                                        Action::ToggleCulling},
+    const KeyEffects e = apply_actions({Action::ToggleHud, Action::ToggleMinimap, Action::NextView, Action::DepthUp,
+                                        Action::DepthUp, Action::IpdDown, Action::NextClip, Action::ToggleCulling},
                                        false, o);
     EXPECT_FALSE(e.quit || e.release_cursor || e.screenshot || e.reset);
     EXPECT_FALSE(o.hud);

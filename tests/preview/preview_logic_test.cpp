@@ -13,11 +13,11 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "common/temp_dir.hpp"
+#include "layout/path_file.hpp"
 #include "preview/grid.hpp"
 #include "preview/head.hpp"
 #include "preview/hud.hpp"
 #include "preview/minimap.hpp"
-#include "layout/path_file.hpp"
 #include "preview/present.hpp"
 #include "preview/reload.hpp"
 
@@ -151,7 +151,7 @@ TEST(PreviewReload, ReloadsGoodEditsAndReportsBadOnes) {
     EXPECT_NE(r.errors[0].find("l.json"), std::string::npos) << r.errors[0];
 
     fs::remove(file);
-    EXPECT_EQ(poll_layout(w).kind, ReloadPoll::Failed);   // reported once
+    EXPECT_EQ(poll_layout(w).kind, ReloadPoll::Failed);  // reported once
     EXPECT_EQ(poll_layout(w).kind, ReloadPoll::Unchanged);
     std::ofstream(file) << kLayout;
     EXPECT_EQ(poll_layout(w).kind, ReloadPoll::Reloaded);  // back

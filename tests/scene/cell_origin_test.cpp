@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "scene/scene.hpp"
-#include "shading/shading.hpp"
 #include "scene_test_helpers.hpp"
+#include "shading/shading.hpp"
 
 namespace impossible::scene::test {
 namespace {
@@ -33,7 +33,7 @@ TEST(CellOrigin, FarRoomsAreExactRelativeToTheirOrigin) {
     l.rooms.push_back(make_room("far", lo, hi));
     l.rooms.back().props.push_back(layout::BoxProp{{1600.8, 0.0, -1302.2}, {1601.8, 1.0, -1301.2}, {0.5, 0.5, 0.5}});
     impossible::test::add_pair(l, make_portal("a", 0, {1599.3, 1.1, -1300.2}, {0, 0, 1}, 0.9, 2.2),
-             make_portal("b", 0, {1601.3, 1.1, -1299.5}, {0, 0, 1}, 0.9, 2.2));
+                               make_portal("b", 0, {1601.3, 1.1, -1299.5}, {0, 0, 1}, 0.9, 2.2));
     const Scene s = build_scene(l);
     const glm::dvec3 origin = s.origins[0].origin;
     EXPECT_EQ(origin, glm::dvec3(1600, 0, -1280));

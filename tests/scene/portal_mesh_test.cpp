@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "scene/scene.hpp"
-#include "shading/shading.hpp"
 #include "scene_test_helpers.hpp"
+#include "shading/shading.hpp"
 
 namespace impossible::scene::test {
 namespace {
@@ -83,12 +83,9 @@ TEST(PortalMesh, TiltedFreeStandingBox) {
 TEST(PortalMesh, HoleFrontMatchesTheWall) {
     layout::Layout l = one_room_layout();
     const auto wall = layout::Face::NegZ;
-    l.portals.push_back(
-        in_face(make_portal("p0", 0, {0.0, 1.0, -2.0}, {0, 0, 1}, 1.0, 2.0, {0, 1, 0}), wall));
-    l.portals.push_back(
-        in_face(make_portal("p0", 0, {0.0, 1.0, -2.0}, {0, 0, 1}, 2.0, 1.0, {1, 0, 0}), wall));
-    l.portals.push_back(
-        in_face(make_portal("p0", 0, {0.0, 1.0, -2.0}, {0, 0, 1}, 1.0, 2.0, {0, -1, 0}), wall));
+    l.portals.push_back(in_face(make_portal("p0", 0, {0.0, 1.0, -2.0}, {0, 0, 1}, 1.0, 2.0, {0, 1, 0}), wall));
+    l.portals.push_back(in_face(make_portal("p0", 0, {0.0, 1.0, -2.0}, {0, 0, 1}, 2.0, 1.0, {1, 0, 0}), wall));
+    l.portals.push_back(in_face(make_portal("p0", 0, {0.0, 1.0, -2.0}, {0, 0, 1}, 1.0, 2.0, {0, -1, 0}), wall));
     for (std::size_t p = 0; p < 3; ++p) {  // the door; the same hole with up = +x, and upside down
         layout::Layout one = l;
         one.portals = {l.portals[p]};
@@ -127,10 +124,10 @@ TEST(PortalMesh, RangesPartitionTheIndices) {
     box.min = {2.5, 0.0, -0.5};
     box.max = {3.5, 1.0, 0.5};
     l.rooms[1].props.push_back(box);
-    l.portals.push_back(in_face(make_portal("p0", 0, {2.0, 1.0, 0.0}, {-1, 0, 0}, 1.0, 2.0, {0, 1, 0}),
-                                layout::Face::PosX));
-    l.portals.push_back(in_face(make_portal("p1", 1, {2.0, 1.0, 0.0}, {1, 0, 0}, 1.0, 2.0, {0, 1, 0}),
-                                layout::Face::NegX));
+    l.portals.push_back(
+        in_face(make_portal("p0", 0, {2.0, 1.0, 0.0}, {-1, 0, 0}, 1.0, 2.0, {0, 1, 0}), layout::Face::PosX));
+    l.portals.push_back(
+        in_face(make_portal("p1", 1, {2.0, 1.0, 0.0}, {1, 0, 0}, 1.0, 2.0, {0, 1, 0}), layout::Face::NegX));
     l.portals.push_back(make_portal("p0", 0, {0.0, 1.0, 1.0}, {0, 0, -1}, 0.5, 0.5, {0, 1, 0}));
     const Scene s = build_scene(l);
     ASSERT_EQ(s.cells.size(), 2u);

@@ -76,9 +76,8 @@ TEST(PropMesh, GltfTrianglesArePlacedWithTheirWinding) {
         const assets::ModelTriangle& m = prop.triangles[k];
         for (std::size_t c = 0; c < 3; ++c) {
             EXPECT_EQ(t.v[c]->position, glm::vec3(layout::place_model_point(prop, m.position[c])));
-            EXPECT_NEAR(glm::length(glm::dvec3(t.v[c]->normal) -
-                                    layout::place_model_normal(prop, m.normal[c])),
-                        0.0, 1e-6);
+            EXPECT_NEAR(glm::length(glm::dvec3(t.v[c]->normal) - layout::place_model_normal(prop, m.normal[c])), 0.0,
+                        1e-6);
             EXPECT_EQ(t.v[c]->color, glm::vec3(m.color));
             EXPECT_EQ(t.v[c]->checker, 0.0f);
         }

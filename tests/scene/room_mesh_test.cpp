@@ -39,9 +39,8 @@ void expect_inward_faces(const layout::Room& room, const std::vector<Triangle>& 
             EXPECT_EQ(v->checker, static_cast<float>(room.checker));
             const glm::dvec3 p(v->position);
             const double on_surface =
-                std::min({std::abs(p.x - room.min.x), std::abs(p.x - room.max.x),
-                          std::abs(p.y - room.min.y), std::abs(p.y - room.max.y),
-                          std::abs(p.z - room.min.z), std::abs(p.z - room.max.z)});
+                std::min({std::abs(p.x - room.min.x), std::abs(p.x - room.max.x), std::abs(p.y - room.min.y),
+                          std::abs(p.y - room.max.y), std::abs(p.z - room.min.z), std::abs(p.z - room.max.z)});
             EXPECT_LT(on_surface, 1e-6);
         }
     }
@@ -50,8 +49,7 @@ void expect_inward_faces(const layout::Room& room, const std::vector<Triangle>& 
 // Room faces plus the fronts of the given portals (their holes' fillings).
 std::vector<Triangle> walls_and_fronts(const Scene& s, const std::vector<int>& portals) {
     std::vector<Triangle> ts = triangles(s, s.cells[0]);
-    for (const int p : portals)
-        ts = concat(ts, triangles(s, s.portals[static_cast<std::size_t>(p)].front));
+    for (const int p : portals) ts = concat(ts, triangles(s, s.portals[static_cast<std::size_t>(p)].front));
     return ts;
 }
 
@@ -102,8 +100,7 @@ TEST(RoomMesh, EveryFaceHasItsOwnColour) {
 
 // A door in the -z wall, standing on the floor: x in [-0.5, 0.5], y in [0, 2].
 layout::Portal door(double x = 0.0, double width = 1.0) {
-    return in_face(make_portal("p0", 0, {x, 1.0, -2.0}, {0, 0, 1}, width, 2.0, {0, 1, 0}),
-                   layout::Face::NegZ);
+    return in_face(make_portal("p0", 0, {x, 1.0, -2.0}, {0, 0, 1}, width, 2.0, {0, 1, 0}), layout::Face::NegZ);
 }
 
 TEST(RoomMesh, DoorHoleIsExact) {
@@ -126,8 +123,8 @@ TEST(RoomMesh, DoorHoleIsExact) {
 TEST(RoomMesh, WindowHoleInTheMiddleOfAWall) {
     layout::Layout l = one_room_layout();
     // In the +x wall: r = up × normal = +z; z in [-0.5, 0.5], y in [1, 2].
-    l.portals.push_back(in_face(make_portal("p0", 0, {2.0, 1.5, 0.0}, {-1, 0, 0}, 1.0, 1.0, {0, 1, 0}),
-                                layout::Face::PosX));
+    l.portals.push_back(
+        in_face(make_portal("p0", 0, {2.0, 1.5, 0.0}, {-1, 0, 0}, 1.0, 1.0, {0, 1, 0}), layout::Face::PosX));
     const Scene s = build_scene(l);
     // Lines x: -2 2, y: 0 1 2 3, z: -2 -0.5 0.5 2. Floor, ceiling, ±z: 3 cells
     // each; -x wall 9, +x wall 8.
@@ -138,8 +135,8 @@ TEST(RoomMesh, WindowHoleInTheMiddleOfAWall) {
 TEST(RoomMesh, TwoHolesInOneWall) {
     layout::Layout l = one_room_layout();
     l.portals.push_back(door(-1.0));  // x in [-1.5, -0.5], y in [0, 2]
-    l.portals.push_back(in_face(make_portal("p0", 0, {1.0, 1.375, -2.0}, {0, 0, 1}, 1.0, 0.75, {0, 1, 0}),
-                                layout::Face::NegZ));
+    l.portals.push_back(
+        in_face(make_portal("p0", 0, {1.0, 1.375, -2.0}, {0, 0, 1}, 1.0, 0.75, {0, 1, 0}), layout::Face::NegZ));
     const Scene s = build_scene(l);
     const auto ts = triangles(s, s.cells[0]);
     // Lines x: -2 -1.5 -0.5 0.5 1.5 2 (5 cells), y: 0 1 1.75 2 3 (4), z: 1.
@@ -156,14 +153,13 @@ TEST(RoomMesh, TwoHolesInOneWall) {
     EXPECT_TRUE(closed_and_consistent(walls_and_fronts(s, {0, 1})));
     // Its sides are fans over the same points: 2 + 4 + 2 + 4, and the back 2.
     EXPECT_EQ(s.portals[0].inner.count, 14u * 3);
-    EXPECT_TRUE(closed_undirected(
-        concat(triangles(s, s.portals[0].front), triangles(s, s.portals[0].inner))));
+    EXPECT_TRUE(closed_undirected(concat(triangles(s, s.portals[0].front), triangles(s, s.portals[0].inner))));
 }
 
 TEST(RoomMesh, TrapdoorInTheCeiling) {
     layout::Layout l = one_room_layout();
-    l.portals.push_back(in_face(make_portal("p0", 0, {0.0, 3.0, 0.0}, {0, -1, 0}, 1.0, 1.0, {0, 0, 1}),
-                                layout::Face::Ceiling));
+    l.portals.push_back(
+        in_face(make_portal("p0", 0, {0.0, 3.0, 0.0}, {0, -1, 0}, 1.0, 1.0, {0, 0, 1}), layout::Face::Ceiling));
     const Scene s = build_scene(l);
     // Lines x: 3 cells, y: 1, z: 3. Floor 9, ceiling 8, the walls 3 each.
     expect_holed_room(s, l.rooms[0], 2u * (9 + 8 + 4 * 3), 1.0, {0});
@@ -173,8 +169,8 @@ TEST(RoomMesh, TrapdoorInTheCeiling) {
 TEST(RoomMesh, HolesInTwoWalls) {
     layout::Layout l = one_room_layout();
     l.portals.push_back(door());
-    l.portals.push_back(in_face(make_portal("p0", 0, {2.0, 1.5, 0.0}, {-1, 0, 0}, 1.0, 1.0, {0, 1, 0}),
-                                layout::Face::PosX));
+    l.portals.push_back(
+        in_face(make_portal("p0", 0, {2.0, 1.5, 0.0}, {-1, 0, 0}, 1.0, 1.0, {0, 1, 0}), layout::Face::PosX));
     const Scene s = build_scene(l);
     // Lines x: 3 cells, y: 0 1 2 3 (3), z: 3. Floor, ceiling, -x, +z: 9 cells;
     // +x 8; -z 9 - 2 (the door spans two rows).
@@ -184,8 +180,8 @@ TEST(RoomMesh, HolesInTwoWalls) {
 TEST(RoomMesh, RotatedRectangleMakesTheSameHole) {
     layout::Layout l = one_room_layout();
     // up = +x, so right = up × normal = -y: width runs along y, height along x.
-    l.portals.push_back(in_face(make_portal("p0", 0, {0.0, 1.0, -2.0}, {0, 0, 1}, 2.0, 1.0, {1, 0, 0}),
-                                layout::Face::NegZ));
+    l.portals.push_back(
+        in_face(make_portal("p0", 0, {0.0, 1.0, -2.0}, {0, 0, 1}, 2.0, 1.0, {1, 0, 0}), layout::Face::NegZ));
     const Scene s = build_scene(l);
     expect_holed_room(s, l.rooms[0], 42u, 2.0, {0});
     EXPECT_FALSE(any_covers(triangles(s, s.cells[0]), l.portals[0].rect.center));
@@ -193,8 +189,8 @@ TEST(RoomMesh, RotatedRectangleMakesTheSameHole) {
 
 TEST(RoomMesh, HoleFillingAWholeWallLeavesItEmpty) {
     layout::Layout l = one_room_layout();
-    l.portals.push_back(in_face(make_portal("p0", 0, {-2.0, 1.5, 0.0}, {1, 0, 0}, 4.0, 3.0, {0, 1, 0}),
-                                layout::Face::NegX));
+    l.portals.push_back(
+        in_face(make_portal("p0", 0, {-2.0, 1.5, 0.0}, {1, 0, 0}, 4.0, 3.0, {0, 1, 0}), layout::Face::NegX));
     const Scene s = build_scene(l);
     expect_holed_room(s, l.rooms[0], 10u, 12.0, {0});
 }
@@ -256,8 +252,8 @@ TEST(RoomMesh, TiltedHoleFallsBackToExactSlabs) {
     layout::Layout l = one_room_layout();
     // A unit square turned 45° in the +z wall.
     const double h = std::sqrt(0.5);
-    l.portals.push_back(in_face(make_portal("p0", 0, {0.0, 1.5, 2.0}, {0, 0, -1}, 1.0, 1.0, {h, h, 0}),
-                                layout::Face::PosZ));
+    l.portals.push_back(
+        in_face(make_portal("p0", 0, {0.0, 1.5, 2.0}, {0, 0, -1}, 1.0, 1.0, {h, h, 0}), layout::Face::PosZ));
     const Scene s = build_scene(l);
     const auto ts = triangles(s, s.cells[0]);
     EXPECT_NEAR(total_area(ts), kRoomArea - 1.0, 1e-5);

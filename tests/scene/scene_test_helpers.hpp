@@ -50,8 +50,7 @@ inline std::vector<Triangle> triangles(const Scene& s, IndexRange r) {
     std::vector<Triangle> out;
     const std::size_t end = std::size_t{r.first} + r.count;
     for (std::size_t k = r.first; k + 3 <= end && k + 3 <= s.indices.size(); k += 3) {
-        out.push_back({{&s.vertices[s.indices[k]], &s.vertices[s.indices[k + 1]],
-                        &s.vertices[s.indices[k + 2]]}});
+        out.push_back({{&s.vertices[s.indices[k]], &s.vertices[s.indices[k + 1]], &s.vertices[s.indices[k + 2]]}});
     }
     return out;
 }
@@ -74,9 +73,7 @@ inline bool covers(const Triangle& t, const glm::dvec3& q) {
 }
 
 using Point = std::tuple<float, float, float>;
-inline Point key(const glm::vec3& p) {
-    return {p.x, p.y, p.z};
-}
+inline Point key(const glm::vec3& p) { return {p.x, p.y, p.z}; }
 
 // Directed edges (bitwise positions) and how often each occurs.
 inline std::map<std::pair<Point, Point>, int> directed_edges(const std::vector<Triangle>& ts) {

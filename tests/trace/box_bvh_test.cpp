@@ -106,8 +106,8 @@ void check_boxes(std::mt19937_64& rng, dvec3 offset, double scale, BoxTally& tal
         expect_same(boxes, bvh, o, target - o, none, kInf, tally);
         // Straight down onto the floor of touching boxes from a grid point:
         // the shared edges and corners give exact ties.
-        const dvec3 above = offset + scale * dvec3(0.125 * std::round(8.0 * u(rng)), 1.5,
-                                                   0.125 * std::round(8.0 * u(rng)));
+        const dvec3 above =
+            offset + scale * dvec3(0.125 * std::round(8.0 * u(rng)), 1.5, 0.125 * std::round(8.0 * u(rng)));
         expect_same(boxes, bvh, above, dvec3(0.0, -1.0, 0.0), none, kInf, tally);
         // From inside a box (a box seen from inside hides nothing).
         expect_same(boxes, bvh, centre, dvec3(g(rng), g(rng), g(rng)), none, kInf, tally);

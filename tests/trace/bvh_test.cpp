@@ -45,9 +45,8 @@ struct Tally {
 };
 
 // The scan and the tree on one ray: the same triangle, t and normal.
-void expect_same(const std::vector<PropTriangle>& soup, std::span<const PropMaterial> materials,
-                 const Bvh& bvh, const dvec3& origin, const dvec3& dir, const ClipPlane& clip,
-                 double t_limit, Tally& tally) {
+void expect_same(const std::vector<PropTriangle>& soup, std::span<const PropMaterial> materials, const Bvh& bvh,
+                 const dvec3& origin, const dvec3& dir, const ClipPlane& clip, double t_limit, Tally& tally) {
     const TriangleHit scan = nearest_triangle_scan(soup, materials, origin, dir, clip, t_limit);
     const TriangleHit tree = nearest_triangle(bvh, soup, materials, origin, dir, clip, t_limit);
     ++tally.rays;
@@ -131,7 +130,9 @@ TEST(Bvh, NearestTriangleIsTheScansOnAdversarialSoups) {
     const struct {
         dvec3 offset;
         double scale;
-    } places[] = {{dvec3(0.0), 1.0}, {dvec3(3e4, -2e4, 5e4), 1.0}, {dvec3(0.25, 1.5, -0.5), 1e-3},
+    } places[] = {{dvec3(0.0), 1.0},
+                  {dvec3(3e4, -2e4, 5e4), 1.0},
+                  {dvec3(0.25, 1.5, -0.5), 1e-3},
                   {dvec3(-7.0, 2.0, 3.0), 300.0}};
     for (const auto& place : places) {
         for (int round = 0; round < 2; ++round) {

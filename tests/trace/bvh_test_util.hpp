@@ -70,22 +70,22 @@ inline std::vector<PropTriangle> adversarial_soup(std::mt19937_64& rng, dvec3 of
                                 c + s * dvec3(u(rng), u(rng), u(rng))));
     }
     std::vector<PropTriangle> grids;
-    add_grid(grids, 1, 0.0, 1.0, 8, 0.25);   // y = 0, facing up
-    add_grid(grids, 1, 0.0, -1.0, 8, 0.25);  // the same plane, facing down
-    add_grid(grids, 0, 0.5, 1.0, 6, 0.25);   // x = 0.5, facing +x
+    add_grid(grids, 1, 0.0, 1.0, 8, 0.25);    // y = 0, facing up
+    add_grid(grids, 1, 0.0, -1.0, 8, 0.25);   // the same plane, facing down
+    add_grid(grids, 0, 0.5, 1.0, 6, 0.25);    // x = 0.5, facing +x
     add_grid(grids, 2, -0.75, -1.0, 6, 0.5);  // z = -0.75, facing -z
-    add_grid(grids, 1, 0.0, 1.0, 4, 0.5);    // y = 0 again, coarser: overlapping coplanar triangles
+    add_grid(grids, 1, 0.0, 1.0, 4, 0.5);     // y = 0 again, coarser: overlapping coplanar triangles
     for (PropTriangle& t : grids) {
         for (dvec3& p : t.position) p = offset + scale * p;
         soup.push_back(t);
     }
     const size_t before = soup.size();
     for (int k = 0; k < 150; ++k) soup.push_back(soup[rng() % before]);  // duplicates
-    for (int k = 0; k < 40; ++k) {                                         // degenerate
+    for (int k = 0; k < 40; ++k) {                                       // degenerate
         const dvec3 a = point(), b = point();
-        soup.push_back(triangle(a, b, 0.5 * (a + b)));         // collinear
-        soup.push_back(triangle(a, a, b));                     // two vertices the same
-        soup.push_back(triangle(a, a, a));                     // a point
+        soup.push_back(triangle(a, b, 0.5 * (a + b)));                                         // collinear
+        soup.push_back(triangle(a, a, b));                                                     // two vertices the same
+        soup.push_back(triangle(a, a, a));                                                     // a point
         soup.push_back(triangle(a, b, a + 1e-12 * (b - a) + dvec3(0.0, 1e-13 * scale, 0.0)));  // a needle
     }
     std::shuffle(soup.begin(), soup.end(), rng);

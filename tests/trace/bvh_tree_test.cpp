@@ -86,9 +86,7 @@ TEST(Bvh, AllCentresTheSameSplitsByPosition) {
     EXPECT_EQ(hit.hit->t, 2.0);
 }
 
-TEST(Bvh, NoTrianglesNoTree) {
-    EXPECT_TRUE(build_bvh({}).nodes.empty());
-}
+TEST(Bvh, NoTrianglesNoTree) { EXPECT_TRUE(build_bvh({}).nodes.empty()); }
 
 // A bumpy sphere of about `triangles` triangles (stacks × 2 stacks
 // quads, one triangle at each pole's quads), radius about `radius`, with

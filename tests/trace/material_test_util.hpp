@@ -34,8 +34,8 @@ inline std::shared_ptr<const image::Pixels> quadrants(std::uint8_t top_right_alp
 }
 // The texel of quadrants() at column i, row j, as the tracer reads bytes.
 inline dvec4 quadrant(int i, int j, std::uint8_t top_right_alpha = 255) {
-    const std::uint8_t q[4][4] = {{255, 128, 64, 255}, {64, 255, 128, top_right_alpha}, {128, 64, 255, 255},
-                                  {204, 204, 51, 255}};
+    const std::uint8_t q[4][4] = {
+        {255, 128, 64, 255}, {64, 255, 128, top_right_alpha}, {128, 64, 255, 255}, {204, 204, 51, 255}};
     const std::uint8_t* p = q[2 * j + i];
     return dvec4(p[0], p[1], p[2], p[3]) / 255.0;
 }

@@ -26,9 +26,7 @@ image::Pixels texel_image(int width, int height, std::initializer_list<std::uint
 }
 
 // 4 × 1, red 0, 85, 170, 255 (0, 1/3, 2/3, 1): the texel's index is 3 · red.
-image::Pixels ramp() {
-    return texel_image(4, 1, {0, 0, 0, 255, 85, 0, 0, 255, 170, 0, 0, 255, 255, 0, 0, 255});
-}
+image::Pixels ramp() { return texel_image(4, 1, {0, 0, 0, 255, 85, 0, 0, 255, 170, 0, 0, 255, 255, 0, 0, 255}); }
 
 // 2 × 2: top row red, green; bottom row blue, transparent white.
 image::Pixels quadrant_image() {
@@ -46,9 +44,7 @@ assets::Sampler sampler(int filter, int wrap_s, int wrap_t = code::kRepeat) {
 }
 
 // The red channel of the ramp, read with `filter` and `wrap` at s.
-double ramp_at(int filter, int wrap, double s) {
-    return sample_mip0(ramp(), sampler(filter, wrap), dvec2(s, 0.5)).r;
-}
+double ramp_at(int filter, int wrap, double s) { return sample_mip0(ramp(), sampler(filter, wrap), dvec2(s, 0.5)).r; }
 
 // The texel of the ramp (its index) that nearest filtering reads at whole
 // texel coordinate i (the centre of texel i, s = (i + 1/2) / 4).
@@ -145,9 +141,9 @@ TEST(TextureSample, LinearTwoAxesWithTheirOwnWraps) {
     // (0.375, 0.125): x - 1/2 = 0.25 (columns 0 and 1, weighted 3/4 and
     // 1/4), y - 1/2 = -0.25 (rows -1, by repeat row 1, and 0, weighted 1/4
     // and 3/4).
-    const dvec4 expected = 0.75 * 0.25 * kTexelBlue + 0.25 * 0.25 * kTexelClear + 0.75 * 0.75 * kTexelRed + 0.25 * 0.75 * kTexelGreen;
-    EXPECT_EQ(sample_mip0(image, sampler(code::kLinear, code::kRepeat, code::kRepeat), dvec2(0.375, 0.125)),
-              expected);
+    const dvec4 expected =
+        0.75 * 0.25 * kTexelBlue + 0.25 * 0.25 * kTexelClear + 0.75 * 0.75 * kTexelRed + 0.25 * 0.75 * kTexelGreen;
+    EXPECT_EQ(sample_mip0(image, sampler(code::kLinear, code::kRepeat, code::kRepeat), dvec2(0.375, 0.125)), expected);
     EXPECT_EQ(expected, dvec4(0.625, 0.25, 0.25, 0.9375));
     // Row -1 clamped (or mirrored) is row 0 itself.
     for (int wrap_t : {code::kClampToEdge, code::kMirroredRepeat}) {

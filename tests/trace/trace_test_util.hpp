@@ -55,9 +55,7 @@ inline layout::Layout one_room(dvec3 min = {-2, 0, -2}, dvec3 max = {2, 3, 2}) {
     return l;
 }
 
-inline dvec3 face_color(const layout::Room& room, layout::Face face) {
-    return room.face_color[static_cast<int>(face)];
-}
+inline dvec3 face_color(const layout::Room& room, layout::Face face) { return room.face_color[static_cast<int>(face)]; }
 
 // The shading model of scene/shading.hpp written out again by hand (with its
 // constants, which may be tuned), so that a test does not merely repeat the
@@ -70,8 +68,7 @@ inline dvec3 shade_by_hand(dvec3 base, dvec3 normal, bool dark) {
 
 inline std::array<std::uint8_t, 3> bytes_of(dvec3 c) {
     std::array<std::uint8_t, 3> out{};
-    for (int k = 0; k < 3; ++k)
-        out[k] = static_cast<std::uint8_t>(std::lround(std::clamp(c[k], 0.0, 1.0) * 255.0));
+    for (int k = 0; k < 3; ++k) out[k] = static_cast<std::uint8_t>(std::lround(std::clamp(c[k], 0.0, 1.0) * 255.0));
     return out;
 }
 

@@ -56,8 +56,8 @@ TEST(TracerMaterial, MaskedHoleShowsTheWallBehind) {
         EXPECT_NEAR(solid.point.z, -1.0, kTol);
     }
     // Opaque: alpha is not read; the hole is quad.
-    const TraceHit opaque = trace_ray(prepare_scene(masked_quad(0, assets::AlphaMode::Opaque)).value(), {0.5, 2.0, 1.0},
-                                      {0, 0, -1}, 0, 8);
+    const TraceHit opaque =
+        trace_ray(prepare_scene(masked_quad(0, assets::AlphaMode::Opaque)).value(), {0.5, 2.0, 1.0}, {0, 0, -1}, 0, 8);
     EXPECT_NEAR(opaque.point.z, -1.0, kTol);
 }
 
@@ -65,14 +65,15 @@ TEST(TracerMaterial, MaskCutoffComparesTheWholeAlpha) {
     // Texel alpha 128/255 ≈ 0.502: kept at cutoff 0.5, a hole at cutoff 0.51
     // or when the factor's alpha 0.9 brings it to 0.452.
     const dvec3 origin(0.5, 2.0, 1.0), dir(0, 0, -1);
-    EXPECT_NEAR(trace_ray(prepare_scene(masked_quad(128, assets::AlphaMode::Mask)).value(), origin, dir, 0, 8).point.z, -1.0,
-                kTol);
-    EXPECT_NEAR(trace_ray(prepare_scene(masked_quad(128, assets::AlphaMode::Mask, 1.0, 0.51)).value(), origin, dir, 0, 8)
-                    .point.z,
-                -2.0, kTol);
+    EXPECT_NEAR(trace_ray(prepare_scene(masked_quad(128, assets::AlphaMode::Mask)).value(), origin, dir, 0, 8).point.z,
+                -1.0, kTol);
     EXPECT_NEAR(
-        trace_ray(prepare_scene(masked_quad(128, assets::AlphaMode::Mask, 0.9)).value(), origin, dir, 0, 8).point.z, -2.0,
-        kTol);
+        trace_ray(prepare_scene(masked_quad(128, assets::AlphaMode::Mask, 1.0, 0.51)).value(), origin, dir, 0, 8)
+            .point.z,
+        -2.0, kTol);
+    EXPECT_NEAR(
+        trace_ray(prepare_scene(masked_quad(128, assets::AlphaMode::Mask, 0.9)).value(), origin, dir, 0, 8).point.z,
+        -2.0, kTol);
     // Exactly at the cutoff is kept (alpha < cutoff is a hole): 0.5 · 1 · 1.
     layout::Layout half = masked_quad(255, assets::AlphaMode::Mask, 0.5, 0.5);
     EXPECT_NEAR(trace_ray(prepare_scene(half).value(), origin, dir, 0, 8).point.z, -1.0, kTol);

@@ -146,7 +146,7 @@ TEST(TracerMaterial, LinearMagFilterBlendsNeighbours) {
 // is towards -z.
 struct FaceCase {
     layout::Face face;
-    dvec3 normal;           // into the room
+    dvec3 normal;                            // into the room
     dvec3 top_left, top_right, bottom_left;  // texel centres on the face
 };
 

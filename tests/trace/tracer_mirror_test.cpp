@@ -13,16 +13,15 @@
 namespace impossible::trace {
 namespace {
 
+using test::expect_point;
 using test::face_color;
-using test::kTol;
 using test::kFill;
 using test::kRed;
-using test::expect_point;
+using test::kTol;
 using test::make_mirror;
 using test::make_portal;
 using test::make_room;
 using test::shade_by_hand;
-
 
 // The room without the mirror, with a red box on the floor to be seen in it.
 layout::Layout plain_room() {

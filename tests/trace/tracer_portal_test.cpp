@@ -10,16 +10,15 @@ namespace impossible::trace {
 namespace {
 
 using test::add_pair;
-using test::face_color;
-using test::kTol;
-using test::kRed;
-using test::kGreen;
-using test::kBlue;
 using test::expect_point;
+using test::face_color;
+using test::kBlue;
+using test::kGreen;
+using test::kRed;
+using test::kTol;
 using test::make_portal;
 using test::make_room;
 using test::shade_by_hand;
-
 
 // Hall and annex fill the same box; a free-standing door with coincident
 // portals (transfer = identity) joins them, as in the default layout.
@@ -147,7 +146,6 @@ layout::Layout translated_pair() {
     add_pair(l, make_portal("a_door", 0, {0, 1.5, -1}, {0, 0, 1}), make_portal("b_door", 1, {1, 1.5, 0}, {0, 0, -1}));
     return l;
 }
-
 
 TEST(TracerPortal, TranslatedPairMovesTheVirtualEye) {
     const Scene scene = prepare_scene(translated_pair()).value();

@@ -10,10 +10,9 @@ namespace {
 using test::bytes_of;
 using test::face_color;
 using test::kTol;
-using test::one_room;
 using test::make_room;
+using test::one_room;
 using test::shade_by_hand;
-
 
 TEST(TracerRoom, EveryPixelOfAClosedRoomShowsIt) {
     const layout::Layout l = one_room();

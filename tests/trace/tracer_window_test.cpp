@@ -16,16 +16,15 @@
 namespace impossible::trace {
 namespace {
 
-using test::face_color;
-using test::kTol;
-using test::kFill;
 using test::expect_point;
+using test::face_color;
+using test::kFill;
+using test::kTol;
 using test::make_mirror;
 using test::make_portal;
 using test::make_room;
 using test::make_window;
 using test::shade_by_hand;
-
 
 // Room A at the origin, room B ten metres east. Window a is in A's -z wall
 // (x in [-0.5, 0.5], y in [0.5, 2.5], facing +Z), window b in B's -x wall
@@ -282,7 +281,8 @@ TEST(TracerWindow, AWindowSeenThroughADoor) {
 
 TEST(TracerWindow, SeenFromBehindAWindowIsNotThere) {
     // An eye behind A's -z wall looking in through window a's rectangle.
-    const TraceHit hit = trace_ray(prepare_scene(window_pair({0.9, 0.7, 0.5}, 0.25)).value(), {0, 1.5, -3}, {0, 0, 1}, 0, 8);
+    const TraceHit hit =
+        trace_ray(prepare_scene(window_pair({0.9, 0.7, 0.5}, 0.25)).value(), {0, 1.5, -3}, {0, 0, 1}, 0, 8);
     EXPECT_EQ(hit.id, 1);
     EXPECT_EQ(hit.portals_passed, 0);
     expect_point(hit.point, {0, 1.5, 2});

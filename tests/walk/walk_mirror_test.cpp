@@ -7,8 +7,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "walk/walker.hpp"
 #include "walk/walk_test_layouts.hpp"
+#include "walk/walker.hpp"
 
 namespace impossible::walk {
 namespace {
@@ -16,7 +16,6 @@ namespace {
 using namespace testing;
 using glm::dvec3;
 using math::HeadPose;
-
 
 int add_mirror(layout::Layout& l, const std::string& id, int room, const math::PortalRect& rect) {
     layout::Portal p{id, room, rect};

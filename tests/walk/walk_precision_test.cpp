@@ -9,8 +9,8 @@
 
 #include "math/portal.hpp"
 #include "math/rigid.hpp"
-#include "walk/walker.hpp"
 #include "walk/walk_test_layouts.hpp"
+#include "walk/walker.hpp"
 
 namespace impossible::walk {
 namespace {
@@ -18,7 +18,6 @@ namespace {
 using namespace testing;
 using glm::dvec3;
 using math::HeadPose;
-
 
 // A point over portal a's rectangle (0.2 right, 0.3 up of its centre) at
 // signed distance d.
@@ -45,12 +44,18 @@ TEST(WalkerPrecision, BackAndForthTenThousandTimesWithoutPingPong) {
     for (int k = 0; k < 10000; ++k) {
         const double d = k % 2 == 0 ? 0.3 : 1e-12;
         const std::vector<int> in = w.step(at(over_a(l, -d)));
-        if (in == std::vector<int>{0}) ++through_a; else ++spurious;
+        if (in == std::vector<int>{0})
+            ++through_a;
+        else
+            ++spurious;
         if (!w.step(at(over_a(l, -d))).empty()) ++spurious;
         EXPECT_EQ(w.room(), 1);
         EXPECT_GT(math::signed_distance(l.portals[1].rect, w.position()), 0.0);
         const std::vector<int> out = w.step(at(over_a(l, d)));
-        if (out == std::vector<int>{1}) ++through_b; else ++spurious;
+        if (out == std::vector<int>{1})
+            ++through_b;
+        else
+            ++spurious;
         if (!w.step(at(over_a(l, d))).empty()) ++spurious;
         EXPECT_EQ(w.room(), 0);
         EXPECT_GT(math::signed_distance(l.portals[0].rect, w.position()), 0.0);
@@ -218,8 +223,10 @@ TEST(WalkerPrecision, StaysRigidOverAMillionTeleportsAroundARing) {
             const int room = w.room();
             const std::vector<int> passed = w.step(loop[s]);
             const bool expected = (s == 0 && room % 2 == 0) || (s == 2 && room % 2 == 1);
-            if (expected && passed == std::vector<int>{2 * room}) ++teleports;
-            else if (expected || !passed.empty()) ++wrong;
+            if (expected && passed == std::vector<int>{2 * room})
+                ++teleports;
+            else if (expected || !passed.empty())
+                ++wrong;
         }
     }
     EXPECT_EQ(teleports, kTeleports);
@@ -238,9 +245,10 @@ TEST(WalkerPrecision, StaysRigidOverAMillionTeleportsAroundARing) {
     const math::dmat4& wm = w.physical_to_virtual();
     const double ortho = math::orthonormality_error(wm);
     const double drift = math::max_abs_difference(wm, reference);
-    std::printf("[ drift    ] after %d teleports around a ring: orthonormality %.3g, "
-                "|W - polar((M5···M0)^n)| %.3g, |W - I| %.3g\n",
-                kTeleports, ortho, drift, math::max_abs_difference(wm, math::dmat4(1.0)));
+    std::printf(
+        "[ drift    ] after %d teleports around a ring: orthonormality %.3g, "
+        "|W - polar((M5···M0)^n)| %.3g, |W - I| %.3g\n",
+        kTeleports, ortho, drift, math::max_abs_difference(wm, math::dmat4(1.0)));
     EXPECT_LT(ortho, 1e-12);
     EXPECT_LT(drift, 1e-9);
 }

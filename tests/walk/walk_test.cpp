@@ -4,8 +4,8 @@
 #include <glm/geometric.hpp>
 
 #include "math/rigid.hpp"
-#include "walk/walker.hpp"
 #include "walk/walk_test_layouts.hpp"
+#include "walk/walker.hpp"
 
 namespace impossible::walk {
 namespace {
@@ -13,7 +13,6 @@ namespace {
 using namespace testing;
 using glm::dvec3;
 using math::HeadPose;
-
 
 TEST(Walker, StartsInTheStartRoomWithIdentity) {
     const layout::Layout l = doorway();
@@ -144,8 +143,7 @@ layout::Layout chain() {
     const int r1 = add_room(l, "r1", {8, 0, -2}, {12, 3, 2});
     const int r2 = add_room(l, "r2", {18, 0, -2}, {22, 3, 2});
     add_pair(l, "a", r0, make_rect({0, 1, 0}, {0, 0, 1}), "b", r1, make_rect({10, 1, 0}, {0, 0, -1}));
-    add_pair(l, "c", r1, make_rect({10, 1, -0.5}, {0, 0, 1}), "d", r2,
-             make_rect({20, 1, -0.5}, {0, 0, -1}));
+    add_pair(l, "c", r1, make_rect({10, 1, -0.5}, {0, 0, 1}), "d", r2, make_rect({20, 1, -0.5}, {0, 0, -1}));
     l.start = {r0, {0, 1.6, 1}, 0.0};
     return l;
 }
@@ -178,10 +176,8 @@ layout::Layout two_on_a_line(double z_p, double z_q) {
     const int r0 = add_room(l, "r0", {-2, 0, -2}, {2, 3, 2});
     const int r1 = add_room(l, "r1", {8, 0, -2}, {12, 3, 2});
     const int r2 = add_room(l, "r2", {18, 0, -2}, {22, 3, 2});
-    add_pair(l, "p", r0, make_rect({0, 1, z_p}, {0, 0, 1}), "p_out", r1,
-             make_rect({10, 1, z_p}, {0, 0, -1}));
-    add_pair(l, "q", r0, make_rect({0, 1, z_q}, {0, 0, 1}), "q_out", r2,
-             make_rect({20, 1, z_q}, {0, 0, -1}));
+    add_pair(l, "p", r0, make_rect({0, 1, z_p}, {0, 0, 1}), "p_out", r1, make_rect({10, 1, z_p}, {0, 0, -1}));
+    add_pair(l, "q", r0, make_rect({0, 1, z_q}, {0, 0, 1}), "q_out", r2, make_rect({20, 1, z_q}, {0, 0, -1}));
     l.start = {r0, {0, 1.6, 1}, 0.0};
     return l;
 }
@@ -209,10 +205,8 @@ TEST(Walker, ExactTieGoesToThePortalListedFirst) {
         const int r0 = add_room(l, "r0", {-2, 0, -2}, {2, 3, 2});
         const int r1 = add_room(l, "r1", {8, 0, -2}, {12, 3, 2});
         const int r2 = add_room(l, "r2", {18, 0, -2}, {22, 3, 2});
-        add_pair(l, "q", r0, make_rect({0, 1, 0}, {0, 0, 1}), "q_out", r2,
-                 make_rect({20, 1, 0}, {0, 0, -1}));
-        add_pair(l, "p", r0, make_rect({0, 1, 0}, {0, 0, 1}), "p_out", r1,
-                 make_rect({10, 1, 0}, {0, 0, -1}));
+        add_pair(l, "q", r0, make_rect({0, 1, 0}, {0, 0, 1}), "q_out", r2, make_rect({20, 1, 0}, {0, 0, -1}));
+        add_pair(l, "p", r0, make_rect({0, 1, 0}, {0, 0, 1}), "p_out", r1, make_rect({10, 1, 0}, {0, 0, -1}));
         l.start = {r0, {0, 1.6, 1}, 0.0};
         Walker w(l);
         w.step(at({0.1, 1, 1}));

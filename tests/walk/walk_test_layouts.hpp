@@ -26,8 +26,8 @@ inline int add_room(layout::Layout& l, const std::string& id, glm::dvec3 min, gl
     return static_cast<int>(l.rooms.size()) - 1;
 }
 
-inline math::PortalRect make_rect(glm::dvec3 center, glm::dvec3 normal, double width = 1.0,
-                                  double height = 2.0, glm::dvec3 up = {0, 1, 0}) {
+inline math::PortalRect make_rect(glm::dvec3 center, glm::dvec3 normal, double width = 1.0, double height = 2.0,
+                                  glm::dvec3 up = {0, 1, 0}) {
     math::PortalRect p;
     p.center = center;
     p.normal = glm::normalize(normal);
