@@ -13,19 +13,6 @@
 
 namespace impossible::app {
 
-using cli::apply_options;
-using cli::CommandOutputs;
-using cli::InputError;
-using cli::kExitOk;
-using cli::Option;
-using cli::OptionValue;
-using cli::parse_args;
-using cli::parse_int;
-using cli::parse_number;
-using cli::ParsedArgs;
-using cli::UsageError;
-using cli::value_or_throw;
-
 namespace {
 
 // "W x D" in metres, centred on the origin.

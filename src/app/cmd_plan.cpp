@@ -12,18 +12,6 @@
 
 namespace impossible::app {
 
-using cli::apply_options;
-using cli::CommandOutputs;
-using cli::kExitOk;
-using cli::load_layout_or_default;
-using cli::Option;
-using cli::OptionValue;
-using cli::parse_args;
-using cli::parse_int;
-using cli::ParsedArgs;
-using cli::UsageError;
-using cli::value_or_throw;
-
 namespace {
 
 struct PlanOptions {

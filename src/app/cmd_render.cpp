@@ -9,21 +9,6 @@
 
 namespace impossible::app {
 
-using cli::CommandOutputs;
-using cli::frame_for;
-using cli::frame_outputs;
-using cli::kExitOk;
-using cli::kViewHelpColumn;
-using cli::load_layout_or_default;
-using cli::options_help;
-using cli::parse_args;
-using cli::parse_view_options;
-using cli::ParsedArgs;
-using cli::value_or_throw;
-using cli::view_options;
-using cli::ViewOptions;
-using cli::write_frame_pngs;
-
 namespace {
 
 const char* kRenderHelp =

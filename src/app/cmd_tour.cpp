@@ -13,20 +13,6 @@
 
 namespace impossible::app {
 
-using cli::apply_options;
-using cli::CommandOutputs;
-using cli::InputError;
-using cli::kExitOk;
-using cli::load_layout_or_default;
-using cli::Option;
-using cli::options_help;
-using cli::OptionValue;
-using cli::parse_args;
-using cli::parse_number;
-using cli::ParsedArgs;
-using cli::UsageError;
-using cli::value_or_throw;
-
 namespace {
 
 const char* kTourUsage =

@@ -12,26 +12,6 @@
 
 namespace impossible::app {
 
-using cli::apply_options;
-using cli::CommandOutputs;
-using cli::frame_for;
-using cli::frame_outputs;
-using cli::kExitOk;
-using cli::kViewHelpColumn;
-using cli::load_layout_or_default;
-using cli::Option;
-using cli::options_help;
-using cli::OptionValue;
-using cli::parse_args;
-using cli::parse_int;
-using cli::parse_view_options;
-using cli::ParsedArgs;
-using cli::trace_desc_for;
-using cli::value_or_throw;
-using cli::view_options;
-using cli::ViewOptions;
-using cli::write_frame_pngs;
-
 namespace {
 
 const char* kTraceHelp =

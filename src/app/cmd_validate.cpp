@@ -11,16 +11,6 @@
 
 namespace impossible::app {
 
-using cli::apply_options;
-using cli::kExitBadInput;
-using cli::kExitOk;
-using cli::Option;
-using cli::options_help;
-using cli::OptionValue;
-using cli::parse_args;
-using cli::ParsedArgs;
-using cli::UsageError;
-
 namespace {
 
 const char* kValidateUsage =

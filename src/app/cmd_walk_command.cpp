@@ -8,15 +8,6 @@
 
 namespace impossible::app {
 
-using cli::apply_options;
-using cli::kExitOk;
-using cli::load_layout_or_default;
-using cli::Option;
-using cli::OptionValue;
-using cli::parse_args;
-using cli::ParsedArgs;
-using cli::UsageError;
-
 namespace {
 
 struct WalkOptions {

@@ -13,7 +13,9 @@
 
 namespace impossible::app {
 
-using cli::Args;
+// Every command speaks the command line's vocabulary (src/cli: arguments,
+// option tables, errors, outputs, view options), so app uses it unqualified.
+using namespace cli;
 
 int run_render_command(const Args& args, std::ostream& out, std::ostream& err);
 int run_validate_command(const Args& args, std::ostream& out, std::ostream& err);

@@ -10,12 +10,6 @@
 
 namespace impossible::app {
 
-using cli::InputError;
-using cli::kExitBadInput;
-using cli::kExitOk;
-using cli::kExitUsage;
-using cli::UsageError;
-
 namespace {
 
 constexpr Command kCommands[] = {

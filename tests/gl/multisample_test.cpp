@@ -134,6 +134,20 @@ std::vector<std::pair<std::string, render::FrameDesc>> frames_to_check(int sampl
 
 std::string layout_of(const std::string& label) { return label.substr(0, label.find(':')); }
 
+// Renders each of frames_to_check with a renderer of its layout and hands
+// the label, frame, layout, renderer and multisampled image to `check`.
+template <class Check>
+void for_each_multisampled_frame(gl::Context& context, Check check) {
+    for (const auto& [label, frame] : frames_to_check(kSamples)) {
+        const layout::Layout l = testing::example_layout(layout_of(label).c_str());
+        Result<render::Renderer> r = render::Renderer::create(context.state(), scene::build_scene(l));
+        ASSERT_TRUE(r.has_value()) << r.error();
+        const Result<render::RenderedFrame> ms = r->render(frame);
+        ASSERT_TRUE(ms.has_value()) << ms.error();
+        check(label, frame, l, *r, ms->image);
+    }
+}
+
 // The id map of a multisampled frame against the tracer's centre rays, on
 // every layout and pose (the corridor recursing 8 deep: the stencil works per
 // sample). With the one-pixel edge tolerance the maps agree exactly except
@@ -148,17 +162,13 @@ TEST(Multisample, IdsAgreeWithTheTracersCentreRays) {
     Result<gl::Context> context = gl::create_context(gl::Backend::Egl);
     ASSERT_TRUE(context.has_value()) << context.error();
     if (!offers(kSamples)) GTEST_SKIP() << "the driver offers no 4-sample buffers";
-    for (const auto& [label, frame] : frames_to_check(kSamples)) {
-        const layout::Layout l = testing::example_layout(layout_of(label).c_str());
-        Result<render::Renderer> r = render::Renderer::create(context->state(), scene::build_scene(l));
-        ASSERT_TRUE(r.has_value()) << r.error();
-        const Result<render::RenderedFrame> ms = r->render(frame);
-        ASSERT_TRUE(ms.has_value()) << ms.error();
+    for_each_multisampled_frame(*context, [](const std::string& label, const render::FrameDesc& frame,
+                                             const layout::Layout& l, render::Renderer&, const image::Image& ms) {
         const image::Image centre = trace::trace_frame(l, cli::trace_desc_for(frame)).value();  // ids: centre rays
-        const image::Comparison cmp = image::compare_pictures(ms->image, centre);
+        const image::Comparison cmp = image::compare_pictures(ms, centre);
         std::printf("  %-56s ids %ld (%.4f%%)\n", label.c_str(), cmp.id_mismatches, cmp.id_mismatch_percent);
         EXPECT_LE(cmp.id_mismatch_percent, 0.01) << label;
-    }
+    });
 }
 
 // Where each pixel's centre ray ends: its cell id and the portals it passed.
@@ -191,30 +201,27 @@ TEST(Multisample, PortalEdgesMatchTheSupersampledTracer) {
     Result<gl::Context> context = gl::create_context(gl::Backend::Egl);
     ASSERT_TRUE(context.has_value()) << context.error();
     if (!offers(kSamples)) GTEST_SKIP() << "the driver offers no 4-sample buffers";
-    for (const auto& [label, frame] : frames_to_check(kSamples)) {
-        const layout::Layout l = testing::example_layout(layout_of(label).c_str());
-        Result<render::Renderer> r = render::Renderer::create(context->state(), scene::build_scene(l));
-        ASSERT_TRUE(r.has_value()) << r.error();
-        const Result<render::RenderedFrame> ms = r->render(frame);
-        ASSERT_TRUE(ms.has_value()) << ms.error();
+    for_each_multisampled_frame(*context, [](const std::string& label, const render::FrameDesc& frame,
+                                             const layout::Layout& l, render::Renderer& renderer,
+                                             const image::Image& ms) {
         render::FrameDesc single_frame = frame;
         single_frame.samples = 1;
-        const Result<render::RenderedFrame> single = r->render(single_frame);
+        const Result<render::RenderedFrame> single = renderer.render(single_frame);
         ASSERT_TRUE(single.has_value()) << single.error();
 
         trace::TraceDesc t = cli::trace_desc_for(frame);
         const std::vector<int> keys = portal_keys(l, t);
         const image::Image super = trace::trace_frame(l, t).value();
-        const EdgeError edge = edge_error(ms->image, super, keys, 48);
+        const EdgeError edge = edge_error(ms, super, keys, 48);
         const EdgeError aliased = edge_error(single->image, super, keys, 48);
         std::printf("  %-56s %4ld edge pixels: 4x mean %5.2f worst %3d over %3ld | 1x mean %5.2f worst %3d over %3ld\n",
                     label.c_str(), edge.pixels, edge.mean, edge.worst, edge.over, aliased.mean, aliased.worst,
                     aliased.over);
-        if (edge.pixels == 0) continue;
+        if (edge.pixels == 0) return;
         EXPECT_LE(edge.mean, 6.0) << label;
         EXPECT_LE(edge.over, edge.pixels / 100) << label;
         EXPECT_LT(edge.mean, aliased.mean) << label << ": multisampling should bring the edges closer";
-    }
+    });
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 namespace impossible::trace {
 namespace {
 
+using test::expect_same_nearest;
 using test::kInf;
 
 PropBox box(dvec3 lo, dvec3 hi) {
@@ -71,14 +72,8 @@ void expect_same(const std::vector<PropBox>& boxes, const Bvh& bvh, const dvec3&
                  const ClipPlane& clip, double t_limit, BoxTally& tally) {
     const BoxHit scan = nearest_box_scan(boxes, origin, dir, clip, t_limit);
     const BoxHit tree = nearest_box(bvh, boxes, origin, dir, clip, t_limit);
-    ++tally.rays;
-    ASSERT_EQ(scan.index, tree.index) << "origin " << origin.x << ", " << origin.y << ", " << origin.z << " dir "
-                                      << dir.x << ", " << dir.y << ", " << dir.z;
-    ASSERT_EQ(scan.hit.has_value(), tree.hit.has_value());
-    if (!scan.hit) return;
-    ++tally.hits;
-    ASSERT_EQ(scan.hit->t, tree.hit->t);
-    ASSERT_EQ(scan.hit->normal, tree.hit->normal);
+    expect_same_nearest(scan, tree, origin, dir, tally);
+    if (::testing::Test::HasFatalFailure() || !scan.hit) return;
     int at_t = 0;
     for (const PropBox& b : boxes) {
         const std::optional<SurfaceHit> h = hit_prop_box(b, origin, dir, clip);

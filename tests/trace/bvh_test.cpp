@@ -21,6 +21,7 @@ namespace impossible::trace {
 namespace {
 
 using test::adversarial_soup;
+using test::expect_same_nearest;
 using test::kInf;
 using test::triangle;
 
@@ -49,14 +50,8 @@ void expect_same(const std::vector<PropTriangle>& soup, std::span<const PropMate
                  const dvec3& origin, const dvec3& dir, const ClipPlane& clip, double t_limit, Tally& tally) {
     const TriangleHit scan = nearest_triangle_scan(soup, materials, origin, dir, clip, t_limit);
     const TriangleHit tree = nearest_triangle(bvh, soup, materials, origin, dir, clip, t_limit);
-    ++tally.rays;
-    ASSERT_EQ(scan.index, tree.index) << "origin " << origin.x << ", " << origin.y << ", " << origin.z << " dir "
-                                      << dir.x << ", " << dir.y << ", " << dir.z;
-    ASSERT_EQ(scan.hit.has_value(), tree.hit.has_value());
-    if (!scan.hit) return;
-    ++tally.hits;
-    ASSERT_EQ(scan.hit->t, tree.hit->t);
-    ASSERT_EQ(scan.hit->normal, tree.hit->normal);
+    expect_same_nearest(scan, tree, origin, dir, tally);
+    if (::testing::Test::HasFatalFailure() || !scan.hit) return;
     ASSERT_EQ(scan.hit->barycentric, tree.hit->barycentric);
     const PropTriangle& hit = soup[scan.index];
     if (glm::dot(dir, glm::cross(hit.position[1] - hit.position[0], hit.position[2] - hit.position[0])) > 0.0) {

@@ -39,6 +39,21 @@ inline void expect_point(const dvec3& got, const dvec3& want, double tol = kTol)
     EXPECT_NEAR(got.z, want.z, tol);
 }
 
+// The scan's and the tree's nearest hit on one ray (of boxes or of
+// triangles) agree: the same index, and the same t and normal where there is
+// a hit. Counts the ray and the hit in `tally`.
+template <class Hit, class Tally>
+void expect_same_nearest(const Hit& scan, const Hit& tree, const dvec3& origin, const dvec3& dir, Tally& tally) {
+    ++tally.rays;
+    ASSERT_EQ(scan.index, tree.index) << "origin " << origin.x << ", " << origin.y << ", " << origin.z << " dir "
+                                      << dir.x << ", " << dir.y << ", " << dir.z;
+    ASSERT_EQ(scan.hit.has_value(), tree.hit.has_value());
+    if (!scan.hit) return;
+    ++tally.hits;
+    ASSERT_EQ(scan.hit->t, tree.hit->t);
+    ASSERT_EQ(scan.hit->normal, tree.hit->normal);
+}
+
 // The built-in default layout, loaded from layouts/.
 inline layout::Layout load_default() {
     const layout::LoadResult loaded = layout::load_layout_file(IMPOSSIBLE_SOURCE_DIR "/layouts/default.json");
