@@ -54,6 +54,16 @@ void expect_same_nearest(const Hit& scan, const Hit& tree, const dvec3& origin, 
     ASSERT_EQ(scan.hit->normal, tree.hit->normal);
 }
 
+// The frames of `a` and `b` (a scene with its triangle trees and a copy
+// without them, which the tracer scans) are the same. Returns a's frame.
+inline image::Image expect_same_frames(const Scene& a, const Scene& b, const TraceDesc& desc) {
+    image::Image first = trace_frame(a, desc).value();
+    const image::Image second = trace_frame(b, desc).value();
+    EXPECT_EQ(first.rgb, second.rgb);
+    EXPECT_EQ(first.ids, second.ids);
+    return first;
+}
+
 // The built-in default layout, loaded from layouts/.
 inline layout::Layout load_default() {
     const layout::LoadResult loaded = layout::load_layout_file(IMPOSSIBLE_SOURCE_DIR "/layouts/default.json");
