@@ -27,21 +27,8 @@ fuzzers=(layout_fuzzer path_fuzzer gltf_fuzzer)
 
 # The project's packages, then clang with its libFuzzer and sanitizer runtimes
 # (libclang-rt-14-dev is only recommended by clang, so asked for by name) and
-# llvm-symbolizer for the reports; setup.sh's way: only what is missing.
-"$root/scripts/setup.sh"
-missing=()
-for p in clang libclang-rt-14-dev llvm; do
-  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
-    missing+=("$p")
-  fi
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  echo "fuzz: installing ${missing[*]}" >&2
-  if [ "$(id -u)" -eq 0 ]; then sudo=(); else sudo=(sudo); fi
-  export DEBIAN_FRONTEND=noninteractive
-  "${sudo[@]}" apt-get update -qq
-  "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
-fi
+# llvm-symbolizer for the reports, through setup.sh: only what is missing.
+"$root/scripts/setup.sh" clang libclang-rt-14-dev llvm
 
 # Only the three programs and the libraries they link.
 start=$SECONDS

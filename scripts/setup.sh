@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages impossible needs, only when some are missing.
 # Idempotent and non-interactive; uses apt-get as root or through sudo.
+# Usage: scripts/setup.sh [PACKAGE...]   (extra packages a script needs too,
+# e.g. fuzz.sh's clang)
 set -euo pipefail
 
 packages=(
@@ -8,6 +10,7 @@ packages=(
   libglm-dev libegl-dev libosmesa6-dev libglfw3-dev libtinygltf-dev
   nlohmann-json3-dev libstb-dev libgtest-dev libbenchmark-dev python3-glad
   xvfb libegl-mesa0 libgl1-mesa-dri
+  "$@"
 )
 
 missing=()
