@@ -42,9 +42,13 @@ void append_hex_escape(std::string& out, unsigned char b) {
 }
 
 // Control bytes and bytes that are not valid UTF-8 become \xNN; with
-// `quotes`, '"' and '\\' get a backslash too.
-void append_escaped(std::string& out, std::string_view text, bool quotes) {
-    for (std::size_t i = 0; i < text.size();) {
+// `quotes`, '"' and '\\' get a backslash too. Stops after `max_characters`
+// characters (a UTF-8 sequence or a stray byte each) and returns the number
+// of bytes of `text` it took.
+std::size_t append_escaped(std::string& out, std::string_view text, bool quotes,
+                           std::size_t max_characters = std::string_view::npos) {
+    std::size_t i = 0;
+    for (std::size_t written = 0; i < text.size() && written < max_characters; ++written) {
         const unsigned char b = static_cast<unsigned char>(text[i]);
         if (quotes && (b == '"' || b == '\\')) {
             out += '\\';
@@ -61,20 +65,23 @@ void append_escaped(std::string& out, std::string_view text, bool quotes) {
             ++i;
         }
     }
+    return i;
 }
 
 }  // namespace
 
-std::string quote(std::string_view text) {
+std::string quote(std::string_view text, std::size_t max_characters) {
     std::string out = "\"";
-    append_escaped(out, text, true);
+    const std::size_t shown = append_escaped(out, text, true, max_characters);
     out += '"';
+    if (shown < text.size()) out += "... (" + std::to_string(text.size() - shown) + " more bytes)";
     return out;
 }
 
-std::string printable(std::string_view text) {
+std::string printable(std::string_view text, std::size_t max_characters) {
     std::string out;
-    append_escaped(out, text, false);
+    const std::size_t shown = append_escaped(out, text, false, max_characters);
+    if (shown < text.size()) out += "... (" + std::to_string(text.size() - shown) + " more bytes)";
     return out;
 }
 

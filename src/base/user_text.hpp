@@ -11,12 +11,20 @@
 
 namespace impossible {
 
-// A string as a JSON string literal (quotes, escapes), safe to print.
-std::string quote(std::string_view text);
+// Diagnostics quote at most this many characters of a user's string, and of
+// a file's path (which a user wants whole; the system's own limit is 4096).
+inline constexpr std::size_t kQuotedCharacters = 100;
+inline constexpr std::size_t kQuotedPathCharacters = 4096;
+
+// A string as a JSON string literal (quotes, escapes), safe to print. Past
+// kQuotedCharacters characters it is cut, and says so: "abc"... (N more
+// bytes), so that a megabyte key still makes a short one-line message.
+std::string quote(std::string_view text, std::size_t max_characters = kQuotedCharacters);
 
 // Text with bytes that are not valid UTF-8, and control characters, written as
-// \xNN, so that a message never carries raw binary.
-std::string printable(std::string_view text);
+// \xNN, so that a message never carries raw binary. With `max_characters`
+// it is cut like quote().
+std::string printable(std::string_view text, std::size_t max_characters = std::string_view::npos);
 
 // "1 texture", "3 textures".
 std::string count_of(std::size_t n, const char* singular, const char* plural);

@@ -46,7 +46,7 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
 Path Path::operator/(std::string_view key) const {
     Path out;
     out.pointer = pointer + "/" + pointer_token(key);
-    if (is_identifier_key(key)) {
+    if (is_identifier_key(key) && key.size() <= kQuotedCharacters) {
         out.display = display.empty() ? std::string(key) : display + "." + std::string(key);
     } else {
         out.display = display + "[" + quote(key) + "]";

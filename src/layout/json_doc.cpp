@@ -106,7 +106,7 @@ private:
                 message.erase(last_read);
             }
         }
-        return "invalid JSON: " + printable(message);
+        return "invalid JSON: " + printable(message, 2 * kQuotedCharacters);
     }
 };
 
@@ -320,6 +320,12 @@ std::string pointer_token(std::string_view key) {
 
 JsonParse parse_json(std::string_view text) {
     JsonParse result;
+    // nlohmann's lexer takes a NUL byte for the end of the input, so
+    // "{...}\0garbage" would parse; a layout is text and holds none.
+    if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
+        result.error = JsonError{nul, "a NUL byte (\\x00): a layout is JSON text, which cannot hold one"};
+        return result;
+    }
     DomBuilder builder;
     const bool parsed = json::sax_parse(text.begin(), text.end(), &builder, json::input_format_t::json, /*strict=*/true,
                                         /*ignore_comments=*/false);

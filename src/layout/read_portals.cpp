@@ -136,12 +136,8 @@ bool read_kind(Checker& check, const Path& at, const json& value, PortalKind& ki
             return true;
         }
     }
-    // A name of megabytes is cut: the message stays one short line.
-    constexpr std::size_t kShown = 100;
-    const std::string shown = name->size() <= kShown ? quote(*name)
-                                                     : quote(name->substr(0, kShown)) + "... (" +
-                                                           std::to_string(name->size() - kShown) + " more bytes)";
-    check.error(at, "unknown kind " + shown + " (the kinds are \"door\", the default, \"mirror\" and \"window\")");
+    check.error(at,
+                "unknown kind " + quote(*name) + " (the kinds are \"door\", the default, \"mirror\" and \"window\")");
     return false;
 }
 

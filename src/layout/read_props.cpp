@@ -89,14 +89,14 @@ std::optional<GltfProp> read_gltf_prop(Checker& check, const Path& at, const jso
         return std::nullopt;
     }
     if (has_control_character(*path)) {
-        check.error(gltf_at, "the path " + quote(*path) + " contains a control character");
+        check.error(gltf_at, "the path " + quote(*path, kQuotedPathCharacters) + " contains a control character");
         return std::nullopt;
     }
     prop.path = *path;
     prop.resolved_path = models.resolve(*path);
     const Result<assets::GltfModel>& model = models.load(prop.resolved_path);
     if (!model) {
-        check.error(gltf_at, "the model " + quote(prop.resolved_path) + " " + model.error());
+        check.error(gltf_at, "the model " + quote(prop.resolved_path, kQuotedPathCharacters) + " " + model.error());
         return std::nullopt;
     }
     if (Result<void> counted = models.add_instance(model->triangles.size()); !counted) {

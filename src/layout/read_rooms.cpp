@@ -61,13 +61,13 @@ void read_textures(Checker& check, const Path& at, const json& value, assets::As
             continue;
         }
         if (has_control_character(*path)) {
-            check.error(key_at, "the path " + quote(*path) + " contains a control character");
+            check.error(key_at, "the path " + quote(*path, kQuotedPathCharacters) + " contains a control character");
             continue;
         }
         const std::string resolved = models.resolve(*path);
         const Result<std::shared_ptr<const image::Pixels>>& image = models.load_image(resolved);
         if (!image) {
-            check.error(key_at, "the image " + quote(resolved) + " " + image.error());
+            check.error(key_at, "the image " + quote(resolved, kQuotedPathCharacters) + " " + image.error());
             continue;
         }
         (face < 0 ? all : own[static_cast<std::size_t>(face)]) = *image;

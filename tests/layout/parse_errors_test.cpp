@@ -84,7 +84,7 @@ TEST(LayoutParseErrors, ColumnsCountCharactersNotBytes) {
 TEST(LayoutParseErrors, ControlCharactersAndBadEscapes) {
     expect_json_error("{\"name\": \"a\tb\"}", {1, 12}, "invalid JSON: ");
     expect_json_error("{\"name\": \"a\\qb\"}", {1, 13}, "invalid JSON: ");
-    expect_json_error(std::string("{\"name\"\0: 1}", 12), {1, 8}, "invalid JSON: ");
+    expect_json_error(std::string("{\"name\"\0: 1}", 12), {1, 8}, "a NUL byte (\\x00): a layout is JSON text");
     expect_json_error("{\"name\": \"\\ud800\"}", {1, 17}, "invalid JSON: ");  // lone surrogate, noticed at its end
 }
 
