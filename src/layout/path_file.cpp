@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <sstream>
+#include <string_view>
 
 #include "base/file_io.hpp"
 #include "base/user_text.hpp"
@@ -24,6 +25,29 @@ std::vector<std::string> fields_of(const std::string& line) {
     return fields;
 }
 
+// A path file is 8-bit text (ASCII or UTF-8). UTF-16 and UTF-32 files, common
+// from Windows editors, start with a byte order mark: name the encoding
+// instead of complaining about the first field.
+const char* wide_encoding(const std::string& first_line) {
+    const auto starts = [&](std::string_view bom) { return first_line.rfind(bom, 0) == 0; };
+    using namespace std::string_view_literals;
+    if (starts("\xFF\xFE\0\0"sv) || starts("\0\0\xFE\xFF"sv)) return "UTF-32";
+    if (starts("\xFF\xFE"sv) || starts("\xFE\xFF"sv)) return "UTF-16";
+    return nullptr;
+}
+
+// One field as a number: from_chars plus an optional leading '+' (not "+-").
+bool parse_field(const std::string& field, double& value) {
+    const char* first = field.data();
+    const char* last = first + field.size();
+    if (*first == '+') {
+        ++first;
+        if (first == last || *first == '-' || *first == '+') return false;
+    }
+    const auto [ptr, ec] = std::from_chars(first, last, value);
+    return ec == std::errc() && ptr == last && std::isfinite(value);
+}
+
 }  // namespace
 
 PathFile read_path_stream(std::istream& in, const std::string& name) {
@@ -34,22 +58,26 @@ PathFile read_path_stream(std::istream& in, const std::string& name) {
     auto fail = [&](const std::string& message) { return Error{name + ":" + std::to_string(number) + ": " + message}; };
     while (std::getline(in, line)) {
         ++number;
+        if (number == 1) {
+            if (const char* encoding = wide_encoding(line))
+                return Error{name + ": is " + encoding + " text; save it as UTF-8 or ASCII"};
+            if (line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // a UTF-8 byte order mark
+        }
         if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (line.find('\0') != std::string::npos)
+            return fail("holds a NUL byte; a path file is text (ASCII or UTF-8, not UTF-16)");
         const std::vector<std::string> f = fields_of(line);
         if (f.empty() || f[0][0] == '#') continue;
         if (f.size() != 6)
             return fail("expected 6 numbers (X Y Z YAW PITCH ROLL), found " + std::to_string(f.size()) + " fields");
         double v[6];
         for (int k = 0; k < 6; ++k) {
-            const char* first = f[k].data();
-            const char* last = first + f[k].size();
-            if (*first == '+') ++first;
-            const auto [ptr, ec] = std::from_chars(first, last, v[k]);
-            if (ec != std::errc() || ptr != last || !std::isfinite(v[k]))
-                return fail(std::string(kNames[k]) + ": '" + printable(f[k]) + "' is not a finite number");
+            if (!parse_field(f[k], v[k]))
+                return fail(std::string(kNames[k]) + ": '" + printable(f[k], kQuotedCharacters) +
+                            "' is not a finite number");
             if (std::abs(v[k]) > 1e6)
-                return fail(std::string(kNames[k]) + ": " + printable(f[k]) + " is out of range (|" + kNames[k] +
-                            "| <= " + (k < 3 ? "1e6 m" : "1e6 degrees") + ")");
+                return fail(std::string(kNames[k]) + ": " + printable(f[k], kQuotedCharacters) + " is out of range (|" +
+                            kNames[k] + "| <= " + (k < 3 ? "1e6 m" : "1e6 degrees") + ")");
         }
         poses.push_back(math::HeadPose{{v[0], v[1], v[2]}, v[3], v[4], v[5]});
     }
@@ -57,6 +85,7 @@ PathFile read_path_stream(std::istream& in, const std::string& name) {
         ++number;
         return fail("read error");
     }
+    if (poses.empty()) return Error{name + ": the path file holds no poses"};
     return poses;
 }
 
@@ -66,9 +95,7 @@ PathFile read_path_file(const std::string& path) {
     const Result<std::vector<unsigned char>> bytes = read_file_bytes(path, kMaxPathFileBytes, false);
     if (!bytes) return Error{path + ": " + bytes.error()};
     std::istringstream in(std::string(bytes->begin(), bytes->end()));
-    PathFile file = read_path_stream(in, path);
-    if (file && file->empty()) return Error{path + ": the path file holds no poses"};
-    return file;
+    return read_path_stream(in, path);
 }
 
 }  // namespace impossible::layout

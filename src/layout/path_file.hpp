@@ -1,6 +1,6 @@
 // The path file of `walk`, `preview --path` and `bench --path`: physical head
 // poses, one a line: `X Y Z YAW PITCH ROLL`, blank lines and
-// `#` comments skipped, six finite numbers a line, positions within ±1e6 m and
+// `#` comments skipped, a number may start with one sign (`+-1` is refused), six finite numbers a line, positions within ±1e6 m and
 // angles within ±1e6°.
 #pragma once
 
@@ -20,10 +20,12 @@ using PathFile = Result<std::vector<math::HeadPose>>;
 // Path files are at most this long (like layouts: 4 MiB, about 100,000 poses).
 inline constexpr std::size_t kMaxPathFileBytes = 4u << 20;
 
-// Reads a file for a replay: at least one pose is required. Errors are one
-// line: "FILE: does not exist", "FILE: is too large (...)", "FILE:LINE: ...".
+// Reads a file for a replay. Errors are one line: "FILE: does not exist",
+// "FILE: is too large (...)", "FILE:LINE: ...". A file with no poses is an
+// error for every command ("FILE: the path file holds no poses"); a UTF-8 byte
+// order mark is skipped, UTF-16 and UTF-32 are refused by name.
 PathFile read_path_file(const std::string& path);
-// Reads a stream; no poses is not an error here (`walk` then prints nothing).
+// The same for a stream already open (`walk`), with `name` in the messages.
 PathFile read_path_stream(std::istream& in, const std::string& name);
 
 }  // namespace impossible::layout

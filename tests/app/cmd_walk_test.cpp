@@ -142,10 +142,12 @@ TEST(RunWalk, MalformedLinesGiveOneErrorAndNoOutput) {
     EXPECT_EQ(replay(doorway(), "+0 1.6e0 1 -0 0 0\n").status, 0);
 }
 
-TEST(RunWalk, EmptyPathPrintsNothing) {
+// Like plan, bench and preview (issue 26): a path without poses is refused.
+TEST(RunWalk, APathWithoutPosesIsRefused) {
     const Replay r = replay(doorway(), "# nothing\n\n");
-    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.status, 1);
     EXPECT_EQ(r.out, "");
+    EXPECT_EQ(r.err, "walk.txt: the path file holds no poses\n");
 }
 
 TEST(RunWalk, ReadsAFileAndReportsMissingOnes) {

@@ -19,9 +19,7 @@ TEST(PathFile, ReadsPosesAndReportsTheBadLine) {
     std::istringstream bad("1 2 3 0 0 0\n1 2 x 0 0 0\n");
     EXPECT_EQ(read_path_stream(bad, "p.txt").error(), "p.txt:2: Z: 'x' is not a finite number");
     std::istringstream empty("# nothing\n");
-    const PathFile none = read_path_stream(empty, "p.txt");
-    ASSERT_TRUE(none);  // a stream may hold no pose (walk prints nothing)
-    EXPECT_TRUE(none->empty());
+    EXPECT_EQ(read_path_stream(empty, "p.txt").error(), "p.txt: the path file holds no poses");
     EXPECT_FALSE(read_path_file("/nonexistent/p.txt"));
 }
 
@@ -32,10 +30,39 @@ TEST(PathFile, AFileMustHoldAPoseAndNotBeAFolder) { EXPECT_EQ(read_path_file("/t
 TEST(PathFile, ABadFieldIsQuotedPrintably) {
     std::istringstream escape("0 1.6 \x1b[2J 0 0 0\n");
     EXPECT_EQ(read_path_stream(escape, "p.txt").error(), "p.txt:1: Z: '\\x1b[2J' is not a finite number");
-    std::istringstream binary(std::string("0 1.6 1\0\xff 0 0 0\n", 16));
-    EXPECT_EQ(read_path_stream(binary, "p.txt").error(), "p.txt:1: Z: '1\\x00\\xff' is not a finite number");
+    std::istringstream binary(std::string("0 1.6 1\xff\x01 0 0 0\n", 16));
+    EXPECT_EQ(read_path_stream(binary, "p.txt").error(), "p.txt:1: Z: '1\\xff\\x01' is not a finite number");
     std::istringstream huge("0 1.6 1e9\x7f 0 0 0\n");
     EXPECT_EQ(read_path_stream(huge, "p.txt").error(), "p.txt:1: Z: '1e9\\x7f' is not a finite number");
+}
+
+// Issue 26: one sign only, a UTF-8 byte order mark skipped, UTF-16 and NUL
+// bytes named.
+TEST(PathFile, SignsByteOrderMarksAndWideText) {
+    for (const char* text : {"+-0.3 1.6 1 0 0 0\n", "0 1.6 1 0 0 ++1\n", "0 1.6 1 0 0 +\n"}) {
+        std::istringstream in(text);
+        EXPECT_NE(read_path_stream(in, "p.txt").error().find("is not a finite number"), std::string::npos) << text;
+    }
+    std::istringstream bom(
+        "\xEF\xBB\xBF"
+        "1 1.6 2 0 0 0\n");
+    const PathFile skipped = read_path_stream(bom, "p.txt");
+    ASSERT_TRUE(skipped) << skipped.error();
+    EXPECT_EQ((*skipped)[0].position.x, 1.0);
+    std::istringstream utf16le(
+        std::string("\xFF\xFE"
+                    "0\0 \0"
+                    "1\0\n\0",
+                    10));
+    EXPECT_EQ(read_path_stream(utf16le, "p.txt").error(), "p.txt: is UTF-16 text; save it as UTF-8 or ASCII");
+    std::istringstream utf16be(
+        std::string("\xFE\xFF\0"
+                    "0\0 \n",
+                    7));
+    EXPECT_EQ(read_path_stream(utf16be, "p.txt").error(), "p.txt: is UTF-16 text; save it as UTF-8 or ASCII");
+    std::istringstream nul(std::string("0 1.6 1 0 0 0\n0\0 1.6 1 0 0 0\n", 29));
+    EXPECT_EQ(read_path_stream(nul, "p.txt").error(),
+              "p.txt:2: holds a NUL byte; a path file is text (ASCII or UTF-8, not UTF-16)");
 }
 
 }  // namespace
