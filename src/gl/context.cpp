@@ -37,6 +37,14 @@ Result<Context> create_context(Backend backend) {
     return context;
 }
 
+Result<void> load_functions(void* (*get_proc_address)(const char* name)) {
+    if (get_proc_address == nullptr) return Error{"no GL function loader was given"};
+    const int version = gladLoadGL(reinterpret_cast<GLADloadfunc>(get_proc_address));
+    if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < 45)
+        return Error{"the current context does not offer OpenGL 4.5 core (or none is current)"};
+    return {};
+}
+
 Result<Context> create_context_with_fallback(std::optional<Backend> requested, std::string* fallback_note) {
     if (requested) return create_context(*requested);
     Result<Context> egl = create_context(Backend::Egl);

@@ -41,6 +41,11 @@ struct Context {
 // The error says why it failed, for humans.
 Result<Context> create_context(Backend backend);
 
+// Loads the GL 4.5 core functions of a context someone else made current
+// (a program embedding the library), through that context's loader, e.g.
+// eglGetProcAddress or glfwGetProcAddress.
+Result<void> load_functions(void* (*get_proc_address)(const char* name));
+
 // The CLI's default: EGL, falling back to OSMesa when EGL fails.
 // `fallback_note` receives the EGL failure when the fallback was taken.
 Result<Context> create_context_with_fallback(std::optional<Backend> requested, std::string* fallback_note = nullptr);

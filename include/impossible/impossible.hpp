@@ -1,0 +1,226 @@
+// The public C++ API of impossible: load and check a layout, render it with
+// the OpenGL rasteriser (headless, or in a context the caller owns), trace it
+// with the reference ray tracer, walk physical head poses through its doors,
+// and the designer's tools. docs/api.md has a complete example.
+//
+// Nothing here throws: every call that can fail returns an Expected<T>, whose
+// error is a message for humans ("FILE:LINE:COLUMN: message" lines for a bad
+// layout). Objects are cheap to move; a Renderer belongs to one thread and the
+// GL context it was made for.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "impossible/version.hpp"
+
+namespace impossible::api {
+
+// What went wrong, for humans: one line, or one line per problem of a layout.
+struct Error {
+    std::string message;
+};
+
+// A value or an Error (std::expected is C++23).
+template <class T>
+class Expected {
+public:
+    Expected(T value) : v_(std::move(value)) {}      // NOLINT: implicit by design
+    Expected(Error error) : v_(std::move(error)) {}  // NOLINT
+    bool has_value() const { return v_.index() == 0; }
+    explicit operator bool() const { return has_value(); }
+    T& value() & { return std::get<0>(v_); }
+    const T& value() const& { return std::get<0>(v_); }
+    T&& value() && { return std::get<0>(std::move(v_)); }
+    T& operator*() & { return value(); }
+    const T& operator*() const& { return value(); }
+    T* operator->() { return &value(); }
+    const T* operator->() const { return &value(); }
+    const Error& error() const { return std::get<1>(v_); }
+
+private:
+    std::variant<T, Error> v_;
+};
+
+template <>
+class Expected<void> {
+public:
+    Expected() = default;
+    Expected(Error error) : error_(std::move(error)) {}  // NOLINT
+    bool has_value() const { return !error_; }
+    explicit operator bool() const { return has_value(); }
+    const Error& error() const { return *error_; }
+
+private:
+    std::optional<Error> error_;
+};
+
+// A head pose as `--pose` takes it: the centre between the eyes in metres,
+// yaw, pitch and roll in degrees (layout-format.md, "Head pose and eyes").
+struct Pose {
+    double x = 0, y = 0, z = 0;
+    double yaw = 0, pitch = 0, roll = 0;
+};
+
+struct LayoutData;
+
+// A loaded, valid layout (immutable; copies share it).
+class Layout {
+public:
+    // Reads and checks a layout file (JSON, its textures and glTF models).
+    static Expected<Layout> load(const std::string& path);
+    // Layout text; `name` names it in messages and `base_dir` resolves the
+    // relative paths of its textures and models.
+    static Expected<Layout> parse(const std::string& text, const std::string& name, const std::string& base_dir);
+    // The built-in default layout (what `impossible render` draws).
+    static Layout builtin();
+
+    const std::string& source() const;  // the file, or "<default>"
+    const std::string& name() const;
+    std::vector<std::string> room_ids() const;
+    std::vector<std::string> portal_ids() const;
+    std::string start_room() const;
+    Pose start() const;  // the start: head centre and yaw
+    // Warnings the loader found (legal but suspicious), one a line.
+    const std::vector<std::string>& warnings() const;
+
+    // The designer's report, as `impossible validate` prints it, and as JSON
+    // (`validate --json`).
+    std::string report_text() const;
+    std::string report_json() const;
+
+    const LayoutData& data() const { return *data_; }  // for the library itself
+
+private:
+    explicit Layout(std::shared_ptr<const LayoutData> data) : data_(std::move(data)) {}
+    std::shared_ptr<const LayoutData> data_;
+};
+
+// One stereo view: where the head is and how it is drawn. The defaults are
+// those of `impossible render`.
+struct View {
+    std::optional<Pose> pose;  // none: the layout's start
+    std::string room;          // empty: with a pose, the one room holding the head; else start.room
+    int width = 1280;          // each eye; the image is 2 × width
+    int height = 720;
+    double ipd = 0.064;
+    double fov_deg = 90;  // vertical, each eye
+    int max_depth = 8;
+    int samples = 1;                 // 1, 2, 4, 8 or 16
+    int max_portal_passes = 10'000;  // the rasteriser's budget (docs/bounded-work.md)
+    double time = 0;                 // seconds; for moving props (none yet: no effect)
+};
+
+// Counters of a rasterised frame (render --stats).
+struct FrameStats {
+    long draw_calls = 0;
+    long triangles = 0;
+    int portal_passes_drawn = 0;
+    int portal_passes_culled = 0;
+    int portal_fills = 0;
+    int budget_fills = 0;
+    int max_level = 0;
+};
+
+// A side-by-side stereo frame, left eye left, top row first.
+struct Frame {
+    int width = 0;  // 2 × the eye width
+    int height = 0;
+    std::vector<std::uint8_t> rgb;  // width × height × 3
+    std::vector<std::uint8_t> ids;  // width × height cell ids (layout-format.md, "Cell-id maps")
+    FrameStats stats;               // zero for a traced frame
+};
+
+enum class Backend { Egl, OSMesa, Any };  // Any: EGL, falling back to OSMesa
+
+// The OpenGL function loader of a context the caller made current, e.g.
+// eglGetProcAddress or glfwGetProcAddress.
+using GetProcAddress = void* (*)(const char* name);
+
+struct RendererParts;
+
+// The OpenGL 4.5 rasteriser for one layout.
+class Renderer {
+public:
+    // Creates its own headless context (EGL surfaceless or OSMesa).
+    static Expected<Renderer> headless(const Layout& layout, Backend backend = Backend::Any);
+    // Draws in the caller's context, current on this thread now and at every
+    // call; the caller's GL state is saved nowhere: the renderer sets what it
+    // needs, and leaves its own bindings at 0 after each frame.
+    static Expected<Renderer> in_current_context(const Layout& layout, GetProcAddress load);
+
+    Renderer(Renderer&&) noexcept;
+    Renderer& operator=(Renderer&&) noexcept;
+    ~Renderer();
+
+    // Draws and reads back.
+    Expected<Frame> render(const View& view);
+    // Draws, then copies the colour into the caller's framebuffer object
+    // `framebuffer` (0: the default one) at (0, 0), 2 × width by height.
+    Expected<FrameStats> draw_to(const View& view, unsigned framebuffer);
+
+    std::string gl_renderer() const;  // GL_RENDERER of the context
+
+private:
+    explicit Renderer(std::unique_ptr<RendererParts> parts);
+    std::unique_ptr<RendererParts> parts_;
+};
+
+// The same view by the double-precision reference ray tracer (`trace`);
+// `threads` 0 uses every core.
+Expected<Frame> trace(const Layout& layout, const View& view, int threads = 0);
+
+// One walked frame, as a line of `impossible walk`.
+struct WalkStep {
+    std::string room;                    // the room the head is in after the frame
+    std::vector<std::string> teleports;  // the portals passed during it, in order
+    double position[3] = {0, 0, 0};      // the virtual head centre
+    double forward[3] = {0, 0, 0};       // the virtual view direction
+    Pose virtual_pose;                   // the virtual head as a pose (to render the frame)
+};
+
+struct WalkerData;
+
+// Physical head poses to the virtual head, teleporting at doors exactly as
+// `impossible walk` does (layout-format.md, "Walking").
+class Walker {
+public:
+    explicit Walker(const Layout& layout);
+    Walker(Walker&&) noexcept;
+    Walker& operator=(Walker&&) noexcept;
+    ~Walker();
+    WalkStep step(const Pose& physical);
+
+private:
+    std::unique_ptr<WalkerData> data_;
+};
+
+// A path file's poses (the `walk` format).
+Expected<std::vector<Pose>> read_path(const std::string& path);
+// Every frame of a walk, as `impossible walk` prints them.
+std::vector<WalkStep> walk(const Layout& layout, const std::vector<Pose>& physical);
+
+// The designer's tools, as their commands.
+struct GenerateRequest {
+    double width = 4, depth = 4;                       // a W × D floor centred on the origin...
+    std::vector<std::pair<double, double>> play_area;  // ...or this polygon (x, z), if given
+    int rooms = 4;
+    std::uint64_t seed = 1;
+    std::optional<double> max_overlap;  // percent; default Suma et al.'s thresholds
+};
+Expected<std::string> generate(const GenerateRequest& request);  // layout JSON text
+// A top-down SVG of the floor (`plan`), with an optional walk drawn on it.
+Expected<std::string> plan_svg(const Layout& layout, const std::vector<Pose>& path = {});
+// A walk that visits every reachable room (`tour`), as physical poses.
+struct TourRequest {
+    double step = 0.05;
+    double head_height = 1.6;
+};
+Expected<std::vector<Pose>> tour(const Layout& layout, const TourRequest& request = {});
+
+}  // namespace impossible::api

@@ -1,0 +1,56 @@
+// What the public API's handles hold (include/impossible/impossible.hpp), and
+// the conversions between its plain types and the library's own.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "base/result.hpp"
+#include "impossible/impossible.hpp"
+#include "layout/layout.hpp"
+#include "math/pose.hpp"
+#include "math/view.hpp"
+
+namespace impossible::api {
+
+struct LayoutData {
+    layout::Layout layout;
+    std::vector<layout::Diagnostic> warnings;  // the loader's
+    std::vector<std::string> warning_lines;    // the same as "FILE:LINE:COLUMN: message"
+};
+
+inline math::HeadPose to_head_pose(const Pose& p) { return {{p.x, p.y, p.z}, p.yaw, p.pitch, p.roll}; }
+inline Pose to_pose(const math::HeadPose& h) {
+    return {h.position.x, h.position.y, h.position.z, h.yaw_deg, h.pitch_deg, h.roll_deg};
+}
+
+// The view as the renderer and tracer take it: the head and its room
+// resolved as `render` does (a pose in no room or in several needs a room),
+// sizes and numbers checked as the CLI checks them.
+Result<math::View> resolve_view(const layout::Layout& layout, const View& view);
+
+// The room holding the head, as resolve_view finds it; -1 with `why` set
+// when none or several do.
+int room_of_head(const layout::Layout& layout, const math::dvec3& head, std::string& why);
+
+// Runs `body`, turning any exception (memory, a library's) into an Error:
+// nothing throws across the API.
+template <class F>
+auto no_throw(F&& body) -> decltype(body()) {
+    try {
+        return body();
+    } catch (const std::exception& e) {
+        return Error{std::string("internal error: ") + e.what()};
+    } catch (...) {
+        return Error{"internal error"};
+    }
+}
+
+// The library's Result as the API's Expected.
+template <class T>
+Expected<T> expected(Result<T>&& r) {
+    if (!r) return Error{r.error()};
+    return std::move(*r);
+}
+
+}  // namespace impossible::api

@@ -1,0 +1,121 @@
+// impossible::api::Renderer: the OpenGL rasteriser behind the public API, in
+// a headless context of its own or in the caller's.
+#include <optional>
+
+#include "api/api_data.hpp"
+#include "gl/context.hpp"
+#include "gl/gl.hpp"
+#include "gl/state.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene.hpp"
+
+namespace impossible::api {
+
+struct RendererParts {
+    explicit RendererParts(const Layout& l) : layout(l) {}
+    Layout layout;                                 // for resolving each view's room
+    std::optional<gl::Context> context;            // headless: the renderer's own
+    std::unique_ptr<gl::StateCache> caller_state;  // in the caller's context
+    std::optional<render::Renderer> renderer;
+    bool callers_context = false;
+
+    gl::StateCache& state() { return context ? context->state() : *caller_state; }
+};
+
+namespace {
+
+FrameStats stats_of(const render::FrameStats& s) {
+    return {s.draw_calls,   s.triangles,    s.portal_passes_drawn, s.portal_passes_culled,
+            s.portal_fills, s.budget_fills, s.max_level_reached};
+}
+
+Result<render::FrameDesc> frame_of(const layout::Layout& layout, const View& view) {
+    Result<math::View> resolved = resolve_view(layout, view);
+    if (!resolved) return resolved;
+    render::FrameDesc frame;
+    static_cast<math::View&>(frame) = *resolved;
+    frame.samples = view.samples;
+    frame.max_portal_passes = view.max_portal_passes;
+    return frame;
+}
+
+Expected<void> build(RendererParts& parts, const Layout& layout) {
+    Result<render::Renderer> made = render::Renderer::create(parts.state(), scene::build_scene(layout.data().layout));
+    if (!made) return Error{made.error()};
+    parts.renderer.emplace(std::move(*made));
+    return {};
+}
+
+}  // namespace
+
+Renderer::Renderer(std::unique_ptr<RendererParts> parts) : parts_(std::move(parts)) {}
+Renderer::Renderer(Renderer&&) noexcept = default;
+Renderer& Renderer::operator=(Renderer&&) noexcept = default;
+Renderer::~Renderer() = default;
+
+Expected<Renderer> Renderer::headless(const Layout& layout, Backend backend) {
+    return no_throw([&]() -> Expected<Renderer> {
+        auto parts = std::make_unique<RendererParts>(layout);
+        const std::optional<gl::Backend> requested =
+            backend == Backend::Any ? std::nullopt
+                                    : std::optional(backend == Backend::Egl ? gl::Backend::Egl : gl::Backend::OSMesa);
+        Result<gl::Context> context = gl::create_context_with_fallback(requested);
+        if (!context) return Error{"no OpenGL 4.5 context: " + context.error()};
+        parts->context.emplace(std::move(*context));
+        if (Expected<void> built = build(*parts, layout); !built) return built.error();
+        return Renderer(std::move(parts));
+    });
+}
+
+Expected<Renderer> Renderer::in_current_context(const Layout& layout, GetProcAddress load) {
+    return no_throw([&]() -> Expected<Renderer> {
+        if (Result<void> loaded = gl::load_functions(load); !loaded) return Error{loaded.error()};
+        auto parts = std::make_unique<RendererParts>(layout);
+        parts->caller_state = std::make_unique<gl::StateCache>();
+        parts->callers_context = true;
+        if (Expected<void> built = build(*parts, layout); !built) return built.error();
+        return Renderer(std::move(parts));
+    });
+}
+
+Expected<Frame> Renderer::render(const View& view) {
+    return no_throw([&]() -> Expected<Frame> {
+        Result<render::FrameDesc> frame = frame_of(parts_->layout.data().layout, view);
+        if (!frame) return Error{frame.error()};
+        // The caller may have changed any state since the last frame.
+        if (parts_->callers_context) parts_->state().invalidate();
+        Result<render::RenderedFrame> drawn = parts_->renderer->render(*frame);
+        if (!drawn) return Error{drawn.error()};
+        Frame out;
+        out.width = drawn->image.width;
+        out.height = drawn->image.height;
+        out.rgb = std::move(drawn->image.rgb);
+        out.ids = std::move(drawn->image.ids);
+        out.stats = stats_of(drawn->stats);
+        return out;
+    });
+}
+
+Expected<FrameStats> Renderer::draw_to(const View& view, unsigned framebuffer) {
+    return no_throw([&]() -> Expected<FrameStats> {
+        Result<render::FrameDesc> frame = frame_of(parts_->layout.data().layout, view);
+        if (!frame) return Error{frame.error()};
+        if (parts_->callers_context) parts_->state().invalidate();
+        render::FrameStats stats;
+        if (Result<void> drawn = parts_->renderer->draw(*frame, &stats); !drawn) return Error{drawn.error()};
+        const render::Target& target = parts_->renderer->target();
+        const GLuint from = target.framebuffer.get();
+        parts_->state().no_scissor();  // the scissor test applies to blits too
+        glNamedFramebufferReadBuffer(from, GL_COLOR_ATTACHMENT0);
+        glBlitNamedFramebuffer(from, framebuffer, 0, 0, target.width, target.height, 0, 0, target.width, target.height,
+                               GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        return stats_of(stats);
+    });
+}
+
+std::string Renderer::gl_renderer() const {
+    const GLubyte* name = glGetString(GL_RENDERER);
+    return name != nullptr ? reinterpret_cast<const char*>(name) : "";
+}
+
+}  // namespace impossible::api

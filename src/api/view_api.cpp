@@ -1,0 +1,78 @@
+// A public View checked and resolved into the library's math::View, with the
+// CLI's ranges and the CLI's rule for the head's room.
+#include <cmath>
+
+#include "api/api_data.hpp"
+#include "base/format.hpp"
+
+namespace impossible::api {
+
+namespace {
+
+bool finite_pose(const Pose& p) {
+    for (double v : {p.x, p.y, p.z, p.yaw, p.pitch, p.roll})
+        if (!std::isfinite(v)) return false;
+    return true;
+}
+
+// The ranges of the view options (docs/cli.md).
+std::string range_problem(const View& v) {
+    if (v.width < 1 || v.width > 8192 || v.height < 1 || v.height > 8192)
+        return "size " + std::to_string(v.width) + "x" + std::to_string(v.height) + " is not within 1..8192 pixels";
+    if (!(v.ipd >= 0 && v.ipd <= 10)) return "ipd " + format_number(v.ipd) + " is not in 0..10 m";
+    if (!(v.fov_deg >= 1 && v.fov_deg < 179)) return "fov " + format_number(v.fov_deg) + " is not in 1..179 degrees";
+    if (v.max_depth < 0 || v.max_depth > 250) return "max_depth " + std::to_string(v.max_depth) + " is not in 0..250";
+    if (v.samples != 1 && v.samples != 2 && v.samples != 4 && v.samples != 8 && v.samples != 16)
+        return "samples " + std::to_string(v.samples) + " is not 1, 2, 4, 8 or 16";
+    if (v.max_portal_passes < 0 || v.max_portal_passes > 10'000'000)
+        return "max_portal_passes " + std::to_string(v.max_portal_passes) + " is not in 0..10000000";
+    if (!std::isfinite(v.time)) return "time is not a finite number";
+    if (v.pose && !finite_pose(*v.pose)) return "the pose holds a number that is not finite";
+    return {};
+}
+
+}  // namespace
+
+int room_of_head(const layout::Layout& layout, const math::dvec3& p, std::string& why) {
+    std::vector<int> holding;
+    for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
+        const layout::Room& r = layout.rooms[i];
+        if (p.x >= r.min.x && p.x <= r.max.x && p.y >= r.min.y && p.y <= r.max.y && p.z >= r.min.z && p.z <= r.max.z)
+            holding.push_back(static_cast<int>(i));
+    }
+    if (holding.size() == 1) return holding[0];
+    std::string names;
+    for (int i : holding) names += (names.empty() ? "" : ", ") + layout.rooms[i].id;
+    why = holding.empty() ? "the head is in no room; give the room"
+                          : "the head is in several rooms (" + names + "); give the room";
+    return -1;
+}
+
+Result<math::View> resolve_view(const layout::Layout& layout, const View& view) {
+    if (const std::string problem = range_problem(view); !problem.empty()) return impossible::Error{problem};
+    math::View v;
+    v.ipd = view.ipd;
+    v.fov_y_deg = view.fov_deg;
+    v.eye_width = view.width;
+    v.eye_height = view.height;
+    v.max_depth = view.max_depth;
+    if (view.pose) {
+        v.head = to_head_pose(*view.pose);
+    } else {
+        v.head.position = layout.start.position;
+        v.head.yaw_deg = layout.start.yaw_deg;
+    }
+    if (!view.room.empty()) {
+        v.room = layout::find_room(layout, view.room);
+        if (v.room < 0) return impossible::Error{"there is no room '" + view.room + "' in " + layout.source};
+    } else if (!view.pose) {
+        v.room = layout.start.room;
+    } else {
+        std::string why;
+        v.room = room_of_head(layout, v.head.position, why);
+        if (v.room < 0) return impossible::Error{why};
+    }
+    return v;
+}
+
+}  // namespace impossible::api
