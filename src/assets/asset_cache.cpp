@@ -34,6 +34,11 @@ const Result<GltfModel>& AssetCache::load(const std::string& resolved) {
     } else if (model) {
         total_texels_ += model->texels;
     }
+    if (model) {
+        files_.push_back({"the glTF model", resolved});
+        for (std::size_t i = 1; i < model->files.size(); ++i)
+            files_.push_back({"a file of the glTF model " + resolved + ":", model->files[i]});
+    }
     return entries_.emplace(resolved, std::move(model)).first->second;
 }
 
@@ -43,6 +48,7 @@ const Result<std::shared_ptr<const image::Pixels>>& AssetCache::load_image(const
     const auto decode = [&]() -> Result<std::shared_ptr<const image::Pixels>> {
         const Result<std::vector<unsigned char>> bytes = read_file_bytes(resolved, limits::kMaxImageFileBytes, true);
         if (!bytes) return bytes;
+        files_.push_back({"the texture", resolved});
         if (bytes->empty()) return Error{"is empty (expected a PNG or JPEG image)"};
         const Result<image::ImageSize> size = image::image_size(bytes->data(), bytes->size(), limits::kMaxImageSide);
         if (!size) return size;

@@ -7,7 +7,9 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "assets/file_read.hpp"
 #include "assets/gltf_model.hpp"
 #include "base/result.hpp"
 #include "image/pixels.hpp"
@@ -36,12 +38,17 @@ public:
     // Counts one more instance of `triangles` toward the layout's cap.
     Result<void> add_instance(std::size_t triangles);
 
+    // Every file read so far, in order: images, models and the buffers and
+    // images of each model.
+    const std::vector<FileRead>& files_read() const { return files_; }
+
 private:
     std::string base_dir_;
     std::map<std::string, Result<GltfModel>> entries_;
     std::map<std::string, Result<std::shared_ptr<const image::Pixels>>> images_;
     std::size_t total_triangles_ = 0;
     std::size_t total_texels_ = 0;  // decoded, models and room textures, each once
+    std::vector<FileRead> files_;
 };
 
 }  // namespace impossible::assets

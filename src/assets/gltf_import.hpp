@@ -33,10 +33,12 @@ inline std::string beyond_coordinate_limit() {
 // `json_text`) into `model` with tinygltf: no shell expansion of paths, no
 // writing, file reads bounded like ours and only in `folder` (canonical, ""
 // for the root) and below, and no image decoding (the bytes go to `kept`).
-// Errors: the image callback's refusal, or "is not a valid glTF 2.0 file:
-// " and tinygltf's first message.
+// The path of every file it reads (buffers, images) is appended to
+// `files_read`. Errors: the image callback's refusal, or "is not a valid
+// glTF 2.0 file: " and tinygltf's first message.
 Result<void> parse_sandboxed(const std::vector<unsigned char>& bytes, std::string_view json_text, bool binary,
-                             const std::string& folder, KeptImages& kept, tinygltf::Model& model);
+                             const std::string& folder, KeptImages& kept, tinygltf::Model& model,
+                             std::vector<std::string>& files_read);
 
 // --- gltf_nodes.cpp
 

@@ -107,7 +107,8 @@ Result<GltfModel> load_model(const std::string& path, std::size_t max_triangles)
     if (Result<void> read = read_model_file(path, file); !read) return read;
     KeptImages kept;
     tinygltf::Model model;
-    if (Result<void> parsed = parse_sandboxed(file.bytes, file.json_text, file.binary, file.folder, kept, model);
+    std::vector<std::string> files{path};
+    if (Result<void> parsed = parse_sandboxed(file.bytes, file.json_text, file.binary, file.folder, kept, model, files);
         !parsed) {
         return parsed;
     }
@@ -119,6 +120,7 @@ Result<GltfModel> load_model(const std::string& path, std::size_t max_triangles)
     const Result<PrimitiveWork> work = read_primitives(model, *instances, max_triangles, triangles);
     if (!work) return work;
     GltfModel out;
+    out.files = std::move(files);
     out.triangles.reserve(triangles);
     for (const auto& [data, instance] : *work) {
         if (Result<void> emitted = emit_triangles(data, instance, out.triangles); !emitted) return emitted;

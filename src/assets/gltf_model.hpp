@@ -33,6 +33,9 @@ struct GltfModel {
     std::vector<Material> materials;
     std::vector<Texture> textures;
     std::size_t texels = 0;  // decoded, all images together (each once)
+    // Every file read: the model's own path first, then its buffers and
+    // images as tinygltf opened them (in the model's folder).
+    std::vector<std::string> files;
 };
 Result<GltfModel> load_gltf_model(const std::string& path, std::size_t max_triangles);
 

@@ -20,9 +20,14 @@ namespace {
 //
 // A model reads files only in its own folder and below (its buffers): a URI
 // such as "../../../../etc/passwd" must not open, or even reveal whether or
-// how large, a file elsewhere. `user_data` is the model's folder, canonical.
+// how large, a file elsewhere. `user_data` is a SandboxFiles: the model's
+// folder, canonical, and the list of the files read (its buffers and images).
+struct SandboxFiles {
+    const std::string* folder;
+    std::vector<std::string>* read;
+};
 bool inside_model_folder(const std::string& path, void* user_data) {
-    return assets::inside_folder(path, *static_cast<const std::string*>(user_data));
+    return assets::inside_folder(path, *static_cast<const SandboxFiles*>(user_data)->folder);
 }
 bool fs_file_exists(const std::string& path, void* user_data) {
     if (!inside_model_folder(path, user_data)) return true;  // refused when read, whether it exists or not
@@ -38,6 +43,7 @@ bool fs_read_whole_file(std::vector<unsigned char>* out, std::string* err, const
     Result<std::vector<unsigned char>> bytes = read_file_bytes(path, limits::kMaxModelBytes, true);
     if (bytes) {
         *out = std::move(*bytes);
+        static_cast<SandboxFiles*>(user_data)->read->push_back(path);
         return true;
     }
     if (err != nullptr) *err += "file " + quote(path) + " " + bytes.error() + "\n";
@@ -66,12 +72,12 @@ std::string first_line(const std::string& text) {
 }  // namespace
 
 Result<void> parse_sandboxed(const std::vector<unsigned char>& bytes, std::string_view json_text, bool binary,
-                             const std::string& folder, KeptImages& kept, tinygltf::Model& model) {
+                             const std::string& folder, KeptImages& kept, tinygltf::Model& model,
+                             std::vector<std::string>& files_read) {
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&keep_image_bytes, &kept);
-    // The callbacks only read the folder (user_data is not const in tinygltf).
-    loader.SetFsCallbacks({&fs_file_exists, &fs_expand_path, &fs_read_whole_file, &fs_write_whole_file,
-                           const_cast<std::string*>(&folder)});
+    SandboxFiles files{&folder, &files_read};
+    loader.SetFsCallbacks({&fs_file_exists, &fs_expand_path, &fs_read_whole_file, &fs_write_whole_file, &files});
     std::string err, warn;
     const std::string base_dir = folder.empty() ? "/" : folder;
     const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),

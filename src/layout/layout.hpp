@@ -18,6 +18,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "assets/file_read.hpp"
 #include "assets/model.hpp"
 #include "image/pixels.hpp"
 #include "math/portal.hpp"
@@ -114,6 +115,9 @@ struct Layout {
     Start start;
     std::vector<Room> rooms;
     std::vector<Portal> portals;
+    // Every file the loader read besides the layout itself, in order: room
+    // textures, glTF models and their buffers and images.
+    std::vector<assets::FileRead> files_read;
 };
 
 // One problem found in a layout. line/column are 1-based; 0 where unknown.

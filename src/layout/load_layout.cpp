@@ -217,6 +217,7 @@ void read_layout(Checker& check, const json& root, const std::string& base_dir, 
     layout.start = start.start;
     for (detail::RoomDraft& room : rooms) layout.rooms.push_back(std::move(room.room));
     for (detail::PortalDraft& portal : portals) layout.portals.push_back(std::move(portal.portal));
+    layout.files_read = models.files_read();
 }
 
 bool blank(std::string_view text) {
