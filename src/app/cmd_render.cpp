@@ -16,8 +16,9 @@ const char* kRenderHelp =
     "Renders one side-by-side stereo frame with the OpenGL rasteriser (the built-in default\n"
     "layout without LAYOUT) and writes it as PNG. --out and --ids are written together or not at\n"
     "all (a link is written through, a device such as /dev/stdout directly); naming one file twice,\n"
-    "or the layout, is a usage error. Portals that cover no pixel are not drawn; past\n"
-    "--max-portal-passes the rest show the fill colour, with a warning.\n\n";
+    "or a file the command reads (the layout, its textures, its models and their files), is a usage\n"
+    "error. Portals that cover no pixel are not drawn; past --max-portal-passes the rest show the\n"
+    "fill colour, with a warning.\n\n";
 
 }  // namespace
 
@@ -29,7 +30,7 @@ int run_render_command(const Args& args, std::ostream& out, std::ostream& err) {
     }
     const ViewOptions options = parse_view_options(parsed);
     CommandOutputs outputs = frame_outputs(options);
-    const layout::Layout layout = load_layout_or_default(options.layout_path);
+    const layout::Layout layout = load_layout_or_default(options.layout_path, outputs);
     const render::FrameDesc frame = frame_for(layout, options);
 
     std::string fallback_note;

@@ -78,7 +78,7 @@ int run_tour_command(const Args& args, std::ostream& out, std::ostream& err) {
     CommandOutputs outputs;
     outputs.input("the layout", parsed.positional[0]);
     outputs.output("--out", o.out);
-    const layout::Layout layout = load_layout_or_default(parsed.positional[0]);
+    const layout::Layout layout = load_layout_or_default(parsed.positional[0], outputs);
     const design::Tour tour = value_or_throw(design::plan_tour(layout, o.tour));
     const std::size_t reachable = tour.visited.size() + tour.missed.size();
     const std::string report = summary(layout, tour, reachable);

@@ -46,7 +46,7 @@ int run_trace_command(const Args& args, std::ostream& out, std::ostream& err) {
     TraceOptions own;
     apply_options(kTraceOptions, parsed, own);
     const int threads = own.threads;
-    const layout::Layout layout = load_layout_or_default(options.layout_path);
+    const layout::Layout layout = load_layout_or_default(options.layout_path, outputs);
     const render::FrameDesc frame = frame_for(layout, options);
 
     const trace::TraceDesc desc = trace_desc_for(frame, threads);

@@ -47,7 +47,7 @@ int run_bench_command(const cli::Args& args, std::ostream& out, std::ostream& er
     if (options.path) outputs.input("--path", *options.path);
     if (options.json) outputs.output("--json", *options.json);
     if (options.csv) outputs.output("--csv", *options.csv);
-    const layout::Layout layout = load_layout_or_default(options.view.layout_path);
+    const layout::Layout layout = load_layout_or_default(options.view.layout_path, outputs);
     const std::vector<BenchPose> poses = bench_poses(layout, options);
     const BenchPlan plan = plan_bench(layout, options);
 

@@ -20,4 +20,14 @@ layout::Layout load_layout_or_default(const std::optional<std::string>& path) {
     return std::move(*loaded.layout);
 }
 
+void declare_files_read(CommandOutputs& outputs, const layout::Layout& layout) {
+    for (const assets::FileRead& file : layout.files_read) outputs.input(file.what, file.path);
+}
+
+layout::Layout load_layout_or_default(const std::optional<std::string>& path, CommandOutputs& outputs) {
+    layout::Layout layout = load_layout_or_default(path);
+    declare_files_read(outputs, layout);
+    return layout;
+}
+
 }  // namespace impossible::cli

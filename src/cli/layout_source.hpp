@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "cli/output_files.hpp"
 #include "layout/layout.hpp"
 
 namespace impossible::cli {
@@ -14,5 +15,15 @@ inline constexpr const char* kDefaultLayoutName = "layouts/default.json";
 // program when `path` is empty. Throws InputError with the first problem (and
 // how many more there are) on one line.
 layout::Layout load_layout_or_default(const std::optional<std::string>& path);
+
+// The same for a command that writes files (the layout itself declared as
+// an input of `outputs` before): then declares every file the loader read
+// (textures, glTF models and their buffers and images) as an input, which
+// throws UsageError, before any work, when an output names one of them.
+layout::Layout load_layout_or_default(const std::optional<std::string>& path, CommandOutputs& outputs);
+
+// Declares the files `layout` was read from, but the layout file itself, as
+// inputs of `outputs`.
+void declare_files_read(CommandOutputs& outputs, const layout::Layout& layout);
 
 }  // namespace impossible::cli

@@ -7,9 +7,13 @@ namespace impossible::cli {
 void CommandOutputs::add(Named named) {
     for (const Named& other : files_) {
         if (!named.is_output && !other.is_output) continue;  // reading a file twice is fine
-        if (named.id.shareable || !(named.id == other.id)) continue;
-        throw UsageError(named.label + " is the same file as " + other.label +
-                         (other.is_output ? "" : "; it would be overwritten"));
+        if (named.id.shareable || other.id.shareable || !(named.id == other.id)) continue;
+        // The output first, whichever was declared first: "--out x is the
+        // same file as the texture x; it would be overwritten".
+        const Named& written = named.is_output ? named : other;
+        const Named& second = named.is_output ? other : named;
+        throw UsageError(written.label + " is the same file as " + second.label +
+                         (second.is_output ? "" : "; it would be overwritten"));
     }
     files_.push_back(std::move(named));
 }

@@ -16,7 +16,8 @@ namespace impossible::cli {
 class CommandOutputs {
 public:
     // A file the command reads; `what` names it in messages ("the layout").
-    // Throws UsageError when it is one of the outputs.
+    // Throws UsageError when it is one of the outputs (declared before or
+    // after it; inputs known only once the layout is loaded come after).
     void input(const std::string& what, const std::string& path);
     // A file the command writes, named by its option ("--out"). Throws
     // UsageError when it names the same file as another output or an input

@@ -81,6 +81,31 @@ FrameFiles open_frame_files(const std::optional<std::string>& screenshots) {
     return files;
 }
 
+namespace {
+
+// NAME is STEM-NNNN followed by `suffix` (four digits or more).
+bool numbered_name(const std::string& name, const std::string& stem, const std::string& suffix) {
+    const std::size_t digits = name.size() - std::min(name.size(), stem.size() + 1 + suffix.size());
+    if (digits < 4 || name.compare(0, stem.size() + 1, stem + "-") != 0 ||
+        name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+        return false;
+    const std::string number = name.substr(stem.size() + 1, digits);
+    return number.find_first_not_of("0123456789") == std::string::npos;
+}
+
+}  // namespace
+
+void declare_frame_files(cli::CommandOutputs& files, const std::optional<std::string>& screenshots) {
+    if (!screenshots) return;
+    std::error_code ec;
+    for (fs::directory_iterator it(*screenshots, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (name == "frames.jsonl" || numbered_name(name, "frame", ".png") ||
+            numbered_name(name, "frame", "-ids.png") || numbered_name(name, "window", ".png"))
+            files.output("--screenshots", (fs::path(*screenshots) / name).string());
+    }
+}
+
 std::string numbered(const fs::path& dir, const char* stem, long n, const char* suffix) {
     char name[64];
     std::snprintf(name, sizeof name, "%s-%04ld%s", stem, n, suffix);

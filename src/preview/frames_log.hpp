@@ -11,6 +11,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "cli/output_files.hpp"
 #include "image/image.hpp"
 #include "math/pose.hpp"
 
@@ -48,6 +49,12 @@ struct FrameFiles {
 
 // Creates DIR and frames.jsonl for --screenshots; throws InputError if not.
 FrameFiles open_frame_files(const std::optional<std::string>& screenshots);
+
+// Declares as outputs of `files` ("--screenshots DIR/NAME") the files already
+// in DIR under a name that --screenshots writes over (frames.jsonl,
+// frame-NNNN.png, frame-NNNN-ids.png, window-NNNN.png; screenshot-NNNN.png
+// takes a free name): one that is an input of `files` is a usage error.
+void declare_frame_files(cli::CommandOutputs& files, const std::optional<std::string>& screenshots);
 
 // DIR/STEM-NNNN.png (or another suffix).
 std::string numbered(const std::filesystem::path& dir, const char* stem, long n, const char* suffix = ".png");

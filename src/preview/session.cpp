@@ -51,7 +51,12 @@ std::unique_ptr<PreviewWindow> open_preview_window(const PreviewOptions& o, cons
 void open_session(PreviewSession& s, PreviewOptions options) {
     s.options = std::move(options);
     const PreviewOptions& o = s.options;
-    layout::Layout first = cli::load_layout_or_default(o.layout_path);
+    // The files read, against those --screenshots would write over.
+    cli::CommandOutputs files;
+    if (o.layout_path) files.input("the layout", *o.layout_path);
+    if (o.path_file) files.input("--path", *o.path_file);
+    declare_frame_files(files, o.screenshots);
+    layout::Layout first = cli::load_layout_or_default(o.layout_path, files);
     if (o.path_file) s.path = value_or_throw(layout::read_path_file(*o.path_file));
     s.files = open_frame_files(o.screenshots);
 
