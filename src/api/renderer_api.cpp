@@ -13,13 +13,30 @@ namespace impossible::api {
 
 struct RendererParts {
     explicit RendererParts(const Layout& l) : layout(l) {}
+    // The renderer frees its GL objects in its own context, made current
+    // again (another renderer's may be).
+    ~RendererParts() {
+        if (context) (void)gl::make_current(*context);
+        renderer.reset();
+    }
+    RendererParts(const RendererParts&) = delete;
+    RendererParts& operator=(const RendererParts&) = delete;
     Layout layout;                                 // for resolving each view's room
     std::optional<gl::Context> context;            // headless: the renderer's own
     std::unique_ptr<gl::StateCache> caller_state;  // in the caller's context
     std::optional<render::Renderer> renderer;
-    bool callers_context = false;
+    GetProcAddress callers_loader = nullptr;  // in the caller's context: its loader
 
     gl::StateCache& state() { return context ? context->state() : *caller_state; }
+
+    // Before each frame: the renderer's own context current on this thread
+    // (another renderer's may be), or the caller's state forgotten (the
+    // caller may have changed any of it since the last frame).
+    Result<void> prepare() {
+        if (context) return gl::make_current(*context);
+        state().invalidate();
+        return gl::load_functions(callers_loader);
+    }
 };
 
 namespace {
@@ -72,7 +89,7 @@ Expected<Renderer> Renderer::in_current_context(const Layout& layout, GetProcAdd
         if (Result<void> loaded = gl::load_functions(load); !loaded) return Error{loaded.error()};
         auto parts = std::make_unique<RendererParts>(layout);
         parts->caller_state = std::make_unique<gl::StateCache>();
-        parts->callers_context = true;
+        parts->callers_loader = load;
         if (Expected<void> built = build(*parts, layout); !built) return built.error();
         return Renderer(std::move(parts));
     });
@@ -82,8 +99,7 @@ Expected<Frame> Renderer::render(const View& view) {
     return no_throw([&]() -> Expected<Frame> {
         Result<render::FrameDesc> frame = frame_of(parts_->layout.data().layout, view);
         if (!frame) return Error{frame.error()};
-        // The caller may have changed any state since the last frame.
-        if (parts_->callers_context) parts_->state().invalidate();
+        if (Result<void> ready = parts_->prepare(); !ready) return Error{ready.error()};
         Result<render::RenderedFrame> drawn = parts_->renderer->render(*frame);
         if (!drawn) return Error{drawn.error()};
         Frame out;
@@ -100,7 +116,7 @@ Expected<FrameStats> Renderer::draw_to(const View& view, unsigned framebuffer) {
     return no_throw([&]() -> Expected<FrameStats> {
         Result<render::FrameDesc> frame = frame_of(parts_->layout.data().layout, view);
         if (!frame) return Error{frame.error()};
-        if (parts_->callers_context) parts_->state().invalidate();
+        if (Result<void> ready = parts_->prepare(); !ready) return Error{ready.error()};
         render::FrameStats stats;
         if (Result<void> drawn = parts_->renderer->draw(*frame, &stats); !drawn) return Error{drawn.error()};
         const render::Target& target = parts_->renderer->target();
@@ -114,6 +130,7 @@ Expected<FrameStats> Renderer::draw_to(const View& view, unsigned framebuffer) {
 }
 
 std::string Renderer::gl_renderer() const {
+    if (parts_->context) return parts_->context->renderer;
     const GLubyte* name = glGetString(GL_RENDERER);
     return name != nullptr ? reinterpret_cast<const char*>(name) : "";
 }

@@ -11,9 +11,35 @@ struct ContextImpl {
     StateCache state;
 };
 
+namespace {
+
+// The context last made current on this thread (none: unknown), and the
+// loader the GL functions were last loaded through (they are process-wide).
+thread_local const ContextImpl* current_context = nullptr;
+const void* functions_from = nullptr;
+
+}  // namespace
+
 StateCache& Context::state() const { return impl->state; }
 
-void destroy_context(ContextImpl* impl) { delete impl; }
+void destroy_context(ContextImpl* impl) {
+    // Destroying a context leaves none current.
+    current_context = nullptr;
+    delete impl;
+}
+
+Result<void> make_current(const Context& context) {
+    const ContextImpl* impl = context.impl.get();
+    if (impl == current_context) return {};
+    if (!impl->backend.make_current(impl->backend.state.get()))
+        return Error{std::string(backend_name(context.backend)) + ": cannot make the context current again"};
+    current_context = impl;
+    if (functions_from != reinterpret_cast<const void*>(impl->backend.load)) {
+        gladLoadGL(reinterpret_cast<GLADloadfunc>(impl->backend.load));
+        functions_from = reinterpret_cast<const void*>(impl->backend.load);
+    }
+    return {};
+}
 
 const char* backend_name(Backend backend) { return backend == Backend::Egl ? "egl" : "osmesa"; }
 
@@ -24,9 +50,11 @@ std::optional<Backend> parse_backend(const std::string& name) {
 }
 
 Result<Context> create_context(Backend backend) {
+    current_context = nullptr;  // whatever happens, the new context or none is current
     BackendContext made = backend == Backend::Egl ? create_egl_context() : create_osmesa_context();
     if (!made.error.empty()) return Error{made.error};
     const int version = gladLoadGL(reinterpret_cast<GLADloadfunc>(made.load));
+    functions_from = reinterpret_cast<const void*>(made.load);
     if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < 45)
         return Error{std::string(backend_name(backend)) + ": OpenGL 4.5 core functions could not be loaded"};
     Context context;
@@ -34,14 +62,20 @@ Result<Context> create_context(Backend backend) {
     context.renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     context.version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
     context.impl.reset(new ContextImpl{std::move(made), {}});
+    current_context = context.impl.get();
     return context;
 }
 
 Result<void> load_functions(void* (*get_proc_address)(const char* name)) {
     if (get_proc_address == nullptr) return Error{"no GL function loader was given"};
+    current_context = nullptr;
+    if (functions_from == reinterpret_cast<const void*>(get_proc_address)) return {};
     const int version = gladLoadGL(reinterpret_cast<GLADloadfunc>(get_proc_address));
-    if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < 45)
+    if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < 45) {
+        functions_from = nullptr;
         return Error{"the current context does not offer OpenGL 4.5 core (or none is current)"};
+    }
+    functions_from = reinterpret_cast<const void*>(get_proc_address);
     return {};
 }
 

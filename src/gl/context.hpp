@@ -41,9 +41,15 @@ struct Context {
 // The error says why it failed, for humans.
 Result<Context> create_context(Backend backend);
 
+// Makes the context current on this thread, unless it was the last one made
+// current here, reloading the GL functions when they came from the other
+// backend: for a program with several contexts (the public API's renderers).
+Result<void> make_current(const Context& context);
+
 // Loads the GL 4.5 core functions of a context someone else made current
 // (a program embedding the library), through that context's loader, e.g.
-// eglGetProcAddress or glfwGetProcAddress.
+// eglGetProcAddress or glfwGetProcAddress; nothing to do if they came from
+// that loader last. The next make_current makes its context current again.
 Result<void> load_functions(void* (*get_proc_address)(const char* name));
 
 // The CLI's default: EGL, falling back to OSMesa when EGL fails.

@@ -13,6 +13,8 @@ using LoadProc = ProcAddress (*)(const char*);  // the shape of glad's GLADloadf
 struct BackendContext {
     std::unique_ptr<void, void (*)(void*)> state{nullptr, [](void*) {}};
     LoadProc load = nullptr;  // set when the context is current
+    // Makes the context current on this thread again; false when that fails.
+    bool (*make_current)(void* state) = nullptr;
     std::string error;
 };
 

@@ -20,10 +20,24 @@ void destroy_egl_state(void* p) {
     if (s->display != EGL_NO_DISPLAY) {
         eglMakeCurrent(s->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         if (s->context != EGL_NO_CONTEXT) eglDestroyContext(s->display, s->context);
-        eglTerminate(s->display);
+        // The display stays initialised: every context is on this one
+        // surfaceless display, which eglTerminate would end for the others
+        // too, and Mesa 22 leaks about 24 KB each time it is initialised
+        // again (a program making renderers one after another). Mesa ends
+        // it at exit.
         eglReleaseThread();  // frees this thread's EGL state (else it leaks at exit)
     }
     delete s;
+}
+
+bool make_egl_current(void* p) {
+    const auto* s = static_cast<const EglState*>(p);
+    // EGL takes a context it holds as current for current and does nothing,
+    // though an OSMesa context may have taken the thread since: release it
+    // first, so it is bound again.
+    if (eglGetCurrentContext() == s->context)
+        eglMakeCurrent(s->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    return eglMakeCurrent(s->display, EGL_NO_SURFACE, EGL_NO_SURFACE, s->context) == EGL_TRUE;
 }
 
 ProcAddress egl_proc(const char* name) { return reinterpret_cast<ProcAddress>(eglGetProcAddress(name)); }
@@ -69,6 +83,7 @@ BackendContext create_egl_context() {
         return out;
     }
     out.load = egl_proc;
+    out.make_current = make_egl_current;
     return out;
 }
 

@@ -22,6 +22,11 @@ void destroy_osmesa_state(void* p) {
     delete s;
 }
 
+bool make_osmesa_current(void* p) {
+    auto* s = static_cast<OSMesaState*>(p);
+    return OSMesaMakeCurrent(s->context, s->buffer, GL_UNSIGNED_BYTE, 1, 1) == GL_TRUE;
+}
+
 ProcAddress osmesa_proc(const char* name) { return reinterpret_cast<ProcAddress>(OSMesaGetProcAddress(name)); }
 
 // OSMesa picks its Gallium driver by the GALLIUM_DRIVER variable and, given
@@ -69,6 +74,7 @@ BackendContext create_osmesa_context() {
         return out;
     }
     out.load = osmesa_proc;
+    out.make_current = make_osmesa_current;
     return out;
 }
 
