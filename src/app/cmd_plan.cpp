@@ -78,8 +78,10 @@ int run_plan_command(const Args& args, std::ostream& out, std::ostream& err) {
     const design::Drawing drawing = design::plan_drawing(layout, report, path);
     set_plan_files(outputs, o, drawing);
     outputs.commit();
-    err << "plan: " << layout.rooms.size() << " rooms, " << report.overlaps.size() << " overlapping pairs, "
-        << drawing.shapes.size() << " shapes\n";
+    err << "plan: " << layout.rooms.size() << " rooms, " << (report.overlaps_exact ? "" : "at least ")
+        << report.overlap_pairs << " overlapping pairs";
+    if (design::overlaps_truncated(report)) err << " (" << report.overlaps.size() << " drawn)";
+    err << ", " << drawing.shapes.size() << " shapes\n";
     return kExitOk;
 }
 

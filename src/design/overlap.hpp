@@ -13,6 +13,7 @@
 // this project's choice, not the paper's (docs/designer.md).
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include "math/polygon.hpp"
@@ -36,9 +37,37 @@ struct Overlap {
     math::Polygon2 shared;    // the shared floor
 };
 
-// The overlaps of convex floors (one per room), every pair that shares more
-// than kMinSharedArea, in order of (a, b).
-std::vector<Overlap> room_overlaps(const std::vector<math::Polygon2>& floors);
+// How far the search for overlapping pairs goes. A report lists at most
+// `listed` pairs (10,000 identical rooms make 49,995,000), and the search
+// stops (leaving a lower bound) after `candidates` pairs whose bounding
+// rectangles overlap along x, or after `clipped` pairs that had to be
+// clipped (floors that are not axis-aligned rectangles, or rectangle pairs
+// within rounding of kMinSharedArea). Axis-aligned rectangles, every floor
+// of a layout whose doors do not turn, are counted without clipping, so
+// their count is exact up to `candidates`.
+inline constexpr std::size_t kMaxListedOverlaps = 1000;
+inline constexpr std::size_t kMaxClippedPairs = 1'000'000;
+inline constexpr std::size_t kMaxCandidatePairs = 100'000'000;
+
+struct OverlapLimits {
+    std::size_t listed = kMaxListedOverlaps;
+    std::size_t clipped = kMaxClippedPairs;
+    std::size_t candidates = kMaxCandidatePairs;
+};
+
+struct Overlaps {
+    std::vector<Overlap> listed;  // the first pairs found in order of (a, b), at most `limits.listed`
+    std::size_t pairs = 0;        // pairs found that share more than kMinSharedArea, the listed included
+    bool exact = true;            // false: the search stopped at a limit, so `pairs` is a lower bound
+    bool truncated() const { return !exact || pairs > listed.size(); }
+};
+
+// The overlaps of convex floors (one per room): every pair that shares more
+// than kMinSharedArea, found by a sweep over the floors' bounding rectangles
+// sorted by x; memory grows with the floors and `limits.listed`, not with
+// the pairs. Without a limit reached, `listed` holds the first pairs in
+// order of (a, b).
+Overlaps room_overlaps(const std::vector<math::Polygon2>& floors, const OverlapLimits& limits = {});
 
 // One pair's figures (shared may be empty when they do not overlap).
 Overlap overlap_of(const math::Polygon2& a, const math::Polygon2& b);

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <unordered_map>
 #include <variant>
 
 namespace impossible::design {
@@ -119,15 +121,51 @@ void add_windows(Drawing& d, const layout::Layout& layout, const Report& r) {
     }
 }
 
+// Labels sit at their room's centre, moved down 0.3 m at a time until none
+// is closer than 0.25 m. Placed labels are that far apart, so a grid of
+// 0.25 m cells holds a few each and a test looks at nine cells; a label
+// still crowded after kMaxLabelMoves moves (rooms stacked on one spot)
+// stays at its centre and is not waited for by later ones.
+constexpr int kMaxLabelMoves = 32;
+
+class LabelSpots {
+public:
+    glm::dvec2 place(glm::dvec2 at) {
+        const glm::dvec2 centre = at;
+        for (int move = 0; move <= kMaxLabelMoves; ++move, at.y += 0.3) {
+            if (crowded(at)) continue;
+            cells_[key(cell(at.x), cell(at.y))].push_back(at);
+            return at;
+        }
+        return centre;
+    }
+
+private:
+    std::unordered_map<std::uint64_t, std::vector<glm::dvec2>> cells_;
+
+    static std::int64_t cell(double v) { return static_cast<std::int64_t>(std::floor(v / 0.25)); }
+    static std::uint64_t key(std::int64_t x, std::int64_t y) {
+        return (static_cast<std::uint64_t>(x) << 32) ^ static_cast<std::uint64_t>(y & 0xffffffff);
+    }
+    bool crowded(glm::dvec2 at) const {
+        const std::int64_t cx = cell(at.x), cy = cell(at.y);
+        for (std::int64_t x = cx - 1; x <= cx + 1; ++x)
+            for (std::int64_t y = cy - 1; y <= cy + 1; ++y) {
+                const auto it = cells_.find(key(x, y));
+                if (it == cells_.end()) continue;
+                for (const glm::dvec2& u : it->second)
+                    if (glm::distance(u, at) < 0.25) return true;
+            }
+        return false;
+    }
+};
+
 void add_labels(Drawing& d, const layout::Layout& layout, const Report& r) {
-    std::vector<glm::dvec2> used;
+    LabelSpots spots;
     for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
         glm::dvec2 at{0.0};
         for (const glm::dvec2& p : r.floors[i]) at += 0.25 * p;
-        while (std::any_of(used.begin(), used.end(), [&](glm::dvec2 u) { return glm::distance(u, at) < 0.25; }))
-            at.y += 0.3;
-        used.push_back(at);
-        Shape s = fill("labels", layout.rooms[i].id, {at}, hue(static_cast<int>(i), 0.9, 0.35, 1.0));
+        Shape s = fill("labels", layout.rooms[i].id, {spots.place(at)}, hue(static_cast<int>(i), 0.9, 0.35, 1.0));
         s.kind = Shape::Kind::Text;
         s.text = layout.rooms[i].id + (r.placement.rooms[i].reachable ? "" : " (unreachable)");
         d.shapes.push_back(s);

@@ -19,6 +19,9 @@ std::string ids(const layout::Layout& layout, const std::vector<int>& rooms) {
     return out;
 }
 
+// Where the search for overlaps stopped early, if it did.
+const char* const kSearchStopped = "the search stopped at its limit of pairs tested";
+
 void find_outside(const layout::Layout& layout, Report& r) {
     if (!layout.play_area) return;
     const math::Polygon2 area = layout::outline(*layout.play_area);
@@ -44,6 +47,11 @@ void write_findings(const layout::Layout& layout, Report& r) {
                              fixed(o.percent, 1) + " % of the smaller floor (more than " + fixed(o.limit, 0) +
                              " % is likely to be noticed)");
     }
+    if (overlaps_truncated(r))
+        r.findings.push_back((r.overlaps_exact ? "" : "at least ") + std::to_string(r.overlap_pairs) +
+                             " pairs of rooms overlap" +
+                             (r.overlaps_exact ? "" : std::string(" (") + kSearchStopped + ")") +
+                             "; the report lists the first " + std::to_string(r.overlaps.size()));
     for (const RoomFinding& f : r.rooms_outside)
         r.findings.push_back("room \"" + layout.rooms[f.room].id + "\" reaches " + fixed(f.outside_area, 2) +
                              " m2 outside the play area");
@@ -66,7 +74,10 @@ Report make_report(const layout::Layout& layout) {
         r.floors.push_back(physical_floor(layout.rooms[i], r.placement.rooms[i].to_physical));
         if (!r.placement.rooms[i].reachable) r.unreachable.push_back(static_cast<int>(i));
     }
-    r.overlaps = room_overlaps(r.floors);
+    Overlaps overlaps = room_overlaps(r.floors);
+    r.overlaps = std::move(overlaps.listed);
+    r.overlap_pairs = overlaps.pairs;
+    r.overlaps_exact = overlaps.exact;
     find_outside(layout, r);
     write_findings(layout, r);
     return r;
@@ -80,12 +91,22 @@ std::string report_text(const layout::Layout& layout, const Report& r) {
     out += "unreachable rooms:" + ids(layout, r.unreachable) + "\n";
     out += "overlaps (% of the smaller floor; unnoticed up to " + fixed(kSmallRoomLimit, 0) + " % for rooms up to " +
            fixed(kSmallRoomArea, 0) + " m2, " + fixed(kLargeRoomLimit, 0) + " % for larger, Suma et al. 2012):";
-    if (r.overlaps.empty()) out += " none";
+    if (r.overlaps.empty() && !overlaps_truncated(r)) out += " none";
     out += "\n";
     for (const Overlap& o : r.overlaps) {
         out += "  " + layout.rooms[o.a].id + " / " + layout.rooms[o.b].id + ": " + fixed(o.area, 2) + " m2, " +
                fixed(o.percent, 1) + " % (limit " + fixed(o.limit, 0) + " %)" + (o.noticeable ? " noticeable" : " ok") +
                "\n";
+    }
+    if (overlaps_truncated(r)) {
+        const std::size_t more = r.overlap_pairs - r.overlaps.size();
+        const std::string listed = "the report lists the first " + std::to_string(r.overlaps.size());
+        if (r.overlaps_exact) {
+            out += "  ... and " + std::to_string(more) + " more pairs (" + listed + ")\n";
+        } else {
+            out += "  ... and " + (more ? "at least " + std::to_string(more) + " more pairs" : "possibly more pairs") +
+                   " (" + kSearchStopped + "; " + listed + ")\n";
+        }
     }
     if (layout.play_area) {
         std::vector<int> rooms;

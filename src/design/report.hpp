@@ -25,8 +25,10 @@ struct RoomFinding {
 struct Report {
     layout::Summary summary;
     Placement placement;
-    std::vector<math::Polygon2> floors;  // physical floor of each room
-    std::vector<Overlap> overlaps;
+    std::vector<math::Polygon2> floors;      // physical floor of each room
+    std::vector<Overlap> overlaps;           // the listed pairs, at most kMaxListedOverlaps (design/overlap.hpp)
+    std::size_t overlap_pairs = 0;           // pairs found, the listed included
+    bool overlaps_exact = true;              // false: the search stopped at its limit; overlap_pairs is a lower bound
     std::vector<int> unreachable;            // rooms, file order
     std::vector<RoomFinding> rooms_outside;  // with a play area: physical floors not inside it
     std::vector<int> doors_outside;          // portals whose floor line is not inside the play area
@@ -34,6 +36,9 @@ struct Report {
 };
 
 Report make_report(const layout::Layout& layout);
+
+// Whether there are (or may be) more overlapping pairs than the report lists.
+inline bool overlaps_truncated(const Report& r) { return !r.overlaps_exact || r.overlap_pairs > r.overlaps.size(); }
 
 // The lines `validate` prints after the summary.
 std::string report_text(const layout::Layout& layout, const Report& report);

@@ -50,6 +50,8 @@ ordered_json summary_json(const layout::Layout& layout, const Report& r) {
 }
 
 ordered_json rooms_json(const layout::Layout& layout, const Report& r) {
+    std::vector<double> outside(layout.rooms.size(), 0.0);
+    for (const RoomFinding& f : r.rooms_outside) outside[f.room] = f.outside_area;
     ordered_json rooms = ordered_json::array();
     for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
         const RoomPlacement& p = r.placement.rooms[i];
@@ -60,10 +62,7 @@ ordered_json rooms_json(const layout::Layout& layout, const Report& r) {
         room["entered_through"] = p.via >= 0 ? ordered_json(layout.portals[p.via].id) : ordered_json(nullptr);
         room["floor_area"] = rounded(math::area(r.floors[i]));
         room["physical_floor"] = points(r.floors[i]);
-        double outside = 0.0;
-        for (const RoomFinding& f : r.rooms_outside)
-            if (f.room == static_cast<int>(i)) outside = f.outside_area;
-        room["area_outside_play_area"] = rounded(outside);
+        room["area_outside_play_area"] = rounded(outside[i]);
         room["placed_consistently"] = !p.inconsistent;
         rooms.push_back(room);
     }
@@ -92,6 +91,11 @@ ordered_json report_json(const layout::Layout& layout, const Report& r,
         overlaps.push_back(e);
     }
     j["overlaps"] = overlaps;
+    if (overlaps_truncated(r)) {  // only then, so that the documents of other layouts stay as they were
+        j["overlaps_truncated"] = true;
+        j["overlap_pairs"] = r.overlap_pairs;
+        j["overlap_pairs_exact"] = r.overlaps_exact;
+    }
     ordered_json unreachable = ordered_json::array();
     for (const int room : r.unreachable) unreachable.push_back(layout.rooms[room].id);
     j["unreachable_rooms"] = unreachable;

@@ -80,9 +80,12 @@ TEST(LargeLayout, OverlapSweepFindsEveryPairThatEveryPairFinds) {
             if (design::overlap_of(floors[i], floors[j]).area > design::kMinSharedArea)
                 expected.emplace_back(static_cast<int>(i), static_cast<int>(j));
     std::vector<std::pair<int, int>> found;
-    for (const design::Overlap& o : design::room_overlaps(floors)) found.emplace_back(o.a, o.b);
+    const design::Overlaps overlaps = design::room_overlaps(floors);
+    for (const design::Overlap& o : overlaps.listed) found.emplace_back(o.a, o.b);
     EXPECT_GT(expected.size(), 50u);
     EXPECT_EQ(found, expected);
+    EXPECT_EQ(overlaps.pairs, expected.size());
+    EXPECT_TRUE(overlaps.exact);
 }
 
 }  // namespace
