@@ -3,13 +3,12 @@
 // (design/generate.hpp); standard output without --out.
 #include <iostream>
 
-#include <nlohmann/json.hpp>
-
 #include "app/commands.hpp"
 #include "base/file_io.hpp"
 #include "cli/option_table.hpp"
 #include "cli/output_files.hpp"
 #include "design/generate.hpp"
+#include "design/play_area_file.hpp"
 
 namespace impossible::app {
 
@@ -29,24 +28,11 @@ math::Polygon2 parse_floor(const OptionValue& v) {
 // A play-area file is a list of corners: a few kilobytes at most.
 constexpr std::size_t kMaxFloorFileBytes = 4u << 20;
 
-// A JSON file holding [[x, z], ...], {"polygon": [...]} or {"play_area": {"polygon": [...]}}.
+// The file's corners (design/play_area_file.hpp).
 math::Polygon2 read_floor_file(const std::string& file) {
     const std::vector<unsigned char> bytes = value_or_throw(read_file_bytes(file, kMaxFloorFileBytes, false), file);
-    const nlohmann::json j = nlohmann::json::parse(bytes.begin(), bytes.end(), nullptr, false);
-    if (j.is_discarded()) throw InputError(file + ": not valid JSON");
-    const nlohmann::json* list = &j;
-    if (j.is_object() && j.contains("play_area")) list = &j["play_area"];
-    if (list->is_object() && list->contains("polygon")) list = &(*list)["polygon"];
-    math::Polygon2 poly;
-    if (!list->is_array()) throw InputError(file + ": expected a polygon, [[x, z], ...]");
-    for (const nlohmann::json& p : *list) {
-        if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
-            throw InputError(file + ": every corner must be [x, z]");
-        poly.push_back({p[0].get<double>(), p[1].get<double>()});
-    }
-    if (const auto problem = math::simple_polygon_problem(poly))
-        throw InputError(file + ": the play area must be a simple polygon: " + problem->message);
-    return poly;
+    const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    return value_or_throw(design::parse_play_area_file(text, file));
 }
 
 double parse_max_overlap(const OptionValue& v) {

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "design/area_index.hpp"
 #include "design/overlap.hpp"
 
 namespace impossible::design {
@@ -48,9 +49,16 @@ struct Draft {
     std::vector<Door> doors;
 };
 
-bool fits(const GenerateOptions& o, const Draft& d, const Box& b) {
+// The options and the play area's index (design/area_index.hpp).
+struct Floor {
+    const GenerateOptions& o;
+    AreaIndex area;
+};
+
+bool fits(const Floor& f, const Draft& d, const Box& b) {
+    const GenerateOptions& o = f.o;
+    if (!f.area.box_inside({b.x0 / 10.0, b.z0 / 10.0}, {b.x1 / 10.0, b.z1 / 10.0})) return false;
     const math::Polygon2 floor = b.floor();
-    if (!math::convex_inside(floor, o.play_area, 1e-9)) return false;
     for (const Box& other : d.rooms) {
         const Overlap ov = overlap_of(floor, other.floor());
         const double limit = o.max_overlap ? *o.max_overlap : ov.limit;
@@ -60,7 +68,7 @@ bool fits(const GenerateOptions& o, const Draft& d, const Box& b) {
 }
 
 // Tries once to grow a new room out of a wall of an existing one.
-bool grow(const GenerateOptions& o, Draft& d, Rng& rng, int max_side) {
+bool grow(const Floor& f, Draft& d, Rng& rng, int max_side) {
     const int a = rng.uniform(0, static_cast<int>(d.rooms.size()) - 1);
     const Box& A = d.rooms[a];
     Door door{a, static_cast<int>(d.rooms.size()), rng.uniform(0, 3)};
@@ -86,13 +94,14 @@ bool grow(const GenerateOptions& o, Draft& d, Rng& rng, int max_side) {
     } else {
         B.z0 = std::min(p0, p1), B.z1 = std::max(p0, p1), B.x0 = start, B.x1 = start + length;
     }
-    if (!fits(o, d, B)) return false;
+    if (!fits(f, d, B)) return false;
     d.rooms.push_back(B);
     d.doors.push_back(door);
     return true;
 }
 
-std::optional<Draft> attempt(const GenerateOptions& o, Rng& rng) {
+std::optional<Draft> attempt(const Floor& f, Rng& rng) {
+    const GenerateOptions& o = f.o;
     glm::dvec2 lo = o.play_area[0], hi = lo;
     for (const glm::dvec2& p : o.play_area) lo = glm::min(lo, p), hi = glm::max(hi, p);
     const int bx0 = static_cast<int>(std::ceil(lo.x * 10 - 1e-9)), bz0 = static_cast<int>(std::ceil(lo.y * 10 - 1e-9));
@@ -107,10 +116,10 @@ std::optional<Draft> attempt(const GenerateOptions& o, Rng& rng) {
         const int depth = rng.uniform(kMinRoomSide + 5, std::min(max_side, bz1 - bz0));
         b.x0 = rng.uniform(bx0, bx1 - w), b.z0 = rng.uniform(bz0, bz1 - depth);
         b.x1 = b.x0 + w, b.z1 = b.z0 + depth;
-        if (w <= bx1 - bx0 && depth <= bz1 - bz0 && fits(o, d, b)) d.rooms.push_back(b);
+        if (w <= bx1 - bx0 && depth <= bz1 - bz0 && fits(f, d, b)) d.rooms.push_back(b);
     }
     if (d.rooms.empty()) return std::nullopt;
-    for (int tries = 0; tries < 4000 && static_cast<int>(d.rooms.size()) < o.rooms; ++tries) grow(o, d, rng, max_side);
+    for (int tries = 0; tries < 4000 && static_cast<int>(d.rooms.size()) < o.rooms; ++tries) grow(f, d, rng, max_side);
     if (static_cast<int>(d.rooms.size()) < o.rooms) return std::nullopt;
     return d;
 }
@@ -126,8 +135,9 @@ Result<std::string> generate_layout(const GenerateOptions& o) {
         return Error{"--rooms must be 1.." + std::to_string(kMaxGeneratedRooms)};
     if (math::simple_polygon_problem(o.play_area)) return Error{"the play area is not a simple polygon"};
     Rng rng{o.seed * 0x2545F4914F6CDD1Dull + 1};
+    const Floor floor{o, AreaIndex(o.play_area)};
     for (int restart = 0; restart < 200; ++restart) {
-        const std::optional<Draft> d = attempt(o, rng);
+        const std::optional<Draft> d = attempt(floor, rng);
         if (!d) continue;
         std::vector<std::array<int, 5>> rooms;
         for (const Box& b : d->rooms) rooms.push_back({b.x0, b.z0, b.x1, b.z1, b.height});
