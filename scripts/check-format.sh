@@ -6,7 +6,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 command -v clang-format >/dev/null || "$root/scripts/setup.sh" clang-format
 mapfile -t files < <(git ls-files 'src/*.cpp' 'src/*.hpp' 'tests/*.cpp' 'tests/*.hpp' 'tools/*.cpp' 'tools/*.hpp' \
-                                  'bench/*.cpp' 'bench/*.hpp' 'examples/*.cpp')
+                                  'bench/*.cpp' 'bench/*.hpp' 'examples/*.cpp' 'python/*.cpp')
 if [ "${1:-}" = "--fix" ]; then
     clang-format -i "${files[@]}"
     exit 0

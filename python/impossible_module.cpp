@@ -1,0 +1,338 @@
+// The Python module `impossible` (docs/python.md): the public C++ API
+// (include/impossible/impossible.hpp) through Debian's pybind11, and nothing
+// else of the library. A frame's pixels become numpy arrays without a copy
+// (its vectors move into the arrays' owners); the GIL is released while a
+// frame is drawn or traced. Every error of the library is raised as
+// impossible.Error, a ValueError carrying its message.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "impossible/impossible.hpp"
+
+namespace py = pybind11;
+namespace api = impossible::api;
+
+namespace {
+
+// Raised as impossible.Error (registered in the module).
+struct Failure : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+template <class T>
+T value_or_raise(api::Expected<T>&& e) {
+    if (!e) throw Failure(e.error().message);
+    return std::move(e).value();
+}
+
+[[noreturn]] void raise(PyObject* type, const std::string& message) {
+    PyErr_SetString(type, message.c_str());
+    throw py::error_already_set();
+}
+
+// Six numbers (x, y, z, yaw, pitch, roll), each finite and within ±limit:
+// 1e7 as `--pose`, 1e6 as a path file's lines.
+api::Pose pose_of(py::handle value, double limit, const char* what) {
+    const std::string expected = std::string(what) + ": expected 6 numbers (x, y, z, yaw, pitch, roll)";
+    if (py::isinstance<py::str>(value) || !py::isinstance<py::sequence>(value)) raise(PyExc_TypeError, expected);
+    const auto seq = py::reinterpret_borrow<py::sequence>(value);
+    if (seq.size() != 6) raise(PyExc_ValueError, expected + ", got " + std::to_string(seq.size()));
+    double v[6];
+    for (int k = 0; k < 6; ++k) {
+        try {
+            v[k] = seq[k].cast<double>();
+        } catch (const py::cast_error&) {
+            raise(PyExc_TypeError, expected);
+        }
+        if (!(std::abs(v[k]) <= limit))
+            raise(PyExc_ValueError, std::string(what) + ": " + std::to_string(v[k]) +
+                                        " is not a finite number within ±" + std::to_string(static_cast<long>(limit)));
+    }
+    return {v[0], v[1], v[2], v[3], v[4], v[5]};
+}
+
+std::vector<api::Pose> poses_of(py::handle list, const char* what) {
+    std::vector<api::Pose> poses;
+    if (py::isinstance<py::str>(list) || !py::isinstance<py::iterable>(list))
+        raise(PyExc_TypeError, std::string(what) + ": expected a list of poses");
+    for (py::handle p : py::reinterpret_borrow<py::iterable>(list)) poses.push_back(pose_of(p, 1e6, what));
+    return poses;
+}
+
+py::tuple tuple_of(const api::Pose& p) { return py::make_tuple(p.x, p.y, p.z, p.yaw, p.pitch, p.roll); }
+
+py::list tuples_of(const std::vector<api::Pose>& poses) {
+    py::list out;
+    for (const api::Pose& p : poses) out.append(tuple_of(p));
+    return out;
+}
+
+// The pixels moved into a capsule that the array keeps alive: no copy.
+py::array_t<std::uint8_t> array_of(std::vector<std::uint8_t>&& pixels, std::vector<py::ssize_t> shape) {
+    auto owned = std::make_unique<std::vector<std::uint8_t>>(std::move(pixels));
+    const std::uint8_t* data = owned->data();
+    py::capsule owner(owned.get(), [](void* p) { delete static_cast<std::vector<std::uint8_t>*>(p); });
+    owned.release();
+    return py::array_t<std::uint8_t>(std::move(shape), data, owner);
+}
+
+py::dict stats_of(const api::FrameStats& s) {
+    py::dict d;
+    d["draw_calls"] = s.draw_calls;
+    d["triangles"] = s.triangles;
+    d["portal_passes_drawn"] = s.portal_passes_drawn;
+    d["portal_passes_culled"] = s.portal_passes_culled;
+    d["portal_fills"] = s.portal_fills;
+    d["budget_fills"] = s.budget_fills;
+    d["max_level"] = s.max_level;
+    return d;
+}
+
+// {"color": [H, 2W, 3], "ids": [H, 2W]} (and "stats" for a rasterised frame).
+py::dict frame_dict(api::Frame&& f, bool with_stats) {
+    py::dict d;
+    const py::ssize_t h = f.height, w = f.width;
+    d["color"] = array_of(std::move(f.rgb), {h, w, 3});
+    d["ids"] = array_of(std::move(f.ids), {h, w});
+    if (with_stats) d["stats"] = stats_of(f.stats);
+    return d;
+}
+
+api::Backend backend_of(const std::string& name) {
+    if (name == "egl") return api::Backend::Egl;
+    if (name == "osmesa") return api::Backend::OSMesa;
+    if (name == "any") return api::Backend::Any;
+    raise(PyExc_ValueError, "backend must be 'egl', 'osmesa' or 'any', not '" + name + "'");
+}
+
+// What every frame of a renderer shares: size, samples, eyes.
+struct ViewBase {
+    std::pair<int, int> size{1280, 720};
+    int samples = 1;
+    double ipd = 0.064, fov = 90;
+};
+
+// One frame's view; hands are not drawn yet (issue 22).
+api::View view_of(const ViewBase& base, py::handle pose, py::handle room, py::handle hands, double time,
+                  int max_depth) {
+    if (!hands.is_none())
+        raise(PyExc_NotImplementedError, "hands are not implemented yet (no hand poses are drawn); pass hands=None");
+    api::View v;
+    if (!pose.is_none()) v.pose = pose_of(pose, 1e7, "pose");
+    if (!room.is_none()) v.room = room.cast<std::string>();
+    std::tie(v.width, v.height) = base.size;
+    v.samples = base.samples;
+    v.ipd = base.ipd;
+    v.fov_deg = base.fov;
+    v.time = time;
+    v.max_depth = max_depth;
+    return v;
+}
+
+py::dict trace_frame(const api::Layout& layout, const api::View& view, int threads) {
+    api::Expected<api::Frame> frame = [&] {
+        py::gil_scoped_release unlocked;
+        return api::trace(layout, view, threads);
+    }();
+    return frame_dict(value_or_raise(std::move(frame)), false);
+}
+
+// A headless rasteriser with its own GL context, used on the thread that
+// made it (the context is current there).
+class PyRenderer {
+public:
+    PyRenderer(const api::Layout& layout, ViewBase base, const std::string& backend)
+        : layout_(layout),
+          renderer_(value_or_raise(api::Renderer::headless(layout, backend_of(backend)))),
+          base_(base),
+          thread_(std::this_thread::get_id()) {}
+
+    py::dict render(py::handle pose, py::handle room, py::handle hands, double time, int max_depth) {
+        const api::View view = view_of(base_, pose, room, hands, time, max_depth);
+        if (std::this_thread::get_id() != thread_)
+            raise(PyExc_RuntimeError, "a Renderer draws only on the thread that made it");
+        api::Expected<api::Frame> frame = [&] {
+            py::gil_scoped_release unlocked;
+            return renderer_.render(view);
+        }();
+        return frame_dict(value_or_raise(std::move(frame)), true);
+    }
+
+    py::dict trace(py::handle pose, py::handle room, py::handle hands, double time, int max_depth, int threads) {
+        return trace_frame(layout_, view_of(base_, pose, room, hands, time, max_depth), threads);
+    }
+
+    const api::Layout& layout() const { return layout_; }
+    ViewBase base() const { return base_; }
+    std::string gl_renderer() const { return renderer_.gl_renderer(); }
+
+private:
+    api::Layout layout_;
+    api::Renderer renderer_;
+    ViewBase base_;
+    std::thread::id thread_;
+};
+
+py::dict step_dict(std::size_t frame, const api::WalkStep& s) {
+    py::dict d;
+    d["frame"] = frame;
+    d["room"] = s.room;
+    d["teleports"] = py::cast(s.teleports);
+    // + 0.0: -0 becomes 0, as `walk` writes it.
+    d["position"] = py::make_tuple(s.position[0] + 0.0, s.position[1] + 0.0, s.position[2] + 0.0).cast<py::list>();
+    d["forward"] = py::make_tuple(s.forward[0] + 0.0, s.forward[1] + 0.0, s.forward[2] + 0.0).cast<py::list>();
+    return d;
+}
+
+// The walker, one physical pose at a time; `pose` is the virtual head after
+// the last step, to render that frame.
+class PyWalker {
+public:
+    explicit PyWalker(const api::Layout& layout) : walker_(layout), pose_(layout.start()), room_(layout.start_room()) {}
+
+    py::dict step(py::handle physical) {
+        const api::WalkStep s = walker_.step(pose_of(physical, 1e6, "pose"));
+        pose_ = s.virtual_pose;
+        room_ = s.room;
+        return step_dict(frames_++, s);
+    }
+    py::tuple pose() const { return tuple_of(pose_); }
+    const std::string& room() const { return room_; }
+
+private:
+    api::Walker walker_;
+    api::Pose pose_;
+    std::string room_;
+    std::size_t frames_ = 0;
+};
+
+py::list walk(const api::Layout& layout, py::handle poses, double fps) {
+    if (!(fps > 0 && std::isfinite(fps))) raise(PyExc_ValueError, "fps must be a finite number above 0");
+    const std::vector<api::WalkStep> steps = api::walk(layout, poses_of(poses, "poses"));
+    py::list out;
+    for (std::size_t k = 0; k < steps.size(); ++k) out.append(step_dict(k, steps[k]));
+    return out;
+}
+
+// play_area: (width, depth) of a rectangle centred on the origin, or a
+// polygon [(x, z), ...].
+std::string generate(py::handle play_area, int rooms, long long seed, std::optional<double> max_overlap) {
+    if (seed < 0 || seed > 2'000'000'000) raise(PyExc_ValueError, "seed must be 0..2000000000");
+    api::GenerateRequest request;
+    const auto area = play_area.cast<std::vector<py::object>>();
+    if (area.size() == 2 && !py::isinstance<py::sequence>(area[0])) {
+        request.width = area[0].cast<double>();
+        request.depth = area[1].cast<double>();
+    } else {
+        request.play_area = play_area.cast<std::vector<std::pair<double, double>>>();
+    }
+    request.rooms = rooms;
+    request.seed = static_cast<std::uint64_t>(seed);
+    request.max_overlap = max_overlap;
+    return value_or_raise(api::generate(request));
+}
+
+std::string path_string(py::handle path) { return py::module_::import("os").attr("fspath")(path).cast<std::string>(); }
+
+void bind_layout(py::module_& m) {
+    py::class_<api::Layout>(m, "Layout", "A loaded, valid layout (impossible.load)")
+        .def_property_readonly("source", &api::Layout::source)
+        .def_property_readonly("name", &api::Layout::name)
+        .def_property_readonly("rooms", &api::Layout::room_ids)
+        .def_property_readonly("portals", &api::Layout::portal_ids)
+        .def_property_readonly("start_room", &api::Layout::start_room)
+        .def_property_readonly("start", [](const api::Layout& l) { return tuple_of(l.start()); })
+        .def_property_readonly("warnings", &api::Layout::warnings)
+        .def(
+            "validate", [](const api::Layout& l) { return py::module_::import("json").attr("loads")(l.report_json()); },
+            "The designer's report as a dict (`impossible validate --json`)")
+        .def("report", &api::Layout::report_text, "The report as `impossible validate` prints it")
+        .def("__repr__", [](const api::Layout& l) { return "<impossible.Layout " + l.source() + ">"; });
+    m.def(
+        "load", [](py::handle path) { return value_or_raise(api::Layout::load(path_string(path))); }, py::arg("path"),
+        "Reads and checks a layout file; impossible.Error (FILE:LINE:COLUMN: message) if it is bad");
+    m.def(
+        "parse",
+        [](const std::string& text, const std::string& name, const std::string& base_dir) {
+            return value_or_raise(api::Layout::parse(text, name, base_dir));
+        },
+        py::arg("text"), py::arg("name") = "<string>", py::arg("base_dir") = ".", "A layout from its JSON text");
+    m.def("builtin", &api::Layout::builtin, "The built-in default layout (what `impossible render` draws)");
+}
+
+void bind_renderer(py::module_& m) {
+    py::class_<PyRenderer>(m, "Renderer", "The OpenGL rasteriser for one layout, in a headless context of its own")
+        .def(py::init([](const api::Layout& layout, std::pair<int, int> size, int samples, const std::string& backend,
+                         double ipd, double fov) {
+                 return new PyRenderer(layout, {size, samples, ipd, fov}, backend);
+             }),
+             py::arg("layout"), py::arg("size") = std::pair<int, int>(1280, 720), py::arg("samples") = 1,
+             py::arg("backend") = "egl", py::arg("ipd") = 0.064, py::arg("fov") = 90.0)
+        .def("render", &PyRenderer::render, py::arg("pose") = py::none(), py::arg("room") = py::none(),
+             py::arg("hands") = py::none(), py::arg("time") = 0.0, py::arg("max_depth") = 8)
+        .def("trace", &PyRenderer::trace, py::arg("pose") = py::none(), py::arg("room") = py::none(),
+             py::arg("hands") = py::none(), py::arg("time") = 0.0, py::arg("max_depth") = 8, py::arg("threads") = 0)
+        .def_property_readonly("layout", &PyRenderer::layout)
+        .def_property_readonly("size", [](const PyRenderer& r) { return r.base().size; })
+        .def_property_readonly("gl_renderer", &PyRenderer::gl_renderer);
+    m.def(
+        "trace",
+        [](const api::Layout& layout, std::pair<int, int> size, int samples, py::handle pose, py::handle room,
+           py::handle hands, double time, int max_depth, int threads) {
+            return trace_frame(layout, view_of({size, samples}, pose, room, hands, time, max_depth), threads);
+        },
+        py::arg("layout"), py::arg("size") = std::pair<int, int>(1280, 720), py::arg("samples") = 1,
+        py::arg("pose") = py::none(), py::arg("room") = py::none(), py::arg("hands") = py::none(),
+        py::arg("time") = 0.0, py::arg("max_depth") = 8, py::arg("threads") = 0,
+        "The reference ray tracer (`impossible trace`); no GL context needed");
+}
+
+void bind_tools(py::module_& m) {
+    py::class_<PyWalker>(m, "Walker", "Physical head poses to the virtual head, one at a time")
+        .def(py::init<const api::Layout&>(), py::arg("layout"))
+        .def("step", &PyWalker::step, py::arg("pose"))
+        .def_property_readonly("pose", &PyWalker::pose)
+        .def_property_readonly("room", &PyWalker::room);
+    m.def("walk", &walk, py::arg("layout"), py::arg("poses"), py::arg("fps") = 90.0,
+          "Every frame of a walk as `impossible walk` prints it");
+    m.def(
+        "read_path", [](py::handle path) { return tuples_of(value_or_raise(api::read_path(path_string(path)))); },
+        py::arg("path"), "The poses of a path file");
+    m.def("generate", &generate, py::arg("play_area"), py::arg("rooms"), py::arg("seed"),
+          py::arg("max_overlap") = py::none(), "A random valid layout's JSON text (`impossible generate`)");
+    m.def(
+        "plan",
+        [](const api::Layout& layout, py::handle path) {
+            return value_or_raise(
+                api::plan_svg(layout, path.is_none() ? std::vector<api::Pose>{} : poses_of(path, "path")));
+        },
+        py::arg("layout"), py::arg("path") = py::none(), "The SVG of `impossible plan`");
+    m.def(
+        "tour",
+        [](const api::Layout& layout, double step, double head_height) {
+            return tuples_of(value_or_raise(api::tour(layout, {step, head_height})));
+        },
+        py::arg("layout"), py::arg("step") = 0.05, py::arg("head_height") = 1.6,
+        "A walk through every reachable room (`impossible tour`), as physical poses");
+}
+
+}  // namespace
+
+PYBIND11_MODULE(impossible, m) {
+    m.doc() = "impossible: impossible spaces (portal renderer, ray tracer, walker, designer's tools)";
+    m.attr("__version__") = api::version();
+    py::register_exception<Failure>(m, "Error", PyExc_ValueError);
+    bind_layout(m);
+    bind_renderer(m);
+    bind_tools(m);
+}
