@@ -7,6 +7,8 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build}
 shift || true
+# valgrind runs the image decoders' test (image_decode_valgrind).
+"$root/scripts/setup.sh" valgrind
 "$root/scripts/build.sh" "$build" "$@"
 cd "$build"
 ctest --output-on-failure -j"$(nproc)" --timeout 600

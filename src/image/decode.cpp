@@ -1,38 +1,30 @@
 #include "image/decode.hpp"
 
 #include <climits>
+#include <cstdint>
 #include <cstring>
-#include <memory>
+#include <utility>
 
-#include <stb_image.h>
-
-#include "base/user_text.hpp"
+#include "image/jpeg_check.hpp"
+#include "image/png_check.hpp"
+#include "image/png_palette.hpp"
+#include "image/stb_load.hpp"
 
 namespace impossible::image {
 
 namespace {
 
-// stb_image's reason can quote bytes of the file (an unknown PNG chunk's
-// four type bytes), so it is made printable before it joins a message.
-std::string stb_reason() {
-    const char* reason = stbi_failure_reason();
-    return reason != nullptr && *reason != '\0' ? printable(reason) : "unknown reason";
+std::string cannot_decode(ImageFormat format, const std::string& reason) {
+    return std::string("could not be decoded as ") + (format == ImageFormat::Png ? "PNG: " : "JPEG: ") + reason;
 }
 
-// stbi_load_from_memory into Pixels of `want` channels (1, 3 or 4); the
-// error is stb_image's reason.
-Result<Pixels> stb_decode(const unsigned char* bytes, std::size_t size, int want) {
-    if (size > static_cast<std::size_t>(INT_MAX)) return Error{"is too large to decode"};
-    int width = 0, height = 0, channels = 0;
-    const std::unique_ptr<unsigned char, void (*)(void*)> decoded(
-        stbi_load_from_memory(bytes, static_cast<int>(size), &width, &height, &channels, want), &stbi_image_free);
-    if (decoded == nullptr) return Error{stb_reason()};
-    Pixels out;
-    out.width = width;
-    out.height = height;
-    out.channels = want;
-    out.data.assign(decoded.get(), decoded.get() + out.texels() * static_cast<std::size_t>(want));
-    return out;
+// Pixels of `want` channels from PNG or JPEG data whose structure was
+// checked; the error is the reason alone.
+Result<Pixels> decode_pixels(ImageFormat format, const unsigned char* bytes, std::size_t size, int want) {
+    if (format == ImageFormat::Png) {
+        if (std::optional<Result<Pixels>> palette = decode_short_palette(bytes, size, want)) return std::move(*palette);
+    }
+    return stb::load(bytes, size, want);
 }
 
 }  // namespace
@@ -45,39 +37,58 @@ ImageFormat sniff_image(const unsigned char* bytes, std::size_t size) {
 }
 
 Result<ImageSize> image_size(const unsigned char* bytes, std::size_t size, int max_side) {
-    if (sniff_image(bytes, size) == ImageFormat::Other) return Error{"is neither PNG nor JPEG data"};
-    if (size > static_cast<std::size_t>(INT_MAX)) return Error{"is too large to decode"};
-    ImageSize out;
-    int channels = 0;
-    if (stbi_info_from_memory(bytes, static_cast<int>(size), &out.width, &out.height, &channels) == 0) {
-        return Error{"could not be decoded (" + stb_reason() + ")"};
+    const ImageFormat format = sniff_image(bytes, size);
+    if (format == ImageFormat::Other) return Error{"is neither PNG nor JPEG data"};
+    std::uint64_t width = 0, height = 0;
+    if (format == ImageFormat::Png) {
+        const Result<PngHeader> header = png_header(bytes, size);
+        if (!header) return Error{cannot_decode(format, "it " + header.error())};
+        width = header->width;
+        height = header->height;
+    } else {
+        const Result<JpegFrame> frame = read_jpeg_markers(bytes, size, false);
+        if (!frame) return Error{cannot_decode(format, "it " + frame.error())};
+        width = static_cast<std::uint64_t>(frame->width);
+        height = static_cast<std::uint64_t>(frame->height);
+        if (width == 0 || height == 0) {
+            return Error{cannot_decode(format, "it has no pixels (its frame header says " + std::to_string(width) +
+                                                   " x " + std::to_string(height) + ")")};
+        }
     }
-    if (out.width < 1 || out.height < 1) return Error{"could not be decoded (it has no pixels)"};
-    if (out.width > max_side || out.height > max_side) {
-        return Error{"is " + std::to_string(out.width) + " x " + std::to_string(out.height) + " pixels; the limit is " +
+    const auto limit = static_cast<std::uint64_t>(max_side);
+    if (width > limit || height > limit) {
+        return Error{"is " + std::to_string(width) + " x " + std::to_string(height) + " pixels; the limit is " +
                      std::to_string(max_side) + " pixels on a side"};
     }
-    return out;
+    return ImageSize{static_cast<int>(width), static_cast<int>(height)};
 }
 
 Result<Pixels> decode_image(const unsigned char* bytes, std::size_t size, int max_side) {
     const Result<ImageSize> header = image_size(bytes, size, max_side);
     if (!header) return header;
-    // stbi_load reduces 16-bit PNG channels to 8 bits and expands grey, grey
+    const ImageFormat format = sniff_image(bytes, size);
+    if (format == ImageFormat::Png) {
+        if (Result<void> chunks = check_png_chunks(bytes, size); !chunks) {
+            return Error{cannot_decode(format, "it " + chunks.error())};
+        }
+    } else if (const Result<JpegFrame> markers = read_jpeg_markers(bytes, size, true); !markers) {
+        return Error{cannot_decode(format, "it " + markers.error())};
+    }
+    // stb_image reduces 16-bit PNG channels to 8 bits and expands grey, grey
     // with alpha and RGB to RGBA (alpha 255).
-    Result<Pixels> pixels = stb_decode(bytes, size, 4);
-    if (!pixels) return Error{"could not be decoded (" + pixels.error() + ")"};
+    Result<Pixels> pixels = decode_pixels(format, bytes, size, 4);
+    if (!pixels) return Error{cannot_decode(format, pixels.error())};
     if (pixels->width != header->width || pixels->height != header->height) {
-        return Error{"could not be decoded (its size changed while decoding)"};
+        return Error{cannot_decode(format, "its size changed while decoding")};
     }
     return pixels;
 }
 
 Result<Pixels> decode_grey_or_rgb(const unsigned char* bytes, std::size_t size) {
-    if (size > static_cast<std::size_t>(INT_MAX)) return Error{"is too large to decode"};
-    int w = 0, h = 0, n = 0;
-    if (!stbi_info_from_memory(bytes, static_cast<int>(size), &w, &h, &n)) return Error{stb_reason()};
-    return stb_decode(bytes, size, (n == 1 || n == 2) ? 1 : 3);
+    if (sniff_image(bytes, size) != ImageFormat::Png) return Error{"it is not PNG data"};
+    const Result<int> channels = stb::channels(bytes, size);
+    if (!channels) return Error{channels.error()};
+    return decode_pixels(ImageFormat::Png, bytes, size, (*channels == 1 || *channels == 2) ? 1 : 3);
 }
 
 }  // namespace impossible::image

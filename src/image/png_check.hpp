@@ -22,7 +22,19 @@ struct PngHeader {
 };
 
 // The header of a well-formed PNG, or why it is not one, in words ("is not a
-// PNG file", "has a damaged chunk 'IDAT' (its CRC does not match)").
+// PNG file", "has a damaged chunk 'IDAT' (its CRC does not match)"):
+// png_header, the pixel limit, then check_png_chunks.
 Result<PngHeader> check_png(const std::vector<unsigned char>& bytes);
+
+// The signature and the first chunk, which must be a whole IHDR of a picture
+// with pixels; no size limit. The error is check_png's words.
+Result<PngHeader> png_header(const unsigned char* bytes, std::size_t size);
+
+// Every chunk from the first to IEND: whole, a type of four letters, its CRC
+// right. The error is check_png's words.
+Result<void> check_png_chunks(const unsigned char* bytes, std::size_t size);
+
+// PNG's CRC-32 (ISO/IEC 15948, annex D).
+std::uint32_t png_crc32(const unsigned char* data, std::size_t size);
 
 }  // namespace impossible::image

@@ -84,7 +84,8 @@ TEST_F(HostileTextures, ABlendMaterialIsRefusedByName) {
 
 // stb_image names an unknown critical chunk by its four type bytes; a type
 // of a newline and an escape sequence must not reach the terminal (found by
-// gltf_fuzzer): the message stays one printable line.
+// gltf_fuzzer): the message stays one printable line. The chunk check now
+// refuses such a type first, by its offset.
 TEST_F(HostileTextures, AnUnknownChunkTypeWithControlBytesIsQuotedPrintably) {
     std::string png = png_file(1, 1, 8, 2, std::string("\0\x10\x20\x30", 4));
     const std::size_t iend = png.size() - 12;
@@ -92,9 +93,10 @@ TEST_F(HostileTextures, AnUnknownChunkTypeWithControlBytesIsQuotedPrintably) {
     spit(dir_ / "bad.png", png);
     layout_with_textures(R"({"floor": "bad.png"})");
     const Outcome r = run("$BIN validate t.json");
-    expect_refused(r, 1, "rooms[0].textures.floor: the image \"bad.png\" could not be decoded");
+    expect_refused(r, 1,
+                   "rooms[0].textures.floor: the image \"bad.png\" could not be decoded as PNG: it has a damaged "
+                   "chunk at byte 60 (its type is not four letters)");
     EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find("\\x0a\\x1b[H"), std::string::npos) << r.err;
 }
 
 }  // namespace

@@ -145,9 +145,9 @@ TEST_F(RoomTextures, FilesThatAreMissingNotImagesOrTooLargeAreErrorsAtThePath) {
     std::string cut = png(2, 2, 1, 2, 3);
     cut.resize(cut.size() - 30);
     write("tex/cut.png", cut);
-    expect_one_error_here(
-        hall_with(R"("textures": { "all": "tex/cut.png" })"), "\"tex/cut.png\"",
-        "rooms[0].textures.all: the image \"" + (dir / "tex/cut.png").string() + "\" could not be decoded (");
+    expect_one_error_here(hall_with(R"("textures": { "all": "tex/cut.png" })"), "\"tex/cut.png\"",
+                          "rooms[0].textures.all: the image \"" + (dir / "tex/cut.png").string() +
+                              "\" could not be decoded as PNG: it is truncated");
     write("tex/wide.png", png(9000, 1, 0, 0, 0));
     expect_one_error_here(hall_with(R"("textures": { "+z": "tex/wide.png" })"), "\"tex/wide.png\"",
                           "rooms[0].textures.+z: the image \"" + (dir / "tex/wide.png").string() +
