@@ -79,7 +79,8 @@ Result<void> check_buffer_file(const std::string& who, const std::string& says, 
     if (name.empty() || name.find('\0') != std::string::npos)
         return Error{who + " whose file name " + file + " is empty or holds a NUL"};
     const std::string path = (folder.empty() ? "/" : folder + "/") + name;
-    if (!inside_folder(path, folder)) return Error{who + " whose file " + file + " lies outside the model's folder"};
+    if (absolute_uri(uri) || !inside_folder(path, folder))
+        return Error{who + " whose file " + file + " lies outside the model's folder"};
     std::uintmax_t size = 0;
     if (const std::string problem = file_kind_problem(path, size); !problem.empty())
         return Error{who + " whose file " + file + " " + problem};

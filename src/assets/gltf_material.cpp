@@ -86,6 +86,10 @@ Result<std::pair<const unsigned char*, std::size_t>> image_bytes(const tinygltf:
         }
         return Error{who + " whose bufferView " + std::to_string(image.bufferView) + " does not lie inside its buffer"};
     }
+    const std::string file = quote(image.uri.substr(0, 200));
+    if (image.uri.rfind("data:", 0) != 0 && absolute_uri(image.uri)) {
+        return Error{who + " whose file " + file + " lies outside the model's folder"};
+    }
     const auto at = static_cast<std::size_t>(index);
     if (at < kept.delivered.size() && kept.delivered[at]) {
         return std::make_pair(kept.bytes[at].data(), kept.bytes[at].size());
@@ -95,7 +99,6 @@ Result<std::pair<const unsigned char*, std::size_t>> image_bytes(const tinygltf:
         return Error{who + " whose data: URI is not base64 data of type image/png or image/jpeg"};
     }
     // An external file tinygltf could not read: say why.
-    const std::string file = quote(image.uri.substr(0, 200));
     const std::string path = (folder.empty() ? "/" : folder + "/") + decode_uri(image.uri);
     if (!inside_folder(path, folder)) return Error{who + " whose file " + file + " lies outside the model's folder"};
     if (Result<void> readable = check_readable_file(path, limits::kMaxModelBytes, true); !readable) {

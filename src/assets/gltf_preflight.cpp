@@ -235,6 +235,18 @@ std::string decode_uri(const std::string& uri) {
     return out;
 }
 
+bool absolute_uri(const std::string& uri) {
+    const std::string name = decode_uri(uri);
+    if (!name.empty() && name[0] == '/') return true;
+    // RFC 3986, 3.1: scheme = ALPHA *( ALPHA / DIGIT / "+" / "-" / "." ), then ':'.
+    if (uri.empty() || !std::isalpha(static_cast<unsigned char>(uri[0]))) return false;
+    for (const char c : uri) {
+        if (c == ':') return true;
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '+' && c != '-' && c != '.') return false;
+    }
+    return false;
+}
+
 Result<GlbChunks> split_glb(const std::vector<unsigned char>& bytes) {
     if (bytes.size() < 12 || std::memcmp(bytes.data(), "glTF", 4) != 0)
         return invalid("it does not start with the .glb header (\"glTF\")");

@@ -51,4 +51,10 @@ bool inside_folder(const std::string& path, const std::string& folder);
 // A buffer URI as tinygltf decodes it (dlib::urldecode: %XX and '+').
 std::string decode_uri(const std::string& uri);
 
+// Whether a URI that is not a data: URI names a file by an absolute path
+// ("/etc/passwd", "%2Fetc/passwd") or with a scheme ("file:///etc/passwd"),
+// which lies outside the model's folder: tinygltf would look for it inside
+// (joined to the folder), so such a URI is refused.
+bool absolute_uri(const std::string& uri);
+
 }  // namespace impossible::assets
