@@ -40,7 +40,7 @@ install(
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(FILES ${CMAKE_SOURCE_DIR}/include/impossible/impossible.hpp ${CMAKE_BINARY_DIR}/include/impossible/version.hpp
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/impossible)
-install(FILES ${CMAKE_SOURCE_DIR}/docs/api.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
+install(FILES ${CMAKE_SOURCE_DIR}/docs/api.md ${CMAKE_SOURCE_DIR}/docs/python.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/examples/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/examples)
 
 # --- find_package(impossible): targets, config and version files ----------

@@ -57,6 +57,14 @@ if grep -vE ' impossible::api::' "$tmp/symbols.txt" | grep -vE ' (_init|_fini)$'
     fail "libimpossible.so exports symbols outside impossible::api"
 fi
 
+step "the installed Python module"
+[ -x /usr/bin/python3 ] || fail "no /usr/bin/python3 (scripts/setup.sh installs it)"
+module=$(find "$prefix/lib/python3/dist-packages" -name 'impossible*.so' | head -1)
+[ -n "$module" ] || fail "the Python module is not installed under $prefix/lib/python3/dist-packages"
+PYTHONPATH=$prefix/lib/python3/dist-packages /usr/bin/python3 -c \
+    'import impossible, sys; l = impossible.builtin(); sys.exit(0 if impossible.__version__ == sys.argv[1] and l.start_room == "hall" else 1)' \
+    "$version" || fail "the installed Python module does not import and load the built-in layout"
+
 step "the installed CLI"
 "$prefix/bin/impossible" render --size 64x48 --out "$tmp/cli.png" >"$tmp/cli.log" 2>&1 || {
     cat "$tmp/cli.log"
@@ -114,9 +122,11 @@ for f in ./usr/bin/impossible "./usr/lib/libimpossible.so.$version" ./usr/lib/li
          ./usr/include/impossible/impossible.hpp ./usr/include/impossible/version.hpp \
          ./usr/lib/cmake/impossible/impossibleConfig.cmake ./usr/lib/cmake/impossible/impossibleTargets.cmake \
          ./usr/lib/pkgconfig/impossible.pc ./usr/share/doc/impossible/api.md \
-         ./usr/share/doc/impossible/examples/embed/main.cpp; do
+         ./usr/share/doc/impossible/examples/embed/main.cpp ./usr/share/doc/impossible/python.md; do
     grep -qxF "$f" "$tmp/deb-files.txt" || { cat "$tmp/deb-files.txt"; fail "the .deb lacks $f"; }
 done
+grep -qE '^\./usr/lib/python3/dist-packages/impossible\..+\.so$' "$tmp/deb-files.txt" ||
+    fail "the .deb lacks the Python module under /usr/lib/python3/dist-packages"
 dpkg-deb -f "$deb" Package Version Maintainer Depends >"$tmp/deb-fields.txt"
 has "$tmp/deb-fields.txt" '^Package: impossible$'
 has "$tmp/deb-fields.txt" "^Version: $version\$"
