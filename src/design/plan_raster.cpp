@@ -1,5 +1,6 @@
 // The plan rasterised by our own code (for PNG files): every shape becomes
-// filled polygons (a stroke is a quad per segment plus round joins), drawn
+// filled polygons (design/plan_pieces.hpp: a stroke is a quad per segment
+// plus round joins, a dashed segment a run of dashes), drawn
 // with the even-odd rule (design/scanline.hpp) into an image 3 × 3 times
 // larger, blended with each shape's alpha, then averaged down. Text is left
 // out.
@@ -18,88 +19,11 @@
 #include <unordered_map>
 
 #include "design/plan.hpp"
+#include "design/plan_pieces.hpp"
 #include "design/scanline.hpp"
 
 namespace impossible::design {
 namespace {
-
-constexpr int kSuper = 3;
-constexpr double kTitle = 28.0;  // px above the floor for the title, as plan_svg.cpp leaves
-
-math::Polygon2 disc(glm::dvec2 c, double r) {
-    math::Polygon2 out;
-    for (int i = 0; i < 16; ++i)
-        out.push_back(c + r * glm::dvec2(std::cos(i * math::kPi / 8), std::sin(i * math::kPi / 8)));
-    return out;
-}
-
-// A stroke as polygons: segments (dashed ones cut into dashes) and joins.
-// Opaque strokes get round joins; translucent ones none, so nothing is
-// blended twice where pieces meet (they overlap at most at the joins).
-std::vector<math::Polygon2> stroke_polygons(const Shape& s, double k, double dash_on, double dash_off) {
-    std::vector<math::Polygon2> out;
-    const double half = std::max(0.5 * kSuper, 0.5 * s.width * k);
-    std::vector<glm::dvec2> pts = s.points;
-    if (s.closed && !pts.empty()) pts.push_back(pts.front());
-    for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
-        const glm::dvec2 a = pts[i], b = pts[i + 1];
-        const double length = glm::distance(a, b);
-        if (length < 1e-9) continue;
-        const glm::dvec2 dir = (b - a) / length, side = glm::dvec2(-dir.y, dir.x) * half;
-        const double period = s.dashed ? dash_on + dash_off : length;
-        for (double t = 0.0; t < length; t += period) {
-            const glm::dvec2 p = a + dir * t, q = a + dir * std::min(length, t + (s.dashed ? dash_on : length));
-            out.push_back({p + side, q + side, q - side, p - side});
-        }
-        if (s.colour.a >= 1.0 && half > kSuper) out.push_back(disc(b, half));
-    }
-    return out;
-}
-
-// One polygon to fill: its corners in Pieces::points, its colour, its rows.
-struct Piece {
-    std::size_t first = 0, count = 0;
-    float r = 0, g = 0, b = 0, a = 0;
-    RowRange rows;
-};
-
-// Every polygon of the drawing, in drawing order, in canvas pixels.
-struct Pieces {
-    std::vector<glm::dvec2> points;
-    std::vector<Piece> list;
-
-    void add(const math::Polygon2& poly, const Rgba& c, int height) {
-        const Piece p{points.size(),
-                      poly.size(),
-                      static_cast<float>(c.r),
-                      static_cast<float>(c.g),
-                      static_cast<float>(c.b),
-                      static_cast<float>(c.a),
-                      polygon_rows(poly.data(), poly.size(), height)};
-        if (p.rows.first > p.rows.last) return;  // covers no row
-        points.insert(points.end(), poly.begin(), poly.end());
-        list.push_back(p);
-    }
-};
-
-Pieces pieces_of(const Drawing& d, double k, int height) {
-    Pieces out;
-    auto px = [&](glm::dvec2 p) { return glm::dvec2((p.x - d.min.x) * k, (p.y - d.min.y) * k + kTitle * kSuper); };
-    for (const Shape& s : d.shapes) {
-        if (s.kind == Shape::Kind::Text) continue;
-        math::Polygon2 pts;
-        for (const glm::dvec2& p : s.points) pts.push_back(px(p));
-        if (s.kind == Shape::Kind::Fill) {
-            out.add(pts, s.colour, height);
-            continue;
-        }
-        Shape mapped = s;
-        mapped.points = std::move(pts);
-        for (const math::Polygon2& poly : stroke_polygons(mapped, k, 0.12 * k, 0.08 * k))
-            out.add(poly, s.colour, height);
-    }
-    return out;
-}
 
 // A span of one row with its piece's colour.
 struct RowSpan {
@@ -177,13 +101,15 @@ public:
         out_.clear();
         std::size_t kept = 0, kept_corners = 0;
         for (Active a : active_) {
-            const bool big = a.count > PolygonScan::kDirectEdges;
+            const bool big = !a.run && a.count > PolygonScan::kDirectEdges;
             if (a.last < y) {
                 if (big) scans_.erase(a.piece);
                 continue;
             }
             spans_.clear();
-            if (big) {
+            if (a.run) {
+                pieces_.runs[a.at].spans(y, width, a.near, spans_);
+            } else if (big) {
                 scans_.at(a.piece).spans(y, width, xs_, spans_);
             } else {
                 std::copy(corners_.begin() + static_cast<std::ptrdiff_t>(a.at),
@@ -204,9 +130,11 @@ public:
 private:
     struct Active {
         std::uint32_t piece, count;
-        std::size_t at;  // its corners in corners_ (few corners only)
+        std::size_t at;  // its corners in corners_ (few corners only), or its run in Pieces::runs
         int last;
         float r, g, b, a;
+        bool run;
+        DashRun::Cursor near;  // a run's dashes near the row
     };
     const Pieces& pieces_;
     std::vector<std::vector<std::uint32_t>> starting_;  // pieces by first row
@@ -218,12 +146,14 @@ private:
     std::vector<RowSpan> out_;
 
     void take(Active a, const glm::dvec2* corners) {
-        if (a.count <= PolygonScan::kDirectEdges) {
+        if (!a.run && a.count <= PolygonScan::kDirectEdges) {
             a.at = merged_corners_.size();
             merged_corners_.insert(merged_corners_.end(), corners, corners + a.count);
         }
         merged_.push_back(a);
     }
+
+    void take_active(std::size_t k) { take(active_[k], active_[k].run ? nullptr : corners_.data() + active_[k].at); }
 
     void join(int y) {
         std::vector<std::uint32_t>& joined = starting_[y];
@@ -233,12 +163,14 @@ private:
         std::size_t k = 0;
         for (const std::uint32_t i : joined) {
             const Piece& p = pieces_.list[i];
-            const glm::dvec2* corners = pieces_.points.data() + p.first;
-            if (p.count > PolygonScan::kDirectEdges) scans_.emplace(i, PolygonScan(corners, p.count));
-            for (; k < active_.size() && active_[k].piece < i; ++k) take(active_[k], corners_.data() + active_[k].at);
-            take({i, static_cast<std::uint32_t>(p.count), 0, p.rows.last, p.r, p.g, p.b, p.a}, corners);
+            const glm::dvec2* corners = p.run ? nullptr : pieces_.points.data() + p.first;
+            if (!p.run && p.count > PolygonScan::kDirectEdges) scans_.emplace(i, PolygonScan(corners, p.count));
+            for (; k < active_.size() && active_[k].piece < i; ++k) take_active(k);
+            take({i, static_cast<std::uint32_t>(p.count), p.first, p.rows.last, p.r, p.g, p.b, p.a, p.run,
+                  p.run ? pieces_.runs[p.first].start() : DashRun::Cursor{}},
+                 corners);
         }
-        for (; k < active_.size(); ++k) take(active_[k], corners_.data() + active_[k].at);
+        for (; k < active_.size(); ++k) take_active(k);
         active_.swap(merged_);
         corners_.swap(merged_corners_);
         std::vector<std::uint32_t>().swap(joined);
@@ -251,23 +183,23 @@ image::Pixels plan_raster(const Drawing& d, double k_out) {
     image::Pixels image;
     image.channels = 3;
     image.width = static_cast<int>(std::ceil((d.max.x - d.min.x) * k_out));
-    image.height = static_cast<int>(std::ceil((d.max.y - d.min.y) * k_out + kTitle));
-    const int w = image.width * kSuper, h = image.height * kSuper;
-    const Pieces pieces = pieces_of(d, k_out * kSuper, h);
+    image.height = static_cast<int>(std::ceil((d.max.y - d.min.y) * k_out + kPlanTitle));
+    const int w = image.width * kPlanSuper, h = image.height * kPlanSuper;
+    const Pieces pieces = plan_pieces(d, k_out * kPlanSuper, h);
     RowSweep sweep(pieces, h);
-    std::vector<float> strip(static_cast<std::size_t>(w) * kSuper * 3);
+    std::vector<float> strip(static_cast<std::size_t>(w) * kPlanSuper * 3);
     RowScratch scratch;
     image.data.resize(static_cast<std::size_t>(image.width) * image.height * 3);
     for (int y = 0; y < image.height; ++y) {
-        for (int sy = 0; sy < kSuper; ++sy)
-            draw_row(sweep.spans(y * kSuper + sy, w), scratch, &strip[static_cast<std::size_t>(sy) * w * 3], w);
+        for (int sy = 0; sy < kPlanSuper; ++sy)
+            draw_row(sweep.spans(y * kPlanSuper + sy, w), scratch, &strip[static_cast<std::size_t>(sy) * w * 3], w);
         for (int x = 0; x < image.width; ++x)
             for (int c = 0; c < 3; ++c) {
                 float sum = 0.0f;
-                for (int sy = 0; sy < kSuper; ++sy)
-                    for (int sx = 0; sx < kSuper; ++sx)
-                        sum += strip[(static_cast<std::size_t>(sy) * w + x * kSuper + sx) * 3 + c];
-                const float v = std::clamp(sum / (kSuper * kSuper), 0.0f, 1.0f);
+                for (int sy = 0; sy < kPlanSuper; ++sy)
+                    for (int sx = 0; sx < kPlanSuper; ++sx)
+                        sum += strip[(static_cast<std::size_t>(sy) * w + x * kPlanSuper + sx) * 3 + c];
+                const float v = std::clamp(sum / (kPlanSuper * kPlanSuper), 0.0f, 1.0f);
                 image.data[(static_cast<std::size_t>(y) * image.width + x) * 3 + c] = byte_of(v * 255.0f);
             }
     }
