@@ -55,15 +55,17 @@ Measured measured(const std::string& script, const fs::path& cwd, int limit_s) {
     return m;
 }
 
-// n identical 4 x 4 m rooms r0 ... r{n-1} on a 6 x 6 m play area, no doors.
-std::string identical_rooms(int n) {
+// n identical rooms r0 ... r{n-1}, `side` m square (4 by default), on a
+// play area 1 m wider all round; no doors.
+std::string identical_rooms(int n, int side = 4) {
+    const std::string s = std::to_string(side), edge = std::to_string(side + 1);
     std::string rooms;
     for (int i = 0; i < n; ++i)
-        rooms +=
-            std::string(i ? "," : "") + "{\"id\":\"r" + std::to_string(i) + "\",\"min\":[0,0,0],\"max\":[4,2.5,4]}";
-    return "{\"format\":\"impossible-layout\",\"version\":1,\"play_area\":{\"min\":[-1,-1],\"max\":[5,5]},"
-           "\"start\":{\"room\":\"r0\",\"position\":[2,1.6,2],\"yaw_deg\":0},\"rooms\":[" +
-           rooms + "],\"portals\":[]}";
+        rooms += std::string(i ? "," : "") + "{\"id\":\"r" + std::to_string(i) + "\",\"min\":[0,0,0],\"max\":[" + s +
+                 ",2.5," + s + "]}";
+    return "{\"format\":\"impossible-layout\",\"version\":1,\"play_area\":{\"min\":[-1,-1],\"max\":[" + edge + "," +
+           edge + "]},\"start\":{\"room\":\"r0\",\"position\":[2,1.6,2],\"yaw_deg\":0},\"rooms\":[" + rooms +
+           "],\"portals\":[]}";
 }
 
 // A star of n corners, alternately `outer` and `inner` m from the origin.
@@ -136,6 +138,17 @@ TEST_F(Hostile, TenThousandIdenticalRoomsPlanWithinLimits) {
     EXPECT_NE(slurp(dir_ / "err.txt").find("plan: 10000 rooms, 49995000 overlapping pairs (1000 drawn)"),
               std::string::npos)
         << slurp(dir_ / "err.txt");
+}
+
+TEST_F(Hostile, TenThousandLargeUnreachableRoomsPlanWithinLimits) {
+    // Each outline is dashed (the rooms are unreachable): 600 dashes of
+    // 0.12 m a room, 6 million in all, kept as where each starts.
+    spit(dir_ / "rooms.json", identical_rooms(10000, 30));
+    const Measured m = measured("$BIN plan rooms.json --out p.png >out.txt 2>err.txt", dir_, 120);
+    ASSERT_EQ(m.status, 0) << slurp(dir_ / "err.txt").substr(0, 2000);
+    EXPECT_LT(m.seconds, kSeconds);
+    EXPECT_LT(m.peak_mb, 512);  // 228 MB on the development machine; 1.1 GB with a polygon per dash
+    EXPECT_GT(fs::file_size(dir_ / "p.png"), 1000u);
 }
 
 TEST_F(Hostile, AThousandIdenticalRoomsPrintABoundedReport) {
