@@ -19,8 +19,10 @@ const char* kTraceHelp =
     "Computes one side-by-side stereo frame with the CPU reference ray tracer (double precision,\n"
     "rays followed through portals) for the same view as `impossible render`, and writes it as\n"
     "PNG. It is the accuracy oracle for the rasteriser: compare the two with `impossible compare`.\n"
-    "The options are render's; --backend, --stereo, --clip, --no-cull and --max-portal-passes only\n"
-    "matter to the rasteriser and are accepted and ignored. --stats prints rays per second instead.\n\n";
+    "The options are render's; --backend, --stereo, --clip and --no-cull only matter to the\n"
+    "rasteriser and are accepted and ignored. --max-portal-passes bounds each pixel's ray tree\n"
+    "(each sample's): past it, the rest of its portals show the fill colour, with a warning.\n"
+    "--stats prints rays per second instead.\n\n";
 
 // What trace takes besides the view options.
 struct TraceOptions {
@@ -53,7 +55,8 @@ int run_trace_command(const Args& args, std::ostream& out, std::ostream& err) {
 
     const auto start = std::chrono::steady_clock::now();
     const trace::Scene scene = value_or_throw(trace::prepare_scene(layout));
-    const image::Image image = value_or_throw(trace::trace_frame(scene, desc));
+    trace::TraceStats cut;
+    const image::Image image = value_or_throw(trace::trace_frame(scene, desc, &cut));
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     write_frame_pngs(outputs, options, image.width, image.height, image.rgb, image.ids);
@@ -67,8 +70,13 @@ int run_trace_command(const Args& args, std::ostream& out, std::ostream& err) {
         const int used = threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
         err << "stats: rays=" << rays << " seconds=" << seconds
             << " rays_per_s=" << (seconds > 0.0 ? static_cast<long>(rays / seconds) : 0) << " threads=" << used
-            << " fill_pixels=" << fills << " empty_pixels=" << nothing << "\n";
+            << " fill_pixels=" << fills << " empty_pixels=" << nothing << " budget_rays=" << cut.budget_rays
+            << " budget_fills=" << cut.budget_fills << "\n";
     }
+    if (cut.budget_fills > 0)
+        err << "warning: " << cut.budget_rays << " ray trees reached their budget of " << desc.max_portal_passes
+            << " portal passes each (--max-portal-passes); " << cut.budget_fills
+            << " portals show the fill colour instead of what lies behind them\n";
     return kExitOk;
 }
 

@@ -58,8 +58,9 @@ constexpr Option<ViewOptions> kViewOptions[] = {
     {"--max-depth", "N", "portals one line of sight may pass (default 8, at most 250)",
      [](ViewOptions& o, const OptionValue& v) { o.frame.max_depth = parse_int(v.name, v.text, 0, 250); }},
     {"--max-portal-passes", "N",
-     "portal passes one frame may draw (default 10000); past it, the\n"
-     "remaining portals show the fill colour and a warning says so",
+     "portal passes one frame may draw (trace: one pixel's ray tree;\n"
+     "default 10000); past it, the remaining portals show the fill colour\n"
+     "and a warning says so",
      [](ViewOptions& o, const OptionValue& v) {
          o.frame.max_portal_passes = parse_int(v.name, v.text, 0, 10'000'000);
      }},

@@ -8,6 +8,10 @@
 
 namespace impossible::math {
 
+// The default budget of portal passes (--max-portal-passes): per frame for
+// the rasteriser, per ray tree for the tracer (docs/bounded-work.md).
+inline constexpr int kDefaultMaxPortalPasses = 10'000;
+
 struct View {
     math::HeadPose head;
     int room = 0;             // index of the room the head is in
@@ -16,6 +20,10 @@ struct View {
     int eye_width = 1280;     // each eye's image; the side-by-side image is 2 × width
     int eye_height = 720;
     int max_depth = 8;  // portals one line of sight may pass
+    // Portal passes one frame (rasteriser) or one pixel sample's ray tree
+    // (tracer) may make; past it, portals show the fill colour. Only a view
+    // that needs more changes (docs/bounded-work.md).
+    int max_portal_passes = kDefaultMaxPortalPasses;
 };
 
 }  // namespace impossible::math

@@ -42,13 +42,12 @@ inline constexpr double kNearReversedZ = layout::limits::kNearReversedZ;  // 10 
 inline constexpr double kNearStandard = layout::limits::kNearStandard;    // 1 cm
 
 // The default budget of portal passes per frame (--max-portal-passes).
-inline constexpr int kDefaultMaxPortalPasses = 10'000;
+inline constexpr int kDefaultMaxPortalPasses = math::kDefaultMaxPortalPasses;
 
 // The view (scene/view.hpp) and how the rasteriser draws it.
+// View::max_portal_passes is the frame's budget: past it, portals show the
+// fill colour (FrameStats::budget_fills). Only a frame that needs more changes.
 struct FrameDesc : math::View {
-    // Portal passes one frame may draw; past it, portals show the fill colour
-    // (FrameStats::budget_fills). Only a frame that needs more changes.
-    int max_portal_passes = kDefaultMaxPortalPasses;
     double near = 0.0;  // 0: the depth mode's own (kNearReversedZ, kNearStandard)
     double far = 2e5;   // only for DepthMode::Standard: beyond any valid layout
     StereoMode stereo = StereoMode::ClipShift;

@@ -12,12 +12,6 @@ namespace impossible::trace {
 
 namespace {
 
-dvec3 axis_normal(int axis, double sign) {
-    dvec3 n(0.0);
-    n[axis] = sign;
-    return n;
-}
-
 // Keeps the hit (t, normal) in `best` when it is nearer.
 void keep_nearest(std::optional<SurfaceHit>& best, double t, const dvec3& normal) {
     if (!best || t < best->t) best = SurfaceHit{t, normal};
@@ -30,29 +24,8 @@ std::optional<double> hit_axis_rect(const AxisRect& rect, const dvec3& origin, c
     if (!(along * rect.sign < 0.0)) return std::nullopt;  // seen from behind, or edge-on
     const double t = (rect.coord - origin[rect.axis]) / along;
     if (!(t > 0.0)) return std::nullopt;
-    const dvec3 p = origin + t * dir;
-    for (int a = 0; a < 3; ++a) {
-        if (a == rect.axis) continue;
-        if (!(p[a] >= rect.lo[a] && p[a] <= rect.hi[a])) return std::nullopt;
-    }
+    if (!in_axis_rect(rect, origin + t * dir)) return std::nullopt;
     return t;
-}
-
-std::optional<SurfaceHit> hit_room_face(const RoomFace& face, const Scene& scene, const dvec3& origin, const dvec3& dir,
-                                        const ClipPlane& clip) {
-    const std::optional<double> t = hit_axis_rect(face.rect, origin, dir);
-    if (!t) return std::nullopt;
-    const dvec3 p = origin + *t * dir;
-    if (!clip.keeps(p)) return std::nullopt;
-    const dvec3 normal = axis_normal(face.rect.axis, face.rect.sign);
-    for (int index : face.holes) {
-        const ScenePortal& portal = scene.portals[index];
-        const dvec3 v = p - portal.rect.center;
-        if (std::abs(glm::dot(v, portal.right)) <= 0.5 * portal.rect.width &&
-            std::abs(glm::dot(v, portal.rect.up)) <= 0.5 * portal.rect.height)
-            return SurfaceHit{*t, normal, index};  // through the hole: the portal's front face
-    }
-    return SurfaceHit{*t, normal};
 }
 
 std::optional<SurfaceHit> hit_prop_box(const PropBox& box, const dvec3& origin, const dvec3& dir,
@@ -143,6 +116,11 @@ std::optional<SurfaceHit> hit_portal_box(const ScenePortal& portal, const dvec3&
     // Work in the portal's frame, where the box is [-w/2, w/2] × [-h/2, h/2] × [-depth, 0]
     // and the frame's axes are (right, up, normal). t is the same in both frames.
     const math::PortalRect& r = portal.rect;
+    // A portal in a hole leaves its front to hit_room_face, and only a door
+    // has inner faces: such a portal has nothing more to show unless the eye
+    // is in the door's column. Most rays stop here.
+    const bool inner = portal.kind == layout::PortalKind::Door && math::in_column(r, origin);
+    if (portal.in_hole && !inner) return std::nullopt;
     const dvec3 lo = dvec3(portal.to_local * dvec4(origin, 1.0));
     const dvec3 ld = dmat3(portal.to_local) * dir;
     const double hw = 0.5 * r.width, hh = 0.5 * r.height;
@@ -155,7 +133,7 @@ std::optional<SurfaceHit> hit_portal_box(const ScenePortal& portal, const dvec3&
     };
     const dvec3 box_min(-hw, -hh, -r.depth), box_max(hw, hh, 0.0);
     if (!portal.in_hole) try_face(2, 0.0, 1.0, box_min, box_max);  // the front rectangle, facing +n
-    if (portal.kind == layout::PortalKind::Door && math::in_column(r, origin)) {
+    if (inner) {
         // Inner faces, facing into the box.
         try_face(0, hw, -1.0, box_min, box_max);
         try_face(0, -hw, 1.0, box_min, box_max);

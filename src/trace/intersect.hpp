@@ -5,9 +5,12 @@
 // edges count as inside.
 #pragma once
 
+#include <cmath>
+#include <limits>
 #include <optional>
 #include <span>
 
+#include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
 #include "trace/trace_scene.hpp"
@@ -35,8 +38,36 @@ struct ClipPlane {
     }
 };
 
+// Whether a point of the rectangle's plane lies in it (edges count).
+inline bool in_axis_rect(const AxisRect& rect, const dvec3& p) {
+    for (int a = 0; a < 3; ++a) {
+        if (a == rect.axis) continue;
+        if (!(p[a] >= rect.lo[a] && p[a] <= rect.hi[a])) return false;
+    }
+    return true;
+}
+
 // The rectangle, seen from the side its normal points to.
 std::optional<double> hit_axis_rect(const AxisRect& rect, const dvec3& origin, const dvec3& dir);
+
+// The unit vector along `axis`, times sign (built without an indexed store,
+// which would keep it in memory on the tracer's hot path).
+inline dvec3 axis_normal(int axis, double sign) {
+    return dvec3(axis == 0 ? sign : 0.0, axis == 1 ? sign : 0.0, axis == 2 ? sign : 0.0);
+}
+
+// The portal (an index into Scene::portals) whose hole in `face` holds the
+// point p of the face's plane, tested in the portal's own frame; -1 for none.
+inline int hole_at(const RoomFace& face, const Scene& scene, const dvec3& p) {
+    for (int index : face.holes) {
+        const ScenePortal& portal = scene.portals[index];
+        const dvec3 v = p - portal.rect.center;
+        if (std::abs(glm::dot(v, portal.right)) <= 0.5 * portal.rect.width &&
+            std::abs(glm::dot(v, portal.rect.up)) <= 0.5 * portal.rect.height)
+            return index;
+    }
+    return -1;
+}
 
 // A room face with its holes (each hole tested in its portal's own frame:
 // |x| ≤ width/2 and |y| ≤ height/2 is inside the hole). A hit inside a hole
@@ -46,9 +77,26 @@ std::optional<double> hit_axis_rect(const AxisRect& rect, const dvec3& origin, c
 // tolerance off the face's plane. The rasteriser draws the front face in the
 // face's plane too (scene/room_mesh.cpp). Mirrors and windows fill their
 // holes the same way: the face is seen only from inside the room, so they
-// are seen only from their front.
-std::optional<SurfaceHit> hit_room_face(const RoomFace& face, const Scene& scene, const dvec3& origin, const dvec3& dir,
-                                        const ClipPlane& clip);
+// are seen only from their front. The hit's normal is the face's,
+// axis_normal(face.rect.axis, face.rect.sign). A hit at t_limit or beyond is
+// not reported (the tracer passes the nearest face so far). Defined here so
+// that it inlines: every ray tests its room's faces again at every portal.
+struct FaceHit {
+    double t = 0.0;
+    int portal = -1;  // ≥ 0: the front face of this portal, met in its hole
+};
+inline std::optional<FaceHit> hit_room_face(const RoomFace& face, const Scene& scene, const dvec3& origin,
+                                            const dvec3& dir, const ClipPlane& clip,
+                                            double t_limit = std::numeric_limits<double>::infinity()) {
+    const AxisRect& rect = face.rect;
+    const double along = dir[rect.axis];
+    if (!(along * rect.sign < 0.0)) return std::nullopt;  // seen from behind, or edge-on
+    const double t = (rect.coord - origin[rect.axis]) / along;
+    if (!(t > 0.0 && t < t_limit)) return std::nullopt;
+    const dvec3 p = origin + t * dir;
+    if (!in_axis_rect(rect, p) || !clip.keeps(p)) return std::nullopt;
+    return FaceHit{t, hole_at(face, scene, p)};
+}
 
 // A prop box from outside: the face where the ray enters it.
 std::optional<SurfaceHit> hit_prop_box(const PropBox& box, const dvec3& origin, const dvec3& dir,

@@ -145,6 +145,7 @@ Result<Scene> prepare_scene(const layout::Layout& layout) {
         if (!mirror) sp.transfer = math::transfer_matrix(p.rect, layout.portals[p.target].rect);
         if (p.kind != layout::PortalKind::Door) sp.reflection = math::reflection_matrix(p.rect);
         sp.clip_tolerance = 1e-9 * (1.0 + glm::length(p.rect.center));
+        sp.plane = math::portal_plane(p.rect);
         scene.portals.push_back(sp);
 
         SceneRoom& room = scene.rooms[p.room];
@@ -156,6 +157,7 @@ Result<Scene> prepare_scene(const layout::Layout& layout) {
                 break;  // a rectangle lies in one face's plane at most
             }
         }
+        if (!scene.portals[i].in_hole || p.kind == layout::PortalKind::Door) room.box_portals.push_back(i);
     }
     return scene;
 }

@@ -98,6 +98,7 @@ struct ScenePortal {
     dmat4 transfer{1.0};          // M_AB, onto the target portal (door, window)
     dmat4 reflection{1.0};        // M_P, the reflection in the plane (mirror, window)
     double clip_tolerance = 0.0;  // 1e-9 · (1 + |centre|): "strictly in front" of this plane
+    dvec4 plane{0.0};             // math::portal_plane(rect): the clip plane it sets
     bool in_hole = false;         // fills a hole of one of its room's faces
 };
 
@@ -128,7 +129,11 @@ struct SceneRoom {
     Bvh bvh;
     Bvh box_bvh;
     std::vector<int> portals;  // indices into Scene::portals
-    double checker = 0.0;      // checker side for the faces, 0: plain
+    // Those of `portals` with more to hit than a hole's front, which the
+    // faces meet (hit_room_face): free-standing portals and doors, whose
+    // inner faces an eye in the box's column sees (hit_portal_box).
+    std::vector<int> box_portals;
+    double checker = 0.0;  // checker side for the faces, 0: plain
 };
 
 struct Scene {

@@ -1,21 +1,14 @@
+// The tracer's rays (tracer.hpp, trace_ray): "What a pixel shows"
+// (layout-format.md) step by step, through portals, mirrors and windows.
 #include "trace/tracer.hpp"
 
-#include <algorithm>
-#include <array>
-#include <atomic>
-#include <cmath>
 #include <limits>
-#include <string>
-#include <system_error>
-#include <thread>
 
 #include <glm/geometric.hpp>
 
-#include "math/projection.hpp"
 #include "shading/shading.hpp"
 #include "trace/bvh.hpp"
 #include "trace/intersect.hpp"
-#include "trace/sample_pattern.hpp"
 
 namespace impossible::trace {
 
@@ -50,33 +43,52 @@ struct Nearest {
     }
 };
 
-Nearest nearest_in_room(const Scene& scene, int room_index, const dvec3& origin, const dvec3& dir,
-                        const ClipPlane& clip) {
+// Finds it into `nearest`, reused from ray to ray: each field a hit sets is
+// read only where that hit was kept (offer), so only `found` is reset, and
+// the struct is not cleared at every portal a ray passes.
+void nearest_in_room(const Scene& scene, int room_index, const dvec3& origin, const dvec3& dir, const ClipPlane& clip,
+                     Nearest& nearest) {
     const SceneRoom& room = scene.rooms[room_index];
-    Nearest nearest;
-    for (const RoomFace& face : room.faces) {
-        const std::optional<SurfaceHit> hit = hit_room_face(face, scene, origin, dir, clip);
-        if (nearest.offer(hit, hit ? hit->portal : -1, face.color, room.checker) && face.texture)
-            nearest.textured_face = &face;
+    nearest.found = false;
+    // The faces first, the first in order at the smallest t: a face no
+    // nearer than the nearest so far would lose to it.
+    int face = -1;
+    FaceHit face_hit{std::numeric_limits<double>::infinity(), -1};
+    for (int f = 0; f < layout::kFaceCount; ++f) {
+        if (const std::optional<FaceHit> hit = hit_room_face(room.faces[f], scene, origin, dir, clip, face_hit.t)) {
+            face = f;
+            face_hit = *hit;
+        }
+    }
+    if (face >= 0) {
+        const RoomFace& f = room.faces[face];
+        nearest.offer(SurfaceHit{face_hit.t, axis_normal(f.rect.axis, f.rect.sign)}, face_hit.portal, f.color,
+                      room.checker);
+        if (f.texture) nearest.textured_face = &f;
     }
     // The boxes after the faces, losing a tie to them; the first box of those
     // at the smallest t (bvh.hpp).
-    const double box_limit = nearest.found ? nearest.t : std::numeric_limits<double>::infinity();
-    const BoxHit box = room.box_bvh.nodes.empty() ? nearest_box_scan(room.boxes, origin, dir, clip, box_limit)
-                                                  : nearest_box(room.box_bvh, room.boxes, origin, dir, clip, box_limit);
-    if (box.hit) nearest.offer(box.hit, -1, room.boxes[box.index].color, 0.0);
+    if (!room.boxes.empty()) {
+        const double limit = nearest.found ? nearest.t : std::numeric_limits<double>::infinity();
+        const BoxHit box = room.box_bvh.nodes.empty() ? nearest_box_scan(room.boxes, origin, dir, clip, limit)
+                                                      : nearest_box(room.box_bvh, room.boxes, origin, dir, clip, limit);
+        if (box.hit) nearest.offer(box.hit, -1, room.boxes[box.index].color, 0.0);
+    }
     // The triangles come after the faces and boxes and lose a tie to them;
     // among themselves the first in the list wins one (bvh.hpp).
-    const double t_limit = nearest.found ? nearest.t : std::numeric_limits<double>::infinity();
-    const TriangleHit tri =
-        room.bvh.nodes.empty() ? nearest_triangle_scan(room.triangles, room.materials, origin, dir, clip, t_limit)
-                               : nearest_triangle(room.bvh, room.triangles, room.materials, origin, dir, clip, t_limit);
-    if (tri.hit && nearest.offer(tri.hit, -1, room.triangles[tri.index].color, 0.0)) {
-        nearest.triangle = tri.index;
-        nearest.barycentric = tri.hit->barycentric;
+    if (!room.triangles.empty()) {
+        const double limit = nearest.found ? nearest.t : std::numeric_limits<double>::infinity();
+        const TriangleHit tri =
+            room.bvh.nodes.empty()
+                ? nearest_triangle_scan(room.triangles, room.materials, origin, dir, clip, limit)
+                : nearest_triangle(room.bvh, room.triangles, room.materials, origin, dir, clip, limit);
+        if (tri.hit && nearest.offer(tri.hit, -1, room.triangles[tri.index].color, 0.0)) {
+            nearest.triangle = tri.index;
+            nearest.barycentric = tri.hit->barycentric;
+        }
     }
-    for (int p : room.portals) nearest.offer(hit_portal_box(scene.portals[p], origin, dir, clip), p, dvec3(0.0), 0.0);
-    return nearest;
+    for (int p : room.box_portals)
+        nearest.offer(hit_portal_box(scene.portals[p], origin, dir, clip), p, dvec3(0.0), 0.0);
 }
 
 // The base colour of the surface `n` found in room `room_index` (not a
@@ -113,8 +125,9 @@ void pass_through(const Scene& scene, const ScenePortal& a, Ray& ray) {
     ray.dir = dmat3(a.transfer) * ray.dir;
     ray.room = b.room;
     ++ray.portals_passed;
-    ray.clip.active = math::signed_distance(b.rect, ray.origin) < 0.0;
-    ray.clip.plane = math::portal_plane(b.rect);
+    // math::signed_distance(b.rect, ray.origin) < 0, written out to inline.
+    ray.clip.active = glm::dot(ray.origin - b.rect.center, b.rect.normal) < 0.0;
+    ray.clip.plane = b.plane;
     ray.clip.tolerance = b.clip_tolerance;
 }
 
@@ -127,10 +140,23 @@ Ray reflected(const ScenePortal& p, const Ray& ray) {
     r.dir = dmat3(p.reflection) * ray.dir;
     ++r.portals_passed;
     r.clip.active = true;
-    r.clip.plane = math::portal_plane(p.rect);
+    r.clip.plane = p.plane;
     r.clip.tolerance = p.clip_tolerance;
     return r;
 }
+
+// One ray tree (a pixel sample's): its limits, and the portal passes it has
+// made so far (docs/bounded-work.md). Every door, mirror and window branch
+// followed counts one, in the order the tree is followed (a window's
+// reflected branch first, as the rasteriser draws it); once `passes`
+// reaches the budget, every further portal shows the fill colour, as at the
+// depth limit.
+struct Tree {
+    int max_depth = 0;
+    int max_passes = 0;
+    int passes = 0;
+    int budget_fills = 0;  // portals shown as the fill because the passes were spent
+};
 
 // The state of follow's loop along one path: the ray, the colour of the
 // branches finished so far (each times its factor), the factor that
@@ -156,14 +182,14 @@ struct PathState {
     }
 };
 
-dvec3 follow(const Scene& scene, Ray ray, int max_depth, TraceHit* main);
+dvec3 follow(const Scene& scene, Ray ray, Tree& tree, TraceHit* main);
 
 // Step 5 at window P, hit at `point`: the reflected branch is followed by a
 // recursive call where the through branch goes on too; where the through
 // branch is cut by weight, the main path ends (id 255) and the loop follows
 // the reflected branch. False where both are cut: the path's colour is then
 // path.done.
-bool window_step(const Scene& scene, const ScenePortal& p, const dvec3& point, const dvec3& normal, int max_depth,
+bool window_step(const Scene& scene, const ScenePortal& p, const dvec3& point, const dvec3& normal, Tree& tree,
                  PathState& path) {
     Ray& ray = path.ray;
     const double r = p.reflectance;
@@ -176,7 +202,11 @@ bool window_step(const Scene& scene, const ScenePortal& p, const dvec3& point, c
     const bool through_on = through_weight >= shading::kMinBranchWeight;
     if (!back_on) path.done += back_factor * shading::kPortalFillColor;
     if (through_on) {
-        if (back_on) path.done += back_factor * follow(scene, back, max_depth, nullptr);
+        if (back_on) {
+            ++tree.passes;
+            path.done += back_factor * follow(scene, back, tree, nullptr);
+        }
+        ++tree.passes;
         pass_through(scene, p, ray);
         ray.weight = through_weight;
         path.factor = through_factor;
@@ -186,6 +216,7 @@ bool window_step(const Scene& scene, const ScenePortal& p, const dvec3& point, c
     path.end_main(shading::kFillId, ray.room, point, normal);
     path.done += through_factor * shading::kPortalFillColor;
     if (!back_on) return false;
+    ++tree.passes;
     ray = back;
     path.factor = back_factor;
     return true;
@@ -205,11 +236,12 @@ bool window_step(const Scene& scene, const ScenePortal& p, const dvec3& point, c
 // While `main` is set, the loop's path is the main one (the id's) and its end
 // is written there (all of TraceHit but the colour); it ends where that path
 // ends, or at a window whose through branch is cut by weight (id 255).
-dvec3 follow(const Scene& scene, Ray ray, int max_depth, TraceHit* main) {
+dvec3 follow(const Scene& scene, Ray ray, Tree& tree, TraceHit* main) {
     PathState path{ray, dvec3(0.0), dvec3(1.0), main};
+    Nearest n;
     for (;;) {
         const Ray& now = path.ray;
-        const Nearest n = nearest_in_room(scene, now.room, now.origin, now.dir, now.clip);
+        nearest_in_room(scene, now.room, now.origin, now.dir, now.clip, n);
         if (!n.found) {
             path.end_main(kIdNothing, -1, dvec3(0.0), dvec3(0.0));
             return path.done + path.factor * shading::kBackgroundColor;
@@ -220,14 +252,22 @@ dvec3 follow(const Scene& scene, Ray ray, int max_depth, TraceHit* main) {
             return path.done +
                    path.factor * shading::shade(base_color(scene, now.room, n, point), n.normal, point, n.checker);
         }
-        if (now.portals_passed >= max_depth) {  // step 3, for every kind
+        // Step 3, for every kind; then the tree's budget, counted as a
+        // budget fill only where the depth allows more.
+        const bool deep = now.portals_passed >= tree.max_depth;
+        if (deep || tree.passes >= tree.max_passes) {
+            tree.budget_fills += deep ? 0 : 1;
             path.end_main(shading::kFillId, now.room, point, n.normal);
             return path.done + path.factor * shading::kPortalFillColor;
         }
         const ScenePortal& p = scene.portals[n.portal];
         switch (p.kind) {
-            case layout::PortalKind::Door: pass_through(scene, p, path.ray); break;
+            case layout::PortalKind::Door:
+                ++tree.passes;
+                pass_through(scene, p, path.ray);
+                break;
             case layout::PortalKind::Mirror: {  // step 4; never cut by weight
+                ++tree.passes;
                 const double weight = now.weight * shading::max_channel(p.tint);
                 path.ray = reflected(p, now);
                 path.ray.weight = weight;
@@ -235,7 +275,7 @@ dvec3 follow(const Scene& scene, Ray ray, int max_depth, TraceHit* main) {
                 break;
             }
             case layout::PortalKind::Window:
-                if (!window_step(scene, p, point, n.normal, max_depth, path)) return path.done;
+                if (!window_step(scene, p, point, n.normal, tree, path)) return path.done;
                 break;
         }
     }
@@ -243,116 +283,21 @@ dvec3 follow(const Scene& scene, Ray ray, int max_depth, TraceHit* main) {
 
 }  // namespace
 
-TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, int room, int max_depth) {
+TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, int room, const RayLimits& limits) {
     TraceHit hit;
     Ray ray;
     ray.origin = origin;
     ray.dir = dir;
     ray.room = room;
-    hit.color = follow(scene, ray, max_depth, &hit);
+    Tree tree{limits.max_depth, limits.max_passes};
+    hit.color = follow(scene, ray, tree, &hit);
+    hit.passes = tree.passes;
+    hit.budget_fills = tree.budget_fills;
     return hit;
 }
 
-std::uint8_t to_byte(double c) { return static_cast<std::uint8_t>(std::lround(std::clamp(c, 0.0, 1.0) * 255.0)); }
-
-namespace {
-
-math::Frustum frustum_of(const TraceDesc& desc) {
-    math::Frustum f;
-    f.fov_y_deg = desc.fov_y_deg;
-    f.aspect = static_cast<double>(desc.eye_width) / desc.eye_height;
-    return f;
-}
-
-PixelRay eye_pixel_ray(const TraceDesc& desc, const math::Frustum& frustum, const math::Eye& eye, int i, int j) {
-    const dvec3 dir_eye = math::pixel_ray_eye(frustum, desc.eye_width, desc.eye_height, i, j);
-    return {eye.position, glm::normalize(eye.rotation * dir_eye)};
-}
-
-// The ray through a point of an eye's image (pixel units, rows from the top).
-PixelRay eye_point_ray(const TraceDesc& desc, const math::Frustum& frustum, const math::Eye& eye, double x, double y) {
-    const dvec3 dir_eye = math::image_point_ray_eye(frustum, desc.eye_width, desc.eye_height, x, y);
-    return {eye.position, glm::normalize(eye.rotation * dir_eye)};
-}
-
-// One pixel's id and bytes: the centre ray's id; with several samples, the
-// mean of the samples' bytes rounded to nearest (half up), like a resolve.
-void trace_pixel(const Scene& scene, const TraceDesc& desc, const math::Frustum& frustum, const math::Eye& eye, int i,
-                 int j, std::uint8_t* id, std::uint8_t* rgb) {
-    const PixelRay centre = eye_pixel_ray(desc, frustum, eye, i, j);
-    const TraceHit hit = trace_ray(scene, centre.origin, centre.dir, desc.room, desc.max_depth);
-    *id = static_cast<std::uint8_t>(hit.id);
-    if (desc.samples <= 1) {
-        for (int c = 0; c < 3; ++c) rgb[c] = to_byte(hit.color[c]);
-        return;
-    }
-    int sum[3] = {0, 0, 0};
-    for (const SamplePosition& s : sample_pattern(desc.samples)) {
-        const PixelRay ray = eye_point_ray(desc, frustum, eye, i + s.x, j + 1.0 - s.y);
-        const TraceHit sample = trace_ray(scene, ray.origin, ray.dir, desc.room, desc.max_depth);
-        for (int c = 0; c < 3; ++c) sum[c] += to_byte(sample.color[c]);
-    }
-    for (int c = 0; c < 3; ++c) rgb[c] = static_cast<std::uint8_t>((2 * sum[c] + desc.samples) / (2 * desc.samples));
-}
-
-}  // namespace
-
-PixelRay pixel_ray(const TraceDesc& desc, int eye, int i, int j) {
-    return eye_pixel_ray(desc, frustum_of(desc), math::eyes_of(desc.head, desc.ipd)[eye], i, j);
-}
-
-Result<image::Image> trace_frame(const Scene& scene, const TraceDesc& desc) {
-    if (desc.room < 0 || desc.room >= static_cast<int>(scene.rooms.size()))
-        return Error{"trace: room index " + std::to_string(desc.room) + " is out of range"};
-    if (desc.eye_width <= 0 || desc.eye_height <= 0 || desc.eye_width > 1 << 15 || desc.eye_height > 1 << 15)
-        return Error{"trace: bad eye image size"};
-    if (desc.max_depth < 0) return Error{"trace: max_depth is negative"};
-    if (sample_pattern(desc.samples).empty())
-        return Error{"trace: no sample pattern for " + std::to_string(desc.samples) + " samples"};
-
-    image::Image image;
-    image.width = 2 * desc.eye_width;
-    image.height = desc.eye_height;
-    const size_t pixels = static_cast<size_t>(image.width) * image.height;
-    image.rgb.assign(3 * pixels, 0);
-    image.ids.assign(pixels, 0);
-
-    const std::array<math::Eye, 2> eyes = math::eyes_of(desc.head, desc.ipd);
-    const math::Frustum frustum = frustum_of(desc);
-    auto trace_row = [&](int j) {
-        for (int eye = 0; eye < 2; ++eye) {
-            for (int i = 0; i < desc.eye_width; ++i) {
-                const size_t at = static_cast<size_t>(j) * image.width + eye * desc.eye_width + i;
-                trace_pixel(scene, desc, frustum, eyes[eye], i, j, &image.ids[at], &image.rgb[3 * at]);
-            }
-        }
-    };
-    // Threads take rows from a shared counter. Each pixel depends only on its
-    // own ray and is written by one thread, so the image is the same for any
-    // thread count (and if a thread cannot be started, the others do its rows).
-    std::atomic<int> next_row{0};
-    auto worker = [&] {
-        for (int j = next_row++; j < desc.eye_height; j = next_row++) trace_row(j);
-    };
-    int threads = desc.threads > 0 ? desc.threads : static_cast<int>(std::thread::hardware_concurrency());
-    threads = std::clamp(threads, 1, desc.eye_height);
-    std::vector<std::thread> helpers;
-    for (int k = 1; k < threads; ++k) {
-        try {
-            helpers.emplace_back(worker);
-        } catch (const std::system_error&) {
-            break;
-        }
-    }
-    worker();
-    for (std::thread& h : helpers) h.join();
-    return image;
-}
-
-Result<image::Image> trace_frame(const layout::Layout& layout, const TraceDesc& desc) {
-    const Result<Scene> scene = prepare_scene(layout);
-    if (!scene) return scene;
-    return trace_frame(*scene, desc);
+TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, int room, int max_depth) {
+    return trace_ray(scene, origin, dir, room, RayLimits{max_depth});
 }
 
 }  // namespace impossible::trace

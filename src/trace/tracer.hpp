@@ -25,8 +25,9 @@ inline constexpr std::uint8_t kIdNothing = 0;
 // blend of its branches in it. The other fields describe the main path, the
 // one the id comes from: through doors, mirrors (reflected) and windows
 // (their through branch). That path ends on a surface, on nothing, at the
-// recursion limit, or at a window whose through branch is cut by the weight
-// rule (scene/shading.hpp, kMinBranchWeight: id 255, as at the limit).
+// recursion limit or the tree's budget of portal passes, or at a window
+// whose through branch is cut by the weight rule (scene/shading.hpp,
+// kMinBranchWeight: id 255, as at the limit).
 struct TraceHit {
     int id = kIdNothing;     // 1 + room index, kIdNothing, or shading::kFillId
     int room = -1;           // the room the path ended in (-1 when nothing was hit)
@@ -37,15 +38,30 @@ struct TraceHit {
     dvec3 normal{0.0};       // front-facing normal at `point`
     dvec3 origin{0.0};       // the final (possibly virtual) eye and direction
     dvec3 dir{0.0};
+    int passes = 0;        // portal passes of the whole ray tree (RayLimits::max_passes)
+    int budget_fills = 0;  // portals the tree shows as the fill because its passes were spent
+};
+
+// The bounds of one ray tree: portals on any one line of sight (a window's
+// two branches each count it once), and portal passes in the whole tree
+// (docs/bounded-work.md): every door, mirror and window branch followed
+// counts one, and once max_passes are made every further portal shows the
+// fill colour (id 255 on the id's path), as at the depth limit. The tree is
+// followed depth first, a window's reflected branch before its through
+// branch, so where the budget falls does not depend on threads or pixel order.
+struct RayLimits {
+    int max_depth = 8;
+    int max_passes = math::kDefaultMaxPortalPasses;
 };
 
 // Follows the ray from `origin` (an eye in room `room`) along `dir` (any
-// length but not zero), through at most `max_depth` portals on any one line
-// of sight (a window's two branches each count it once). `room` must be a
-// valid room index.
+// length but not zero) within `limits`. `room` must be a valid room index.
+TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, int room, const RayLimits& limits);
+// The same with the default budget of passes.
 TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, int room, int max_depth);
 
-// The view (scene/view.hpp) and how the tracer computes it.
+// The view (scene/view.hpp) and how the tracer computes it. The view's
+// max_portal_passes is each ray tree's budget (RayLimits::max_passes).
 struct TraceDesc : math::View {
     int threads = 0;  // 0: std::thread::hardware_concurrency()
     // Supersampling: 1 traces the pixel centre (exactly as before); 2, 4, 8
@@ -67,11 +83,19 @@ struct PixelRay {
 };
 PixelRay pixel_ray(const TraceDesc& desc, int eye, int i, int j);
 
+// What the budget of portal passes cut in a frame, summed over its ray trees
+// (one per pixel sample); the same whatever the thread count.
+struct TraceStats {
+    long budget_rays = 0;   // ray trees that met a portal after their passes were spent
+    long budget_fills = 0;  // portals those trees show as the fill because of it
+};
+
 // Traces every pixel of both eyes. Rows are split across threads; the image
-// does not depend on the thread count. A bad room index, size, negative
-// depth or a sample count with no pattern is an error (docs/choices.md,
-// "Errors and results in the code"), as is a layout prepare_scene refuses.
-Result<image::Image> trace_frame(const Scene& scene, const TraceDesc& desc);
+// (and `stats`, where given) does not depend on the thread count. A bad room
+// index, size, negative depth or budget, or a sample count with no pattern
+// is an error (docs/choices.md, "Errors and results in the code"), as is a
+// layout prepare_scene refuses.
+Result<image::Image> trace_frame(const Scene& scene, const TraceDesc& desc, TraceStats* stats = nullptr);
 Result<image::Image> trace_frame(const layout::Layout& layout, const TraceDesc& desc);
 
 }  // namespace impossible::trace
