@@ -41,30 +41,6 @@ std::string error_of(const Result<void>& drawn) { return drawn ? std::string() :
 // Passed samples per pixel sample: with multisampling, a query counts samples.
 double pixels_of(const render::FrameDesc& f) { return 2.0 * f.eye_width * f.eye_height * f.samples; }
 
-// Without culling every portal of a cell is drawn at every level: the passes
-// of a frame are the paths of up to `depth` portals from `room` (fewer where
-// the portal a view came out of lies behind it). A door leads on in its
-// target's room, a mirror in its own, and a window in both (its through and
-// its reflected view; layout-format.md, "What a pixel shows"), each view one
-// pass. An upper bound, capped.
-constexpr double kMaxUnculledPasses = 20000;
-
-double unculled_pass_bound(const layout::Layout& layout, int room, int depth) {
-    std::vector<double> paths(layout.rooms.size(), 0.0);  // passes from each room with d levels left
-    for (int d = 1; d <= depth; ++d) {
-        std::vector<double> next(layout.rooms.size(), 0.0);
-        for (const layout::Portal& p : layout.portals) {
-            double passes = 0.0;
-            if (p.kind != layout::PortalKind::Door) passes += 1.0 + paths[p.room];  // the reflection
-            if (p.kind != layout::PortalKind::Mirror) passes += 1.0 + paths[layout.portals[p.target].room];
-            next[p.room] = std::min(1e18, next[p.room] + passes);
-        }
-        paths = next;
-        if (paths[room] > kMaxUnculledPasses) break;
-    }
-    return paths[room];
-}
-
 struct Measurer {
     const BenchPlan& plan;
     const std::vector<BenchPose>& poses;
@@ -74,21 +50,11 @@ struct Measurer {
 
     render::Renderer& renderer_of(const BenchConfig& c) { return *renderers[c.layout_variant]; }
 
-    // Draws every configuration once, marking those the driver cannot do,
-    // and those that would take too long.
+    // Draws every configuration once, marking those the driver cannot do.
+    // (Without culling a frame makes the passes it makes with culling: the
+    // pixel rule and the budget bound both; docs/bounded-work.md.)
     void probe() {
         for (ConfigResult& r : results) {
-            if (!r.config.frame.cull_portals) {
-                const layout::Layout& l = plan.layouts[r.config.layout_variant];
-                double worst = 0;
-                for (const BenchPose& p : poses)
-                    worst = std::max(worst, unculled_pass_bound(l, p.room, r.config.frame.max_depth));
-                if (worst > kMaxUnculledPasses) {
-                    r.error = "culling off would draw up to " + std::to_string(static_cast<long long>(worst)) +
-                              " portal passes (every portal at every level)";
-                    continue;
-                }
-            }
             render::FrameStats stats;
             r.error = error_of(renderer_of(r.config).draw(frame_at(r.config, poses[0]), &stats));
         }

@@ -143,8 +143,9 @@ void set_eye_uniforms(const DrawContext& ctx, const LevelView& view, const Scene
             // One pixel of margin keeps float rounding from trimming a pixel
             // whose centre the portal covers; the stencil bounds the rest.
             // Never past the eye's own image: in clip-shift mode x = ±1 is
-            // the seam between the two eyes.
-            nr = intersect(widened(nr, 1.0, eye_w, eye_h), NdcRect{});
+            // the seam between the two eyes. Without culling, the whole
+            // image: only the stencil bounds the draw.
+            nr = ctx.frame.cull_portals ? intersect(widened(nr, 1.0, eye_w, eye_h), NdcRect{}) : NdcRect{};
         }
         rect[e][0] = static_cast<float>(nr.x0);
         rect[e][1] = static_cast<float>(nr.y0);

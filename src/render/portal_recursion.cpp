@@ -113,13 +113,18 @@ void draw_top_portal_profiled(const DrawContext& ctx, const LevelView& view, int
 }
 
 // Which part of each eye's image may show each portal of the view's cell:
-// none where culling finds the portal invisible to the eye. The portal the
-// view came out of lies behind a virtual eye that stands behind it, where
-// the plane clips it.
+// none where the pixel rule (docs/bounded-work.md) finds that the portal
+// covers no pixel centre of the eye's rectangle, or, with culling, where a
+// box prop hides it. Without culling (--no-cull) the rule still decides
+// which portals are drawn, so that the frame makes the same passes; only
+// the draws are not narrowed (set_eye_uniforms, level_scissor). The portal
+// the view came out of lies behind a virtual eye that stands behind it,
+// where the plane clips it.
 std::vector<std::array<NdcRect, 2>> visible_portals(const DrawContext& ctx, const LevelView& view,
                                                     const std::vector<int>& portals) {
     const RendererData& r = ctx.renderer;
     const FrameDesc& f = ctx.frame;
+    const bool occluders = f.cull_portals && f.cull_objects;
     std::vector<std::array<NdcRect, 2>> visible(portals.size());
     for (size_t k = 0; k < portals.size(); ++k) {
         const int p = portals[k];
@@ -128,11 +133,9 @@ std::vector<std::array<NdcRect, 2>> visible_portals(const DrawContext& ctx, cons
             const bool behind_exit = p == view.entered_by && ev.behind_exit;
             if (behind_exit || !ev.active)
                 visible[k][e] = NdcRect::none();
-            else if (!f.cull_portals)
-                visible[k][e] = ev.rect;
             else if (const NdcRect rect = portal_rect(r.portals[p].rect, ev);
                      covers_pixel_centre(rect, f.eye_width, f.eye_height, f.samples) &&
-                     !(f.cull_objects &&
+                     !(occluders &&
                        hidden_by_occluder(r.objects[static_cast<size_t>(view.cell)], ev, r.portals[p].rect)))
                 visible[k][e] = rect;
             else
