@@ -29,9 +29,9 @@ inline Pose to_pose(const math::HeadPose& h) {
 // sizes and numbers checked as the CLI checks them.
 Result<math::View> resolve_view(const layout::Layout& layout, const View& view);
 
-// The room holding the head, as resolve_view finds it; -1 with `why` set
-// when none or several do.
-int room_of_head(const layout::Layout& layout, const math::dvec3& head, std::string& why);
+// The rooms whose boxes hold the head, in file order: a view given only a
+// pose is in the one room holding it (the API's and the commands' rule).
+std::vector<int> rooms_holding(const layout::Layout& layout, const math::dvec3& head);
 
 // Runs `body`, turning any exception (memory, a library's) into an Error:
 // nothing throws across the API.

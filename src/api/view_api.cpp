@@ -33,19 +33,14 @@ std::string range_problem(const View& v) {
 
 }  // namespace
 
-int room_of_head(const layout::Layout& layout, const math::dvec3& p, std::string& why) {
+std::vector<int> rooms_holding(const layout::Layout& layout, const math::dvec3& p) {
     std::vector<int> holding;
     for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
         const layout::Room& r = layout.rooms[i];
         if (p.x >= r.min.x && p.x <= r.max.x && p.y >= r.min.y && p.y <= r.max.y && p.z >= r.min.z && p.z <= r.max.z)
             holding.push_back(static_cast<int>(i));
     }
-    if (holding.size() == 1) return holding[0];
-    std::string names;
-    for (int i : holding) names += (names.empty() ? "" : ", ") + layout.rooms[i].id;
-    why = holding.empty() ? "the head is in no room; give the room"
-                          : "the head is in several rooms (" + names + "); give the room";
-    return -1;
+    return holding;
 }
 
 Result<math::View> resolve_view(const layout::Layout& layout, const View& view) {
@@ -68,9 +63,14 @@ Result<math::View> resolve_view(const layout::Layout& layout, const View& view) 
     } else if (!view.pose) {
         v.room = layout.start.room;
     } else {
-        std::string why;
-        v.room = room_of_head(layout, v.head.position, why);
-        if (v.room < 0) return impossible::Error{why};
+        const std::vector<int> holding = rooms_holding(layout, v.head.position);
+        if (holding.size() != 1) {
+            std::string names;
+            for (int i : holding) names += (names.empty() ? "" : ", ") + layout.rooms[i].id;
+            return impossible::Error{holding.empty() ? "the head is in no room; give the room"
+                                                     : "the head is in several rooms (" + names + "); give the room"};
+        }
+        v.room = holding[0];
     }
     return v;
 }

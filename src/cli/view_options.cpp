@@ -3,6 +3,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "api/api_data.hpp"
 #include "image/png.hpp"
 
 namespace impossible::cli {
@@ -184,14 +185,7 @@ render::FrameDesc frame_for(const layout::Layout& layout, const ViewOptions& o) 
     } else if (!o.pose) {
         f.room = layout.start.room;
     } else {
-        std::vector<int> holding;
-        const math::dvec3 p = f.head.position;
-        for (size_t i = 0; i < layout.rooms.size(); ++i) {
-            const layout::Room& r = layout.rooms[i];
-            if (p.x >= r.min.x && p.x <= r.max.x && p.y >= r.min.y && p.y <= r.max.y && p.z >= r.min.z &&
-                p.z <= r.max.z)
-                holding.push_back(static_cast<int>(i));
-        }
+        const std::vector<int> holding = api::rooms_holding(layout, f.head.position);
         if (holding.size() != 1) {
             std::string names;
             for (int i : holding) names += (names.empty() ? "" : ", ") + layout.rooms[i].id;

@@ -11,6 +11,7 @@
 #include "layout/layout.hpp"
 #include "math/projection.hpp"
 #include "trace/sample_pattern.hpp"
+#include "trace/trace_test_util.hpp"
 #include "trace/tracer.hpp"
 
 namespace impossible::trace {
