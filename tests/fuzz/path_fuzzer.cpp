@@ -6,10 +6,11 @@
 // checks:
 //   - an error is one line without control characters and valid UTF-8
 //     (fuzz_check.hpp) starting "fuzz.txt:LINE: " (stream) or with the file's
-//     path (file), LINE between 1 and the input's lines + 1;
+//     path (file), LINE between 1 and the input's lines + 1, or, for an
+//     error about the whole file (no poses, UTF-16/32 text), no line;
 //   - every pose is six finite numbers within +-1e6;
 //   - the two readers agree: the same poses, the same message after the
-//     name, and a file of no poses is the error "holds no poses";
+//     name, and a file of no poses is the error "holds no poses" for both;
 //   - poses printed with 17 digits read back bit for bit.
 // Seeds: tests/fuzz/path_corpus.
 #include <fcntl.h>
@@ -78,10 +79,23 @@ bool same_poses(const std::vector<HeadPose>& a, const std::vector<HeadPose>& b) 
     return true;
 }
 
-// "NAME:LINE: message" with LINE in [1, max_line]; returns the message.
+// Errors about the whole file rather than one line: no poses at all, or text
+// in a wide encoding (caught on the first line's byte order mark).
+bool whole_file_error(const std::string& message) {
+    return message == "the path file holds no poses" ||
+           (message.rfind("is UTF-", 0) == 0 && message.find(" text; save it as UTF-8 or ASCII") != std::string::npos);
+}
+
+// "NAME:LINE: message" with LINE in [1, max_line], or "NAME: message" for an
+// error about the whole file; returns the message.
 std::string message_after(const std::string& error, const std::string& name, std::size_t max_line) {
     require_clean_line(error);
     require(error.compare(0, name.size() + 1, name + ":") == 0, "an error starts with the name");
+    if (error.compare(name.size() + 1, 1, " ") == 0) {
+        const std::string message = error.substr(name.size() + 2);
+        require(whole_file_error(message), "an error without a line is about the whole file");
+        return message;
+    }
     std::size_t i = name.size() + 1;
     std::size_t line = 0;
     const std::size_t digits = i;
@@ -116,13 +130,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (double v : {p.position.x, p.position.y, p.position.z, p.yaw_deg, p.pitch_deg, p.roll_deg})
             require(std::isfinite(v) && std::abs(v) <= 1e6, "every pose finite, within 1e6");
     }
-    require(stream->size() <= lines, "at most a pose a line");
-    if (stream->empty()) {
-        require(!file && file.error() == path + ": the path file holds no poses",
-                "a file of no poses is an error for the file reader");
-    } else {
-        require(file && same_poses(*file, *stream), "both readers give the same poses");
-    }
+    require(!stream->empty() && stream->size() <= lines, "at least one pose, at most a pose a line");
+    require(file && same_poses(*file, *stream), "both readers give the same poses");
 
     std::string printed = "# printed again\n";
     char line[256];
