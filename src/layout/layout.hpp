@@ -30,10 +30,26 @@ enum class Face : int { Floor = 0, Ceiling, NegX, PosX, NegZ, PosZ };
 inline constexpr int kFaceCount = 6;
 inline constexpr std::array<const char*, kFaceCount> kFaceNames = {"floor", "ceiling", "-x", "+x", "-z", "+z"};
 
+// layout-format.md, "Moving props": the prop's offset from where the layout
+// puts it at time t (linear between keys).
+struct MotionKey {
+    double t = 0.0;
+    glm::dvec3 offset{0.0};
+};
+
+struct Motion {
+    // Empty: the prop does not move. Otherwise keys[0].t == 0 and the times
+    // increase strictly (the loader checks).
+    std::vector<MotionKey> keys;
+    bool loop = false;  // repeat with the period keys.back().t
+};
+
 struct BoxProp {
     glm::dvec3 min{0.0};
     glm::dvec3 max{0.0};
     glm::dvec3 color{0.8};  // defaults to the room's `color`
+    std::string id;         // optional ("" none); unique among the layout's props
+    Motion motion;
 };
 
 struct GltfProp {
@@ -45,6 +61,8 @@ struct GltfProp {
     std::vector<assets::ModelTriangle> triangles;  // read by the loader
     std::vector<assets::Material> materials;       // those the triangles use, by ModelTriangle::material
     std::vector<assets::Texture> textures;         // those the materials use, by Material::texture
+    std::string id;                                // optional ("" none); unique among the layout's props
+    Motion motion;
 };
 
 // The prop's model → layout transform: scale, then yaw about +Y, then move.
@@ -52,6 +70,35 @@ glm::dvec3 place_model_point(const GltfProp& prop, const glm::dvec3& p);
 glm::dvec3 place_model_normal(const GltfProp& prop, const glm::dvec3& n);
 
 using Prop = std::variant<BoxProp, GltfProp>;
+
+const std::string& prop_id(const Prop& prop);
+const Motion& prop_motion(const Prop& prop);
+// The point that walks the motion path: a box's centre, a model's `position`.
+glm::dvec3 prop_anchor(const Prop& prop);
+
+// Top-level `hands` (layout-format.md, "Moving props, hands and crossing
+// objects"): how a tracked hand is drawn, centred on its position, in the
+// hand's frame (x right, y up, z back, as a head pose's rotation columns).
+struct HandShape {
+    // A glTF model (position 0, yaw 0, its `scale`), turned by the hand's
+    // orientation so that the model's -Z points along the hand's forward;
+    // none: the box.
+    std::optional<GltfProp> model;
+    glm::dvec3 box{0.08, 0.04, 0.16};  // width (x), height (y), depth (z), metres
+    glm::dvec3 color{0.85, 0.70, 0.60};
+};
+
+// layout-format.md, "Volume portals": inside the box (centred on
+// rect.center; rect.width along r, rect.height along u, rect.depth along n)
+// the room `target_room` shows instead of `room`. Listed in the layout's
+// `portals` array with kind "volume", kept apart from the paired portals.
+struct Volume {
+    std::string id;
+    int room = -1;          // index into Layout::rooms
+    math::PortalRect rect;  // depth = the box's extent along the normal (centred, not behind)
+    int target_room = -1;   // index into Layout::rooms; a room without portals
+    glm::dvec3 tint{1.0};
+};
 
 struct Room {
     std::string id;
@@ -114,7 +161,9 @@ struct Layout {
     std::optional<PlayArea> play_area;
     Start start;
     std::vector<Room> rooms;
-    std::vector<Portal> portals;
+    std::vector<Portal> portals;  // doors, mirrors and windows (volumes are in `volumes`)
+    std::vector<Volume> volumes;  // in file order
+    HandShape hands;
     // Every file the loader read besides the layout itself, in order: room
     // textures, glTF models and their buffers and images.
     std::vector<assets::FileRead> files_read;

@@ -61,3 +61,20 @@ glm::dvec3 place_model_normal(const GltfProp& prop, const glm::dvec3& n) {
 }
 
 }  // namespace impossible::layout
+
+namespace impossible::layout {
+
+const std::string& prop_id(const Prop& prop) {
+    return std::visit([](const auto& p) -> const std::string& { return p.id; }, prop);
+}
+
+const Motion& prop_motion(const Prop& prop) {
+    return std::visit([](const auto& p) -> const Motion& { return p.motion; }, prop);
+}
+
+glm::dvec3 prop_anchor(const Prop& prop) {
+    if (const auto* box = std::get_if<BoxProp>(&prop)) return 0.5 * (box->min + box->max);
+    return std::get<GltfProp>(prop).position;
+}
+
+}  // namespace impossible::layout

@@ -4,7 +4,9 @@
 // angles within ±1e6°.
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <optional>
 #include <istream>
 #include <string>
 #include <vector>
@@ -17,6 +19,17 @@ namespace impossible::layout {
 // The poses, or an error "FILE:LINE: message" or "FILE: message".
 using PathFile = Result<std::vector<math::HeadPose>>;
 
+// One line of a path file (cli.md, "Time, hands and lights"): 6 numbers, the
+// head; or 18, the head, then the left and the right hand (physical poses).
+struct PathFrame {
+    math::HeadPose head;
+    std::optional<std::array<math::HeadPose, 2>> hands;  // none on a 6-number line
+};
+using PathFrames = Result<std::vector<PathFrame>>;
+
+// The default frame rate of a replay (--fps): line k is at time k / fps.
+inline constexpr double kDefaultPathFps = 90.0;
+
 // Path files are at most this long (like layouts: 4 MiB, about 100,000 poses).
 inline constexpr std::size_t kMaxPathFileBytes = 4u << 20;
 
@@ -27,5 +40,9 @@ inline constexpr std::size_t kMaxPathFileBytes = 4u << 20;
 PathFile read_path_file(const std::string& path);
 // The same for a stream already open (`walk`), with `name` in the messages.
 PathFile read_path_stream(std::istream& in, const std::string& name);
+// Every line with its hands, for the commands that replay hands; the two
+// readers above keep the heads only.
+PathFrames read_path_frames_file(const std::string& path);
+PathFrames read_path_frames_stream(std::istream& in, const std::string& name);
 
 }  // namespace impossible::layout

@@ -4,6 +4,9 @@
 // settings (a FrameDesc hands the tracer its View as it is).
 #pragma once
 
+#include <array>
+#include <optional>
+
 #include "math/pose.hpp"
 
 namespace impossible::math {
@@ -24,6 +27,14 @@ struct View {
     // (tracer) may make; past it, portals show the fill colour. Only a view
     // that needs more changes (docs/bounded-work.md).
     int max_portal_passes = kDefaultMaxPortalPasses;
+    // Seconds: moving props stand where their motion puts them at this time
+    // (layout-format.md, "Moving props"; a negative time reads as 0).
+    double time = 0.0;
+    // The tracked hands, left then right, as virtual poses in the head's
+    // coordinates (with --pose the physical and virtual frames coincide);
+    // none: no hands are drawn. Each hand's room is found by walking from
+    // the head centre to it (walk/objects.hpp).
+    std::optional<std::array<math::HeadPose, 2>> hands;
 };
 
 }  // namespace impossible::math

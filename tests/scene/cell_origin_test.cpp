@@ -31,7 +31,8 @@ TEST(CellOrigin, FarRoomsAreExactRelativeToTheirOrigin) {
     l.source = "<test>";
     const glm::dvec3 lo{1598.3, 0.0, -1302.7}, hi{1602.3, 3.0, -1298.7};
     l.rooms.push_back(make_room("far", lo, hi));
-    l.rooms.back().props.push_back(layout::BoxProp{{1600.8, 0.0, -1302.2}, {1601.8, 1.0, -1301.2}, {0.5, 0.5, 0.5}});
+    l.rooms.back().props.push_back(
+        layout::BoxProp{{1600.8, 0.0, -1302.2}, {1601.8, 1.0, -1301.2}, {0.5, 0.5, 0.5}, {}, {}});
     impossible::test::add_pair(l, make_portal("a", 0, {1599.3, 1.1, -1300.2}, {0, 0, 1}, 0.9, 2.2),
                                make_portal("b", 0, {1601.3, 1.1, -1299.5}, {0, 0, 1}, 0.9, 2.2));
     const Scene s = build_scene(l);

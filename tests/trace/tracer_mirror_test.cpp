@@ -27,7 +27,7 @@ using test::shade_by_hand;
 layout::Layout plain_room() {
     layout::Layout l;
     l.rooms.push_back(make_room("room", {-2, 0, -2}, {2, 3, 2}));
-    l.rooms[0].props.push_back(layout::BoxProp{{0.5, 0, 0.5}, {1.0, 0.8, 1.0}, kRed});
+    l.rooms[0].props.push_back(layout::BoxProp{{0.5, 0, 0.5}, {1.0, 0.8, 1.0}, kRed, {}, {}});
     return l;
 }
 
@@ -114,7 +114,7 @@ TEST(TracerMirror, WhatLiesBehindTheMirrorIsNotInIt) {
     // A box outside the room, behind the mirror, on the line of sight of the
     // virtual eye (0, 1.5, -5): the mirror's plane clips it away.
     layout::Layout l = mirror_room();
-    l.rooms[0].props.push_back(layout::BoxProp{{-0.3, 1.3, -3.0}, {0.3, 1.7, -2.5}, kRed});
+    l.rooms[0].props.push_back(layout::BoxProp{{-0.3, 1.3, -3.0}, {0.3, 1.7, -2.5}, kRed, {}, {}});
     const TraceHit hit = trace_ray(prepare_scene(l).value(), {0, 1.5, 1}, {0, 0, -1}, 0, 8);
     EXPECT_EQ(hit.portals_passed, 1);
     expect_point(hit.origin, {0, 1.5, -5});

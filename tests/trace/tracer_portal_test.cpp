@@ -162,11 +162,11 @@ TEST(TracerPortal, TargetGeometryBehindThePlaneIsClippedAndInFrontIsSeen) {
     layout::Layout l = translated_pair();
     // In B, on the line of sight from the virtual eye (1, 1.5, 2) along -Z:
     // a red box behind b's plane (z in [0.5, 1]) and a blue one in front of it.
-    l.rooms[1].props.push_back(layout::BoxProp{{0.8, 1.3, 0.5}, {1.2, 1.7, 1.0}, kRed});
-    l.rooms[1].props.push_back(layout::BoxProp{{0.8, 1.3, -1.0}, {1.2, 1.7, -0.5}, kBlue});
+    l.rooms[1].props.push_back(layout::BoxProp{{0.8, 1.3, 0.5}, {1.2, 1.7, 1.0}, kRed, {}, {}});
+    l.rooms[1].props.push_back(layout::BoxProp{{0.8, 1.3, -1.0}, {1.2, 1.7, -0.5}, kBlue, {}, {}});
     // A box straddling the plane on another line of sight (x = 0.7): its
     // entry face lies behind the plane, the rest are back faces.
-    l.rooms[1].props.push_back(layout::BoxProp{{0.6, 1.3, -0.3}, {0.75, 1.7, 0.3}, kRed});
+    l.rooms[1].props.push_back(layout::BoxProp{{0.6, 1.3, -0.3}, {0.75, 1.7, 0.3}, kRed, {}, {}});
     const Scene scene = prepare_scene(l).value();
 
     const TraceHit hit = trace_ray(scene, {0, 1.5, 1}, {0, 0, -1}, 0, 8);
@@ -205,7 +205,7 @@ TEST(TracerPortal, AnEyeInsideTheBoxSeesTheTargetOnTheInnerFacesAndItsRoomBehind
     layout::Layout l = translated_pair();
     // A green box in B just in front of b's plane, between the virtual eye and
     // the mapped back face.
-    l.rooms[1].props.push_back(layout::BoxProp{{0.8, 1.3, -0.2}, {1.2, 1.7, -0.15}, kGreen});
+    l.rooms[1].props.push_back(layout::BoxProp{{0.8, 1.3, -0.2}, {1.2, 1.7, -0.15}, kGreen, {}, {}});
     const Scene scene = prepare_scene(l).value();
     const dvec3 eye{0, 1.5, -1.1};  // 0.1 m behind a's plane, in its column
 

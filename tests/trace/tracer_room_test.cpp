@@ -85,7 +85,7 @@ TEST(TracerRoom, PropBoxesFaceOutwardsAndAreNotChequered) {
     layout::Layout l = one_room();
     l.rooms[0].checker = 0.5;
     const dvec3 red{0.9, 0.2, 0.2};
-    l.rooms[0].props.push_back(layout::BoxProp{{-0.5, 0.0, -0.5}, {0.5, 1.0, 0.5}, red});
+    l.rooms[0].props.push_back(layout::BoxProp{{-0.5, 0.0, -0.5}, {0.5, 1.0, 0.5}, red, {}, {}});
     const Scene scene = prepare_scene(l).value();
 
     const TraceHit top = trace_ray(scene, {0.3, 2.0, 0.2}, {0, -1, 0}, 0, 8);

@@ -101,8 +101,8 @@ TEST(TracerWindow, BothBranchesAreClippedByThePlanes) {
     const dvec3 tint{0.9, 0.7, 0.5};
     const double r = 0.25;
     layout::Layout l = window_pair(tint, r);
-    l.rooms[1].props.push_back(layout::BoxProp{{8.5, 1.3, -0.3}, {9.5, 1.7, 0.5}, {1, 0, 0}});
-    l.rooms[0].props.push_back(layout::BoxProp{{-0.3, 1.3, -3.5}, {0.5, 1.7, -2.5}, {1, 0, 0}});
+    l.rooms[1].props.push_back(layout::BoxProp{{8.5, 1.3, -0.3}, {9.5, 1.7, 0.5}, {1, 0, 0}, {}, {}});
+    l.rooms[0].props.push_back(layout::BoxProp{{-0.3, 1.3, -3.5}, {0.5, 1.7, -2.5}, {1, 0, 0}, {}, {}});
     const TraceHit hit = trace_ray(prepare_scene(l).value(), kEye, kDir, 0, 8);
     EXPECT_EQ(hit.id, 2);
     expect_point(hit.point, {14, 1.5, 1.2});

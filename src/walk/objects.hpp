@@ -1,0 +1,100 @@
+// Where each object of a frame is drawn (layout-format.md, "Moving props,
+// hands and crossing objects"): the one rule the rasteriser and the tracer
+// both follow for props that move or meet a door, and for tracked hands.
+//
+// A prop that neither moves nor meets a door of its room at rest is
+// *static*: it stays part of its room's geometry, drawn as before (so
+// layouts without such props render byte-identically). Every other prop,
+// and each hand, is *dynamic*: each frame it becomes one or more
+// ObjectInstance — its solid, placed in a cell by a rigid matrix, optionally
+// cut by the planes of the doors it meets:
+//   - in its current room, the part in front of each door A it meets
+//     (d >= 0 for A);
+//   - in A's target room B, its image M_AB · object, the part in front of
+//     B's plane (d > 0 for B), one instance per door met.
+// An object meets door A when its solid (a box's closed volume, a model's
+// triangles) intersects A's closed rectangle (touching counts, within
+// kMeetTolerance). Mirrors, windows and volumes cut nothing.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "layout/layout.hpp"
+#include "links/portal_links.hpp"
+#include "math/conventions.hpp"
+#include "math/pose.hpp"
+#include "math/view.hpp"
+
+namespace impossible::walk {
+
+// What an instance draws: a prop (by its listed room and index there) or a
+// hand (0 left, 1 right).
+enum class ObjectKind { Prop, Hand };
+
+// At most this many doors cut one instance (an object meeting more uses the
+// first ones, in the room's portal order; the spec leaves it undefined).
+inline constexpr int kMaxCuts = 2;
+
+struct ObjectCut {
+    math::dvec4 plane{0.0, 0.0, 0.0, 1.0};  // in the cell's coordinates: dot(plane, (p, 1)) is d
+    bool strict = false;                    // keep d > 0 (an image, B's plane) instead of d >= 0 (own room)
+    int door = -1;                          // the portal whose plane it is
+};
+
+struct ObjectInstance {
+    ObjectKind kind = ObjectKind::Prop;
+    int listed_room = -1;  // Prop: the room it is listed in; Hand: -1
+    int index = -1;        // Prop: its index in that room's props; Hand: 0 left, 1 right
+    int cell = -1;         // the room it is drawn in
+    // The object's own coordinates → the cell's coordinates. A prop's own
+    // coordinates are the layout's as written (its box min/max, its placed
+    // model triangles); a hand's are its frame (centred, x right, y up, z
+    // back; HandShape).
+    math::dmat4 to_cell{1.0};
+    int cut_count = 0;
+    std::array<ObjectCut, kMaxCuts> cuts{};
+    bool image = false;  // drawn through a door (M_AB applied; cuts[0] is B's plane)
+};
+
+// Touching within this counts as meeting (times 1 + |door centre|).
+inline constexpr double kMeetTolerance = 1e-9;
+
+// Per room, per prop (in the layout's order): whether the prop is dynamic.
+std::vector<std::vector<bool>> dynamic_props(const layout::Layout& layout, const links::PortalLinks& links);
+
+// A moving prop at a time: its current room and its mapping W from physical
+// (listed place plus offset) to virtual coordinates (layout-format.md,
+// "Moving props"). Exact and independent of how the time was reached: the
+// anchor walks the keys' polyline from t = 0, key to key, then to `time`.
+struct PropState {
+    int room = -1;
+    math::dmat4 w{1.0};
+    math::dvec3 offset{0.0};  // the physical offset at `time`
+    std::vector<int> teleports;  // portals passed from t = 0 to `time`, in order
+};
+PropState walk_prop(const layout::Layout& layout, const links::PortalLinks& links, int room, int prop, double time);
+
+// A hand placed for a frame: its room and the transform of its frame into
+// that room's coordinates, found by walking the straight segment from the
+// head centre (in `head_room`) to the hand's virtual position with the
+// crossing rule (layout-format.md, "Hands").
+struct HandState {
+    int room = -1;
+    math::dmat4 to_cell{1.0};
+    std::vector<int> teleports;  // doors passed on the way from the head
+};
+HandState place_hand(const layout::Layout& layout, const links::PortalLinks& links, int head_room,
+                     const math::dvec3& head_position, const math::HeadPose& hand);
+
+// Every dynamic object of a view (its time, head and hands), as instances:
+// each dynamic prop walked to view.time, each hand placed from view.head in
+// view.room, each then cut and imaged by the doors it meets. `dynamic` is
+// dynamic_props(layout, links). Deterministic: props in room order then
+// listed order, then the left and the right hand; for each, its own-room
+// instance first, then its images in the order of the doors met.
+std::vector<ObjectInstance> place_objects(const layout::Layout& layout, const links::PortalLinks& links,
+                                          const std::vector<std::vector<bool>>& dynamic, const math::View& view);
+
+}  // namespace impossible::walk
