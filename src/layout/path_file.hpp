@@ -6,8 +6,8 @@
 
 #include <array>
 #include <cstddef>
-#include <optional>
 #include <istream>
+#include <optional>
 #include <string>
 #include <vector>
 
