@@ -61,7 +61,41 @@ struct ObjectInstance {
 // Touching within this counts as meeting (times 1 + |door centre|).
 inline constexpr double kMeetTolerance = 1e-9;
 
-// Per room, per prop (in the layout's order): whether the prop is dynamic.
+// What place_objects needs of a layout, copied once (a renderer's or a
+// tracer's scene keeps one, so that a frame needs only its View): the
+// dynamic props and their solids, the hand's solid, and every door.
+struct ObjectSolid {
+    bool is_box = true;
+    math::dvec3 min{0.0}, max{0.0};      // a box, in its own coordinates
+    std::vector<math::dvec3> triangles;  // a model: 3 corners a triangle, in its own coordinates
+};
+
+struct DynamicProp {
+    int room = -1;   // listed room
+    int index = -1;  // in that room's props
+    math::dvec3 anchor{0.0};
+    layout::Motion motion;
+    ObjectSolid solid;  // in the layout's coordinates as written
+};
+
+struct ObjectDoor {
+    math::PortalRect rect;
+    int target = -1;            // the paired door
+    math::dmat4 transfer{1.0};  // M_AB
+};
+
+struct ObjectSet {
+    std::vector<std::vector<bool>> dynamic;    // per room, per prop (layout order): drawn as instances
+    std::vector<DynamicProp> props;            // the dynamic props, room order then listed order
+    ObjectSolid hand;                          // in the hand's frame (HandShape)
+    std::vector<ObjectDoor> portals;           // per portal of the layout; target -1 for non-doors
+    std::vector<std::vector<int>> room_doors;  // per room: its doors, in file order
+};
+
+ObjectSet build_object_set(const layout::Layout& layout, const links::PortalLinks& links);
+
+// Per room, per prop (in the layout's order): whether the prop is dynamic
+// (the same as build_object_set(...).dynamic).
 std::vector<std::vector<bool>> dynamic_props(const layout::Layout& layout, const links::PortalLinks& links);
 
 // A moving prop at a time: its current room and its mapping W from physical
@@ -71,10 +105,11 @@ std::vector<std::vector<bool>> dynamic_props(const layout::Layout& layout, const
 struct PropState {
     int room = -1;
     math::dmat4 w{1.0};
-    math::dvec3 offset{0.0};  // the physical offset at `time`
+    math::dvec3 offset{0.0};     // the physical offset at `time`
     std::vector<int> teleports;  // portals passed from t = 0 to `time`, in order
 };
-PropState walk_prop(const layout::Layout& layout, const links::PortalLinks& links, int room, int prop, double time);
+// `prop` indexes set.props.
+PropState walk_prop(const ObjectSet& set, int prop, double time);
 
 // A hand placed for a frame: its room and the transform of its frame into
 // that room's coordinates, found by walking the straight segment from the
@@ -85,16 +120,14 @@ struct HandState {
     math::dmat4 to_cell{1.0};
     std::vector<int> teleports;  // doors passed on the way from the head
 };
-HandState place_hand(const layout::Layout& layout, const links::PortalLinks& links, int head_room,
-                     const math::dvec3& head_position, const math::HeadPose& hand);
+HandState place_hand(const ObjectSet& set, int head_room, const math::dvec3& head_position, const math::HeadPose& hand);
 
 // Every dynamic object of a view (its time, head and hands), as instances:
-// each dynamic prop walked to view.time, each hand placed from view.head in
-// view.room, each then cut and imaged by the doors it meets. `dynamic` is
-// dynamic_props(layout, links). Deterministic: props in room order then
-// listed order, then the left and the right hand; for each, its own-room
-// instance first, then its images in the order of the doors met.
-std::vector<ObjectInstance> place_objects(const layout::Layout& layout, const links::PortalLinks& links,
-                                          const std::vector<std::vector<bool>>& dynamic, const math::View& view);
+// each dynamic prop walked to view.time, each hand placed from
+// view.head.position in view.room, each then cut and imaged by the doors it
+// meets. Deterministic: props in set.props order, then the left and the
+// right hand; for each, its own-room instance first, then its images in the
+// order of the doors met. No hands: none drawn.
+std::vector<ObjectInstance> place_objects(const ObjectSet& set, const math::View& view);
 
 }  // namespace impossible::walk
