@@ -1,7 +1,9 @@
-// The path file of `walk`, `preview --path` and `bench --path`: physical head
-// poses, one a line: `X Y Z YAW PITCH ROLL`, blank lines and
-// `#` comments skipped, a number may start with one sign (`+-1` is refused), six finite numbers a line, positions within ±1e6 m and
-// angles within ±1e6°.
+// The path file of `walk`, `preview --path` and `bench --path`: physical
+// poses, one line a frame: `X Y Z YAW PITCH ROLL` (the head) or 18 numbers
+// (the head, then the left and the right hand, each X Y Z YAW PITCH ROLL); one
+// file may mix them. Blank lines and `#` comments are skipped, a number may
+// start with one sign (`+-1` is refused), every number is finite, positions
+// within ±1e6 m and angles within ±1e6°.
 #pragma once
 
 #include <array>

@@ -119,17 +119,17 @@ TEST(RunWalk, MalformedLinesGiveOneErrorAndNoOutput) {
         const char* text;
         const char* expected;
     } cases[] = {
-        {"0 1.6 1 0 0 0\n0 1.6 1 0 0\n", "walk.txt:2: expected 6 numbers"},
-        {"0 1.6 1 0 0 0 9\n", "walk.txt:1: expected 6 numbers"},
+        {"0 1.6 1 0 0 0\n0 1.6 1 0 0\n", "walk.txt:2: expected 6 or 18 numbers"},
+        {"0 1.6 1 0 0 0 9\n", "walk.txt:1: expected 6 or 18 numbers"},
         {"# c\n\n0 1.6 x 0 0 0\n", "walk.txt:3: Z: 'x' is not a finite number"},
-        {"0,1.6,1,0,0,0\n", "walk.txt:1: expected 6 numbers"},
+        {"0,1.6,1,0,0,0\n", "walk.txt:1: expected 6 or 18 numbers"},
         {"0 1.6 1 nan 0 0\n", "walk.txt:1: YAW: 'nan' is not a finite number"},
         {"0 1.6 1 0 inf 0\n", "walk.txt:1: PITCH: 'inf' is not a finite number"},
         {"0 1.6 1e400 0 0 0\n", "walk.txt:1: Z: '1e400' is not a finite number"},
         {"0 1.6 1 0 0 0x10\n", "walk.txt:1: ROLL: '0x10' is not a finite number"},
         {"1e7 1.6 1 0 0 0\n", "walk.txt:1: X: 1e7 is out of range"},
         {"0 1.6 1 0 0 -2e6\n", "walk.txt:1: ROLL: -2e6 is out of range"},
-        {"0 1.6 1 0 0 0 # trailing comment\n", "walk.txt:1: expected 6 numbers"},
+        {"0 1.6 1 0 0 0 # trailing comment\n", "walk.txt:1: expected 6 or 18 numbers"},
     };
     for (const auto& c : cases) {
         const Replay r = replay(doorway(), c.text);

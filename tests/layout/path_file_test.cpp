@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <sstream>
+#include <string>
+#include <utility>
 
 #include "layout/path_file.hpp"
 
@@ -63,6 +65,69 @@ TEST(PathFile, SignsByteOrderMarksAndWideText) {
     std::istringstream nul(std::string("0 1.6 1 0 0 0\n0\0 1.6 1 0 0 0\n", 29));
     EXPECT_EQ(read_path_stream(nul, "p.txt").error(),
               "p.txt:2: holds a NUL byte; a path file is text (ASCII or UTF-8, not UTF-16)");
+}
+
+// Issue 22: a line of 18 numbers is the head, then the left and the right
+// hand; one file may mix 6- and 18-number lines; the heads-only readers keep
+// the heads of both.
+TEST(PathFile, EighteenNumberLinesCarryTheHands) {
+    const std::string text =
+        "0 1.6 1 0 0 0\n"
+        "1 1.6 2 90 0 0  -0.2 1.2 0.5 10 20 30\t0.2 1.1 0.4 -10 -20 -30\r\n"
+        "# a comment\n"
+        "2 1.5 3 0 -5 3\n";
+    std::istringstream in(text);
+    const PathFrames frames = read_path_frames_stream(in, "p.txt");
+    ASSERT_TRUE(frames) << frames.error();
+    ASSERT_EQ(frames->size(), 3u);
+    EXPECT_FALSE((*frames)[0].hands);
+    EXPECT_FALSE((*frames)[2].hands);
+    ASSERT_TRUE((*frames)[1].hands);
+    const auto& hands = *(*frames)[1].hands;
+    EXPECT_EQ((*frames)[1].head.yaw_deg, 90.0);
+    EXPECT_EQ(hands[0].position.x, -0.2);
+    EXPECT_EQ(hands[0].roll_deg, 30.0);
+    EXPECT_EQ(hands[1].position.z, 0.4);
+    EXPECT_EQ(hands[1].pitch_deg, -20.0);
+    std::istringstream heads_in(text);
+    const PathFile heads = read_path_stream(heads_in, "p.txt");
+    ASSERT_TRUE(heads) << heads.error();
+    ASSERT_EQ(heads->size(), 3u);
+    EXPECT_EQ((*heads)[1].position.z, 2.0);
+    EXPECT_EQ((*heads)[2].roll_deg, 3.0);
+}
+
+TEST(PathFile, OtherFieldCountsAndBadHandFieldsAreNamed) {
+    const std::string expected =
+        "expected 6 or 18 numbers (X Y Z YAW PITCH ROLL of the head, then of the left and the right hand), found ";
+    const std::pair<const char*, std::string> cases[] = {
+        {"0 1.6 1 0 0 0 9\n", "p.txt:1: " + expected + "7 fields"},
+        {"0 1.6 1 0 0 0\n0 1.6 1 0 0 0 1 1 1 0 0 0\n", "p.txt:2: " + expected + "12 fields"},
+        {"0 1.6 1 0 0 0 1 1 1 0 0 0 1 1 1 0 0 0 0\n", "p.txt:1: " + expected + "19 fields"},
+        {"0 1.6 1 0 0 0 1 1 1 x 0 0 1 1 1 0 0 0\n", "p.txt:1: left hand YAW: 'x' is not a finite number"},
+        {"0 1.6 1 0 0 0 1 1 1 0 0 0 1 1 2e6 0 0 0\n", "p.txt:1: right hand Z: 2e6 is out of range (|Z| <= 1e6 m)"},
+        {"0 1.6 1 0 0 0 1 1 1 0 0 0 1 1 1 0 0 +-3\n", "p.txt:1: right hand ROLL: '+-3' is not a finite number"},
+        {"0 1.6 y 0 0 0 1 1 1 0 0 0 1 1 1 0 0 0\n", "p.txt:1: Z: 'y' is not a finite number"},
+    };
+    for (const auto& [text, message] : cases) {
+        std::istringstream frames_in(text);
+        EXPECT_EQ(read_path_frames_stream(frames_in, "p.txt").error(), message) << text;
+        std::istringstream heads_in(text);
+        EXPECT_EQ(read_path_stream(heads_in, "p.txt").error(), message) << text;
+    }
+}
+
+TEST(PathFile, TheFramesFileReaderSharesTheFileRules) {
+    EXPECT_EQ(read_path_frames_file("/tmp").error(), "/tmp: is a directory");
+    EXPECT_FALSE(read_path_frames_file("/nonexistent/p.txt"));
+    std::istringstream bom(
+        "\xEF\xBB\xBF"
+        "1 1.6 2 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0\n");
+    const PathFrames skipped = read_path_frames_stream(bom, "p.txt");
+    ASSERT_TRUE(skipped) << skipped.error();
+    EXPECT_TRUE((*skipped)[0].hands);
+    std::istringstream empty("# nothing\n\n");
+    EXPECT_EQ(read_path_frames_stream(empty, "p.txt").error(), "p.txt: the path file holds no poses");
 }
 
 }  // namespace
