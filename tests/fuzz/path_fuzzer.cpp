@@ -1,17 +1,19 @@
 // libFuzzer entry point for the path-file parser of `walk`, `preview --path`,
 // `bench --path` and `plan --path` (built with -DIMPOSSIBLE_FUZZER=ON and
-// clang). Each input is read twice, as a stream (read_path_stream) and as a
-// file of its own folder (read_path_file, through the size-limited reader),
-// and must give poses or one error line, never a crash, hang or leak. The
-// checks:
+// clang). Each input is read four times, as a stream (read_path_stream,
+// read_path_frames_stream) and as a file of its own folder (read_path_file,
+// read_path_frames_file, through the size-limited reader), and must give
+// poses or one error line, never a crash, hang or leak. The checks:
 //   - an error is one line without control characters and valid UTF-8
 //     (fuzz_check.hpp) starting "fuzz.txt:LINE: " (stream) or with the file's
 //     path (file), LINE between 1 and the input's lines + 1, or, for an
 //     error about the whole file (no poses, UTF-16/32 text), no line;
-//   - every pose is six finite numbers within +-1e6;
-//   - the two readers agree: the same poses, the same message after the
-//     name, and a file of no poses is the error "holds no poses" for both;
-//   - poses printed with 17 digits read back bit for bit.
+//   - every pose (head or hand) is six finite numbers within +-1e6;
+//   - the four readers agree: the same heads (the frames readers' heads are
+//     the heads readers' poses), the same hands, the same message after the
+//     name, and a file of no poses is the error "holds no poses" for all;
+//   - frames printed with 17 digits (6 numbers a line, or 18 with hands)
+//     read back bit for bit.
 // Seeds: tests/fuzz/path_corpus.
 #include <fcntl.h>
 #include <unistd.h>
@@ -32,6 +34,8 @@
 namespace {
 
 using impossible::layout::PathFile;
+using impossible::layout::PathFrame;
+using impossible::layout::PathFrames;
 using impossible::math::HeadPose;
 
 using impossible::fuzz::require;
@@ -79,6 +83,37 @@ bool same_poses(const std::vector<HeadPose>& a, const std::vector<HeadPose>& b) 
     return true;
 }
 
+bool same_frames(const std::vector<PathFrame>& a, const std::vector<PathFrame>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (!same_pose(a[i].head, b[i].head) || a[i].hands.has_value() != b[i].hands.has_value()) return false;
+        if (a[i].hands &&
+            (!same_pose((*a[i].hands)[0], (*b[i].hands)[0]) || !same_pose((*a[i].hands)[1], (*b[i].hands)[1])))
+            return false;
+    }
+    return true;
+}
+
+// The heads of frames, to compare with the heads readers.
+std::vector<HeadPose> heads_of(const std::vector<PathFrame>& frames) {
+    std::vector<HeadPose> heads;
+    for (const PathFrame& f : frames) heads.push_back(f.head);
+    return heads;
+}
+
+void require_finite(const HeadPose& p) {
+    for (double v : {p.position.x, p.position.y, p.position.z, p.yaw_deg, p.pitch_deg, p.roll_deg})
+        require(std::isfinite(v) && std::abs(v) <= 1e6, "every pose finite, within 1e6");
+}
+
+// A pose as six numbers with 17 digits, after `separator`.
+void print_pose(std::string& out, const HeadPose& p, const char* separator) {
+    char line[256];
+    std::snprintf(line, sizeof line, "%s%.17g %.17g %.17g\t%.17g %.17g %.17g", separator, p.position.x, p.position.y,
+                  p.position.z, p.yaw_deg, p.pitch_deg, p.roll_deg);
+    out += line;
+}
+
 // Errors about the whole file rather than one line: no poses at all, or text
 // in a wide encoding (caught on the first line's byte order mark).
 bool whole_file_error(const std::string& message) {
@@ -115,33 +150,46 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
     std::istringstream in(text);
     const PathFile stream = impossible::layout::read_path_stream(in, "fuzz.txt");
+    std::istringstream frames_in(text);
+    const PathFrames frames = impossible::layout::read_path_frames_stream(frames_in, "fuzz.txt");
 
     write_input(text);
     const std::string& path = input_file().path;
     const PathFile file = impossible::layout::read_path_file(path);
+    const PathFrames frames_file = impossible::layout::read_path_frames_file(path);
 
     if (!stream) {
         const std::string message = message_after(stream.error(), "fuzz.txt", lines);
-        require(!file, "the file reader fails where the stream reader does");
+        require(!file && !frames && !frames_file, "every reader fails where the stream reader does");
         require(message_after(file.error(), path, lines) == message, "both readers give the same message");
+        require(frames.error() == stream.error(), "the frames reader gives the same message");
+        require(frames_file.error() == file.error(), "the frames file reader gives the same message");
         return 0;
     }
-    for (const HeadPose& p : *stream) {
-        for (double v : {p.position.x, p.position.y, p.position.z, p.yaw_deg, p.pitch_deg, p.roll_deg})
-            require(std::isfinite(v) && std::abs(v) <= 1e6, "every pose finite, within 1e6");
+    require(frames && frames_file, "every reader reads what the stream reader reads");
+    for (const PathFrame& f : *frames) {
+        require_finite(f.head);
+        if (f.hands) {
+            require_finite((*f.hands)[0]);
+            require_finite((*f.hands)[1]);
+        }
     }
     require(!stream->empty() && stream->size() <= lines, "at least one pose, at most a pose a line");
     require(file && same_poses(*file, *stream), "both readers give the same poses");
+    require(same_poses(heads_of(*frames), *stream), "the frames reader's heads are the poses");
+    require(same_frames(*frames_file, *frames), "both frames readers give the same frames");
 
     std::string printed = "# printed again\n";
-    char line[256];
-    for (const HeadPose& p : *stream) {
-        std::snprintf(line, sizeof line, "%.17g %.17g %.17g\t%.17g %.17g %.17g\r\n", p.position.x, p.position.y,
-                      p.position.z, p.yaw_deg, p.pitch_deg, p.roll_deg);
-        printed += line;
+    for (const PathFrame& f : *frames) {
+        print_pose(printed, f.head, "");
+        if (f.hands) {
+            print_pose(printed, (*f.hands)[0], " ");
+            print_pose(printed, (*f.hands)[1], "\t ");
+        }
+        printed += "\r\n";
     }
     std::istringstream again(printed);
-    const PathFile reread = impossible::layout::read_path_stream(again, "again.txt");
-    require(reread && same_poses(*reread, *stream), "poses printed with 17 digits read back bit for bit");
+    const PathFrames reread = impossible::layout::read_path_frames_stream(again, "again.txt");
+    require(reread && same_frames(*reread, *frames), "frames printed with 17 digits read back bit for bit");
     return 0;
 }
