@@ -18,6 +18,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -80,6 +81,7 @@ struct DynamicProp {
 
 struct ObjectDoor {
     math::PortalRect rect;
+    int room = -1;              // the room it stands in
     int target = -1;            // the paired door
     math::dmat4 transfer{1.0};  // M_AB
 };
@@ -90,6 +92,10 @@ struct ObjectSet {
     ObjectSolid hand;                          // in the hand's frame (HandShape)
     std::vector<ObjectDoor> portals;           // per portal of the layout; target -1 for non-doors
     std::vector<std::vector<int>> room_doors;  // per room: its doors, in file order
+    // The layout's rooms and portals without props or images: what a
+    // walk::Walker needs to walk props and hands (shared, so the set copies
+    // cheaply and the walkers' pointer stays valid when it moves).
+    std::shared_ptr<const layout::Layout> walk_layout;
 };
 
 ObjectSet build_object_set(const layout::Layout& layout, const links::PortalLinks& links);
@@ -105,10 +111,14 @@ std::vector<std::vector<bool>> dynamic_props(const layout::Layout& layout, const
 struct PropState {
     int room = -1;
     math::dmat4 w{1.0};
-    math::dvec3 offset{0.0};     // the physical offset at `time`
-    std::vector<int> teleports;  // portals passed from t = 0 to `time`, in order
+    math::dvec3 offset{0.0};  // the physical offset at `time`
 };
-// `prop` indexes set.props.
+// `prop` indexes set.props. A looping motion walks every whole period up to
+// `time` (then the rest), except that once its state (room and W) repeats
+// one it had after an earlier period — the usual case, a prop that goes
+// through a door and back — the periods repeat and are skipped; the states
+// of the first kMaxRememberedPeriods periods are remembered for this.
+inline constexpr std::size_t kMaxRememberedPeriods = 16;
 PropState walk_prop(const ObjectSet& set, int prop, double time);
 
 // A hand placed for a frame: its room and the transform of its frame into

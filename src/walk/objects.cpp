@@ -1,0 +1,257 @@
+// The frame's objects (objects.hpp): dynamic props walked to the frame's
+// time, hands placed from the head, each cut and imaged by the doors it meets.
+#include "walk/objects.hpp"
+
+#include <cmath>
+#include <type_traits>
+#include <variant>
+
+#include "math/pose.hpp"
+#include "walk/object_meet.hpp"
+#include "walk/walker.hpp"
+
+namespace impossible::walk {
+
+namespace {
+
+using math::dmat4;
+using math::dvec3;
+using math::dvec4;
+
+ObjectSolid solid_of(const layout::Prop& prop) {
+    ObjectSolid s;
+    if (const auto* box = std::get_if<layout::BoxProp>(&prop)) {
+        s.min = box->min;
+        s.max = box->max;
+        return s;
+    }
+    const auto& model = std::get<layout::GltfProp>(prop);
+    s.is_box = false;
+    s.triangles.reserve(3 * model.triangles.size());
+    for (const assets::ModelTriangle& t : model.triangles)
+        for (const dvec3& p : t.position) s.triangles.push_back(layout::place_model_point(model, p));
+    return s;
+}
+
+ObjectSolid hand_solid(const layout::HandShape& hands) {
+    ObjectSolid s;
+    if (!hands.model) {
+        s.min = -0.5 * hands.box;
+        s.max = 0.5 * hands.box;
+        return s;
+    }
+    s.is_box = false;
+    for (const assets::ModelTriangle& t : hands.model->triangles)
+        for (const dvec3& p : t.position) s.triangles.push_back(layout::place_model_point(*hands.model, p));
+    return s;
+}
+
+// The rooms and portals only: what a Walker reads.
+std::shared_ptr<const layout::Layout> walk_layout_of(const layout::Layout& layout) {
+    auto copy = std::make_shared<layout::Layout>();
+    copy->source = layout.source;
+    copy->start = layout.start;
+    copy->portals = layout.portals;
+    copy->rooms.reserve(layout.rooms.size());
+    for (const layout::Room& room : layout.rooms) {
+        layout::Room r;
+        r.id = room.id;
+        r.min = room.min;
+        r.max = room.max;
+        copy->rooms.push_back(std::move(r));
+    }
+    return copy;
+}
+
+bool meets_any_door(const ObjectSet& set, const ObjectSolid& solid, int room, const dmat4& to_cell) {
+    for (int d : set.room_doors[static_cast<std::size_t>(room)])
+        if (solid_meets_door(solid, to_cell, set.portals[static_cast<std::size_t>(d)].rect)) return true;
+    return false;
+}
+
+dmat4 translation(const dvec3& v) {
+    dmat4 m(1.0);
+    m[3] = dvec4(v, 1.0);
+    return m;
+}
+
+dmat4 pose_matrix(const math::HeadPose& pose) {
+    dmat4 m(math::head_rotation(pose));
+    m[3] = dvec4(pose.position, 1.0);
+    return m;
+}
+
+dvec3 lerp_offset(const layout::MotionKey& a, const layout::MotionKey& b, double t) {
+    const double s = (t - a.t) / (b.t - a.t);
+    return a.offset + (b.offset - a.offset) * s;
+}
+
+// Walks the keys after the first while their time is at most `t`, then to
+// the offset at `t`; returns that offset.
+dvec3 walk_keys_to(Walker& walker, const DynamicProp& p, double t) {
+    const std::vector<layout::MotionKey>& keys = p.motion.keys;
+    std::size_t i = 1;
+    for (; i < keys.size() && keys[i].t <= t; ++i) walker.step(math::HeadPose{p.anchor + keys[i].offset});
+    if (i == keys.size()) return keys.back().offset;
+    const dvec3 offset = lerp_offset(keys[i - 1], keys[i], t);
+    walker.step(math::HeadPose{p.anchor + offset});
+    return offset;
+}
+
+// The state after whole periods of a looping motion: each the keys, then
+// the wrap back to the first key's offset. A motion that comes back to a
+// state it had after an earlier period repeats from there, so only the
+// periods up to the first repeat are walked.
+void walk_periods(Walker& walker, const DynamicProp& p, double periods) {
+    struct State {
+        int room;
+        dmat4 w;
+    };
+    std::vector<State> seen = {{walker.room(), walker.physical_to_virtual()}};
+    const dvec3 first = p.anchor + p.motion.keys.front().offset;
+    for (double done = 0.0; done < periods;) {
+        walk_keys_to(walker, p, p.motion.keys.back().t);
+        walker.step(math::HeadPose{first});
+        done += 1.0;
+        const State now{walker.room(), walker.physical_to_virtual()};
+        for (std::size_t k = 0; k < seen.size() && seen.size() <= kMaxRememberedPeriods; ++k) {
+            if (seen[k].room != now.room || seen[k].w != now.w) continue;
+            // Periods k .. done repeat with period done - k.
+            const double cycle = done - static_cast<double>(k);
+            const double left = std::fmod(periods - done, cycle);
+            for (double j = 0.0; j < left; j += 1.0) {
+                walk_keys_to(walker, p, p.motion.keys.back().t);
+                walker.step(math::HeadPose{first});
+            }
+            return;
+        }
+        if (seen.size() <= kMaxRememberedPeriods) seen.push_back(now);
+    }
+}
+
+}  // namespace
+
+ObjectSet build_object_set(const layout::Layout& layout, const links::PortalLinks& links) {
+    ObjectSet set;
+    set.walk_layout = walk_layout_of(layout);
+    set.room_doors.resize(layout.rooms.size());
+    set.portals.resize(layout.portals.size());
+    for (std::size_t i = 0; i < layout.portals.size(); ++i) {
+        const layout::Portal& p = layout.portals[i];
+        ObjectDoor& door = set.portals[i];
+        door.rect = p.rect;
+        door.room = p.room;
+        if (p.kind != layout::PortalKind::Door) continue;
+        door.target = p.target;
+        door.transfer = links.transfer[i];
+        set.room_doors[static_cast<std::size_t>(p.room)].push_back(static_cast<int>(i));
+    }
+    set.hand = hand_solid(layout.hands);
+    set.dynamic.resize(layout.rooms.size());
+    for (std::size_t r = 0; r < layout.rooms.size(); ++r) {
+        const std::vector<layout::Prop>& props = layout.rooms[r].props;
+        set.dynamic[r].assign(props.size(), false);
+        for (std::size_t k = 0; k < props.size(); ++k) {
+            ObjectSolid solid = solid_of(props[k]);
+            const layout::Motion& motion = layout::prop_motion(props[k]);
+            if (motion.keys.empty() && !meets_any_door(set, solid, static_cast<int>(r), dmat4(1.0))) continue;
+            set.dynamic[r][k] = true;
+            set.props.push_back(DynamicProp{static_cast<int>(r), static_cast<int>(k), layout::prop_anchor(props[k]),
+                                            motion, std::move(solid)});
+        }
+    }
+    return set;
+}
+
+std::vector<std::vector<bool>> dynamic_props(const layout::Layout& layout, const links::PortalLinks& links) {
+    return build_object_set(layout, links).dynamic;
+}
+
+PropState walk_prop(const ObjectSet& set, int prop, double time) {
+    const DynamicProp& p = set.props[static_cast<std::size_t>(prop)];
+    PropState state;
+    state.room = p.room;
+    const std::vector<layout::MotionKey>& keys = p.motion.keys;
+    if (keys.empty()) return state;
+    const double t = std::isnan(time) || time < 0.0 ? 0.0 : time;
+    Walker walker(*set.walk_layout, p.room);
+    walker.step(math::HeadPose{p.anchor + keys.front().offset});  // placed, no crossing test
+    if (p.motion.loop && keys.size() > 1) {
+        const double period = keys.back().t;
+        const double periods = std::floor(t / period);
+        walk_periods(walker, p, periods);
+        state.offset = walk_keys_to(walker, p, t - periods * period);
+    } else {
+        state.offset = walk_keys_to(walker, p, t);
+    }
+    state.room = walker.room();
+    state.w = walker.physical_to_virtual();
+    return state;
+}
+
+HandState place_hand(const ObjectSet& set, int head_room, const dvec3& head_position, const math::HeadPose& hand) {
+    Walker walker(*set.walk_layout, head_room);
+    walker.step(math::HeadPose{head_position});
+    HandState state;
+    state.teleports = walker.step(hand);
+    state.room = walker.room();
+    state.to_cell = walker.physical_to_virtual() * pose_matrix(hand);
+    return state;
+}
+
+namespace {
+
+// The object's own-room instance, cut by the doors it meets, then one image
+// per door met.
+void add_instances(const ObjectSet& set, ObjectInstance own, const ObjectSolid& solid,
+                   std::vector<ObjectInstance>& out) {
+    std::vector<int> met;
+    for (int d : set.room_doors[static_cast<std::size_t>(own.cell)])
+        if (solid_meets_door(solid, own.to_cell, set.portals[static_cast<std::size_t>(d)].rect)) met.push_back(d);
+    if (met.size() > static_cast<std::size_t>(kMaxCuts)) met.resize(kMaxCuts);
+    for (int d : met) own.cuts[own.cut_count++] = ObjectCut{math::portal_plane(set.portals[d].rect), false, d};
+    out.push_back(own);
+    for (int d : met) {
+        const ObjectDoor& a = set.portals[static_cast<std::size_t>(d)];
+        const ObjectDoor& b = set.portals[static_cast<std::size_t>(a.target)];
+        ObjectInstance image = own;
+        image.cell = b.room;
+        image.to_cell = a.transfer * own.to_cell;
+        image.cut_count = 1;
+        image.cuts = {};
+        image.cuts[0] = ObjectCut{math::portal_plane(b.rect), true, a.target};
+        image.image = true;
+        out.push_back(image);
+    }
+}
+
+}  // namespace
+
+std::vector<ObjectInstance> place_objects(const ObjectSet& set, const math::View& view) {
+    std::vector<ObjectInstance> out;
+    for (std::size_t k = 0; k < set.props.size(); ++k) {
+        const DynamicProp& p = set.props[k];
+        const PropState state = walk_prop(set, static_cast<int>(k), view.time);
+        ObjectInstance own;
+        own.kind = ObjectKind::Prop;
+        own.listed_room = p.room;
+        own.index = p.index;
+        own.cell = state.room;
+        own.to_cell = state.w * translation(state.offset);
+        add_instances(set, own, p.solid, out);
+    }
+    if (!view.hands) return out;
+    for (int h = 0; h < 2; ++h) {
+        const HandState state =
+            place_hand(set, view.room, view.head.position, (*view.hands)[static_cast<std::size_t>(h)]);
+        ObjectInstance own;
+        own.kind = ObjectKind::Hand;
+        own.index = h;
+        own.cell = state.room;
+        own.to_cell = state.to_cell;
+        add_instances(set, own, set.hand, out);
+    }
+    return out;
+}
+
+}  // namespace impossible::walk
