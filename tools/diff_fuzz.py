@@ -61,10 +61,13 @@ import struct
 import tempfile
 import zlib
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from diff_fuzz_objects import ObjectCases  # noqa: E402  (the kinds "crossing" and "volume")
+
 # The kinds a run cycles through by default (docs/accuracy.md's figures are
 # for these); --kinds picks others. "glass" is mirrors and windows.
 DEFAULT_KINDS = ["coincident", "wall_pair", "free_pair", "corridor"]
-KINDS = DEFAULT_KINDS + ["glass"]
+KINDS = DEFAULT_KINDS + ["glass", "crossing", "volume"]
 # The layouts of the glass kind, one chosen per case (Case.make_glass).
 GLASS_SUBKINDS = ["mirrors", "facing_mirrors", "window_pair", "window_loop", "door_glass"]
 
@@ -77,7 +80,7 @@ def log_uniform(r, lo, hi):
     return math.exp(r.uniform(math.log(lo), math.log(hi)))
 
 
-class Case:
+class Case(ObjectCases):
     """One layout and one pose, made from (seed, number) and the kinds alone."""
 
     def __init__(self, seed, number, kinds=DEFAULT_KINDS):
@@ -90,7 +93,8 @@ class Case:
         self.origin = [r.uniform(-2000, 2000), 0.0, r.uniform(-2000, 2000)] if far else [0.0, 0.0, 0.0]
         self.rooms, self.portals = [], []
         getattr(self, "make_" + self.kind)()
-        make_pose = self.make_glass_pose if self.kind == "glass" else self.make_pose
+        make_pose = {"glass": self.make_glass_pose, "crossing": self.crossing_pose,
+                     "volume": self.volume_pose}.get(self.kind, self.make_pose)
         self.pose, self.room, self.max_depth, self.fov, self.what = make_pose()
 
     # --- rooms and portals ---------------------------------------------
@@ -591,6 +595,8 @@ class Case:
         a crack."""
         rooms = {room["id"]: room for room in self.rooms}
         for p in self.portals:
+            if p.get("kind") == "volume":
+                continue
             n = p["normal"]
             up = p.get("up", [0.0, 1.0, 0.0])
             right = [up[1] * n[2] - up[2] * n[1], up[2] * n[0] - up[0] * n[2], up[0] * n[1] - up[1] * n[0]]
@@ -637,7 +643,7 @@ class Case:
     def view_args(self, size):
         pose = ",".join("%.17g" % v for v in self.pose)
         return ["--pose=" + pose, "--room", self.room, "--size", size, "--fov", "%.6g" % self.fov,
-                "--max-depth", str(self.max_depth)]
+                "--max-depth", str(self.max_depth)] + self.view_extra()
 
 
 def read_grey_png(path):
