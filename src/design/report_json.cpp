@@ -1,6 +1,7 @@
 // The designer's report as one JSON document (`validate --json`).
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "design/report.hpp"
 
@@ -22,6 +23,22 @@ ordered_json points(const math::Polygon2& poly) {
     return out;
 }
 
+std::optional<ordered_json> hands_json(const layout::HandShape& hands) {
+    ordered_json j;
+    if (hands.model) {
+        j["shape"] = "gltf";
+        j["gltf"] = hands.model->path;
+        j["scale"] = hands.model->scale;
+        return j;
+    }
+    const layout::HandShape standard;
+    if (hands.box == standard.box && hands.color == standard.color) return std::nullopt;
+    j["shape"] = "box";
+    j["box"] = {rounded(hands.box.x), rounded(hands.box.y), rounded(hands.box.z)};
+    j["color"] = {rounded(hands.color.r), rounded(hands.color.g), rounded(hands.color.b)};
+    return j;
+}
+
 ordered_json summary_json(const layout::Layout& layout, const Report& r) {
     const layout::Summary& s = r.summary;
     ordered_json j;
@@ -31,6 +48,11 @@ ordered_json summary_json(const layout::Layout& layout, const Report& r) {
     j["door_pairs"] = s.door_pairs;
     j["window_pairs"] = s.window_pairs;
     j["mirrors"] = s.mirrors;
+    // Only with volumes, moving props or hands other than the default box,
+    // so that the documents of other layouts stay as they were.
+    if (s.volumes > 0) j["volumes"] = s.volumes;
+    if (s.moving_props > 0) j["moving_props"] = s.moving_props;
+    if (const auto hands = hands_json(layout.hands)) j["hands"] = *hands;
     j["floor_area"] = rounded(s.floor_area);
     if (layout.play_area) {
         ordered_json area;

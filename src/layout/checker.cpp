@@ -41,6 +41,26 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
     return d.back();
 }
 
+// What is wrong with a colour component, a share or a time `v` (written
+// `shown`), or nothing.
+std::optional<std::string> range_problem(NumberKind kind, double v, const std::string& shown) {
+    switch (kind) {
+        case NumberKind::Colour:
+            if (v < 0.0 || v > 1.0) return "colour component " + shown + " is outside 0..1";
+            break;
+        case NumberKind::Fraction:
+            if (v < 0.0 || v > 1.0) return "must be in 0..1 (got " + shown + ")";
+            break;
+        case NumberKind::Time:
+            if (v < 0.0) return "must not be negative (got " + shown + ")";
+            if (v > limits::kMaxMotionTime)
+                return shown + " is too large (the maximum is " + format_number(limits::kMaxMotionTime) + " s)";
+            break;
+        default: break;
+    }
+    return std::nullopt;
+}
+
 }  // namespace
 
 Path Path::operator/(std::string_view key) const {
@@ -267,14 +287,10 @@ std::optional<double> Checker::read_number(const Path& at, const json& value, Nu
         case NumberKind::Length: return at_least(limits::kMinLength, limits::kMaxLength, " m");
         case NumberKind::Scale: return at_least(limits::kMinScale, limits::kMaxScale, "");
         case NumberKind::Colour:
-            if (v < 0.0 || v > 1.0) {
-                error(at, "colour component " + shown + " is outside 0..1");
-                return std::nullopt;
-            }
-            return v;
         case NumberKind::Fraction:
-            if (v < 0.0 || v > 1.0) {
-                error(at, "must be in 0..1 (got " + shown + ")");
+        case NumberKind::Time:
+            if (const std::optional<std::string> problem = range_problem(kind, v, shown)) {
+                error(at, *problem);
                 return std::nullopt;
             }
             return v;

@@ -39,6 +39,7 @@ enum class NumberKind {
     Colour,      // 0 ≤ v ≤ 1, a colour component
     Fraction,    // 0 ≤ v ≤ 1, a share (a window's reflectance)
     Direction,   // |v| ≤ kMaxDirectionComponent (a vector normalised later)
+    Time,        // 0 ≤ v ≤ kMaxMotionTime, seconds (a motion key's time)
 };
 
 class Checker {

@@ -228,7 +228,8 @@ void check_holes(Checker& check, std::vector<PortalDraft>& portals, const std::v
     for (std::size_t i = 0; i < portals.size(); ++i) {
         PortalDraft& draft = portals[i];
         const int room_index = draft.portal.room;
-        if (!draft.rect_ok || room_index < 0) continue;
+        // Volumes stand anywhere (layout-format.md, "Volume portals").
+        if (!draft.rect_ok || room_index < 0 || draft.volume) continue;
         const RoomDraft& room = rooms[static_cast<std::size_t>(room_index)];
         if (!room.box_ok) continue;
         find_hole(check, i, draft, room, holes);

@@ -212,6 +212,8 @@ struct Summary {
     std::optional<double> expansion_ratio;  // floor_area / play_area_area
     int textured_faces = 0;                 // room faces with a texture
     int images = 0;                         // distinct decoded images: room textures and glTF props' textures
+    int volumes = 0;                        // volume portals (not counted in `portals`)
+    int moving_props = 0;                   // props with a motion
 };
 
 Summary summarize(const Layout& layout);

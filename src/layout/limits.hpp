@@ -25,6 +25,12 @@ inline constexpr std::size_t kMaxPortals = 20'000;
 inline constexpr std::size_t kMaxPropsPerRoom = 10'000;
 inline constexpr std::size_t kMaxPlayAreaCorners = 10'000;
 
+// Moving props (layout-format.md, "Moving props"): keys of one motion path,
+// and its times in seconds. The walker walks a path's keys up to the time
+// asked for, so they bound its work per prop and frame.
+inline constexpr std::size_t kMaxMotionKeys = 10'000;
+inline constexpr double kMaxMotionTime = 1e6;  // about 11.6 days
+
 // Coordinates and lengths, in metres. Renderers draw in single precision, so
 // lengths below a
 // micrometre (widths, heights, depths, room and box extents, checker squares)

@@ -185,6 +185,26 @@ void link_start(Checker& check, StartDraft& start, const std::vector<detail::Roo
     }
 }
 
+// The doors, mirrors and windows into layout.portals (their targets
+// renumbered without the volumes between them), the volumes into
+// layout.volumes.
+void add_portals(std::vector<detail::PortalDraft>& portals, Layout& layout) {
+    std::vector<int> index(portals.size(), -1);
+    int next = 0;
+    for (std::size_t i = 0; i < portals.size(); ++i) {
+        if (!portals[i].volume) index[i] = next++;
+    }
+    for (detail::PortalDraft& draft : portals) {
+        Portal& p = draft.portal;
+        if (draft.volume) {
+            layout.volumes.push_back({std::move(p.id), p.room, p.rect, draft.target_room, p.tint});
+            continue;
+        }
+        if (p.target >= 0) p.target = index[static_cast<std::size_t>(p.target)];
+        layout.portals.push_back(std::move(p));
+    }
+}
+
 // `ids_reliable`: no object repeats a key (a repeated "id" leaves which one
 // counts in doubt).
 void read_layout(Checker& check, const json& root, const std::string& base_dir, Layout& layout, bool ids_reliable) {
@@ -193,7 +213,7 @@ void read_layout(Checker& check, const json& root, const std::string& base_dir, 
         check.error(top, "a layout must be a JSON object (got " + detail::json_type_name(root) + ")");
         return;
     }
-    check.check_fields(top, root, {"format", "version", "name", "play_area", "start", "rooms", "portals"},
+    check.check_fields(top, root, {"format", "version", "name", "play_area", "start", "rooms", "portals", "hands"},
                        {"format", "version", "start", "rooms"});
     read_header(check, root, layout);
 
@@ -210,13 +230,17 @@ void read_layout(Checker& check, const json& root, const std::string& base_dir, 
     const bool rooms_known = ids_reliable && !rooms.empty() &&
                              std::all_of(rooms.begin(), rooms.end(), [](const auto& r) { return r.has_id; });
     detail::link_portals(check, portals, rooms, rooms_known);
+    detail::link_volumes(check, portals, rooms, rooms_known);
     detail::check_holes(check, portals, rooms);
     link_start(check, start, rooms, rooms_known);
+    std::optional<HandShape> hands;
+    if (const json* v = field(root, "hands")) hands = detail::read_hands(check, top / "hands", *v, models);
 
     if (check.has_errors()) return;
     layout.start = start.start;
     for (detail::RoomDraft& room : rooms) layout.rooms.push_back(std::move(room.room));
-    for (detail::PortalDraft& portal : portals) layout.portals.push_back(std::move(portal.portal));
+    add_portals(portals, layout);
+    if (hands) layout.hands = std::move(*hands);
     layout.files_read = models.files_read();
 }
 

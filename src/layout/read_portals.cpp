@@ -94,11 +94,15 @@ bool read_up(Checker& check, const Path& at, const json& value, const std::optio
     return true;
 }
 
+// What a portal's `depth` is: none (a mirror or a window: 0, not read), a
+// box's (default kDefaultDepth; for a door, too shallow for an eye is a
+// warning; Box: a portal of unknown kind) or a volume's extent along its
+// normal (required).
+enum class DepthRule { None, Box, DoorBox, Volume };
+
 // centre, size, depth, normal and up; false if any is missing or bad
-// (reported). Without a box (a mirror or a window) the depth is 0 and not
-// read; `warn_depth` warns of a door's box too shallow for an eye.
-bool read_rect(Checker& check, const Path& at, const json& value, bool has_box, bool warn_depth,
-               math::PortalRect& rect) {
+// (reported).
+bool read_rect(Checker& check, const Path& at, const json& value, DepthRule rule, math::PortalRect& rect) {
     bool ok = true;
     const auto take = [&ok](auto&& optional, auto& out) {
         if (optional) {
@@ -115,10 +119,12 @@ bool read_rect(Checker& check, const Path& at, const json& value, bool has_box, 
     if (center) take(check.read_vec3(at / "center", *center, NumberKind::Coordinate), rect.center);
     if (width) take(check.read_number(at / "width", *width, NumberKind::Length), rect.width);
     if (height) take(check.read_number(at / "height", *height, NumberKind::Length), rect.height);
-    rect.depth = has_box ? limits::kDefaultDepth : 0.0;
-    if (const json* v = field(value, "depth"); v && has_box) {
-        const std::optional<double> depth = check.read_number(at / "depth", *v, NumberKind::Length);
-        if (depth && warn_depth) warn_if_shallow(check, at, *depth);
+    rect.depth = rule == DepthRule::DoorBox || rule == DepthRule::Box ? limits::kDefaultDepth : 0.0;
+    const json* depth_value = field(value, "depth");
+    if (rule == DepthRule::Volume && depth_value == nullptr) ok = false;  // reported as missing
+    if (depth_value != nullptr && rule != DepthRule::None) {
+        const std::optional<double> depth = check.read_number(at / "depth", *depth_value, NumberKind::Length);
+        if (depth && rule == DepthRule::DoorBox) warn_if_shallow(check, at, *depth);
         take(depth, rect.depth);
     }
     const std::optional<glm::dvec3> n = normal ? read_normal(check, at / "normal", *normal) : std::nullopt;
@@ -126,27 +132,36 @@ bool read_rect(Checker& check, const Path& at, const json& value, bool has_box, 
     return ok && n && up_ok;
 }
 
-// `kind`: "door", "mirror" or "window"; false for anything else (reported).
-bool read_kind(Checker& check, const Path& at, const json& value, PortalKind& kind) {
+// `kind`: "door", "mirror", "window" or "volume" (`volume` set); false for
+// anything else (reported).
+bool read_kind(Checker& check, const Path& at, const json& value, PortalKind& kind, bool& volume) {
     const std::optional<std::string> name = check.read_string(at, value);
     if (!name) return false;
+    if (*name == "volume") {
+        volume = true;
+        return true;
+    }
     for (const PortalKind k : {PortalKind::Door, PortalKind::Mirror, PortalKind::Window}) {
         if (*name == kind_name(k)) {
             kind = k;
             return true;
         }
     }
-    check.error(at,
-                "unknown kind " + quote(*name) + " (the kinds are \"door\", the default, \"mirror\" and \"window\")");
+    check.error(at, "unknown kind " + quote(*name) +
+                        " (the kinds are \"door\", the default, \"mirror\", \"window\" and \"volume\")");
     return false;
 }
 
 // A field the portal's kind does not have (layout-format.md, "Mirrors and
 // windows"): an error at its key, saying what to do instead.
-void check_kind_fields(Checker& check, const Path& at, const json& value, PortalKind kind) {
+void check_kind_fields(Checker& check, const Path& at, const json& value, PortalKind kind, bool volume) {
     const auto refuse = [&](const char* name, const std::string& message) {
         if (field(value, name) != nullptr) check.error_at_key(at / name, message);
     };
+    if (volume) {
+        refuse("reflectance", "a volume has no reflectance (it shows its target room, times its \"tint\"); remove it");
+        return;
+    }
     switch (kind) {
         case PortalKind::Door:
             refuse("tint",
@@ -183,18 +198,23 @@ PortalDraft read_portal(Checker& check, const Path& at, const json& value) {
     Portal& portal = draft.portal;
     if (const json* v = field(value, "kind")) {
         draft.has_kind = true;
-        draft.kind_ok = read_kind(check, at / "kind", *v, portal.kind);
+        draft.kind_ok = read_kind(check, at / "kind", *v, portal.kind, draft.volume);
     }
     // With an unknown kind, which fields belong is unknown: only the fields
     // every kind has are required, and none is refused.
-    const bool door = draft.kind_ok && portal.kind == PortalKind::Door;
+    const bool volume = draft.kind_ok && draft.volume;
+    const bool door = draft.kind_ok && !volume && portal.kind == PortalKind::Door;
     const bool mirror = draft.kind_ok && portal.kind == PortalKind::Mirror;
     const bool window = draft.kind_ok && portal.kind == PortalKind::Window;
-    check.check_fields(
-        at, value,
-        {"id", "room", "center", "normal", "up", "width", "height", "depth", "kind", "target", "tint", "reflectance"},
-        {"id", "room", "center", "normal", "width", "height"});
+    const std::initializer_list<const char*> known = {"id",     "room",  "center", "normal", "up",   "width",
+                                                      "height", "depth", "kind",   "target", "tint", "reflectance"};
+    if (volume) {
+        check.check_fields(at, value, known, {"id", "room", "center", "normal", "width", "height", "depth"});
+    } else {
+        check.check_fields(at, value, known, {"id", "room", "center", "normal", "width", "height"});
+    }
     if (field(value, "target") == nullptr) {
+        if (volume) check.error(at, "missing required field \"target\" (the id of the room a volume shows)");
         if (door) check.error(at, "missing required field \"target\" (the id of the door it leads to)");
         if (window) {
             check.error(at,
@@ -202,7 +222,7 @@ PortalDraft read_portal(Checker& check, const Path& at, const json& value) {
                         "whose room it shows)");
         }
     }
-    if (draft.kind_ok) check_kind_fields(check, at, value, portal.kind);
+    if (draft.kind_ok) check_kind_fields(check, at, value, portal.kind, volume);
     if (const json* v = field(value, "id")) {
         if (auto id = check.read_id(at / "id", *v)) {
             portal.id = std::move(*id);
@@ -214,11 +234,13 @@ PortalDraft read_portal(Checker& check, const Path& at, const json& value) {
     if (const json* v = field(value, "tint"); v && !door) {
         if (const auto tint = check.read_colour(at / "tint", *v)) portal.tint = *tint;
     }
-    if (const json* v = field(value, "reflectance"); v && !door && !mirror) {
+    if (const json* v = field(value, "reflectance"); v && !door && !mirror && !volume) {
         if (const auto r = check.read_number(at / "reflectance", *v, NumberKind::Fraction)) portal.reflectance = *r;
     }
-    const bool has_box = !mirror && !window;
-    draft.rect_ok = read_rect(check, at, value, has_box, door, portal.rect);
+    DepthRule depth = door ? DepthRule::DoorBox : DepthRule::Box;
+    if (mirror || window) depth = DepthRule::None;
+    if (volume) depth = DepthRule::Volume;
+    draft.rect_ok = read_rect(check, at, value, depth, portal.rect);
     return draft;
 }
 
@@ -275,6 +297,13 @@ void link_target(Checker& check, std::size_t i, std::vector<PortalDraft>& portal
     }
     if (static_cast<std::size_t>(it->second) == i) return;  // a repeated id; reported
     const PortalDraft& other = portals[static_cast<std::size_t>(it->second)];
+    if (other.volume) {
+        const std::string kind = draft.kind_ok ? kind_name(draft.portal.kind) : "portal";
+        check.error(draft.path / "target", quote(other.portal.id) +
+                                               " is a volume, which has no partner (its target is a room); a " + kind +
+                                               " must target a " + kind + " that names it back");
+        return;
+    }
     if (other.kind_ok && other.portal.kind == PortalKind::Mirror) {
         const std::string kind = draft.kind_ok ? kind_name(draft.portal.kind) : "portal";
         check.error(draft.path / "target", quote(other.portal.id) +
@@ -322,7 +351,7 @@ void link_portals(Checker& check, std::vector<PortalDraft>& portals, const std::
     const std::map<std::string, int> portal_index = index_by_id(portals);
     for (std::size_t i = 0; i < portals.size(); ++i) {
         link_room(check, portals[i], room_index, rooms_known);
-        link_target(check, i, portals, portal_index);
+        if (!portals[i].volume) link_target(check, i, portals, portal_index);  // link_volumes
     }
 }
 

@@ -75,7 +75,7 @@ void read_textures(Checker& check, const Path& at, const json& value, assets::As
     for (std::size_t f = 0; f < own.size(); ++f) room.face_texture[f] = own[f] != nullptr ? own[f] : all;
 }
 
-RoomDraft read_room(Checker& check, const Path& at, const json& value, assets::AssetCache& models) {
+RoomDraft read_room(Checker& check, const Path& at, const json& value, assets::AssetCache& models, PropIds& prop_ids) {
     RoomDraft draft;
     draft.path = at;
     if (!check.expect_object(at, value)) return draft;
@@ -127,7 +127,7 @@ RoomDraft read_room(Checker& check, const Path& at, const json& value, assets::A
     }
     if (const json* v = field(value, "props")) {
         if (check.expect_array(at / "props", *v, limits::kMaxPropsPerRoom)) {
-            read_props(check, at / "props", *v, colour, models, room.props);
+            read_props(check, at / "props", *v, colour, models, prop_ids, room.props);
         }
     }
     return draft;
@@ -143,8 +143,9 @@ std::vector<RoomDraft> read_rooms(Checker& check, const Path& at, const json& ro
         return drafts;
     }
     std::map<std::string, std::size_t> first_use;
+    PropIds prop_ids;  // props are unique among all the rooms' props
     for (std::size_t i = 0; i < rooms.size(); ++i) {
-        RoomDraft draft = read_room(check, at / i, rooms[i], models);
+        RoomDraft draft = read_room(check, at / i, rooms[i], models, prop_ids);
         if (draft.has_id) {
             const auto [it, inserted] = first_use.emplace(draft.room.id, i);
             if (!inserted) {

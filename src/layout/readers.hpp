@@ -33,19 +33,44 @@ struct PortalDraft {
     bool has_id = false;
     bool rect_ok = false;   // center, normal, up, width, height, depth read
     bool has_kind = false;  // "kind" is written
-    bool kind_ok = true;    // "kind" is absent (a door) or one of the three kinds
+    bool kind_ok = true;    // "kind" is absent (a door) or one of the four kinds
+    // "kind": "volume" (layout-format.md, "Volume portals"): kept apart from
+    // the paired portals; `target_id` names a room, found by link_volumes.
+    bool volume = false;
+    int target_room = -1;
 };
+
+// The props' ids seen so far in the layout, each with where it was first
+// used ("rooms[0].props[2]"): prop ids are unique in the whole layout.
+using PropIds = std::map<std::string, std::string>;
 
 std::vector<RoomDraft> read_rooms(Checker& check, const Path& at, const json& rooms, assets::AssetCache& models);
 
 void read_props(Checker& check, const Path& at, const json& props, const glm::dvec3& room_colour,
-                assets::AssetCache& models, std::vector<Prop>& out);
+                assets::AssetCache& models, PropIds& ids, std::vector<Prop>& out);
+
+// Loads the glTF file named by the string `gltf` (at `gltf_at`) into `prop`'s
+// path, triangles, materials and textures; `instances` copies count towards
+// the layout's triangle budget. False if it cannot (reported).
+bool load_gltf_model(Checker& check, const Path& gltf_at, const json& gltf, assets::AssetCache& models,
+                     std::size_t instances, GltfProp& prop);
+
+// Top-level `hands`: a box (`box` [W, H, D], `color`) or a glTF model
+// (`gltf`, `scale`), exactly one. Nothing if it is wrong (reported).
+std::optional<HandShape> read_hands(Checker& check, const Path& at, const json& value, assets::AssetCache& models);
 
 std::vector<PortalDraft> read_portals(Checker& check, const Path& at, const json& portals);
 
 // Resolves each portal's room and target, and checks the pairs. Without
 // `rooms_known` (the room list had errors) an unknown room id is not reported.
 void link_portals(Checker& check, std::vector<PortalDraft>& portals, const std::vector<RoomDraft>& rooms,
+                  bool rooms_known);
+
+// Volumes (layout-format.md, "Volume portals"): each target names a room
+// without portals of its own (of any kind, volumes included), and the
+// volumes of a room do not overlap; a volume wholly outside its room gets a
+// warning.
+void link_volumes(Checker& check, std::vector<PortalDraft>& portals, const std::vector<RoomDraft>& rooms,
                   bool rooms_known);
 
 // The hole rule (layout-format.md, "The portal box"): sets hole_face, and

@@ -23,6 +23,7 @@ Summary summarize(const Layout& layout) {
         ++s.pairs;
         ++(p.kind == PortalKind::Window ? s.window_pairs : s.door_pairs);
     }
+    s.volumes = static_cast<int>(layout.volumes.size());
     std::set<const image::Pixels*> images;
     for (const Room& room : layout.rooms) {
         s.floor_area += (room.max.x - room.min.x) * (room.max.z - room.min.z);
@@ -32,6 +33,7 @@ Summary summarize(const Layout& layout) {
             images.insert(texture.get());
         }
         for (const Prop& prop : room.props) {
+            if (!prop_motion(prop).keys.empty()) ++s.moving_props;
             if (const auto* gltf = std::get_if<GltfProp>(&prop)) {
                 for (const assets::Texture& texture : gltf->textures) images.insert(texture.image.get());
             }
@@ -52,6 +54,24 @@ Summary summarize(const Layout& layout) {
     return s;
 }
 
+namespace {
+
+// "hands: ..." for a glTF model or a box other than the default; "" for the default.
+std::string hands_line(const HandShape& hands) {
+    char line[256];
+    if (hands.model) {
+        std::snprintf(line, sizeof line, ", scale %g\n", hands.model->scale);
+        return "hands: the glTF model " + one_line(hands.model->path, 200) + line;
+    }
+    const HandShape standard;
+    if (hands.box == standard.box && hands.color == standard.color) return "";
+    std::snprintf(line, sizeof line, "hands: a box %g x %g x %g m, colour [%g, %g, %g]\n", hands.box.x, hands.box.y,
+                  hands.box.z, hands.color.r, hands.color.g, hands.color.b);
+    return line;
+}
+
+}  // namespace
+
 std::string summary_text(const Layout& layout, const Summary& summary) {
     char line[256];
     std::string out;
@@ -71,6 +91,10 @@ std::string summary_text(const Layout& layout, const Summary& summary) {
         out += "textures: " + std::to_string(summary.images) + (summary.images == 1 ? " image" : " images") + ", " +
                std::to_string(summary.textured_faces) + " textured room faces\n";
     }
+    // Only with volumes, moving props or hands other than the default box.
+    if (summary.volumes > 0) out += "volumes: " + std::to_string(summary.volumes) + "\n";
+    if (summary.moving_props > 0) out += "moving props: " + std::to_string(summary.moving_props) + "\n";
+    out += hands_line(layout.hands);
     if (!summary.play_area_area) {
         out += "play area: none\n";
         std::snprintf(line, sizeof line, "floor area: %.2f m2\n", summary.floor_area);

@@ -83,8 +83,8 @@ TEST(LayoutMirrors, AnExplicitDoorIsADoor) {
 TEST(LayoutMirrors, AnUnknownKindNamesTheKinds) {
     const std::string text = edit(kMirror, "\"mirror\"", "\"glass\"");
     expect_one_error(text, "\"glass\"",
-                     "portals[2].kind: unknown kind \"glass\" (the kinds are \"door\", the default, \"mirror\" "
-                     "and \"window\")");
+                     "portals[2].kind: unknown kind \"glass\" (the kinds are \"door\", the default, \"mirror\", "
+                     "\"window\" and \"volume\")");
     expect_one_error(edit(kMirror, "\"mirror\"", "\"Mirror\""), "\"Mirror\"",
                      "portals[2].kind: unknown kind \"Mirror\"");
     expect_one_error(edit(kMirror, "\"mirror\"", "2"), "2, \"room\"",
