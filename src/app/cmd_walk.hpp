@@ -1,16 +1,23 @@
 // `impossible walk LAYOUT --path FILE` (cli.md): replays a walk.
 //
-// The path file holds one physical head pose a line, `X Y Z YAW PITCH ROLL`
-// (metres, degrees), separated by spaces or tabs. Blank lines and lines whose
-// first non-blank character is `#` are skipped; a trailing '\r' is ignored.
-// Every other line must hold exactly six finite numbers, positions within
-// ±1e6 m and angles within ±1e6°.
+// The path file holds one frame a line: the physical head pose,
+// `X Y Z YAW PITCH ROLL` (metres, degrees), optionally followed by the left
+// and the right hand's (18 numbers), separated by spaces or tabs
+// (layout/path_file.hpp). Blank lines and lines whose first non-blank
+// character is `#` are skipped; a trailing '\r' is ignored. Every number is
+// finite, positions within ±1e6 m and angles within ±1e6°.
 //
 // The whole file is read and checked before anything is printed: a bad line
 // gives one line `FILE:LINE: message` on err, nothing on out, and status 1.
 //
 // Output: one JSON object a line per pose, frame numbered from 0:
 //   {"frame":0,"room":"hall","teleports":[],"position":[0,1.6,1],"forward":[0,0,-1]}
+// then, on a line with hands, "hands":["ROOM","ROOM"] (left, right: the room
+// each hand is in, walked from the head centre after the frame's teleports
+// to the hand's virtual position, walk::place_hand), and, when the layout has
+// moving props, on every line "props":{"ID":"ROOM",...}: each prop with a
+// motion, in layout order, and its room at time frame / fps
+// (walk::walk_prop).
 // Numbers are written by impossible::format_number (base/format.hpp): the
 // shortest decimal that reads back to the same double, integers without a
 // fraction ("1", not "1.0"), 1.6 as "1.6", 6.1e-17 as "6.1e-17"; -0 as 0.
@@ -21,15 +28,18 @@
 #include <string>
 
 #include "layout/layout.hpp"
+#include "layout/path_file.hpp"
 
 namespace impossible::app {
 
 // Reads the path file and replays it. Returns 0, or 1 on a bad or unreadable
 // path file (one line on err).
-int run_walk(const layout::Layout& layout, const std::string& path_file, std::ostream& out, std::ostream& err);
+// `fps` (> 0, finite): line k is at time k / fps.
+int run_walk(const layout::Layout& layout, const std::string& path_file, std::ostream& out, std::ostream& err,
+             double fps = layout::kDefaultPathFps);
 
 // The same on an already open stream; `name` is the FILE of error messages.
 int run_walk_stream(const layout::Layout& layout, std::istream& in, const std::string& name, std::ostream& out,
-                    std::ostream& err);
+                    std::ostream& err, double fps = layout::kDefaultPathFps);
 
 }  // namespace impossible::app

@@ -3,8 +3,10 @@
 
 #include "app/cmd_walk.hpp"
 #include "app/commands.hpp"
+#include "cli/errors.hpp"
 #include "cli/layout_source.hpp"
 #include "cli/option_table.hpp"
+#include "layout/path_file.hpp"
 
 namespace impossible::app {
 
@@ -12,11 +14,21 @@ namespace {
 
 struct WalkOptions {
     std::optional<std::string> path;  // required
+    double fps = layout::kDefaultPathFps;
 };
+
+// --fps N: frames a second, 0.001..1e6 (cli.md, "walk"; as render's and
+// bench's --fps): a path's last line (at most ~100,000) is at most 1e8 s.
+double walk_fps(const OptionValue& v) {
+    const double fps = parse_number(v.name, v.text);
+    if (!(fps >= 1e-3 && fps <= 1e6)) throw InputError(v.name + ": " + v.text + " is not in 0.001..1000000");
+    return fps;
+}
 
 // Described in the usage text.
 constexpr Option<WalkOptions> kWalkOptions[] = {
     {"--path", "FILE", nullptr, [](WalkOptions& o, const OptionValue& v) { o.path = v.text; }},
+    {"--fps", "N", nullptr, [](WalkOptions& o, const OptionValue& v) { o.fps = walk_fps(v); }},
 };
 
 }  // namespace
@@ -24,10 +36,14 @@ constexpr Option<WalkOptions> kWalkOptions[] = {
 int run_walk_command(const Args& args, std::ostream& out, std::ostream& err) {
     const ParsedArgs parsed = parse_args(args, 1, kWalkOptions);
     if (parsed.help) {
-        out << "usage: impossible walk LAYOUT --path FILE\n"
-               "Replays a walk: FILE holds one physical head pose a line, X Y Z YAW PITCH ROLL\n"
-               "(blank lines and lines starting with # are skipped). Prints one JSON object a line:\n"
+        out << "usage: impossible walk LAYOUT --path FILE [--fps N]\n"
+               "Replays a walk: FILE holds one physical head pose a line, X Y Z YAW PITCH ROLL, or 18\n"
+               "numbers: the head, then the left and the right hand (blank lines and lines starting\n"
+               "with # are skipped). Prints one JSON object a line:\n"
                "{\"frame\":0,\"room\":\"hall\",\"teleports\":[],\"position\":[0,1.6,1],\"forward\":[0,0,-1]}\n"
+               "with \"hands\":[\"ROOM\",\"ROOM\"] on a line with hands, and, when props move,\n"
+               "\"props\":{\"ID\":\"ROOM\",...}: each moving prop's room at time k / N for line k\n"
+               "(--fps N: frames per second, 0.001..1000000, default 90).\n"
                "FILE may be a pipe (at most 4 MiB). At most 64 portals are crossed in one frame; a frame\n"
                "that reaches the limit gets a warning on stderr.\n";
         return kExitOk;
@@ -37,7 +53,7 @@ int run_walk_command(const Args& args, std::ostream& out, std::ostream& err) {
     apply_options(kWalkOptions, parsed, options);
     if (!options.path) throw UsageError("walk needs --path FILE");
     const layout::Layout layout = load_layout_or_default(parsed.positional[0]);
-    return run_walk(layout, *options.path, out, err);
+    return run_walk(layout, *options.path, out, err, options.fps);
 }
 
 }  // namespace impossible::app
