@@ -5,10 +5,42 @@ uniform sampler2D u_color_texture;
 uniform usampler2D u_id_texture;
 uniform vec2 u_target_size;  // the main target's size in pixels
 
+#if defined(VOLUMES)
+// The cell's volume portals (VOLUME_CAPACITY at most, a define): each box's
+// centre and its three axes divided by its half extents, so that a point is
+// inside when |dot(p - centre, axis)| <= 1 for all three.
+in vec3 v_volume_position;
+uniform int u_volume_count;
+uniform vec3 u_volume_center[VOLUME_CAPACITY];
+uniform vec3 u_volume_axis[3 * VOLUME_CAPACITY];
+// -1: the cell's own surfaces, hidden inside every volume; k >= 0: a volume's
+// target room, shown only inside volume k.
+uniform int u_volume_inside;
+uniform vec3 u_volume_tint;  // multiplies what is seen inside the volume
+
+bool in_volume(int k) {
+    vec3 d = v_volume_position - u_volume_center[k];
+    vec3 q = abs(vec3(dot(d, u_volume_axis[3 * k]), dot(d, u_volume_axis[3 * k + 1]), dot(d, u_volume_axis[3 * k + 2])));
+    return max(q.x, max(q.y, q.z)) <= 1.0 + VOLUME_TOLERANCE;
+}
+
+void clip_to_volumes() {
+    if (u_volume_inside >= 0) {
+        if (!in_volume(u_volume_inside)) discard;
+        return;
+    }
+    for (int k = 0; k < u_volume_count; ++k)
+        if (in_volume(k)) discard;
+}
+#endif
+
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out uint o_id;
 
 void main() {
+#if defined(VOLUMES)
+    clip_to_volumes();
+#endif
     vec2 uv = gl_FragCoord.xy / u_target_size;
     o_color = vec4(texture(u_color_texture, uv).rgb, 1.0);
     o_id = texture(u_id_texture, uv).r;

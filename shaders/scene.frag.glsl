@@ -17,6 +17,35 @@ uniform float u_alpha_cutoff; // alpha below it is not a surface; < 0: opaque
 uniform bool u_mip_level0;    // colour from mip level 0 too (render::FrameDesc::textures_mip_level0)
 #endif
 
+#if defined(VOLUMES)
+// The cell's volume portals (VOLUME_CAPACITY at most, a define): each box's
+// centre and its three axes divided by its half extents, so that a point is
+// inside when |dot(p - centre, axis)| <= 1 for all three.
+in vec3 v_volume_position;
+uniform int u_volume_count;
+uniform vec3 u_volume_center[VOLUME_CAPACITY];
+uniform vec3 u_volume_axis[3 * VOLUME_CAPACITY];
+// -1: the cell's own surfaces, hidden inside every volume; k >= 0: a volume's
+// target room, shown only inside volume k.
+uniform int u_volume_inside;
+uniform vec3 u_volume_tint;  // multiplies what is seen inside the volume
+
+bool in_volume(int k) {
+    vec3 d = v_volume_position - u_volume_center[k];
+    vec3 q = abs(vec3(dot(d, u_volume_axis[3 * k]), dot(d, u_volume_axis[3 * k + 1]), dot(d, u_volume_axis[3 * k + 2])));
+    return max(q.x, max(q.y, q.z)) <= 1.0 + VOLUME_TOLERANCE;
+}
+
+void clip_to_volumes() {
+    if (u_volume_inside >= 0) {
+        if (!in_volume(u_volume_inside)) discard;
+        return;
+    }
+    for (int k = 0; k < u_volume_count; ++k)
+        if (in_volume(k)) discard;
+}
+#endif
+
 uniform uint u_cell_id;
 uniform bool u_unshaded;  // portal fill at the recursion limit: flat colour
 
@@ -34,6 +63,9 @@ bool checker_dark(vec3 p, vec3 n, float side) {
 }
 
 void main() {
+#if defined(VOLUMES)
+    clip_to_volumes();
+#endif
     o_id = u_cell_id;
     if (u_unshaded) {
         o_color = vec4(v_color, 1.0);
@@ -55,4 +87,7 @@ void main() {
     float lambert = max(0.0, dot(n, LIGHT_DIR));
     float dark = checker_dark(v_checker_position, n, v_checker) ? CHECKER_DARK : 1.0;
     o_color = vec4(base * ((AMBIENT + DIFFUSE * lambert) * dark), 1.0);
+#if defined(VOLUMES)
+    o_color.rgb *= u_volume_tint;
+#endif
 }

@@ -29,6 +29,23 @@ uniform vec4 u_clip_plane[2];
 // this offset.
 uniform vec3 u_checker_offset;
 uniform int u_single_eye;
+// OBJECT_CUTS: a dynamic object's instance (walk/objects.hpp): the doors'
+// planes that cut it, in the mesh's coordinates (keep >= 0; (0, 0, 0, 1)
+// cuts nothing), and the rotation of its normals into the cell's.
+#if defined(OBJECT_CUTS)
+uniform vec4 u_cut_plane[2];
+uniform mat3 u_object_rotation;
+#define CLIP_DISTANCE_COUNT 7
+#else
+#define CLIP_DISTANCE_COUNT 5
+#endif
+// VOLUMES: the draws of a cell with volume portals, and of their target
+// rooms: the vertex in the coordinates of the cell's volumes (the cell's
+// own, relative to its origin), for the fragment's inside test.
+#if defined(VOLUMES)
+uniform mat4 u_to_volume_space;
+out vec3 v_volume_position;
+#endif
 
 out vec3 v_checker_position;
 out vec3 v_normal;
@@ -39,7 +56,7 @@ out vec2 v_uv;
 out float v_alpha;
 #endif
 
-out float gl_ClipDistance[5];
+out float gl_ClipDistance[CLIP_DISTANCE_COUNT];
 
 void main() {
 #if defined(STEREO_SINGLE_EYE)
@@ -54,6 +71,13 @@ void main() {
     gl_ClipDistance[2] = clip.y - rect.y * clip.w;
     gl_ClipDistance[3] = rect.w * clip.w - clip.y;
     gl_ClipDistance[4] = dot(u_clip_plane[eye], vec4(a_position, 1.0));
+#if defined(OBJECT_CUTS)
+    gl_ClipDistance[5] = dot(u_cut_plane[0], vec4(a_position, 1.0));
+    gl_ClipDistance[6] = dot(u_cut_plane[1], vec4(a_position, 1.0));
+#endif
+#if defined(VOLUMES)
+    v_volume_position = (u_to_volume_space * vec4(a_position, 1.0)).xyz;
+#endif
 #if defined(STEREO_VIEWPORT_INDEX)
     gl_ViewportIndex = eye;
 #elif !defined(STEREO_SINGLE_EYE)
@@ -62,7 +86,11 @@ void main() {
 #endif
     gl_Position = clip;
     v_checker_position = a_position + u_checker_offset;
+#if defined(OBJECT_CUTS)
+    v_normal = u_object_rotation * a_normal;
+#else
     v_normal = a_normal;
+#endif
     v_color = a_color;
     v_checker = a_checker;
 #if defined(MATERIALS)

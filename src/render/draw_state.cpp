@@ -20,13 +20,15 @@ gl::WindowRect eye_viewport(const FrameDesc& frame, int eye) {
 // What every draw names: its target, depth convention, pass state (for the
 // view's winding), program and scissor.
 void bind_common(const DrawContext& ctx, const LevelView& view, Pass pass, int stencil_ref, GLuint program,
-                 const Scissor& scissor) {
+                 const Scissor& scissor, int clip_distances = -1) {
     gl::StateCache& state = *ctx.renderer.state;
     const bool reversed_z = ctx.frame.depth == DepthMode::ReversedZ;
     state.draw_framebuffer(ctx.target.framebuffer.get());
     // Reversed-Z: depth 1 at the near plane, 0 at infinity, in a float buffer.
     state.clip_control(reversed_z ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
-    state.apply(pass_state(pass, reversed_z, view.mirrored), stencil_ref);
+    gl::PassState pass_gl = pass_state(pass, reversed_z, view.mirrored);
+    if (clip_distances >= 0) pass_gl.clip_distances = clip_distances;
+    state.apply(pass_gl, stencil_ref);
     state.program(program);
     if (scissor)
         state.scissor(*scissor);
@@ -38,7 +40,7 @@ void bind_common(const DrawContext& ctx, const LevelView& view, Pass pass, int s
 
 void bind_draw(const DrawContext& ctx, const LevelView& view, const SceneDraw& draw) {
     assert(draw.program != nullptr);
-    bind_common(ctx, view, draw.pass, draw.stencil_ref, draw.program->program.get(), draw.scissor);
+    bind_common(ctx, view, draw.pass, draw.stencil_ref, draw.program->program.get(), draw.scissor, draw.clip_distances);
     gl::StateCache& state = *ctx.renderer.state;
     switch (ctx.frame.stereo) {
         case StereoMode::ClipShift: state.viewport(whole_target(ctx.frame)); break;
@@ -122,12 +124,54 @@ Scissor portal_scissor(const DrawContext& ctx, const LevelView& view, const std:
     return scissor_of(ctx, rects, view);
 }
 
+namespace {
+
+// An eye's rectangle as the draw's clip distances take it.
+NdcRect draw_rect(const DrawContext& ctx, const EyeView& ev, const NdcRect& rect) {
+    NdcRect nr = ev.active ? rect : NdcRect::none();
+    if (nr.empty()) return nr;
+    // One pixel of margin keeps float rounding from trimming a pixel whose
+    // centre the portal covers; the stencil bounds the rest. Never past the
+    // eye's own image: in clip-shift mode x = ±1 is the seam between the two
+    // eyes. Without culling, the whole image: only the stencil bounds the draw.
+    return ctx.frame.cull_portals ? intersect(widened(nr, 1.0, ctx.frame.eye_width, ctx.frame.eye_height), NdcRect{})
+                                  : NdcRect{};
+}
+
+}  // namespace
+
+void set_model_uniforms(const DrawContext& ctx, const LevelView& view, const SceneProgram& program,
+                        const std::array<NdcRect, 2>& rects, const math::dmat4& model,
+                        const glm::vec3& checker_offset) {
+    float vp[2][16];
+    float rect[2][4];
+    float plane[2][4];
+    for (int e = 0; e < 2; ++e) {
+        const EyeView& ev = view.eyes[e];
+        const math::dmat4 view_proj = ev.view_proj * model;
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) vp[e][c * 4 + r] = static_cast<float>(view_proj[c][r]);
+        const NdcRect nr = draw_rect(ctx, ev, rects[e]);
+        rect[e][0] = static_cast<float>(nr.x0);
+        rect[e][1] = static_cast<float>(nr.y0);
+        rect[e][2] = static_cast<float>(nr.x1);
+        rect[e][3] = static_cast<float>(nr.y1);
+        // The plane in the model's coordinates: dot(plane, model · p).
+        const math::dvec4 model_plane = glm::transpose(model) * ev.clip_plane;
+        for (int c = 0; c < 4; ++c) plane[e][c] = static_cast<float>(model_plane[c]);
+    }
+    const GLuint p = program.program.get();
+    glProgramUniformMatrix4fv(p, program.view_proj, 2, GL_FALSE, &vp[0][0]);
+    glProgramUniform4fv(p, program.eye_rect, 2, &rect[0][0]);
+    glProgramUniform4fv(p, program.clip_plane, 2, &plane[0][0]);
+    glProgramUniform3fv(p, program.checker_offset, 1, &checker_offset[0]);
+}
+
 void set_eye_uniforms(const DrawContext& ctx, const LevelView& view, const SceneProgram& program,
                       const std::array<NdcRect, 2>& rects) {
     float vp[2][16];
     float rect[2][4];
     float plane[2][4];
-    const int eye_w = ctx.frame.eye_width, eye_h = ctx.frame.eye_height;
     // The cell's vertices are relative to its origin: the move to layout
     // coordinates is folded into the matrices and planes here, in double.
     const scene::CellOrigin& cell_origin = ctx.renderer.cell_origins[static_cast<size_t>(view.cell)];
@@ -138,15 +182,7 @@ void set_eye_uniforms(const DrawContext& ctx, const LevelView& view, const Scene
         const math::dmat4 view_proj = ev.view_proj * from_cell;
         for (int c = 0; c < 4; ++c)
             for (int r = 0; r < 4; ++r) vp[e][c * 4 + r] = static_cast<float>(view_proj[c][r]);
-        NdcRect nr = ev.active ? rects[e] : NdcRect::none();
-        if (!nr.empty()) {
-            // One pixel of margin keeps float rounding from trimming a pixel
-            // whose centre the portal covers; the stencil bounds the rest.
-            // Never past the eye's own image: in clip-shift mode x = ±1 is
-            // the seam between the two eyes. Without culling, the whole
-            // image: only the stencil bounds the draw.
-            nr = ctx.frame.cull_portals ? intersect(widened(nr, 1.0, eye_w, eye_h), NdcRect{}) : NdcRect{};
-        }
+        const NdcRect nr = draw_rect(ctx, ev, rects[e]);
         rect[e][0] = static_cast<float>(nr.x0);
         rect[e][1] = static_cast<float>(nr.y0);
         rect[e][2] = static_cast<float>(nr.x1);
@@ -160,6 +196,8 @@ void set_eye_uniforms(const DrawContext& ctx, const LevelView& view, const Scene
     glProgramUniform4fv(p, program.eye_rect, 2, &rect[0][0]);
     glProgramUniform4fv(p, program.clip_plane, 2, &plane[0][0]);
     glProgramUniform3fv(p, program.checker_offset, 1, &cell_origin.checker_offset[0]);
+    // The cell's own geometry hides the inside of its volumes.
+    if (program.volume_count >= 0) set_volume_uniforms(ctx, view, program, from_cell, -1);
 }
 
 void set_cell_id(const SceneProgram& program, unsigned id, bool unshaded) {

@@ -50,6 +50,9 @@ struct SceneDraw {
     int stencil_ref = 0;  // the recursion level (or the next, passes.hpp)
     const SceneProgram* program = nullptr;
     Scissor scissor;
+    // GL_CLIP_DISTANCE0 .. n - 1 enabled: the pass's (kSceneClipDistances),
+    // or kObjectClipDistances for an object's instance (its door cuts).
+    int clip_distances = kSceneClipDistances;
 };
 
 // A full-target triangle (or the eyes' quads of a depth reset) through a
@@ -98,6 +101,21 @@ void set_eye_uniforms(const DrawContext& ctx, const LevelView& view, const Scene
                       const std::array<NdcRect, 2>& rects);
 
 void set_cell_id(const SceneProgram& program, unsigned id, bool unshaded);
+
+// The same for geometry whose vertices are in other coordinates than the
+// cell's: `model` maps them to the cell's (layout) coordinates, and the
+// checker pattern is at `checker_offset` (composed in double).
+void set_model_uniforms(const DrawContext& ctx, const LevelView& view, const SceneProgram& program,
+                        const std::array<NdcRect, 2>& rects, const math::dmat4& model, const glm::vec3& checker_offset);
+
+// A kVolumes program's uniforms for a draw in `view` (of a cell with
+// volumes): the cell's volumes, the vertices mapped by `to_cell` (vertex →
+// cell layout coordinates), and which side of them is kept: inside = -1
+// hides the inside of every volume (the cell's own draws), k >= 0 shows the
+// inside of volume k only, tinted (its target room's draws). Nothing for a
+// program without volumes.
+void set_volume_uniforms(const DrawContext& ctx, const LevelView& view, const SceneProgram& program,
+                         const math::dmat4& to_cell, int inside);
 
 // Depth as the frame's clip-space z of the far plane (w = 1).
 inline float far_depth(const FrameDesc& frame) { return frame.depth == DepthMode::ReversedZ ? 0.0f : 1.0f; }

@@ -86,13 +86,12 @@ bool hidden_by_occluder(const scene::CellObjects& cell, const EyeView& eye, cons
     return false;
 }
 
-void visible_batches(const scene::CellObjects& cell, const LevelView& view, int eye_width, int eye_height,
-                     double margin_px, CullScratch& scratch, std::vector<scene::DrawBatch>& out) {
-    if (cell.nodes.empty()) {
-        out.assign(cell.surfaces.begin(), cell.surfaces.end());
-        return;
-    }
-    out.clear();
+namespace {
+
+// Fills scratch.visible with the objects of the cell's tree whose bounds an
+// active eye may see (see visible_batches), left subtrees first.
+void collect_visible(const scene::CellObjects& cell, const LevelView& view, int eye_width, int eye_height,
+                     double margin_px, CullScratch& scratch) {
     std::array<EyePlanes, 2> eyes;
     int eye_count = 0;
     for (const EyeView& ev : view.eyes) {
@@ -125,6 +124,27 @@ void visible_batches(const scene::CellObjects& cell, const LevelView& view, int 
             if (node.count == 1 || !hidden(object.lo, object.hi)) scratch.visible.push_back(o);
         }
     }
+}
+
+}  // namespace
+
+void visible_objects(const scene::CellObjects& cell, const LevelView& view, int eye_width, int eye_height,
+                     double margin_px, CullScratch& scratch, std::vector<int>& out) {
+    out.clear();
+    if (cell.nodes.empty()) return;
+    collect_visible(cell, view, eye_width, eye_height, margin_px, scratch);
+    out.assign(scratch.visible.begin(), scratch.visible.end());
+    std::sort(out.begin(), out.end());
+}
+
+void visible_batches(const scene::CellObjects& cell, const LevelView& view, int eye_width, int eye_height,
+                     double margin_px, CullScratch& scratch, std::vector<scene::DrawBatch>& out) {
+    if (cell.nodes.empty()) {
+        out.assign(cell.surfaces.begin(), cell.surfaces.end());
+        return;
+    }
+    out.clear();
+    collect_visible(cell, view, eye_width, eye_height, margin_px, scratch);
     // Left subtrees first, and finish_cell numbers the objects in leaf order:
     // the visible ones come out in the order their indices are stored.
     assert(std::is_sorted(scratch.visible.begin(), scratch.visible.end()));

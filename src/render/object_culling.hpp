@@ -27,6 +27,12 @@ struct CullScratch {
 void visible_batches(const scene::CellObjects& cell, const LevelView& view, int eye_width, int eye_height,
                      double margin_px, CullScratch& scratch, std::vector<scene::DrawBatch>& out);
 
+// The same test for objects that are not the cell's own (a frame's dynamic
+// objects, object_draw.cpp): the indices into cell.objects, in increasing
+// order, of those whose bounds an active eye may see; none without a tree.
+void visible_objects(const scene::CellObjects& cell, const LevelView& view, int eye_width, int eye_height,
+                     double margin_px, CullScratch& scratch, std::vector<int>& out);
+
 // Whether a portal's box is hidden from an eye by one of the cell's
 // occluders (scene::CellObjects::occluders): every corner of the box lies in
 // the box's shadow, at least a millimetre behind the face that hides it.

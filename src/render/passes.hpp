@@ -32,6 +32,9 @@ enum class Pass {
 // Every pass of the scene shader writes gl_ClipDistance[0..4]: the eye's
 // rectangle (four) and the portal plane.
 inline constexpr int kSceneClipDistances = 5;
+// An object's instance also writes gl_ClipDistance[5..6]: the doors that cut
+// it (shaders/scene.vert.glsl, OBJECT_CUTS).
+inline constexpr int kObjectClipDistances = 7;
 
 // A pass of the portal renderer: depth test on, stencil == reference, clip
 // distances on, no blending.

@@ -12,15 +12,17 @@
 namespace impossible::render {
 
 void mark_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
-    draw_portal_box(ctx, view, {Pass::PortalMark, view.level, &ctx.scene_program, portal_scissor(ctx, view, rects)}, p,
+    draw_portal_box(ctx, view,
+                    {Pass::PortalMark, view.level, &cell_program(ctx, view.cell), portal_scissor(ctx, view, rects)}, p,
                     rects);
     clear_depth_in_portal(ctx, view, view.level + 1, rects);
 }
 
 void unmark_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
-    draw_portal_box(ctx, view,
-                    {Pass::PortalUnmark, view.level + 1, &ctx.scene_program, portal_scissor(ctx, view, rects)}, p,
-                    rects);
+    draw_portal_box(
+        ctx, view,
+        {Pass::PortalUnmark, view.level + 1, &cell_program(ctx, view.cell), portal_scissor(ctx, view, rects)}, p,
+        rects);
 }
 
 void draw_cell(const DrawContext& ctx, const LevelView& view, const SceneDraw& draw) {
@@ -38,7 +40,8 @@ void draw_cell(const DrawContext& ctx, const LevelView& view, const SceneDraw& d
     // the material variant, whose per-level uniforms are set when it is
     // first needed.
     SceneDraw with_materials = draw;
-    with_materials.program = ctx.material_program;
+    const SceneProgram* material_program = ctx.material_program ? &cell_program(ctx, view.cell, kMaterials) : nullptr;
+    with_materials.program = material_program;
     bool material_ready = false;
     for (const scene::DrawBatch& b : *batches) {
         if (b.texture < 0 && b.alpha_cutoff < 0.0f) {
@@ -47,8 +50,8 @@ void draw_cell(const DrawContext& ctx, const LevelView& view, const SceneDraw& d
             continue;
         }
         submit_queued(ctx, view, draw);
-        assert(ctx.material_program != nullptr);
-        const SceneProgram& m = *ctx.material_program;
+        assert(material_program != nullptr);
+        const SceneProgram& m = *material_program;
         if (!material_ready) {
             set_eye_uniforms(ctx, view, m, {view.eyes[0].rect, view.eyes[1].rect});
             set_cell_id(m, static_cast<unsigned>(view.cell + 1), false);
@@ -87,10 +90,10 @@ void draw_portal_box(const DrawContext& ctx, const LevelView& view, const SceneD
 
 void draw_fill(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects,
                int stencil_ref) {
-    set_cell_id(ctx.scene_program, shading::kFillId, true);
+    const SceneProgram& program = cell_program(ctx, view.cell);
+    set_cell_id(program, shading::kFillId, true);
     const ColourQueryScope colour(ctx.profiler);
-    draw_portal_box(ctx, view, {Pass::PortalFill, stencil_ref, &ctx.scene_program, portal_scissor(ctx, view, rects)}, p,
-                    rects);
+    draw_portal_box(ctx, view, {Pass::PortalFill, stencil_ref, &program, portal_scissor(ctx, view, rects)}, p, rects);
     ctx.scratch.stats.portal_fills += 1;
 }
 

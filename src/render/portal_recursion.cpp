@@ -91,7 +91,7 @@ std::vector<GLuint> test_portal_visibility(const DrawContext& ctx, const LevelVi
                                            const std::vector<std::array<NdcRect, 2>>& visible) {
     FrameScratch& s = ctx.scratch;
     std::vector<GLuint> queries(portals.size(), 0);
-    const SceneDraw draw{Pass::PortalTest, view.level, &ctx.scene_program, level_scissor(ctx, view)};
+    const SceneDraw draw{Pass::PortalTest, view.level, &cell_program(ctx, view.cell), level_scissor(ctx, view)};
     for (size_t k = 0; k < portals.size(); ++k) {
         if (visible[k][0].empty() && visible[k][1].empty()) continue;
         if (s.mark_queries_used == s.mark_queries.size())
@@ -145,6 +145,27 @@ std::vector<std::array<NdcRect, 2>> visible_portals(const DrawContext& ctx, cons
     return visible;
 }
 
+// The level's portal boxes into depth first, so that portals and surfaces
+// occlude each other, and the cell's surfaces behind a portal fail the depth
+// test instead of being drawn and then covered by the view through it; then
+// the cell's surfaces, its dynamic objects' instances and its volumes' rooms,
+// before any portal is marked so that they occlude it.
+void draw_level_surfaces(const DrawContext& ctx, const LevelView& view, const std::vector<int>& portals,
+                         const std::vector<std::array<NdcRect, 2>>& visible) {
+    const int level = view.level;
+    const Scissor scissor = level_scissor(ctx, view);
+    const SceneProgram& program = cell_program(ctx, view.cell);
+    const SceneDraw depth{Pass::PortalDepth, level, &program, scissor};
+    for (size_t k = 0; k < portals.size(); ++k)
+        if (!visible[k][0].empty() || !visible[k][1].empty()) draw_portal_box(ctx, view, depth, portals[k], visible[k]);
+    set_eye_uniforms(ctx, view, program, {view.eyes[0].rect, view.eyes[1].rect});
+    set_cell_id(program, static_cast<unsigned>(view.cell + 1), false);
+    const ColourQueryScope colour(ctx.profiler);
+    draw_cell(ctx, view, {Pass::Scene, level, &program, scissor});
+    draw_cell_instances(ctx, view, scissor, view.cell, -1);
+    draw_volume_rooms(ctx, view, scissor);
+}
+
 }  // namespace
 
 void draw_level(const DrawContext& ctx, const LevelView& view) {
@@ -156,21 +177,7 @@ void draw_level(const DrawContext& ctx, const LevelView& view) {
     const std::vector<int>& portals = r.links.room_portals[view.cell];
     const std::vector<std::array<NdcRect, 2>> visible = visible_portals(ctx, view, portals);
 
-    // Portal boxes into depth first, so that portals and surfaces occlude each
-    // other, and the cell's surfaces behind a portal fail the depth test
-    // instead of being drawn and then covered by the view through it.
-    const Scissor scissor = level_scissor(ctx, view);
-    const SceneDraw depth{Pass::PortalDepth, level, &ctx.scene_program, scissor};
-    for (size_t k = 0; k < portals.size(); ++k)
-        if (!visible[k][0].empty() || !visible[k][1].empty()) draw_portal_box(ctx, view, depth, portals[k], visible[k]);
-
-    // The cell's own surfaces.
-    set_eye_uniforms(ctx, view, ctx.scene_program, {view.eyes[0].rect, view.eyes[1].rect});
-    set_cell_id(ctx.scene_program, static_cast<unsigned>(view.cell + 1), false);
-    {
-        const ColourQueryScope colour(ctx.profiler);
-        draw_cell(ctx, view, {Pass::Scene, level, &ctx.scene_program, scissor});
-    }
+    draw_level_surfaces(ctx, view, portals, visible);
 
     // A portal hidden behind the cell's own surfaces (say, a wall) passes the
     // frustum test but not this one: conditional rendering then drops every

@@ -82,4 +82,23 @@ Result<void> ensure_portal_textures(const RendererData& r, FrameTargets& targets
 void draw_portal_via_texture(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects,
                              size_t slot);
 
+// --- Dynamic objects and volume portals (object_draw.cpp).
+
+// The frame's dynamic objects placed (walk::place_objects), grouped per cell
+// with their bounds and a culling tree per cell.
+void place_frame_objects(const RendererData& r, const FrameDesc& frame, FrameObjects& out);
+
+// The program a draw of `cell` uses: the plain or material one, or the
+// variant with `flags` (and kVolumes where the cell has volumes).
+const SceneProgram& cell_program(const DrawContext& ctx, int cell, unsigned flags = 0u);
+
+// The instances placed in `cell` that the level's eyes may see, drawn in
+// `view` (whose cell is `cell`, or holds a volume whose target is `cell`)
+// with id cell + 1; `inside` as set_volume_uniforms's.
+void draw_cell_instances(const DrawContext& ctx, const LevelView& view, const Scissor& scissor, int cell, int inside);
+
+// Each volume of view.cell: its target room's batches and instances, shown
+// only inside the volume, tinted.
+void draw_volume_rooms(const DrawContext& ctx, const LevelView& view, const Scissor& scissor);
+
 }  // namespace impossible::render

@@ -67,7 +67,8 @@ void draw_portal_via_texture(const DrawContext& ctx, const LevelView& view, int 
     draw_level(inside, through);
 
     // The box shows the texture where it is the visible surface.
-    const SceneProgram& shows = *r.programs.portal_texture;
+    const bool volumes = !r.volumes[static_cast<size_t>(view.cell)].empty();
+    const SceneProgram& shows = volumes ? *r.programs.portal_texture_volumes : *r.programs.portal_texture;
     glProgramUniform2f(shows.program.get(), shows.target_size, float(2 * ctx.frame.eye_width),
                        float(ctx.frame.eye_height));
     r.state->texture(0, texture.color_texture.get());

@@ -1,5 +1,6 @@
 #include "render/renderer.hpp"
 
+#include <algorithm>
 #include <cassert>
 
 #include "math/projection.hpp"
@@ -42,8 +43,25 @@ Result<void> ensure_program(Programs& programs, StereoMode mode, bool materials)
     return {};
 }
 
+// The variants with object cuts or volumes (scene_program.hpp) that a frame
+// of `mode` may draw with.
+Result<void> ensure_variants(RendererData& r, StereoMode mode, bool objects) {
+    const bool volumes = r.volume_capacity > 0;
+    for (unsigned flags = 0; flags < kSceneVariantCount; ++flags) {
+        if ((flags & (kObjectCuts | kVolumes)) == 0u) continue;
+        if (((flags & kObjectCuts) && !objects) || ((flags & kVolumes) && !volumes)) continue;
+        if ((flags & kMaterials) && !r.has_materials) continue;
+        std::optional<SceneProgram>& slot = r.programs.variants[mode_index(mode)][flags];
+        if (slot) continue;
+        Result<SceneProgram> built = build_scene_variant(mode, flags, r.volume_capacity);
+        if (!built) return built;
+        slot = std::move(*built);
+    }
+    return {};
+}
+
 // What a frame needs beyond the default program: its target, its stereo
-// mode's program and, for render-to-texture portals, their program and targets.
+// mode's programs and, for render-to-texture portals, their program and targets.
 Result<void> prepare_frame(RendererData& r, FrameTargets& targets, const FrameDesc& frame) {
     Programs& programs = r.programs;
     if (Result<void> made = ensure_target(targets, 2 * frame.eye_width, frame.eye_height, frame.depth); !made)
@@ -51,6 +69,8 @@ Result<void> prepare_frame(RendererData& r, FrameTargets& targets, const FrameDe
     if (Result<void> made = ensure_program(programs, frame.stereo, false); !made) return made;
     if (r.has_materials)
         if (Result<void> made = ensure_program(programs, frame.stereo, true); !made) return made;
+    const bool objects = !r.object_set.props.empty() || frame.hands.has_value();
+    if (Result<void> made = ensure_variants(r, frame.stereo, objects); !made) return made;
     if (Result<void> made = ensure_multisampled(programs, targets, frame); !made) return made;
     if (r.has_windows) {
         if (Result<void> made = prepare_window_blend(programs, false); !made) return made;
@@ -63,6 +83,11 @@ Result<void> prepare_frame(RendererData& r, FrameTargets& targets, const FrameDe
         Result<SceneProgram> built = build_portal_texture_program();
         if (!built) return built;
         programs.portal_texture = std::move(*built);
+    }
+    if (r.volume_capacity > 0 && !programs.portal_texture_volumes) {
+        Result<SceneProgram> built = build_portal_texture_program(r.volume_capacity);
+        if (!built) return built;
+        programs.portal_texture_volumes = std::move(*built);
     }
     return ensure_portal_textures(r, targets, frame);
 }
@@ -96,10 +121,13 @@ void draw_stereo(const DrawContext& ctx) {
         draw_level(ctx, root_view(frame, ctx.projection, 3u));
         return;
     }
+    const std::optional<SceneProgram>* variants = ctx.renderer.programs.variants[mode_index(StereoMode::TwoPass)];
     for (int e = 0; e < 2; ++e) {
         glProgramUniform1i(ctx.scene_program.program.get(), ctx.scene_program.single_eye, e);
         if (ctx.material_program)
             glProgramUniform1i(ctx.material_program->program.get(), ctx.material_program->single_eye, e);
+        for (unsigned flags = 0; flags < kSceneVariantCount; ++flags)
+            if (variants[flags]) glProgramUniform1i(variants[flags]->program.get(), variants[flags]->single_eye, e);
         DrawContext one_eye = ctx;
         one_eye.eye = e;
         draw_level(one_eye, root_view(frame, ctx.projection, 1u << e));
@@ -114,6 +142,7 @@ Result<void> draw_frame(RendererParts& parts, const FrameDesc& frame, FrameStats
     gl::StateCache& state = *r.state;
     FrameScratch& scratch = parts.scratch;
     scratch.begin_frame();
+    place_frame_objects(r, frame, scratch.objects);
     const Target& target = drawing_target(parts.targets, frame);
     clear_target(state, target, 0);
 
@@ -141,6 +170,35 @@ Result<void> draw_frame(RendererParts& parts, const FrameDesc& frame, FrameStats
     return {};
 }
 
+// The scene's dynamic objects and volumes, as the renderer draws them.
+void copy_objects(RendererData& r, const scene::Scene& scene) {
+    r.object_set = scene.object_set;
+    r.object_meshes = scene.object_meshes;
+    r.prop_mesh.resize(scene.cells.size());
+    for (size_t c = 0; c < scene.cells.size() && c < scene.object_set.dynamic.size(); ++c)
+        r.prop_mesh[c].assign(scene.object_set.dynamic[c].size(), -1);
+    for (size_t i = 0; i < scene.object_set.props.size(); ++i) {
+        const walk::DynamicProp& d = scene.object_set.props[i];
+        r.prop_mesh[static_cast<size_t>(d.room)][static_cast<size_t>(d.index)] = static_cast<int>(i);
+    }
+    for (const scene::ObjectMesh& mesh : scene.object_meshes)
+        for (const scene::DrawBatch& b : mesh.batches)
+            r.has_materials = r.has_materials || b.texture >= 0 || b.alpha_cutoff >= 0.0f;
+    r.volumes.assign(scene.cells.size(), {});
+    for (size_t c = 0; c < scene.volumes.size(); ++c) {
+        for (const layout::Volume& v : scene.volumes[c]) {
+            VolumeBox box;
+            box.center = v.rect.center;
+            box.axes = {math::portal_right(v.rect), v.rect.up, v.rect.normal};
+            box.half = 0.5 * math::dvec3(v.rect.width, v.rect.height, v.rect.depth);
+            box.target = v.target_room;
+            box.tint = v.tint;
+            r.volumes[c].push_back(box);
+        }
+        r.volume_capacity = std::max(r.volume_capacity, static_cast<int>(r.volumes[c].size()));
+    }
+}
+
 }  // namespace
 
 void clear_target(gl::StateCache& state, const Target& target, int stencil) {
@@ -164,6 +222,7 @@ Result<Renderer> Renderer::create(gl::StateCache& state, const scene::Scene& sce
     for (const auto& cell : scene.batches)
         for (const scene::DrawBatch& b : cell)
             r.has_materials = r.has_materials || b.texture >= 0 || b.alpha_cutoff >= 0.0f;
+    copy_objects(r, scene);
     r.cell_origins = scene.origins;
     r.links = scene.links;
     r.portals = scene.portal_info;

@@ -11,6 +11,7 @@
 //   begin_frame().
 #pragma once
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -25,6 +26,7 @@
 #include "render/scene_program.hpp"
 #include "render/target.hpp"
 #include "scene/scene.hpp"
+#include "walk/objects.hpp"
 
 namespace impossible::render {
 
@@ -35,9 +37,32 @@ struct Programs {
     std::optional<SceneProgram> scene[kStereoModeCount];     // per StereoMode
     std::optional<SceneProgram> material[kStereoModeCount];  // the same with textures and cut-outs
     std::optional<SceneProgram> portal_texture;              // render-to-texture portals
-    std::optional<WindowBlendProgram> window_blend[2];       // single-sample, multisample copies
-    std::vector<gl::Program> id_resolve;  // the multisample id resolve per sample count (index: count)
-    ClearDepthProgram clear_depth;        // built with the renderer
+    // The variants with kObjectCuts or kVolumes (scene_program.hpp), per
+    // StereoMode and flags, built before the first frame that needs them.
+    std::optional<SceneProgram> variants[kStereoModeCount][kSceneVariantCount];
+    std::optional<SceneProgram> portal_texture_volumes;  // render-to-texture portals of a cell with volumes
+    std::optional<WindowBlendProgram> window_blend[2];   // single-sample, multisample copies
+    std::vector<gl::Program> id_resolve;                 // the multisample id resolve per sample count (index: count)
+    ClearDepthProgram clear_depth;                       // built with the renderer
+};
+
+// A volume portal (layout-format.md, "Volume portals") as the renderer draws
+// it: its box in layout coordinates and the room shown inside it.
+struct VolumeBox {
+    math::dvec3 center{0.0};
+    std::array<math::dvec3, 3> axes{};  // r, u, n: unit
+    math::dvec3 half{0.0};              // half the width, height, depth
+    int target = -1;                    // the room shown inside
+    glm::dvec3 tint{1.0};
+};
+
+// What a frame's dynamic objects are (walk::place_objects), placed once per
+// frame and looked up per cell by every level that draws the cell.
+struct FrameObjects {
+    std::vector<walk::ObjectInstance> instances;
+    std::vector<int> mesh;                  // per instance: its RendererData::object_meshes index
+    std::vector<scene::CellObjects> cells;  // per room: its instances' bounds (first_batch: the instance) and tree
+    std::vector<int> touched;               // the rooms whose `cells` entry is not empty
 };
 
 struct RendererData {
@@ -50,6 +75,12 @@ struct RendererData {
     links::PortalLinks links;                          // M_AB per portal, the portals of each room
     bool has_windows = false;                          // the window blend's programs are needed
     bool has_materials = false;                        // some batch has a texture or an alpha cutoff
+    walk::ObjectSet object_set;                        // the dynamic props and the hand (scene.hpp)
+    std::vector<scene::ObjectMesh> object_meshes;      // per object_set.props, then the hand
+    std::vector<std::vector<int>> prop_mesh;           // per room, per prop: its object mesh, or -1 (static)
+    bool object_materials = false;                     // some object mesh batch has a texture or a cutoff
+    std::vector<std::vector<VolumeBox>> volumes;       // per room: its volume portals
+    int volume_capacity = 0;                           // the most volumes of one room
     GpuScene gpu;
     gl::VertexArray empty_vao;  // for the attribute-less full-target triangle
     Programs programs;
@@ -73,6 +104,8 @@ struct FrameScratch {
     FrameStats stats;
     CullScratch cull;  // reused by every level (object_culling.hpp)
     std::vector<scene::DrawBatch> cull_batches;
+    FrameObjects objects;  // the frame's dynamic objects (object_draw.cpp)
+    std::vector<int> visible_instances;
     IndirectDraws indirect;                  // FrameDesc::multi_draw's commands
     std::vector<gl::Query> mark_queries;     // occlusion queries of portals, made on first use
     size_t mark_queries_used = 0;            // of mark_queries, by this frame

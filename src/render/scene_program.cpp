@@ -1,5 +1,6 @@
 #include "render/scene_program.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -34,14 +35,48 @@ namespace {
 // uses, so that the GLSL compiler keeps them.
 struct SceneVariant {
     const char* fragment = "shaders/scene.frag.glsl";
-    bool single_eye = false;  // STEREO_SINGLE_EYE: u_single_eye
-    bool materials = false;   // MATERIALS: textures and cut-outs
+    bool single_eye = false;   // STEREO_SINGLE_EYE: u_single_eye
+    bool materials = false;    // MATERIALS: textures and cut-outs
+    bool object_cuts = false;  // OBJECT_CUTS
+    int volume_capacity = 0;   // VOLUMES when > 0
 };
+
+std::string variant_defines(const SceneVariant& variant) {
+    std::string defines;
+    if (variant.object_cuts) defines += "#define OBJECT_CUTS\n";
+    if (variant.volume_capacity > 0) {
+        char buf[160];
+        // The inside test's tolerance: far below a pixel, above float rounding
+        // of positions a few metres from the cell's origin.
+        std::snprintf(buf, sizeof buf, "#define VOLUMES\n#define VOLUME_CAPACITY %d\n#define VOLUME_TOLERANCE 1e-6\n",
+                      variant.volume_capacity);
+        defines += buf;
+    }
+    return defines;
+}
+
+void find_variant_uniforms(const SceneVariant& variant, gl::UniformLocations& u, SceneProgram& p) {
+    if (variant.object_cuts) {
+        p.cut_plane = u.required("u_cut_plane");
+        p.object_rotation = u.required("u_object_rotation");
+    }
+    if (variant.volume_capacity > 0) {
+        p.to_volume_space = u.required("u_to_volume_space");
+        p.volume_count = u.required("u_volume_count");
+        p.volume_center = u.required("u_volume_center");
+        p.volume_axis = u.required("u_volume_axis");
+        p.volume_inside = u.required("u_volume_inside");
+        p.volume_capacity = variant.volume_capacity;
+        // The portal texture's fragment shader shows no tint.
+        p.volume_tint = std::string(variant.fragment) == "shaders/scene.frag.glsl" ? u.required("u_volume_tint")
+                                                                                   : u.optional("u_volume_tint");
+    }
+}
 
 Result<SceneProgram> link_scene_program(const SceneVariant& variant, const std::string& defines) {
     const std::vector<gl::ShaderSource> stages = {embedded_shader(GL_VERTEX_SHADER, "shaders/scene.vert.glsl"),
                                                   embedded_shader(GL_FRAGMENT_SHADER, variant.fragment)};
-    Result<gl::Program> built = gl::build_program(stages, defines);
+    Result<gl::Program> built = gl::build_program(stages, defines + variant_defines(variant));
     if (!built) return built;
     SceneProgram p;
     p.program = std::move(*built);
@@ -70,6 +105,7 @@ Result<SceneProgram> link_scene_program(const SceneVariant& variant, const std::
         glProgramUniform1i(name, u.required("u_texture"), static_cast<GLint>(kSceneTextureUnit));
         glProgramUniform1f(name, p.alpha_cutoff, -1.0f);
     }
+    find_variant_uniforms(variant, u, p);
     if (Result<void> all = u.check(); !all) return all;
     return p;
 }
@@ -77,19 +113,26 @@ Result<SceneProgram> link_scene_program(const SceneVariant& variant, const std::
 }  // namespace
 
 Result<SceneProgram> build_scene_program(StereoMode mode, bool materials) {
+    return build_scene_variant(mode, materials ? kMaterials : 0u);
+}
+
+Result<SceneProgram> build_scene_variant(StereoMode mode, unsigned flags, int volume_capacity) {
     std::string defines = shading_defines();
-    if (materials) defines += "#define MATERIALS\n";
+    if (flags & kMaterials) defines += "#define MATERIALS\n";
     if (mode == StereoMode::ViewportIndex) defines += "#define STEREO_VIEWPORT_INDEX\n";
     if (mode == StereoMode::TwoPass) defines += "#define STEREO_SINGLE_EYE\n";
     SceneVariant variant;
     variant.single_eye = mode == StereoMode::TwoPass;
-    variant.materials = materials;
+    variant.materials = (flags & kMaterials) != 0;
+    variant.object_cuts = (flags & kObjectCuts) != 0;
+    variant.volume_capacity = (flags & kVolumes) ? std::max(1, volume_capacity) : 0;
     return link_scene_program(variant, defines);
 }
 
-Result<SceneProgram> build_portal_texture_program() {
+Result<SceneProgram> build_portal_texture_program(int volume_capacity) {
     SceneVariant variant;
     variant.fragment = "shaders/portal_texture.frag.glsl";
+    variant.volume_capacity = volume_capacity;
     return link_scene_program(variant, "");
 }
 

@@ -31,15 +31,38 @@ struct SceneProgram {
     GLint alpha_cutoff = -1;    // float: drop fragments whose alpha is below it; < 0: opaque (materials only)
     GLint mip_level0 = -1;      // bool: textures at mip level 0 only (materials only)
     GLint target_size = -1;     // vec2, only in the portal-texture program
+    // kObjectCuts variants only:
+    GLint cut_plane = -1;        // vec4[2]: the door planes that cut an instance, mesh coordinates
+    GLint object_rotation = -1;  // mat3: the instance's normals into the cell's coordinates
+    // kVolumes variants only (shaders/scene.frag.glsl, VOLUMES):
+    GLint to_volume_space = -1;  // mat4: vertex → the cell's coordinates less its origin
+    GLint volume_count = -1;     // int
+    GLint volume_center = -1;    // vec3[capacity]
+    GLint volume_axis = -1;      // vec3[3 · capacity]: axes over half extents
+    GLint volume_inside = -1;    // int: -1 hide inside every volume; k show inside volume k only
+    GLint volume_tint = -1;      // vec3
+    int volume_capacity = 0;     // volumes the arrays hold
 };
+
+// What a variant of the scene program adds to the plain one: bits of
+// build_scene_variant's `flags`.
+inline constexpr unsigned kMaterials = 1u;   // MATERIALS: textures and cut-outs
+inline constexpr unsigned kObjectCuts = 2u;  // OBJECT_CUTS: instances of dynamic objects
+inline constexpr unsigned kVolumes = 4u;     // VOLUMES: the draws of a cell with volume portals
+inline constexpr unsigned kSceneVariantCount = 8u;
 
 // `materials`: the variant that reads textures and drops cut-out fragments
 // (shaders/scene.frag.glsl, MATERIALS), for batches that need it.
 Result<SceneProgram> build_scene_program(StereoMode mode, bool materials = false);
 
+// Any variant (`flags` of kMaterials, kObjectCuts, kVolumes); with kVolumes,
+// arrays for `volume_capacity` (> 0) volumes.
+Result<SceneProgram> build_scene_variant(StereoMode mode, unsigned flags, int volume_capacity = 0);
+
 // The scene's vertex shader with shaders/portal_texture.frag.glsl: a portal
-// box that shows a render-to-texture view (clip-shift stereo only).
-Result<SceneProgram> build_portal_texture_program();
+// box that shows a render-to-texture view (clip-shift stereo only); with
+// volume_capacity > 0 its VOLUMES variant, for a head's cell with volumes.
+Result<SceneProgram> build_portal_texture_program(int volume_capacity = 0);
 
 // A program that writes far depth (0 in reversed-Z) over the whole target and
 // nothing else; with the stencil test it clears depth inside a portal.

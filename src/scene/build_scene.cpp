@@ -1,6 +1,7 @@
-// build_scene: rooms first (each room's faces then its props, one contiguous
-// index range per cell), then every portal's box (front range, inner range),
-// then the portal links.
+// build_scene: the portal links and the dynamic objects first, then rooms
+// (each room's faces then its static props, one contiguous index range per
+// cell), then every portal's box (front range, inner range), then the
+// dynamic objects' meshes (scene/object_meshes.hpp).
 #include <cmath>
 #include <optional>
 #include <type_traits>
@@ -9,6 +10,7 @@
 #include "scene/box_mesh.hpp"
 #include "scene/cell_objects.hpp"
 #include "scene/mesh_writer.hpp"
+#include "scene/object_meshes.hpp"
 #include "scene/portal_box.hpp"
 #include "scene/room_mesh.hpp"
 #include "scene/scene.hpp"
@@ -81,10 +83,13 @@ void append_cell(Scene& scene, MeshWriter& out, const layout::Layout& layout, st
         if (room.face_texture[f]) b.texture = out.texture(room.face_texture[f], assets::Sampler{});
         add_batch(objects.surfaces, b);
     }
-    for (const layout::Prop& prop : room.props) append_prop(scene, out, prop, objects);
+    // Dynamic props (walk/objects.hpp) are drawn per frame, not with the cell.
+    const std::vector<bool>& dynamic = scene.object_set.dynamic[r];
+    for (std::size_t i = 0; i < room.props.size(); ++i)
+        if (i >= dynamic.size() || !dynamic[i]) append_prop(scene, out, room.props[i], objects);
     scene.cells.push_back(out.range_since(first));
     scene.batches.push_back(finish_cell(scene, objects));
-    objects.occluders = occluders_of(room);
+    objects.occluders = occluders_of(room, dynamic);
     scene.objects.push_back(std::move(objects));
 }
 
@@ -97,6 +102,9 @@ Scene build_scene(const layout::Layout& layout) {
     // room is built so that they share the wall's vertices.
     std::vector<std::optional<FrontGrid>> fronts(layout.portals.size());
     const std::vector<std::vector<int>> room_portals = portals_by_room(layout);
+    scene.links = links::link_portals(layout);
+    scene.object_set = walk::build_object_set(layout, scene.links);
+    scene.object_set.dynamic.resize(layout.rooms.size());
     scene.cells.reserve(layout.rooms.size());
     scene.batches.reserve(layout.rooms.size());
     scene.origins.reserve(layout.rooms.size());
@@ -113,7 +121,9 @@ Scene build_scene(const layout::Layout& layout) {
                                     : append_portal_front(out, lp.rect, front));
         scene.portal_info.push_back({lp.rect, lp.room, lp.target, lp.kind, lp.tint, lp.reflectance});
     }
-    scene.links = links::link_portals(layout);
+    append_object_meshes(scene, out, layout);
+    scene.volumes.resize(layout.rooms.size());
+    for (const layout::Volume& v : layout.volumes) scene.volumes[static_cast<std::size_t>(v.room)].push_back(v);
     return scene;
 }
 

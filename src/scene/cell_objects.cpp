@@ -78,7 +78,7 @@ void build_cull_tree(CellObjects& cell) {
     TreeBuilder{cell}.build(0, static_cast<int>(cell.objects.size()));
 }
 
-std::vector<std::pair<glm::dvec3, glm::dvec3>> occluders_of(const layout::Room& room) {
+std::vector<std::pair<glm::dvec3, glm::dvec3>> occluders_of(const layout::Room& room, const std::vector<bool>& skip) {
     struct Candidate {
         double area;
         std::size_t index;
@@ -88,6 +88,7 @@ std::vector<std::pair<glm::dvec3, glm::dvec3>> occluders_of(const layout::Room& 
     for (std::size_t i = 0; i < room.props.size(); ++i) {
         const auto* box = std::get_if<layout::BoxProp>(&room.props[i]);
         if (box == nullptr) continue;  // a model need not be convex
+        if (i < skip.size() && skip[i]) continue;
         const glm::dvec3 e = box->max - box->min;
         const double area = std::max({e.x * e.y, e.y * e.z, e.x * e.z});
         if (area < kMinOccluderArea) continue;

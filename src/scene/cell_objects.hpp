@@ -22,10 +22,12 @@ void build_cull_tree(CellObjects& cell);
 
 // The room's box props that can hide a portal: those with a face of at least
 // kMinOccluderArea, the kMaxOccluders largest, each shrunk by a micrometre
-// and a relative 1e-9 (as (min, max) in layout coordinates).
+// and a relative 1e-9 (as (min, max) in layout coordinates). Props marked in
+// `skip` (the dynamic ones, walk/objects.hpp) are not occluders.
 inline constexpr double kMinOccluderArea = 0.25;  // m²
 inline constexpr std::size_t kMaxOccluders = 16;
-std::vector<std::pair<glm::dvec3, glm::dvec3>> occluders_of(const layout::Room& room);
+std::vector<std::pair<glm::dvec3, glm::dvec3>> occluders_of(const layout::Room& room,
+                                                            const std::vector<bool>& skip = {});
 
 // Builds the tree, then renumbers the objects in its leaf order and moves
 // the cell's indices (its surfaces' and then its objects', the last in

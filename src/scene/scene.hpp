@@ -20,6 +20,7 @@
 
 #include "layout/layout.hpp"
 #include "links/portal_links.hpp"
+#include "walk/objects.hpp"
 
 namespace impossible::scene {
 
@@ -116,6 +117,18 @@ struct CellObjects {
     std::vector<int> order;           // object indices, leaf after leaf
 };
 
+// A dynamic object's mesh (walk/objects.hpp): a prop that moves or meets a
+// door at rest, or the hand, drawn each frame as instances placed by
+// walk::place_objects, never as part of a cell. Its vertices are in the
+// object's own coordinates (a prop's: the layout's as written; the hand's:
+// its frame) less `origin`.
+struct ObjectMesh {
+    std::vector<DrawBatch> batches;
+    glm::dvec3 lo{0.0};  // bounds in its own coordinates, padded as CellObject's
+    glm::dvec3 hi{0.0};
+    glm::dvec3 origin{0.0};  // vertex position = own coordinates - origin
+};
+
 struct Scene {
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;
@@ -127,6 +140,11 @@ struct Scene {
     std::vector<PortalMesh> portals;              // per portal, relative to its room's frame
     std::vector<PortalInfo> portal_info;          // per portal
     links::PortalLinks links;                     // M_AB per portal and the portals of each room, linked once
+    // The dynamic props and the hand (walk::build_object_set): left out of
+    // cells, objects and batches above, drawn per frame as instances.
+    walk::ObjectSet object_set;
+    std::vector<ObjectMesh> object_meshes;             // per object_set.props, then the hand (the last)
+    std::vector<std::vector<layout::Volume>> volumes;  // per room: its volume portals, in file order
 };
 
 // Builds the meshes of every room and portal box, and links the portals. The

@@ -1,0 +1,201 @@
+// Dynamic objects and volume portals in the stencil recursion
+// (layout-format.md, "Moving props, hands and crossing objects" and "Volume
+// portals"; docs/crossing.md).
+//
+// The frame's objects are placed once (walk::place_objects): instances, each
+// a mesh, a cell, a rigid matrix from the mesh's own coordinates and up to
+// two door planes that cut it. Every level that draws a cell draws the
+// cell's instances after its own batches, each batch one instanced draw for
+// both eyes like any other, with the matrix folded into the eyes'
+// view-projections and the cuts as two more clip distances (the OBJECT_CUTS
+// variant). A cell with volumes is drawn, all of it, by the VOLUMES variant,
+// which drops its fragments inside the volumes; each volume's target room is
+// then drawn in the same level, shown only inside the volume and tinted.
+#include <algorithm>
+#include <cassert>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "render/portal_recursion.hpp"
+#include "scene/cell_objects.hpp"
+
+namespace impossible::render {
+namespace {
+
+// Where an instance may be seen: its mesh's bounds through its matrix, in
+// the cell's coordinates, padded as the cell's own objects are.
+scene::CellObject instance_bounds(const scene::ObjectMesh& mesh, const walk::ObjectInstance& inst) {
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+    for (int k = 0; k < 8; ++k) {
+        const math::dvec3 corner((k & 1) ? mesh.hi.x : mesh.lo.x, (k & 2) ? mesh.hi.y : mesh.lo.y,
+                                 (k & 4) ? mesh.hi.z : mesh.lo.z);
+        const math::dvec3 p = math::dvec3(inst.to_cell * math::dvec4(corner, 1.0));
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    const glm::dvec3 pad = 1e-6 + 1e-9 * glm::max(glm::abs(lo), glm::abs(hi));
+    scene::CellObject o;
+    o.lo = lo - pad;
+    o.hi = hi + pad;
+    return o;
+}
+
+// The per-instance uniforms of a variant with kObjectCuts.
+void set_instance_uniforms(const SceneProgram& program, const walk::ObjectInstance& inst, const math::dmat4& model) {
+    float planes[2][4];
+    for (int k = 0; k < 2; ++k) {
+        const math::dvec4 plane = k < inst.cut_count ? glm::transpose(model) * inst.cuts[static_cast<size_t>(k)].plane
+                                                     : math::dvec4(0.0, 0.0, 0.0, 1.0);
+        for (int c = 0; c < 4; ++c) planes[k][c] = static_cast<float>(plane[c]);
+    }
+    const glm::mat3 rotation(math::dmat3(inst.to_cell));
+    const GLuint p = program.program.get();
+    glProgramUniform4fv(p, program.cut_plane, 2, &planes[0][0]);
+    glProgramUniformMatrix3fv(p, program.object_rotation, 1, GL_FALSE, &rotation[0][0]);
+}
+
+// A batch's material uniforms and texture (portal_draw.cpp's draw_cell does
+// the same for a cell's batches).
+void set_material(const DrawContext& ctx, const SceneProgram& m, const scene::DrawBatch& b) {
+    glProgramUniform1i(m.program.get(), m.mip_level0, ctx.frame.textures_mip_level0 ? 1 : 0);
+    glProgramUniform1i(m.program.get(), m.textured, b.texture >= 0 ? 1 : 0);
+    glProgramUniform1f(m.program.get(), m.alpha_cutoff, b.alpha_cutoff);
+    const GLuint texture = b.texture >= 0 ? ctx.renderer.gpu.textures[static_cast<std::size_t>(b.texture)].get() : 0;
+    ctx.renderer.state->texture(kSceneTextureUnit, texture);
+}
+
+bool has_material(const scene::DrawBatch& b) { return b.texture >= 0 || b.alpha_cutoff >= 0.0f; }
+
+void draw_instance(const DrawContext& ctx, const LevelView& view, const Scissor& scissor, int i, int id_cell,
+                   int inside) {
+    const RendererData& r = ctx.renderer;
+    const walk::ObjectInstance& inst = ctx.scratch.objects.instances[static_cast<size_t>(i)];
+    const scene::ObjectMesh& mesh =
+        r.object_meshes[static_cast<size_t>(ctx.scratch.objects.mesh[static_cast<size_t>(i)])];
+    const math::dmat4 model = inst.to_cell * glm::translate(math::dmat4(1.0), mesh.origin);
+    for (const scene::DrawBatch& b : mesh.batches) {
+        const SceneProgram& program = cell_program(ctx, view.cell, kObjectCuts | (has_material(b) ? kMaterials : 0u));
+        set_model_uniforms(ctx, view, program, {view.eyes[0].rect, view.eyes[1].rect}, model, glm::vec3(0.0f));
+        set_instance_uniforms(program, inst, model);
+        set_cell_id(program, static_cast<unsigned>(id_cell + 1), false);
+        set_volume_uniforms(ctx, view, program, model, inside);
+        if (has_material(b)) set_material(ctx, program, b);
+        draw_range(ctx, view, {Pass::Scene, view.level, &program, scissor, kObjectClipDistances}, b.range);
+    }
+}
+
+// Room `t`'s own batches in a level of another cell (a volume's target, in
+// the same coordinates), shown inside volume `inside` only.
+void draw_volume_room(const DrawContext& ctx, const LevelView& view, const Scissor& scissor, int t, int inside) {
+    const RendererData& r = ctx.renderer;
+    const scene::CellOrigin& origin = r.cell_origins[static_cast<size_t>(t)];
+    const math::dmat4 model = glm::translate(math::dmat4(1.0), origin.origin);
+    for (const scene::DrawBatch& b : r.cells[static_cast<size_t>(t)]) {
+        const SceneProgram& program = cell_program(ctx, view.cell, has_material(b) ? kMaterials : 0u);
+        set_model_uniforms(ctx, view, program, {view.eyes[0].rect, view.eyes[1].rect}, model, origin.checker_offset);
+        set_cell_id(program, static_cast<unsigned>(t + 1), false);
+        set_volume_uniforms(ctx, view, program, model, inside);
+        if (has_material(b)) set_material(ctx, program, b);
+        draw_range(ctx, view, {Pass::Scene, view.level, &program, scissor}, b.range);
+    }
+}
+
+}  // namespace
+
+const SceneProgram& cell_program(const DrawContext& ctx, int cell, unsigned flags) {
+    const RendererData& r = ctx.renderer;
+    if (!r.volumes[static_cast<size_t>(cell)].empty()) flags |= kVolumes;
+    if (flags == 0u) return ctx.scene_program;
+    if (flags == kMaterials) {
+        assert(ctx.material_program != nullptr);
+        return *ctx.material_program;
+    }
+    const std::optional<SceneProgram>& variant = r.programs.variants[static_cast<int>(ctx.frame.stereo)][flags];
+    assert(variant);  // prepare_frame built it
+    return *variant;
+}
+
+void place_frame_objects(const RendererData& r, const FrameDesc& frame, FrameObjects& out) {
+    for (const int c : out.touched) {
+        scene::CellObjects& cell = out.cells[static_cast<size_t>(c)];
+        cell.objects.clear();
+        cell.nodes.clear();
+        cell.order.clear();
+    }
+    out.touched.clear();
+    out.cells.resize(r.cells.size());
+    out.instances = walk::place_objects(r.object_set, frame);
+    out.mesh.resize(out.instances.size());
+    const int hand_mesh = static_cast<int>(r.object_meshes.size()) - 1;
+    for (size_t i = 0; i < out.instances.size(); ++i) {
+        const walk::ObjectInstance& inst = out.instances[i];
+        const int mesh = inst.kind == walk::ObjectKind::Hand
+                             ? hand_mesh
+                             : r.prop_mesh[static_cast<size_t>(inst.listed_room)][static_cast<size_t>(inst.index)];
+        assert(mesh >= 0);
+        out.mesh[i] = mesh;
+        scene::CellObjects& cell = out.cells[static_cast<size_t>(inst.cell)];
+        if (cell.objects.empty()) out.touched.push_back(inst.cell);
+        scene::CellObject o = instance_bounds(r.object_meshes[static_cast<size_t>(mesh)], inst);
+        o.first_batch = static_cast<std::uint32_t>(i);
+        cell.objects.push_back(o);
+    }
+    for (const int c : out.touched) scene::build_cull_tree(out.cells[static_cast<size_t>(c)]);
+}
+
+void draw_cell_instances(const DrawContext& ctx, const LevelView& view, const Scissor& scissor, int cell, int inside) {
+    FrameScratch& s = ctx.scratch;
+    if (s.objects.cells.empty()) return;
+    const scene::CellObjects& objects = s.objects.cells[static_cast<size_t>(cell)];
+    if (objects.objects.empty()) return;
+    std::vector<int>& visible = s.visible_instances;
+    if (ctx.frame.cull_portals && ctx.frame.cull_objects) {
+        // Two pixels of margin, as the cell's own props.
+        visible_objects(objects, view, ctx.frame.eye_width, ctx.frame.eye_height, 2.0, s.cull, visible);
+    } else {
+        visible.resize(objects.objects.size());
+        for (size_t k = 0; k < visible.size(); ++k) visible[k] = static_cast<int>(k);
+    }
+    for (const int k : visible)
+        draw_instance(ctx, view, scissor, static_cast<int>(objects.objects[static_cast<size_t>(k)].first_batch), cell,
+                      inside);
+}
+
+void draw_volume_rooms(const DrawContext& ctx, const LevelView& view, const Scissor& scissor) {
+    const std::vector<VolumeBox>& volumes = ctx.renderer.volumes[static_cast<size_t>(view.cell)];
+    for (size_t k = 0; k < volumes.size(); ++k) {
+        draw_volume_room(ctx, view, scissor, volumes[k].target, static_cast<int>(k));
+        draw_cell_instances(ctx, view, scissor, volumes[k].target, static_cast<int>(k));
+    }
+}
+
+void set_volume_uniforms(const DrawContext& ctx, const LevelView& view, const SceneProgram& program,
+                         const math::dmat4& to_cell, int inside) {
+    if (program.volume_count < 0) return;
+    const std::vector<VolumeBox>& volumes = ctx.renderer.volumes[static_cast<size_t>(view.cell)];
+    const math::dvec3 origin = ctx.renderer.cell_origins[static_cast<size_t>(view.cell)].origin;
+    const int count = std::min(static_cast<int>(volumes.size()), program.volume_capacity);
+    std::vector<float> centers(3 * static_cast<size_t>(count)), axes(9 * static_cast<size_t>(count));
+    for (int k = 0; k < count; ++k) {
+        const VolumeBox& v = volumes[static_cast<size_t>(k)];
+        for (int c = 0; c < 3; ++c)
+            centers[3 * static_cast<size_t>(k) + c] = static_cast<float>(v.center[c] - origin[c]);
+        for (int a = 0; a < 3; ++a)
+            for (int c = 0; c < 3; ++c)
+                axes[9 * static_cast<size_t>(k) + 3 * a + c] = static_cast<float>(v.axes[a][c] / v.half[a]);
+    }
+    const math::dmat4 to_volume = glm::translate(math::dmat4(1.0), -origin) * to_cell;
+    const glm::mat4 m(to_volume);
+    const glm::vec3 tint = inside >= 0 ? glm::vec3(volumes[static_cast<size_t>(inside)].tint) : glm::vec3(1.0f);
+    const GLuint p = program.program.get();
+    glProgramUniformMatrix4fv(p, program.to_volume_space, 1, GL_FALSE, &m[0][0]);
+    glProgramUniform1i(p, program.volume_count, count);
+    if (count > 0) {
+        glProgramUniform3fv(p, program.volume_center, count, centers.data());
+        glProgramUniform3fv(p, program.volume_axis, 3 * count, axes.data());
+    }
+    glProgramUniform1i(p, program.volume_inside, inside);
+    glProgramUniform3fv(p, program.volume_tint, 1, &tint[0]);
+}
+
+}  // namespace impossible::render

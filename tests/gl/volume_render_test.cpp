@@ -1,0 +1,115 @@
+// Volume portals in the rasteriser (layout-format.md, "Volume portals";
+// docs/crossing.md) against the reference tracer: head-on, edge-on, from
+// inside the volume, through a door and in a mirror, in every stereo mode and
+// both clip modes, multisampled and with render-to-texture portals.
+#include <string>
+
+#include "crossing_rig.hpp"
+
+namespace impossible {
+namespace {
+
+using testing::CrossingRig;
+using testing::expect_agree;
+using testing::frame_at;
+using testing::stereo_name;
+
+// "lab" has a scanner volume showing "past" (tinted), a mirror on its +x wall
+// and a door in its +z wall to "hall", which lies beyond it.
+const char* kVolumeLayout = R"({
+  "format": "impossible-layout", "version": 1,
+  "start": { "room": "lab", "position": [0.3, 1.6, 2.0] },
+  "rooms": [
+    { "id": "lab", "min": [-2.5, 0, -2.5], "max": [2.5, 3, 2.5], "color": [0.9, 0.91, 0.93],
+      "face_colors": { "floor": [0.55, 0.58, 0.62], "-z": [0.80, 0.86, 0.92] },
+      "props": [
+        { "box": { "min": [-2.2, 0, -2.3], "max": [1.0, 0.9, -1.6] }, "color": [0.95, 0.95, 0.97] },
+        { "box": { "min": [-0.25, 0, -0.6], "max": [0.25, 1.0, -0.2] }, "color": [0.85, 0.2, 0.2] }
+      ] },
+    { "id": "past", "min": [-2.5, 0, -2.5], "max": [2.5, 3, 2.5], "color": [0.72, 0.62, 0.46],
+      "face_colors": { "floor": [0.40, 0.28, 0.18] }, "checker": 0.4,
+      "props": [
+        { "box": { "min": [-1.0, 0, -2.3], "max": [1.4, 1.0, -1.7] }, "color": [0.45, 0.30, 0.18] },
+        { "box": { "min": [-0.2, 0, -1.2], "max": [0.4, 0.5, -0.6] }, "color": [0.6, 0.5, 0.3] }
+      ] },
+    { "id": "hall", "min": [-2.5, 0, 2.5], "max": [2.5, 3, 7.5], "color": [0.7, 0.75, 0.85] }
+  ],
+  "portals": [
+    { "id": "scanner", "room": "lab", "kind": "volume", "target": "past",
+      "center": [0.0, 1.15, -1.4], "normal": [0, 0, 1], "up": [0, 1, 0],
+      "width": 1.2, "height": 2.5, "depth": 2.6, "tint": [0.75, 0.95, 0.9] },
+    { "id": "glass", "room": "lab", "kind": "mirror", "center": [2.5, 1.4, 0.0], "normal": [-1, 0, 0],
+      "width": 3.0, "height": 2.0 },
+    { "id": "lab_door", "room": "lab", "center": [0, 1.2, 2.5], "normal": [0, 0, -1], "width": 1.2,
+      "height": 2.0, "target": "hall_door" },
+    { "id": "hall_door", "room": "hall", "center": [0, 1.2, 2.5], "normal": [0, 0, 1], "width": 1.2,
+      "height": 2.0, "target": "lab_door" }
+  ]
+})";
+
+struct VolumeView {
+    const char* what;
+    const char* room;
+    math::dvec3 position;
+    double yaw, pitch;
+};
+
+const VolumeView kVolumeViews[] = {
+    {"head-on", "lab", {0.0, 1.6, 2.0}, 0.0, -10.0},
+    {"edge-on (the eye in a side plane)", "lab", {0.6, 1.6, 1.5}, 0.0, -5.0},
+    {"from inside the volume", "lab", {0.1, 1.5, -1.0}, 20.0, -20.0},
+    {"through the door from the hall", "hall", {0.2, 1.6, 6.5}, 0.0, -5.0},
+    {"in the mirror", "lab", {-1.5, 1.6, 1.5}, -75.0, -10.0},
+};
+
+TEST(VolumeRender, MatchesTheTracerInEveryView) {
+    CrossingRig rig(kVolumeLayout);
+    ASSERT_TRUE(rig.renderer);
+    for (const VolumeView& v : kVolumeViews) {
+        render::FrameDesc f = frame_at(rig.layout, v.room, v.position, v.yaw, v.pitch);
+        const image::Image traced = rig.trace(f);
+        for (const render::ClipMode clip : {render::ClipMode::ClipDistance, render::ClipMode::Oblique}) {
+            f.clip = clip;
+            expect_agree(rig.render(f), traced,
+                         std::string(v.what) + (clip == render::ClipMode::Oblique ? " oblique" : ""));
+        }
+    }
+}
+
+TEST(VolumeRender, EveryStereoModeSamplesAndPortalTextures) {
+    CrossingRig rig(kVolumeLayout);
+    ASSERT_TRUE(rig.renderer);
+    for (const VolumeView& v : {kVolumeViews[0], kVolumeViews[3], kVolumeViews[4]}) {
+        render::FrameDesc f = frame_at(rig.layout, v.room, v.position, v.yaw, v.pitch);
+        const image::Image traced = rig.trace(f);
+        for (const render::StereoMode stereo :
+             {render::StereoMode::ClipShift, render::StereoMode::ViewportIndex, render::StereoMode::TwoPass})
+            for (const int samples : {1, 4}) {
+                f.stereo = stereo;
+                f.samples = samples;
+                expect_agree(rig.render(f), traced,
+                             std::string(v.what) + " " + stereo_name(stereo) + " x" + std::to_string(samples));
+            }
+        f.stereo = render::StereoMode::ClipShift;
+        f.samples = 1;
+        f.portal_texture_scale = 1.0;
+        expect_agree(rig.render(f), traced, std::string(v.what) + " portal texture");
+    }
+}
+
+TEST(VolumeRender, TheTargetRoomShowsInsideTheVolumeWithItsId) {
+    CrossingRig rig(kVolumeLayout);
+    ASSERT_TRUE(rig.renderer);
+    render::FrameDesc f = frame_at(rig.layout, "lab", kVolumeViews[0].position, 0.0, -10.0);
+    const image::Image img = rig.render(f);
+    // The centre of each eye looks into the volume: the past (id 2), tinted.
+    const int y = img.height / 2;
+    EXPECT_EQ(testing::id_at(img, img.width / 4, y), 2);
+    EXPECT_EQ(testing::id_at(img, 3 * img.width / 4, y), 2);
+    // The edges of the image see the lab (id 1).
+    EXPECT_EQ(testing::id_at(img, 1, y), 1);
+    EXPECT_EQ(testing::id_at(img, img.width - 2, y), 1);
+}
+
+}  // namespace
+}  // namespace impossible
