@@ -4,13 +4,65 @@
 // (fuzz_check.hpp), never a crash, hang or leak. Texture and glTF paths
 // resolve against the current directory: scripts/fuzz.sh runs it where
 // gallery/ and models/ are copies of layouts/'s. Seeds: fuzz/layout_corpus.
+// A layout it accepts must keep the promises check_layout lists.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <set>
 #include <string>
+#include <vector>
 
 #include "fuzz_check.hpp"
 #include "layout/layout.hpp"
+
+namespace {
+
+using impossible::fuzz::require;
+namespace layout = impossible::layout;
+
+// What the loader promises of a layout it accepts: paired portals name each
+// other within Layout::portals (the volumes left out), a volume shows a room
+// without portals, motions start at 0 and increase, moving props have ids and
+// prop ids are unique.
+void check_layout(const layout::Layout& l) {
+    const int portals = static_cast<int>(l.portals.size());
+    const int rooms = static_cast<int>(l.rooms.size());
+    std::vector<bool> has_portal(l.rooms.size(), false);
+    for (int i = 0; i < portals; ++i) {
+        const layout::Portal& p = l.portals[static_cast<std::size_t>(i)];
+        require(p.room >= 0 && p.room < rooms, "a portal's room is a room");
+        has_portal[static_cast<std::size_t>(p.room)] = true;
+        if (p.kind == layout::PortalKind::Mirror) continue;
+        require(p.target >= 0 && p.target < portals && l.portals[static_cast<std::size_t>(p.target)].target == i,
+                "paired portals name each other");
+    }
+    for (const layout::Volume& v : l.volumes) {
+        require(v.room >= 0 && v.room < rooms, "a volume's room is a room");
+        has_portal[static_cast<std::size_t>(v.room)] = true;
+    }
+    for (const layout::Volume& v : l.volumes) {
+        require(v.target_room >= 0 && v.target_room < rooms, "a volume's target is a room");
+        require(!has_portal[static_cast<std::size_t>(v.target_room)], "a volume's target room has no portals");
+        require(v.rect.width > 0 && v.rect.height > 0 && v.rect.depth > 0, "a volume has a size");
+    }
+    std::set<std::string> ids;
+    for (const layout::Room& room : l.rooms) {
+        for (const layout::Prop& prop : room.props) {
+            const std::string& id = layout::prop_id(prop);
+            require(id.empty() || ids.insert(id).second, "prop ids are unique");
+            const layout::Motion& m = layout::prop_motion(prop);
+            if (m.keys.empty()) continue;
+            require(!id.empty(), "a moving prop has an id");
+            require(m.keys[0].t == 0.0, "a motion starts at 0");
+            for (std::size_t k = 1; k < m.keys.size(); ++k) require(m.keys[k].t > m.keys[k - 1].t, "times increase");
+            require(!m.loop || m.keys.size() >= 2, "a loop has two keys");
+        }
+    }
+    if (l.hands.model) require(l.hands.model->scale > 0, "a hand model has a scale");
+    require(l.hands.box.x > 0 && l.hands.box.y > 0 && l.hands.box.z > 0, "a hand box has a size");
+}
+
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
@@ -21,5 +73,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         impossible::fuzz::require(!d.message.empty(), "a diagnostic with a message");
         impossible::fuzz::require_clean_line(d.str());
     }
+    if (result.layout) check_layout(*result.layout);
     return 0;
 }
