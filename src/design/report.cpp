@@ -70,12 +70,21 @@ Report make_report(const layout::Layout& layout) {
     Report r;
     r.summary = layout::summarize(layout);
     r.placement = place_rooms(layout);
+    // A volume's target room is seen inside the volume, never walked into
+    // (layout-format.md, "Volume portals"): not unreachable, and its
+    // overlap with the room it shows in is the point, not a finding.
+    std::vector<bool> seen_only(layout.rooms.size(), false);
+    for (const layout::Volume& v : layout.volumes)
+        if (!r.placement.rooms[static_cast<std::size_t>(v.target_room)].reachable)
+            seen_only[static_cast<std::size_t>(v.target_room)] = true;
     for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
         r.floors.push_back(physical_floor(layout.rooms[i], r.placement.rooms[i].to_physical));
-        if (!r.placement.rooms[i].reachable) r.unreachable.push_back(static_cast<int>(i));
+        if (!r.placement.rooms[i].reachable && !seen_only[i]) r.unreachable.push_back(static_cast<int>(i));
     }
     Overlaps overlaps = room_overlaps(r.floors);
     r.overlaps = std::move(overlaps.listed);
+    for (Overlap& o : r.overlaps)
+        if (seen_only[static_cast<std::size_t>(o.a)] || seen_only[static_cast<std::size_t>(o.b)]) o.noticeable = false;
     r.overlap_pairs = overlaps.pairs;
     r.overlaps_exact = overlaps.exact;
     find_outside(layout, r);
