@@ -2,6 +2,7 @@
 // time, hands placed from the head, each cut and imaged by the doors it meets.
 #include "walk/objects.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <type_traits>
 #include <variant>
@@ -109,7 +110,7 @@ void walk_periods(Walker& walker, const DynamicProp& p, double periods) {
     };
     std::vector<State> seen = {{walker.room(), walker.physical_to_virtual()}};
     const dvec3 first = p.anchor + p.motion.keys.front().offset;
-    for (double done = 0.0; done < periods;) {
+    for (double done = 0.0; done < std::min(periods, kMaxWalkedPeriods);) {
         walk_keys_to(walker, p, p.motion.keys.back().t);
         walker.step(math::HeadPose{first});
         done += 1.0;
@@ -134,6 +135,7 @@ void walk_periods(Walker& walker, const DynamicProp& p, double periods) {
 ObjectSet build_object_set(const layout::Layout& layout, const links::PortalLinks& links) {
     ObjectSet set;
     set.walk_layout = walk_layout_of(layout);
+    set.walk_links = std::make_shared<const links::PortalLinks>(links);
     set.room_doors.resize(layout.rooms.size());
     set.portals.resize(layout.portals.size());
     for (std::size_t i = 0; i < layout.portals.size(); ++i) {
@@ -174,7 +176,7 @@ PropState walk_prop(const ObjectSet& set, int prop, double time) {
     const std::vector<layout::MotionKey>& keys = p.motion.keys;
     if (keys.empty()) return state;
     const double t = std::isnan(time) || time < 0.0 ? 0.0 : time;
-    Walker walker(*set.walk_layout, p.room);
+    Walker walker(*set.walk_layout, p.room, set.walk_links);
     walker.step(math::HeadPose{p.anchor + keys.front().offset});  // placed, no crossing test
     if (p.motion.loop && keys.size() > 1) {
         const double period = keys.back().t;
@@ -190,7 +192,7 @@ PropState walk_prop(const ObjectSet& set, int prop, double time) {
 }
 
 HandState place_hand(const ObjectSet& set, int head_room, const dvec3& head_position, const math::HeadPose& hand) {
-    Walker walker(*set.walk_layout, head_room);
+    Walker walker(*set.walk_layout, head_room, set.walk_links);
     walker.step(math::HeadPose{head_position});
     HandState state;
     state.teleports = walker.step(hand);

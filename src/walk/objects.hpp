@@ -96,6 +96,7 @@ struct ObjectSet {
     // walk::Walker needs to walk props and hands (shared, so the set copies
     // cheaply and the walkers' pointer stays valid when it moves).
     std::shared_ptr<const layout::Layout> walk_layout;
+    std::shared_ptr<const links::PortalLinks> walk_links;  // link_portals(*walk_layout), made once
 };
 
 ObjectSet build_object_set(const layout::Layout& layout, const links::PortalLinks& links);
@@ -118,7 +119,11 @@ struct PropState {
 // one it had after an earlier period — the usual case, a prop that goes
 // through a door and back — the periods repeat and are skipped; the states
 // of the first kMaxRememberedPeriods periods are remembered for this.
+// A motion that never repeats (a loop through doors that turn it a little
+// more each period) walks at most kMaxWalkedPeriods whole periods; past
+// them the remaining periods are not walked (docs/bounded-work.md).
 inline constexpr std::size_t kMaxRememberedPeriods = 16;
+inline constexpr double kMaxWalkedPeriods = 1e5;
 PropState walk_prop(const ObjectSet& set, int prop, double time);
 
 // A hand placed for a frame: its room and the transform of its frame into

@@ -20,7 +20,10 @@ math::dvec3 apply(const math::dmat4& m, const math::dvec3& p) { return math::dve
 Walker::Walker(const layout::Layout& layout) : Walker(layout, layout.start.room) {}
 
 Walker::Walker(const layout::Layout& layout, int room)
-    : layout_(&layout), links_(links::link_portals(layout)), room_(room) {
+    : Walker(layout, room, std::make_shared<const links::PortalLinks>(links::link_portals(layout))) {}
+
+Walker::Walker(const layout::Layout& layout, int room, std::shared_ptr<const links::PortalLinks> links)
+    : layout_(&layout), links_(std::move(links)), room_(room) {
     head_ = layout.start.position;
     physical_pose_.position = layout.start.position;
     physical_pose_.yaw_deg = layout.start.yaw_deg;
@@ -50,10 +53,10 @@ std::vector<int> Walker::step(const math::HeadPose& physical) {
     math::dvec3 begin = head_;
     int exclude = -1;  // the portal just come out of
     while (static_cast<int>(passed.size()) < kMaxCrossingsPerFrame &&
-           links::valid_index(room_, links_.room_portals.size())) {
+           links::valid_index(room_, links_->room_portals.size())) {
         int best = -1;
         math::SegmentCrossing best_crossing;
-        for (int i : links_.room_portals[room_]) {
+        for (int i : links_->room_portals[room_]) {
             // Only doors teleport: the head passes a mirror's or a window's
             // plane as it passes any wall, and stays where it is.
             if (i == exclude || layout_->portals[i].kind != layout::PortalKind::Door) continue;
@@ -70,7 +73,7 @@ std::vector<int> Walker::step(const math::HeadPose& physical) {
         const math::PortalRect& out = layout_->portals[target].rect;
         teleport(best);
         room_ = layout_->portals[target].room;
-        begin = apply(links_.transfer[best], best_crossing.point);
+        begin = apply(links_->transfer[best], best_crossing.point);
         end = apply(w_, physical.position);
         // Strictly in front of B, whatever rounding did (a couple of rounds
         // at most: the first lands within a few ulps of the target distance).
@@ -96,7 +99,7 @@ void Walker::teleport(int portal) {
     }
     history_.push_back(Passed{portal, w_});
     if (history_.size() > kHistoryLength) history_.pop_front();
-    w_ = math::orthonormalize_rigid(links_.transfer[portal] * w_);
+    w_ = math::orthonormalize_rigid(links_->transfer[portal] * w_);
 }
 
 math::dmat3 Walker::rotation() const { return math::dmat3(w_) * physical_rotation_; }

@@ -31,6 +31,7 @@
 
 #include <array>
 #include <deque>
+#include <memory>
 #include <vector>
 
 #include "layout/layout.hpp"
@@ -49,6 +50,9 @@ public:
     explicit Walker(const layout::Layout& layout);
     // Starts in the given room instead.
     Walker(const layout::Layout& layout, int room);
+    // The same with the layout's links made once beforehand (link_portals of
+    // this layout), for walkers made often (walk/objects.hpp).
+    Walker(const layout::Layout& layout, int room, std::shared_ptr<const links::PortalLinks> links);
     // A temporary layout would dangle.
     explicit Walker(const layout::Layout&&) = delete;
     Walker(const layout::Layout&&, int) = delete;
@@ -66,7 +70,7 @@ public:
     int room() const { return room_; }
     bool started() const { return started_; }
     const math::dmat4& physical_to_virtual() const { return w_; }
-    const links::PortalLinks& links() const { return links_; }
+    const links::PortalLinks& links() const { return *links_; }
 
     // The virtual head centre and orientation (columns right, up, back) after
     // the last step (before any, the layout's start).
@@ -84,7 +88,7 @@ private:
     void teleport(int portal);
 
     const layout::Layout* layout_;
-    links::PortalLinks links_;
+    std::shared_ptr<const links::PortalLinks> links_;
     math::dmat4 w_{1.0};
     int room_ = -1;
     math::dvec3 head_{0.0};               // virtual head centre
