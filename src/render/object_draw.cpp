@@ -13,6 +13,7 @@
 // then drawn in the same level, shown only inside the volume and tinted.
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -40,12 +41,24 @@ scene::CellObject instance_bounds(const scene::ObjectMesh& mesh, const walk::Obj
     return o;
 }
 
+// A cut in the cell's coordinates as a clip distance keeps it: a strict cut
+// (an image keeps d > 0) moved by kStrictCutShift, so that a face lying in
+// the plane (a prop standing against the door) is cut away in the image as
+// the tracer cuts it, instead of being kept by the clipper at d = 0.
+inline constexpr double kStrictCutShift = 1e-6;  // metres, times 1 + |d of the origin|
+math::dvec4 cut_plane(const walk::ObjectCut& cut) {
+    math::dvec4 plane = cut.plane;
+    if (cut.strict) plane.w -= kStrictCutShift * (1.0 + std::abs(plane.w));
+    return plane;
+}
+
 // The per-instance uniforms of a variant with kObjectCuts.
 void set_instance_uniforms(const SceneProgram& program, const walk::ObjectInstance& inst, const math::dmat4& model) {
     float planes[2][4];
     for (int k = 0; k < 2; ++k) {
-        const math::dvec4 plane = k < inst.cut_count ? glm::transpose(model) * inst.cuts[static_cast<size_t>(k)].plane
-                                                     : math::dvec4(0.0, 0.0, 0.0, 1.0);
+        const math::dvec4 plane = k < inst.cut_count
+                                      ? glm::transpose(model) * cut_plane(inst.cuts[static_cast<size_t>(k)])
+                                      : math::dvec4(0.0, 0.0, 0.0, 1.0);
         for (int c = 0; c < 4; ++c) planes[k][c] = static_cast<float>(plane[c]);
     }
     const glm::mat3 rotation(math::dmat3(inst.to_cell));
