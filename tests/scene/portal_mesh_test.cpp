@@ -137,6 +137,9 @@ TEST(PortalMesh, RangesPartitionTheIndices) {
         ranges.push_back(m.front);
         ranges.push_back(m.inner);
     }
+    // Then the dynamic objects' meshes: here only the hand's.
+    ASSERT_EQ(s.object_meshes.size(), 1u);
+    for (const DrawBatch& b : s.object_meshes[0].batches) ranges.push_back(b.range);
     std::uint32_t next = 0;
     for (const IndexRange& r : ranges) {
         EXPECT_EQ(r.first, next);
@@ -158,12 +161,18 @@ TEST(PortalMesh, RangesPartitionTheIndices) {
     for (std::size_t p = 0; p < 3; ++p) expect_portal_box(s, s.portals[p], l.portals[p].rect);
 }
 
-TEST(PortalMesh, EmptyLayoutGivesEmptyScene) {
+TEST(PortalMesh, EmptyLayoutGivesOnlyTheHand) {
     const Scene s = build_scene(layout::Layout{});
-    EXPECT_TRUE(s.vertices.empty());
-    EXPECT_TRUE(s.indices.empty());
     EXPECT_TRUE(s.cells.empty());
     EXPECT_TRUE(s.portals.empty());
+    // The hand's box (layout::HandShape's default), whether or not a frame
+    // has hands: 24 vertices, 36 indices.
+    ASSERT_EQ(s.object_meshes.size(), 1u);
+    EXPECT_EQ(s.vertices.size(), 24u);
+    EXPECT_EQ(s.indices.size(), 36u);
+    EXPECT_EQ(s.object_meshes[0].origin, glm::dvec3(0.0));
+    EXPECT_NEAR(s.object_meshes[0].hi.x, 0.04, 1e-5);
+    EXPECT_NEAR(s.object_meshes[0].lo.z, -0.08, 1e-5);
 }
 
 }  // namespace
