@@ -8,6 +8,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <array>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
@@ -122,12 +123,20 @@ struct ViewBase {
     double ipd = 0.064, fov = 90;
 };
 
-// One frame's view; hands are not drawn yet (issue 22).
+// Two poses, the left and the right hand, each as `pose` (--hands).
+std::array<api::Pose, 2> hands_of(py::handle value) {
+    const char* expected = "hands: expected two poses, the left and the right hand";
+    if (py::isinstance<py::str>(value) || !py::isinstance<py::sequence>(value)) raise(PyExc_TypeError, expected);
+    const auto seq = py::reinterpret_borrow<py::sequence>(value);
+    if (seq.size() != 2) raise(PyExc_ValueError, std::string(expected) + ", got " + std::to_string(seq.size()));
+    return {pose_of(seq[0], 1e7, "hands[0]"), pose_of(seq[1], 1e7, "hands[1]")};
+}
+
+// One frame's view.
 api::View view_of(const ViewBase& base, py::handle pose, py::handle room, py::handle hands, double time,
                   int max_depth) {
-    if (!hands.is_none())
-        raise(PyExc_NotImplementedError, "hands are not implemented yet (no hand poses are drawn); pass hands=None");
     api::View v;
+    if (!hands.is_none()) v.hands = hands_of(hands);
     if (!pose.is_none()) v.pose = pose_of(pose, 1e7, "pose");
     if (!room.is_none()) v.room = room.cast<std::string>();
     std::tie(v.width, v.height) = base.size;

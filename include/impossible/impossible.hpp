@@ -9,6 +9,7 @@
 // GL context it was made for.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -113,7 +114,12 @@ struct View {
     int max_depth = 8;
     int samples = 1;                 // 1, 2, 4, 8 or 16
     int max_portal_passes = 10'000;  // the rasteriser's budget (docs/bounded-work.md)
-    double time = 0;                 // seconds; for moving props (none yet: no effect)
+    // Seconds: moving props stand where their motion puts them at this time
+    // (layout-format.md, "Moving props"; a negative time reads as 0).
+    double time = 0;
+    // The tracked hands, left then right, in the coordinates of `pose` (as
+    // `render --hands`); none: no hands are drawn.
+    std::optional<std::array<Pose, 2>> hands;
 };
 
 // Counters of a rasterised frame (render --stats).

@@ -28,6 +28,8 @@ std::string range_problem(const View& v) {
         return "max_portal_passes " + std::to_string(v.max_portal_passes) + " is not in 0..10000000";
     if (!std::isfinite(v.time)) return "time is not a finite number";
     if (v.pose && !finite_pose(*v.pose)) return "the pose holds a number that is not finite";
+    if (v.hands && !(finite_pose((*v.hands)[0]) && finite_pose((*v.hands)[1])))
+        return "the hands hold a number that is not finite";
     return {};
 }
 
@@ -51,6 +53,9 @@ Result<math::View> resolve_view(const layout::Layout& layout, const View& view) 
     v.eye_width = view.width;
     v.eye_height = view.height;
     v.max_depth = view.max_depth;
+    v.time = view.time;
+    if (view.hands)
+        v.hands = std::array<math::HeadPose, 2>{to_head_pose((*view.hands)[0]), to_head_pose((*view.hands)[1])};
     if (view.pose) {
         v.head = to_head_pose(*view.pose);
     } else {

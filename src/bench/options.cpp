@@ -45,8 +45,12 @@ constexpr Option<BenchOptions> kBenchOptions[] = {
      "profiled frames per configuration and pose (default 3): per-portal\n"
      "times and colour fragments, glFinish around each portal",
      [](BenchOptions& o, const OptionValue& v) { o.profile_frames = parse_int(v.name, v.text, 0, 100000); }},
-    {"--path", "FILE", "a scripted walk (the `walk` path format) instead of one pose",
+    {"--path", "FILE",
+     "a scripted walk (the `walk` path format) instead of one pose; a\n"
+     "line of 18 numbers carries the hands, and line k is at time k / fps",
      [](BenchOptions& o, const OptionValue& v) { o.path = v.text; }},
+    {"--fps", "N", "frames a second of --path (default 90)",
+     [](BenchOptions& o, const OptionValue& v) { o.fps = cli::parse_fps(v.text); }},
     {"--portals", "N", "keep only the first N portals of the layout (pairs within them)",
      [](BenchOptions& o, const OptionValue& v) { o.portals = parse_int(v.name, v.text, 0, 1000000); }},
     {"--sweep", "WHAT",
@@ -76,7 +80,9 @@ constexpr Option<BenchOptions> kBenchOptions[] = {
 
 OptionTable<ViewOptions> bench_view_options() {
     // Not the image files or --stats: bench writes a table and its own files.
-    static const std::vector<Option<ViewOptions>> table = without(view_options(), {"--out", "--ids", "--stats"});
+    // Nor render's --path, --frame and --fps: bench walks all of its --path.
+    static const std::vector<Option<ViewOptions>> table =
+        without(view_options(), {"--out", "--ids", "--stats", "--path", "--frame", "--fps"});
     return table;
 }
 
@@ -89,6 +95,10 @@ BenchOptions parse_bench_options(const ParsedArgs& args) {
     check_sweep(o.sweep);
     o.error = o.error || o.sweep == "techniques";
     if (o.path && o.view.pose) throw InputError("--path and --pose: give one of them");
+    // As render's --path (usage errors; --path and --pose kept its exit 1).
+    if (o.path && args.value("--time")) throw cli::UsageError("--path and --time exclude each other");
+    if (o.path && args.value("--hands")) throw cli::UsageError("--path and --hands exclude each other");
+    if (o.fps && !o.path) throw cli::UsageError("--fps needs --path FILE");
     return o;
 }
 

@@ -23,6 +23,7 @@ struct BenchOptions {
     std::optional<std::string> json;
     std::optional<std::string> csv;
     std::optional<std::string> path;  // a walk file: physical poses, one a line (as `walk`)
+    std::optional<double> fps;        // --fps of the walk: line k is at time k / fps
     std::optional<int> portals;       // keep only the first N portals (pairs within them)
     std::string sweep;                // "", "techniques", "portals:0,2,4,6", "depth:1,4", "size:WxH,...", "samples:1,4"
     bool error = false;               // compare every configuration with the tracer

@@ -175,14 +175,17 @@ BenchPlan plan_bench(const layout::Layout& layout, const BenchOptions& o) {
 std::vector<BenchPose> bench_poses(const layout::Layout& layout, const BenchOptions& o) {
     if (!o.path) {
         const render::FrameDesc f = frame_for(layout, o.view);
-        return {{f.head, f.room}};
+        return {{f.head, f.room, f.time, f.hands}};
     }
-    const std::vector<math::HeadPose> file = value_or_throw(layout::read_path_file(*o.path));
+    const std::vector<layout::PathFrame> file = value_or_throw(layout::read_path_frames_file(*o.path));
+    const double fps = o.fps.value_or(layout::kDefaultPathFps);
     walk::Walker walker(layout);
     std::vector<BenchPose> poses;
-    for (const math::HeadPose& physical : file) {
-        walker.step(physical);
-        poses.push_back({math::head_pose_from(walker.position(), walker.rotation()), walker.room()});
+    for (std::size_t k = 0; k < file.size(); ++k) {
+        walker.step(file[k].head);
+        math::View view;
+        walk::set_walked_view(view, walker, file[k].hands);
+        poses.push_back({view.head, view.room, walk::line_time(k, fps), view.hands});
     }
     return poses;
 }

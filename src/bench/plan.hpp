@@ -8,6 +8,7 @@
 #include "bench/options.hpp"
 #include "layout/layout.hpp"
 #include "render/frame.hpp"
+#include "walk/replay.hpp"
 
 namespace impossible::bench {
 
@@ -33,12 +34,14 @@ struct BenchPlan {
 // The configurations of the options' sweep over `layout`. Throws InputError.
 BenchPlan plan_bench(const layout::Layout& layout, const BenchOptions& options);
 
-// The virtual head and room of each frame: the options' pose (or the
-// layout's start) once, or every pose of the --path walk replayed through
-// the portals. Throws InputError.
+// The virtual head, room, time and hands of each frame: the options' pose
+// (or the layout's start) once, or every line of the --path walk replayed
+// through the portals (walk/replay.hpp). Throws InputError.
 struct BenchPose {
     math::HeadPose head;
     int room = 0;
+    double time = 0.0;      // --time, or line k / fps of the walk
+    walk::HandPoses hands;  // --hands, or the walk's line's hands mapped by its W
 };
 std::vector<BenchPose> bench_poses(const layout::Layout& layout, const BenchOptions& options);
 

@@ -32,6 +32,8 @@ render::FrameDesc frame_at(const BenchConfig& config, const BenchPose& pose) {
     render::FrameDesc f = config.frame;
     f.head = pose.head;
     f.room = pose.room;
+    f.time = pose.time;
+    f.hands = pose.hands;
     return f;
 }
 

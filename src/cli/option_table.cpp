@@ -13,7 +13,8 @@ std::string help_row(std::string_view left, std::string_view help, std::size_t c
     constexpr std::size_t kGap = 2;
     std::string row = "  ";
     row += left;
-    row.append(row.size() + kGap <= column ? column - row.size() : kGap, ' ');
+    // A help that starts with '\n' starts on the next line (after a long LEFT).
+    if (!help.starts_with('\n')) row.append(row.size() + kGap <= column ? column - row.size() : kGap, ' ');
     for (std::size_t start = 0;;) {
         const std::size_t end = help.find('\n', start);
         row += help.substr(start, end - start);

@@ -62,7 +62,8 @@ std::string option_label(const char* name, const char* value_name, const char* l
 
 // One line of a help table: "  LEFT", then the help from `column` (0-based),
 // at least two spaces after a longer LEFT; each further line of the help
-// ('\n') indented to the column. Ends with '\n'.
+// ('\n') indented to the column (a help that starts with '\n' starts on the
+// line after LEFT). Ends with '\n'.
 std::string help_row(std::string_view left, std::string_view help, std::size_t column);
 
 // The option list of a help text, in table order.

@@ -1,26 +1,36 @@
 #include "cli/view_options.hpp"
 
 #include <cmath>
+#include <string_view>
 #include <tuple>
 
 #include "api/api_data.hpp"
 #include "image/png.hpp"
+#include "layout/path_file.hpp"
+#include "walk/replay.hpp"
 
 namespace impossible::cli {
 
 namespace {
 
-math::HeadPose parse_pose(const OptionValue& v) {
-    const std::vector<double> n = parse_numbers(v.name, v.text, 6);
+// `count` numbers of --pose or --hands, each within ±1e7.
+std::vector<double> parse_pose_numbers(const std::string& name, const std::string& text, std::size_t count) {
+    const std::vector<double> n = parse_numbers(name, text, count);
     for (double x : n)
-        if (std::abs(x) > 1e7) throw InputError(v.name + ": " + v.text + " has a value beyond 1e7");
+        if (std::abs(x) > 1e7) throw InputError(name + ": " + text + " has a value beyond 1e7");
+    return n;
+}
+
+math::HeadPose pose_at(const std::vector<double>& n, std::size_t first) {
     math::HeadPose pose;
-    pose.position = {n[0], n[1], n[2]};
-    pose.yaw_deg = n[3];
-    pose.pitch_deg = n[4];
-    pose.roll_deg = n[5];
+    pose.position = {n[first], n[first + 1], n[first + 2]};
+    pose.yaw_deg = n[first + 3];
+    pose.pitch_deg = n[first + 4];
+    pose.roll_deg = n[first + 5];
     return pose;
 }
+
+math::HeadPose parse_pose(const OptionValue& v) { return pose_at(parse_pose_numbers(v.name, v.text, 6), 0); }
 
 gl::Backend parse_backend(const OptionValue& v) {
     if (const std::optional<gl::Backend> backend = gl::parse_backend(v.text)) return *backend;
@@ -48,6 +58,20 @@ constexpr Option<ViewOptions> kViewOptions[] = {
      "the room the head is in; default: start.room, or with --pose the\n"
      "one room whose box holds the head",
      [](ViewOptions& o, const OptionValue& v) { o.room = v.text; }},
+    {"--time", "T", "seconds: moving props stand where their motion puts them (default 0)",
+     [](ViewOptions& o, const OptionValue& v) { o.frame.time = parse_number(v.name, v.text); }},
+    {"--hands", "LX,LY,LZ,LYAW,LPITCH,LROLL,RX,RY,RZ,RYAW,RPITCH,RROLL",
+     "\nthe left and the right hand, in the coordinates of --pose (default:\nno hands)",
+     [](ViewOptions& o, const OptionValue& v) { o.frame.hands = parse_hands(v.text); }},
+    {"--path", "FILE",
+     "instead of --pose, --room, --time and --hands: line K of a walk\n"
+     "(the `walk` path format, 6 or 18 numbers a line) after walking\n"
+     "lines 0..K, with its hands, at time K / fps; needs --frame K",
+     [](ViewOptions& o, const OptionValue& v) { o.path = v.text; }},
+    {"--frame", "K", "the line of --path, from 0",
+     [](ViewOptions& o, const OptionValue& v) { o.path_frame = parse_int(v.name, v.text, 0, 100'000'000); }},
+    {"--fps", "N", "frames a second of --path: line K is at time K / N (default 90)",
+     [](ViewOptions& o, const OptionValue& v) { o.fps = parse_fps(v.text); }},
     {"--ipd", "M", "distance between the eyes (default 0.064)",
      [](ViewOptions& o, const OptionValue& v) { o.frame.ipd = parse_ipd(v.text); }},
     {"--fov", "DEG", "vertical field of view of each eye (default 90)",
@@ -125,6 +149,17 @@ render::StereoMode parse_stereo(const std::string& text) {
     throw InputError("--stereo: '" + text + "' is not clip-shift, viewport-index or two-pass");
 }
 
+double parse_fps(const std::string& text) {
+    const double fps = parse_number("--fps", text);
+    if (!(fps >= kMinFps && fps <= kMaxFps)) throw InputError("--fps: " + text + " is not in 0.001..1000000");
+    return fps;
+}
+
+std::array<math::HeadPose, 2> parse_hands(const std::string& text) {
+    const std::vector<double> n = parse_pose_numbers("--hands", text, 12);
+    return {pose_at(n, 0), pose_at(n, 6)};
+}
+
 int parse_samples(const std::string& text) {
     const int n = parse_int("--samples", text, 1, 16);
     if (n != 1 && n != 2 && n != 4 && n != 8 && n != 16)
@@ -138,7 +173,33 @@ render::ClipMode parse_clip(const std::string& text) {
     throw InputError("--clip: '" + text + "' is not clip-distance or oblique");
 }
 
+namespace {
+
+bool has_option(OptionTable<ViewOptions> table, std::string_view name) {
+    for (const Option<ViewOptions>& o : table)
+        if (name == o.name) return true;
+    return false;
+}
+
+// The usage errors of --path, --frame and --fps, before any value is read.
+void check_path_combinations(const ParsedArgs& args) {
+    if (args.value("--path")) {
+        for (const char* other : {"--pose", "--room", "--time", "--hands"})
+            if (args.value(other))
+                throw UsageError(std::string("--path and ") + other +
+                                 " exclude each other (line K of the path gives the head, its room, the hands and "
+                                 "the time)");
+        if (!args.value("--frame")) throw UsageError("--path needs --frame K, the line to draw (from 0)");
+        return;
+    }
+    for (const char* needs_path : {"--frame", "--fps"})
+        if (args.value(needs_path)) throw UsageError(std::string(needs_path) + " needs --path FILE");
+}
+
+}  // namespace
+
 ViewOptions parse_view_options(const ParsedArgs& args, OptionTable<ViewOptions> table) {
+    if (has_option(table, "--path")) check_path_combinations(args);
     ViewOptions o;
     if (!args.positional.empty()) o.layout_path = args.positional[0];
     apply_options(table, args, o);
@@ -156,6 +217,7 @@ trace::TraceDesc trace_desc_for(const render::FrameDesc& frame, int threads) {
 CommandOutputs frame_outputs(const ViewOptions& options) {
     CommandOutputs outputs;
     if (options.layout_path) outputs.input("the layout", *options.layout_path);
+    if (options.path) outputs.input("--path", *options.path);
     outputs.output("--out", options.out);
     if (options.ids) outputs.output("--ids", *options.ids);
     return outputs;
@@ -171,29 +233,52 @@ void write_frame_pngs(CommandOutputs& outputs, const ViewOptions& options, int w
     outputs.commit();
 }
 
+namespace {
+
+// --path FILE --frame K [--fps N]: line K of the walk.
+void set_path_frame(render::FrameDesc& f, const layout::Layout& layout, const ViewOptions& o) {
+    const std::vector<layout::PathFrame> frames = value_or_throw(layout::read_path_frames_file(*o.path));
+    const std::size_t k = static_cast<std::size_t>(o.path_frame.value_or(0));
+    if (k >= frames.size())
+        throw UsageError(
+            "--frame " + std::to_string(k) + ": " + *o.path + " holds " + std::to_string(frames.size()) +
+            (frames.size() == 1 ? " pose (frame 0)" : " poses (frames 0.." + std::to_string(frames.size() - 1) + ")"));
+    walk::set_replayed_view(f, layout, frames, k, o.fps.value_or(layout::kDefaultPathFps));
+}
+
+// --room, else the start room without --pose, else the one room holding the head.
+int room_for(const layout::Layout& layout, const ViewOptions& o, const math::dvec3& head) {
+    if (o.room) {
+        const int room = layout::find_room(layout, *o.room);
+        if (room < 0) throw InputError("--room: there is no room '" + *o.room + "' in " + layout.source);
+        return room;
+    }
+    if (!o.pose) return layout.start.room;
+    const std::vector<int> holding = api::rooms_holding(layout, head);
+    if (holding.size() != 1) {
+        std::string names;
+        for (int i : holding) names += (names.empty() ? "" : ", ") + layout.rooms[i].id;
+        throw InputError(holding.empty() ? "--pose: the head is in no room; give --room"
+                                         : "--pose: the head is in several rooms (" + names + "); give --room");
+    }
+    return holding[0];
+}
+
+}  // namespace
+
 render::FrameDesc frame_for(const layout::Layout& layout, const ViewOptions& o) {
     render::FrameDesc f = o.frame;
+    if (o.path) {
+        set_path_frame(f, layout, o);
+        return f;
+    }
     if (o.pose) {
         f.head = *o.pose;
     } else {
         f.head.position = layout.start.position;
         f.head.yaw_deg = layout.start.yaw_deg;
     }
-    if (o.room) {
-        f.room = layout::find_room(layout, *o.room);
-        if (f.room < 0) throw InputError("--room: there is no room '" + *o.room + "' in " + layout.source);
-    } else if (!o.pose) {
-        f.room = layout.start.room;
-    } else {
-        const std::vector<int> holding = api::rooms_holding(layout, f.head.position);
-        if (holding.size() != 1) {
-            std::string names;
-            for (int i : holding) names += (names.empty() ? "" : ", ") + layout.rooms[i].id;
-            throw InputError(holding.empty() ? "--pose: the head is in no room; give --room"
-                                             : "--pose: the head is in several rooms (" + names + "); give --room");
-        }
-        f.room = holding[0];
-    }
+    f.room = room_for(layout, o, f.head.position);
     return f;
 }
 

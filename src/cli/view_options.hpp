@@ -2,6 +2,7 @@
 // plain data, and how they become a frame description.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -20,11 +21,16 @@ struct ViewOptions {
     std::optional<std::string> layout_path;  // none: the built-in default
     std::optional<math::HeadPose> pose;
     std::optional<std::string> room;
+    // --path FILE --frame K [--fps N]: the head, room, hands and time of
+    // line K of a walk (instead of --pose, --room, --time and --hands).
+    std::optional<std::string> path;
+    std::optional<int> path_frame;
+    std::optional<double> fps;
     std::string out = "stereo.png";
     std::optional<std::string> ids;
     std::optional<gl::Backend> backend;  // none: EGL, falling back to OSMesa
     // Every frame setting but the head and room, which frame_for resolves
-    // against the layout.
+    // against the layout (--time and --hands are here too).
     render::FrameDesc frame;
     bool stats = false;
 };
@@ -47,9 +53,17 @@ double parse_fov(const std::string& text);
 render::StereoMode parse_stereo(const std::string& text);
 render::ClipMode parse_clip(const std::string& text);
 int parse_samples(const std::string& text);  // 1, 2, 4, 8 or 16
+// --fps of the commands that replay a path: in kMinFps..kMaxFps.
+inline constexpr double kMinFps = 1e-3, kMaxFps = 1e6;
+double parse_fps(const std::string& text);
+// --hands: twelve numbers, the left then the right hand (as --pose).
+std::array<math::HeadPose, 2> parse_hands(const std::string& text);
 
 // The head pose and room of the frame: the layout's start without --pose;
-// with --pose, --room or else the one room whose box holds the head.
+// with --pose, --room or else the one room whose box holds the head; with
+// --path, line K's after walking lines 0..K (walk/replay.hpp), at time
+// K / fps. Throws InputError for a bad path file, UsageError for a K past
+// its last line.
 render::FrameDesc frame_for(const layout::Layout& layout, const ViewOptions& options);
 
 // The same frame for the reference tracer (threads: 0 = all cores).

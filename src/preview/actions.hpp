@@ -19,6 +19,9 @@ enum class Action {
     ToggleCulling,  // X
     Screenshot,     // P or F12
     Reset,          // R: back to the start
+    ToggleHand,     // G: a hand held out in front of the head
+    HandCloser,     // , : the hand nearer the head
+    HandFurther,    // . : the hand further out
 };
 
 // The movement keys held down now: -1, 0 or +1 on each axis.

@@ -35,6 +35,15 @@ math::HeadPose move_head(const math::HeadPose& head, const MoveInput& in, const 
     return out;
 }
 
+std::array<math::HeadPose, 2> held_hands(const math::HeadPose& head, double distance) {
+    math::HeadPose left;
+    left.yaw_deg = head.yaw_deg;
+    left.position = head.position + math::rotation_y_deg(head.yaw_deg) * math::dvec3{-0.2, -0.7, -0.1};
+    math::HeadPose right = head;
+    right.position = head.position + math::head_rotation(head) * math::dvec3{kHandOffset, -kHandOffset, -distance};
+    return {left, right};
+}
+
 std::optional<std::array<double, 4>> edge_distances(const math::dvec3& p, const std::optional<layout::PlayArea>& area) {
     if (!area) return std::nullopt;
     return std::array<double, 4>{p.x - area->min.x, area->max.x - p.x, p.z - area->min.y, area->max.y - p.z};

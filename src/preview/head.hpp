@@ -32,6 +32,16 @@ inline constexpr double kMinHeight = 0.2, kMaxHeight = 3.0;
 math::HeadPose move_head(const math::HeadPose& head, const MoveInput& input,
                          const std::optional<layout::PlayArea>& play_area);
 
+// The hand the preview holds out (G): the right hand `distance` metres in
+// front of the head (kMinHandDistance..kMaxHandDistance, `,` and `.` step
+// it), kHandOffset right of and below the view's centre, turned as the
+// head; the left hand hangs at the side, 0.2 m left of, 0.1 m in front of
+// and 0.7 m below the head, turned by the head's yaw alone. Physical poses,
+// left first, as a path file's line holds them.
+inline constexpr double kHandDistance = 0.4, kMinHandDistance = 0.1, kMaxHandDistance = 1.0, kHandStep = 0.05;
+inline constexpr double kHandOffset = 0.12;
+std::array<math::HeadPose, 2> held_hands(const math::HeadPose& head, double distance);
+
 // Distances from the head to the play area's edges -x, +x, -z, +z (negative
 // outside); nothing without a play area.
 std::optional<std::array<double, 4>> edge_distances(const math::dvec3& physical_head,

@@ -31,6 +31,9 @@ KeyEffects apply_actions(const std::vector<Action>& actions, bool cursor_capture
             case Action::ToggleCulling: f.cull_portals = !f.cull_portals; break;
             case Action::Screenshot: e.screenshot = true; break;
             case Action::Reset: e.reset = true; break;
+            case Action::ToggleHand: o.hand = !o.hand; break;
+            case Action::HandCloser: o.hand_distance = std::max(kMinHandDistance, o.hand_distance - kHandStep); break;
+            case Action::HandFurther: o.hand_distance = std::min(kMaxHandDistance, o.hand_distance + kHandStep); break;
         }
     }
     return e;

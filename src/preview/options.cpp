@@ -15,6 +15,7 @@ using cli::OptionValue;
 using cli::parse_args;
 using cli::parse_clip;
 using cli::parse_fov;
+using cli::parse_fps;
 using cli::parse_int;
 using cli::parse_ipd;
 using cli::parse_samples;
@@ -61,6 +62,8 @@ const char* kPreviewKeys =
     "Keys: mouse look (click captures the cursor, Esc releases it, Esc again quits);\n"
     "  W A S D / arrows move, Q / E down / up, Shift faster, R back to the start;\n"
     "  H HUD, M minimap, V parallel / cross / anaglyph, [ ] recursion depth, - = IPD,\n"
+    "  G a hand held in front of the head (the right hand; the left hangs at your side),\n"
+    "  , . pull it closer / push it further (0.1..1 m; walk to push it through a door),\n"
     "  C clip mode, X portal culling, P or F12 saves the window (screenshot-NNNN.png in the\n"
     "  --screenshots DIR, or the current directory)\n";
 
@@ -106,9 +109,14 @@ constexpr Option<PreviewOptions> kPreviewOptions[] = {
     {"--no-vsync", nullptr, "do not wait for the display between frames",
      [](PreviewOptions& o, const OptionValue&) { o.vsync = false; }},
     {"--path", "FILE",
-     "replay physical head poses, one a frame (the format of 'walk');\n"
-     "afterwards the head stays at the last pose under keyboard control",
+     "replay physical head poses, one a frame (the format of 'walk'; a\n"
+     "line of 18 numbers also places the hands); afterwards the head\n"
+     "stays at the last pose under keyboard control",
      [](PreviewOptions& o, const OptionValue& v) { o.path_file = v.text; }, nullptr, "Scripted mode (tests, demos):"},
+    {"--fps", "N",
+     "with --path: frame k is at time k / N for moving props (default\n"
+     "90); without it, the time is the seconds since the preview started",
+     [](PreviewOptions& o, const OptionValue& v) { o.fps = parse_fps(v.text); }},
     {"--screenshots", "DIR",
      "save every frame: frame-NNNN.png (the renderer's side-by-side\n"
      "image, exactly as 'render' writes it at --size), frame-NNNN-ids.png,\n"
@@ -130,6 +138,7 @@ PreviewOptions parse_preview_options(const std::vector<std::string>& args, bool*
     if (a.help) return o;
     if (!a.positional.empty()) o.layout_path = a.positional[0];
     if (a.flag("--cross") && a.flag("--anaglyph")) throw UsageError("--cross and --anaglyph exclude each other");
+    if (a.value("--fps") && !a.value("--path")) throw UsageError("--fps needs --path FILE");
     apply_options(kPreviewOptions, a, o);
     return o;
 }

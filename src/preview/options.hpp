@@ -30,11 +30,14 @@ struct PreviewOptions {
     render::FrameDesc frame = default_preview_frame();
     PreviewView view = PreviewView::Parallel;
     std::optional<std::string> path_file;    // --path: physical poses, one a frame
+    std::optional<double> fps;               // --fps: frame k of --path is at time k / fps
     std::optional<std::string> screenshots;  // --screenshots DIR: every frame saved
     std::optional<long> frames;              // --frames N: quit after N frames
     bool hud = true;
     bool minimap = true;
     bool vsync = true;
+    bool hand = false;           // G: a hand held out in front of the head (preview/head.hpp)
+    double hand_distance = 0.4;  // , and . : how far in front, metres
 };
 
 // Throws UsageError (exit 2) for unknown or conflicting options and

@@ -47,20 +47,36 @@ KeyEffects apply_keys(PreviewSession& s) {
 
 // The physical head: the path while it lasts, then the keys and mouse.
 math::HeadPose next_physical_head(const PreviewSession& s, long frame, double dt) {
-    if (static_cast<std::size_t>(frame) < s.path.size()) return s.path[static_cast<std::size_t>(frame)];
+    if (static_cast<std::size_t>(frame) < s.path.size()) return s.path[static_cast<std::size_t>(frame)].head;
     const WindowInput& in = s.window->input;
     const MoveInput move = move_input(in.held, dt, cursor_captured(*s.window), in.mouse_dx, in.mouse_dy);
     return move_head(s.physical, move, s.shown.layout->play_area);
 }
 
-// The options' frame with the walker's head and room. Screenshots are taken
-// at --size, as `render --size` draws; otherwise the eyes are drawn at the
-// size they have in the window.
-render::FrameDesc frame_desc(const PreviewSession& s, const PixelRect& eye) {
+// The physical hands: the path's line's while the path lasts and the line
+// has them, else the hand G holds out, else none.
+walk::HandPoses physical_hands(const PreviewSession& s, long frame) {
+    const std::size_t k = static_cast<std::size_t>(frame);
+    if (k < s.path.size() && s.path[k].hands) return s.path[k].hands;
+    if (s.options.hand) return held_hands(s.physical, s.options.hand_distance);
+    return std::nullopt;
+}
+
+// The time of moving props: frame / fps with --path (during the path and
+// after it), else the seconds since the preview started.
+double frame_time(const PreviewSession& s, long frame) {
+    if (s.options.path_file)
+        return walk::line_time(static_cast<std::size_t>(frame), s.options.fps.value_or(layout::kDefaultPathFps));
+    return seconds_since(s.clock.start);
+}
+
+// The options' frame with the walker's head, room and hands, at the frame's
+// time. Screenshots are taken at --size, as `render --size` draws;
+// otherwise the eyes are drawn at the size they have in the window.
+render::FrameDesc frame_desc(const PreviewSession& s, long frame, const PixelRect& eye) {
     render::FrameDesc desc = s.options.frame;
-    const walk::Walker& walker = *s.shown.walker;
-    desc.head = math::head_pose_from(walker.position(), walker.rotation());
-    desc.room = walker.room();
+    walk::set_walked_view(desc, *s.shown.walker, s.physical_hands);
+    desc.time = frame_time(s, frame);
     if (!s.options.screenshots) {
         desc.eye_width = eye.width;
         desc.eye_height = eye.height;
@@ -175,12 +191,13 @@ bool run_frame(PreviewSession& s, long frame, std::ostream& err) {
     if (keys.reset) reset_walk(s);
     s.physical = next_physical_head(s, frame, dt);
     const std::vector<int> passed = s.shown.walker->step(s.physical);
+    s.physical_hands = physical_hands(s, frame);
 
     int fb_w = 0, fb_h = 0;
     framebuffer_size(*s.window, fb_w, fb_h);
     if (fb_w <= 0 || fb_h <= 0) return true;  // minimised
     const WindowLayout places = window_layout(fb_w, fb_h, eye_aspect(s.options), s.options.view);
-    const render::FrameDesc desc = frame_desc(s, places.eye_rects[0]);
+    const render::FrameDesc desc = frame_desc(s, frame, places.eye_rects[0]);
     check(s.shown.renderer->draw(desc, &s.stats));
     s.clock.io_seconds = save_rendered_frame(s, frame, desc, passed);
     draw_window(s, places, desc, fb_w, fb_h);

@@ -57,7 +57,7 @@ void open_session(PreviewSession& s, PreviewOptions options) {
     if (o.path_file) files.input("--path", *o.path_file);
     declare_frame_files(files, o.screenshots);
     layout::Layout first = cli::load_layout_or_default(o.layout_path, files);
-    if (o.path_file) s.path = value_or_throw(layout::read_path_file(*o.path_file));
+    if (o.path_file) s.path = value_or_throw(layout::read_path_frames_file(*o.path_file));
     s.files = open_frame_files(o.screenshots);
 
     s.title = "impossible preview - " + (first.name.empty() ? first.source : first.name);
@@ -70,7 +70,7 @@ void open_session(PreviewSession& s, PreviewOptions options) {
     if (o.layout_path) s.watcher = watch_layout(*o.layout_path);
     s.physical = start_pose(*s.shown.layout);
     if (!o.path_file) capture_cursor(*s.window, true);
-    s.clock.last = s.clock.last_poll = Clock::now();
+    s.clock.last = s.clock.last_poll = s.clock.start = Clock::now();
 }
 
 void poll_reload(PreviewSession& s, Clock::time_point now) {

@@ -24,6 +24,7 @@
 #include "preview/window.hpp"
 #include "render/frame.hpp"
 #include "render/renderer.hpp"
+#include "walk/replay.hpp"
 #include "walk/walker.hpp"
 
 namespace impossible::preview {
@@ -52,6 +53,7 @@ math::HeadPose start_pose(const layout::Layout& layout);
 // Frame times for the HUD, without the time spent saving files.
 struct FrameClock {
     Clock::time_point last{}, last_poll{};
+    Clock::time_point start{};    // the preview's time 0 for moving props (without --path)
     std::deque<double> frame_ms;  // the last kTimedFrames frames
     double io_seconds = 0.0;      // spent writing files last frame
 };
@@ -62,7 +64,7 @@ double tick(FrameClock& clock, long frame, Clock::time_point now);
 struct PreviewSession {
     PreviewOptions options;
     std::string title;
-    std::vector<math::HeadPose> path;  // --path: one physical pose a frame
+    std::vector<layout::PathFrame> path;  // --path: one physical pose (and hands) a frame
     FrameFiles files;
     std::unique_ptr<PreviewWindow> window;  // declared before the GL objects: outlives them
     // The window context's one state cache, for the renderer, the present
@@ -74,6 +76,7 @@ struct PreviewSession {
     std::optional<LayoutWatcher> watcher;    // with a layout file
     std::vector<std::string> reload_errors;  // of the last failed reload
     math::HeadPose physical;
+    walk::HandPoses physical_hands;  // this frame's: the path's line's, or G's (held_hands)
     FrameClock clock;
     render::FrameStats stats;
 };

@@ -65,6 +65,14 @@ TEST(BenchOptions, BadValuesAndCombinations) {
     EXPECT_THROW(parse({"--frames", "0"}), cli::InputError);
     EXPECT_THROW(parse({"--sweep", "colours:1"}), cli::InputError);
     EXPECT_THROW(parse({"--path", "w.txt", "--pose", "0,1.6,0,0,0,0"}), cli::InputError);
+    EXPECT_THROW(parse({"--path", "w.txt", "--time", "1"}), cli::UsageError);
+    EXPECT_THROW(parse({"--path", "w.txt", "--hands", "0,1,0,0,0,0,0,1,0,0,0,0"}), cli::UsageError);
+    EXPECT_THROW(parse({"--fps", "30"}), cli::UsageError);
+    EXPECT_THROW(parse({"--path", "w.txt", "--frame", "1"}), cli::UsageError);  // render's, not bench's
+    EXPECT_THROW(parse({"--path", "w.txt", "--fps", "0"}), cli::InputError);
+    const BenchOptions o = parse({"--path", "w.txt", "--fps", "30"});
+    EXPECT_EQ(o.fps, 30.0);
+    EXPECT_EQ(parse({"--time", "2", "--hands", "0,1,0,0,0,0,0,1,0,0,0,0"}).view.frame.time, 2.0);
 }
 
 }  // namespace

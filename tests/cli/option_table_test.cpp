@@ -77,6 +77,14 @@ TEST(OptionTable, ContinuationLinesAreIndentedToTheColumn) {
               "                             (24-bit depth)\n");
 }
 
+TEST(OptionTable, AHelpStartingWithANewlineStartsBelowALongLeftColumn) {
+    // No spaces at the end of the first line (--hands LX,...,RROLL).
+    EXPECT_EQ(help_row("--hands A,B,C,D,E,F,G,H,I,J,K,L", "\nthe hands\n(default: none)", 29),
+              "  --hands A,B,C,D,E,F,G,H,I,J,K,L\n"
+              "                             the hands\n"
+              "                             (default: none)\n");
+}
+
 TEST(OptionTable, TheHelpListsTheTableInOrderWithLabelsAndHeadings) {
     EXPECT_EQ(options_help(kToyOptions, 12),
               "  --name TEXT  what to call it\n"

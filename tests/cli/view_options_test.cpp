@@ -108,7 +108,10 @@ TEST(ViewOptions, TheHelpHasEveryOptionAtColumn29) {
     const std::string help = options_help(view_options(), kViewHelpColumn);
     for (const Option<ViewOptions>& o : view_options()) {
         const std::string left = option_label(o.name, o.value_name, o.label);
-        EXPECT_NE(help.find("  " + left + " "), std::string::npos) << left;
+        // A long LEFT has its help on the next line.
+        EXPECT_TRUE(help.find("  " + left + " ") != std::string::npos ||
+                    help.find("  " + left + "\n") != std::string::npos)
+            << left;
     }
     EXPECT_NE(help.find("\n  --room ID                  the room the head is in;"), std::string::npos);
     EXPECT_TRUE(

@@ -114,17 +114,27 @@ std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
 
 constexpr int kEyeW = 160, kEyeH = 120;
 
+// Frame `i` of a scripted preview (its PNGs under `shots`) against
+// `render --backend osmesa` with `view` (a pose and room, or --path and
+// --frame) at the test's size.
+void expect_frame_equals_render(const std::string& view, size_t i, const fs::path& layout, const fs::path& shots,
+                                const fs::path& dir);
+
 // Frame `i` of a scripted preview (its record and PNGs under `shots`)
 // against `render` at the frame's virtual pose and room.
 void expect_frame_matches_render(const nlohmann::json& f, size_t i, const fs::path& layout, const fs::path& shots,
                                  const fs::path& dir) {
     std::string pose;
     for (int k = 0; k < 6; ++k) pose += (k ? "," : "") + f["pose"][k].dump();
+    expect_frame_equals_render("--pose=" + pose + " --room " + f["room"].get<std::string>(), i, layout, shots, dir);
+}
+
+void expect_frame_equals_render(const std::string& view, size_t i, const fs::path& layout, const fs::path& shots,
+                                const fs::path& dir) {
     // OSMesa is llvmpipe everywhere, like GLX under Xvfb, even where EGL finds a GPU.
     const ProgramRun r =
         run_program("",
-                    "render --backend osmesa " + q(layout) + " --pose=" + pose + " --room " +
-                        f["room"].get<std::string>() + " --size " + std::to_string(kEyeW) + "x" +
+                    "render --backend osmesa " + q(layout) + " " + view + " --size " + std::to_string(kEyeW) + "x" +
                         std::to_string(kEyeH) + " --out " + q(dir / "r.png") + " --ids " + q(dir / "r-ids.png"),
                     dir);
     ASSERT_EQ(r.status, 0) << r.err;
@@ -214,6 +224,31 @@ TEST_F(Preview, ScriptedWalkThroughAPortalMatchesRenderAndWalk) {
     EXPECT_NE(window.data, frame.data);
 }
 
+TEST_F(Preview, ReplayedHandsAndTimeMatchRenderOfThePathsFrames) {
+    const Xvfb x;
+    ASSERT_FALSE(x.display.empty()) << x.error;
+    const fs::path layout = fs::path(IMPOSSIBLE_SOURCE_DIR) / "layouts/rotated.json";
+    // Lines 1 and 3 hold hands (18 numbers); line 1's right hand is through
+    // the door ahead of the head, line 2 passes the door.
+    const fs::path path = dir_ / "hands.txt";
+    std::ofstream(path) << "0.05 1.6 1.0 0 0 0\n"
+                           "0.05 1.6 0.4 5 -10 0   -0.25 1.2 0.3 0 0 0   0.2 1.35 -0.1 10 -30 5\n"
+                           "0.05 1.6 -0.3 0 0 0\n"
+                           "0.1 1.6 -0.7 10 5 2   -0.2 1.3 -0.9 0 0 0   0.25 1.35 -1.1 -20 15 0\n";
+    const fs::path shots = dir_ / "shots";
+    const ProgramRun run =
+        run_program("DISPLAY=" + x.display,
+                    "preview " + q(layout) + " --path " + q(path) + " --fps 24 --screenshots " + q(shots) +
+                        " --frames 4 --size " + std::to_string(kEyeW) + "x" + std::to_string(kEyeH),
+                    dir_);
+    ASSERT_EQ(run.status, 0) << run.err;
+    for (size_t i = 0; i < 4; ++i) {
+        SCOPED_TRACE("frame " + std::to_string(i));
+        expect_frame_equals_render("--path " + q(path) + " --frame " + std::to_string(i) + " --fps 24", i, layout,
+                                   shots, dir_);
+    }
+}
+
 TEST_F(Preview, CrossSwapsTheEyesInTheWindow) {
     const Xvfb x;
     ASSERT_FALSE(x.display.empty()) << x.error;
@@ -293,6 +328,9 @@ TEST_F(Preview, BadOptionsAreUsageOrInputErrors) {
     EXPECT_EQ(run_program(env, "preview --bogus", dir_).status, 2);
     EXPECT_EQ(run_program(env, "preview --frames 0", dir_).status, 1);
     EXPECT_EQ(run_program(env, "preview --size 100", dir_).status, 1);
+    const ProgramRun fps_alone = run_program(env, "preview --fps 30", dir_);
+    EXPECT_EQ(fps_alone.status, 2);
+    EXPECT_NE(fps_alone.err.find("--fps needs --path FILE"), std::string::npos) << fps_alone.err;
     EXPECT_EQ(run_program(env, "preview " + q(dir_ / "missing.json"), dir_).status, 1);
     std::ofstream(dir_ / "bad-path.txt") << "0 1.6 1 0 0\n";
     const ProgramRun bad_path = run_program(env, "preview --path " + q(dir_ / "bad-path.txt"), dir_);

@@ -2,6 +2,8 @@
 // Esc releases the cursor before it quits, held keys become head movement.
 #include <gtest/gtest.h>
 
+#include <glm/geometric.hpp>
+
 #include "preview/keys.hpp"
 
 namespace impossible::preview {
@@ -49,6 +51,39 @@ TEST(PreviewKeys, EscapeReleasesTheCursorThenQuits) {
     EXPECT_TRUE(e.quit);
     e = apply_actions({Action::Escape, Action::Screenshot, Action::Escape, Action::Reset}, true, o);
     EXPECT_TRUE(e.release_cursor && e.quit && e.screenshot && e.reset);
+}
+
+TEST(PreviewKeys, GHoldsAHandOutAndCommaAndPeriodMoveIt) {
+    PreviewOptions o;
+    EXPECT_FALSE(o.hand);
+    EXPECT_EQ(o.hand_distance, kHandDistance);
+    apply_actions({Action::ToggleHand, Action::HandFurther, Action::HandFurther, Action::HandCloser}, false, o);
+    EXPECT_TRUE(o.hand);
+    EXPECT_DOUBLE_EQ(o.hand_distance, kHandDistance + kHandStep);
+    for (int i = 0; i < 40; ++i) apply_actions({Action::HandFurther}, false, o);
+    EXPECT_EQ(o.hand_distance, kMaxHandDistance);
+    for (int i = 0; i < 40; ++i) apply_actions({Action::HandCloser}, false, o);
+    EXPECT_EQ(o.hand_distance, kMinHandDistance);
+    apply_actions({Action::ToggleHand}, false, o);
+    EXPECT_FALSE(o.hand);
+}
+
+TEST(PreviewKeys, TheHeldRightHandIsInFrontOfTheHeadTurnedAsIt) {
+    const math::HeadPose head{{1.0, 1.6, 2.0}, 90.0, -20.0, 0.0};  // looking along -x, down
+    const std::array<math::HeadPose, 2> hands = held_hands(head, 0.5);
+    const math::HeadPose& right = hands[1];
+    EXPECT_EQ(right.yaw_deg, 90.0);
+    EXPECT_EQ(right.pitch_deg, -20.0);
+    const math::dvec3 offset = right.position - head.position;
+    const math::dmat3 r = math::head_rotation(head);
+    EXPECT_NEAR(glm::dot(offset, math::forward_of(r)), 0.5, 1e-12);  // 0.5 m ahead
+    EXPECT_NEAR(glm::dot(offset, r[0]), kHandOffset, 1e-12);         // to the right
+    EXPECT_NEAR(glm::dot(offset, r[1]), -kHandOffset, 1e-12);        // below
+    EXPECT_LT(right.position.x, head.position.x);                    // along -x
+    // The left hand hangs at the side, below the head.
+    EXPECT_NEAR(hands[0].position.y, head.position.y - 0.7, 1e-12);
+    EXPECT_EQ(hands[0].yaw_deg, 90.0);
+    EXPECT_EQ(hands[0].pitch_deg, 0.0);
 }
 
 TEST(PreviewKeys, MoveInputTakesTheMouseOnlyWhenCaptured) {

@@ -71,6 +71,22 @@ def test_pose_room_depth_samples_time(tmp_path):
     assert_frame(renderer.trace(pose=[0.2, 1.5, 0.5, 30, -10, 5], room="corridor", max_depth=3), color, ids)
 
 
+def test_hands_and_time_as_the_cli(tmp_path):
+    """hands= and time= draw what --hands and --time draw (rasteriser and tracer)."""
+    path = SOURCE_DIR / "layouts" / "rotated.json"
+    pose = (0.0, 1.6, 0.6, 0, -10, 0)
+    hands = ((-0.2, 1.3, 0.3, 10, 0, 0), (0.15, 1.4, -0.05, -20, 30, 5))
+    text = ",".join(str(v) for hand in hands for v in hand)
+    options = ["--pose", ",".join(map(str, pose)), "--room", "hall", "--hands", text, "--time", "1.25"]
+    renderer = impossible.Renderer(impossible.load(path), size=SIZE)
+    color, ids, _ = cli_images(tmp_path, "render", path, *options)
+    with_hands = renderer.render(pose=pose, room="hall", hands=hands, time=1.25)
+    assert_frame(with_hands, color, ids)
+    assert renderer.render(pose=pose, room="hall")["color"].tobytes() != color.tobytes()  # the hands are drawn
+    color, ids, _ = cli_images(tmp_path, "trace", path, *options)
+    assert_frame(renderer.trace(pose=pose, room="hall", hands=list(hands), time=1.25), color, ids)
+
+
 def test_several_renderers_in_one_process(tmp_path):
     paths = [SOURCE_DIR / "layouts" / name for name in ("three_kinds.json", "mirror_hall.json")]
     expected = [cli_images(tmp_path, "render", p)[:2] for p in paths]
@@ -102,10 +118,16 @@ def test_bad_arguments():
     with pytest.raises(ValueError, match="backend must be 'egl', 'osmesa' or 'any'"):
         impossible.Renderer(layout, backend="vulkan")
     renderer = impossible.Renderer(layout, size=(16, 9))
-    with pytest.raises(NotImplementedError, match="hands"):
-        renderer.render(hands=[(0, 1, 0, 0, 0, 0), (0, 1, 0, 0, 0, 0)])
-    with pytest.raises(NotImplementedError, match="hands"):
+    with pytest.raises(ValueError, match="hands: expected two poses"):
         impossible.trace(layout, size=(16, 9), hands=[])
+    with pytest.raises(TypeError, match="hands: expected two poses"):
+        renderer.render(hands="0,1,0,0,0,0")
+    with pytest.raises(ValueError, match=r"hands\[1\]: expected 6 numbers"):
+        renderer.render(hands=[(0, 1, 0, 0, 0, 0), (0, 1, 0)])
+    with pytest.raises(ValueError, match=r"hands\[0\]: .* not a finite number"):
+        renderer.render(hands=[(0, float("inf"), 0, 0, 0, 0), (0, 1, 0, 0, 0, 0)])
+    with pytest.raises(impossible.Error, match="time is not a finite number"):
+        renderer.render(time=float("nan"))
     with pytest.raises(ValueError, match="expected 6 numbers"):
         renderer.render(pose=(0, 1.6, 0))
     with pytest.raises(TypeError, match="expected 6 numbers"):
