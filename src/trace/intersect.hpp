@@ -25,16 +25,42 @@ struct SurfaceHit {
     glm::dvec2 barycentric{0.0};  // a triangle's: the weights (u, v) of its vertices 1 and 2
 };
 
+// The signed distance dot(plane, (p, 1)), always summed in this order.
+inline double plane_distance(const dvec4& plane, const dvec3& p) {
+    return plane.x * p.x + plane.y * p.y + plane.z * p.z + plane.w;
+}
+
+// What else decides whether a hit point counts, besides the clip plane
+// (docs/tracer.md, "Crossing objects" and "Volume portals"). Points are
+// tested in the cell's coordinates: a placed object's hit point is moved
+// there by its to_cell first.
+struct RayFilter {
+    std::span<const SceneVolume> outside;  // hidden inside any of these volumes
+    const SceneVolume* inside = nullptr;   // counts only inside this volume
+    const PlacedObject* placed = nullptr;  // points are in its own coordinates; its cuts apply
+};
+
+struct ClipPlane;
+// ClipPlane::keeps with a filter: the clip plane, the placed object's cuts
+// and the volumes, all on the point in the cell's coordinates.
+bool filtered_keeps(const ClipPlane& clip, const dvec3& point);
+
 // "Only the part of the ray strictly in front of the plane counts"
 // (layout-format.md, "What a pixel shows"): a point counts when its signed
-// distance exceeds the tolerance. Inactive: every point counts.
+// distance exceeds the tolerance. Inactive: every point counts. A filter,
+// where set, decides further (filtered_keeps); without one nothing else is
+// read, so rays in cells without volumes or dynamic objects cost what they
+// did before.
 struct ClipPlane {
     bool active = false;
     dvec4 plane{0.0};  // (n, -dot(n, centre)): dot(plane, (p, 1)) = signed distance
     double tolerance = 0.0;
+    const RayFilter* filter = nullptr;
 
     bool keeps(const dvec3& p) const {
-        return !active || plane.x * p.x + plane.y * p.y + plane.z * p.z + plane.w > tolerance;
+        if (filter) [[unlikely]]
+            return filtered_keeps(*this, p);
+        return !active || plane_distance(plane, p) > tolerance;
     }
 };
 

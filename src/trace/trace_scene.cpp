@@ -1,11 +1,13 @@
 #include "trace/trace_scene.hpp"
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <variant>
 
 #include <glm/geometric.hpp>
 
+#include "links/portal_links.hpp"
 #include "trace/bvh.hpp"
 
 namespace impossible::trace {
@@ -67,7 +69,10 @@ bool cuts_hole(const AxisRect& face, const math::PortalRect& rect) {
 
 namespace {
 
-Result<void> add_prop(SceneRoom& room, const layout::Prop& prop) {
+// A prop's surfaces added to a room's or an object's (SceneRoom,
+// SceneObject), in the layout's coordinates as written.
+template <class Surfaces>
+Result<void> add_prop(Surfaces& room, const layout::Prop& prop) {
     if (const auto* box = std::get_if<layout::BoxProp>(&prop)) {
         room.boxes.push_back({box->min, box->max, box->color});
         return {};
@@ -106,59 +111,137 @@ Result<void> add_prop(SceneRoom& room, const layout::Prop& prop) {
     return {};
 }
 
-}  // namespace
-
-Result<Scene> prepare_scene(const layout::Layout& layout) {
-    Scene scene;
+std::optional<Error> check_portals(const layout::Layout& layout) {
     const int room_count = static_cast<int>(layout.rooms.size());
     const int portal_count = static_cast<int>(layout.portals.size());
-    for (const layout::Room& room : layout.rooms) {
-        SceneRoom r;
-        for (int f = 0; f < layout::kFaceCount; ++f) {
-            r.faces[f].rect = room_face_rect(room.min, room.max, static_cast<layout::Face>(f));
-            r.faces[f].face = static_cast<layout::Face>(f);
-            r.faces[f].color = room.face_color[f];
-            r.faces[f].texture = room.face_texture[f];
-            r.faces[f].texture_size = room.texture_size;
-        }
-        for (const layout::Prop& prop : room.props)
-            if (Result<void> added = add_prop(r, prop); !added) return added;
-        r.bvh = build_bvh(r.triangles);
-        if (r.boxes.size() > static_cast<std::size_t>(kBvhLeafSize)) r.box_bvh = build_box_bvh(r.boxes);
-        r.checker = room.checker;
-        scene.rooms.push_back(std::move(r));
-    }
-    for (int i = 0; i < portal_count; ++i) {
-        const layout::Portal& p = layout.portals[i];
+    for (const layout::Portal& p : layout.portals) {
         const bool mirror = p.kind == layout::PortalKind::Mirror;
         if (p.room < 0 || p.room >= room_count || (!mirror && (p.target < 0 || p.target >= portal_count)))
             return Error{"portal '" + p.id + "' has no valid room or target"};
-        ScenePortal sp;
-        sp.rect = p.rect;
-        sp.right = math::portal_right(p.rect);
-        sp.room = p.room;
-        sp.target = mirror ? -1 : p.target;
-        sp.kind = p.kind;
-        if (p.kind != layout::PortalKind::Door) sp.tint = p.tint;
-        if (p.kind == layout::PortalKind::Window) sp.reflectance = p.reflectance;
-        sp.to_local = math::portal_frame_inverse(p.rect);
-        if (!mirror) sp.transfer = math::transfer_matrix(p.rect, layout.portals[p.target].rect);
-        if (p.kind != layout::PortalKind::Door) sp.reflection = math::reflection_matrix(p.rect);
-        sp.clip_tolerance = 1e-9 * (1.0 + glm::length(p.rect.center));
-        sp.plane = math::portal_plane(p.rect);
-        scene.portals.push_back(sp);
-
-        SceneRoom& room = scene.rooms[p.room];
-        room.portals.push_back(i);
-        for (RoomFace& face : room.faces) {
-            if (cuts_hole(face.rect, p.rect)) {
-                face.holes.push_back(i);
-                scene.portals[i].in_hole = true;
-                break;  // a rectangle lies in one face's plane at most
-            }
-        }
-        if (!scene.portals[i].in_hole || p.kind == layout::PortalKind::Door) room.box_portals.push_back(i);
     }
+    // A volume's target shows only inside it: a room without portals of
+    // any kind (layout-format.md, "Volume portals").
+    for (const layout::Volume& v : layout.volumes) {
+        const auto has_portals = [&](int room) {
+            for (const layout::Portal& p : layout.portals)
+                if (p.room == room) return true;
+            for (const layout::Volume& w : layout.volumes)
+                if (w.room == room) return true;
+            return false;
+        };
+        if (v.room < 0 || v.room >= room_count || v.target_room < 0 || v.target_room >= room_count ||
+            v.target_room == v.room || has_portals(v.target_room))
+            return Error{"volume '" + v.id + "' has no valid room or target"};
+    }
+    return std::nullopt;
+}
+
+SceneRoom scene_room(const layout::Room& room) {
+    SceneRoom r;
+    for (int f = 0; f < layout::kFaceCount; ++f) {
+        r.faces[f].rect = room_face_rect(room.min, room.max, static_cast<layout::Face>(f));
+        r.faces[f].face = static_cast<layout::Face>(f);
+        r.faces[f].color = room.face_color[f];
+        r.faces[f].texture = room.face_texture[f];
+        r.faces[f].texture_size = room.texture_size;
+    }
+    r.checker = room.checker;
+    return r;
+}
+
+template <class Surfaces>
+void build_trees(Surfaces& s) {
+    s.bvh = build_bvh(s.triangles);
+    if (s.boxes.size() > static_cast<std::size_t>(kBvhLeafSize)) s.box_bvh = build_box_bvh(s.boxes);
+}
+
+void add_portal(Scene& scene, const layout::Layout& layout, int i) {
+    const layout::Portal& p = layout.portals[i];
+    const bool mirror = p.kind == layout::PortalKind::Mirror;
+    ScenePortal sp;
+    sp.rect = p.rect;
+    sp.right = math::portal_right(p.rect);
+    sp.room = p.room;
+    sp.target = mirror ? -1 : p.target;
+    sp.kind = p.kind;
+    if (p.kind != layout::PortalKind::Door) sp.tint = p.tint;
+    if (p.kind == layout::PortalKind::Window) sp.reflectance = p.reflectance;
+    sp.to_local = math::portal_frame_inverse(p.rect);
+    if (!mirror) sp.transfer = math::transfer_matrix(p.rect, layout.portals[p.target].rect);
+    if (p.kind != layout::PortalKind::Door) sp.reflection = math::reflection_matrix(p.rect);
+    sp.clip_tolerance = 1e-9 * (1.0 + glm::length(p.rect.center));
+    sp.plane = math::portal_plane(p.rect);
+    scene.portals.push_back(sp);
+
+    SceneRoom& room = scene.rooms[p.room];
+    room.portals.push_back(i);
+    for (RoomFace& face : room.faces) {
+        if (cuts_hole(face.rect, p.rect)) {
+            face.holes.push_back(i);
+            scene.portals[i].in_hole = true;
+            break;  // a rectangle lies in one face's plane at most
+        }
+    }
+    if (!scene.portals[i].in_hole || p.kind == layout::PortalKind::Door) room.box_portals.push_back(i);
+}
+
+SceneVolume scene_volume(const layout::Volume& v) {
+    SceneVolume sv;
+    sv.center = v.rect.center;
+    sv.right = math::portal_right(v.rect);
+    sv.up = v.rect.up;
+    sv.normal = v.rect.normal;
+    sv.half = 0.5 * dvec3(v.rect.width, v.rect.height, v.rect.depth);
+    sv.tolerance = 1e-9 * (1.0 + glm::length(v.rect.center));
+    sv.target = v.target_room;
+    sv.tint = v.tint;
+    return sv;
+}
+
+// The dynamic props' surfaces (Scene::props, in ObjectSet::props' order)
+// and the hand's: a box of HandShape::box centred on the origin, or the
+// model's triangles scaled (its position and yaw are 0).
+Result<void> add_objects(Scene& scene, const layout::Layout& layout) {
+    for (const walk::DynamicProp& d : scene.objects.props) {
+        SceneObject object;
+        if (Result<void> added = add_prop(object, layout.rooms[d.room].props[d.index]); !added) return added;
+        build_trees(object);
+        scene.prop_object[d.room][d.index] = static_cast<int>(scene.props.size());
+        scene.props.push_back(std::move(object));
+    }
+    const layout::HandShape& hand = layout.hands;
+    if (hand.model) {
+        if (Result<void> added = add_prop(scene.hand, layout::Prop(*hand.model)); !added) return added;
+    } else {
+        scene.hand.boxes.push_back({-0.5 * hand.box, 0.5 * hand.box, hand.color});
+    }
+    build_trees(scene.hand);
+    return {};
+}
+
+}  // namespace
+
+Result<Scene> prepare_scene(const layout::Layout& layout) {
+    if (const std::optional<Error> error = check_portals(layout)) return *error;
+    Scene scene;
+    scene.objects = walk::build_object_set(layout, links::link_portals(layout));
+    for (std::size_t r = 0; r < layout.rooms.size(); ++r) {
+        const layout::Room& room = layout.rooms[r];
+        SceneRoom sr = scene_room(room);
+        // A dynamic prop is no part of its room: it is placed each frame.
+        for (std::size_t k = 0; k < room.props.size(); ++k) {
+            if (r < scene.objects.dynamic.size() && k < scene.objects.dynamic[r].size() && scene.objects.dynamic[r][k])
+                continue;
+            if (Result<void> added = add_prop(sr, room.props[k]); !added) return added;
+        }
+        build_trees(sr);
+        scene.rooms.push_back(std::move(sr));
+        scene.prop_object.emplace_back(room.props.size(), -1);
+    }
+    for (int i = 0; i < static_cast<int>(layout.portals.size()); ++i) add_portal(scene, layout, i);
+    for (const layout::Volume& v : layout.volumes) scene.rooms[v.room].volumes.push_back(scene_volume(v));
+    if (Result<void> added = add_objects(scene, layout); !added) return added;
+    if (!scene.rooms.empty()) scene.rest = place_frame_objects(scene, math::View{});
     return scene;
 }
 

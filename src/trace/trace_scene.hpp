@@ -11,6 +11,7 @@
 
 #include <array>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -19,6 +20,8 @@
 #include "layout/layout.hpp"
 #include "math/conventions.hpp"
 #include "math/portal.hpp"
+#include "math/view.hpp"
+#include "walk/objects.hpp"
 
 namespace impossible::trace {
 
@@ -118,8 +121,23 @@ struct Bvh {
     std::vector<int> slivers;    // triangles tested on every ray, outside the tree (bvh.cpp); boxes: none
 };
 
+// A volume portal (layout-format.md, "Volume portals"): inside the box,
+// the room `target` shows instead of the room it stands in.
+struct SceneVolume {
+    dvec3 center{0.0};
+    dvec3 right{1, 0, 0}, up{0, 1, 0}, normal{0, 0, 1};  // r = u × n, u, n
+    dvec3 half{0.0};                                     // width / 2, height / 2, depth / 2
+    double tolerance = 0.0;                              // 1e-9 · (1 + |centre|)
+    int target = -1;                                     // index into Scene::rooms
+    dvec3 tint{1.0};
+    // The closed box, widened by the tolerance (frame_objects.cpp).
+    bool contains(const dvec3& p) const;
+};
+
 struct SceneRoom {
     std::array<RoomFace, layout::kFaceCount> faces;  // in layout::Face order
+    // Its static props only: a dynamic one (walk/objects.hpp) is a
+    // SceneObject, placed anew each frame.
     std::vector<PropBox> boxes;
     std::vector<PropTriangle> triangles;
     std::vector<PropMaterial> materials;  // those the triangles name, by PropTriangle::material
@@ -133,13 +151,68 @@ struct SceneRoom {
     // faces meet (hit_room_face): free-standing portals and doors, whose
     // inner faces an eye in the box's column sees (hit_portal_box).
     std::vector<int> box_portals;
-    double checker = 0.0;  // checker side for the faces, 0: plain
+    double checker = 0.0;              // checker side for the faces, 0: plain
+    std::vector<SceneVolume> volumes;  // its volume portals, in file order
+};
+
+// A dynamic object's surfaces (a prop that moves or meets a door, or the
+// hand; walk/objects.hpp) in its own coordinates: a prop's are the layout's
+// as written, the hand's its frame (HandShape). Materials as SceneRoom's.
+struct SceneObject {
+    std::vector<PropBox> boxes;
+    std::vector<PropTriangle> triangles;
+    std::vector<PropMaterial> materials;
+    Bvh bvh;
+    Bvh box_bvh;
+};
+
+// A door's cut of a placed object (walk::ObjectCut), in the cell's
+// coordinates: an image keeps d > tolerance, its own room d ≥ -tolerance,
+// with the door's clip tolerance 1e-9 · (1 + |centre|).
+struct ObjectCutPlane {
+    dvec4 plane{0.0, 0.0, 0.0, 1.0};
+    bool strict = false;
+    double tolerance = 0.0;
+};
+
+// A dynamic object placed in a cell for one frame (walk::ObjectInstance).
+struct PlacedObject {
+    int prop = -1;  // index into Scene::props; -1: the hand
+    int cell = -1;
+    dmat4 to_cell{1.0};    // rigid: own coordinates → the cell's
+    dmat4 from_cell{1.0};  // its inverse
+    dmat3 rotation{1.0};   // to_cell's rotation, for normals
+    int cut_count = 0;
+    std::array<ObjectCutPlane, walk::kMaxCuts> cuts{};
+};
+
+// A frame's dynamic objects, grouped by cell.
+struct FrameObjects {
+    std::vector<PlacedObject> placed;  // by cell, in place_objects' order within one
+    std::vector<int> first;            // per room r: placed[first[r], first[r + 1]); empty: none at all
+    std::span<const PlacedObject> in_room(int room) const {
+        if (first.empty()) return {};
+        return std::span<const PlacedObject>(placed).subspan(first[room], first[room + 1] - first[room]);
+    }
 };
 
 struct Scene {
     std::vector<SceneRoom> rooms;
     std::vector<ScenePortal> portals;
+    // The layout's moving and crossing objects (walk::build_object_set) and
+    // their surfaces: props[i] is objects.props[i]'s, `hand` each hand's.
+    walk::ObjectSet objects;
+    std::vector<SceneObject> props;
+    SceneObject hand;
+    std::vector<std::vector<int>> prop_object;  // per room, per listed prop: its index in `props`, or -1
+    // The objects at time 0 without hands, for rays traced without a frame's.
+    FrameObjects rest;
 };
+
+// The dynamic objects of a view: its props at view.time and its hands
+// (walk::place_objects, the hands walked from view.head in view.room; none
+// where view.room is out of range), grouped by cell.
+FrameObjects place_frame_objects(const Scene& scene, const math::View& view);
 
 // Corners of a hole may be this far from the face's plane (layout-format.md).
 inline constexpr double kHolePlaneTolerance = 1e-4;
@@ -154,8 +227,10 @@ bool cuts_hole(const AxisRect& face, const math::PortalRect& rect);
 
 // Builds the tracer's scene. The layout must be valid (as the loader returns
 // it); portal rooms out of range, targets out of range for a door or a
-// window (a mirror's target is not read), and a model's material or texture
-// indices out of range are an error naming the portal or model.
+// window (a mirror's target is not read), a volume whose room or target is
+// out of range or whose target has portals or volumes, and a model's
+// material or texture indices out of range are an error naming the portal,
+// volume or model.
 Result<Scene> prepare_scene(const layout::Layout& layout);
 
 }  // namespace impossible::trace

@@ -2,106 +2,15 @@
 // (layout-format.md) step by step, through portals, mirrors and windows.
 #include "trace/tracer.hpp"
 
-#include <limits>
-
 #include <glm/geometric.hpp>
 
 #include "shading/shading.hpp"
-#include "trace/bvh.hpp"
 #include "trace/intersect.hpp"
+#include "trace/nearest.hpp"
 
 namespace impossible::trace {
 
 namespace {
-
-// The nearest front-facing surface of one room along a ray (step 1 of "What a
-// pixel shows"): what it is and how to shade it.
-struct Nearest {
-    bool found = false;
-    double t = 0.0;
-    dvec3 normal{0.0};
-    int portal = -1;  // ≥ 0: a face of this portal's box
-    dvec3 base{0.0};  // otherwise: the surface's base colour and checker side
-    double checker = 0.0;
-    // Where the base colour is read at the hit point instead (base_color):
-    const RoomFace* textured_face = nullptr;  // a room face with a texture
-    int triangle = -1;                        // a glTF triangle (its index in the room)
-    glm::dvec2 barycentric{0.0};              // … and where it was hit
-
-    // Whether the hit is nearer than the one kept, and so now kept.
-    bool offer(const std::optional<SurfaceHit>& hit, int portal_index, const dvec3& color, double side) {
-        if (!hit || (found && hit->t >= t)) return false;
-        found = true;
-        t = hit->t;
-        normal = hit->normal;
-        portal = portal_index;
-        base = color;
-        checker = side;
-        textured_face = nullptr;
-        triangle = -1;
-        return true;
-    }
-};
-
-// Finds it into `nearest`, reused from ray to ray: each field a hit sets is
-// read only where that hit was kept (offer), so only `found` is reset, and
-// the struct is not cleared at every portal a ray passes.
-void nearest_in_room(const Scene& scene, int room_index, const dvec3& origin, const dvec3& dir, const ClipPlane& clip,
-                     Nearest& nearest) {
-    const SceneRoom& room = scene.rooms[room_index];
-    nearest.found = false;
-    // The faces first, the first in order at the smallest t: a face no
-    // nearer than the nearest so far would lose to it.
-    int face = -1;
-    FaceHit face_hit{std::numeric_limits<double>::infinity(), -1};
-    for (int f = 0; f < layout::kFaceCount; ++f) {
-        if (const std::optional<FaceHit> hit = hit_room_face(room.faces[f], scene, origin, dir, clip, face_hit.t)) {
-            face = f;
-            face_hit = *hit;
-        }
-    }
-    if (face >= 0) {
-        const RoomFace& f = room.faces[face];
-        nearest.offer(SurfaceHit{face_hit.t, axis_normal(f.rect.axis, f.rect.sign)}, face_hit.portal, f.color,
-                      room.checker);
-        if (f.texture) nearest.textured_face = &f;
-    }
-    // The boxes after the faces, losing a tie to them; the first box of those
-    // at the smallest t (bvh.hpp).
-    if (!room.boxes.empty()) {
-        const double limit = nearest.found ? nearest.t : std::numeric_limits<double>::infinity();
-        const BoxHit box = room.box_bvh.nodes.empty() ? nearest_box_scan(room.boxes, origin, dir, clip, limit)
-                                                      : nearest_box(room.box_bvh, room.boxes, origin, dir, clip, limit);
-        if (box.hit) nearest.offer(box.hit, -1, room.boxes[box.index].color, 0.0);
-    }
-    // The triangles come after the faces and boxes and lose a tie to them;
-    // among themselves the first in the list wins one (bvh.hpp).
-    if (!room.triangles.empty()) {
-        const double limit = nearest.found ? nearest.t : std::numeric_limits<double>::infinity();
-        const TriangleHit tri =
-            room.bvh.nodes.empty()
-                ? nearest_triangle_scan(room.triangles, room.materials, origin, dir, clip, limit)
-                : nearest_triangle(room.bvh, room.triangles, room.materials, origin, dir, clip, limit);
-        if (tri.hit && nearest.offer(tri.hit, -1, room.triangles[tri.index].color, 0.0)) {
-            nearest.triangle = tri.index;
-            nearest.barycentric = tri.hit->barycentric;
-        }
-    }
-    for (int p : room.box_portals)
-        nearest.offer(hit_portal_box(scene.portals[p], origin, dir, clip), p, dvec3(0.0), 0.0);
-}
-
-// The base colour of the surface `n` found in room `room_index` (not a
-// portal), at its hit point: a textured face's or a triangle's read there
-// (docs/tracer.md, "Materials and textures"), any other's as offered.
-dvec3 base_color(const Scene& scene, int room_index, const Nearest& n, const dvec3& point) {
-    if (n.textured_face) return room_face_color(*n.textured_face, point);
-    if (n.triangle >= 0) {
-        const SceneRoom& room = scene.rooms[room_index];
-        return dvec3(triangle_color(room.triangles[n.triangle], room.materials, n.barycentric));
-    }
-    return n.base;
-}
 
 // One line of sight being followed (the eye's, or a window's branch): the
 // (possibly virtual) eye and direction, the room, the clipping plane, the
@@ -155,7 +64,8 @@ struct Tree {
     int max_depth = 0;
     int max_passes = 0;
     int passes = 0;
-    int budget_fills = 0;  // portals shown as the fill because the passes were spent
+    int budget_fills = 0;                   // portals shown as the fill because the passes were spent
+    const FrameObjects* objects = nullptr;  // the frame's dynamic objects
 };
 
 // The state of follow's loop along one path: the ray, the colour of the
@@ -183,6 +93,18 @@ struct PathState {
 };
 
 dvec3 follow(const Scene& scene, Ray ray, Tree& tree, TraceHit* main);
+
+// The surface `n` (not a portal) hit at `point` ends the path: its shaded
+// colour, times a volume's tint where it is a volume's target room's
+// (docs/tracer.md, "Volume portals"), with its room's id.
+dvec3 surface_color(const Scene& scene, const Nearest& n, const dvec3& point, PathState& path) {
+    const int now = path.ray.room;
+    const int room = hit_room(n, now);
+    const dvec3 normal = world_normal(n);
+    path.end_main(1 + room, room, point, normal);
+    const dvec3 color = shading::shade(base_color(scene, now, n, point), normal, point, n.checker);
+    return n.source.tint ? color * *n.source.tint : color;
+}
 
 // Step 5 at window P, hit at `point`: the reflected branch is followed by a
 // recursive call where the through branch goes on too; where the through
@@ -241,17 +163,13 @@ dvec3 follow(const Scene& scene, Ray ray, Tree& tree, TraceHit* main) {
     Nearest n;
     for (;;) {
         const Ray& now = path.ray;
-        nearest_in_room(scene, now.room, now.origin, now.dir, now.clip, n);
+        nearest_in_room(scene, tree.objects, now.room, now.origin, now.dir, now.clip, n);
         if (!n.found) {
             path.end_main(kIdNothing, -1, dvec3(0.0), dvec3(0.0));
             return path.done + path.factor * shading::kBackgroundColor;
         }
         const dvec3 point = now.origin + n.t * now.dir;
-        if (n.portal < 0) {
-            path.end_main(1 + now.room, now.room, point, n.normal);
-            return path.done +
-                   path.factor * shading::shade(base_color(scene, now.room, n, point), n.normal, point, n.checker);
-        }
+        if (n.portal < 0) return path.done + path.factor * surface_color(scene, n, point, path);
         // Step 3, for every kind; then the tree's budget, counted as a
         // budget fill only where the depth allows more.
         const bool deep = now.portals_passed >= tree.max_depth;
@@ -283,17 +201,23 @@ dvec3 follow(const Scene& scene, Ray ray, Tree& tree, TraceHit* main) {
 
 }  // namespace
 
-TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, int room, const RayLimits& limits) {
+TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, int room, const RayLimits& limits,
+                   const FrameObjects& objects) {
     TraceHit hit;
     Ray ray;
     ray.origin = origin;
     ray.dir = dir;
     ray.room = room;
     Tree tree{limits.max_depth, limits.max_passes};
+    tree.objects = objects.placed.empty() ? nullptr : &objects;
     hit.color = follow(scene, ray, tree, &hit);
     hit.passes = tree.passes;
     hit.budget_fills = tree.budget_fills;
     return hit;
+}
+
+TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, int room, const RayLimits& limits) {
+    return trace_ray(scene, origin, dir, room, limits, scene.rest);
 }
 
 TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, int room, int max_depth) {

@@ -55,7 +55,12 @@ struct RayLimits {
 };
 
 // Follows the ray from `origin` (an eye in room `room`) along `dir` (any
-// length but not zero) within `limits`. `room` must be a valid room index.
+// length but not zero) within `limits`, among the frame's dynamic objects
+// (place_frame_objects: moving props at the frame's time, hands, props
+// crossing doors). `room` must be a valid room index.
+TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, int room, const RayLimits& limits,
+                   const FrameObjects& objects);
+// The same among the objects at time 0 without hands (Scene::rest).
 TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, int room, const RayLimits& limits);
 // The same with the default budget of passes.
 TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, int room, int max_depth);

@@ -40,9 +40,19 @@ PixelRay eye_point_ray(const TraceDesc& desc, const math::Frustum& frustum, cons
     return {eye.position, glm::normalize(eye.rotation * dir_eye)};
 }
 
+// What every ray of a frame shares: the scene, the view, and the view's
+// dynamic objects, placed once (place_frame_objects).
+struct FrameRays {
+    const Scene& scene;
+    const TraceDesc& desc;
+    FrameObjects objects;
+};
+
 // One ray tree of a frame, its budget's cuts added to `stats`.
-TraceHit trace_counted(const Scene& scene, const TraceDesc& desc, const PixelRay& ray, TraceStats& stats) {
-    const TraceHit hit = trace_ray(scene, ray.origin, ray.dir, desc.room, {desc.max_depth, desc.max_portal_passes});
+TraceHit trace_counted(const FrameRays& frame, const PixelRay& ray, TraceStats& stats) {
+    const TraceDesc& desc = frame.desc;
+    const TraceHit hit =
+        trace_ray(frame.scene, ray.origin, ray.dir, desc.room, {desc.max_depth, desc.max_portal_passes}, frame.objects);
     stats.budget_rays += hit.budget_fills > 0 ? 1 : 0;
     stats.budget_fills += hit.budget_fills;
     return hit;
@@ -50,9 +60,10 @@ TraceHit trace_counted(const Scene& scene, const TraceDesc& desc, const PixelRay
 
 // One pixel's id and bytes: the centre ray's id; with several samples, the
 // mean of the samples' bytes rounded to nearest (half up), like a resolve.
-void trace_pixel(const Scene& scene, const TraceDesc& desc, const math::Frustum& frustum, const math::Eye& eye, int i,
-                 int j, std::uint8_t* id, std::uint8_t* rgb, TraceStats& stats) {
-    const TraceHit hit = trace_counted(scene, desc, eye_pixel_ray(desc, frustum, eye, i, j), stats);
+void trace_pixel(const FrameRays& frame, const math::Frustum& frustum, const math::Eye& eye, int i, int j,
+                 std::uint8_t* id, std::uint8_t* rgb, TraceStats& stats) {
+    const TraceDesc& desc = frame.desc;
+    const TraceHit hit = trace_counted(frame, eye_pixel_ray(desc, frustum, eye, i, j), stats);
     *id = static_cast<std::uint8_t>(hit.id);
     if (desc.samples <= 1) {
         for (int c = 0; c < 3; ++c) rgb[c] = to_byte(hit.color[c]);
@@ -61,7 +72,7 @@ void trace_pixel(const Scene& scene, const TraceDesc& desc, const math::Frustum&
     int sum[3] = {0, 0, 0};
     for (const SamplePosition& s : sample_pattern(desc.samples)) {
         const PixelRay ray = eye_point_ray(desc, frustum, eye, i + s.x, j + 1.0 - s.y);
-        const TraceHit sample = trace_counted(scene, desc, ray, stats);
+        const TraceHit sample = trace_counted(frame, ray, stats);
         for (int c = 0; c < 3; ++c) sum[c] += to_byte(sample.color[c]);
     }
     for (int c = 0; c < 3; ++c) rgb[c] = static_cast<std::uint8_t>((2 * sum[c] + desc.samples) / (2 * desc.samples));
@@ -97,11 +108,12 @@ Result<image::Image> trace_frame(const Scene& scene, const TraceDesc& desc, Trac
 
     const std::array<math::Eye, 2> eyes = math::eyes_of(desc.head, desc.ipd);
     const math::Frustum frustum = frustum_of(desc);
+    const FrameRays frame{scene, desc, place_frame_objects(scene, desc)};
     auto trace_row = [&](int j, TraceStats& counted) {
         for (int eye = 0; eye < 2; ++eye) {
             for (int i = 0; i < desc.eye_width; ++i) {
                 const size_t at = static_cast<size_t>(j) * image.width + eye * desc.eye_width + i;
-                trace_pixel(scene, desc, frustum, eyes[eye], i, j, &image.ids[at], &image.rgb[3 * at], counted);
+                trace_pixel(frame, frustum, eyes[eye], i, j, &image.ids[at], &image.rgb[3 * at], counted);
             }
         }
     };

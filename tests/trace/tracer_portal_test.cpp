@@ -164,8 +164,11 @@ TEST(TracerPortal, TargetGeometryBehindThePlaneIsClippedAndInFrontIsSeen) {
     // a red box behind b's plane (z in [0.5, 1]) and a blue one in front of it.
     l.rooms[1].props.push_back(layout::BoxProp{{0.8, 1.3, 0.5}, {1.2, 1.7, 1.0}, kRed, {}, {}});
     l.rooms[1].props.push_back(layout::BoxProp{{0.8, 1.3, -1.0}, {1.2, 1.7, -0.5}, kBlue, {}, {}});
-    // A box straddling the plane on another line of sight (x = 0.7): its
-    // entry face lies behind the plane, the rest are back faces.
+    // A box straddling the plane on another line of sight (x = 0.7). It meets
+    // b_door's rectangle, so it is a crossing object (layout-format.md,
+    // "Moving props, hands and crossing objects"): b shows its part in front
+    // of b (z <= 0), and a shows the part behind b as its image, moved by
+    // M_ba = (-1, 0, -1): x in [-0.4, -0.25], z in (-1, -0.7].
     l.rooms[1].props.push_back(layout::BoxProp{{0.6, 1.3, -0.3}, {0.75, 1.7, 0.3}, kRed, {}, {}});
     const Scene scene = prepare_scene(l).value();
 
@@ -175,9 +178,17 @@ TEST(TracerPortal, TargetGeometryBehindThePlaneIsClippedAndInFrontIsSeen) {
     EXPECT_NEAR(hit.color.z, shade_by_hand(kBlue, {0, 0, 1}, false).z, 1e-12);
     EXPECT_EQ(hit.color.x, 0.0);
 
-    const TraceHit cut = trace_ray(scene, {-0.3, 1.5, 1}, {0, 0, -1}, 0, 8);
-    EXPECT_EQ(cut.id, 2);
-    expect_point(cut.point, {0.7, 1.5, -3});  // B's -z wall, through the cut-open box
+    // In a, before the door, the image's front face z = -0.7.
+    const TraceHit image = trace_ray(scene, {-0.3, 1.5, 1}, {0, 0, -1}, 0, 8);
+    EXPECT_EQ(image.id, 1);
+    expect_point(image.point, {-0.3, 1.5, -0.7});
+    // Its own part in b (z in [-0.3, 0]), seen through the door over the
+    // image: from (-0.3, 2.25, 1) along (0, -1, -4) the ray is at y = 1.825
+    // at z = -0.7 and 1.75 at the door (z = -1); from the virtual eye
+    // (0.7, 2.25, 2) it meets the top y = 1.7 at t = 0.55: (0.7, 1.7, -0.2).
+    const TraceHit own = trace_ray(scene, {-0.3, 2.25, 1}, {0, -1, -4}, 0, 8);
+    EXPECT_EQ(own.id, 2);
+    expect_point(own.point, {0.7, 1.7, -0.2});
 
     // The same red box seen directly by an eye standing in B is not clipped.
     const TraceHit direct = trace_ray(scene, {1, 1.5, 2}, {0, 0, -1}, 1, 8);

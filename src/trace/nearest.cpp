@@ -1,0 +1,97 @@
+// The nearest surface of a cell along a ray (nearest.hpp): the room's own
+// surfaces, the frame's dynamic objects placed in it, and the target rooms
+// of its volume portals inside them.
+#include "trace/nearest.hpp"
+
+#include <span>
+
+namespace impossible::trace {
+
+namespace {
+
+// Runs `search`; where it kept a nearer hit (an offer is kept only when
+// strictly nearer, so t changes), marks the hit as `source`'s.
+template <class Search>
+void search_from(Nearest& nearest, const SurfaceSource& source, Search&& search) {
+    const bool found = nearest.found;
+    const double t = nearest.t;
+    search();
+    if (nearest.found != found || nearest.t != t) nearest.source = source;
+}
+
+// The objects placed in a cell, each in its own coordinates (the ray moved
+// there by from_cell; rigid, so t is the same) and filtered in the cell's:
+// `region`'s volumes, the object's cuts and the clip plane. They come after
+// the cell's static surfaces and lose a tie to them; `shown_in` is the room
+// whose id they take, `tint` a volume's.
+void nearest_placed(const Scene& scene, std::span<const PlacedObject> placed, const RayFilter& region, int shown_in,
+                    const dvec3* tint, const dvec3& origin, const dvec3& dir, const ClipPlane& clip, Nearest& nearest) {
+    for (const PlacedObject& p : placed) {
+        const SceneObject& object = p.prop >= 0 ? scene.props[p.prop] : scene.hand;
+        RayFilter filter = region;
+        filter.placed = &p;
+        ClipPlane own = clip;
+        own.filter = &filter;
+        const dvec3 o = dvec3(p.from_cell * dvec4(origin, 1.0));
+        const dvec3 d = dmat3(p.from_cell) * dir;
+        search_from(nearest, SurfaceSource{shown_in, &object, &p.rotation, tint}, [&] {
+            nearest_prop(object.boxes, object.box_bvh, object.triangles, object.materials, object.bvh, o, d, own,
+                         nearest);
+        });
+    }
+}
+
+// The target room of each volume of `room`, inside the volume only: its
+// faces and props, and the objects placed in it, taking its id and the
+// volume's tint. It has no portals (layout-format.md, "Volume portals").
+void nearest_through_volumes(const Scene& scene, const FrameObjects* objects, const SceneRoom& room,
+                             const dvec3& origin, const dvec3& dir, const ClipPlane& clip, Nearest& nearest) {
+    for (const SceneVolume& v : room.volumes) {
+        RayFilter inside;
+        inside.inside = &v;
+        ClipPlane within = clip;
+        within.filter = &inside;
+        search_from(nearest, SurfaceSource{v.target, nullptr, nullptr, &v.tint},
+                    [&] { nearest_static(scene, scene.rooms[v.target], origin, dir, within, nearest); });
+        if (objects)
+            nearest_placed(scene, objects->in_room(v.target), inside, v.target, &v.tint, origin, dir, clip, nearest);
+    }
+}
+
+}  // namespace
+
+void nearest_in_mixed_room(const Scene& scene, const FrameObjects* objects, int room_index, const dvec3& origin,
+                           const dvec3& dir, const ClipPlane& clip, Nearest& nearest) {
+    const SceneRoom& room = scene.rooms[room_index];
+    nearest.found = false;
+    nearest.source = SurfaceSource{};
+    const std::span<const PlacedObject> placed =
+        objects ? objects->in_room(room_index) : std::span<const PlacedObject>{};
+    if (room.volumes.empty()) {
+        // Exactly as in a room without objects, then the objects.
+        nearest_static(scene, room, origin, dir, clip, nearest);
+        nearest_placed(scene, placed, RayFilter{}, room_index, nullptr, origin, dir, clip, nearest);
+        return;
+    }
+    // The room's own surfaces count only outside every volume.
+    RayFilter outside;
+    outside.outside = std::span<const SceneVolume>(room.volumes);
+    ClipPlane hidden = clip;
+    hidden.filter = &outside;
+    nearest_static(scene, room, origin, dir, hidden, nearest);
+    nearest_placed(scene, placed, outside, room_index, nullptr, origin, dir, clip, nearest);
+    nearest_through_volumes(scene, objects, room, origin, dir, clip, nearest);
+}
+
+dvec3 read_base_color(const Scene& scene, int ray_room, const Nearest& n, const dvec3& point) {
+    if (n.textured_face) return room_face_color(*n.textured_face, point);
+    {
+        const SceneObject* object = n.source.object;
+        const SceneRoom& room = scene.rooms[hit_room(n, ray_room)];
+        const std::vector<PropTriangle>& triangles = object ? object->triangles : room.triangles;
+        const std::vector<PropMaterial>& materials = object ? object->materials : room.materials;
+        return dvec3(triangle_color(triangles[n.triangle], materials, n.barycentric));
+    }
+}
+
+}  // namespace impossible::trace

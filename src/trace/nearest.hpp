@@ -1,0 +1,156 @@
+// Step 1 of "What a pixel shows" (layout-format.md) for the tracer: the
+// nearest front-facing surface along a ray in one cell, among the room's own
+// surfaces, the dynamic objects placed in it this frame (props that move or
+// meet a door, hands; walk/objects.hpp) and, through its volume portals, the
+// surfaces of their target rooms inside them. Internal to src/trace
+// (tracer.cpp); see docs/tracer.md, "Crossing objects" and "Volume portals".
+#pragma once
+
+#include <limits>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "trace/bvh.hpp"
+#include "trace/intersect.hpp"
+#include "trace/trace_scene.hpp"
+
+namespace impossible::trace {
+
+// Whose surface a hit is: a room's own, or a dynamic object's (its surfaces
+// in its own coordinates, its rotation into the cell's), seen in the ray's
+// room or, through a volume, in the volume's target room.
+struct SurfaceSource {
+    int room = -1;                        // the room whose surface it is (the id's); -1: the ray's
+    const SceneObject* object = nullptr;  // a placed object's surfaces; none: the room's
+    const dmat3* rotation = nullptr;      // the object's own normals → the cell's; none: identity
+    const dvec3* tint = nullptr;          // a volume's tint; none: 1
+};
+
+// The nearest front-facing surface of one cell along a ray: what it is and
+// how to shade it.
+struct Nearest {
+    bool found = false;
+    double t = 0.0;
+    dvec3 normal{0.0};  // in the surface's own coordinates (see world_normal)
+    int portal = -1;    // ≥ 0: a face of this portal's box
+    dvec3 base{0.0};    // otherwise: the surface's base colour and checker side
+    double checker = 0.0;
+    // Where the base colour is read at the hit point instead (base_color):
+    const RoomFace* textured_face = nullptr;  // a room face with a texture
+    int triangle = -1;                        // a glTF triangle (its index in its list)
+    glm::dvec2 barycentric{0.0};              // … and where it was hit
+    // Whose surface; room -1: the ray's own room's (every hit in a cell
+    // without volumes and dynamic objects). Set after a search, not by offer.
+    SurfaceSource source;
+
+    // Whether the hit is nearer than the one kept, and so now kept.
+    bool offer(const std::optional<SurfaceHit>& hit, int portal_index, const dvec3& color, double side) {
+        if (!hit || (found && hit->t >= t)) return false;
+        found = true;
+        t = hit->t;
+        normal = hit->normal;
+        portal = portal_index;
+        base = color;
+        checker = side;
+        textured_face = nullptr;
+        triangle = -1;
+        return true;
+    }
+};
+
+// Inline, so that the search of a room without volumes or objects, every
+// ray's in most layouts, is compiled into the tracer's loop as it was
+// before they existed.
+inline constexpr double kNoLimit = std::numeric_limits<double>::infinity();
+
+inline double limit_of(const Nearest& n) { return n.found ? n.t : kNoLimit; }
+
+// Boxes and triangles (a room's props or an object's), after whatever was
+// offered before, which wins a tie: the first box of those at the smallest t,
+// then the first triangle (bvh.hpp).
+inline void nearest_prop(const std::vector<PropBox>& boxes, const Bvh& box_bvh,
+                         const std::vector<PropTriangle>& triangles, std::span<const PropMaterial> materials,
+                         const Bvh& bvh, const dvec3& origin, const dvec3& dir, const ClipPlane& clip,
+                         Nearest& nearest) {
+    if (!boxes.empty()) {
+        const double limit = limit_of(nearest);
+        const BoxHit box = box_bvh.nodes.empty() ? nearest_box_scan(boxes, origin, dir, clip, limit)
+                                                 : nearest_box(box_bvh, boxes, origin, dir, clip, limit);
+        if (box.hit) nearest.offer(box.hit, -1, boxes[box.index].color, 0.0);
+    }
+    if (!triangles.empty()) {
+        const double limit = limit_of(nearest);
+        const TriangleHit tri = bvh.nodes.empty()
+                                    ? nearest_triangle_scan(triangles, materials, origin, dir, clip, limit)
+                                    : nearest_triangle(bvh, triangles, materials, origin, dir, clip, limit);
+        if (tri.hit && nearest.offer(tri.hit, -1, triangles[tri.index].color, 0.0)) {
+            nearest.triangle = tri.index;
+            nearest.barycentric = tri.hit->barycentric;
+        }
+    }
+}
+
+// A room's static surfaces: the faces first, the first in order at the
+// smallest t (a face no nearer than the nearest so far would lose to it),
+// then the props, then the portals' boxes, each losing a tie to those before.
+inline void nearest_static(const Scene& scene, const SceneRoom& room, const dvec3& origin, const dvec3& dir,
+                           const ClipPlane& clip, Nearest& nearest) {
+    int face = -1;
+    FaceHit face_hit{limit_of(nearest), -1};
+    for (int f = 0; f < layout::kFaceCount; ++f) {
+        if (const std::optional<FaceHit> hit = hit_room_face(room.faces[f], scene, origin, dir, clip, face_hit.t)) {
+            face = f;
+            face_hit = *hit;
+        }
+    }
+    if (face >= 0) {
+        const RoomFace& f = room.faces[face];
+        nearest.offer(SurfaceHit{face_hit.t, axis_normal(f.rect.axis, f.rect.sign)}, face_hit.portal, f.color,
+                      room.checker);
+        if (f.texture) nearest.textured_face = &f;
+    }
+    nearest_prop(room.boxes, room.box_bvh, room.triangles, room.materials, room.bvh, origin, dir, clip, nearest);
+    for (int p : room.box_portals)
+        nearest.offer(hit_portal_box(scene.portals[p], origin, dir, clip), p, dvec3(0.0), 0.0);
+}
+
+// nearest_in_room in a room with volumes or placed objects (nearest.cpp).
+void nearest_in_mixed_room(const Scene& scene, const FrameObjects* objects, int room_index, const dvec3& origin,
+                           const dvec3& dir, const ClipPlane& clip, Nearest& nearest);
+
+// The frame's dynamic objects (FrameObjects), or null for none.
+// Finds the nearest surface into `nearest`, reused from ray to ray: each
+// field a hit sets is read only where that hit was kept (offer), so only
+// `found` is reset.
+inline void nearest_in_room(const Scene& scene, const FrameObjects* objects, int room_index, const dvec3& origin,
+                            const dvec3& dir, const ClipPlane& clip, Nearest& nearest) {
+    const SceneRoom& room = scene.rooms[room_index];
+    if (room.volumes.empty() && (!objects || objects->in_room(room_index).empty())) {
+        nearest.found = false;
+        nearest.source = SurfaceSource{};
+        nearest_static(scene, room, origin, dir, clip, nearest);
+        return;
+    }
+    nearest_in_mixed_room(scene, objects, room_index, origin, dir, clip, nearest);
+}
+
+// The room a kept hit belongs to (its id's room): `ray_room` for the ray's
+// own room's surfaces.
+inline int hit_room(const Nearest& n, int ray_room) { return n.source.room >= 0 ? n.source.room : ray_room; }
+
+// The kept hit's normal in the cell's coordinates.
+inline dvec3 world_normal(const Nearest& n) { return n.source.rotation ? *n.source.rotation * n.normal : n.normal; }
+
+// base_color of a textured face or a triangle (nearest.cpp).
+dvec3 read_base_color(const Scene& scene, int ray_room, const Nearest& n, const dvec3& point);
+
+// The base colour of the surface `n` (not a portal) at its hit point, in the
+// cell's coordinates: a textured face's or a triangle's read there
+// (docs/tracer.md, "Materials and textures"), any other's as offered.
+inline dvec3 base_color(const Scene& scene, int ray_room, const Nearest& n, const dvec3& point) {
+    if (!n.textured_face && n.triangle < 0) return n.base;
+    return read_base_color(scene, ray_room, n, point);
+}
+
+}  // namespace impossible::trace
