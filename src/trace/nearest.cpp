@@ -34,10 +34,8 @@ void nearest_placed(const Scene& scene, std::span<const PlacedObject> placed, co
         own.filter = &filter;
         const dvec3 o = dvec3(p.from_cell * dvec4(origin, 1.0));
         const dvec3 d = dmat3(p.from_cell) * dir;
-        search_from(nearest, SurfaceSource{shown_in, &object, &p.rotation, tint}, [&] {
-            nearest_prop(object.boxes, object.box_bvh, object.triangles, object.materials, object.bvh, o, d, own,
-                         nearest);
-        });
+        search_from(nearest, SurfaceSource{shown_in, &object, &p.rotation, tint},
+                    [&] { nearest_prop(object, o, d, own, nearest); });
     }
 }
 

@@ -69,22 +69,20 @@ inline double limit_of(const Nearest& n) { return n.found ? n.t : kNoLimit; }
 // Boxes and triangles (a room's props or an object's), after whatever was
 // offered before, which wins a tie: the first box of those at the smallest t,
 // then the first triangle (bvh.hpp).
-inline void nearest_prop(const std::vector<PropBox>& boxes, const Bvh& box_bvh,
-                         const std::vector<PropTriangle>& triangles, std::span<const PropMaterial> materials,
-                         const Bvh& bvh, const dvec3& origin, const dvec3& dir, const ClipPlane& clip,
+inline void nearest_prop(const PropSurfaces& s, const dvec3& origin, const dvec3& dir, const ClipPlane& clip,
                          Nearest& nearest) {
-    if (!boxes.empty()) {
+    if (!s.boxes.empty()) {
         const double limit = limit_of(nearest);
-        const BoxHit box = box_bvh.nodes.empty() ? nearest_box_scan(boxes, origin, dir, clip, limit)
-                                                 : nearest_box(box_bvh, boxes, origin, dir, clip, limit);
-        if (box.hit) nearest.offer(box.hit, -1, boxes[box.index].color, 0.0);
+        const BoxHit box = s.box_bvh.nodes.empty() ? nearest_box_scan(s.boxes, origin, dir, clip, limit)
+                                                   : nearest_box(s.box_bvh, s.boxes, origin, dir, clip, limit);
+        if (box.hit) nearest.offer(box.hit, -1, s.boxes[box.index].color, 0.0);
     }
-    if (!triangles.empty()) {
+    if (!s.triangles.empty()) {
         const double limit = limit_of(nearest);
-        const TriangleHit tri = bvh.nodes.empty()
-                                    ? nearest_triangle_scan(triangles, materials, origin, dir, clip, limit)
-                                    : nearest_triangle(bvh, triangles, materials, origin, dir, clip, limit);
-        if (tri.hit && nearest.offer(tri.hit, -1, triangles[tri.index].color, 0.0)) {
+        const TriangleHit tri = s.bvh.nodes.empty()
+                                    ? nearest_triangle_scan(s.triangles, s.materials, origin, dir, clip, limit)
+                                    : nearest_triangle(s.bvh, s.triangles, s.materials, origin, dir, clip, limit);
+        if (tri.hit && nearest.offer(tri.hit, -1, s.triangles[tri.index].color, 0.0)) {
             nearest.triangle = tri.index;
             nearest.barycentric = tri.hit->barycentric;
         }
@@ -110,7 +108,7 @@ inline void nearest_static(const Scene& scene, const SceneRoom& room, const dvec
                       room.checker);
         if (f.texture) nearest.textured_face = &f;
     }
-    nearest_prop(room.boxes, room.box_bvh, room.triangles, room.materials, room.bvh, origin, dir, clip, nearest);
+    nearest_prop(room, origin, dir, clip, nearest);
     for (int p : room.box_portals)
         nearest.offer(hit_portal_box(scene.portals[p], origin, dir, clip), p, dvec3(0.0), 0.0);
 }

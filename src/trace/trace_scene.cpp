@@ -71,8 +71,7 @@ namespace {
 
 // A prop's surfaces added to a room's or an object's (SceneRoom,
 // SceneObject), in the layout's coordinates as written.
-template <class Surfaces>
-Result<void> add_prop(Surfaces& room, const layout::Prop& prop) {
+Result<void> add_prop(PropSurfaces& room, const layout::Prop& prop) {
     if (const auto* box = std::get_if<layout::BoxProp>(&prop)) {
         room.boxes.push_back({box->min, box->max, box->color});
         return {};
@@ -149,8 +148,7 @@ SceneRoom scene_room(const layout::Room& room) {
     return r;
 }
 
-template <class Surfaces>
-void build_trees(Surfaces& s) {
+void build_trees(PropSurfaces& s) {
     s.bvh = build_bvh(s.triangles);
     if (s.boxes.size() > static_cast<std::size_t>(kBvhLeafSize)) s.box_bvh = build_box_bvh(s.boxes);
 }

@@ -134,10 +134,9 @@ struct SceneVolume {
     bool contains(const dvec3& p) const;
 };
 
-struct SceneRoom {
-    std::array<RoomFace, layout::kFaceCount> faces;  // in layout::Face order
-    // Its static props only: a dynamic one (walk/objects.hpp) is a
-    // SceneObject, placed anew each frame.
+// Prop surfaces: a room's static props, or a dynamic object's surfaces in
+// its own coordinates (SceneObject).
+struct PropSurfaces {
     std::vector<PropBox> boxes;
     std::vector<PropTriangle> triangles;
     std::vector<PropMaterial> materials;  // those the triangles name, by PropTriangle::material
@@ -146,7 +145,13 @@ struct SceneRoom {
     // by one; the tests clear them to compare the two.
     Bvh bvh;
     Bvh box_bvh;
-    std::vector<int> portals;  // indices into Scene::portals
+};
+
+// A room: its faces, and as PropSurfaces its static props only (a dynamic
+// one, walk/objects.hpp, is a SceneObject, placed anew each frame).
+struct SceneRoom : PropSurfaces {
+    std::array<RoomFace, layout::kFaceCount> faces;  // in layout::Face order
+    std::vector<int> portals;                        // indices into Scene::portals
     // Those of `portals` with more to hit than a hole's front, which the
     // faces meet (hit_room_face): free-standing portals and doors, whose
     // inner faces an eye in the box's column sees (hit_portal_box).
@@ -157,14 +162,8 @@ struct SceneRoom {
 
 // A dynamic object's surfaces (a prop that moves or meets a door, or the
 // hand; walk/objects.hpp) in its own coordinates: a prop's are the layout's
-// as written, the hand's its frame (HandShape). Materials as SceneRoom's.
-struct SceneObject {
-    std::vector<PropBox> boxes;
-    std::vector<PropTriangle> triangles;
-    std::vector<PropMaterial> materials;
-    Bvh bvh;
-    Bvh box_bvh;
-};
+// as written, the hand's its frame (HandShape).
+struct SceneObject : PropSurfaces {};
 
 // A door's cut of a placed object (walk::ObjectCut), in the cell's
 // coordinates: an image keeps d > tolerance, its own room d ≥ -tolerance,
