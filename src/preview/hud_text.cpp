@@ -19,7 +19,7 @@ std::vector<std::string> status_lines(const PreviewOptions& o, const HudFacts& f
     return {
         f.title + "   view: " + view_name(o.view),
         "frame " + fixed(f.median_ms, 1) + " ms (median of " + to_string(f.timed_frames) + ")   eye " +
-            to_string(f.eye_width) + "x" + to_string(f.eye_height),
+            to_string(f.eye_width) + "x" + to_string(f.eye_height) + "   time " + fixed(f.time, 1) + " s",
         "room " + f.room + "   portal passes " + to_string(f.portal_passes_drawn) + " drawn, " +
             to_string(f.portal_passes_culled) + " culled",
         "recursion depth " + to_string(s.max_depth) + " (reached " + to_string(f.max_level_reached) + ")   IPD " +
@@ -27,9 +27,11 @@ std::vector<std::string> status_lines(const PreviewOptions& o, const HudFacts& f
         std::string("clip ") + (s.clip == render::ClipMode::ClipDistance ? "clip-distance" : "oblique") +
             "   culling " + (s.cull_portals ? "on" : "off"),
         "physical head " + fixed(h.x, 2) + " " + fixed(h.y, 2) + " " + fixed(h.z, 2) + "  yaw " +
-            fixed(f.physical.yaw_deg, 0) + "  pitch " + fixed(f.physical.pitch_deg, 0),
+            fixed(f.physical.yaw_deg, 0) + "  pitch " + fixed(f.physical.pitch_deg, 0) +
+            (o.hand ? "   hand " + fixed(o.hand_distance, 2) + " m" : ""),
         f.cursor_captured ? "Esc releases the mouse" : "click to look around, Esc quits",
-        "WASD/arrows Q/E move  H hud  M map  V view  [ ] depth  - = IPD  C clip  X cull  P shot  R reset",
+        "WASD/arrows Q/E move  H hud  M map  V view  [ ] depth  - = IPD  C clip  X cull  P shot  R reset"
+        "  G , . hand",
     };
 }
 

@@ -23,6 +23,7 @@ struct HudFacts {
     int portal_passes_drawn = 0, portal_passes_culled = 0, max_level_reached = 0;
     math::HeadPose physical;
     bool cursor_captured = false;
+    double time = 0.0;  // seconds, the frame's time for moving props
 };
 
 inline constexpr std::size_t kMaxReloadErrors = 8;

@@ -146,6 +146,7 @@ HudFacts hud_facts(const PreviewSession& s, const render::FrameDesc& desc) {
     f.max_level_reached = s.stats.max_level_reached;
     f.physical = s.physical;
     f.cursor_captured = cursor_captured(*s.window);
+    f.time = desc.time;
     return f;
 }
 

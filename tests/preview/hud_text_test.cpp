@@ -21,15 +21,20 @@ TEST(PreviewHudText, ReportsTheFrameAndTheSettings) {
     f.portal_passes_culled = 1;
     f.max_level_reached = 2;
     f.physical = {{1.0, 1.6, -0.5}, 12.4, -3.0, 0.0};
+    f.time = 2.46;
     const HudText hud = hud_text(o, f, {});
     ASSERT_EQ(hud.lines.size(), 8u);
     EXPECT_EQ(hud.lines[0], "impossible preview - t   view: parallel");
-    EXPECT_EQ(hud.lines[1], "frame 16.7 ms (median of 60)   eye 320x240");
+    EXPECT_EQ(hud.lines[1], "frame 16.7 ms (median of 60)   eye 320x240   time 2.5 s");
     EXPECT_EQ(hud.lines[2], "room hall   portal passes 3 drawn, 1 culled");
     EXPECT_EQ(hud.lines[3], "recursion depth 8 (reached 2)   IPD 70 mm");
     EXPECT_EQ(hud.lines[4], "clip oblique   culling on");
     EXPECT_EQ(hud.lines[5], "physical head 1.00 1.60 -0.50  yaw 12  pitch -3");
     EXPECT_EQ(hud.lines[6], "click to look around, Esc quits");
+    EXPECT_NE(hud.lines[7].find("G , . hand"), std::string::npos);
+    // G's hand: how far it is held out.
+    o.hand = true;
+    EXPECT_EQ(hud_text(o, f, {}).lines[5], "physical head 1.00 1.60 -0.50  yaw 12  pitch -3   hand 0.40 m");
     EXPECT_TRUE(hud.errors.empty());
     o.hud = false;
     EXPECT_TRUE(hud_text(o, f, {}).lines.empty());
