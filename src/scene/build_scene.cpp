@@ -89,7 +89,9 @@ void append_cell(Scene& scene, MeshWriter& out, const layout::Layout& layout, st
         if (i >= dynamic.size() || !dynamic[i]) append_prop(scene, out, room.props[i], objects);
     scene.cells.push_back(out.range_since(first));
     scene.batches.push_back(finish_cell(scene, objects));
-    objects.occluders = occluders_of(room, dynamic);
+    // A prop inside a volume is hidden there: a room with volumes has no
+    // occluders.
+    if (scene.volumes[r].empty()) objects.occluders = occluders_of(room, dynamic);
     scene.objects.push_back(std::move(objects));
 }
 
@@ -105,6 +107,8 @@ Scene build_scene(const layout::Layout& layout) {
     scene.links = links::link_portals(layout);
     scene.object_set = walk::build_object_set(layout, scene.links);
     scene.object_set.dynamic.resize(layout.rooms.size());
+    scene.volumes.resize(layout.rooms.size());
+    for (const layout::Volume& v : layout.volumes) scene.volumes[static_cast<std::size_t>(v.room)].push_back(v);
     scene.cells.reserve(layout.rooms.size());
     scene.batches.reserve(layout.rooms.size());
     scene.origins.reserve(layout.rooms.size());
@@ -122,8 +126,6 @@ Scene build_scene(const layout::Layout& layout) {
         scene.portal_info.push_back({lp.rect, lp.room, lp.target, lp.kind, lp.tint, lp.reflectance});
     }
     append_object_meshes(scene, out, layout);
-    scene.volumes.resize(layout.rooms.size());
-    for (const layout::Volume& v : layout.volumes) scene.volumes[static_cast<std::size_t>(v.room)].push_back(v);
     return scene;
 }
 
