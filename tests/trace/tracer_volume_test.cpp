@@ -226,6 +226,34 @@ TEST(TracerVolume, SeenInAMirror) {
                glass * (shade_by_hand(face_color(l.rooms[1], layout::Face::NegZ), {0, 0, 1}, false) * kScanTint));
 }
 
+// The target's props may move: past's blue box x in [1.5, 1.9], y in
+// [1.3, 1.7], z in [-0.2, 0.2] slides by (-1.7, 0, 0) over 2 s into the
+// floating volume x in [-0.5, 0.5], y in [1, 2], z in [-0.5, 0.5].
+TEST(TracerVolume, TheTargetsMovingPropShowsOnlyInside) {
+    layout::Layout l = volume_rooms();
+    const dvec3 tint{0.8, 0.9, 1.0};
+    l.volumes.push_back(volume_box(0, {0, 1.5, 0}, {1, 1, 1}, 1, tint));
+    layout::BoxProp box{{1.5, 1.3, -0.2}, {1.9, 1.7, 0.2}, kBlue, "drifter", {}};
+    box.motion.keys = {{0.0, {0, 0, 0}}, {2.0, {-1.7, 0, 0}}};
+    l.rooms[1].props.push_back(box);
+    const Scene scene = prepare_scene(l).value();
+    auto at = [&](double time) {
+        math::View view;
+        view.time = time;
+        return place_frame_objects(scene, view);
+    };
+    // t = 0: outside the volume, so not seen; inside it past has nothing.
+    const TraceHit outside = trace_ray(scene, {1.7, 1.5, 2}, {0, 0, -1}, 0, kVolumeLimits, at(0.0));
+    EXPECT_EQ(outside.id, 1);
+    expect_point(outside.point, {1.7, 1.5, -3});
+    EXPECT_EQ(trace_ray(scene, {0, 1.5, 2}, {0, 0, -1}, 0, kVolumeLimits, at(0.0)).id, 1);
+    // t = 2: at x in [-0.2, 0.2], inside: its front z = 0.2, past's id, tinted.
+    const TraceHit inside = trace_ray(scene, {0, 1.5, 2}, {0, 0, -1}, 0, kVolumeLimits, at(2.0));
+    EXPECT_EQ(inside.id, 2);
+    expect_point(inside.point, {0, 1.5, 0.2});
+    expect_rgb(inside.color, shade_by_hand(kBlue, {0, 0, 1}, false) * tint);
+}
+
 TEST(TracerVolume, AVolumeWhoseTargetHasPortalsIsRefused) {
     layout::Layout l = wall_volume();
     l.portals.push_back(make_mirror("mirror", 1, {0, 1.5, 3}, {0, 0, -1}));
