@@ -40,7 +40,9 @@ const char* kCrossingLayout = R"({
     { "id": "hall_east", "room": "hall", "center": [2, 1.1, 0], "normal": [-1, 0, 0], "width": 1.2,
       "height": 2.2, "target": "a_north" },
     { "id": "a_north", "room": "a", "center": [0, 1.1, -2], "normal": [0, 0, 1], "width": 1.2, "height": 2.2,
-      "target": "hall_east" }
+      "target": "hall_east" },
+    { "id": "a_mirror", "room": "a", "kind": "mirror", "center": [2, 1.3, 0.5], "normal": [-1, 0, 0],
+      "width": 2.5, "height": 2.0 }
   ]
 })";
 
@@ -129,6 +131,25 @@ TEST(CrossingRender, HandsThroughADoorMatchTheTracer) {
         expect_agree(img, traced, std::string("hands ") + stereo_name(stereo));
         EXPECT_GT(testing::count_colour_differences(img, bare), 200);  // the hands are seen
     }
+}
+
+TEST(CrossingRender, CrossingObjectsAndHandsInAMirror) {
+    CrossingRig rig(kCrossingLayout);
+    ASSERT_TRUE(rig.renderer);
+    // The crate half through the door, and a hand reaching through it, seen
+    // in the mirror on a's +x wall (the reflected levels wind the other way).
+    render::FrameDesc f = frame_at(rig.layout, "a", {-1.2, 1.6, 0.9}, -70.0, -15.0);
+    f.hands = std::array<math::HeadPose, 2>{math::HeadPose{{-0.6, 1.2, 0.05}, 0.0, 0.0, 0.0},
+                                            math::HeadPose{{-0.3, 1.4, 0.4}, 30.0, 0.0, 0.0}};
+    const image::Image traced = rig.trace(f);
+    for (const render::ClipMode clip : {render::ClipMode::ClipDistance, render::ClipMode::Oblique})
+        for (const render::StereoMode stereo : {render::StereoMode::ClipShift, render::StereoMode::TwoPass}) {
+            f.clip = clip;
+            f.stereo = stereo;
+            expect_agree(
+                rig.render(f), traced,
+                std::string("mirror ") + stereo_name(stereo) + (clip == render::ClipMode::Oblique ? " oblique" : ""));
+        }
 }
 
 TEST(CrossingRender, ManyMovingPropsAreCulledPerInstance) {
