@@ -31,6 +31,14 @@ render window_pair window_pair.json --max-depth 16
 render three_kinds three_kinds.json
 render gallery gallery.json
 render gallery-garden gallery.json --room garden --pose 1.5,1.5,2.6,25,-8,0
+# Crossing objects, moving props, hands and volumes (issue 22).
+render crossing crossing.json --room kitchen --pose=-1.5,1.5,1.8,-35.8,-26,0
+render crossing-behind crossing.json --room kitchen --pose=-0.4,1.5,-1.8,180,-25,0
+render sliding_box-2s sliding_box.json --time 2
+render sliding_box-3s sliding_box.json --time 3
+render hands_door hands_door.json --path "$root/layouts/hands_walk.txt" --frame 112
+render scanner_lab scanner_lab.json
+render scanner_lab-side scanner_lab.json --room lab --pose=-2.1,1.5,0.6,-50,-12,0
 
 # The preview window (HUD, minimap, boundary grid) at the end of a scripted walk
 # into the tunnel, on a private X server. Only the HUD's frame time varies
