@@ -185,28 +185,15 @@ void draw_volume_rooms(const DrawContext& ctx, const LevelView& view, const Scis
 void set_volume_uniforms(const DrawContext& ctx, const LevelView& view, const SceneProgram& program,
                          const math::dmat4& to_cell, int inside) {
     if (program.volume_count < 0) return;
-    const std::vector<VolumeBox>& volumes = ctx.renderer.volumes[static_cast<size_t>(view.cell)];
-    const math::dvec3 origin = ctx.renderer.cell_origins[static_cast<size_t>(view.cell)].origin;
-    const int count = std::min(static_cast<int>(volumes.size()), program.volume_capacity);
-    std::vector<float> centers(3 * static_cast<size_t>(count)), axes(9 * static_cast<size_t>(count));
-    for (int k = 0; k < count; ++k) {
-        const VolumeBox& v = volumes[static_cast<size_t>(k)];
-        for (int c = 0; c < 3; ++c)
-            centers[3 * static_cast<size_t>(k) + c] = static_cast<float>(v.center[c] - origin[c]);
-        for (int a = 0; a < 3; ++a)
-            for (int c = 0; c < 3; ++c)
-                axes[9 * static_cast<size_t>(k) + 3 * a + c] = static_cast<float>(v.axes[a][c] / v.half[a]);
-    }
-    const math::dmat4 to_volume = glm::translate(math::dmat4(1.0), -origin) * to_cell;
-    const glm::mat4 m(to_volume);
+    const auto cell = static_cast<size_t>(view.cell);
+    const std::vector<VolumeBox>& volumes = ctx.renderer.volumes[cell];
+    const math::dvec3 origin = ctx.renderer.cell_origins[cell].origin;
+    const glm::mat4 m(glm::translate(math::dmat4(1.0), -origin) * to_cell);
     const glm::vec3 tint = inside >= 0 ? glm::vec3(volumes[static_cast<size_t>(inside)].tint) : glm::vec3(1.0f);
     const GLuint p = program.program.get();
     glProgramUniformMatrix4fv(p, program.to_volume_space, 1, GL_FALSE, &m[0][0]);
-    glProgramUniform1i(p, program.volume_count, count);
-    if (count > 0) {
-        glProgramUniform3fv(p, program.volume_center, count, centers.data());
-        glProgramUniform3fv(p, program.volume_axis, 3 * count, axes.data());
-    }
+    glProgramUniform1i(p, program.volume_first, ctx.renderer.volume_first[cell]);
+    glProgramUniform1i(p, program.volume_count, static_cast<int>(volumes.size()));
     glProgramUniform1i(p, program.volume_inside, inside);
     glProgramUniform3fv(p, program.volume_tint, 1, &tint[0]);
 }

@@ -46,14 +46,14 @@ Result<void> ensure_program(Programs& programs, StereoMode mode, bool materials)
 // The variants with object cuts or volumes (scene_program.hpp) that a frame
 // of `mode` may draw with.
 Result<void> ensure_variants(RendererData& r, StereoMode mode, bool objects) {
-    const bool volumes = r.volume_capacity > 0;
+    const bool volumes = r.has_volumes;
     for (unsigned flags = 0; flags < kSceneVariantCount; ++flags) {
         if ((flags & (kObjectCuts | kVolumes)) == 0u) continue;
         if (((flags & kObjectCuts) && !objects) || ((flags & kVolumes) && !volumes)) continue;
         if ((flags & kMaterials) && !r.has_materials) continue;
         std::optional<SceneProgram>& slot = r.programs.variants[mode_index(mode)][flags];
         if (slot) continue;
-        Result<SceneProgram> built = build_scene_variant(mode, flags, r.volume_capacity);
+        Result<SceneProgram> built = build_scene_variant(mode, flags);
         if (!built) return built;
         slot = std::move(*built);
     }
@@ -84,8 +84,8 @@ Result<void> prepare_frame(RendererData& r, FrameTargets& targets, const FrameDe
         if (!built) return built;
         programs.portal_texture = std::move(*built);
     }
-    if (r.volume_capacity > 0 && !programs.portal_texture_volumes) {
-        Result<SceneProgram> built = build_portal_texture_program(r.volume_capacity);
+    if (r.has_volumes && !programs.portal_texture_volumes) {
+        Result<SceneProgram> built = build_portal_texture_program(true);
         if (!built) return built;
         programs.portal_texture_volumes = std::move(*built);
     }
@@ -143,6 +143,8 @@ Result<void> draw_frame(RendererParts& parts, const FrameDesc& frame, FrameStats
     FrameScratch& scratch = parts.scratch;
     scratch.begin_frame();
     place_frame_objects(r, frame, scratch.objects);
+    // Bound for the frame: another renderer of the context may bind its own.
+    if (r.has_volumes) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVolumeBinding, r.volume_boxes.get());
     const Target& target = drawing_target(parts.targets, frame);
     clear_target(state, target, 0);
 
@@ -170,6 +172,8 @@ Result<void> draw_frame(RendererParts& parts, const FrameDesc& frame, FrameStats
     return {};
 }
 
+void copy_volumes(RendererData& r, const scene::Scene& scene);
+
 // The scene's dynamic objects and volumes, as the renderer draws them.
 void copy_objects(RendererData& r, const scene::Scene& scene) {
     r.object_set = scene.object_set;
@@ -184,8 +188,17 @@ void copy_objects(RendererData& r, const scene::Scene& scene) {
     for (const scene::ObjectMesh& mesh : scene.object_meshes)
         for (const scene::DrawBatch& b : mesh.batches)
             r.has_materials = r.has_materials || b.texture >= 0 || b.alpha_cutoff >= 0.0f;
+    copy_volumes(r, scene);
+}
+
+// The scene's volumes per room, and all of them in the buffer the VOLUMES
+// shaders read.
+void copy_volumes(RendererData& r, const scene::Scene& scene) {
     r.volumes.assign(scene.cells.size(), {});
+    r.volume_first.assign(scene.cells.size(), 0);
+    std::vector<float> boxes;
     for (size_t c = 0; c < scene.volumes.size(); ++c) {
+        r.volume_first[c] = static_cast<int>(boxes.size() / 16);
         for (const layout::Volume& v : scene.volumes[c]) {
             VolumeBox box;
             box.center = v.rect.center;
@@ -194,9 +207,18 @@ void copy_objects(RendererData& r, const scene::Scene& scene) {
             box.target = v.target_room;
             box.tint = v.tint;
             r.volumes[c].push_back(box);
+            const math::dvec3 centre = box.center - scene.origins[c].origin;
+            boxes.insert(boxes.end(), {float(centre.x), float(centre.y), float(centre.z), 0.0f});
+            for (int a = 0; a < 3; ++a) {
+                const math::dvec3 axis = box.axes[static_cast<size_t>(a)] / box.half[a];
+                boxes.insert(boxes.end(), {float(axis.x), float(axis.y), float(axis.z), 0.0f});
+            }
         }
-        r.volume_capacity = std::max(r.volume_capacity, static_cast<int>(r.volumes[c].size()));
     }
+    r.has_volumes = !boxes.empty();
+    if (!r.has_volumes) return;
+    r.volume_boxes = gl::create_buffer();
+    glNamedBufferStorage(r.volume_boxes.get(), static_cast<GLsizeiptr>(boxes.size() * sizeof(float)), boxes.data(), 0);
 }
 
 }  // namespace

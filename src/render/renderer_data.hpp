@@ -80,7 +80,12 @@ struct RendererData {
     std::vector<std::vector<int>> prop_mesh;           // per room, per prop: its object mesh, or -1 (static)
     bool object_materials = false;                     // some object mesh batch has a texture or a cutoff
     std::vector<std::vector<VolumeBox>> volumes;       // per room: its volume portals
-    int volume_capacity = 0;                           // the most volumes of one room
+    bool has_volumes = false;                          // some room has a volume
+    // Every room's volumes, 4 vec4s each (the VOLUMES shaders' inside test,
+    // relative to the room's cell origin), at kVolumeBinding while drawing;
+    // volume_first[room] is the room's first.
+    gl::Buffer volume_boxes;
+    std::vector<int> volume_first;
     GpuScene gpu;
     gl::VertexArray empty_vao;  // for the attribute-less full-target triangle
     Programs programs;

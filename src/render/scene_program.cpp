@@ -1,6 +1,5 @@
 #include "render/scene_program.hpp"
 
-#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -38,20 +37,15 @@ struct SceneVariant {
     bool single_eye = false;   // STEREO_SINGLE_EYE: u_single_eye
     bool materials = false;    // MATERIALS: textures and cut-outs
     bool object_cuts = false;  // OBJECT_CUTS
-    int volume_capacity = 0;   // VOLUMES when > 0
+    bool volumes = false;      // VOLUMES
 };
 
 std::string variant_defines(const SceneVariant& variant) {
     std::string defines;
     if (variant.object_cuts) defines += "#define OBJECT_CUTS\n";
-    if (variant.volume_capacity > 0) {
-        char buf[160];
-        // The inside test's tolerance: far below a pixel, above float rounding
-        // of positions a few metres from the cell's origin.
-        std::snprintf(buf, sizeof buf, "#define VOLUMES\n#define VOLUME_CAPACITY %d\n#define VOLUME_TOLERANCE 1e-6\n",
-                      variant.volume_capacity);
-        defines += buf;
-    }
+    // The inside test's tolerance: far below a pixel, above float rounding
+    // of positions a few metres from the cell's origin.
+    if (variant.volumes) defines += "#define VOLUMES\n#define VOLUME_TOLERANCE 1e-6\n";
     return defines;
 }
 
@@ -60,13 +54,11 @@ void find_variant_uniforms(const SceneVariant& variant, gl::UniformLocations& u,
         p.cut_plane = u.required("u_cut_plane");
         p.object_rotation = u.required("u_object_rotation");
     }
-    if (variant.volume_capacity > 0) {
+    if (variant.volumes) {
         p.to_volume_space = u.required("u_to_volume_space");
+        p.volume_first = u.required("u_volume_first");
         p.volume_count = u.required("u_volume_count");
-        p.volume_center = u.required("u_volume_center");
-        p.volume_axis = u.required("u_volume_axis");
         p.volume_inside = u.required("u_volume_inside");
-        p.volume_capacity = variant.volume_capacity;
         // The portal texture's fragment shader shows no tint.
         p.volume_tint = std::string(variant.fragment) == "shaders/scene.frag.glsl" ? u.required("u_volume_tint")
                                                                                    : u.optional("u_volume_tint");
@@ -116,7 +108,7 @@ Result<SceneProgram> build_scene_program(StereoMode mode, bool materials) {
     return build_scene_variant(mode, materials ? kMaterials : 0u);
 }
 
-Result<SceneProgram> build_scene_variant(StereoMode mode, unsigned flags, int volume_capacity) {
+Result<SceneProgram> build_scene_variant(StereoMode mode, unsigned flags) {
     std::string defines = shading_defines();
     if (flags & kMaterials) defines += "#define MATERIALS\n";
     if (mode == StereoMode::ViewportIndex) defines += "#define STEREO_VIEWPORT_INDEX\n";
@@ -125,14 +117,14 @@ Result<SceneProgram> build_scene_variant(StereoMode mode, unsigned flags, int vo
     variant.single_eye = mode == StereoMode::TwoPass;
     variant.materials = (flags & kMaterials) != 0;
     variant.object_cuts = (flags & kObjectCuts) != 0;
-    variant.volume_capacity = (flags & kVolumes) ? std::max(1, volume_capacity) : 0;
+    variant.volumes = (flags & kVolumes) != 0;
     return link_scene_program(variant, defines);
 }
 
-Result<SceneProgram> build_portal_texture_program(int volume_capacity) {
+Result<SceneProgram> build_portal_texture_program(bool volumes) {
     SceneVariant variant;
     variant.fragment = "shaders/portal_texture.frag.glsl";
-    variant.volume_capacity = volume_capacity;
+    variant.volumes = volumes;
     return link_scene_program(variant, "");
 }
 

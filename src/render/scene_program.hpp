@@ -36,13 +36,14 @@ struct SceneProgram {
     GLint object_rotation = -1;  // mat3: the instance's normals into the cell's coordinates
     // kVolumes variants only (shaders/scene.frag.glsl, VOLUMES):
     GLint to_volume_space = -1;  // mat4: vertex → the cell's coordinates less its origin
+    GLint volume_first = -1;     // int: the cell's first box in the buffer at kVolumeBinding
     GLint volume_count = -1;     // int
-    GLint volume_center = -1;    // vec3[capacity]
-    GLint volume_axis = -1;      // vec3[3 · capacity]: axes over half extents
     GLint volume_inside = -1;    // int: -1 hide inside every volume; k show inside volume k only
     GLint volume_tint = -1;      // vec3
-    int volume_capacity = 0;     // volumes the arrays hold
 };
+
+// The shader storage buffer binding of every room's volume boxes.
+inline constexpr GLuint kVolumeBinding = 3;
 
 // What a variant of the scene program adds to the plain one: bits of
 // build_scene_variant's `flags`.
@@ -55,14 +56,13 @@ inline constexpr unsigned kSceneVariantCount = 8u;
 // (shaders/scene.frag.glsl, MATERIALS), for batches that need it.
 Result<SceneProgram> build_scene_program(StereoMode mode, bool materials = false);
 
-// Any variant (`flags` of kMaterials, kObjectCuts, kVolumes); with kVolumes,
-// arrays for `volume_capacity` (> 0) volumes.
-Result<SceneProgram> build_scene_variant(StereoMode mode, unsigned flags, int volume_capacity = 0);
+// Any variant (`flags` of kMaterials, kObjectCuts, kVolumes).
+Result<SceneProgram> build_scene_variant(StereoMode mode, unsigned flags);
 
 // The scene's vertex shader with shaders/portal_texture.frag.glsl: a portal
 // box that shows a render-to-texture view (clip-shift stereo only); with
-// volume_capacity > 0 its VOLUMES variant, for a head's cell with volumes.
-Result<SceneProgram> build_portal_texture_program(int volume_capacity = 0);
+// `volumes` its VOLUMES variant, for a head's cell with volumes.
+Result<SceneProgram> build_portal_texture_program(bool volumes = false);
 
 // A program that writes far depth (0 in reversed-Z) over the whole target and
 // nothing else; with the stencil test it clears depth inside a portal.

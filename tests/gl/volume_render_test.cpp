@@ -142,5 +142,37 @@ TEST(VolumeRender, APropInsideAVolumeHidesNoDoor) {
     EXPECT_EQ(testing::id_at(img, 3 * img.width / 4, img.height / 2), 3);
 }
 
+// However many volumes a room has (they are read from a buffer, not uniform
+// arrays): 300 small boxes in a grid before the viewer.
+TEST(VolumeRender, ManyVolumesInOneRoom) {
+    std::string volumes;
+    for (int i = 0; i < 300; ++i) {
+        const double x = -1.5 + 0.2 * (i % 15), y = 0.3 + 0.2 * (i / 15 % 10), z = -1.0 - 0.5 * (i / 150);
+        volumes += ",{ \"id\": \"v" + std::to_string(i) + "\", \"room\": \"lab\", \"kind\": \"volume\", " +
+                   "\"target\": \"past\", \"center\": [" + std::to_string(x) + ", " + std::to_string(y) + ", " +
+                   std::to_string(z) + "], \"normal\": [0, 0, 1], \"width\": 0.12, \"height\": 0.12, " +
+                   "\"depth\": 0.12, \"tint\": [0.9, 0.8, 1.0] }";
+    }
+    const std::string text = R"({ "format": "impossible-layout", "version": 1,
+      "start": { "room": "lab", "position": [0, 1.3, 1.5] },
+      "rooms": [
+        { "id": "lab", "min": [-2, 0, -2], "max": [2, 3, 2], "color": [0.8, 0.8, 0.85],
+          "props": [ { "box": { "min": [-1.8, 0, -1.3], "max": [1.8, 2.4, -1.2] }, "color": [0.9, 0.2, 0.2] } ] },
+        { "id": "past", "min": [-2, 0, -2], "max": [2, 3, 2], "color": [0.5, 0.6, 0.4], "checker": 0.05,
+          "props": [ { "box": { "min": [-1.8, 0, -1.0], "max": [1.8, 2.4, -0.99] }, "color": [0.2, 0.3, 0.9] } ] }
+      ],
+      "portals": [ { "id": "m", "room": "lab", "kind": "mirror", "center": [0, 1.5, 2], "normal": [0, 0, -1],
+                     "width": 1, "height": 1 })" +
+                             volumes + "] }";
+    CrossingRig rig(text.c_str());
+    ASSERT_TRUE(rig.renderer);
+    render::FrameDesc f = frame_at(rig.layout, "lab", {0.0, 1.3, 1.5}, 0.0, 0.0);
+    const image::Image img = rig.render(f);
+    expect_agree(img, rig.trace(f), "300 volumes");
+    int past = 0;
+    for (const std::uint8_t id : img.ids) past += id == 2;
+    EXPECT_GT(past, 1000);
+}
+
 }  // namespace
 }  // namespace impossible
