@@ -96,4 +96,15 @@ bool solid_meets_door(const ObjectSolid& solid, const dmat4& to_cell, const math
     return solid.is_box ? box_meets_door(solid, to_cell, door, tol) : triangles_meet_door(solid, to_cell, door, tol);
 }
 
+bool solid_reaches_behind(const ObjectSolid& solid, const dmat4& to_cell, const math::PortalRect& door) {
+    const double tol = kMeetTolerance * (1.0 + glm::length(door.center));
+    const auto behind = [&](const dvec3& p) { return math::signed_distance(door, apply_point(to_cell, p)) < -tol; };
+    if (!solid.is_box) return std::any_of(solid.triangles.begin(), solid.triangles.end(), behind);
+    for (int k = 0; k < 8; ++k)
+        if (behind(dvec3(k & 1 ? solid.max.x : solid.min.x, k & 2 ? solid.max.y : solid.min.y,
+                         k & 4 ? solid.max.z : solid.min.z)))
+            return true;
+    return false;
+}
+
 }  // namespace impossible::walk

@@ -10,4 +10,8 @@ namespace impossible::walk {
 
 bool solid_meets_door(const ObjectSolid& solid, const math::dmat4& to_cell, const math::PortalRect& door);
 
+// Whether some corner of the solid lies behind the door's plane by more than
+// the tolerance (d < -kMeetTolerance · (1 + |centre|)).
+bool solid_reaches_behind(const ObjectSolid& solid, const math::dmat4& to_cell, const math::PortalRect& door);
+
 }  // namespace impossible::walk

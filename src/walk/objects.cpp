@@ -64,9 +64,16 @@ std::shared_ptr<const layout::Layout> walk_layout_of(const layout::Layout& layou
     return copy;
 }
 
-bool meets_any_door(const ObjectSet& set, const ObjectSolid& solid, int room, const dmat4& to_cell) {
-    for (int d : set.room_doors[static_cast<std::size_t>(room)])
-        if (solid_meets_door(solid, to_cell, set.portals[static_cast<std::size_t>(d)].rect)) return true;
+// Whether a prop at rest is cut by a door: it meets the door and reaches
+// behind its plane. One that only touches the door from the front is cut to
+// itself and has an empty image (the part behind the door), so it stays in
+// its room's geometry, drawn as before (door frames standing against their
+// doors, as in layouts/four_rooms.json).
+bool cut_by_a_door(const ObjectSet& set, const ObjectSolid& solid, int room) {
+    for (int d : set.room_doors[static_cast<std::size_t>(room)]) {
+        const math::PortalRect& rect = set.portals[static_cast<std::size_t>(d)].rect;
+        if (solid_meets_door(solid, dmat4(1.0), rect) && solid_reaches_behind(solid, dmat4(1.0), rect)) return true;
+    }
     return false;
 }
 
@@ -156,7 +163,7 @@ ObjectSet build_object_set(const layout::Layout& layout, const links::PortalLink
         for (std::size_t k = 0; k < props.size(); ++k) {
             ObjectSolid solid = solid_of(props[k]);
             const layout::Motion& motion = layout::prop_motion(props[k]);
-            if (motion.keys.empty() && !meets_any_door(set, solid, static_cast<int>(r), dmat4(1.0))) continue;
+            if (motion.keys.empty() && !cut_by_a_door(set, solid, static_cast<int>(r))) continue;
             set.dynamic[r][k] = true;
             set.props.push_back(DynamicProp{static_cast<int>(r), static_cast<int>(k), layout::prop_anchor(props[k]),
                                             motion, std::move(solid)});

@@ -2,9 +2,11 @@
 // hands and crossing objects"): the one rule the rasteriser and the tracer
 // both follow for props that move or meet a door, and for tracked hands.
 //
-// A prop that neither moves nor meets a door of its room at rest is
-// *static*: it stays part of its room's geometry, drawn as before (so
-// layouts without such props render byte-identically). Every other prop,
+// A prop that neither moves nor meets a door of its room at rest with a
+// part behind the door's plane is *static*: it stays part of its room's
+// geometry, drawn as before (so layouts without such props render
+// byte-identically; a prop that only touches a door from the front is cut
+// to itself and has an empty image, which is what the static drawing shows). Every other prop,
 // and each hand, is *dynamic*: each frame it becomes one or more
 // ObjectInstance — its solid, placed in a cell by a rigid matrix, optionally
 // cut by the planes of the doors it meets:

@@ -63,19 +63,23 @@ layout::BoxProp sliding_box(bool loop = false) {
 
 ObjectSet set_of(const layout::Layout& l) { return build_object_set(l, links::link_portals(l)); }
 
-TEST(DynamicProps, OnlyPropsThatMoveOrMeetADoor) {
+TEST(DynamicProps, OnlyPropsThatMoveOrAreCutByADoor) {
     layout::Layout l = turned_door();
     l.rooms[kHall].props = {box({-1, 0, -1}, {-0.5, 1, -0.5}),       // far from the door
                             box({1.7, 0, -0.2}, {2.3, 0.8, 0.2}),    // half through it
-                            box({1.5, 0, -0.2}, {2.0, 0.8, 0.2}),    // touching its plane inside the rectangle
+                            box({1.5, 0, -0.2}, {2.0, 0.8, 0.2}),    // touching its plane from the front
                             box({1.5, 0, -0.2}, {1.999, 0.8, 0.2}),  // a millimetre short
                             box({1.7, 0, 0.6}, {2.3, 0.8, 1.0}),     // through the plane beside the rectangle
+                            box({2.0, 0, -0.2}, {2.5, 0.8, 0.2}),    // touching it from behind
                             sliding_box()};
     const ObjectSet set = set_of(l);
-    EXPECT_EQ(set.dynamic[kHall], (std::vector<bool>{false, true, true, false, false, true}));
+    // Touching from the front, a prop is cut to itself and its image is
+    // empty: it stays static, drawn whole as before.
+    EXPECT_EQ(set.dynamic[kHall], (std::vector<bool>{false, true, false, false, false, true, true}));
     ASSERT_EQ(set.props.size(), 3u);
     EXPECT_EQ(set.props[0].index, 1);
-    EXPECT_EQ(set.props[2].index, 5);
+    EXPECT_EQ(set.props[1].index, 5);
+    EXPECT_EQ(set.props[2].index, 6);
     expect_near(set.props[2].anchor, {0.7, 0.2, 0.0});
 }
 
