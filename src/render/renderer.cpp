@@ -167,6 +167,7 @@ Result<void> draw_frame(RendererParts& parts, const FrameDesc& frame, FrameStats
     // a name GL reuses after this renderer's objects are deleted must not
     // look bound already.
     state.release_bindings();
+    if (r.has_volumes) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVolumeBinding, 0);
     if (frame.profile) profiler.collect(scratch.stats);
     if (stats_out) *stats_out = std::move(scratch.stats);
     return {};
