@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "layout/path_file.hpp"
 #include "math/pose.hpp"
 #include "walk/objects.hpp"
+#include "walk/prop_walks.hpp"
 #include "walk/walker.hpp"
 
 namespace impossible::app {
@@ -42,10 +44,12 @@ std::string room_json(const layout::Layout& layout, int room) {
 
 // What `walk` needs for the "hands" and "props" keys (cli.md, "Time, hands
 // and lights"): the layout's objects, and the props that move, in layout
-// order (the indices of set.props).
+// order (the indices of set.props), and their walks, kept from line to line
+// (the lines' times only grow: each line walks only the keys passed since).
 struct WalkObjects {
     walk::ObjectSet set;
     std::vector<int> moving;
+    std::optional<walk::PropWalks> walks;  // of set
 };
 
 bool any_hands(const std::vector<layout::PathFrame>& frames) {
@@ -68,6 +72,7 @@ std::unique_ptr<WalkObjects> walk_objects(const layout::Layout& layout, const wa
     objects->set = walk::build_object_set(layout, walker.links());
     for (std::size_t k = 0; k < objects->set.props.size(); ++k)
         if (!objects->set.props[k].motion.keys.empty()) objects->moving.push_back(static_cast<int>(k));
+    objects->walks.emplace(objects->set);
     return objects;
 }
 
@@ -92,7 +97,7 @@ void write_hands(std::string& line, const layout::Layout& layout, const WalkObje
 }
 
 // `,"props":{"ID":"ROOM",...}`: the room of every moving prop at `time`.
-void write_props(std::string& line, const layout::Layout& layout, const WalkObjects& objects, double time) {
+void write_props(std::string& line, const layout::Layout& layout, WalkObjects& objects, double time) {
     line += ",\"props\":{";
     for (std::size_t k = 0; k < objects.moving.size(); ++k) {
         if (k) line += ',';
@@ -102,7 +107,7 @@ void write_props(std::string& line, const layout::Layout& layout, const WalkObje
                                layout.rooms[static_cast<std::size_t>(p.room)].props[static_cast<std::size_t>(p.index)]))
                 .dump();
         line += ':';
-        line += room_json(layout, walk::walk_prop(objects.set, objects.moving[k], time).room);
+        line += room_json(layout, objects.walks->at(objects.moving[k], time).room);
     }
     line += '}';
 }

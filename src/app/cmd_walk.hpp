@@ -17,7 +17,7 @@
 // to the hand's virtual position, walk::place_hand), and, when the layout has
 // moving props, on every line "props":{"ID":"ROOM",...}: each prop with a
 // motion, in layout order, and its room at time frame / fps
-// (walk::walk_prop).
+// (walk::walk_prop, through one walk::PropWalks for the whole path).
 // Numbers are written by impossible::format_number (base/format.hpp): the
 // shortest decimal that reads back to the same double, integers without a
 // fraction ("1", not "1.0"), 1.6 as "1.6", 6.1e-17 as "6.1e-17"; -0 as 0.

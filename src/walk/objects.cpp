@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <type_traits>
 #include <variant>
 
 #include "math/pose.hpp"
 #include "walk/object_meet.hpp"
+#include "walk/prop_walks.hpp"
 #include "walk/walker.hpp"
 
 namespace impossible::walk {
@@ -89,54 +91,6 @@ dmat4 pose_matrix(const math::HeadPose& pose) {
     return m;
 }
 
-dvec3 lerp_offset(const layout::MotionKey& a, const layout::MotionKey& b, double t) {
-    const double s = (t - a.t) / (b.t - a.t);
-    return a.offset + (b.offset - a.offset) * s;
-}
-
-// Walks the keys after the first while their time is at most `t`, then to
-// the offset at `t`; returns that offset.
-dvec3 walk_keys_to(Walker& walker, const DynamicProp& p, double t) {
-    const std::vector<layout::MotionKey>& keys = p.motion.keys;
-    std::size_t i = 1;
-    for (; i < keys.size() && keys[i].t <= t; ++i) walker.step(math::HeadPose{p.anchor + keys[i].offset});
-    if (i == keys.size()) return keys.back().offset;
-    const dvec3 offset = lerp_offset(keys[i - 1], keys[i], t);
-    walker.step(math::HeadPose{p.anchor + offset});
-    return offset;
-}
-
-// The state after whole periods of a looping motion: each the keys, then
-// the wrap back to the first key's offset. A motion that comes back to a
-// state it had after an earlier period repeats from there, so only the
-// periods up to the first repeat are walked.
-void walk_periods(Walker& walker, const DynamicProp& p, double periods) {
-    struct State {
-        int room;
-        dmat4 w;
-    };
-    std::vector<State> seen = {{walker.room(), walker.physical_to_virtual()}};
-    const dvec3 first = p.anchor + p.motion.keys.front().offset;
-    for (double done = 0.0; done < std::min(periods, kMaxWalkedPeriods);) {
-        walk_keys_to(walker, p, p.motion.keys.back().t);
-        walker.step(math::HeadPose{first});
-        done += 1.0;
-        const State now{walker.room(), walker.physical_to_virtual()};
-        for (std::size_t k = 0; k < seen.size() && seen.size() <= kMaxRememberedPeriods; ++k) {
-            if (seen[k].room != now.room || seen[k].w != now.w) continue;
-            // Periods k .. done repeat with period done - k.
-            const double cycle = done - static_cast<double>(k);
-            const double left = std::fmod(periods - done, cycle);
-            for (double j = 0.0; j < left; j += 1.0) {
-                walk_keys_to(walker, p, p.motion.keys.back().t);
-                walker.step(math::HeadPose{first});
-            }
-            return;
-        }
-        if (seen.size() <= kMaxRememberedPeriods) seen.push_back(now);
-    }
-}
-
 }  // namespace
 
 ObjectSet build_object_set(const layout::Layout& layout, const links::PortalLinks& links) {
@@ -174,28 +128,6 @@ ObjectSet build_object_set(const layout::Layout& layout, const links::PortalLink
 
 std::vector<std::vector<bool>> dynamic_props(const layout::Layout& layout, const links::PortalLinks& links) {
     return build_object_set(layout, links).dynamic;
-}
-
-PropState walk_prop(const ObjectSet& set, int prop, double time) {
-    const DynamicProp& p = set.props[static_cast<std::size_t>(prop)];
-    PropState state;
-    state.room = p.room;
-    const std::vector<layout::MotionKey>& keys = p.motion.keys;
-    if (keys.empty()) return state;
-    const double t = std::isnan(time) || time < 0.0 ? 0.0 : time;
-    Walker walker(*set.walk_layout, p.room, set.walk_links);
-    walker.step(math::HeadPose{p.anchor + keys.front().offset});  // placed, no crossing test
-    if (p.motion.loop && keys.size() > 1) {
-        const double period = keys.back().t;
-        const double periods = std::floor(t / period);
-        walk_periods(walker, p, periods);
-        state.offset = walk_keys_to(walker, p, t - periods * period);
-    } else {
-        state.offset = walk_keys_to(walker, p, t);
-    }
-    state.room = walker.room();
-    state.w = walker.physical_to_virtual();
-    return state;
 }
 
 HandState place_hand(const ObjectSet& set, int head_room, const dvec3& head_position, const math::HeadPose& hand) {
@@ -236,11 +168,13 @@ void add_instances(const ObjectSet& set, ObjectInstance own, const ObjectSolid& 
 
 }  // namespace
 
-std::vector<ObjectInstance> place_objects(const ObjectSet& set, const math::View& view) {
+std::vector<ObjectInstance> place_objects(const ObjectSet& set, const math::View& view, PropWalks* walks) {
+    std::optional<PropWalks> fresh;
+    if (walks == nullptr || &walks->set() != &set) walks = &fresh.emplace(set);
     std::vector<ObjectInstance> out;
     for (std::size_t k = 0; k < set.props.size(); ++k) {
         const DynamicProp& p = set.props[k];
-        const PropState state = walk_prop(set, static_cast<int>(k), view.time);
+        const PropState state = walks->at(static_cast<int>(k), view.time);
         ObjectInstance own;
         own.kind = ObjectKind::Prop;
         own.listed_room = p.room;

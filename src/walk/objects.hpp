@@ -111,6 +111,9 @@ std::vector<std::vector<bool>> dynamic_props(const layout::Layout& layout, const
 // (listed place plus offset) to virtual coordinates (layout-format.md,
 // "Moving props"). Exact and independent of how the time was reached: the
 // anchor walks the keys' polyline from t = 0, key to key, then to `time`.
+// Each call walks the keys from t = 0; a PropWalks (prop_walks.hpp) gives
+// the same states, bit for bit, walking only the keys passed since its last
+// time, for whoever walks successive frames.
 struct PropState {
     int room = -1;
     math::dmat4 w{1.0};
@@ -144,7 +147,10 @@ HandState place_hand(const ObjectSet& set, int head_room, const math::dvec3& hea
 // view.head.position in view.room, each then cut and imaged by the doors it
 // meets. Deterministic: props in set.props order, then the left and the
 // right hand; for each, its own-room instance first, then its images in the
-// order of the doors met. No hands: none drawn.
-std::vector<ObjectInstance> place_objects(const ObjectSet& set, const math::View& view);
+// order of the doors met. No hands: none drawn. The props are walked by
+// `walks` when it is given and made for `set` (the same result, walking only
+// the keys passed since its last time), else each from t = 0.
+class PropWalks;
+std::vector<ObjectInstance> place_objects(const ObjectSet& set, const math::View& view, PropWalks* walks = nullptr);
 
 }  // namespace impossible::walk
