@@ -124,12 +124,12 @@ struct ViewBase {
 };
 
 // Two poses, the left and the right hand, each as `pose` (--hands).
-std::array<api::Pose, 2> hands_of(py::handle value) {
+std::array<api::Pose, 2> hands_of(py::handle value, double limit = 1e7) {
     const char* expected = "hands: expected two poses, the left and the right hand";
     if (py::isinstance<py::str>(value) || !py::isinstance<py::sequence>(value)) raise(PyExc_TypeError, expected);
     const auto seq = py::reinterpret_borrow<py::sequence>(value);
     if (seq.size() != 2) raise(PyExc_ValueError, std::string(expected) + ", got " + std::to_string(seq.size()));
-    return {pose_of(seq[0], 1e7, "hands[0]"), pose_of(seq[1], 1e7, "hands[1]")};
+    return {pose_of(seq[0], limit, "hands[0]"), pose_of(seq[1], limit, "hands[1]")};
 }
 
 // One frame's view.
@@ -200,36 +200,89 @@ py::dict step_dict(std::size_t frame, const api::WalkStep& s) {
     // + 0.0: -0 becomes 0, as `walk` writes it.
     d["position"] = py::make_tuple(s.position[0] + 0.0, s.position[1] + 0.0, s.position[2] + 0.0).cast<py::list>();
     d["forward"] = py::make_tuple(s.forward[0] + 0.0, s.forward[1] + 0.0, s.forward[2] + 0.0).cast<py::list>();
+    if (s.hands) d["hands"] = py::make_tuple((*s.hands)[0].room, (*s.hands)[1].room).cast<py::list>();
     return d;
 }
 
+// A path file's line: 6 numbers (the head) or 18 (the head, then the left
+// and the right hand), each within ±1e6 as the file's.
+api::PathLine line_of(py::handle value, const char* what) {
+    if (!py::isinstance<py::str>(value) && py::isinstance<py::sequence>(value) && py::len(value) == 18) {
+        const auto seq = py::reinterpret_borrow<py::sequence>(value);
+        py::tuple part[3];
+        for (int k = 0; k < 3; ++k) part[k] = seq[py::slice(6 * k, 6 * k + 6, 1)];
+        return {pose_of(part[0], 1e6, what),
+                std::array<api::Pose, 2>{pose_of(part[1], 1e6, what), pose_of(part[2], 1e6, what)}};
+    }
+    if (!py::isinstance<py::str>(value) && py::isinstance<py::sequence>(value) && py::len(value) != 6)
+        raise(PyExc_ValueError, std::string(what) +
+                                    ": expected 6 numbers (x, y, z, yaw, pitch, roll) or 18 (the head, then the "
+                                    "left and the right hand), got " +
+                                    std::to_string(py::len(value)));
+    return {pose_of(value, 1e6, what), std::nullopt};
+}
+
 // The walker, one physical pose at a time; `pose` is the virtual head after
-// the last step, to render that frame.
+// the last step, `hands` the virtual hands (with a step that had hands), to
+// render that frame.
 class PyWalker {
 public:
     explicit PyWalker(const api::Layout& layout) : walker_(layout), pose_(layout.start()), room_(layout.start_room()) {}
 
-    py::dict step(py::handle physical) {
-        const api::WalkStep s = walker_.step(pose_of(physical, 1e6, "pose"));
+    py::dict step(py::handle physical, py::handle hands) {
+        api::PathLine line = line_of(physical, "pose");
+        if (!hands.is_none()) {
+            if (line.hands) raise(PyExc_ValueError, "hands: given twice (the pose holds 18 numbers)");
+            line.hands = hands_of(hands, 1e6);
+        }
+        const api::WalkStep s = line.hands ? walker_.step(line.head, *line.hands) : walker_.step(line.head);
         pose_ = s.virtual_pose;
         room_ = s.room;
+        hands_ = s.hands;
         return step_dict(frames_++, s);
     }
     py::tuple pose() const { return tuple_of(pose_); }
     const std::string& room() const { return room_; }
+    py::object hands() const {
+        if (!hands_) return py::none();
+        return py::make_tuple(tuple_of((*hands_)[0].virtual_pose), tuple_of((*hands_)[1].virtual_pose));
+    }
+    py::object hand_rooms() const {
+        if (!hands_) return py::none();
+        return py::make_tuple((*hands_)[0].room, (*hands_)[1].room);
+    }
 
 private:
     api::Walker walker_;
     api::Pose pose_;
     std::string room_;
+    std::optional<std::array<api::WalkHand, 2>> hands_;
     std::size_t frames_ = 0;
 };
 
 py::list walk(const api::Layout& layout, py::handle poses, double fps) {
     if (!(fps > 0 && std::isfinite(fps))) raise(PyExc_ValueError, "fps must be a finite number above 0");
-    const std::vector<api::WalkStep> steps = api::walk(layout, poses_of(poses, "poses"));
+    if (py::isinstance<py::str>(poses) || !py::isinstance<py::iterable>(poses))
+        raise(PyExc_TypeError, "poses: expected a list of poses");
+    std::vector<api::PathLine> lines;
+    for (py::handle p : py::reinterpret_borrow<py::iterable>(poses)) lines.push_back(line_of(p, "poses"));
+    const std::vector<api::WalkStep> steps = api::walk(layout, lines);
     py::list out;
     for (std::size_t k = 0; k < steps.size(); ++k) out.append(step_dict(k, steps[k]));
+    return out;
+}
+
+// A path file's lines: 6-tuples, or with hands=True, each line as written
+// (6 or 18 numbers).
+py::list read_path(py::handle path, bool hands) {
+    const std::string name = py::module_::import("os").attr("fspath")(path).cast<std::string>();
+    if (!hands) return tuples_of(value_or_raise(api::read_path(name)));
+    py::list out;
+    for (const api::PathLine& line : value_or_raise(api::read_path_lines(name))) {
+        py::tuple t = tuple_of(line.head);
+        if (line.hands) t = t + tuple_of((*line.hands)[0]) + tuple_of((*line.hands)[1]);
+        out.append(t);
+    }
     return out;
 }
 
@@ -309,14 +362,15 @@ void bind_renderer(py::module_& m) {
 void bind_tools(py::module_& m) {
     py::class_<PyWalker>(m, "Walker", "Physical head poses to the virtual head, one at a time")
         .def(py::init<const api::Layout&>(), py::arg("layout"))
-        .def("step", &PyWalker::step, py::arg("pose"))
+        .def("step", &PyWalker::step, py::arg("pose"), py::arg("hands") = py::none())
         .def_property_readonly("pose", &PyWalker::pose)
-        .def_property_readonly("room", &PyWalker::room);
+        .def_property_readonly("room", &PyWalker::room)
+        .def_property_readonly("hands", &PyWalker::hands)
+        .def_property_readonly("hand_rooms", &PyWalker::hand_rooms);
     m.def("walk", &walk, py::arg("layout"), py::arg("poses"), py::arg("fps") = 90.0,
           "Every frame of a walk as `impossible walk` prints it");
-    m.def(
-        "read_path", [](py::handle path) { return tuples_of(value_or_raise(api::read_path(path_string(path)))); },
-        py::arg("path"), "The poses of a path file");
+    m.def("read_path", &read_path, py::arg("path"), py::arg("hands") = false,
+          "The poses of a path file; with hands=True each line as written, 6 or 18 numbers");
     m.def("generate", &generate, py::arg("play_area"), py::arg("rooms"), py::arg("seed"),
           py::arg("max_overlap") = py::none(), "A random valid layout's JSON text (`impossible generate`)");
     m.def(

@@ -181,13 +181,27 @@ private:
 // `threads` 0 uses every core.
 Expected<Frame> trace(const Layout& layout, const View& view, int threads = 0);
 
+// A tracked hand of a walked frame.
+struct WalkHand {
+    Pose virtual_pose;  // its physical pose mapped as the head's is (for View::hands with the head's virtual_pose)
+    std::string room;   // the room it is in, walked from the head centre (`walk`'s "hands")
+};
+
 // One walked frame, as a line of `impossible walk`.
 struct WalkStep {
-    std::string room;                    // the room the head is in after the frame
-    std::vector<std::string> teleports;  // the portals passed during it, in order
-    double position[3] = {0, 0, 0};      // the virtual head centre
-    double forward[3] = {0, 0, 0};       // the virtual view direction
-    Pose virtual_pose;                   // the virtual head as a pose (to render the frame)
+    std::string room;                              // the room the head is in after the frame
+    std::vector<std::string> teleports;            // the portals passed during it, in order
+    double position[3] = {0, 0, 0};                // the virtual head centre
+    double forward[3] = {0, 0, 0};                 // the virtual view direction
+    Pose virtual_pose;                             // the virtual head as a pose (to render the frame)
+    std::optional<std::array<WalkHand, 2>> hands;  // left, right: only for a frame walked with hands
+};
+
+// One line of a path file: the physical head, and the two physical hands on
+// a line of 18 numbers.
+struct PathLine {
+    Pose head;
+    std::optional<std::array<Pose, 2>> hands;
 };
 
 struct WalkerData;
@@ -201,6 +215,9 @@ public:
     Walker& operator=(Walker&&) noexcept;
     ~Walker();
     WalkStep step(const Pose& physical);
+    // The same, with the physical hands (left, right) of this frame: the
+    // step's `hands` hold their virtual poses and rooms.
+    WalkStep step(const Pose& physical, const std::array<Pose, 2>& hands);
 
 private:
     std::unique_ptr<WalkerData> data_;
@@ -208,8 +225,12 @@ private:
 
 // A path file's poses (the `walk` format).
 Expected<std::vector<Pose>> read_path(const std::string& path);
+// Every line of a path file, with the hands of its 18-number lines.
+Expected<std::vector<PathLine>> read_path_lines(const std::string& path);
 // Every frame of a walk, as `impossible walk` prints them.
 std::vector<WalkStep> walk(const Layout& layout, const std::vector<Pose>& physical);
+// The same with the hands of the lines that have them.
+std::vector<WalkStep> walk(const Layout& layout, const std::vector<PathLine>& physical);
 
 // The designer's tools, as their commands.
 struct GenerateRequest {

@@ -1,6 +1,10 @@
 // impossible::api::Walker and walk: physical head poses through the doors.
+#include <optional>
+
 #include "api/api_data.hpp"
 #include "layout/path_file.hpp"
+#include "walk/objects.hpp"
+#include "walk/replay.hpp"
 #include "walk/walker.hpp"
 
 namespace impossible::api {
@@ -9,6 +13,7 @@ struct WalkerData {
     explicit WalkerData(const Layout& l) : layout(l), walker(layout.data().layout) {}
     Layout layout;  // the walker reads it; declared first, so it outlives the walker
     walk::Walker walker;
+    std::optional<walk::ObjectSet> objects;  // made at the first step with hands (walk::place_hand)
 };
 
 Walker::Walker(const Layout& layout) : data_(std::make_unique<WalkerData>(layout)) {}
@@ -16,12 +21,20 @@ Walker::Walker(Walker&&) noexcept = default;
 Walker& Walker::operator=(Walker&&) noexcept = default;
 Walker::~Walker() = default;
 
+namespace {
+
+std::string room_id(const layout::Layout& l, int room) {
+    return room >= 0 && static_cast<std::size_t>(room) < l.rooms.size() ? l.rooms[room].id : "";
+}
+
+}  // namespace
+
 WalkStep Walker::step(const Pose& physical) {
     const layout::Layout& l = data_->layout.data().layout;
     walk::Walker& w = data_->walker;
     const std::vector<int> passed = w.step(to_head_pose(physical));
     WalkStep s;
-    s.room = w.room() >= 0 && static_cast<std::size_t>(w.room()) < l.rooms.size() ? l.rooms[w.room()].id : "";
+    s.room = room_id(l, w.room());
     for (const int p : passed) s.teleports.push_back(l.portals[p].id);
     const math::dvec3 position = w.position(), forward = w.forward();
     for (int k = 0; k < 3; ++k) {
@@ -29,6 +42,21 @@ WalkStep Walker::step(const Pose& physical) {
         s.forward[k] = forward[k];
     }
     s.virtual_pose = to_pose(math::head_pose_from(position, w.rotation()));
+    return s;
+}
+
+WalkStep Walker::step(const Pose& physical, const std::array<Pose, 2>& hands) {
+    WalkStep s = step(physical);
+    const layout::Layout& l = data_->layout.data().layout;
+    const walk::Walker& w = data_->walker;
+    if (!data_->objects) data_->objects = walk::build_object_set(l, w.links());
+    std::array<WalkHand, 2> out;
+    for (std::size_t h = 0; h < 2; ++h) {
+        const math::HeadPose hand = walk::virtual_pose(w.physical_to_virtual(), to_head_pose(hands[h]));
+        out[h].virtual_pose = to_pose(hand);
+        out[h].room = room_id(l, walk::place_hand(*data_->objects, w.room(), w.position(), hand).room);
+    }
+    s.hands = out;
     return s;
 }
 
@@ -43,11 +71,34 @@ Expected<std::vector<Pose>> read_path(const std::string& path) {
     });
 }
 
+Expected<std::vector<PathLine>> read_path_lines(const std::string& path) {
+    return no_throw([&]() -> Expected<std::vector<PathLine>> {
+        const layout::PathFrames file = layout::read_path_frames_file(path);
+        if (!file) return Error{file.error()};
+        std::vector<PathLine> lines;
+        lines.reserve(file->size());
+        for (const layout::PathFrame& f : *file) {
+            PathLine line{to_pose(f.head), std::nullopt};
+            if (f.hands) line.hands = std::array<Pose, 2>{to_pose((*f.hands)[0]), to_pose((*f.hands)[1])};
+            lines.push_back(line);
+        }
+        return lines;
+    });
+}
+
 std::vector<WalkStep> walk(const Layout& layout, const std::vector<Pose>& physical) {
     Walker walker(layout);
     std::vector<WalkStep> steps;
     steps.reserve(physical.size());
     for (const Pose& p : physical) steps.push_back(walker.step(p));
+    return steps;
+}
+
+std::vector<WalkStep> walk(const Layout& layout, const std::vector<PathLine>& physical) {
+    Walker walker(layout);
+    std::vector<WalkStep> steps;
+    steps.reserve(physical.size());
+    for (const PathLine& p : physical) steps.push_back(p.hands ? walker.step(p.head, *p.hands) : walker.step(p.head));
     return steps;
 }
 
