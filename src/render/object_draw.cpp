@@ -128,7 +128,7 @@ const SceneProgram& cell_program(const DrawContext& ctx, int cell, unsigned flag
     return *variant;
 }
 
-void place_frame_objects(const RendererData& r, const FrameDesc& frame, FrameObjects& out) {
+void place_frame_objects(const RendererData& r, const FrameDesc& frame, FrameObjects& out, walk::PropWalks* walks) {
     for (const int c : out.touched) {
         scene::CellObjects& cell = out.cells[static_cast<size_t>(c)];
         cell.objects.clear();
@@ -137,7 +137,7 @@ void place_frame_objects(const RendererData& r, const FrameDesc& frame, FrameObj
     }
     out.touched.clear();
     out.cells.resize(r.cells.size());
-    out.instances = walk::place_objects(r.object_set, frame);
+    out.instances = walk::place_objects(r.object_set, frame, walks);
     out.mesh.resize(out.instances.size());
     const int hand_mesh = static_cast<int>(r.object_meshes.size()) - 1;
     for (size_t i = 0; i < out.instances.size(); ++i) {

@@ -86,7 +86,8 @@ void draw_portal_via_texture(const DrawContext& ctx, const LevelView& view, int 
 
 // The frame's dynamic objects placed (walk::place_objects), grouped per cell
 // with their bounds and a culling tree per cell.
-void place_frame_objects(const RendererData& r, const FrameDesc& frame, FrameObjects& out);
+// `walks` (may be null) walks the moving props on from the last frame.
+void place_frame_objects(const RendererData& r, const FrameDesc& frame, FrameObjects& out, walk::PropWalks* walks);
 
 // The program a draw of `cell` uses: the plain or material one, or the
 // variant with `flags` (and kVolumes where the cell has volumes).

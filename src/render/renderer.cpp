@@ -142,7 +142,7 @@ Result<void> draw_frame(RendererParts& parts, const FrameDesc& frame, FrameStats
     gl::StateCache& state = *r.state;
     FrameScratch& scratch = parts.scratch;
     scratch.begin_frame();
-    place_frame_objects(r, frame, scratch.objects);
+    place_frame_objects(r, frame, scratch.objects, scratch.prop_walks.get());
     // Bound for the frame: another renderer of the context may bind its own.
     if (r.has_volumes) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVolumeBinding, r.volume_boxes.get());
     const Target& target = drawing_target(parts.targets, frame);
@@ -246,6 +246,8 @@ Result<Renderer> Renderer::create(gl::StateCache& state, const scene::Scene& sce
         for (const scene::DrawBatch& b : cell)
             r.has_materials = r.has_materials || b.texture >= 0 || b.alpha_cutoff >= 0.0f;
     copy_objects(r, scene);
+    // RendererParts stays where it is: the walks may keep a pointer to the set.
+    parts->scratch.prop_walks = std::make_unique<walk::PropWalks>(r.object_set);
     r.cell_origins = scene.origins;
     r.links = scene.links;
     r.portals = scene.portal_info;

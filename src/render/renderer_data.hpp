@@ -12,6 +12,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -27,6 +28,7 @@
 #include "render/target.hpp"
 #include "scene/scene.hpp"
 #include "walk/objects.hpp"
+#include "walk/prop_walks.hpp"
 
 namespace impossible::render {
 
@@ -110,6 +112,9 @@ struct FrameScratch {
     CullScratch cull;  // reused by every level (object_culling.hpp)
     std::vector<scene::DrawBatch> cull_batches;
     FrameObjects objects;  // the frame's dynamic objects (object_draw.cpp)
+    // The moving props walked from frame to frame (only the keys passed
+    // since the last frame), over RendererData::object_set.
+    std::unique_ptr<walk::PropWalks> prop_walks;
     std::vector<int> visible_instances;
     IndirectDraws indirect;                  // FrameDesc::multi_draw's commands
     std::vector<gl::Query> mark_queries;     // occlusion queries of portals, made on first use

@@ -104,7 +104,9 @@ TEST(CrossingRender, BothHalvesOfTheCrateShowWithTheirRoomsIds) {
 TEST(CrossingRender, MovingPropMatchesTheTracerAtSeveralTimes) {
     CrossingRig rig(kCrossingLayout);
     ASSERT_TRUE(rig.renderer);
-    for (const double t : {0.0, 1.5, 2.2, 2.6, 3.0, 4.5, 8.2}) {
+    // Times going back too: the renderer walks the props on from its last
+    // frame, or again from the start.
+    for (const double t : {0.0, 1.5, 2.2, 2.6, 3.0, 4.5, 8.2, 2.3, 14.1}) {
         render::FrameDesc f = frame_at(rig.layout, "hall", {-1.2, 1.6, 1.5}, -60.0, -10.0);
         f.time = t;
         const image::Image traced = rig.trace(f);
