@@ -201,6 +201,11 @@ py::dict step_dict(std::size_t frame, const api::WalkStep& s) {
     d["position"] = py::make_tuple(s.position[0] + 0.0, s.position[1] + 0.0, s.position[2] + 0.0).cast<py::list>();
     d["forward"] = py::make_tuple(s.forward[0] + 0.0, s.forward[1] + 0.0, s.forward[2] + 0.0).cast<py::list>();
     if (s.hands) d["hands"] = py::make_tuple((*s.hands)[0].room, (*s.hands)[1].room).cast<py::list>();
+    if (!s.props.empty()) {
+        py::dict props;  // insertion order: the layout's, as `walk` prints it
+        for (const auto& [id, room] : s.props) props[py::str(id)] = room;
+        d["props"] = props;
+    }
     return d;
 }
 
@@ -266,7 +271,7 @@ py::list walk(const api::Layout& layout, py::handle poses, double fps) {
         raise(PyExc_TypeError, "poses: expected a list of poses");
     std::vector<api::PathLine> lines;
     for (py::handle p : py::reinterpret_borrow<py::iterable>(poses)) lines.push_back(line_of(p, "poses"));
-    const std::vector<api::WalkStep> steps = api::walk(layout, lines);
+    const std::vector<api::WalkStep> steps = api::walk(layout, lines, fps);
     py::list out;
     for (std::size_t k = 0; k < steps.size(); ++k) out.append(step_dict(k, steps[k]));
     return out;

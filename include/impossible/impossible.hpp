@@ -195,6 +195,10 @@ struct WalkStep {
     double forward[3] = {0, 0, 0};                 // the virtual view direction
     Pose virtual_pose;                             // the virtual head as a pose (to render the frame)
     std::optional<std::array<WalkHand, 2>> hands;  // left, right: only for a frame walked with hands
+    // Each moving prop's id and room at the frame's time (walk() with an
+    // fps; `impossible walk`'s "props" key), in layout order; empty from a
+    // Walker's step, which has no time.
+    std::vector<std::pair<std::string, std::string>> props;
 };
 
 // One line of a path file: the physical head, and the two physical hands on
@@ -231,6 +235,9 @@ Expected<std::vector<PathLine>> read_path_lines(const std::string& path);
 std::vector<WalkStep> walk(const Layout& layout, const std::vector<Pose>& physical);
 // The same with the hands of the lines that have them.
 std::vector<WalkStep> walk(const Layout& layout, const std::vector<PathLine>& physical);
+// The same with line k at time k / fps (fps > 0, finite; else every step's
+// props are those at time 0): each step also lists the moving props' rooms.
+std::vector<WalkStep> walk(const Layout& layout, const std::vector<PathLine>& physical, double fps);
 
 // The designer's tools, as their commands.
 struct GenerateRequest {

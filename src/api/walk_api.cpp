@@ -1,9 +1,12 @@
 // impossible::api::Walker and walk: physical head poses through the doors.
+#include <cmath>
 #include <optional>
 
 #include "api/api_data.hpp"
 #include "layout/path_file.hpp"
+#include "links/portal_links.hpp"
 #include "walk/objects.hpp"
+#include "walk/prop_walks.hpp"
 #include "walk/replay.hpp"
 #include "walk/walker.hpp"
 
@@ -99,6 +102,28 @@ std::vector<WalkStep> walk(const Layout& layout, const std::vector<PathLine>& ph
     std::vector<WalkStep> steps;
     steps.reserve(physical.size());
     for (const PathLine& p : physical) steps.push_back(p.hands ? walker.step(p.head, *p.hands) : walker.step(p.head));
+    return steps;
+}
+
+std::vector<WalkStep> walk(const Layout& layout, const std::vector<PathLine>& physical, double fps) {
+    std::vector<WalkStep> steps = walk(layout, physical);
+    const layout::Layout& l = layout.data().layout;
+    const walk::ObjectSet set = walk::build_object_set(l, links::link_portals(l));
+    std::vector<int> moving;  // indices of set.props
+    for (std::size_t k = 0; k < set.props.size(); ++k)
+        if (!set.props[k].motion.keys.empty()) moving.push_back(static_cast<int>(k));
+    if (moving.empty()) return steps;
+    walk::PropWalks walks(set);
+    const bool timed = fps > 0.0 && std::isfinite(fps);
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+        const double time = timed ? static_cast<double>(k) / fps : 0.0;
+        for (const int m : moving) {
+            const walk::DynamicProp& p = set.props[static_cast<std::size_t>(m)];
+            const std::string& id =
+                layout::prop_id(l.rooms[static_cast<std::size_t>(p.room)].props[static_cast<std::size_t>(p.index)]);
+            steps[k].props.emplace_back(id, room_id(l, walks.at(m, time).room));
+        }
+    }
     return steps;
 }
 

@@ -71,3 +71,16 @@ def test_walker_hands_arguments():
         walker.step(start, hands=(start,))
     with pytest.raises(ValueError, match=r"expected 6 numbers .* or 18 .*, got 12"):
         impossible.walk(layout, [start * 2])
+
+
+@pytest.mark.parametrize("fps", [90, 7.5])
+def test_walk_gives_the_moving_props_rooms_as_cli(tmp_path, fps):
+    layout_path = SOURCE_DIR / "layouts" / "sliding_box.json"
+    path = tmp_path / "still.txt"
+    # Standing still at the start for 7 s: the crate goes through the door and back.
+    path.write_text("".join("-1.6 1.6 1.4 -50 0 0\n" for _ in range(int(7 * fps))))
+    out, _ = cli("walk", layout_path, "--path", path, "--fps", fps)
+    expected = [json.loads(line) for line in out.splitlines()]
+    got = impossible.walk(impossible.load(layout_path), impossible.read_path(path), fps=fps)
+    assert got == expected
+    assert {step["props"]["crate"] for step in got} == {"hall", "yard"}
