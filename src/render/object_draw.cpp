@@ -174,11 +174,41 @@ void draw_cell_instances(const DrawContext& ctx, const LevelView& view, const Sc
                       inside);
 }
 
+namespace {
+
+// The level's view narrowed, per eye, to where volume `v` may be seen (two
+// pixels of margin, as props'): its target room is drawn only there.
+LevelView narrowed_to(const DrawContext& ctx, const LevelView& view, const VolumeBox& v) {
+    math::dvec3 corners[8];
+    for (int k = 0; k < 8; ++k) {
+        const double sr = k == 0 || k == 3 || k == 4 || k == 7 ? -1.0 : 1.0;
+        const double su = k % 4 < 2 ? -1.0 : 1.0;
+        const double sn = k < 4 ? 1.0 : -1.0;
+        corners[k] = v.center + sr * v.half.x * v.axes[0] + su * v.half.y * v.axes[1] + sn * v.half.z * v.axes[2];
+    }
+    LevelView narrowed = view;
+    for (EyeView& ev : narrowed.eyes) {
+        const NdcRect rect = box_rect(corners, ev);
+        ev.rect = rect.empty() ? NdcRect::none()
+                               : intersect(widened(rect, 2.0, ctx.frame.eye_width, ctx.frame.eye_height), ev.rect);
+    }
+    return narrowed;
+}
+
+}  // namespace
+
 void draw_volume_rooms(const DrawContext& ctx, const LevelView& view, const Scissor& scissor) {
     const std::vector<VolumeBox>& volumes = ctx.renderer.volumes[static_cast<size_t>(view.cell)];
     for (size_t k = 0; k < volumes.size(); ++k) {
-        draw_volume_room(ctx, view, scissor, volumes[k].target, static_cast<int>(k));
-        draw_cell_instances(ctx, view, scissor, volumes[k].target, static_cast<int>(k));
+        // With culling, the target room is drawn only where the volume may
+        // be seen (the rest of it would be discarded fragment by fragment).
+        const LevelView narrowed = ctx.frame.cull_portals ? narrowed_to(ctx, view, volumes[k]) : view;
+        if (narrowed.eyes[0].rect.empty() && narrowed.eyes[1].rect.empty()) continue;
+        const Scissor within = ctx.frame.cull_portals
+                                   ? portal_scissor(ctx, narrowed, {narrowed.eyes[0].rect, narrowed.eyes[1].rect})
+                                   : scissor;
+        draw_volume_room(ctx, narrowed, within, volumes[k].target, static_cast<int>(k));
+        draw_cell_instances(ctx, narrowed, within, volumes[k].target, static_cast<int>(k));
     }
 }
 

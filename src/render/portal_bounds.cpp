@@ -24,17 +24,13 @@ bool covers_pixel_centre(const NdcRect& rect, int width, int height, int samples
     return samples > 1 || (spans_centre(rect.x0, rect.x1, width) && spans_centre(rect.y0, rect.y1, height));
 }
 
-NdcRect portal_rect(const math::PortalRect& portal, const EyeView& view) {
-    if (!view.active || view.rect.empty()) return NdcRect::none();
-    // An eye in the box's column may see the inner faces (all eight
-    // corners); any other eye sees only the front face, and only from in front.
-    const bool column = math::in_column(portal, view.eye.position);
-    if (!column && math::signed_distance(portal, view.eye.position) <= 0.0) return NdcRect::none();
+namespace {
 
-    math::dvec3 corners[8];
-    math::box_corners(portal, corners);
+// The bound in the eye's image of the first `count` corners of a box (4: its
+// front rectangle's outline; 8: the whole box, corners as math::box_corners
+// orders them), within the eye's rect; none when all lie behind the eye.
+NdcRect bound_corners(const math::dvec3 corners[8], int count, const EyeView& view) {
     math::dvec4 clip[8];
-    const int count = column ? 8 : 4;
     for (int i = 0; i < count; ++i) clip[i] = view.view_proj * math::dvec4(corners[i], 1.0);
 
     // Clip the outline's edges at w = eps (just in front of the eye) and bound
@@ -42,7 +38,7 @@ NdcRect portal_rect(const math::PortalRect& portal, const EyeView& view) {
     // widen the bound (an eye inside the box gets the whole parent rect).
     static constexpr int kEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
                                           {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
-    const int edge_count = column ? 12 : 4;
+    const int edge_count = count == 8 ? 12 : 4;
     const double eps = 1e-9;
     double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
     auto add = [&](const math::dvec4& c) {
@@ -61,6 +57,24 @@ NdcRect portal_rect(const math::PortalRect& portal, const EyeView& view) {
     }
     if (!(x0 <= x1)) return NdcRect::none();  // wholly behind the eye
     return intersect(NdcRect{x0, y0, x1, y1}, view.rect);
+}
+
+}  // namespace
+
+NdcRect portal_rect(const math::PortalRect& portal, const EyeView& view) {
+    if (!view.active || view.rect.empty()) return NdcRect::none();
+    // An eye in the box's column may see the inner faces (all eight
+    // corners); any other eye sees only the front face, and only from in front.
+    const bool column = math::in_column(portal, view.eye.position);
+    if (!column && math::signed_distance(portal, view.eye.position) <= 0.0) return NdcRect::none();
+    math::dvec3 corners[8];
+    math::box_corners(portal, corners);
+    return bound_corners(corners, column ? 8 : 4, view);
+}
+
+NdcRect box_rect(const math::dvec3 corners[8], const EyeView& view) {
+    if (!view.active || view.rect.empty()) return NdcRect::none();
+    return bound_corners(corners, 8, view);
 }
 
 }  // namespace impossible::render

@@ -65,4 +65,8 @@ bool covers_pixel_centre(const NdcRect& rect, int width, int height, int samples
 // away, or lies behind the eye. Conservative (never too small).
 NdcRect portal_rect(const math::PortalRect& portal, const EyeView& eye);
 
+// The part of an eye's image where a box (its eight corners in
+// math::box_corners's order) may be seen, within the eye's rect. Conservative.
+NdcRect box_rect(const math::dvec3 corners[8], const EyeView& eye);
+
 }  // namespace impossible::render
