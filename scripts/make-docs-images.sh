@@ -37,6 +37,10 @@ render crossing-behind crossing.json --room kitchen --pose=-0.4,1.5,-1.8,180,-25
 render sliding_box-2s sliding_box.json --time 2
 render sliding_box-3s sliding_box.json --time 3
 render hands_door hands_door.json --path "$root/layouts/hands_walk.txt" --frame 112
+# The same hands (frame 112's, before any teleport, so physical = virtual) seen
+# from behind the door: their tips are in the garden.
+render hands_door-behind hands_door.json --room hall --pose 0.3,1.4,-0.3,145,-15,0 \
+  --hands=-0.18,1.25,0.0556,0,0,0,0.18,1.25,0.0556,0,0,0
 render scanner_lab scanner_lab.json
 render scanner_lab-side scanner_lab.json --room lab --pose=-2.1,1.5,0.6,-50,-12,0
 
