@@ -57,6 +57,7 @@ struct VolumeView {
 const VolumeView kVolumeViews[] = {
     {"head-on", "lab", {0.0, 1.6, 2.0}, 0.0, -10.0},
     {"edge-on (the eye in a side plane)", "lab", {0.6, 1.6, 1.5}, 0.0, -5.0},
+    {"grazing a side 1 mm off its plane", "lab", {0.601, 1.6, 1.5}, 1.0, -5.0},
     {"from inside the volume", "lab", {0.1, 1.5, -1.0}, 20.0, -20.0},
     {"through the door from the hall", "hall", {0.2, 1.6, 6.5}, 0.0, -5.0},
     {"in the mirror", "lab", {-1.5, 1.6, 1.5}, -75.0, -10.0},
@@ -65,15 +66,18 @@ const VolumeView kVolumeViews[] = {
 TEST(VolumeRender, MatchesTheTracerInEveryView) {
     CrossingRig rig(kVolumeLayout);
     ASSERT_TRUE(rig.renderer);
-    for (const VolumeView& v : kVolumeViews) {
-        render::FrameDesc f = frame_at(rig.layout, v.room, v.position, v.yaw, v.pitch);
-        const image::Image traced = rig.trace(f);
-        for (const render::ClipMode clip : {render::ClipMode::ClipDistance, render::ClipMode::Oblique}) {
-            f.clip = clip;
-            expect_agree(rig.render(f), traced,
-                         std::string(v.what) + (clip == render::ClipMode::Oblique ? " oblique" : ""));
+    for (const VolumeView& v : kVolumeViews)
+        for (const int depth : {1, 8, 64}) {
+            render::FrameDesc f = frame_at(rig.layout, v.room, v.position, v.yaw, v.pitch);
+            f.max_depth = depth;
+            const image::Image traced = rig.trace(f);
+            for (const render::ClipMode clip : {render::ClipMode::ClipDistance, render::ClipMode::Oblique}) {
+                f.clip = clip;
+                expect_agree(rig.render(f), traced,
+                             std::string(v.what) + ", depth " + std::to_string(depth) +
+                                 (clip == render::ClipMode::Oblique ? " oblique" : ""));
+            }
         }
-    }
 }
 
 TEST(VolumeRender, EveryStereoModeSamplesAndPortalTextures) {
