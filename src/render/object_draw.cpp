@@ -41,24 +41,39 @@ scene::CellObject instance_bounds(const scene::ObjectMesh& mesh, const walk::Obj
     return o;
 }
 
-// A cut in the cell's coordinates as a clip distance keeps it: a strict cut
-// (an image keeps d > 0) moved by kStrictCutShift, so that a face lying in
-// the plane (a prop standing against the door) is cut away in the image as
-// the tracer cuts it, instead of being kept by the clipper at d = 0.
-inline constexpr double kStrictCutShift = 1e-6;  // metres, times 1 + |d of the origin|
-math::dvec4 cut_plane(const walk::ObjectCut& cut) {
-    math::dvec4 plane = cut.plane;
-    if (cut.strict) plane.w -= kStrictCutShift * (1.0 + std::abs(plane.w));
+// A cut as a clip distance in the mesh's coordinates (the plane in the
+// cell's through `model`, in double): a strict cut (an image keeps d > 0) is
+// moved by kStrictCutShift towards its kept side, so that a face lying in the
+// plane (a prop standing against the door) is cut away in the image as the
+// tracer cuts it, instead of being kept by the clipper at d = 0. The shift
+// covers float32's rounding of the distance the shader computes, from the
+// mesh's coordinates (measured from its origin), so it scales with the mesh
+// origin's distance from the plane and the mesh's extent, never with the
+// cell's distance from the layout's origin: 1 µm times 1254 m opened a 1.25 mm
+// gap between a hand's own part and its image at a door 1.25 km out.
+inline constexpr double kStrictCutShift = 1e-6;  // metres, times 1 + |d of the mesh origin| + extent
+math::dvec4 mesh_cut_plane(const walk::ObjectCut& cut, const math::dmat4& model, double extent) {
+    math::dvec4 plane = glm::transpose(model) * cut.plane;
+    if (cut.strict) {
+        const double unit = glm::length(math::dvec3(plane));  // metres of d per mesh unit (a model's scale)
+        plane.w -= kStrictCutShift * (1.0 + std::abs(plane.w) + extent * unit);
+    }
     return plane;
 }
 
+// The largest coordinate of a mesh's vertices, measured from its origin.
+double mesh_extent(const scene::ObjectMesh& mesh) {
+    const math::dvec3 far = glm::max(glm::abs(mesh.lo - mesh.origin), glm::abs(mesh.hi - mesh.origin));
+    return std::max({far.x, far.y, far.z});
+}
+
 // The per-instance uniforms of a variant with kObjectCuts.
-void set_instance_uniforms(const SceneProgram& program, const walk::ObjectInstance& inst, const math::dmat4& model) {
+void set_instance_uniforms(const SceneProgram& program, const walk::ObjectInstance& inst, const math::dmat4& model,
+                           double extent) {
     float planes[2][4];
     for (int k = 0; k < 2; ++k) {
-        const math::dvec4 plane = k < inst.cut_count
-                                      ? glm::transpose(model) * cut_plane(inst.cuts[static_cast<size_t>(k)])
-                                      : math::dvec4(0.0, 0.0, 0.0, 1.0);
+        const math::dvec4 plane = k < inst.cut_count ? mesh_cut_plane(inst.cuts[static_cast<size_t>(k)], model, extent)
+                                                     : math::dvec4(0.0, 0.0, 0.0, 1.0);
         for (int c = 0; c < 4; ++c) planes[k][c] = static_cast<float>(plane[c]);
     }
     const glm::mat3 rotation(math::dmat3(inst.to_cell));
@@ -86,10 +101,11 @@ void draw_instance(const DrawContext& ctx, const LevelView& view, const Scissor&
     const scene::ObjectMesh& mesh =
         r.object_meshes[static_cast<size_t>(ctx.scratch.objects.mesh[static_cast<size_t>(i)])];
     const math::dmat4 model = inst.to_cell * glm::translate(math::dmat4(1.0), mesh.origin);
+    const double extent = mesh_extent(mesh);
     for (const scene::DrawBatch& b : mesh.batches) {
         const SceneProgram& program = cell_program(ctx, view.cell, kObjectCuts | (has_material(b) ? kMaterials : 0u));
         set_model_uniforms(ctx, view, program, {view.eyes[0].rect, view.eyes[1].rect}, model, glm::vec3(0.0f));
-        set_instance_uniforms(program, inst, model);
+        set_instance_uniforms(program, inst, model, extent);
         set_cell_id(program, static_cast<unsigned>(id_cell + 1), false);
         set_volume_uniforms(ctx, view, program, model, inside);
         if (has_material(b)) set_material(ctx, program, b);
