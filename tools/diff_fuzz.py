@@ -588,30 +588,26 @@ class Case(ObjectCases):
                 "rooms": self.rooms, "portals": self.portals}
 
     def open_to_nothing(self):
-        """Whether a portal's rectangle (a volume's box) reaches outside its
-        own room (by more than 1 µm): looking through its partner, a ray then
-        leaves the room through that part and rightly meets nothing (id 0).
-        In a layout where no portal does, every ray stays in closed rooms, and
-        id 0 anywhere is a crack."""
+        """Whether a portal's rectangle reaches outside its own room (by more
+        than 1 µm): looking through its partner, a ray then leaves the room
+        through that part and rightly meets nothing (id 0). In a layout where
+        no portal does, every ray stays in closed rooms, and id 0 anywhere is
+        a crack."""
         rooms = {room["id"]: room for room in self.rooms}
         for p in self.portals:
-            # A volume's box reaching outside its room: a ray that meets the
-            # room's wall inside the volume (hidden) and entered the volume
-            # past its target's wall, or left the target within the volume,
-            # also rightly meets nothing (seed 22, case 7429).
-            depths = (-0.5, 0.5) if p.get("kind") == "volume" else (0.0,)
+            if p.get("kind") == "volume":
+                continue
             n = p["normal"]
             up = p.get("up", [0.0, 1.0, 0.0])
             right = [up[1] * n[2] - up[2] * n[1], up[2] * n[0] - up[0] * n[2], up[0] * n[1] - up[1] * n[0]]
             room = rooms[p["room"]]
             for sr in (-0.5, 0.5):
                 for su in (-0.5, 0.5):
-                    for sn in depths:
-                        corner = [p["center"][a] + sr * p["width"] * right[a] + su * p["height"] * up[a]
-                                  + sn * p.get("depth", 0.0) * n[a] for a in range(3)]
-                        if any(corner[a] < room["min"][a] - 1e-6 or corner[a] > room["max"][a] + 1e-6
-                               for a in range(3)):
-                            return True
+                    corner = [p["center"][a] + sr * p["width"] * right[a] + su * p["height"] * up[a]
+                              for a in range(3)]
+                    if any(corner[a] < room["min"][a] - 1e-6 or corner[a] > room["max"][a] + 1e-6
+                           for a in range(3)):
+                        return True
         return False
 
     def eyes(self, ipd=0.064):
