@@ -683,9 +683,15 @@ def read_grey_png(path):
 
 def thin_at(img, x, y):
     """The id at (x, y) differs from both neighbours across one axis: a
-    feature one pixel thin there."""
+    feature one pixel thin there. An eye image's edge (the side-by-side
+    image's sides and the seam between the eyes, x = w/2) counts as a
+    differing neighbour: a feature one pixel wide against it is what the
+    frustum leaves of something that may be thinner still."""
     h, w, v = len(img), len(img[0]), img[y][x]
-    across_x = 0 < x < w - 1 and img[y][x - 1] != v and img[y][x + 1] != v
+    half = w // 2
+    left = x == 0 or x == half or img[y][x - 1] != v
+    right = x == w - 1 or x == half - 1 or img[y][x + 1] != v
+    across_x = left and right and not (x in (0, half) and x + 1 in (half, w))
     across_y = 0 < y < h - 1 and img[y - 1][x] != v and img[y + 1][x] != v
     return across_x or across_y
 
