@@ -11,7 +11,9 @@
 #include "walk/objects.hpp"
 #include "walk/walk_test_layouts.hpp"
 
-namespace impossible::walk {
+// A namespace of its own: the unity build compiles this file with the
+// other walk tests, which name their rooms kHall and kAnnex too.
+namespace impossible::walk::objects_test {
 namespace {
 
 using glm::dvec3;
@@ -213,4 +215,4 @@ TEST(PlaceObjects, AFastStepThroughTwoDoorsInOneSegment) {
 }
 
 }  // namespace
-}  // namespace impossible::walk
+}  // namespace impossible::walk::objects_test
