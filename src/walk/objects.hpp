@@ -125,10 +125,13 @@ struct PropState {
 // through a door and back — the periods repeat and are skipped; the states
 // of the first kMaxRememberedPeriods periods are remembered for this.
 // A motion that never repeats (a loop through doors that turn it a little
-// more each period) walks at most kMaxWalkedPeriods whole periods; past
-// them the remaining periods are not walked (docs/bounded-work.md).
+// more each period) walks at most kMaxWalkedPeriods whole periods, and at
+// most kMaxWalkedKeySteps walker steps in them (so a 10,000-key loop walks
+// 100 periods); past them the remaining periods are not walked
+// (docs/bounded-work.md).
 inline constexpr std::size_t kMaxRememberedPeriods = 16;
 inline constexpr double kMaxWalkedPeriods = 1e5;
+inline constexpr double kMaxWalkedKeySteps = 1e6;
 PropState walk_prop(const ObjectSet& set, int prop, double time);
 
 // A hand placed for a frame: its room and the transform of its frame into

@@ -57,12 +57,16 @@ bool walked_past(const Cursor& c, const DynamicProp& p, double periods, double r
 // How many periods a looping motion's walk takes for `periods` whole ones:
 // once a repeat is known, those up to it and then the rest of the cycle;
 // before, at most kMaxWalkedPeriods.
-double PropWalks::target_periods(const Cursor& c, double periods) const {
+double PropWalks::target_periods(const Cursor& c, double periods, std::size_t keys) const {
     if (c.repeats && periods > c.repeat_at) {
         const double left = std::fmod(periods - c.repeat_at, c.cycle);
         return c.repeat_at + (left > 0.0 ? std::ceil(left) : 0.0);
     }
-    return std::min(periods, kMaxWalkedPeriods);
+    // A motion that never repeats walks at most kMaxWalkedKeySteps walker
+    // steps in whole periods (each its keys and the wrap), and never more
+    // than kMaxWalkedPeriods periods.
+    const double by_steps = std::max(1.0, std::floor(kMaxWalkedKeySteps / static_cast<double>(keys)));
+    return std::min(periods, std::min(kMaxWalkedPeriods, by_steps));
 }
 
 // Walks whole periods (each the rest of the keys, then the wrap to the first
@@ -70,7 +74,7 @@ double PropWalks::target_periods(const Cursor& c, double periods) const {
 // state is compared with those after the earlier periods.
 void PropWalks::walk_periods(Cursor& c, const DynamicProp& p, double periods) const {
     const std::vector<layout::MotionKey>& keys = p.motion.keys;
-    while (c.periods < target_periods(c, periods)) {
+    while (c.periods < target_periods(c, periods, keys.size())) {
         step_keys(c, p, keys.back().t);
         c.walker->step(key_pose(p, 0));
         c.periods += 1.0;
@@ -104,8 +108,8 @@ PropState PropWalks::at(int prop, double time) {
         const double period = keys.back().t;
         periods = std::floor(t / period);
         rest = t - periods * period;
-        if (walked_past(c, p, target_periods(c, periods), rest)) {
-            const double target = target_periods(c, periods);
+        if (walked_past(c, p, target_periods(c, periods, keys.size()), rest)) {
+            const double target = target_periods(c, periods, keys.size());
             if (c.repeats && target >= c.repeat_at) {
                 c.walker = c.at_repeat;
                 c.periods = c.repeat_at;

@@ -52,7 +52,7 @@ private:
     };
 
     void start(Cursor& c, const DynamicProp& p) const;
-    double target_periods(const Cursor& c, double periods) const;
+    double target_periods(const Cursor& c, double periods, std::size_t keys) const;
     void walk_periods(Cursor& c, const DynamicProp& p, double periods) const;
 
     const ObjectSet* set_;
