@@ -17,39 +17,6 @@ uniform float u_alpha_cutoff; // alpha below it is not a surface; < 0: opaque
 uniform bool u_mip_level0;    // colour from mip level 0 too (render::FrameDesc::textures_mip_level0)
 #endif
 
-#if defined(VOLUMES)
-// The cell's volume portals: four vec4s each in one buffer of every room's
-// (render::RendererData::volume_boxes), from u_volume_first: the box's centre
-// and its three axes divided by its half extents, so that a point is inside
-// when |dot(p - centre, axis)| <= 1 for all three.
-in vec3 v_volume_position;
-layout(std430, binding = 3) readonly buffer VolumeBoxes {
-    vec4 volume_boxes[];
-};
-uniform int u_volume_first;
-uniform int u_volume_count;
-// -1: the cell's own surfaces, hidden inside every volume; k >= 0: a volume's
-// target room, shown only inside volume k.
-uniform int u_volume_inside;
-uniform vec3 u_volume_tint;  // multiplies what is seen inside the volume
-
-bool in_volume(int k) {
-    int b = 4 * (u_volume_first + k);
-    vec3 d = v_volume_position - volume_boxes[b].xyz;
-    vec3 q = abs(vec3(dot(d, volume_boxes[b + 1].xyz), dot(d, volume_boxes[b + 2].xyz), dot(d, volume_boxes[b + 3].xyz)));
-    return max(q.x, max(q.y, q.z)) <= 1.0 + VOLUME_TOLERANCE;
-}
-
-void clip_to_volumes() {
-    if (u_volume_inside >= 0) {
-        if (!in_volume(u_volume_inside)) discard;
-        return;
-    }
-    for (int k = 0; k < u_volume_count; ++k)
-        if (in_volume(k)) discard;
-}
-#endif
-
 uniform uint u_cell_id;
 uniform bool u_unshaded;  // portal fill at the recursion limit: flat colour
 

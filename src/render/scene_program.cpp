@@ -66,8 +66,11 @@ void find_variant_uniforms(const SceneVariant& variant, gl::UniformLocations& u,
 }
 
 Result<SceneProgram> link_scene_program(const SceneVariant& variant, const std::string& defines) {
-    const std::vector<gl::ShaderSource> stages = {embedded_shader(GL_VERTEX_SHADER, "shaders/scene.vert.glsl"),
-                                                  embedded_shader(GL_FRAGMENT_SHADER, variant.fragment)};
+    std::vector<gl::ShaderSource> stages = {embedded_shader(GL_VERTEX_SHADER, "shaders/scene.vert.glsl"),
+                                            embedded_shader(GL_FRAGMENT_SHADER, variant.fragment)};
+    // The volume test, shared by both fragment shaders, goes before the
+    // fragment shader's own text (whose lines keep their numbers).
+    stages[1].text = std::string(embedded::find("shaders/volume_clip.frag.glsl")) + "\n#line 1\n" + stages[1].text;
     Result<gl::Program> built = gl::build_program(stages, defines + variant_defines(variant));
     if (!built) return built;
     SceneProgram p;
