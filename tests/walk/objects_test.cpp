@@ -37,19 +37,6 @@ layout::BoxProp box(dvec3 lo, dvec3 hi) {
     return b;
 }
 
-// "hall" with a door in its +x wall at x = 2; its partner stands in the -z
-// wall of "annex" (far away, x 10..14), so the door turns what passes it by
-// 90°: the hall's +x becomes the annex's +z.
-layout::Layout turned_door() {
-    layout::Layout l = empty_layout("turned door");
-    const int hall = add_room(l, "hall", {-2, 0, -2}, {2, 3, 2});
-    const int annex = add_room(l, "annex", {10, 0, -2}, {14, 3, 2});
-    add_pair(l, "hall_east", hall, make_rect({2, 1.1, 0}, {-1, 0, 0}, 1.0, 2.2), "annex_north", annex,
-             make_rect({12, 1.1, -2}, {0, 0, 1}, 1.0, 2.2));
-    l.start = {hall, {0, 1.6, 1}, 0.0};
-    return l;
-}
-
 constexpr int kHall = 0;
 constexpr int kAnnex = 1;
 

@@ -80,18 +80,6 @@ PropState ref_walk_prop(const ObjectSet& set, int prop, double time) {
     return state;
 }
 
-// "hall" with a door in its +x wall at x = 2 whose partner stands in the -z
-// wall of "annex": what passes it turns by 90°.
-layout::Layout pw_turned_door() {
-    layout::Layout l = empty_layout("turned door");
-    const int hall = add_room(l, "hall", {-2, 0, -2}, {2, 3, 2});
-    const int annex = add_room(l, "annex", {10, 0, -2}, {14, 3, 2});
-    add_pair(l, "hall_east", hall, make_rect({2, 1.1, 0}, {-1, 0, 0}, 1.0, 2.2), "annex_north", annex,
-             make_rect({12, 1.1, -2}, {0, 0, 1}, 1.0, 2.2));
-    l.start = {hall, {0, 1.6, 1}, 0.0};
-    return l;
-}
-
 layout::BoxProp pw_box(const std::string& id, std::vector<layout::MotionKey> keys, bool loop) {
     layout::BoxProp b;
     b.min = {0.5, 0.0, -0.2};
@@ -108,7 +96,7 @@ layout::BoxProp pw_box(const std::string& id, std::vector<layout::MotionKey> key
 // stays in the annex (a repeat after two periods, of one); a loop that
 // never crosses; a prop of one key.
 ObjectSet pw_set() {
-    layout::Layout l = pw_turned_door();
+    layout::Layout l = turned_door();
     std::vector<layout::MotionKey> zigzag;
     for (int k = 0; k <= 40; ++k)
         zigzag.push_back({0.25 * k, {k % 4 == 1 || k % 4 == 2 ? 3.0 : 0.2 * (k % 3), 0.0, 0.05 * (k % 5)}});
@@ -207,7 +195,7 @@ TEST(PropWalks, PlaceObjectsGivesTheSameInstancesWithOrWithoutWalks) {
 // A long motion walked frame by frame costs the keys passed, not all the
 // keys from t = 0 each frame: 20 000 frames of a 10 000-key motion.
 TEST(PropWalks, SuccessiveFramesOfALongMotionWalkOnlyTheNewKeys) {
-    layout::Layout l = pw_turned_door();
+    layout::Layout l = turned_door();
     std::vector<layout::MotionKey> keys;
     for (int k = 0; k < 10000; ++k) keys.push_back({0.01 * k, {(k % 2) * 0.1, 0.0, 0.0}});
     l.rooms[0].props = {pw_box("long", keys, false)};

@@ -65,6 +65,19 @@ inline layout::Layout doorway() {
     return l;
 }
 
+// "hall" with a door in its +x wall at x = 2 whose partner stands in the -z
+// wall of "annex" (far away, x 10..14), so the door turns what passes it by
+// 90°: the hall's +x becomes the annex's +z.
+inline layout::Layout turned_door() {
+    layout::Layout l = empty_layout("turned door");
+    const int hall = add_room(l, "hall", {-2, 0, -2}, {2, 3, 2});
+    const int annex = add_room(l, "annex", {10, 0, -2}, {14, 3, 2});
+    add_pair(l, "hall_east", hall, make_rect({2, 1.1, 0}, {-1, 0, 0}, 1.0, 2.2), "annex_north", annex,
+             make_rect({12, 1.1, -2}, {0, 0, 1}, 1.0, 2.2));
+    l.start = {hall, {0, 1.6, 1}, 0.0};
+    return l;
+}
+
 // A pair whose transfer matrix is not exactly representable: A in "r0"
 // turned 37°, B in "r1" turned -71.3°, both at irrational-ish centres.
 inline layout::Layout skewed_pair() {
