@@ -14,7 +14,7 @@ import re
 import sys
 
 LAYERS = [
-    "base", "math", "image", "assets", "layout", "shading", "links", "walk",
+    "base", "math", "image", "assets", "layout", "shading", "links", "lights", "walk",
     "scene", "gl", "render", "trace", "design", "api", "cli", "preview", "bench", "app",
 ]
 

@@ -33,6 +33,9 @@ struct GltfModel {
     std::vector<Material> materials;
     std::vector<Texture> textures;
     std::size_t texels = 0;  // decoded, all images together (each once)
+    // KHR_lights_punctual point and spot lights of the default scene's nodes,
+    // in the model's coordinates (layout-format.md, "Lights").
+    std::vector<ModelLight> lights;
     // Every file read: the model's own path first, then its buffers and
     // images as tinygltf opened them (in the model's folder).
     std::vector<std::string> files;

@@ -65,4 +65,18 @@ struct ModelTriangle {
     int material = -1;               // into the model's materials; -1: the default (grey, opaque, one-sided)
 };
 
+// A light of glTF's KHR_lights_punctual extension (point or spot), placed by
+// its node: in the model's own coordinates, like ModelTriangle. Directional
+// lights are not kept (layout-format.md, "Lights", has none).
+struct ModelLight {
+    glm::dvec3 position{0.0};
+    glm::dvec3 direction{0.0, 0.0, -1.0};  // a spot's axis (the node's -Z), unit
+    glm::dvec3 color{1.0};
+    double intensity = 1.0;  // candela
+    double range = 0.0;      // 0: no limit
+    bool spot = false;
+    double inner_cone_rad = 0.0;                 // glTF's innerConeAngle, radians
+    double outer_cone_rad = 0.7853981633974483;  // glTF's outerConeAngle (default pi/4)
+};
+
 }  // namespace impossible::assets

@@ -63,6 +63,7 @@ struct GltfProp {
     std::vector<assets::Texture> textures;         // those the materials use, by Material::texture
     std::string id;                                // optional ("" none); unique among the layout's props
     Motion motion;
+    std::vector<assets::ModelLight> lights;  // read by the loader; kept only under "lighting": "lights"
 };
 
 // The prop's model → layout transform: scale, then yaw about +Y, then move.
@@ -100,6 +101,32 @@ struct Volume {
     glm::dvec3 tint{1.0};
 };
 
+// layout-format.md, "Lights": a point light, or a spot with a cone.
+struct Spot {
+    glm::dvec3 direction{0.0, -1.0, 0.0};  // unit (normalised on load)
+    double inner_deg = 0.0;
+    double outer_deg = 45.0;  // > inner_deg, <= 90
+};
+
+struct Light {
+    glm::dvec3 position{0.0};  // strictly inside its room
+    glm::dvec3 color{1.0};     // 0..1 per channel
+    double intensity = 1.0;    // candela (KHR_lights_punctual's units)
+    double range = 0.0;        // where it fades to nothing; 0: no limit
+    std::optional<Spot> spot;  // none: a point light
+    // The glTF prop (index into its room's props) whose KHR_lights_punctual
+    // light this is, posed with the prop at rest; -1: written in `lights`.
+    int prop = -1;
+};
+
+// Top-level `lighting`: the built-in light of every room, or each room's
+// ambient and lights (with light passing through portals).
+enum class Lighting { Fixed, Lights };
+
+inline constexpr int kDefaultLightDepth = 2;
+inline constexpr int kMaxLightDepth = 16;
+inline const glm::dvec3 kDefaultAmbient{0.1, 0.1, 0.1};
+
 struct Room {
     std::string id;
     glm::dvec3 min{0.0};
@@ -112,6 +139,9 @@ struct Room {
     std::array<std::shared_ptr<const image::Pixels>, kFaceCount> face_texture{};  // RGBA
     double texture_size = 1.0;
     std::vector<Prop> props;
+    // Only under "lighting": "lights" (layout-format.md, "Lights").
+    glm::dvec3 ambient = kDefaultAmbient;
+    std::vector<Light> lights;  // `lights` in file order, then those of its glTF props in prop order
 };
 
 // layout-format.md, "Mirrors and windows": a door is walked through, a mirror
@@ -164,6 +194,8 @@ struct Layout {
     std::vector<Portal> portals;  // doors, mirrors and windows (volumes are in `volumes`)
     std::vector<Volume> volumes;  // in file order
     HandShape hands;
+    Lighting lighting = Lighting::Fixed;
+    int light_depth = kDefaultLightDepth;  // 0..kMaxLightDepth; read only under Lighting::Lights
     // Every file the loader read besides the layout itself, in order: room
     // textures, glTF models and their buffers and images.
     std::vector<assets::FileRead> files_read;

@@ -35,6 +35,9 @@ struct View {
     // none: no hands are drawn. Each hand's room is found by walking from
     // the head centre to it (walk/objects.hpp).
     std::optional<std::array<math::HeadPose, 2>> hands;
+    // --light-depth: replaces the layout's light_depth under "lighting":
+    // "lights" (cli.md); none: the layout's. No effect on "fixed" layouts.
+    std::optional<int> light_depth;
 };
 
 }  // namespace impossible::math

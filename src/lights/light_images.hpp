@@ -1,0 +1,74 @@
+// The light paths of layout-format.md, "Lights", enumerated per lit room on
+// the CPU, for the rasteriser: every image of every light that may reach a
+// surface of room C through at most `light_depth` portals, with the portal
+// rectangles (apertures) a shadow ray must pass, mapped into C's coordinates.
+// The fragment shader then lights a point p by an image only if the segment
+// from p to the image passes its apertures in order (and meets no blocker):
+// exact for convex rooms and portals. Props' shadows are the shadow maps'
+// (render/shadow_maps.hpp). The tracer follows shadow rays on its own and
+// does not use this (it is the oracle this is checked against).
+#pragma once
+
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "layout/layout.hpp"
+#include "links/portal_links.hpp"
+#include "math/portal.hpp"
+
+namespace impossible::lights {
+
+// A portal rectangle that a light path passes, in the lit room's
+// coordinates. The shadow ray from the surface crosses it from its front
+// side (rect.normal points towards the surface's side); depth is 0 (a door
+// box counts as its front rectangle for every shadow ray).
+struct Aperture {
+    math::PortalRect rect;
+    int portal = -1;       // index into Layout::portals: the portal the shadow ray meets
+    bool reflect = false;  // a mirror, or a window's reflected branch (else: through)
+};
+
+// A portal rectangle standing free in a room of the path (not a hole in a
+// face), which would block a shadow ray meeting it, on leg `leg`: leg 0 runs
+// from the surface to aperture 0, leg i from aperture i-1 to aperture i, the
+// last (leg == apertures.size()) from the last aperture to the light.
+struct Blocker {
+    math::PortalRect rect;  // in the lit room's coordinates, depth 0
+    int portal = -1;
+    int leg = 0;
+};
+
+// One image of a light as the surfaces of a room C see it:
+// L' = M⁻¹ · L with M = M_k · … · M_1 mapping C's coordinates to the light's
+// room R's (k = apertures.size(); k = 0: a light of C itself, seen directly).
+struct LightImage {
+    int light_room = -1;       // R, index into Layout::rooms
+    int light = -1;            // index into rooms[R].lights
+    glm::dvec3 position{0.0};  // L', in C's coordinates
+    // The spot's axis mapped into C's coordinates (M⁻¹ applied as a
+    // direction; M is orthogonal, so dot(axis, -w) is dot(s, -w_L)).
+    glm::dvec3 spot_direction{0.0, -1.0, 0.0};
+    glm::dvec3 factor{1.0};            // product of the portals' factors along the path
+    std::vector<int> rooms;            // the rooms the legs run in: C first, R last (apertures.size() + 1)
+    std::vector<math::dmat4> to_room;  // per leg: C's coordinates to that leg's room's (to_room[0] = identity)
+    std::vector<Aperture> apertures;   // P1 … Pk, P1 nearest the surface
+    std::vector<Blocker> blockers;
+};
+
+// The images that may light room C, in a fixed order: by path length, then
+// depth-first in the order of the rooms' portals and lights.
+struct RoomLights {
+    glm::dvec3 ambient{0.0};
+    std::vector<LightImage> images;
+};
+
+// Every room's images at the given light depth (0..kMaxLightDepth), culled:
+// paths whose factor falls below shading::kMinLightFactor (largest channel),
+// paths whose apertures no straight segment passes in order (checked by
+// clipping each aperture with the cone from the light's image through the
+// next), and paths that end beyond the light's range. Empty for a "fixed"
+// layout. Valid layouts only (from the loader).
+std::vector<RoomLights> light_images(const layout::Layout& layout, const links::PortalLinks& links, int light_depth);
+
+}  // namespace impossible::lights
