@@ -44,6 +44,10 @@ inline constexpr double kNearStandard = layout::limits::kNearStandard;    // 1 c
 // The default budget of portal passes per frame (--max-portal-passes).
 inline constexpr int kDefaultMaxPortalPasses = math::kDefaultMaxPortalPasses;
 
+// Cube shadow maps' texels per face side (--shadow-size, FrameDesc).
+inline constexpr int kDefaultShadowMapSize = 512;
+inline constexpr int kMaxShadowMapSize = 4096;
+
 // The view (scene/view.hpp) and how the rasteriser draws it.
 // View::max_portal_passes is the frame's budget: past it, portals show the
 // fill colour (FrameStats::budget_fills). Only a frame that needs more changes.
@@ -93,6 +97,12 @@ struct FrameDesc : math::View {
     // (docs/accuracy.md, "Anti-aliasing"). A count the driver does not offer
     // is an error.
     int samples = 1;
+    // Under "lighting": "lights" (layout-format.md, "Lights"): the shadows
+    // props cast, from cube shadow maps of shadow_map_size² texels per face
+    // and light image (render/shadow_maps.hpp); off (or a size of 0): light
+    // passes props as if they were not there. No effect on "fixed" layouts.
+    bool shadows = true;
+    int shadow_map_size = kDefaultShadowMapSize;
 };
 
 inline double near_distance(const FrameDesc& frame) {
@@ -109,6 +119,8 @@ struct FrameStats {
     int portal_fills = 0;          // portals shown as the flat fill (depth limit or budget)
     int budget_fills = 0;          // of those, the ones drawn so because max_portal_passes was spent
     int max_level_reached = 0;
+    int light_images = 0;       // lit layouts: light images of the cells drawn, summed over the cells' draws
+    int shadow_maps_drawn = 0;  // cube shadow maps (re)drawn this frame
     // Only with FrameDesc::profile:
     long colour_fragments = 0;  // samples that passed every test in the colour passes (Scene,
                                 // PortalFill): fragments written to the colour buffer
