@@ -49,9 +49,28 @@ struct MeshInstance {
     glm::dmat4 world{1.0};
 };
 
+// A node that holds a KHR_lights_punctual light ({"light": N} in its
+// extensions; N not yet checked), with its transform.
+struct LightInstance {
+    int node = -1;
+    const tinygltf::Value* light = nullptr;  // the extension's "light" value
+    glm::dmat4 world{1.0};
+};
+
 // Walks the default scene's node tree (iteratively, each node once): the
-// nodes with a mesh, in document order of the tree.
-Result<std::vector<MeshInstance>> collect_instances(const tinygltf::Model& model);
+// nodes with a mesh, in document order of the tree; the nodes with a light
+// are appended to `lights` in the same order.
+Result<std::vector<MeshInstance>> collect_instances(const tinygltf::Model& model, std::vector<LightInstance>& lights);
+
+// --- gltf_lights.cpp
+
+// The point and spot lights of the nodes `lights` (layout-format.md,
+// "Lights"), in the model's coordinates: position the node's origin, a
+// spot's axis its -Z. Directional lights are skipped (a layout has none).
+// Errors name the node or the light: an index that does not exist, an
+// unknown type, a colour outside 0..1, an intensity not > 0, a range not
+// > 0, a cone not 0 <= inner < outer <= pi/2, or more than kMaxModelLights.
+Result<std::vector<ModelLight>> read_lights(const tinygltf::Model& model, const std::vector<LightInstance>& lights);
 
 // --- gltf_primitives.cpp
 

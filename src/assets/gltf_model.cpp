@@ -73,8 +73,8 @@ Result<void> check_parsed(const tinygltf::Model& model) {
     if (model.asset.version.rfind("2.", 0) != 0) {
         return Error{"is glTF version " + quote(model.asset.version) + "; only 2.0 is supported"};
     }
-    if (!model.extensionsRequired.empty()) {  // check_gltf_document refused them already
-        return Error{"requires the unsupported glTF extension " + quote(model.extensionsRequired.front())};
+    for (const std::string& name : model.extensionsRequired) {  // check_gltf_document refused them already
+        if (name != "KHR_lights_punctual") return Error{"requires the unsupported glTF extension " + quote(name)};
     }
     return {};
 }
@@ -113,14 +113,18 @@ Result<GltfModel> load_model(const std::string& path, std::size_t max_triangles)
         return parsed;
     }
     if (Result<void> checked = check_parsed(model); !checked) return checked;
-    const Result<std::vector<MeshInstance>> instances = collect_instances(model);
+    std::vector<LightInstance> light_nodes;
+    const Result<std::vector<MeshInstance>> instances = collect_instances(model, light_nodes);
     if (!instances) return instances;
+    Result<std::vector<ModelLight>> lights = read_lights(model, light_nodes);
+    if (!lights) return lights;
 
     std::size_t triangles = 0;
     const Result<PrimitiveWork> work = read_primitives(model, *instances, max_triangles, triangles);
     if (!work) return work;
     GltfModel out;
     out.files = std::move(files);
+    out.lights = std::move(*lights);
     out.triangles.reserve(triangles);
     for (const auto& [data, instance] : *work) {
         if (Result<void> emitted = emit_triangles(data, instance, out.triangles); !emitted) return emitted;

@@ -131,7 +131,7 @@ Result<std::vector<int>> scene_roots(const tinygltf::Model& model) {
 
 }  // namespace
 
-Result<std::vector<MeshInstance>> collect_instances(const tinygltf::Model& model) {
+Result<std::vector<MeshInstance>> collect_instances(const tinygltf::Model& model, std::vector<LightInstance>& lights) {
     std::vector<MeshInstance> out;
     const std::size_t node_count = model.nodes.size();
     const Result<std::vector<int>> roots = scene_roots(model);
@@ -167,6 +167,11 @@ Result<std::vector<MeshInstance>> collect_instances(const tinygltf::Model& model
                 return Error{"refers to mesh " + std::to_string(node.mesh) + ", which does not exist"};
             }
             out.push_back({item.node, node.mesh, world});
+        }
+        if (const auto ext = node.extensions.find("KHR_lights_punctual"); ext != node.extensions.end()) {
+            if (ext->second.IsObject() && ext->second.Has("light")) {
+                lights.push_back({item.node, &ext->second.Get("light"), world});
+            }
         }
         for (auto c = node.children.rbegin(); c != node.children.rend(); ++c) {
             stack.push_back({*c, world, item.depth + 1});

@@ -44,13 +44,15 @@ std::string bad_reference(const json& object, const char* key, std::size_t count
 Result<void> check_extensions(const json& doc) {
     const auto required = doc.find("extensionsRequired");
     if (required == doc.end() || !required->is_array() || required->empty()) return {};
-    // The loader implements no extension: every required one is refused.
+    // The loader implements only KHR_lights_punctual (its point and spot
+    // lights): every other required extension is refused.
     std::string names;
     bool draco = false;
     std::size_t listed = 0;
     for (const json& name : *required) {
         if (!name.is_string()) continue;
         const std::string& text = name.get_ref<const std::string&>();
+        if (text == "KHR_lights_punctual") continue;
         draco = draco || text == "KHR_draco_mesh_compression";
         if (listed == 5) {
             names += " and more";

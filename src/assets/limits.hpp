@@ -22,6 +22,10 @@ inline constexpr std::size_t kMaxModelBytes = 256u << 20;  // 256 MiB
 inline constexpr std::size_t kMaxModelTriangles = 1'000'000;
 inline constexpr std::size_t kMaxLayoutTriangles = 2'000'000;  // all props of a layout together
 inline constexpr std::size_t kMaxNodeDepth = 64;
+// KHR_lights_punctual: the point and spot lights a model's nodes place, and
+// a light's intensity (candela; a layout's lights have the same bound).
+inline constexpr std::size_t kMaxModelLights = 1'000;
+inline constexpr double kMaxLightIntensity = 1e9;
 // A model's JSON (a .gltf file, a .glb's JSON chunk), checked before tinygltf
 // parses it: tinygltf copies `extras` and `extensions` recursively, so deep
 // nesting overflows the stack, and every value costs it about 100 bytes. A

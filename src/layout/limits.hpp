@@ -31,6 +31,12 @@ inline constexpr std::size_t kMaxPlayAreaCorners = 10'000;
 inline constexpr std::size_t kMaxMotionKeys = 10'000;
 inline constexpr double kMaxMotionTime = 1e6;  // about 11.6 days
 
+// Lights (layout-format.md, "Lights"): a room's lights, its glTF props'
+// included, bound the rasteriser's light images; intensity (candela) and
+// ambient bound the sums (anything past 1 already saturates).
+inline constexpr std::size_t kMaxLightsPerRoom = 1'000;  // kMaxLightIntensity: assets/limits.hpp
+inline constexpr double kMaxAmbient = 1e3;
+
 // Coordinates and lengths, in metres. Renderers draw in single precision, so
 // lengths below a
 // micrometre (widths, heights, depths, room and box extents, checker squares)

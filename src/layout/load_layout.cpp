@@ -213,13 +213,16 @@ void read_layout(Checker& check, const json& root, const std::string& base_dir, 
         check.error(top, "a layout must be a JSON object (got " + detail::json_type_name(root) + ")");
         return;
     }
-    check.check_fields(top, root, {"format", "version", "name", "play_area", "start", "rooms", "portals", "hands"},
-                       {"format", "version", "start", "rooms"});
+    check.check_fields(
+        top, root,
+        {"format", "version", "name", "play_area", "start", "rooms", "portals", "hands", "lighting", "light_depth"},
+        {"format", "version", "start", "rooms"});
     read_header(check, root, layout);
 
     assets::AssetCache models(base_dir);
     std::vector<detail::RoomDraft> rooms;
     if (const json* v = field(root, "rooms")) rooms = detail::read_rooms(check, top / "rooms", *v, models);
+    detail::read_lighting(check, root, rooms, layout);
     StartDraft start;
     if (const json* v = field(root, "start")) start = read_start(check, top / "start", *v);
     std::vector<detail::PortalDraft> portals;
@@ -235,6 +238,10 @@ void read_layout(Checker& check, const json& root, const std::string& base_dir, 
     link_start(check, start, rooms, rooms_known);
     std::optional<HandShape> hands;
     if (const json* v = field(root, "hands")) hands = detail::read_hands(check, top / "hands", *v, models);
+    if (!check.has_errors()) {
+        detail::add_prop_lights(check, rooms, layout.lighting == Lighting::Lights, hands);
+        detail::warn_lights_in_props(check, rooms);
+    }
 
     if (check.has_errors()) return;
     layout.start = start.start;

@@ -223,6 +223,7 @@ bool load_gltf_model(Checker& check, const Path& gltf_at, const json& gltf, asse
     prop.triangles = model->triangles;
     prop.materials = model->materials;
     prop.textures = model->textures;  // the images are shared, not copied
+    prop.lights = model->lights;      // kept under "lighting": "lights" only (add_prop_lights)
     return true;
 }
 

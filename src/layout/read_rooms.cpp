@@ -80,7 +80,8 @@ RoomDraft read_room(Checker& check, const Path& at, const json& value, assets::A
     draft.path = at;
     if (!check.expect_object(at, value)) return draft;
     check.check_fields(at, value,
-                       {"id", "min", "max", "color", "face_colors", "checker", "textures", "texture_size", "props"},
+                       {"id", "min", "max", "color", "face_colors", "checker", "textures", "texture_size", "props",
+                        "ambient", "lights"},
                        {"id", "min", "max"});
     Room& room = draft.room;
     if (const json* id = field(value, "id")) {

@@ -59,6 +59,26 @@ bool load_gltf_model(Checker& check, const Path& gltf_at, const json& gltf, asse
 // (`gltf`, `scale`), exactly one. Nothing if it is wrong (reported).
 std::optional<HandShape> read_hands(Checker& check, const Path& at, const json& value, assets::AssetCache& models);
 
+// layout-format.md, "Lights": the top-level `lighting` and `light_depth`
+// into `layout`, each room's `ambient` and `lights` into `rooms` (which
+// read_rooms made from the same `rooms` list). Under "fixed" the room fields
+// and light_depth are errors (read_lights.cpp).
+void read_lighting(Checker& check, const json& root, std::vector<RoomDraft>& rooms, Layout& layout);
+
+// Farther than 1e-9 · (1 + |p|) from every face of the room's box.
+bool strictly_inside(const Room& room, const glm::dvec3& p);
+
+// Once everything is read without error: under "lights" (`lit`) each glTF
+// prop's lights, posed with the prop at rest, appended to its room's lights
+// in prop order (one outside its room is an error at the prop); otherwise
+// the props' lights are dropped. A hand model's lights are always dropped
+// (prop_lights.cpp).
+void add_prop_lights(Checker& check, std::vector<RoomDraft>& rooms, bool lit, std::optional<HandShape>& hands);
+
+// A warning for each light inside a prop of its room (a box, or a model's
+// bounding box; a model's own lights are not checked against it).
+void warn_lights_in_props(Checker& check, const std::vector<RoomDraft>& rooms);
+
 std::vector<PortalDraft> read_portals(Checker& check, const Path& at, const json& portals);
 
 // Resolves each portal's room and target, and checks the pairs. Without
