@@ -144,4 +144,17 @@ std::optional<SurfaceHit> hit_portal_box(const ScenePortal& portal, const dvec3&
     return best;
 }
 
+std::optional<SurfaceHit> hit_portal_front(const ScenePortal& portal, const dvec3& origin, const dvec3& dir,
+                                           const ClipPlane& clip) {
+    if (portal.in_hole) return std::nullopt;
+    const math::PortalRect& r = portal.rect;
+    const dvec3 lo = dvec3(portal.to_local * dvec4(origin, 1.0));
+    const dvec3 ld = dmat3(portal.to_local) * dir;
+    const double hw = 0.5 * r.width, hh = 0.5 * r.height;
+    const std::optional<double> t =
+        hit_axis_rect(AxisRect{2, 0.0, 1.0, dvec3(-hw, -hh, -r.depth), dvec3(hw, hh, 0.0)}, lo, ld);
+    if (!t || !clip.keeps(origin + *t * dir)) return std::nullopt;
+    return SurfaceHit{*t, r.normal};
+}
+
 }  // namespace impossible::trace

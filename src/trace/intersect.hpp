@@ -161,4 +161,11 @@ dvec3 room_face_color(const RoomFace& face, const dvec3& p);
 std::optional<SurfaceHit> hit_portal_box(const ScenePortal& portal, const dvec3& origin, const dvec3& dir,
                                          const ClipPlane& clip);
 
+// The front rectangle of a portal that fills no hole (facing +n), as
+// hit_portal_box meets it, and never the box's inner faces: what a shadow
+// ray meets of a free-standing portal (layout-format.md, "Lights": a door
+// box counts as its front rectangle only). Nothing for a portal in a hole.
+std::optional<SurfaceHit> hit_portal_front(const ScenePortal& portal, const dvec3& origin, const dvec3& dir,
+                                           const ClipPlane& clip);
+
 }  // namespace impossible::trace

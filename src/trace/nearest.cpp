@@ -81,6 +81,27 @@ void nearest_in_mixed_room(const Scene& scene, const FrameObjects* objects, int 
     nearest_through_volumes(scene, objects, room, origin, dir, clip, nearest);
 }
 
+void nearest_for_light(const Scene& scene, const FrameObjects* objects, int room_index, const dvec3& origin,
+                       const dvec3& dir, const ClipPlane& clip, double t_limit, Nearest& nearest) {
+    const SceneRoom& room = scene.rooms[room_index];
+    // Seeded with the limit, so that every search below keeps only nearer hits.
+    nearest.found = true;
+    nearest.t = t_limit;
+    nearest.portal = -1;
+    nearest.source = SurfaceSource{};
+    for (const RoomFace& f : room.faces) {
+        if (const std::optional<FaceHit> hit = hit_room_face(f, scene, origin, dir, clip, nearest.t))
+            nearest.offer(SurfaceHit{hit->t, axis_normal(f.rect.axis, f.rect.sign)}, hit->portal, f.color, 0.0);
+    }
+    nearest_prop(room, origin, dir, clip, nearest);
+    for (int p : room.box_portals)
+        nearest.offer(hit_portal_front(scene.portals[p], origin, dir, clip), p, dvec3(0.0), 0.0);
+    if (objects)
+        nearest_placed(scene, objects->in_room(room_index), RayFilter{}, room_index, nullptr, origin, dir, clip,
+                       nearest);
+    if (!(nearest.t < t_limit)) nearest.found = false;
+}
+
 dvec3 read_base_color(const Scene& scene, int ray_room, const Nearest& n, const dvec3& point) {
     if (n.textured_face) return room_face_color(*n.textured_face, point);
     {

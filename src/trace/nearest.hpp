@@ -133,6 +133,16 @@ inline void nearest_in_room(const Scene& scene, const FrameObjects* objects, int
     nearest_in_mixed_room(scene, objects, room_index, origin, dir, clip, nearest);
 }
 
+// What a shadow ray meets in room `room_index` before `t_limit`
+// (layout-format.md, "Lights", step 2): the room's faces minus holes (a hit
+// in a hole is the portal's), its props, the front rectangles of its
+// free-standing portals (never a door box's inner faces) and the objects
+// placed in it this frame. Volumes play no part: the room's own surfaces
+// count inside them too, and their target rooms' not at all. `nearest`
+// holds the nearest hit with t < t_limit, or found false (nearest.cpp).
+void nearest_for_light(const Scene& scene, const FrameObjects* objects, int room_index, const dvec3& origin,
+                       const dvec3& dir, const ClipPlane& clip, double t_limit, Nearest& nearest);
+
 // The room a kept hit belongs to (its id's room): `ray_room` for the ray's
 // own room's surfaces.
 inline int hit_room(const Nearest& n, int ray_room) { return n.source.room >= 0 ? n.source.room : ray_room; }

@@ -145,6 +145,8 @@ SceneRoom scene_room(const layout::Room& room) {
         r.faces[f].texture_size = room.texture_size;
     }
     r.checker = room.checker;
+    r.ambient = room.ambient;
+    r.lights = room.lights;
     return r;
 }
 
@@ -222,6 +224,8 @@ Result<void> add_objects(Scene& scene, const layout::Layout& layout) {
 Result<Scene> prepare_scene(const layout::Layout& layout) {
     if (const std::optional<Error> error = check_portals(layout)) return *error;
     Scene scene;
+    scene.lit = layout.lighting == layout::Lighting::Lights;
+    scene.light_depth = layout.light_depth;
     scene.objects = walk::build_object_set(layout, links::link_portals(layout));
     for (std::size_t r = 0; r < layout.rooms.size(); ++r) {
         const layout::Room& room = layout.rooms[r];

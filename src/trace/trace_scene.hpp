@@ -158,6 +158,10 @@ struct SceneRoom : PropSurfaces {
     std::vector<int> box_portals;
     double checker = 0.0;              // checker side for the faces, 0: plain
     std::vector<SceneVolume> volumes;  // its volume portals, in file order
+    // Under "lighting": "lights" (Scene::lit): the room's ambient light and
+    // its lights, in its own coordinates (layout-format.md, "Lights").
+    dvec3 ambient{0.0};
+    std::vector<layout::Light> lights;
 };
 
 // A dynamic object's surfaces (a prop that moves or meets a door, or the
@@ -206,6 +210,12 @@ struct Scene {
     std::vector<std::vector<int>> prop_object;  // per room, per listed prop: its index in `props`, or -1
     // The objects at time 0 without hands, for rays traced without a frame's.
     FrameObjects rest;
+    // "lighting": "lights": surfaces are lit by their room's ambient and the
+    // light paths of light_paths.hpp, at most `light_depth` portals long
+    // (the layout's; RayLimits::light_depth may replace it). Otherwise the
+    // fixed model of shading/shading.hpp.
+    bool lit = false;
+    int light_depth = layout::kDefaultLightDepth;
 };
 
 // The dynamic objects of a view: its props at view.time and its hands

@@ -4,8 +4,10 @@
 
 #include <glm/geometric.hpp>
 
+#include "shading/lighting.hpp"
 #include "shading/shading.hpp"
 #include "trace/intersect.hpp"
+#include "trace/light_paths.hpp"
 #include "trace/nearest.hpp"
 
 namespace impossible::trace {
@@ -66,6 +68,7 @@ struct Tree {
     int passes = 0;
     int budget_fills = 0;                   // portals shown as the fill because the passes were spent
     const FrameObjects* objects = nullptr;  // the frame's dynamic objects
+    int light_depth = 0;                    // under Scene::lit: portals a light path may pass
 };
 
 // The state of follow's loop along one path: the ray, the colour of the
@@ -96,13 +99,23 @@ dvec3 follow(const Scene& scene, Ray ray, Tree& tree, TraceHit* main);
 
 // The surface `n` (not a portal) hit at `point` ends the path: its shaded
 // colour, times a volume's tint where it is a volume's target room's
-// (docs/tracer.md, "Volume portals"), with its room's id.
-dvec3 surface_color(const Scene& scene, const Nearest& n, const dvec3& point, PathState& path) {
+// (docs/tracer.md, "Volume portals"), with its room's id. Under
+// "lighting": "lights" the colour is lit by its room's ambient and the light
+// paths to the point (layout-format.md, "Lights"; light_paths.hpp).
+dvec3 surface_color(const Scene& scene, const Nearest& n, const dvec3& point, const Tree& tree, PathState& path) {
     const int now = path.ray.room;
     const int room = hit_room(n, now);
     const dvec3 normal = world_normal(n);
     path.end_main(1 + room, room, point, normal);
-    const dvec3 color = shading::shade(base_color(scene, now, n, point), normal, point, n.checker);
+    const dvec3 base = base_color(scene, now, n, point);
+    dvec3 color;
+    if (scene.lit) {
+        const double dark = shading::checker_dark(point, normal, n.checker) ? shading::kCheckerDark : 1.0;
+        const dvec3 sum = light_sum(scene, tree.objects, LitPoint{room, point, normal}, tree.light_depth);
+        color = shading::lit_color(base, dark, scene.rooms[room].ambient, sum);
+    } else {
+        color = shading::shade(base, normal, point, n.checker);
+    }
     return n.source.tint ? color * *n.source.tint : color;
 }
 
@@ -169,7 +182,7 @@ dvec3 follow(const Scene& scene, Ray ray, Tree& tree, TraceHit* main) {
             return path.done + path.factor * shading::kBackgroundColor;
         }
         const dvec3 point = now.origin + n.t * now.dir;
-        if (n.portal < 0) return path.done + path.factor * surface_color(scene, n, point, path);
+        if (n.portal < 0) return path.done + path.factor * surface_color(scene, n, point, tree, path);
         // Step 3, for every kind; then the tree's budget, counted as a
         // budget fill only where the depth allows more.
         const bool deep = now.portals_passed >= tree.max_depth;
@@ -210,6 +223,7 @@ TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, in
     ray.room = room;
     Tree tree{limits.max_depth, limits.max_passes};
     tree.objects = objects.placed.empty() ? nullptr : &objects;
+    tree.light_depth = limits.light_depth >= 0 ? limits.light_depth : scene.light_depth;
     hit.color = follow(scene, ray, tree, &hit);
     hit.passes = tree.passes;
     hit.budget_fills = tree.budget_fills;

@@ -52,6 +52,9 @@ struct TraceHit {
 struct RayLimits {
     int max_depth = 8;
     int max_passes = math::kDefaultMaxPortalPasses;
+    // Under "lighting": "lights": portals a light path may pass
+    // (View::light_depth, --light-depth); -1: the layout's light_depth.
+    int light_depth = -1;
 };
 
 // Follows the ray from `origin` (an eye in room `room`) along `dir` (any

@@ -51,8 +51,8 @@ struct FrameRays {
 // One ray tree of a frame, its budget's cuts added to `stats`.
 TraceHit trace_counted(const FrameRays& frame, const PixelRay& ray, TraceStats& stats) {
     const TraceDesc& desc = frame.desc;
-    const TraceHit hit =
-        trace_ray(frame.scene, ray.origin, ray.dir, desc.room, {desc.max_depth, desc.max_portal_passes}, frame.objects);
+    const RayLimits limits{desc.max_depth, desc.max_portal_passes, desc.light_depth.value_or(-1)};
+    const TraceHit hit = trace_ray(frame.scene, ray.origin, ray.dir, desc.room, limits, frame.objects);
     stats.budget_rays += hit.budget_fills > 0 ? 1 : 0;
     stats.budget_fills += hit.budget_fills;
     return hit;
@@ -85,6 +85,9 @@ std::optional<Error> check_desc(const Scene& scene, const TraceDesc& desc) {
         return Error{"trace: bad eye image size"};
     if (desc.max_depth < 0) return Error{"trace: max_depth is negative"};
     if (desc.max_portal_passes < 0) return Error{"trace: max_portal_passes is negative"};
+    if (desc.light_depth && (*desc.light_depth < 0 || *desc.light_depth > layout::kMaxLightDepth))
+        return Error{"trace: light_depth " + std::to_string(*desc.light_depth) + " is not in 0.." +
+                     std::to_string(layout::kMaxLightDepth)};
     if (sample_pattern(desc.samples).empty())
         return Error{"trace: no sample pattern for " + std::to_string(desc.samples) + " samples"};
     return std::nullopt;
