@@ -9,6 +9,7 @@
 // does not use this (it is the oracle this is checked against).
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -70,5 +71,25 @@ struct RoomLights {
 // next), and paths that end beyond the light's range. Empty for a "fixed"
 // layout. Valid layouts only (from the loader).
 std::vector<RoomLights> light_images(const layout::Layout& layout, const links::PortalLinks& links, int light_depth);
+
+// For tests: `cull = false` keeps every path the factor rule keeps (no
+// aperture, order or range test), to check that culling only drops paths
+// no shadow ray passes.
+struct LightImageOptions {
+    bool cull = true;
+};
+std::vector<RoomLights> light_images(const layout::Layout& layout, const links::PortalLinks& links, int light_depth,
+                                     const LightImageOptions& options);
+
+// The number of light paths that may light a room (what `validate` reports).
+inline std::size_t light_path_count(const RoomLights& room) { return room.images.size(); }
+
+// The exact aperture test of the lit shader, in double precision (its
+// reference): the segment from p (in C's coordinates) to the image's
+// position crosses every aperture's plane from its front to its back,
+// strictly inside its rectangle, in order (P1 nearest p), and on each leg
+// meets no blocker from the blocker's front (edges included; on leg 0 not
+// within shading::shadow_ray_start_tolerance(p) of p).
+bool segment_passes(const LightImage& image, const glm::dvec3& p);
 
 }  // namespace impossible::lights
