@@ -124,6 +124,24 @@ TEST(LightCulling, AFreeStandingDoorBlocksFromItsFrontOnly) {
     EXPECT_TRUE(segment_passes(before, {0.2, 1.5, -0.2}));  // behind it
 }
 
+// A light in the plane of a free-standing door (no ray passes the door
+// towards it but at a graze, which the tolerance keeps): a straight ray
+// crosses that plane once, so the door and its partner, which lie in the
+// same plane, are never passed one after the other.
+TEST(LightCulling, NoPathPassesTheSamePlaneTwice) {
+    layout::Layout l = lit_layout("door in the light's plane");
+    const int c = add_room(l, "c", {-2, 0, -2}, {2, 3, 2});
+    const int other = add_room(l, "other", {-2, 0, -2}, {2, 3, 2});
+    add_pair(l, "free", c, make_rect({0, 1.5, 0}, {0, 0, 1}, 1.0, 1.0), -1, "free_back", other,
+             make_rect({0, 1.5, 0}, {0, 0, -1}, 1.0, 1.0), -1);
+    add_light(l, c, {1.5, 1.5, 0});
+    const auto rooms = light_images(l, links::link_portals(l), 4);
+    EXPECT_EQ(rooms[0].images.size(), 1u);
+    for (const RoomLights& room : rooms) {
+        for (const LightImage& image : room.images) EXPECT_LE(image.apertures.size(), 1u);
+    }
+}
+
 TEST(LightCulling, SegmentPassesTheAperturesInOrderOnly) {
     const layout::Layout l = two_doors();
     const auto all = light_images(l, links::link_portals(l), 2, LightImageOptions{false});
