@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <random>
+#include <string>
 
 #include "lights/light_images.hpp"
 #include "lights/lights_test_layouts.hpp"
@@ -182,6 +184,44 @@ void expect_conservative(const layout::Layout& l, int depth, std::mt19937_64& rn
     }
 }
 
+// A portal rectangle on wall `wall` (0: -x, 1: +x, 2: -z, 3: +z) of the
+// 4 × 3 × 4 box at x offset `x0`, at a random place and size.
+std::pair<math::PortalRect, int> random_wall_rect(std::mt19937_64& rng, double x0, int wall) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const double width = 0.3 + unit(rng);
+    const double height = 0.5 + 1.5 * unit(rng);
+    const double along = (unit(rng) - 0.5) * (3.8 - width);
+    const double y = 0.05 + height / 2 + unit(rng) * (2.9 - height);
+    const dvec3 centers[] = {{x0 - 2, y, along}, {x0 + 2, y, along}, {x0 + along, y, -2}, {x0 + along, y, 2}};
+    const dvec3 normals[] = {{1, 0, 0}, {-1, 0, 0}, {0, 0, 1}, {0, 0, -1}};
+    const int faces[] = {kNegX, kPosX, kNegZ, kPosZ};
+    return {make_rect(centers[wall], normals[wall], width, height), faces[wall]};
+}
+
+// Three boxes far apart, each door and its partner on random walls (so
+// most doors turn what passes them), a mirror in the middle room, and a
+// light in each room at a random place.
+layout::Layout random_chain(std::mt19937_64& rng) {
+    layout::Layout l = lit_layout("random chain");
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int r = 0; r < 3; ++r) {
+        const double x0 = 20.0 * r;
+        add_room(l, "r" + std::to_string(r), {x0 - 2, 0, -2}, {x0 + 2, 3, 2});
+        add_light(l, r, {x0 - 1.8 + 3.6 * unit(rng), 0.2 + 2.6 * unit(rng), -1.8 + 3.6 * unit(rng)});
+    }
+    std::array<int, 4> walls{0, 1, 2, 3};
+    std::shuffle(walls.begin(), walls.end(), rng);
+    const auto [a, fa] = random_wall_rect(rng, 0.0, static_cast<int>(rng() % 4));
+    const auto [b, fb] = random_wall_rect(rng, 20.0, walls[0]);
+    add_pair(l, "d1", 0, a, fa, "d1_back", 1, b, fb);
+    const auto [m, fm] = random_wall_rect(rng, 20.0, walls[1]);
+    add_portal(l, "mirror", 1, m, layout::PortalKind::Mirror, fm);
+    const auto [c, fc] = random_wall_rect(rng, 20.0, walls[2]);
+    const auto [d, fd] = random_wall_rect(rng, 40.0, static_cast<int>(rng() % 4));
+    add_pair(l, "d2", 1, c, fc, "d2_back", 2, d, fd);
+    return l;
+}
+
 TEST(LightCulling, CullingNeverDropsAPathThatAShadowRayPasses) {
     std::mt19937_64 rng(27);
     std::uniform_real_distribution<double> place(-1.7, 1.7);
@@ -201,6 +241,7 @@ TEST(LightCulling, CullingNeverDropsAPathThatAShadowRayPasses) {
     expect_conservative(mirrored, 3, rng, 2000, passed, dropped);
     const layout::Layout windows = facing_windows(0.3, 0.9);
     expect_conservative(windows, 3, rng, 2000, passed, dropped);
+    for (int trial = 0; trial < 40; ++trial) expect_conservative(random_chain(rng), 3, rng, 400, passed, dropped);
     EXPECT_GT(passed, 100);
     EXPECT_GT(dropped, 100);
 }
