@@ -117,6 +117,14 @@ void li_add_blockers(const LiWalk& walk, LightImage& image, int leg) {
     }
 }
 
+// Where a depth-first walk from the step's room meets the step: the
+// portal's place among its room's portals, its through branch first.
+int li_order_key(const LiWalk& walk, const LiStep& step) {
+    const std::vector<int>& portals = walk.links.room_portals[static_cast<std::size_t>(step.room)];
+    const auto place = std::find(portals.begin(), portals.end(), step.portal) - portals.begin();
+    return 2 * static_cast<int>(place) + (step.reflect ? 1 : 0);
+}
+
 // The image of the current node, for the room of the last portal appended
 // (the light's own room at k = 0).
 LiPending li_make_image(const LiWalk& walk, const dvec3& factor) {
@@ -134,12 +142,7 @@ LiPending li_make_image(const LiWalk& walk, const dvec3& factor) {
         const LiStep& step = walk.steps[k - 1 - i];
         leg_to_light[i] = step.to_light;
         image.rooms[i] = step.room;
-        pending.key.push_back(
-            2 * static_cast<int>(std::find(walk.links.room_portals[static_cast<std::size_t>(step.room)].begin(),
-                                           walk.links.room_portals[static_cast<std::size_t>(step.room)].end(),
-                                           step.portal) -
-                                 walk.links.room_portals[static_cast<std::size_t>(step.room)].begin()) +
-            (step.reflect ? 1 : 0));
+        pending.key.push_back(li_order_key(walk, step));
     }
     pending.room = image.rooms[0];
     const dmat4 from_light = math::rigid_inverse(leg_to_light[0]);
@@ -165,6 +168,8 @@ Polygon3 li_clip(const LiWalk& walk, const math::PortalRect& rect, const Polygon
     const dvec3 light = li_light(walk).position;
     const double eps = 1e-9 * (1.0 + glm::length(light) + glm::length(rect.center) + rect.width + rect.height);
     if (math::signed_distance(rect, light) >= eps) return {};
+    // A rectangle within eps of the plane of an aperture already passed
+    // counts as lying in it: the path would cross that plane twice.
     Polygon3 corners = rect_polygon(rect, 0.0);
     for (const LiStep& step : walk.steps) {
         const bool coplanar = std::all_of(corners.begin(), corners.end(), [&](const dvec3& c) {
