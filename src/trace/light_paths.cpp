@@ -34,8 +34,14 @@ struct PathPrefix {
     dvec3 factor{1.0};
 };
 
+// A portal rectangle's corners, in the point's room's coordinates.
+using Corners = std::array<dvec3, 4>;
+
 // What every path to one point shares: the point, the depth, the shadow
-// rays' start tolerance, the path being followed, and the sum so far.
+// rays' start tolerance, the path being followed, and the sum so far. The
+// path's aperture: the four planes through the point and each edge of each
+// of its portals' images (unit normals, towards the rectangle), which every
+// shadow ray of the path lies inside.
 struct LightSearch {
     const Scene& scene;
     const FrameObjects* objects;
@@ -43,8 +49,51 @@ struct LightSearch {
     int depth = 0;
     double tolerance = 0.0;  // shading::shadow_ray_start_tolerance(at.point)
     std::array<LightStep, layout::kMaxLightDepth> steps{};
+    std::array<dvec3, 4 * layout::kMaxLightDepth> aperture{};
     dvec3 sum{0.0};
 };
+
+// How far outside the aperture a corner may lie and still count: the
+// hole's face may lie kHolePlaneTolerance off the portal's plane, and the
+// nearest searches decide.
+constexpr double kApertureSlack = 2.0 * kHolePlaneTolerance;
+
+// The portal's corners mapped by `m` (into the point's room).
+Corners corners_of(const ScenePortal& p, const dmat4& m) {
+    const dvec3 r = 0.5 * p.rect.width * p.right, u = 0.5 * p.rect.height * p.rect.up;
+    const dvec3 c = p.rect.center;
+    const Corners local{c - r - u, c + r - u, c + r + u, c - r + u};
+    Corners out;
+    for (int i = 0; i < 4; ++i) out[i] = dvec3(m * dvec4(local[i], 1.0));
+    return out;
+}
+
+// Whether some of the rectangle may lie inside the first k portals'
+// aperture: not all its corners outside one plane (a convex rectangle
+// wholly outside a half-space has no point that a path's shadow ray could
+// pass). Conservative; the nearest searches decide.
+bool in_aperture(const LightSearch& s, int k, const Corners& corners) {
+    for (int j = 0; j < 4 * k; ++j) {
+        const dvec3& n = s.aperture[j];
+        bool outside = true;
+        for (const dvec3& c : corners) outside = outside && glm::dot(n, c - s.at.point) < -kApertureSlack;
+        if (outside) return false;
+    }
+    return true;
+}
+
+// The planes through the point and the rectangle's edges, turned towards
+// its centre, stored as step k's (a zero normal where the point lies on an
+// edge's line: it culls nothing).
+void set_aperture(LightSearch& s, int k, const Corners& corners) {
+    const dvec3 centre = 0.25 * (corners[0] + corners[1] + corners[2] + corners[3]) - s.at.point;
+    for (int i = 0; i < 4; ++i) {
+        const dvec3 n = glm::cross(corners[i] - s.at.point, corners[(i + 1) % 4] - s.at.point);
+        const double length = glm::length(n);
+        const dvec3 unit = length > 0.0 ? n / length : dvec3(0.0);
+        s.aperture[4 * k + i] = glm::dot(unit, centre) < 0.0 ? -unit : unit;
+    }
+}
 
 // A straight piece of a shadow ray, in `room`'s coordinates: origin + t · dir
 // with the same t on every leg (the portals' maps are rigid), the light at
@@ -149,8 +198,8 @@ void follow_step(LightSearch& s, const PathPrefix& prefix, int k, const dmat4& m
 
 // The lights of the prefix's room, then every longer path: through each
 // portal of the room that the point's image lies in front of (a shadow ray
-// meets a portal only from its front), a window both ways, its reflection
-// first.
+// meets a portal only from its front) and whose image lies partly inside
+// the path's aperture, a window both ways, its reflection first.
 void visit(LightSearch& s, const PathPrefix& prefix, int k) {
     for (const layout::Light& light : s.scene.rooms[prefix.room].lights) add_light(s, prefix, k, light);
     if (k >= s.depth) return;
@@ -158,6 +207,9 @@ void visit(LightSearch& s, const PathPrefix& prefix, int k) {
     for (int index : s.scene.rooms[prefix.room].portals) {
         const ScenePortal& p = s.scene.portals[index];
         if (!(plane_distance(p.plane, seen) > -p.clip_tolerance)) continue;
+        const Corners corners = corners_of(p, prefix.from_room);
+        if (!in_aperture(s, k, corners)) continue;
+        set_aperture(s, k, corners);
         s.steps[k].portal = index;
         if (p.kind != layout::PortalKind::Door) {
             s.steps[k].reflect = true;

@@ -326,5 +326,142 @@ TEST(TracerLights, ALitFrameDoesNotDependOnTheThreads) {
     EXPECT_EQ(one.rgb, three.rgb);
 }
 
+TEST(TracerLights, AMovingPropCastsItsShadowWhereTheFramePutsIt) {
+    // The slab of APropCastsAShadow, sliding by (0.8, 0, 0) over 1 s: at
+    // t = 0 it shades the floor's centre; at t = 1 (x in [0.55, 1.05]) the
+    // centre is lit, 1 / 4, and (1.5, 0, 0), whose segment passes y = 0.9..1
+    // at x = 0.75..0.825, is in its shadow.
+    layout::Layout l = lit_room();
+    layout::BoxProp slab{{-0.25, 0.9, -0.25}, {0.25, 1.0, 0.25}, test::kRed, "slab", {}};
+    slab.motion.keys = {{0.0, {0, 0, 0}}, {1.0, {0.8, 0, 0}}};
+    l.rooms[0].props.push_back(slab);
+    l.rooms[0].lights.push_back(point_light({0, 2, 0}, 1.0));
+    const Scene scene = prepare_scene(l).value();
+    ASSERT_EQ(scene.props.size(), 1u);  // a dynamic object, placed per frame
+    math::View later;
+    later.time = 1.0;
+    const FrameObjects moved = place_frame_objects(scene, later);
+    auto seen = [&](const FrameObjects& objects, dvec3 p) {
+        const dvec3 eye{1, 1.5, 1};
+        return trace_ray(scene, eye, p - eye, 0, RayLimits{}, objects).color;
+    };
+    expect_color(seen(scene.rest, {0, 0, 0}), lit_by_hand(kFloor));
+    expect_color(seen(scene.rest, {1.5, 0, 0}), lit_by_hand(kFloor, dvec3(0.128)));
+    expect_color(seen(moved, {0, 0, 0}), lit_by_hand(kFloor, dvec3(0.25)));
+    expect_color(seen(moved, {1.5, 0, 0}), lit_by_hand(kFloor));
+}
+
+TEST(TracerLights, ADoorBoxIsOnlyItsFrontForShadowRays) {
+    // overlapping_rooms' door box reaches from z = 0 back to z = -0.25. A
+    // hall lamp of intensity 1 at (0, 2, -1) lights the hall floor at
+    // (0, 0, -0.1), in the box's column: the segment leaves through the
+    // box's back face (z = -0.25 at y = 1/3), which a view ray from there
+    // would meet, but a shadow ray does not. v = (0, 2, -0.9), d² = 4.81,
+    // cos = 2 / √4.81.
+    layout::Layout l = overlapping_rooms();
+    l.rooms[1].lights.clear();
+    l.rooms[0].lights.push_back(point_light({0, 2, -1}, 1.0));
+    const Scene scene = prepare_scene(l).value();
+    const double d2 = 4.81;
+    expect_color(floor_seen(scene, {1.5, 1.5, -1}, {0, 0, -0.1}), lit_by_hand(kFloor, dvec3(2.0 / std::sqrt(d2) / d2)));
+}
+
+TEST(TracerLights, ALightPathAlongADoorsEdgeIsDecidedOnce) {
+    // (1, 0, 1) to the annex lamp's image (0, 2, -1) crosses z = 0 at
+    // x = 0.5, the door's edge: whatever the rounding there, the answer is
+    // one of the two, finite, and the same every time.
+    const Scene scene = prepare_scene(overlapping_rooms()).value();
+    const dvec3 first = floor_seen(scene, {1, 1.5, 2}, {1, 0, 1});
+    const double d2 = 1 + 4 + 4, lit = 2.0 / 3.0 / d2;  // v = (-1, 2, -2), d = 3, cos = 2 / 3
+    const bool is_lit = std::abs(first.x - lit_by_hand(kFloor, dvec3(lit)).x) < kLitTol;
+    const bool is_dark = std::abs(first.x - lit_by_hand(kFloor).x) < kLitTol;
+    EXPECT_TRUE(is_lit || is_dark);
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(floor_seen(scene, {1, 1.5, 2}, {1, 0, 1}), first);
+}
+
+// lab (0) and past (1) fill [-3, 3] × [0, 3] × [-3, 3]; a volume against
+// lab's -z wall (x in [-1, 1], y in [0, 3], z in [-3, -2]) shows past,
+// tinted. Past has its own ambient (0.2) and a lamp of intensity 1 at
+// (0, 2, -2); lab a lamp at (0, 2, 0) and, inside the volume, a box
+// [-0.5, 1.6, -2.8]..[0.5, 1.9, -2.2] that views there do not see.
+layout::Layout lit_volume() {
+    layout::Layout l = lit_room({-3, 0, -3}, {3, 3, 3});
+    l.rooms.push_back(make_room("past", {-3, 0, -3}, {3, 3, 3}, {0, 0.2, 0.1}));
+    l.rooms[1].ambient = dvec3(0.2);
+    layout::Volume v;
+    v.id = "scanner";
+    v.room = 0;
+    v.rect.center = {0, 1.5, -2.5};
+    v.rect.normal = {0, 0, 1};
+    v.rect.up = {0, 1, 0};
+    v.rect.width = 2;
+    v.rect.height = 3;
+    v.rect.depth = 1;
+    v.target_room = 1;
+    v.tint = {0.5, 1.0, 0.8};
+    l.volumes.push_back(v);
+    l.rooms[0].lights.push_back(point_light({0, 2, 0}, 1.0));
+    l.rooms[0].props.push_back(layout::BoxProp{{-0.5, 1.6, -2.8}, {0.5, 1.9, -2.2}, test::kRed, {}, {}});
+    l.rooms[1].lights.push_back(point_light({0, 2, -2}, 1.0));
+    return l;
+}
+
+TEST(TracerLights, AVolumesTargetIsLitByItsOwnLights) {
+    const layout::Layout l = lit_volume();
+    const Scene scene = prepare_scene(l).value();
+    // Past's -z wall (colour (0.5, 0.2, 0.1)) at (0, 1.5, -3), seen inside
+    // the volume: past's ambient and past's lamp only, v = (0, 0.5, 1),
+    // d² = 1.25, cos = 1 / √1.25, through lab's hidden box (no surface of
+    // past's), times the tint. Lab's lamp, in the same coordinates, is no
+    // light of past.
+    const TraceHit hit = trace_ray(scene, {0, 1.5, 1}, {0, 0, -1}, 0, RayLimits{});
+    EXPECT_EQ(hit.room, 1);
+    test::expect_point(hit.point, {0, 1.5, -3});
+    const dvec3 past_wall{0.5, 0.2, 0.1};
+    const dvec3 sum(1.0 / std::sqrt(1.25) / 1.25);
+    expect_color(hit.color, lit_by_hand(past_wall, sum, dvec3(0.2)) * l.volumes[0].tint);
+    // Lab's floor at (0, 0, 1): lab's lamp, 2 / (5 √5); past's is not lab's.
+    expect_color(floor_seen(scene, {0, 1.5, 2}, {0, 0, 1}), lit_by_hand(kFloor, dvec3(2.0 / (5.0 * std::sqrt(5.0)))));
+    // Lab's floor just in front of the volume, (0, 0, -1.5): lab's lamp,
+    // v = (0, 2, 1.5), d = 2.5, cos = 0.8: 0.128.
+    expect_color(floor_seen(scene, {0, 1.5, 2}, {0, 0, -1.5}), lit_by_hand(kFloor, dvec3(0.128)));
+}
+
+TEST(TracerLights, TwoFacingMirrorsStopAtTheFactorRule) {
+    // Mirrors fill the -z wall (A, z = -2) and the +z wall (B, z = 2), tint
+    // 0.5; a lamp of intensity 1 at (0, 2, 0.5); the floor point (0, 0, 0).
+    // A path alternates A and B (a shadow ray cannot meet the mirror it left),
+    // starting with either; its image is L reflected in P1, P2, … Pk taken
+    // from the last (A: z → -4 - z, B: z → 4 - z), its factor 0.5^k, kept
+    // while 0.5^k ≥ 1/256: k ≤ 8 even at light depth 16. With v = (0, 2, z),
+    // cos = 2 / d: each adds 0.5^k · 2 / d³.
+    layout::Layout l = lit_room();
+    l.portals.push_back(make_mirror("a", 0, {0, 1.5, -2}, {0, 0, 1}, 4.0, 3.0, dvec3(0.5)));
+    l.portals.push_back(make_mirror("b", 0, {0, 1.5, 2}, {0, 0, -1}, 4.0, 3.0, dvec3(0.5)));
+    l.rooms[0].lights.push_back(point_light({0, 2, 0.5}, 1.0));
+    const Scene scene = prepare_scene(l).value();
+    auto by_hand = [](int depth) {
+        auto term = [](double z, int k) { return std::pow(0.5, k) * 2.0 / std::pow(4.0 + z * z, 1.5); };
+        double sum = term(0.5, 0);
+        for (int first = 0; first < 2; ++first) {
+            for (int k = 1; k <= std::min(depth, 8); ++k) {
+                double z = 0.5;
+                for (int i = k; i >= 1; --i) {
+                    const bool a = (first + i - 1) % 2 == 0;  // P1 is `first`, then they alternate
+                    z = a ? -4.0 - z : 4.0 - z;
+                }
+                sum += term(z, k);
+            }
+        }
+        return sum;
+    };
+    for (int depth : {0, 1, 3, 8, 16}) {
+        SCOPED_TRACE(depth);
+        expect_color(floor_seen(scene, {1, 1.5, 0}, {0, 0, 0}, 0, depth), lit_by_hand(kFloor, dvec3(by_hand(depth))));
+    }
+    EXPECT_GT(by_hand(8), by_hand(3));
+    EXPECT_EQ(by_hand(16), by_hand(8));
+}
+
 }  // namespace
 }  // namespace impossible::trace::lights_test
