@@ -120,6 +120,10 @@ struct View {
     // The tracked hands, left then right, in the coordinates of `pose` (as
     // `render --hands`); none: no hands are drawn.
     std::optional<std::array<Pose, 2>> hands;
+    // Portals light may pass (0..16) under "lighting": "lights", instead of
+    // the layout's light_depth (as `render --light-depth`); none: the
+    // layout's. No effect on a "fixed" layout.
+    std::optional<int> light_depth;
 };
 
 // Counters of a rasterised frame (render --stats).

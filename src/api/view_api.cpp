@@ -26,6 +26,9 @@ std::string range_problem(const View& v) {
         return "samples " + std::to_string(v.samples) + " is not 1, 2, 4, 8 or 16";
     if (v.max_portal_passes < 0 || v.max_portal_passes > 10'000'000)
         return "max_portal_passes " + std::to_string(v.max_portal_passes) + " is not in 0..10000000";
+    if (v.light_depth && (*v.light_depth < 0 || *v.light_depth > layout::kMaxLightDepth))
+        return "light_depth " + std::to_string(*v.light_depth) + " is not in 0.." +
+               std::to_string(layout::kMaxLightDepth);
     if (!std::isfinite(v.time)) return "time is not a finite number";
     if (v.pose && !finite_pose(*v.pose)) return "the pose holds a number that is not finite";
     if (v.hands && !(finite_pose((*v.hands)[0]) && finite_pose((*v.hands)[1])))
@@ -54,6 +57,7 @@ Result<math::View> resolve_view(const layout::Layout& layout, const View& view) 
     v.eye_height = view.height;
     v.max_depth = view.max_depth;
     v.time = view.time;
+    v.light_depth = view.light_depth;
     if (view.hands)
         v.hands = std::array<math::HeadPose, 2>{to_head_pose((*view.hands)[0]), to_head_pose((*view.hands)[1])};
     if (view.pose) {

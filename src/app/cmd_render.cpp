@@ -32,6 +32,7 @@ int run_render_command(const Args& args, std::ostream& out, std::ostream& err) {
     CommandOutputs outputs = frame_outputs(options);
     const layout::Layout layout = load_layout_or_default(options.layout_path, outputs);
     const render::FrameDesc frame = frame_for(layout, options);
+    err << light_options_warning(layout, options.frame.light_depth, options.shadow_options);
 
     std::string fallback_note;
     const gl::Context context =

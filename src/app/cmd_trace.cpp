@@ -37,19 +37,20 @@ constexpr Option<TraceOptions> kTraceOptions[] = {
 }  // namespace
 
 int run_trace_command(const Args& args, std::ostream& out, std::ostream& err) {
-    const ParsedArgs parsed = parse_args(args, 1, view_options(), kTraceOptions);
+    const ParsedArgs parsed = parse_args(args, 1, trace_view_options(), kTraceOptions);
     if (parsed.help) {
-        out << kTraceHelp << options_help(view_options(), kViewHelpColumn)
+        out << kTraceHelp << options_help(trace_view_options(), kViewHelpColumn)
             << options_help(kTraceOptions, kViewHelpColumn);
         return kExitOk;
     }
-    const ViewOptions options = parse_view_options(parsed);
+    const ViewOptions options = parse_view_options(parsed, trace_view_options());
     CommandOutputs outputs = frame_outputs(options);
     TraceOptions own;
     apply_options(kTraceOptions, parsed, own);
     const int threads = own.threads;
     const layout::Layout layout = load_layout_or_default(options.layout_path, outputs);
     const render::FrameDesc frame = frame_for(layout, options);
+    err << light_options_warning(layout, options.frame.light_depth, false);
 
     const trace::TraceDesc desc = trace_desc_for(frame, threads);
 

@@ -48,6 +48,7 @@ int run_bench_command(const cli::Args& args, std::ostream& out, std::ostream& er
     if (options.json) outputs.output("--json", *options.json);
     if (options.csv) outputs.output("--csv", *options.csv);
     const layout::Layout layout = load_layout_or_default(options.view.layout_path, outputs);
+    err << cli::light_options_warning(layout, options.view.frame.light_depth, options.view.shadow_options);
     const std::vector<BenchPose> poses = bench_poses(layout, options);
     const BenchPlan plan = plan_bench(layout, options);
 

@@ -5,6 +5,7 @@
 #include <tuple>
 
 #include "api/api_data.hpp"
+#include "base/text.hpp"
 #include "image/png.hpp"
 #include "layout/path_file.hpp"
 #include "walk/replay.hpp"
@@ -118,6 +119,22 @@ constexpr Option<ViewOptions> kViewOptions[] = {
      "render: multisampling (the counts the driver offers; llvmpipe: 4);\n"
      "trace: supersampling at the standard sample positions",
      [](ViewOptions& o, const OptionValue& v) { o.frame.samples = parse_samples(v.text); }},
+    {"--light-depth", "N",
+     "portals light may pass on its way to a surface (0..16), instead of\n"
+     "the layout's light_depth; only with \"lighting\": \"lights\"",
+     [](ViewOptions& o, const OptionValue& v) { o.frame.light_depth = parse_light_depth(v.text); }},
+    {"--shadow-size", "N",
+     "texels per face side of the props' cube shadow maps (default 512,\n"
+     "at most 4096; 0: props cast no shadows)",
+     [](ViewOptions& o, const OptionValue& v) {
+         o.frame.shadow_map_size = parse_shadow_size(v.text);
+         o.shadow_options = true;
+     }},
+    {"--no-shadows", nullptr, "props cast no shadows (lit layouts)",
+     [](ViewOptions& o, const OptionValue&) {
+         o.frame.shadows = false;
+         o.shadow_options = true;
+     }},
     {"--stats", nullptr, "print draw calls, triangles and portal passes to stderr",
      [](ViewOptions& o, const OptionValue&) { o.stats = true; }},
 };
@@ -125,6 +142,11 @@ constexpr Option<ViewOptions> kViewOptions[] = {
 }  // namespace
 
 OptionTable<ViewOptions> view_options() { return kViewOptions; }
+
+OptionTable<ViewOptions> trace_view_options() {
+    static const std::vector<Option<ViewOptions>> table = without(view_options(), {"--shadow-size", "--no-shadows"});
+    return table;
+}
 
 double parse_ipd(const std::string& text) {
     const double ipd = parse_number("--ipd", text);
@@ -158,6 +180,21 @@ double parse_fps(const std::string& text) {
 std::array<math::HeadPose, 2> parse_hands(const std::string& text) {
     const std::vector<double> n = parse_pose_numbers("--hands", text, 12);
     return {pose_at(n, 0), pose_at(n, 6)};
+}
+
+int parse_light_depth(const std::string& text) { return parse_int("--light-depth", text, 0, layout::kMaxLightDepth); }
+
+int parse_shadow_size(const std::string& text) {
+    return parse_int("--shadow-size", text, 0, render::kMaxShadowMapSize);
+}
+
+std::string light_options_warning(const layout::Layout& layout, const std::optional<int>& light_depth,
+                                  bool shadow_options) {
+    if (layout.lighting != layout::Lighting::Fixed || (!light_depth && !shadow_options)) return "";
+    const std::string what = light_depth && shadow_options ? "--light-depth and the shadow options have"
+                             : light_depth                 ? "--light-depth has"
+                                                           : "the shadow options have";
+    return "warning: " + what + " no effect: " + one_line(layout.source, 1000) + "'s lighting is \"fixed\"\n";
 }
 
 int parse_samples(const std::string& text) {

@@ -33,11 +33,15 @@ struct ViewOptions {
     // against the layout (--time and --hands are here too).
     render::FrameDesc frame;
     bool stats = false;
+    bool shadow_options = false;  // --shadow-size or --no-shadows given (frame has their values)
 };
 
 // The view options of render and trace (bench drops the image files), in
 // the order of the help and of the checks; their help column.
 OptionTable<ViewOptions> view_options();
+// trace's: the view options without the rasteriser's shadow maps
+// (--shadow-size, --no-shadows); the tracer's shadows are exact.
+OptionTable<ViewOptions> trace_view_options();
 inline constexpr std::size_t kViewHelpColumn = 29;
 
 // The layout (the first positional argument) and the options of `table`
@@ -58,6 +62,15 @@ inline constexpr double kMinFps = 1e-3, kMaxFps = 1e6;
 double parse_fps(const std::string& text);
 // --hands: twelve numbers, the left then the right hand (as --pose).
 std::array<math::HeadPose, 2> parse_hands(const std::string& text);
+// --light-depth: 0..layout::kMaxLightDepth; --shadow-size: 0..kMaxShadowMapSize.
+int parse_light_depth(const std::string& text);
+int parse_shadow_size(const std::string& text);
+
+// The warning line (ending in '\n') for --light-depth (`light_depth` set)
+// or the shadow options (`shadow_options`) on a layout whose lighting is
+// "fixed", where they change nothing; "" otherwise.
+std::string light_options_warning(const layout::Layout& layout, const std::optional<int>& light_depth,
+                                  bool shadow_options);
 
 // The head pose and room of the frame: the layout's start without --pose;
 // with --pose, --room or else the one room whose box holds the head; with

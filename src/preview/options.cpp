@@ -18,7 +18,9 @@ using cli::parse_fov;
 using cli::parse_fps;
 using cli::parse_int;
 using cli::parse_ipd;
+using cli::parse_light_depth;
 using cli::parse_samples;
+using cli::parse_shadow_size;
 using cli::parse_size;
 using cli::parse_stereo;
 using cli::ParsedArgs;
@@ -103,6 +105,22 @@ constexpr Option<PreviewOptions> kPreviewOptions[] = {
      "multisampling: 1 (default), 2, 4, 8 or 16 samples per pixel (the\n"
      "counts the driver offers; llvmpipe: 4)",
      [](PreviewOptions& o, const OptionValue& v) { o.frame.samples = parse_samples(v.text); }},
+    {"--light-depth", "N",
+     "portals light may pass (0..16), instead of the layout's\n"
+     "light_depth; only with \"lighting\": \"lights\"",
+     [](PreviewOptions& o, const OptionValue& v) { o.frame.light_depth = parse_light_depth(v.text); }},
+    {"--shadow-size", "N",
+     "texels per face side of the props' cube shadow maps (default\n"
+     "512, at most 4096; 0: props cast no shadows)",
+     [](PreviewOptions& o, const OptionValue& v) {
+         o.frame.shadow_map_size = parse_shadow_size(v.text);
+         o.shadow_options = true;
+     }},
+    {"--no-shadows", nullptr, "props cast no shadows (lit layouts)",
+     [](PreviewOptions& o, const OptionValue&) {
+         o.frame.shadows = false;
+         o.shadow_options = true;
+     }},
     {"--no-hud", nullptr, "start with the HUD / minimap hidden",
      [](PreviewOptions& o, const OptionValue&) { o.hud = false; }, "--no-hud, --no-minimap"},
     {"--no-minimap", nullptr, nullptr, [](PreviewOptions& o, const OptionValue&) { o.minimap = false; }},

@@ -36,8 +36,9 @@ struct PreviewOptions {
     bool hud = true;
     bool minimap = true;
     bool vsync = true;
-    bool hand = false;           // G: a hand held out in front of the head (preview/head.hpp)
-    double hand_distance = 0.4;  // , and . : how far in front, metres
+    bool hand = false;            // G: a hand held out in front of the head (preview/head.hpp)
+    double hand_distance = 0.4;   // , and . : how far in front, metres
+    bool shadow_options = false;  // --shadow-size or --no-shadows given (frame has their values)
 };
 
 // Throws UsageError (exit 2) for unknown or conflicting options and

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "cli/errors.hpp"
+#include "cli/view_options.hpp"
 #include "gl/gl.hpp"
 #include "math/projection.hpp"
 #include "preview/grid.hpp"
@@ -221,6 +222,8 @@ int run_preview_command(const cli::Args& args, std::ostream& out, std::ostream& 
     }
     PreviewSession session;
     open_session(session, std::move(options));
+    err << cli::light_options_warning(*session.shown.layout, session.options.frame.light_depth,
+                                      session.options.shadow_options);
     for (long frame = 0; !session.options.frames || frame < *session.options.frames; ++frame)
         if (!run_frame(session, frame, err)) break;
     return kExitOk;
