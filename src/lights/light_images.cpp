@@ -64,6 +64,11 @@ struct LiWalk {
     int light = -1;
     std::vector<LiStep> steps{};
     std::vector<LiPending> out{};
+    // Counting only (light_depth_within): no images are made, and the walk
+    // stops once more than `budget` nodes were counted.
+    bool count_only = false;
+    std::size_t budget = 0;
+    std::size_t count = 0;
 };
 
 std::vector<std::vector<LiArrival>> li_arrivals(const layout::Layout& layout, const links::PortalLinks& links) {
@@ -192,23 +197,32 @@ bool li_out_of_range(const LiWalk& walk, const Polygon3& window) {
     return distance_to_polygon(light.position, window) >= light.range + slack;
 }
 
+LiStep li_step(const LiWalk& walk, const LiArrival& arrival, const dmat4& to_light) {
+    const std::size_t index = static_cast<std::size_t>(arrival.portal);
+    LiStep step;
+    step.portal = arrival.portal;
+    step.reflect = arrival.reflect;
+    step.room = walk.layout.portals[index].room;
+    step.to_light = to_light * (arrival.reflect ? walk.links.reflection[index] : walk.links.transfer[index]);
+    step.rect = transform_rect(step.to_light, walk.layout.portals[index].rect);
+    step.plane = math::portal_plane(step.rect);
+    return step;
+}
+
+bool li_over_budget(const LiWalk& walk) { return walk.budget > 0 && walk.count > walk.budget; }
+
 void li_visit(LiWalk& walk, const Polygon3& window, const dvec3& factor) {
-    walk.out.push_back(li_make_image(walk, factor));
+    ++walk.count;
+    if (!walk.count_only) walk.out.push_back(li_make_image(walk, factor));
     if (static_cast<int>(walk.steps.size()) >= walk.depth) return;
     const int room = walk.steps.empty() ? walk.light_room : walk.steps.back().room;
     const dmat4 to_light = walk.steps.empty() ? dmat4(1.0) : walk.steps.back().to_light;
     for (const LiArrival& arrival : walk.arrivals[static_cast<std::size_t>(room)]) {
+        if (li_over_budget(walk)) return;
         const layout::Portal& portal = walk.layout.portals[static_cast<std::size_t>(arrival.portal)];
         const dvec3 next_factor = factor * li_portal_factor(portal, arrival.reflect);
         if (std::max({next_factor.x, next_factor.y, next_factor.z}) < shading::kMinLightFactor) continue;
-        const std::size_t index = static_cast<std::size_t>(arrival.portal);
-        LiStep step;
-        step.portal = arrival.portal;
-        step.reflect = arrival.reflect;
-        step.room = portal.room;
-        step.to_light = to_light * (arrival.reflect ? walk.links.reflection[index] : walk.links.transfer[index]);
-        step.rect = transform_rect(step.to_light, portal.rect);
-        step.plane = math::portal_plane(step.rect);
+        const LiStep step = li_step(walk, arrival, to_light);
         Polygon3 next_window;
         if (walk.cull) {
             next_window = li_clip(walk, step.rect, window);
@@ -220,6 +234,17 @@ void li_visit(LiWalk& walk, const Polygon3& window, const dvec3& factor) {
     }
 }
 
+// Every light of every room, outwards.
+void li_walk_lights(LiWalk& walk) {
+    for (std::size_t r = 0; r < walk.layout.rooms.size(); ++r) {
+        for (std::size_t l = 0; l < walk.layout.rooms[r].lights.size() && !li_over_budget(walk); ++l) {
+            walk.light_room = static_cast<int>(r);
+            walk.light = static_cast<int>(l);
+            li_visit(walk, {}, dvec3(1.0));
+        }
+    }
+}
+
 }  // namespace
 
 std::vector<RoomLights> light_images(const layout::Layout& layout, const links::PortalLinks& links, int light_depth,
@@ -228,16 +253,9 @@ std::vector<RoomLights> light_images(const layout::Layout& layout, const links::
     if (layout.lighting != layout::Lighting::Lights) return result;
     result.resize(layout.rooms.size());
     for (std::size_t r = 0; r < layout.rooms.size(); ++r) result[r].ambient = layout.rooms[r].ambient;
-    LiWalk walk{
-        layout, links, std::clamp(light_depth, 0, layout::kMaxLightDepth), options.cull, li_arrivals(layout, links),
-        -1,     -1};
-    for (std::size_t r = 0; r < layout.rooms.size(); ++r) {
-        for (std::size_t l = 0; l < layout.rooms[r].lights.size(); ++l) {
-            walk.light_room = static_cast<int>(r);
-            walk.light = static_cast<int>(l);
-            li_visit(walk, {}, dvec3(1.0));
-        }
-    }
+    LiWalk walk{layout, links, std::clamp(light_depth, 0, layout::kMaxLightDepth), options.cull,
+                li_arrivals(layout, links)};
+    li_walk_lights(walk);
     // By path length, then as a depth-first walk from C meets them.
     std::stable_sort(walk.out.begin(), walk.out.end(), [](const LiPending& a, const LiPending& b) {
         return std::forward_as_tuple(a.key.size(), a.key, a.image.light) <
@@ -251,6 +269,22 @@ std::vector<RoomLights> light_images(const layout::Layout& layout, const links::
 
 std::vector<RoomLights> light_images(const layout::Layout& layout, const links::PortalLinks& links, int light_depth) {
     return light_images(layout, links, light_depth, LightImageOptions{});
+}
+
+int light_depth_within(const layout::Layout& layout, const links::PortalLinks& links, int light_depth,
+                       std::size_t max_images) {
+    const int depth = std::clamp(light_depth, 0, layout::kMaxLightDepth);
+    if (layout.lighting != layout::Lighting::Lights || max_images == 0) return depth;
+    LiWalk walk{layout, links, 0, true, li_arrivals(layout, links)};
+    walk.count_only = true;
+    walk.budget = max_images;
+    for (int d = 1; d <= depth; ++d) {
+        walk.depth = d;
+        walk.count = 0;
+        li_walk_lights(walk);
+        if (li_over_budget(walk)) return d - 1;
+    }
+    return depth;
 }
 
 }  // namespace impossible::lights

@@ -84,6 +84,17 @@ std::vector<RoomLights> light_images(const layout::Layout& layout, const links::
 // The number of light paths that may light a room (what `validate` reports).
 inline std::size_t light_path_count(const RoomLights& room) { return room.images.size(); }
 
+// The largest depth, at most light_depth (clamped to 0..kMaxLightDepth), at
+// which light_images() gives at most max_images images over all rooms
+// together (depth 0 always counts: its images are the lights themselves);
+// light_depth itself when max_images is 0 or the layout is not lit. The
+// count grows fast with the depth where portals face each other (a 2 m cube
+// of six windows, paired face to face: 6,197 paths at depth 4, 1.6 million
+// from depth 8 on); each try stops after max_images + 1 paths, so this costs
+// at most light_depth times the work of max_images paths.
+int light_depth_within(const layout::Layout& layout, const links::PortalLinks& links, int light_depth,
+                       std::size_t max_images);
+
 // The exact aperture test of the lit shader, in double precision (its
 // reference): the segment from p (in C's coordinates) to the image's
 // position crosses every aperture's plane from its front to its back,

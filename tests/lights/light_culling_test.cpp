@@ -105,6 +105,50 @@ TEST(LightCulling, APathBelowOneStepIn256IsNotFollowed) {
     EXPECT_TRUE(has_path(tinted_rooms[0], PathKey{0, 0, bounces}));
 }
 
+// A 2 m cube whose six faces are 2 × 2 m windows, each paired with the
+// opposite face, reflectance 0.5: every path splits in two at every face.
+layout::Layout window_cube() {
+    layout::Layout l = lit_layout("window cube");
+    const int r = add_room(l, "cube", {-1, 0, -1}, {1, 2, 1});
+    const int faces[] = {kNegX, kPosX, static_cast<int>(layout::Face::Floor), static_cast<int>(layout::Face::Ceiling),
+                         kNegZ, kPosZ};
+    const dvec3 centers[] = {{-1, 1, 0}, {1, 1, 0}, {0, 0, 0}, {0, 2, 0}, {0, 1, -1}, {0, 1, 1}};
+    const dvec3 normals[] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (int i = 0; i < 6; i += 2) {
+        const dvec3 up = i == 2 ? dvec3(0, 0, 1) : dvec3(0, 1, 0);
+        const int a = add_pair(l, "a" + std::to_string(i), r, make_rect(centers[i], normals[i], 2, 2, up), faces[i],
+                               "b" + std::to_string(i), r, make_rect(centers[i + 1], normals[i + 1], 2, 2, up),
+                               faces[i + 1], layout::PortalKind::Window);
+        l.portals[static_cast<std::size_t>(a)].reflectance = 0.5;
+        l.portals[static_cast<std::size_t>(a) + 1].reflectance = 0.5;
+    }
+    add_light(l, r, {0.3, 1.2, 0.1});
+    l.start = {r, {0, 1, 0}, 0.0};
+    return l;
+}
+
+std::size_t total_images(const std::vector<RoomLights>& rooms) {
+    std::size_t n = 0;
+    for (const RoomLights& room : rooms) n += light_path_count(room);
+    return n;
+}
+
+TEST(LightCulling, TheDepthWithinABudgetOfPaths) {
+    const layout::Layout cube = window_cube();
+    const links::PortalLinks links = links::link_portals(cube);
+    const int depth = light_depth_within(cube, links, layout::kMaxLightDepth, 1000);
+    ASSERT_GE(depth, 1);
+    ASSERT_LT(depth, layout::kMaxLightDepth);
+    EXPECT_LE(total_images(light_images(cube, links, depth)), 1000u);
+    EXPECT_GT(total_images(light_images(cube, links, depth + 1)), 1000u);
+    EXPECT_EQ(light_depth_within(cube, links, 2, 1000000), 2);
+    EXPECT_EQ(light_depth_within(cube, links, 5, 0), 5);  // no limit
+    EXPECT_EQ(light_depth_within(cube, links, 3, 1), 0);  // the light itself
+    layout::Layout fixed = cube;
+    fixed.lighting = layout::Lighting::Fixed;
+    EXPECT_EQ(light_depth_within(fixed, links, 3, 1), 3);
+}
+
 TEST(LightCulling, AFreeStandingDoorBlocksFromItsFrontOnly) {
     layout::Layout l = lit_layout("free door");
     const int room = add_room(l, "room", {-2, 0, -2}, {2, 3, 2});
