@@ -168,6 +168,15 @@ TEST(LightCulling, AFreeStandingDoorBlocksFromItsFrontOnly) {
     EXPECT_TRUE(segment_passes(behind, {1.5, 1.5, 1.5}));   // beside it
     EXPECT_TRUE(segment_passes(before, {0, 1.5, -1.5}));    // through it from behind
     EXPECT_TRUE(segment_passes(before, {0.2, 1.5, -0.2}));  // behind it
+    // The other room sees the light in front of the door through it: the
+    // portals the path passes are no blockers of their own legs.
+    const auto deeper = light_images(l, links::link_portals(l), 1);
+    ASSERT_TRUE(has_path(deeper[1], PathKey{0, 1, {{1, false}}}));
+    for (const LightImage& image : deeper[1].images) {
+        if (image.light != 1) continue;
+        EXPECT_TRUE(image.blockers.empty());
+        EXPECT_TRUE(segment_passes(image, {12, 1.5, -1}));
+    }
 }
 
 // A light in the plane of a free-standing door (no ray passes the door
@@ -186,6 +195,23 @@ TEST(LightCulling, NoPathPassesTheSamePlaneTwice) {
     for (const RoomLights& room : rooms) {
         for (const LightImage& image : room.images) EXPECT_LE(image.apertures.size(), 1u);
     }
+}
+
+TEST(LightCulling, AFreeStandingDoorInTheNextRoomBlocksTheSecondLeg) {
+    layout::Layout l = doorway();
+    const int far = add_room(l, "far", {20, 0, -2}, {24, 3, 2});
+    add_pair(l, "free", 1, make_rect({4, 1.8, 0}, {-1, 0, 0}, 1.0, 0.4), -1, "free_back", far,
+             make_rect({22, 1.5, 0}, {1, 0, 0}, 1.0, 0.4), -1);
+    add_light(l, 1, {5, 1.8, 0});
+    const auto rooms = light_images(l, links::link_portals(l), 1);
+    ASSERT_TRUE(has_path(rooms[0], PathKey{1, 0, {{0, false}}}));
+    const LightImage& image = rooms[0].images[0];
+    ASSERT_EQ(image.blockers.size(), 1u);  // not the door it comes in by
+    EXPECT_EQ(image.blockers[0].portal, 2);
+    EXPECT_EQ(image.blockers[0].leg, 1);
+    EXPECT_FALSE(segment_passes(image, {0, 1.8, 0}));  // meets the free door's front
+    EXPECT_FALSE(segment_passes(image, {0, 1.0, 0}));
+    EXPECT_TRUE(segment_passes(image, {0, 0.5, 0}));  // passes below it
 }
 
 TEST(LightCulling, SegmentPassesTheAperturesInOrderOnly) {
