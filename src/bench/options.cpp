@@ -29,10 +29,12 @@ void check_sweep(const std::string& sweep) {
     const size_t colon = sweep.find(':');
     const std::string kind = sweep.substr(0, colon);
     if (colon == std::string::npos ||
-        (kind != "portals" && kind != "depth" && kind != "size" && kind != "boxes" && kind != "samples") ||
+        (kind != "portals" && kind != "depth" && kind != "size" && kind != "boxes" && kind != "samples" &&
+         kind != "lights" && kind != "light-depth" && kind != "shadow-size") ||
         colon + 1 == sweep.size())
         throw InputError("--sweep: '" + sweep +
-                         "' is not techniques, portals:N,..., boxes:N,..., depth:N,..., size:WxH,... or samples:N,...");
+                         "' is not techniques, portals:N,..., boxes:N,..., depth:N,..., size:WxH,..., samples:N,..., "
+                         "lights:fixed|N,..., light-depth:N,... or shadow-size:N,...");
 }
 
 // In the order of the help and of the checks.
@@ -60,7 +62,10 @@ constexpr Option<BenchOptions> kBenchOptions[] = {
      "boxes:0,1000 (that many 12-triangle boxes on every room's floor;\n"
      "1000/all: the same without per-object culling; 1000/separate:\n"
      "one draw per run of visible props instead of a multi-draw)\n"
-     "samples:1,4 (multisampling; counts the driver lacks are reported)",
+     "samples:1,4 (multisampling; counts the driver lacks are reported)\n"
+     "lights:fixed,0,1,8,32 (the fixed light, or N lights in every room)\n"
+     "light-depth:0,1,2,4 (a lit layout's light depth)\n"
+     "shadow-size:0,256,512 (cube shadow maps' size; 0: no prop shadows)",
      [](BenchOptions& o, const OptionValue& v) { o.sweep = v.text; }},
     {"--error", nullptr, "compare each configuration with the tracer (ids, PSNR)",
      [](BenchOptions& o, const OptionValue&) { o.error = true; }},

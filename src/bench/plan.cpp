@@ -5,6 +5,7 @@
 #include <map>
 #include <sstream>
 
+#include "bench/light_sweep.hpp"
 #include "layout/path_file.hpp"
 #include "walk/walker.hpp"
 
@@ -138,6 +139,22 @@ void add_sweep_item(PlanBuilder& b, const layout::Layout& layout, const std::str
     } else if (kind == "samples") {
         const int n = cli::parse_samples(item);
         b.add(name, kind, [n](BenchConfig& c) { c.frame.samples = n; });
+    } else if (kind == "lights") {
+        const int n = item == "fixed" ? -1 : parse_int("--sweep lights", item, 0, 1000);
+        b.plan.layouts.push_back(with_lights(b.plan.layouts[0], n));
+        const int variant = static_cast<int>(b.plan.layouts.size()) - 1;
+        b.add(name, kind, [variant](BenchConfig& c) { c.layout_variant = variant; });
+    } else if (kind == "light-depth") {
+        if (layout.lighting != impossible::layout::Lighting::Lights)
+            throw cli::InputError("--sweep light-depth: the layout's lighting is \"fixed\" (try --sweep lights:...)");
+        const int d = parse_int("--sweep light-depth", item, 0, impossible::layout::kMaxLightDepth);
+        b.add(name, kind, [d](BenchConfig& c) { c.frame.light_depth = d; });
+    } else if (kind == "shadow-size") {
+        const int size = parse_int("--sweep shadow-size", item, 0, render::kMaxShadowMapSize);
+        b.add(name, kind, [size](BenchConfig& c) {
+            c.frame.shadow_map_size = size;
+            c.frame.shadows = size > 0;
+        });
     } else if (kind == "depth") {
         const int d = parse_int("--sweep depth", item, 0, 250);
         b.add(name, kind, [d](BenchConfig& c) { c.frame.max_depth = d; });

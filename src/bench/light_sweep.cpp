@@ -1,0 +1,32 @@
+#include "bench/light_sweep.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace impossible::bench {
+
+layout::Layout with_lights(const layout::Layout& layout, int n) {
+    layout::Layout out = layout;
+    if (n < 0) {
+        out.lighting = layout::Lighting::Fixed;
+        for (layout::Room& room : out.rooms) room.lights.clear();
+        return out;
+    }
+    out.lighting = layout::Lighting::Lights;
+    const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(std::max(n, 1)))));
+    for (layout::Room& room : out.rooms) {
+        room.lights.clear();
+        const glm::dvec3 lo = room.min + 0.15 * (room.max - room.min);
+        const glm::dvec3 extent = 0.7 * (room.max - room.min);
+        for (int i = 0; i < n; ++i) {
+            layout::Light light;
+            light.position = {lo.x + (i % side + 0.5) * extent.x / side, room.min.y + 0.8 * (room.max.y - room.min.y),
+                              lo.z + (i / side + 0.5) * extent.z / side};
+            light.intensity = 4.0 / n;
+            room.lights.push_back(light);
+        }
+    }
+    return out;
+}
+
+}  // namespace impossible::bench

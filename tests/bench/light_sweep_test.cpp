@@ -1,0 +1,83 @@
+// The lighting sweeps of bench (issue 27): with_lights puts N lights in every
+// room, strictly inside it, or returns the layout under the fixed light; the
+// plan makes one configuration per item and refuses what it cannot measure.
+#include <gtest/gtest.h>
+
+#include "bench/light_sweep.hpp"
+#include "bench/plan.hpp"
+#include "cli/errors.hpp"
+
+namespace impossible::bench {
+namespace {
+
+layout::Layout two_rooms() {
+    layout::Layout l;
+    l.rooms.resize(2);
+    l.rooms[0].min = {-2, 0, -2};
+    l.rooms[0].max = {2, 3, 2};
+    l.rooms[1].min = {10, -1, 0};
+    l.rooms[1].max = {12, 1.5, 8};
+    l.rooms[1].lights.resize(3);  // replaced
+    return l;
+}
+
+TEST(BenchLightSweep, NLightsStrictlyInsideEveryRoomSummingToFour) {
+    for (int n : {0, 1, 8, 32}) {
+        const layout::Layout lit = with_lights(two_rooms(), n);
+        EXPECT_EQ(lit.lighting, layout::Lighting::Lights);
+        for (const layout::Room& room : lit.rooms) {
+            ASSERT_EQ(room.lights.size(), static_cast<std::size_t>(n));
+            double sum = 0.0;
+            for (const layout::Light& light : room.lights) {
+                for (int a = 0; a < 3; ++a) {
+                    EXPECT_GT(light.position[a], room.min[a]);
+                    EXPECT_LT(light.position[a], room.max[a]);
+                }
+                sum += light.intensity;
+            }
+            if (n > 0) {
+                EXPECT_NEAR(sum, 4.0, 1e-12);
+            }
+        }
+    }
+}
+
+TEST(BenchLightSweep, FixedDropsTheLights) {
+    layout::Layout l = two_rooms();
+    l.lighting = layout::Lighting::Lights;
+    const layout::Layout fixed = with_lights(l, -1);
+    EXPECT_EQ(fixed.lighting, layout::Lighting::Fixed);
+    for (const layout::Room& room : fixed.rooms) EXPECT_TRUE(room.lights.empty());
+}
+
+TEST(BenchLightSweep, PlanItems) {
+    layout::Layout l = two_rooms();
+    l.start.room = 0;
+    l.start.position = {0, 1.6, 0};
+    BenchOptions o;
+    o.sweep = "lights:fixed,0,8";
+    const BenchPlan plan = plan_bench(l, o);
+    ASSERT_EQ(plan.configs.size(), 4u);  // base + 3
+    ASSERT_EQ(plan.layouts.size(), 4u);
+    EXPECT_EQ(plan.layouts[plan.configs[1].layout_variant].lighting, layout::Lighting::Fixed);
+    EXPECT_EQ(plan.layouts[plan.configs[3].layout_variant].rooms[0].lights.size(), 8u);
+    o.sweep = "lights:x";
+    EXPECT_THROW(plan_bench(l, o), cli::InputError);
+    // The light depth needs a lit layout; then each item sets View::light_depth.
+    o.sweep = "light-depth:0,2";
+    EXPECT_THROW(plan_bench(l, o), cli::InputError);
+    l.lighting = layout::Lighting::Lights;
+    const BenchPlan depths = plan_bench(l, o);
+    ASSERT_EQ(depths.configs.size(), 3u);
+    EXPECT_EQ(depths.configs[2].frame.light_depth, 2);
+    o.sweep = "light-depth:17";
+    EXPECT_THROW(plan_bench(l, o), cli::InputError);
+    o.sweep = "shadow-size:0,256";
+    const BenchPlan sizes = plan_bench(l, o);
+    ASSERT_EQ(sizes.configs.size(), 3u);
+    EXPECT_FALSE(sizes.configs[1].frame.shadows);
+    EXPECT_EQ(sizes.configs[2].frame.shadow_map_size, 256);
+}
+
+}  // namespace
+}  // namespace impossible::bench
