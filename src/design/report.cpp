@@ -3,6 +3,9 @@
 
 #include <cstdio>
 
+#include "base/user_text.hpp"
+#include "lights/light_images.hpp"
+
 namespace impossible::design {
 namespace {
 
@@ -21,6 +24,29 @@ std::string ids(const layout::Layout& layout, const std::vector<int>& rooms) {
 
 // Where the search for overlaps stopped early, if it did.
 const char* const kSearchStopped = "the search stopped at its limit of pairs tested";
+
+void count_lights(const layout::Layout& layout, Report& r) {
+    if (layout.lighting != layout::Lighting::Lights) return;
+    const std::vector<lights::RoomLights> images =
+        lights::light_images(layout, links::link_portals(layout), layout.light_depth);
+    for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
+        r.room_lights.push_back(static_cast<int>(layout.rooms[i].lights.size()));
+        r.room_light_paths.push_back(i < images.size() ? static_cast<int>(images[i].images.size()) : 0);
+    }
+}
+
+// "lighting: ..." and a line per room, for lit layouts only (the report of
+// a "fixed" layout stays as it was).
+std::string lights_text(const layout::Layout& layout, const Report& r) {
+    if (layout.lighting != layout::Lighting::Lights) return "";
+    std::string out = "lighting: lights, light depth " + std::to_string(layout.light_depth) + "\n";
+    for (std::size_t i = 0; i < r.room_lights.size(); ++i) {
+        out += "  " + layout.rooms[i].id + ": " +
+               count_of(static_cast<std::size_t>(r.room_lights[i]), "light", "lights") + ", " +
+               count_of(static_cast<std::size_t>(r.room_light_paths[i]), "light path", "light paths") + "\n";
+    }
+    return out;
+}
 
 void find_outside(const layout::Layout& layout, Report& r) {
     if (!layout.play_area) return;
@@ -89,6 +115,7 @@ Report make_report(const layout::Layout& layout) {
     r.overlaps_exact = overlaps.exact;
     find_outside(layout, r);
     write_findings(layout, r);
+    count_lights(layout, r);
     return r;
 }
 
@@ -126,6 +153,7 @@ std::string report_text(const layout::Layout& layout, const Report& r) {
         for (const int p : r.doors_outside) out += " " + layout.portals[p].id;
         out += "\n";
     }
+    out += lights_text(layout, r);
     out += "findings: " + std::to_string(r.findings.size()) + "\n";
     return out;
 }

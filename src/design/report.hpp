@@ -33,6 +33,11 @@ struct Report {
     std::vector<RoomFinding> rooms_outside;  // with a play area: physical floors not inside it
     std::vector<int> doors_outside;          // portals whose floor line is not inside the play area
     std::vector<std::string> findings;       // one line each, for people
+    // Under "lighting": "lights" only (empty for "fixed"): each room's lights
+    // (its glTF props' included) and light paths, the light images that may
+    // light it at the layout's light_depth (lights/light_images.hpp).
+    std::vector<int> room_lights;
+    std::vector<int> room_light_paths;
 };
 
 Report make_report(const layout::Layout& layout);

@@ -127,6 +127,20 @@ ordered_json report_json(const layout::Layout& layout, const Report& r,
     ordered_json doors_outside = ordered_json::array();
     for (const int p : r.doors_outside) doors_outside.push_back(layout.portals[p].id);
     j["doors_outside_play_area"] = doors_outside;
+    if (layout.lighting == layout::Lighting::Lights) {  // only then: fixed layouts' documents stay as they were
+        ordered_json lighting;
+        lighting["light_depth"] = layout.light_depth;
+        ordered_json rooms = ordered_json::array();
+        for (std::size_t i = 0; i < r.room_lights.size(); ++i) {
+            ordered_json room;
+            room["id"] = layout.rooms[i].id;
+            room["lights"] = r.room_lights[i];
+            room["light_paths"] = r.room_light_paths[i];
+            rooms.push_back(room);
+        }
+        lighting["rooms"] = rooms;
+        j["lighting"] = lighting;
+    }
     ordered_json lines = ordered_json::array();
     for (const layout::Diagnostic& d : warnings) lines.push_back(d.str());
     for (const std::string& f : r.findings) lines.push_back(layout.source + ": " + f);
