@@ -8,6 +8,13 @@
 // bias_texels texels at distance d (a texel spans about 2 / size radians)
 // and a relative 1e-5, so that a lit prop face is not shadowed by itself up
 // to an incidence of atan(2 · bias_texels).
+//
+// Only the LIGHTS variants compile it (it goes before lighting.frag.glsl,
+// which then uses this light_visible instead of its own, always 1); the
+// renderer binds the maps for every frame of a lit layout
+// (render/shadow_maps.hpp, prepare_shadow_maps), with shadows off too.
+#if defined(LIGHTS)
+#define SHADOWS
 layout(binding = 3) uniform samplerCubeArray u_shadow_maps;
 layout(std430, binding = 6) readonly buffer ShadowMapLayers {
     float shadow_texel;        // 2 / size: a texel's angle at a face's centre, radians
@@ -23,3 +30,4 @@ float light_visible(int g, vec3 p_minus_lprime, float d) {
     float bias = d * (shadow_texel * shadow_bias_texels + 1e-5);
     return d <= stored + bias ? 1.0 : 0.0;
 }
+#endif

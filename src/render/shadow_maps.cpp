@@ -8,6 +8,7 @@
 
 #include "gl/shader.hpp"
 #include "math/projection.hpp"
+#include "render/renderer_data.hpp"
 #include "render/scene_program.hpp"
 
 namespace impossible::render {
@@ -271,6 +272,24 @@ Result<int> update_shadow_maps(ShadowMaps& m, gl::StateCache& state, const Shado
 void bind_shadow_maps(const ShadowMaps& m, gl::StateCache& state) {
     state.texture(kShadowMapTextureUnit, m.maps.get());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShadowLayerBinding, m.layers.get());
+}
+
+void unbind_shadow_maps() { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShadowLayerBinding, 0); }
+
+Result<void> prepare_shadow_maps(ShadowMaps& maps, const RendererData& r, const FrameObjects& objects,
+                                 const std::vector<lights::RoomLights>& rooms, const FrameDesc& frame,
+                                 FrameStats& stats) {
+    const ShadowSources sources{.gpu = &r.gpu,
+                                .objects = &r.objects,
+                                .origins = &r.cell_origins,
+                                .object_meshes = &r.object_meshes,
+                                .instances = &objects.instances,
+                                .instance_mesh = &objects.mesh};
+    Result<int> drawn = update_shadow_maps(maps, *r.state, sources, rooms, frame);
+    if (!drawn) return Error{drawn.error()};
+    stats.shadow_maps_drawn = *drawn;
+    bind_shadow_maps(maps, *r.state);
+    return {};
 }
 
 }  // namespace impossible::render

@@ -98,5 +98,19 @@ Result<int> update_shadow_maps(ShadowMaps& maps, gl::StateCache& state, const Sh
 
 // Binds the maps and the layer buffer for the lit shader.
 void bind_shadow_maps(const ShadowMaps& maps, gl::StateCache& state);
+// Unbinds the layer buffer (the texture unit goes with the cache's
+// release_bindings).
+void unbind_shadow_maps();
+
+// The renderer's part, once a frame of a lit layout, after the frame's
+// objects are placed and before its passes: updates the maps from the
+// renderer's data, the frame's objects and `rooms` (the light images of the
+// frame's light depth, those the lit shader's global indices count), counts
+// the maps drawn in stats.shadow_maps_drawn and binds them.
+struct RendererData;
+struct FrameObjects;
+Result<void> prepare_shadow_maps(ShadowMaps& maps, const RendererData& r, const FrameObjects& objects,
+                                 const std::vector<lights::RoomLights>& rooms, const FrameDesc& frame,
+                                 FrameStats& stats);
 
 }  // namespace impossible::render

@@ -60,7 +60,9 @@ struct ShadowRig {
           context(std::move(gl::create_context(gl::Backend::Egl).value())),
           gpu(render::upload_scene(scene)) {
         const std::string lookup(embedded::find("shaders/shadow_lookup.frag.glsl"));
-        probe = gl::build_program({{GL_COMPUTE_SHADER, "shadow_probe", lookup + kShadowProbeSource}}, "").value();
+        probe =
+            gl::build_program({{GL_COMPUTE_SHADER, "shadow_probe", lookup + kShadowProbeSource}}, "#define LIGHTS\n")
+                .value();
     }
 
     // Places the dynamic objects at `time` (props only; no hands).
