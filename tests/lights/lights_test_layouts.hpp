@@ -2,7 +2,11 @@
 // loader involved), and helpers to compare paths.
 #pragma once
 
+#include <algorithm>
+#include <array>
+#include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -95,6 +99,63 @@ inline layout::Layout turned_door() {
     add_pair(l, "hall_east", hall, make_rect({2, 1.1, 0}, {-1, 0, 0}, 1.0, 2.2), kPosX, "annex_north", annex,
              make_rect({12, 1.1, -2}, {0, 0, 1}, 1.0, 2.2), kNegZ);
     l.start = {hall, {0, 1.6, 1}, 0.0};
+    return l;
+}
+
+// A portal rectangle on wall `wall` (0: -x, 1: +x, 2: -z, 3: +z) of the
+// 4 × 3 × 4 box at x offset `x0`, at a random place, of a random size or
+// the size given, inside the wall (so it is a hole in it).
+inline std::pair<math::PortalRect, int> random_wall_rect(std::mt19937_64& rng, double x0, int wall, double width = 0.0,
+                                                         double height = 0.0) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    if (width <= 0.0) width = 0.3 + unit(rng);
+    if (height <= 0.0) height = 0.5 + 1.5 * unit(rng);
+    const double along = (unit(rng) - 0.5) * (3.8 - width);
+    const double y = 0.05 + height / 2 + unit(rng) * (2.9 - height);
+    const glm::dvec3 centers[] = {{x0 - 2, y, along}, {x0 + 2, y, along}, {x0 + along, y, -2}, {x0 + along, y, 2}};
+    const glm::dvec3 normals[] = {{1, 0, 0}, {-1, 0, 0}, {0, 0, 1}, {0, 0, -1}};
+    const int faces[] = {kNegX, kPosX, kNegZ, kPosZ};
+    return {make_rect(centers[wall], normals[wall], width, height), faces[wall]};
+}
+
+// Three 4 × 3 × 4 boxes far apart, each with a light at a random place
+// (some spots, some with a range). A door from the first to the second and
+// a door (or a window pair, tinted) from the second to the third, each
+// end on a random wall at a random place (so most turn what passes them),
+// a mirror in the second, and a free-standing door pair, turned at random,
+// between the second and the first.
+inline layout::Layout random_chain(std::mt19937_64& rng, bool window) {
+    layout::Layout l = lit_layout("random chain");
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const auto random_unit = [&] { return glm::normalize(glm::dvec3(unit(rng), unit(rng), unit(rng)) - 0.5); };
+    for (int r = 0; r < 3; ++r) {
+        const double x0 = 20.0 * r;
+        add_room(l, "r" + std::to_string(r), {x0 - 2, 0, -2}, {x0 + 2, 3, 2});
+        add_light(l, r, {x0 - 1.8 + 3.6 * unit(rng), 0.2 + 2.6 * unit(rng), -1.8 + 3.6 * unit(rng)},
+                  unit(rng) < 0.3 ? 6.0 : 0.0);
+        if (unit(rng) < 0.5)
+            l.rooms[static_cast<std::size_t>(r)].lights.back().spot = layout::Spot{random_unit(), 10, 60};
+    }
+    std::array<int, 4> walls{0, 1, 2, 3};
+    std::shuffle(walls.begin(), walls.end(), rng);
+    const auto [a, fa] = random_wall_rect(rng, 0.0, static_cast<int>(rng() % 4));
+    const auto [b, fb] = random_wall_rect(rng, 20.0, walls[0], a.width, a.height);
+    add_pair(l, "d1", 0, a, fa, "d1_back", 1, b, fb);
+    const auto [m, fm] = random_wall_rect(rng, 20.0, walls[1]);
+    add_portal(l, "mirror", 1, m, layout::PortalKind::Mirror, fm);
+    const auto [c, fc] = random_wall_rect(rng, 20.0, walls[2]);
+    const auto [d, fd] = random_wall_rect(rng, 40.0, static_cast<int>(rng() % 4), c.width, c.height);
+    const int w = add_pair(l, "d2", 1, c, fc, "d2_back", 2, d, fd,
+                           window ? layout::PortalKind::Window : layout::PortalKind::Door);
+    if (window) {
+        l.portals[static_cast<std::size_t>(w)].reflectance = 0.3;
+        l.portals[static_cast<std::size_t>(w)].tint = glm::dvec3(0.9, 0.8, 0.7);
+        l.portals[static_cast<std::size_t>(w) + 1].reflectance = 0.4;
+    }
+    const glm::dvec3 n1(unit(rng) - 0.5, 0, unit(rng) - 0.5), n2(unit(rng) - 0.5, 0, unit(rng) - 0.5);
+    add_pair(l, "free", 1, make_rect({20 + unit(rng) - 0.5, 1.5, unit(rng) - 0.5}, glm::normalize(n1), 0.8, 1.0), -1,
+             "free_back", 0, make_rect({unit(rng) - 0.5, 1.5, unit(rng) - 0.5}, glm::normalize(n2), 0.8, 1.0), -1);
+    l.start = {0, {0, 1.5, 0}, 0.0};
     return l;
 }
 
