@@ -22,6 +22,7 @@ enum class Action {
     ToggleHand,     // G: a hand held out in front of the head
     HandCloser,     // , : the hand nearer the head
     HandFurther,    // . : the hand further out
+    ToggleShadows,  // L: the shadows props cast in lit layouts, on or off
 };
 
 // The movement keys held down now: -1, 0 or +1 on each axis.

@@ -16,7 +16,7 @@ std::vector<std::string> status_lines(const PreviewOptions& o, const HudFacts& f
     using std::to_string;
     const render::FrameDesc& s = o.frame;
     const math::dvec3 h = f.physical.position;
-    return {
+    std::vector<std::string> lines = {
         f.title + "   view: " + view_name(o.view),
         "frame " + fixed(f.median_ms, 1) + " ms (median of " + to_string(f.timed_frames) + ")   eye " +
             to_string(f.eye_width) + "x" + to_string(f.eye_height) + "   time " + fixed(f.time, 1) + " s",
@@ -31,8 +31,13 @@ std::vector<std::string> status_lines(const PreviewOptions& o, const HudFacts& f
             (o.hand ? "   hand " + fixed(o.hand_distance, 2) + " m" : ""),
         f.cursor_captured ? "Esc releases the mouse" : "click to look around, Esc quits",
         "WASD/arrows Q/E move  H hud  M map  V view  [ ] depth  - = IPD  C clip  X cull  P shot  R reset"
-        "  G , . hand",
+        "  G , . hand  L shadows",
     };
+    if (f.lit)
+        lines.insert(lines.begin() + 3, "lights " + to_string(f.room_lights) + " in this room   light images " +
+                                            to_string(f.light_images) + "   light depth " + to_string(f.light_depth) +
+                                            "   shadows " + (s.shadows && s.shadow_map_size > 0 ? "on" : "off"));
+    return lines;
 }
 
 }  // namespace

@@ -24,6 +24,13 @@ struct HudFacts {
     math::HeadPose physical;
     bool cursor_captured = false;
     double time = 0.0;  // seconds, the frame's time for moving props
+    // Lit layouts ("lighting": "lights"): the lights of the head's room, the
+    // light images of the cells drawn (render::FrameStats::light_images) and
+    // the light depth in use; lit false: no lights line.
+    bool lit = false;
+    int room_lights = 0;
+    int light_images = 0;
+    int light_depth = 0;
 };
 
 inline constexpr std::size_t kMaxReloadErrors = 8;

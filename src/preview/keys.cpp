@@ -32,6 +32,7 @@ KeyEffects apply_actions(const std::vector<Action>& actions, bool cursor_capture
             case Action::Screenshot: e.screenshot = true; break;
             case Action::Reset: e.reset = true; break;
             case Action::ToggleHand: o.hand = !o.hand; break;
+            case Action::ToggleShadows: f.shadows = !f.shadows; break;
             case Action::HandCloser: o.hand_distance = std::max(kMinHandDistance, o.hand_distance - kHandStep); break;
             case Action::HandFurther: o.hand_distance = std::min(kMaxHandDistance, o.hand_distance + kHandStep); break;
         }

@@ -148,6 +148,11 @@ HudFacts hud_facts(const PreviewSession& s, const render::FrameDesc& desc) {
     f.physical = s.physical;
     f.cursor_captured = cursor_captured(*s.window);
     f.time = desc.time;
+    const layout::Layout& layout = *s.shown.layout;
+    f.lit = layout.lighting == layout::Lighting::Lights;
+    f.room_lights = static_cast<int>(layout.rooms[desc.room].lights.size());
+    f.light_images = s.stats.light_images;
+    f.light_depth = desc.light_depth.value_or(layout.light_depth);
     return f;
 }
 

@@ -37,6 +37,7 @@ std::optional<Action> action_of_key(int key) {
         case GLFW_KEY_F12: return Action::Screenshot;
         case GLFW_KEY_R: return Action::Reset;
         case GLFW_KEY_G: return Action::ToggleHand;
+        case GLFW_KEY_L: return Action::ToggleShadows;
         case GLFW_KEY_COMMA: return Action::HandCloser;
         case GLFW_KEY_PERIOD: return Action::HandFurther;
         default: return std::nullopt;

@@ -40,6 +40,23 @@ TEST(PreviewHudText, ReportsTheFrameAndTheSettings) {
     EXPECT_TRUE(hud_text(o, f, {}).lines.empty());
 }
 
+TEST(PreviewHudText, LitLayoutsShowTheirLightsAndShadows) {
+    PreviewOptions o;
+    HudFacts f;
+    f.room = "hall";
+    const std::size_t unlit = hud_text(o, f, {}).lines.size();
+    f.lit = true;
+    f.room_lights = 2;
+    f.light_images = 7;
+    f.light_depth = 1;
+    const HudText hud = hud_text(o, f, {});
+    ASSERT_EQ(hud.lines.size(), unlit + 1);
+    EXPECT_EQ(hud.lines[3], "lights 2 in this room   light images 7   light depth 1   shadows on");
+    EXPECT_NE(hud.lines.back().find("L shadows"), std::string::npos);
+    o.frame.shadows = false;
+    EXPECT_EQ(hud_text(o, f, {}).lines[3], "lights 2 in this room   light images 7   light depth 1   shadows off");
+}
+
 TEST(PreviewHudText, ListsTheFirstReloadErrors) {
     EXPECT_TRUE(reload_error_lines({}).empty());
     const std::vector<std::string> two = reload_error_lines({"a", "b"});

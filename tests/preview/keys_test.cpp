@@ -68,6 +68,15 @@ TEST(PreviewKeys, GHoldsAHandOutAndCommaAndPeriodMoveIt) {
     EXPECT_FALSE(o.hand);
 }
 
+TEST(PreviewKeys, LTogglesTheShadows) {
+    PreviewOptions o;
+    EXPECT_TRUE(o.frame.shadows);
+    apply_actions({Action::ToggleShadows}, false, o);
+    EXPECT_FALSE(o.frame.shadows);
+    apply_actions({Action::ToggleShadows}, false, o);
+    EXPECT_TRUE(o.frame.shadows);
+}
+
 TEST(PreviewKeys, TheHeldRightHandIsInFrontOfTheHeadTurnedAsIt) {
     const math::HeadPose head{{1.0, 1.6, 2.0}, 90.0, -20.0, 0.0};  // looking along -x, down
     const std::array<math::HeadPose, 2> hands = held_hands(head, 0.5);
