@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/geometric.hpp>
+
 #include "fuzz_check.hpp"
 #include "layout/layout.hpp"
 
@@ -58,6 +60,22 @@ void check_layout(const layout::Layout& l) {
             require(!m.loop || m.keys.size() >= 2, "a loop has two keys");
         }
     }
+    for (const layout::Room& room : l.rooms) {
+        const bool lit = l.lighting == layout::Lighting::Lights;
+        require(lit || room.lights.empty(), "a fixed layout has no lights");
+        for (const layout::Light& light : room.lights) {
+            const double tolerance = 1e-9 * (1.0 + glm::length(light.position));
+            for (int a = 0; a < 3; ++a) {
+                require(light.position[a] - room.min[a] > tolerance && room.max[a] - light.position[a] > tolerance,
+                        "a light is strictly inside its room");
+            }
+            require(light.intensity > 0 && light.range >= 0, "a light shines");
+            require(!light.spot || (light.spot->inner_deg >= 0 && light.spot->outer_deg > light.spot->inner_deg &&
+                                    light.spot->outer_deg <= 90),
+                    "a spot's cone is 0 <= inner < outer <= 90");
+        }
+    }
+    require(l.light_depth >= 0 && l.light_depth <= layout::kMaxLightDepth, "light_depth is in 0..16");
     if (l.hands.model) require(l.hands.model->scale > 0, "a hand model has a scale");
     require(l.hands.box.x > 0 && l.hands.box.y > 0 && l.hands.box.z > 0, "a hand box has a size");
 }

@@ -19,6 +19,40 @@ bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.
 
 bool in_unit_range(const glm::dvec3& c) { return c.x >= 0 && c.x <= 1 && c.y >= 0 && c.y <= 1 && c.z >= 0 && c.z <= 1; }
 
+// The promises of a room's ambient and lights (layout-format.md, "Lights"):
+// none but the defaults under "fixed"; under "lights" each light strictly
+// inside its room, with the spec's ranges.
+void check_lights(const Layout& layout, const Room& room) {
+    if (layout.lighting == Lighting::Fixed) {
+        EXPECT_EQ(layout.light_depth, kDefaultLightDepth);
+        EXPECT_EQ(room.ambient, kDefaultAmbient);
+        EXPECT_TRUE(room.lights.empty());
+        return;
+    }
+    EXPECT_TRUE(layout.light_depth >= 0 && layout.light_depth <= kMaxLightDepth);
+    EXPECT_TRUE(finite(room.ambient) && room.ambient.x >= 0 && room.ambient.y >= 0 && room.ambient.z >= 0);
+    for (const Light& light : room.lights) {
+        const double tolerance = 1e-9 * (1.0 + glm::length(light.position));
+        for (int a = 0; a < 3; ++a) {
+            EXPECT_GT(light.position[a] - room.min[a], tolerance);
+            EXPECT_GT(room.max[a] - light.position[a], tolerance);
+        }
+        EXPECT_TRUE(in_unit_range(light.color));
+        EXPECT_GT(light.intensity, 0.0);
+        EXPECT_GE(light.range, 0.0);
+        if (light.spot) {
+            EXPECT_NEAR(glm::length(light.spot->direction), 1.0, 1e-12);
+            EXPECT_GE(light.spot->inner_deg, 0.0);
+            EXPECT_GT(light.spot->outer_deg, light.spot->inner_deg);
+            EXPECT_LE(light.spot->outer_deg, 90.0);
+        }
+        if (light.prop >= 0) {
+            ASSERT_LT(std::size_t(light.prop), room.props.size());
+            EXPECT_TRUE(std::holds_alternative<GltfProp>(room.props[std::size_t(light.prop)]));
+        }
+    }
+}
+
 // The promises of a loaded layout (layout.hpp).
 void check_invariants(const Layout& layout) {
     ASSERT_FALSE(layout.rooms.empty());
@@ -38,6 +72,7 @@ void check_invariants(const Layout& layout) {
         EXPECT_TRUE(finite(room.min) && finite(room.max));
         EXPECT_TRUE(room.max.x > room.min.x && room.max.y > room.min.y && room.max.z > room.min.z);
         for (const glm::dvec3& c : room.face_color) EXPECT_TRUE(in_unit_range(c));
+        check_lights(layout, room);
         EXPECT_GE(room.checker, 0.0);
         EXPECT_TRUE(std::isfinite(room.texture_size) && room.texture_size > 0.0);
         for (const auto& image : room.face_texture) {
@@ -226,9 +261,9 @@ private:
 };
 
 TEST(LayoutFuzzLoop, MutatedLayoutsGiveErrorsOrValidLayouts) {
-    const std::vector<std::string> seeds = {two_rooms(), read_text(kLayoutDir + "/impossible.json"),
-                                            read_text(kLayoutDir + "/props.json"),
-                                            read_text(kLayoutDir + "/mirrors_windows.json")};
+    const std::vector<std::string> seeds = {
+        two_rooms(), read_text(kLayoutDir + "/impossible.json"), read_text(kLayoutDir + "/props.json"),
+        read_text(kLayoutDir + "/mirrors_windows.json"), read_text(kLayoutDir + "/lit_rooms.json")};
     for (const std::string& seed : seeds) {
         const LoadResult r = load_layout_text(seed, "fuzz.json", kLayoutDir);
         ASSERT_TRUE(r.layout.has_value()) << all_messages(r.errors);
