@@ -70,6 +70,17 @@ struct RoomLights {
 // clipping each aperture with the cone from the light's image through the
 // next), and paths that end beyond the light's range. Empty for a "fixed"
 // layout. Valid layouts only (from the loader).
+//
+// Culling is conservative: clipping keeps what lies within 1e-9 · (1 + |L|
+// + |aperture centre| + its size) outside, so a path is dropped only when no
+// shadow ray from any point of C passes its apertures in order (blockers
+// and props aside, which the shader tests per point) or every such ray is
+// at least the light's range long; the one exception is a portal whose
+// rectangle lies within that tolerance of the plane of an aperture passed
+// before it (a straight ray crosses a plane once), which layouts avoid as
+// they avoid coplanar surfaces. Paths are followed from each light
+// outwards, so the work is proportional to the paths kept, not to all
+// sequences of portals.
 std::vector<RoomLights> light_images(const layout::Layout& layout, const links::PortalLinks& links, int light_depth);
 
 // For tests: `cull = false` keeps every path the factor rule keeps (no
