@@ -94,6 +94,48 @@ double distance_to_polygon(const dvec3& p, const Polygon3& poly) {
     return std::min(best, std::abs(glm::dot(p - g, normal)));
 }
 
+namespace {
+
+// The largest cosine between axis and the directions a + u (b - a), u in
+// [0, 1] (a, b from the apex): at an end, or where the axis projected on
+// their plane falls between them.
+double aperture_clip_segment_cos(const dvec3& axis, const dvec3& a, const dvec3& b) {
+    const double ends = std::max(glm::dot(axis, glm::normalize(a)), glm::dot(axis, glm::normalize(b)));
+    const dvec3 m = glm::cross(a, b);
+    const double len = glm::length(m);
+    if (!(len > 1e-300)) return ends;
+    const dvec3 unit_m = m / len;
+    const dvec3 in_plane = axis - unit_m * glm::dot(axis, unit_m);
+    const bool between =
+        glm::dot(glm::cross(a, in_plane), unit_m) >= 0.0 && glm::dot(glm::cross(in_plane, b), unit_m) >= 0.0;
+    return between ? std::max(ends, glm::length(in_plane)) : ends;
+}
+
+}  // namespace
+
+double max_cos_to_polygon(const dvec3& apex, const dvec3& axis, const Polygon3& poly) {
+    const std::size_t n = poly.size();
+    if (n == 1) return glm::dot(axis, glm::normalize(poly[0] - apex));
+    double best = -1.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        best = std::max(best, aperture_clip_segment_cos(axis, poly[i] - apex, poly[(i + 1) % n] - apex));
+    }
+    if (n < 3) return best;
+    // The ray along the axis meets the polygon's plane inside its outline.
+    const dvec3 g = aperture_clip_centroid(poly);
+    dvec3 normal(0.0);
+    for (std::size_t i = 0; i < n; ++i) normal += glm::cross(poly[i] - g, poly[(i + 1) % n] - g);
+    const double facing = glm::dot(normal, axis);
+    if (facing == 0.0) return best;
+    const double t = glm::dot(normal, g - apex) / facing;
+    if (!(t > 0.0)) return best;
+    const dvec3 q = apex + axis * t;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (glm::dot(glm::cross(poly[(i + 1) % n] - poly[i], q - poly[i]), normal) < 0.0) return best;
+    }
+    return 1.0;
+}
+
 math::PortalRect transform_rect(const math::dmat4& m, const math::PortalRect& rect) {
     math::PortalRect out = rect;
     out.center = dvec3(m * math::dvec4(rect.center, 1.0));

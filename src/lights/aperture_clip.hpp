@@ -32,6 +32,11 @@ Polygon3 clip_to_cone(const Polygon3& poly, const math::dvec3& apex, const Polyg
 // at least one corner.
 double distance_to_polygon(const math::dvec3& p, const Polygon3& poly);
 
+// The largest cosine of the angle between the unit `axis` and the direction
+// from `apex` to a point of the convex planar polygon (at least one corner;
+// the apex not in its plane): 1 when the ray from apex along axis meets it.
+double max_cos_to_polygon(const math::dvec3& apex, const math::dvec3& axis, const Polygon3& poly);
+
 // A rigid transform (or a reflection) applied to a portal rectangle: the
 // centre as a point, the normal and up as directions; depth 0.
 math::PortalRect transform_rect(const math::dmat4& m, const math::PortalRect& rect);

@@ -211,6 +211,15 @@ LiStep li_step(const LiWalk& walk, const LiArrival& arrival, const dmat4& to_lig
 
 bool li_over_budget(const LiWalk& walk) { return walk.budget > 0 && walk.count > walk.budget; }
 
+// A spot whose cone no ray from the light through the window lies in
+// lights nothing along this path (spot = 0), nor along a longer one.
+bool li_outside_spot(const LiWalk& walk, const Polygon3& window) {
+    const layout::Light& light = li_light(walk);
+    if (!light.spot) return false;
+    const double cos_outer = std::cos(math::radians(light.spot->outer_deg));
+    return max_cos_to_polygon(light.position, light.spot->direction, window) < cos_outer - 1e-9;
+}
+
 void li_visit(LiWalk& walk, const Polygon3& window, const dvec3& factor) {
     ++walk.count;
     if (!walk.count_only) walk.out.push_back(li_make_image(walk, factor));
@@ -226,7 +235,8 @@ void li_visit(LiWalk& walk, const Polygon3& window, const dvec3& factor) {
         Polygon3 next_window;
         if (walk.cull) {
             next_window = li_clip(walk, step.rect, window);
-            if (next_window.empty() || li_out_of_range(walk, next_window)) continue;
+            if (next_window.empty() || li_out_of_range(walk, next_window) || li_outside_spot(walk, next_window))
+                continue;
         }
         walk.steps.push_back(step);
         li_visit(walk, next_window, next_factor);

@@ -68,14 +68,16 @@ struct RoomLights {
 // paths whose factor falls below shading::kMinLightFactor (largest channel),
 // paths whose apertures no straight segment passes in order (checked by
 // clipping each aperture with the cone from the light's image through the
-// next), and paths that end beyond the light's range. Empty for a "fixed"
+// next), paths that end beyond the light's range, and paths of a spot
+// whose cone holds no ray through the apertures. Empty for a "fixed"
 // layout. Valid layouts only (from the loader).
 //
 // Culling is conservative: clipping keeps what lies within 1e-9 · (1 + |L|
 // + |aperture centre| + its size) outside, so a path is dropped only when no
 // shadow ray from any point of C passes its apertures in order (blockers
 // and props aside, which the shader tests per point) or every such ray is
-// at least the light's range long; the one exception is a portal whose
+// at least the light's range long or outside its spot's cone (where the
+// contribution is 0); the one exception is a portal whose
 // rectangle lies within that tolerance of the plane of an aperture passed
 // before it (a straight ray crosses a plane once), which layouts avoid as
 // they avoid coplanar surfaces. Paths are followed from each light

@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include <glm/geometric.hpp>
+
 #include "lights/aperture_clip.hpp"
 #include "lights/lights_test_layouts.hpp"
 
@@ -47,6 +49,19 @@ TEST(ApertureClip, ConeFromAnApexThroughAWindow) {
     // The other nappe (behind the apex) is not in the cone.
     const Polygon3 behind = rect_polygon(testing::make_rect({0, 0, 2}, {0, 0, 1}, 1.0, 1.0), 0.0);
     EXPECT_TRUE(clip_to_cone(behind, {0, 0, 0}, window, 0.0).empty());
+}
+
+TEST(ApertureClip, TheSmallestAngleFromAnAxisToAPolygon) {
+    // A 2 × 2 square at z = -1 (x, y in -1..1), seen from the origin.
+    const Polygon3 square = rect_polygon(testing::make_rect({0, 0, -1}, {0, 0, 1}, 2.0, 2.0), 0.0);
+    EXPECT_DOUBLE_EQ(max_cos_to_polygon({0, 0, 0}, {0, 0, -1}, square), 1.0);  // the axis meets it
+    // Along +x: nearest at the edge x = 1, at its middle (y = 0): 45°.
+    EXPECT_NEAR(max_cos_to_polygon({0, 0, 0}, {1, 0, 0}, square), std::sqrt(0.5), 1e-12);
+    // Diagonal, beyond a corner: the corner (1, 1, -1).
+    const dvec3 diagonal = glm::normalize(dvec3(1, 1, 0));
+    EXPECT_NEAR(max_cos_to_polygon({0, 0, 0}, diagonal, square), glm::dot(diagonal, glm::normalize(dvec3(1, 1, -1))),
+                1e-12);
+    EXPECT_LT(max_cos_to_polygon({0, 0, 0}, {0, 0, 1}, square), 0.0);  // facing away
 }
 
 TEST(ApertureClip, DistanceToAPolygonInsideAndOutsideItsOutline) {

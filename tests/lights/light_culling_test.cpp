@@ -68,6 +68,21 @@ TEST(LightCulling, ALightOutOfRangeOfTheApertureIsDropped) {
     EXPECT_EQ(rooms[1].images.size(), 3u);
 }
 
+TEST(LightCulling, ASpotThatLightsNoneOfTheApertureIsDropped) {
+    layout::Layout l = doorway();
+    add_light(l, 1, {4, 2.5, 0});
+    add_light(l, 1, {4, 2.5, 0});
+    add_light(l, 1, {4, 2.5, 0});
+    l.rooms[1].lights[0].spot = layout::Spot{{0, -1, 0}, 20.0, 30.0};  // straight down: misses the door (38.7°)
+    l.rooms[1].lights[1].spot = layout::Spot{{-1, 0, 0}, 20.0, 40.0};  // at the door
+    l.rooms[1].lights[2].spot = layout::Spot{{0, -1, 0}, 20.0, 89.0};  // wide enough
+    const auto rooms = light_images(l, links::link_portals(l), 1);
+    EXPECT_FALSE(has_path(rooms[0], PathKey{1, 0, {{0, false}}}));
+    EXPECT_TRUE(has_path(rooms[0], PathKey{1, 1, {{0, false}}}));
+    EXPECT_TRUE(has_path(rooms[0], PathKey{1, 2, {{0, false}}}));
+    EXPECT_EQ(rooms[1].images.size(), 3u);  // never in its own room
+}
+
 // A window pair on the -z and +z walls of one room (the camera and the TV).
 layout::Layout facing_windows(double reflectance, double tint) {
     layout::Layout l = lit_layout("facing windows");
@@ -228,7 +243,7 @@ TEST(LightCulling, SegmentPassesTheAperturesInOrderOnly) {
 }
 
 // Every path that some shadow ray from a point of C passes, and that ends
-// within the light's range there, survives culling, whatever the doors'
+// within the light's range and its spot's cone there, survives culling, whatever the doors'
 // places; and culling does drop some.
 void expect_conservative(const layout::Layout& l, int depth, std::mt19937_64& rng, int points, int& passed,
                          int& dropped) {
@@ -245,10 +260,13 @@ void expect_conservative(const layout::Layout& l, int depth, std::mt19937_64& rn
             dropped += kept ? 0 : 1;
             for (int i = 0; i < points; ++i) {
                 const dvec3 p(ux(rng), uy(rng), uz(rng));
-                const double range = l.rooms[static_cast<std::size_t>(image.light_room)]
-                                         .lights[static_cast<std::size_t>(image.light)]
-                                         .range;
-                if (range > 0.0 && glm::length(image.position - p) >= range) continue;
+                // The light as the image carries it (its spot's axis in C's coordinates).
+                layout::Light light =
+                    l.rooms[static_cast<std::size_t>(image.light_room)].lights[static_cast<std::size_t>(image.light)];
+                if (light.spot) light.spot->direction = image.spot_direction;
+                const double d = glm::length(image.position - p);
+                if (light.range > 0.0 && d >= light.range) continue;
+                if (shading::spot_factor(light, (image.position - p) / d) <= 0.0) continue;
                 if (!segment_passes(image, p)) continue;
                 ++passed;
                 EXPECT_TRUE(kept) << "room " << c << " light " << image.light_room << "/" << image.light << " k "
