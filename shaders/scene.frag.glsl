@@ -55,9 +55,17 @@ void main() {
     }
 #endif
     vec3 n = normalize(v_normal);
+#if defined(LIGHTS)
+    // layout-format.md, "Lights": the room's ambient and the light paths
+    // (lighting.frag.glsl) instead of the built-in light.
+    float dark = checker_dark(v_checker_position, n, v_checker) ? CHECKER_DARK : 1.0;
+    vec3 lit = u_light_ambient + light_sum(v_light_position, n, length(v_light_position + u_light_origin));
+    o_color = vec4(clamp(base * dark * lit, 0.0, 1.0), 1.0);
+#else
     float lambert = max(0.0, dot(n, LIGHT_DIR));
     float dark = checker_dark(v_checker_position, n, v_checker) ? CHECKER_DARK : 1.0;
     o_color = vec4(base * ((AMBIENT + DIFFUSE * lambert) * dark), 1.0);
+#endif
 #if defined(VOLUMES)
     o_color.rgb *= u_volume_tint;
 #endif

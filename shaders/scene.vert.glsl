@@ -47,6 +47,13 @@ uniform mat4 u_to_volume_space;
 out vec3 v_volume_position;
 #endif
 
+// LIGHTS: the vertex in the coordinates of the room that lights it, less
+// that room's cell origin (a cell's own vertices: as they are).
+#if defined(LIGHTS)
+uniform mat4 u_to_light_space;
+out vec3 v_light_position;
+#endif
+
 out vec3 v_checker_position;
 out vec3 v_normal;
 out vec3 v_color;
@@ -77,6 +84,9 @@ void main() {
 #endif
 #if defined(VOLUMES)
     v_volume_position = (u_to_volume_space * vec4(a_position, 1.0)).xyz;
+#endif
+#if defined(LIGHTS)
+    v_light_position = (u_to_light_space * vec4(a_position, 1.0)).xyz;
 #endif
 #if defined(STEREO_VIEWPORT_INDEX)
     gl_ViewportIndex = eye;

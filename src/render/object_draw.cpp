@@ -103,10 +103,17 @@ void draw_instance(const DrawContext& ctx, const LevelView& view, const Scissor&
     const math::dmat4 model = inst.to_cell * glm::translate(math::dmat4(1.0), mesh.origin);
     const double extent = mesh_extent(mesh);
     for (const scene::DrawBatch& b : mesh.batches) {
-        const SceneProgram& program = cell_program(ctx, view.cell, kObjectCuts | (has_material(b) ? kMaterials : 0u));
+        const SceneProgram& program =
+            cell_program(ctx, view.cell, kObjectCuts | light_flags(ctx) | (has_material(b) ? kMaterials : 0u));
         set_model_uniforms(ctx, view, program, {view.eyes[0].rect, view.eyes[1].rect}, model, glm::vec3(0.0f));
         set_instance_uniforms(program, inst, model, extent);
         set_cell_id(program, static_cast<unsigned>(id_cell + 1), false);
+        // Lit in the room it is placed in, from the mesh's coordinates.
+        if (r.lit) {
+            const math::dvec3 origin = r.cell_origins[static_cast<size_t>(id_cell)].origin;
+            const glm::mat4 to_light(glm::translate(math::dmat4(1.0), -origin) * model);
+            set_light_uniforms(r.lights, program, id_cell, to_light);
+        }
         set_volume_uniforms(ctx, view, program, model, inside);
         if (has_material(b)) set_material(ctx, program, b);
         draw_range(ctx, view, {Pass::Scene, view.level, &program, scissor, kObjectClipDistances}, b.range);
@@ -119,10 +126,14 @@ void draw_volume_room(const DrawContext& ctx, const LevelView& view, const Sciss
     const RendererData& r = ctx.renderer;
     const scene::CellOrigin& origin = r.cell_origins[static_cast<size_t>(t)];
     const math::dmat4 model = glm::translate(math::dmat4(1.0), origin.origin);
+    // Lit by its own room's ambient and lights (layout-format.md, "Lights").
+    if (r.lit) ctx.scratch.stats.light_images += r.lights.count[static_cast<size_t>(t)];
     for (const scene::DrawBatch& b : r.cells[static_cast<size_t>(t)]) {
-        const SceneProgram& program = cell_program(ctx, view.cell, has_material(b) ? kMaterials : 0u);
+        const SceneProgram& program =
+            cell_program(ctx, view.cell, light_flags(ctx) | (has_material(b) ? kMaterials : 0u));
         set_model_uniforms(ctx, view, program, {view.eyes[0].rect, view.eyes[1].rect}, model, origin.checker_offset);
         set_cell_id(program, static_cast<unsigned>(t + 1), false);
+        set_room_lights(ctx, program, t, false);
         set_volume_uniforms(ctx, view, program, model, inside);
         if (has_material(b)) set_material(ctx, program, b);
         draw_range(ctx, view, {Pass::Scene, view.level, &program, scissor}, b.range);
@@ -130,6 +141,15 @@ void draw_volume_room(const DrawContext& ctx, const LevelView& view, const Sciss
 }
 
 }  // namespace
+
+unsigned light_flags(const DrawContext& ctx) { return ctx.renderer.lit ? kLights : 0u; }
+
+void set_room_lights(const DrawContext& ctx, const SceneProgram& program, int room, bool count) {
+    const RendererData& r = ctx.renderer;
+    if (!r.lit) return;
+    set_light_uniforms(r.lights, program, room, glm::mat4(1.0f));
+    if (count) ctx.scratch.stats.light_images += r.lights.count[static_cast<size_t>(room)];
+}
 
 const SceneProgram& cell_program(const DrawContext& ctx, int cell, unsigned flags) {
     const RendererData& r = ctx.renderer;

@@ -40,7 +40,8 @@ void draw_cell(const DrawContext& ctx, const LevelView& view, const SceneDraw& d
     // the material variant, whose per-level uniforms are set when it is
     // first needed.
     SceneDraw with_materials = draw;
-    const SceneProgram* material_program = ctx.material_program ? &cell_program(ctx, view.cell, kMaterials) : nullptr;
+    const SceneProgram* material_program =
+        ctx.material_program ? &cell_program(ctx, view.cell, kMaterials | light_flags(ctx)) : nullptr;
     with_materials.program = material_program;
     bool material_ready = false;
     for (const scene::DrawBatch& b : *batches) {
@@ -55,6 +56,7 @@ void draw_cell(const DrawContext& ctx, const LevelView& view, const SceneDraw& d
         if (!material_ready) {
             set_eye_uniforms(ctx, view, m, {view.eyes[0].rect, view.eyes[1].rect});
             set_cell_id(m, static_cast<unsigned>(view.cell + 1), false);
+            set_room_lights(ctx, m, view.cell, false);
             glProgramUniform1i(m.program.get(), m.mip_level0, ctx.frame.textures_mip_level0 ? 1 : 0);
             material_ready = true;
         }

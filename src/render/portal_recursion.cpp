@@ -158,10 +158,13 @@ void draw_level_surfaces(const DrawContext& ctx, const LevelView& view, const st
     const SceneDraw depth{Pass::PortalDepth, level, &program, scissor};
     for (size_t k = 0; k < portals.size(); ++k)
         if (!visible[k][0].empty() || !visible[k][1].empty()) draw_portal_box(ctx, view, depth, portals[k], visible[k]);
-    set_eye_uniforms(ctx, view, program, {view.eyes[0].rect, view.eyes[1].rect});
-    set_cell_id(program, static_cast<unsigned>(view.cell + 1), false);
+    // The colour pass: under "lighting": "lights" the LIGHTS variant.
+    const SceneProgram& shaded = cell_program(ctx, view.cell, light_flags(ctx));
+    set_eye_uniforms(ctx, view, shaded, {view.eyes[0].rect, view.eyes[1].rect});
+    set_cell_id(shaded, static_cast<unsigned>(view.cell + 1), false);
+    set_room_lights(ctx, shaded, view.cell, true);
     const ColourQueryScope colour(ctx.profiler);
-    draw_cell(ctx, view, {Pass::Scene, level, &program, scissor});
+    draw_cell(ctx, view, {Pass::Scene, level, &shaded, scissor});
     draw_cell_instances(ctx, view, scissor, view.cell, -1);
     draw_volume_rooms(ctx, view, scissor);
 }

@@ -93,6 +93,16 @@ void place_frame_objects(const RendererData& r, const FrameDesc& frame, FrameObj
 // variant with `flags` (and kVolumes where the cell has volumes).
 const SceneProgram& cell_program(const DrawContext& ctx, int cell, unsigned flags = 0u);
 
+// kLights under "lighting": "lights", else 0: what the colour passes add to
+// their program's flags.
+unsigned light_flags(const DrawContext& ctx);
+
+// A colour pass's light uniforms for surfaces of `room` (the identity into
+// the room's coordinates: the room's own vertices), counting the room's
+// images in FrameStats::light_images when `count` is set. Nothing for a
+// fixed layout.
+void set_room_lights(const DrawContext& ctx, const SceneProgram& program, int room, bool count);
+
 // The instances placed in `cell` that the level's eyes may see, drawn in
 // `view` (whose cell is `cell`, or holds a volume whose target is `cell`)
 // with id cell + 1; `inside` as set_volume_uniforms's.

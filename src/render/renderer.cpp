@@ -43,13 +43,14 @@ Result<void> ensure_program(Programs& programs, StereoMode mode, bool materials)
     return {};
 }
 
-// The variants with object cuts or volumes (scene_program.hpp) that a frame
-// of `mode` may draw with.
+// The variants with object cuts, volumes or lights (scene_program.hpp) that
+// a frame of `mode` may draw with.
 Result<void> ensure_variants(RendererData& r, StereoMode mode, bool objects) {
     const bool volumes = r.has_volumes;
     for (unsigned flags = 0; flags < kSceneVariantCount; ++flags) {
-        if ((flags & (kObjectCuts | kVolumes)) == 0u) continue;
+        if ((flags & (kObjectCuts | kVolumes | kLights)) == 0u) continue;
         if (((flags & kObjectCuts) && !objects) || ((flags & kVolumes) && !volumes)) continue;
+        if ((flags & kLights) && !r.lit) continue;
         if ((flags & kMaterials) && !r.has_materials) continue;
         std::optional<SceneProgram>& slot = r.programs.variants[mode_index(mode)][flags];
         if (slot) continue;
@@ -58,6 +59,21 @@ Result<void> ensure_variants(RendererData& r, StereoMode mode, bool objects) {
         slot = std::move(*built);
     }
     return {};
+}
+
+// A lit layout's light images at the frame's light depth on the GPU: the
+// scene's, or made for View::light_depth when it differs, and kept until a
+// frame asks for another depth.
+void ensure_lights(RendererData& r, const FrameDesc& frame) {
+    if (!r.lit) return;
+    const int depth = frame.light_depth.value_or(r.scene_light_depth);
+    if (r.lights.depth == depth) return;
+    if (depth == r.scene_light_depth) {
+        r.lights = upload_light_images(r.scene_room_lights, *r.lit_layout, r.cell_origins, depth);
+        return;
+    }
+    const std::vector<lights::RoomLights> rooms = lights::light_images(*r.lit_layout, r.links, depth);
+    r.lights = upload_light_images(rooms, *r.lit_layout, r.cell_origins, depth);
 }
 
 // What a frame needs beyond the default program: its target, its stereo
@@ -71,6 +87,7 @@ Result<void> prepare_frame(RendererData& r, FrameTargets& targets, const FrameDe
         if (Result<void> made = ensure_program(programs, frame.stereo, true); !made) return made;
     const bool objects = !r.object_set.props.empty() || frame.hands.has_value();
     if (Result<void> made = ensure_variants(r, frame.stereo, objects); !made) return made;
+    ensure_lights(r, frame);
     if (Result<void> made = ensure_multisampled(programs, targets, frame); !made) return made;
     if (r.has_windows) {
         if (Result<void> made = prepare_window_blend(programs, false); !made) return made;
@@ -145,6 +162,7 @@ Result<void> draw_frame(RendererParts& parts, const FrameDesc& frame, FrameStats
     place_frame_objects(r, frame, scratch.objects, scratch.prop_walks.get());
     // Bound for the frame: another renderer of the context may bind its own.
     if (r.has_volumes) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVolumeBinding, r.volume_boxes.get());
+    if (r.lit) bind_light_buffers(&r.lights);
     const Target& target = drawing_target(parts.targets, frame);
     clear_target(state, target, 0);
 
@@ -168,6 +186,7 @@ Result<void> draw_frame(RendererParts& parts, const FrameDesc& frame, FrameStats
     // look bound already.
     state.release_bindings();
     if (r.has_volumes) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVolumeBinding, 0);
+    if (r.lit) bind_light_buffers(nullptr);
     if (frame.profile) profiler.collect(scratch.stats);
     if (stats_out) *stats_out = std::move(scratch.stats);
     return {};
@@ -249,6 +268,12 @@ Result<Renderer> Renderer::create(gl::StateCache& state, const scene::Scene& sce
     // RendererParts stays where it is: the walks may keep a pointer to the set.
     parts->scratch.prop_walks = std::make_unique<walk::PropWalks>(r.object_set);
     r.cell_origins = scene.origins;
+    r.lit = scene.lighting == layout::Lighting::Lights && scene.lit_layout != nullptr;
+    if (r.lit) {
+        r.scene_light_depth = scene.light_depth;
+        r.scene_room_lights = scene.room_lights;
+        r.lit_layout = scene.lit_layout;
+    }
     r.links = scene.links;
     r.portals = scene.portal_info;
     r.portal_meshes = scene.portals;

@@ -21,6 +21,7 @@
 #include "links/portal_links.hpp"
 #include "render/frame.hpp"
 #include "render/gpu_scene.hpp"
+#include "render/light_buffers.hpp"
 #include "render/multi_draw.hpp"
 #include "render/multisample.hpp"
 #include "render/object_culling.hpp"
@@ -88,6 +89,14 @@ struct RendererData {
     // volume_first[room] is the room's first.
     gl::Buffer volume_boxes;
     std::vector<int> volume_first;
+    // Under "lighting": "lights": the scene's images at its light depth, the
+    // layout (for another depth, View::light_depth), and the images of the
+    // depth last drawn on the GPU (made before the frame that needs them).
+    bool lit = false;
+    int scene_light_depth = 0;
+    std::vector<lights::RoomLights> scene_room_lights;
+    std::shared_ptr<const layout::Layout> lit_layout;
+    LightBuffers lights;
     GpuScene gpu;
     gl::VertexArray empty_vao;  // for the attribute-less full-target triangle
     Programs programs;

@@ -6,6 +6,7 @@
 
 #include "base/embedded.hpp"
 #include "gl/shader.hpp"
+#include "layout/layout.hpp"
 #include "render/gpu_scene.hpp"
 #include "shading/shading.hpp"
 
@@ -38,6 +39,7 @@ struct SceneVariant {
     bool materials = false;    // MATERIALS: textures and cut-outs
     bool object_cuts = false;  // OBJECT_CUTS
     bool volumes = false;      // VOLUMES
+    bool lights = false;       // LIGHTS
 };
 
 std::string variant_defines(const SceneVariant& variant) {
@@ -46,6 +48,8 @@ std::string variant_defines(const SceneVariant& variant) {
     // The inside test's tolerance: far below a pixel, above float rounding
     // of positions a few metres from the cell's origin.
     if (variant.volumes) defines += "#define VOLUMES\n#define VOLUME_TOLERANCE 1e-6\n";
+    if (variant.lights)
+        defines += "#define LIGHTS\n#define LIGHT_MAX_APERTURES " + std::to_string(layout::kMaxLightDepth) + "\n";
     return defines;
 }
 
@@ -63,6 +67,13 @@ void find_variant_uniforms(const SceneVariant& variant, gl::UniformLocations& u,
         p.volume_tint = std::string(variant.fragment) == "shaders/scene.frag.glsl" ? u.required("u_volume_tint")
                                                                                    : u.optional("u_volume_tint");
     }
+    if (variant.lights) {
+        p.to_light_space = u.required("u_to_light_space");
+        p.light_first = u.required("u_light_first");
+        p.light_count = u.required("u_light_count");
+        p.light_ambient = u.required("u_light_ambient");
+        p.light_origin = u.required("u_light_origin");
+    }
 }
 
 Result<SceneProgram> link_scene_program(const SceneVariant& variant, const std::string& defines) {
@@ -70,7 +81,9 @@ Result<SceneProgram> link_scene_program(const SceneVariant& variant, const std::
                                             embedded_shader(GL_FRAGMENT_SHADER, variant.fragment)};
     // The volume test, shared by both fragment shaders, goes before the
     // fragment shader's own text (whose lines keep their numbers).
-    stages[1].text = std::string(embedded::find("shaders/volume_clip.frag.glsl")) + "\n#line 1\n" + stages[1].text;
+    // So does the lit colour (the LIGHTS variants only).
+    stages[1].text = std::string(embedded::find("shaders/volume_clip.frag.glsl")) + "\n" +
+                     std::string(embedded::find("shaders/lighting.frag.glsl")) + "\n#line 1\n" + stages[1].text;
     Result<gl::Program> built = gl::build_program(stages, defines + variant_defines(variant));
     if (!built) return built;
     SceneProgram p;
@@ -121,6 +134,7 @@ Result<SceneProgram> build_scene_variant(StereoMode mode, unsigned flags) {
     variant.materials = (flags & kMaterials) != 0;
     variant.object_cuts = (flags & kObjectCuts) != 0;
     variant.volumes = (flags & kVolumes) != 0;
+    variant.lights = (flags & kLights) != 0;
     return link_scene_program(variant, defines);
 }
 

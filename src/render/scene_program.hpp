@@ -40,23 +40,34 @@ struct SceneProgram {
     GLint volume_count = -1;     // int
     GLint volume_inside = -1;    // int: -1 hide inside every volume; k show inside volume k only
     GLint volume_tint = -1;      // vec3
+    // kLights variants only (shaders/lighting.frag.glsl, LIGHTS):
+    GLint to_light_space = -1;  // mat4: vertex → the lit room's coordinates less its origin
+    GLint light_first = -1;     // int: the lit room's first image in the buffer at kLightImagesBinding
+    GLint light_count = -1;     // int
+    GLint light_ambient = -1;   // vec3: the lit room's ambient
+    GLint light_origin = -1;    // vec3: the lit room's cell origin
 };
 
 // The shader storage buffer binding of every room's volume boxes.
 inline constexpr GLuint kVolumeBinding = 3;
+// The shader storage buffer bindings of every room's light images and of
+// their paths' rectangles (render/light_buffers.hpp).
+inline constexpr GLuint kLightImagesBinding = 4;
+inline constexpr GLuint kLightRectsBinding = 5;
 
 // What a variant of the scene program adds to the plain one: bits of
 // build_scene_variant's `flags`.
 inline constexpr unsigned kMaterials = 1u;   // MATERIALS: textures and cut-outs
 inline constexpr unsigned kObjectCuts = 2u;  // OBJECT_CUTS: instances of dynamic objects
 inline constexpr unsigned kVolumes = 4u;     // VOLUMES: the draws of a cell with volume portals
-inline constexpr unsigned kSceneVariantCount = 8u;
+inline constexpr unsigned kLights = 8u;      // LIGHTS: the colour passes of a lit layout ("lighting": "lights")
+inline constexpr unsigned kSceneVariantCount = 16u;
 
 // `materials`: the variant that reads textures and drops cut-out fragments
 // (shaders/scene.frag.glsl, MATERIALS), for batches that need it.
 Result<SceneProgram> build_scene_program(StereoMode mode, bool materials = false);
 
-// Any variant (`flags` of kMaterials, kObjectCuts, kVolumes).
+// Any variant (`flags` of kMaterials, kObjectCuts, kVolumes, kLights).
 Result<SceneProgram> build_scene_variant(StereoMode mode, unsigned flags);
 
 // The scene's vertex shader with shaders/portal_texture.frag.glsl: a portal

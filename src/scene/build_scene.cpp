@@ -3,6 +3,7 @@
 // cell), then every portal's box (front range, inner range), then the
 // dynamic objects' meshes (scene/object_meshes.hpp).
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <type_traits>
 #include <variant>
@@ -126,6 +127,14 @@ Scene build_scene(const layout::Layout& layout) {
         scene.portal_info.push_back({lp.rect, lp.room, lp.target, lp.kind, lp.tint, lp.reflectance});
     }
     append_object_meshes(scene, out, layout);
+    if (layout.lighting == layout::Lighting::Lights) {
+        // The light images at the layout's depth; the layout is kept for a
+        // renderer asked for another depth (View::light_depth).
+        scene.lighting = layout::Lighting::Lights;
+        scene.light_depth = layout.light_depth;
+        scene.room_lights = lights::light_images(layout, scene.links, layout.light_depth);
+        scene.lit_layout = std::make_shared<const layout::Layout>(layout);
+    }
     return scene;
 }
 

@@ -19,6 +19,7 @@
 #include <glm/vec3.hpp>
 
 #include "layout/layout.hpp"
+#include "lights/light_images.hpp"
 #include "links/portal_links.hpp"
 #include "walk/objects.hpp"
 
@@ -145,6 +146,14 @@ struct Scene {
     walk::ObjectSet object_set;
     std::vector<ObjectMesh> object_meshes;             // per object_set.props, then the hand (the last)
     std::vector<std::vector<layout::Volume>> volumes;  // per room: its volume portals, in file order
+    // Under "lighting": "lights" (layout-format.md, "Lights"): every room's
+    // light images at the layout's light_depth (lights::light_images), and
+    // the layout, for a renderer asked for another depth (View::light_depth).
+    // "fixed": Lighting::Fixed, nothing else.
+    layout::Lighting lighting = layout::Lighting::Fixed;
+    int light_depth = layout::kDefaultLightDepth;
+    std::vector<lights::RoomLights> room_lights;
+    std::shared_ptr<const layout::Layout> lit_layout;
 };
 
 // Builds the meshes of every room and portal box, and links the portals. The

@@ -1,0 +1,106 @@
+// The lit colour of layout-format.md, "Lights" (src/shading/lighting.hpp's
+// formulas in float), for the LIGHTS variants of scene.frag.glsl:
+// render/scene_program.cpp puts it before the fragment shader, after the
+// volume test. Only the LIGHTS variants compile it; every other variant's
+// text is as before.
+#if defined(LIGHTS)
+// The fragment in the coordinates of the room it belongs to (the room that
+// lights it), less that room's cell origin.
+in vec3 v_light_position;
+
+// Every room's light images (render/light_buffers.hpp), room after room, five
+// vec4s each, positions relative to the room's cell origin:
+//   [0] xyz: the image L', w: range (0: none)
+//   [1] rgb: color · intensity · factor, w: cos outer (2: a point light)
+//   [2] xyz: the spot's axis in the room's coordinates, w: 1 / (cos inner - cos outer)
+//   [3] x: the first of its path's rectangles, y: their number (as floats)
+//   [4] unused (the shadow lookup's)
+layout(std430, binding = 4) readonly buffer LightImages {
+    vec4 light_images[];
+};
+// The portal rectangles of the paths: four vec4s each, the centre (w: 1 for
+// a blocker, 0 for an aperture), the normal (towards the surface's side),
+// and the right and up axes divided by the half width and height.
+layout(std430, binding = 5) readonly buffer LightRects {
+    vec4 light_rects[];
+};
+uniform int u_light_first;   // the room's first image in light_images
+uniform int u_light_count;   // its number of images
+uniform vec3 u_light_ambient;
+uniform vec3 u_light_origin;  // the room's cell origin (layout coordinates of p = origin + p)
+
+#if !defined(SHADOWS)
+// Without shadow maps, light passes props as if they were not there.
+float light_visible(int image, vec3 p_minus_light, float d) { return 1.0; }
+#endif
+
+// Where the segment p + t·v crosses rectangle r from its front side: its t,
+// or -1 where it misses the rectangle (edges included for a blocker, not for
+// an aperture) or meets it from behind. Without branches, so that the loops
+// over the images and rectangles stay uniform: their buffer reads are then
+// one read for every fragment of a batch rather than one per fragment.
+float light_rect_crossing(int r, vec4 c, vec3 p, vec3 v) {
+    int b = 4 * r;
+    vec3 n = light_rects[b + 1].xyz;
+    float dn = dot(n, v);
+    float t = dot(n, c.xyz - p) / min(dn, -1e-30);
+    vec3 x = p + t * v - c.xyz;
+    vec2 q = abs(vec2(dot(x, light_rects[b + 2].xyz), dot(x, light_rects[b + 3].xyz)));
+    bool inside = c.w > 0.5 ? max(q.x, q.y) <= 1.0 : max(q.x, q.y) < 1.0;
+    return dn < 0.0 && inside ? t : -1.0;
+}
+
+// Whether the segment from p to the image (p + v) passes the image's
+// apertures in order from their fronts, and meets none of its blockers on
+// their legs (lights::segment_passes in float). The image's rectangles come
+// leg by leg: the blockers of leg j (w = 1), then aperture j (w = 0), and
+// the last leg's blockers. t0: a blocker this close to p (as a share of v)
+// does not count.
+bool light_path_open(vec4 ranges, vec3 p, vec3 v, float t0) {
+    int first = int(ranges.x), end = first + int(ranges.y);
+    float low = t0;      // blockers count beyond it on this leg
+    float leg_start = 0.0;
+    float block = 2.0;   // the nearest blocker crossing on this leg
+    bool open = true;
+    for (int r = first; r < end; ++r) {
+        vec4 c = light_rects[4 * r];
+        float t = light_rect_crossing(r, c, p, v);
+        if (c.w > 0.5) {
+            block = t > low ? min(block, t) : block;
+        } else {
+            open = open && t > leg_start && t < 1.0 && block >= t;
+            leg_start = t;
+            low = t;
+            block = 2.0;
+        }
+    }
+    return open && block >= 1.0;
+}
+
+// Σ contribution over the room's images, for the point p (relative to the
+// room's origin) with unit normal n; `origin_distance` is |p| in layout
+// coordinates, for the shadow ray's start tolerance.
+vec3 light_sum(vec3 p, vec3 n, float origin_distance) {
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < u_light_count; ++i) {
+        int g = u_light_first + i;
+        int b = 5 * g;
+        vec4 position = light_images[b];
+        vec3 v = position.xyz - p;
+        float d = max(length(v), 1e-30);
+        vec3 w = v / d;
+        float att = 1.0 / (d * d);
+        float r = d / max(position.w, 1e-30);
+        float r2 = r * r;
+        att *= position.w > 0.0 ? clamp(1.0 - r2 * r2, 0.0, 1.0) : 1.0;
+        vec4 radiance = light_images[b + 1];
+        vec4 axis = light_images[b + 2];
+        float spot = clamp((dot(axis.xyz, -w) - radiance.w) * axis.w, 0.0, 1.0);
+        spot = radiance.w <= 1.0 ? spot * spot : 1.0;
+        float amount = max(0.0, dot(n, w)) * att * spot;
+        bool open = light_path_open(light_images[b + 3], p, v, 1e-6 * (1.0 + origin_distance) / d);
+        sum += radiance.rgb * (open ? amount * light_visible(g, p - position.xyz, d) : 0.0);
+    }
+    return sum;
+}
+#endif

@@ -1,0 +1,308 @@
+// The rasteriser's lit shader (layout-format.md, "Lights"; the LIGHTS variant
+// of shaders/scene.frag.glsl) against a CPU evaluation of the same light
+// images (lights::light_images) in double precision. The CPU side takes each
+// pixel's surface from the tracer on the layout under "fixed" lighting (its
+// point, normal, room, and base · dark as the fixed colour over the built-in
+// light's factor), sums shading/lighting.hpp's contributions of the images
+// whose segments pass their apertures and meet no blocker, and compares.
+// Props cast no shadows here (no shadow maps): the CPU side ignores them too.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
+
+#include "cli/view_options.hpp"
+#include "gl_fixture.hpp"
+#include "image/compare.hpp"
+#include "lights/light_images.hpp"
+#include "links/portal_links.hpp"
+#include "shading/lighting.hpp"
+#include "shading/shading.hpp"
+#include "trace/tracer.hpp"
+
+namespace impossible {
+namespace {
+
+// A lamp hall: "hall" has a lamp near its east door into "annex" (turned by
+// 90 degrees, on the same floor); the annex has no light of its own, and a
+// spot light with a range in the hall's far corner. "vault" lies beyond the
+// annex's closed south wall, with a lamp of its own, and no portal at all.
+const char* kLampHall = R"({
+  "format": "impossible-layout", "version": 1,
+  "start": { "room": "hall", "position": [-1.3, 1.6, 0.9] },
+  "rooms": [
+    { "id": "hall", "min": [-2, 0, -2], "max": [2, 3, 2], "color": [0.80, 0.76, 0.68],
+      "face_colors": { "floor": [0.55, 0.50, 0.44] }, "checker": 0.5,
+      "props": [ { "box": { "min": [-0.2, 0, -1.4], "max": [0.7, 0.8, -0.6] }, "color": [0.70, 0.30, 0.20] } ] },
+    { "id": "annex", "min": [-2, 0, -2], "max": [2, 2.7, 2], "color": [0.70, 0.80, 0.70],
+      "face_colors": { "floor": [0.75, 0.72, 0.62] },
+      "props": [ { "box": { "min": [-1.6, 0, 0.8], "max": [-0.9, 1.2, 1.5] }, "color": [0.30, 0.45, 0.80] } ] },
+    { "id": "vault", "min": [-2, 0, 2], "max": [2, 2.7, 6], "color": [0.6, 0.6, 0.6] }
+  ],
+  "portals": [
+    { "id": "hall_east", "room": "hall", "center": [2, 1.05, 0.2], "normal": [-1, 0, 0],
+      "width": 1.0, "height": 2.1, "target": "annex_north" },
+    { "id": "annex_north", "room": "annex", "center": [0.3, 1.05, -2], "normal": [0, 0, 1],
+      "width": 1.0, "height": 2.1, "target": "hall_east" }
+  ]
+})";
+
+layout::Light lit_point(glm::dvec3 position, glm::dvec3 color, double intensity) {
+    layout::Light l;
+    l.position = position;
+    l.color = color;
+    l.intensity = intensity;
+    return l;
+}
+
+// The lamp hall under "lighting": "lights" at `depth`.
+layout::Layout lit_lamp_hall(int depth) {
+    layout::Layout l = testing::layout_from_text(kLampHall);
+    l.lighting = layout::Lighting::Lights;
+    l.light_depth = depth;
+    l.rooms[0].ambient = {0.06, 0.06, 0.07};
+    l.rooms[1].ambient = {0.04, 0.04, 0.05};
+    l.rooms[2].ambient = {0.05, 0.05, 0.05};
+    l.rooms[0].lights.push_back(lit_point({1.2, 2.3, 0.2}, {1.0, 0.92, 0.80}, 4.5));
+    layout::Light spot = lit_point({-1.5, 2.6, -1.5}, {0.8, 0.9, 1.0}, 9.0);
+    spot.range = 4.0;
+    spot.spot = layout::Spot{glm::normalize(glm::dvec3(0.3, -1.0, 0.3)), 15.0, 40.0};
+    l.rooms[0].lights.push_back(spot);
+    l.rooms[2].lights.push_back(lit_point({0.0, 2.0, 4.0}, {1.0, 1.0, 1.0}, 50.0));
+    return l;
+}
+
+// The lit colour of a surface point of room `room` with base · dark `bd`.
+glm::dvec3 lit_expected(const layout::Layout& l, const std::vector<lights::RoomLights>& rooms, int room,
+                        const glm::dvec3& bd, const glm::dvec3& p, const glm::dvec3& n) {
+    glm::dvec3 sum(0.0);
+    for (const lights::LightImage& image : rooms[static_cast<size_t>(room)].images) {
+        if (!lights::segment_passes(image, p)) continue;
+        const layout::Light& light =
+            l.rooms[static_cast<size_t>(image.light_room)].lights[static_cast<size_t>(image.light)];
+        const glm::dvec3 v = image.position - p;
+        const double d = glm::length(v);
+        const glm::dvec3 w = v / d;
+        // spot_factor reads the light's own axis: the image's axis is the same
+        // direction mapped into this room, so evaluate the cone with it.
+        layout::Light mapped = light;
+        if (mapped.spot) mapped.spot->direction = image.spot_direction;
+        sum += shading::light_contribution(mapped, image.factor, n, w, d, w);
+    }
+    return shading::lit_color(bd, 1.0, rooms[static_cast<size_t>(room)].ambient, sum);
+}
+
+// The CPU frame: per pixel the tracer's surface under fixed lighting, lit as
+// above; the id map is the tracer's.
+image::Image lit_cpu_frame(const layout::Layout& lit, const render::FrameDesc& f) {
+    layout::Layout fixed = lit;
+    fixed.lighting = layout::Lighting::Fixed;
+    const trace::Scene scene = trace::prepare_scene(fixed).value();
+    const std::vector<lights::RoomLights> rooms =
+        lights::light_images(lit, links::link_portals(lit), f.light_depth.value_or(lit.light_depth));
+    const trace::TraceDesc desc = cli::trace_desc_for(f);
+    const trace::FrameObjects objects = trace::place_frame_objects(scene, desc);
+    image::Image out;
+    out.width = 2 * f.eye_width;
+    out.height = f.eye_height;
+    out.rgb.assign(static_cast<size_t>(out.width * out.height * 3), 0);
+    out.ids.assign(static_cast<size_t>(out.width * out.height), 0);
+    for (int eye = 0; eye < 2; ++eye)
+        for (int j = 0; j < f.eye_height; ++j)
+            for (int i = 0; i < f.eye_width; ++i) {
+                const trace::PixelRay ray = trace::pixel_ray(desc, eye, i, j);
+                trace::RayLimits limits;
+                limits.max_depth = f.max_depth;
+                const trace::TraceHit hit = trace::trace_ray(scene, ray.origin, ray.dir, f.room, limits, objects);
+                const size_t k = static_cast<size_t>(j * out.width + eye * f.eye_width + i);
+                out.ids[k] = static_cast<std::uint8_t>(hit.id);
+                glm::dvec3 colour = hit.color;
+                if (hit.room >= 0 && hit.id != shading::kFillId) {
+                    const double built_in =
+                        shading::kAmbient + shading::kDiffuse * std::max(0.0, glm::dot(hit.normal, shading::kLightDir));
+                    colour = lit_expected(lit, rooms, hit.room, hit.color / built_in, hit.point, hit.normal);
+                }
+                for (int c = 0; c < 3; ++c) out.rgb[3 * k + static_cast<size_t>(c)] = trace::to_byte(colour[c]);
+            }
+    return out;
+}
+
+struct LightingRig {
+    layout::Layout layout;
+    gl::Context context;
+    std::optional<render::Renderer> renderer;
+
+    explicit LightingRig(layout::Layout l) : layout(std::move(l)) {
+        Result<gl::Context> made = gl::create_context(gl::Backend::Egl);
+        EXPECT_TRUE(made.has_value()) << made.error();
+        context = std::move(*made);
+        Result<render::Renderer> r = render::Renderer::create(context.state(), scene::build_scene(layout));
+        EXPECT_TRUE(r.has_value()) << r.error();
+        if (r) renderer.emplace(std::move(*r));
+    }
+    image::Image render(const render::FrameDesc& f, render::FrameStats* stats = nullptr) {
+        Result<render::RenderedFrame> out = renderer->render(f);
+        EXPECT_TRUE(out.has_value()) << out.error();
+        if (!out) return {};
+        if (stats) *stats = out->stats;
+        return out->image;
+    }
+};
+
+render::FrameDesc lit_frame(const layout::Layout& l, const char* room, math::dvec3 position, double yaw, double pitch) {
+    render::FrameDesc f;
+    f.room = layout::find_room(l, room);
+    f.head = {position, yaw, pitch, 0.0};
+    f.eye_width = 160;
+    f.eye_height = 96;
+    return f;
+}
+
+// 0 id mismatches and a colour PSNR of at least 50 dB inside the regions.
+void expect_lit_agree(const image::Image& raster, const image::Image& cpu, const std::string& what) {
+    ASSERT_FALSE(image::incomparable(raster, cpu)) << what;
+    const image::Comparison cmp = image::compare_pictures(raster, cpu);
+    std::printf("  %-48s %s\n", what.c_str(), image::summary_line(cmp).c_str());
+    EXPECT_EQ(cmp.id_mismatches, 0) << what;
+    EXPECT_GE(cmp.interior_psnr_db, 50.0) << what;
+}
+
+struct LitView {
+    const char* what;
+    const char* room;
+    math::dvec3 position;
+    double yaw, pitch;
+};
+
+const LitView kLitViews[] = {
+    {"the hall, lamp and spot", "hall", {-1.3, 1.6, 0.9}, -75.0, -15.0},
+    {"the annex through the door", "hall", {-0.5, 1.6, 0.4}, -90.0, -20.0},
+    {"the annex, lit through its door", "annex", {0.0, 1.6, 1.5}, 0.0, -25.0},
+    {"down at the annex floor by the door", "annex", {0.3, 1.4, -1.0}, 0.0, -70.0},
+};
+
+TEST(LightingRender, MatchesTheLightImagesInEveryViewAndDepth) {
+    for (const int depth : {0, 1, 2}) {
+        LightingRig rig(lit_lamp_hall(depth));
+        ASSERT_TRUE(rig.renderer);
+        for (const LitView& v : kLitViews) {
+            const render::FrameDesc f = lit_frame(rig.layout, v.room, v.position, v.yaw, v.pitch);
+            expect_lit_agree(rig.render(f), lit_cpu_frame(rig.layout, f),
+                             std::string(v.what) + ", light depth " + std::to_string(depth));
+        }
+    }
+}
+
+// An example layout lit: every room a lamp under its ceiling's centre.
+layout::Layout lit_example(const char* name, int depth) {
+    layout::Layout l = testing::example_layout(name);
+    // Untinted mirrors: the CPU side sees tint · colour from the tracer and
+    // cannot clamp before the tint as the rasteriser does.
+    for (layout::Portal& p : l.portals)
+        if (p.kind == layout::PortalKind::Mirror) p.tint = glm::dvec3(1.0);
+    l.lighting = layout::Lighting::Lights;
+    l.light_depth = depth;
+    for (layout::Room& room : l.rooms) {
+        const glm::dvec3 c = 0.5 * (room.min + room.max);
+        room.lights.push_back(lit_point({c.x + 0.3, room.max.y - 0.4, c.z - 0.2}, {1.0, 0.95, 0.9}, 3.0));
+    }
+    return l;
+}
+
+TEST(LightingRender, LightsMovingPropsVolumeRoomsAndMirrors) {
+    // sliding_box: a prop moving through a door (an OBJECT_CUTS instance, lit
+    // in the room it is placed in); scanner_lab: a volume's target room, lit
+    // by its own lamp; mirror_hall: the lamps' images in two mirrors.
+    const char* names[] = {"sliding_box.json", "scanner_lab.json", "mirror_hall.json"};
+    for (const char* name : names) {
+        LightingRig rig(lit_example(name, 1));
+        ASSERT_TRUE(rig.renderer);
+        render::FrameDesc f;
+        f.room = rig.layout.start.room;
+        f.head = {rig.layout.start.position, rig.layout.start.yaw_deg, -15.0, 0.0};
+        f.eye_width = 160;
+        f.eye_height = 96;
+        for (const double time : {0.0, 2.5}) {
+            f.time = time;
+            expect_lit_agree(rig.render(f), lit_cpu_frame(rig.layout, f),
+                             std::string(name) + " at " + std::to_string(time) + " s");
+        }
+    }
+}
+
+TEST(LightingRender, LightDepthOfTheViewReplacesTheLayouts) {
+    LightingRig rig(lit_lamp_hall(0));
+    ASSERT_TRUE(rig.renderer);
+    render::FrameDesc f = lit_frame(rig.layout, "annex", {0.3, 1.4, -1.0}, 0.0, -70.0);
+    f.max_depth = 0;  // the annex alone (its images, not the hall's seen through its door)
+    render::FrameStats at0, at1;
+    const image::Image dark = rig.render(f, &at0);
+    f.light_depth = 1;
+    const image::Image lit = rig.render(f, &at1);
+    expect_lit_agree(lit, lit_cpu_frame(rig.layout, f), "--light-depth 1 over the layout's 0");
+    EXPECT_EQ(at0.light_images, 0);  // the annex has no light of its own
+    EXPECT_GT(at1.light_images, 0);
+    EXPECT_GT(testing::count_colour_differences(dark, lit, 8), 100);
+}
+
+TEST(LightingRender, ALightBehindAClosedWallAddsNoImages) {
+    // The vault's lamp is beyond the annex's south wall, with no portal
+    // between them: the annex's images are the hall's through the door only.
+    LightingRig rig(lit_lamp_hall(2));
+    ASSERT_TRUE(rig.renderer);
+    render::FrameDesc f = lit_frame(rig.layout, "annex", {0.0, 1.6, 0.0}, 180.0, -20.0);
+    f.max_depth = 0;  // the annex alone: its door shows the fill
+    render::FrameStats stats;
+    rig.render(f, &stats);
+    const std::vector<lights::RoomLights> rooms = lights::light_images(rig.layout, links::link_portals(rig.layout), 2);
+    for (const lights::LightImage& image : rooms[1].images) EXPECT_NE(image.light_room, 2);
+    EXPECT_EQ(stats.light_images, static_cast<int>(rooms[1].images.size()));
+    EXPECT_LE(stats.light_images, 2);  // at most the hall's two lights, through the door
+    // The vault sees its own lamp and nothing of the others.
+    f.room = 2;
+    f.head.position = {0.0, 1.6, 4.5};
+    rig.render(f, &stats);
+    EXPECT_EQ(stats.light_images, 1);
+}
+
+TEST(LightingRender, StereoModesSamplesAndPortalTexturesAgree) {
+    LightingRig rig(lit_lamp_hall(2));
+    ASSERT_TRUE(rig.renderer);
+    const render::FrameDesc base = lit_frame(rig.layout, "hall", {-0.5, 1.6, 0.4}, -90.0, -20.0);
+    const image::Image reference = rig.render(base);
+    for (const render::StereoMode mode : {render::StereoMode::ViewportIndex, render::StereoMode::TwoPass}) {
+        render::FrameDesc f = base;
+        f.stereo = mode;
+        const image::Image got = rig.render(f);
+        EXPECT_EQ(testing::count_id_differences(got, reference), 0);
+        EXPECT_EQ(testing::count_colour_differences(got, reference, 1), 0);
+    }
+    render::FrameDesc textured = base;
+    textured.portal_texture_scale = 1.0;
+    const image::Comparison via_texture = image::compare_pictures(rig.render(textured), reference);
+    EXPECT_EQ(via_texture.id_mismatches, 0);
+    EXPECT_GE(via_texture.interior_psnr_db, 40.0);
+    render::FrameDesc multi = base;
+    multi.samples = 4;
+    const image::Comparison multisampled = image::compare_pictures(rig.render(multi), reference);
+    EXPECT_EQ(multisampled.id_mismatches, 0);
+    EXPECT_GE(multisampled.interior_psnr_db, 35.0);  // smoother edges of checks and light pools
+}
+
+TEST(LightingRender, FixedLayoutsCountNoImagesAndKeepTheBuiltInLight) {
+    layout::Layout l = lit_lamp_hall(2);
+    l.lighting = layout::Lighting::Fixed;
+    LightingRig rig(l);
+    ASSERT_TRUE(rig.renderer);
+    const render::FrameDesc f = lit_frame(rig.layout, "hall", {-1.3, 1.6, 0.9}, -75.0, -15.0);
+    render::FrameStats stats;
+    const image::Image got = rig.render(f, &stats);
+    EXPECT_EQ(stats.light_images, 0);
+    const image::Comparison cmp = image::compare_pictures(got, trace::trace_frame(l, cli::trace_desc_for(f)).value());
+    EXPECT_EQ(cmp.id_mismatches, 0);
+    EXPECT_GE(cmp.interior_psnr_db, 35.0);
+}
+
+}  // namespace
+}  // namespace impossible
