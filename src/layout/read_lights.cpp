@@ -185,12 +185,15 @@ bool strictly_inside(const Room& room, const glm::dvec3& p) {
 void read_lighting(Checker& check, const json& root, std::vector<RoomDraft>& rooms, Layout& layout) {
     const Path top;
     if (const json* v = field(root, "lighting")) {
-        if (const auto name = check.read_string(top / "lighting", *v)) {
-            if (*name == "lights") {
-                layout.lighting = Lighting::Lights;
-            } else if (*name != "fixed") {
-                check.error(top / "lighting", "must be \"fixed\" or \"lights\" (got " + quote(*name) + ")");
-            }
+        // A bad value leaves the light fields unchecked (they would only
+        // repeat it as "only with lights" or as their own problems).
+        const auto name = check.read_string(top / "lighting", *v);
+        if (!name) return;
+        if (*name == "lights") {
+            layout.lighting = Lighting::Lights;
+        } else if (*name != "fixed") {
+            check.error(top / "lighting", "must be \"fixed\" or \"lights\" (got " + quote(*name) + ")");
+            return;
         }
     }
     const bool lit = layout.lighting == Lighting::Lights;

@@ -75,6 +75,9 @@ TEST(LayoutLights, ALightsDefaults) {
 TEST(LayoutLights, LightingMustBeFixedOrLights) {
     expect_one_error(lit("", "\"lighting\": \"sun\","), "\"sun\"", "lighting: must be \"fixed\" or \"lights\"");
     expect_one_error(lit("", "\"lighting\": true,"), "true", "lighting: must be a string");
+    // A bad value: the light fields that depend on it are not reported too.
+    expect_one_error(lit("\"lights\": [ { \"position\": [0, 9, 0] } ]", "\"lighting\": \"light\", \"light_depth\": 3,"),
+                     "\"light\"", "lighting: must be \"fixed\" or \"lights\" (got \"light\")");
 }
 
 TEST(LayoutLights, LightFieldsAreErrorsUnderFixed) {
