@@ -30,7 +30,9 @@ uniform vec3 u_light_ambient;
 uniform vec3 u_light_origin;  // the room's cell origin (layout coordinates of p = origin + p)
 
 #if !defined(SHADOWS)
-// Without shadow maps, light passes props as if they were not there.
+// Without shaders/shadow_lookup.frag.glsl before this (which defines
+// SHADOWS and its own light_visible), light passes props as if they were
+// not there.
 float light_visible(int image, vec3 p_minus_light, float d) { return 1.0; }
 #endif
 

@@ -82,6 +82,7 @@ LightBuffers upload_light_images(const std::vector<lights::RoomLights>& rooms, c
         out.origins.push_back(origins[c].origin);
         out.total += out.count.back();
     }
+    out.rooms = rooms;
     PackedLights packed = pack_light_images(rooms, layout, origins);
     out.images = upload_floats(std::move(packed.images));
     out.rects = upload_floats(std::move(packed.rects));

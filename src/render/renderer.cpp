@@ -162,7 +162,15 @@ Result<void> draw_frame(RendererParts& parts, const FrameDesc& frame, FrameStats
     place_frame_objects(r, frame, scratch.objects, scratch.prop_walks.get());
     // Bound for the frame: another renderer of the context may bind its own.
     if (r.has_volumes) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVolumeBinding, r.volume_boxes.get());
-    if (r.lit) bind_light_buffers(&r.lights);
+    // A lit layout's images and the props' shadow maps (drawn again only
+    // where their inputs changed).
+    if (r.lit) {
+        if (Result<void> shadows =
+                prepare_shadow_maps(r.shadow_maps, r, scratch.objects, r.lights.rooms, frame, scratch.stats);
+            !shadows)
+            return shadows;
+        bind_light_buffers(&r.lights);
+    }
     const Target& target = drawing_target(parts.targets, frame);
     clear_target(state, target, 0);
 
@@ -186,7 +194,10 @@ Result<void> draw_frame(RendererParts& parts, const FrameDesc& frame, FrameStats
     // look bound already.
     state.release_bindings();
     if (r.has_volumes) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVolumeBinding, 0);
-    if (r.lit) bind_light_buffers(nullptr);
+    if (r.lit) {
+        bind_light_buffers(nullptr);
+        unbind_shadow_maps();
+    }
     if (frame.profile) profiler.collect(scratch.stats);
     if (stats_out) *stats_out = std::move(scratch.stats);
     return {};

@@ -26,6 +26,7 @@
 #include "render/multisample.hpp"
 #include "render/object_culling.hpp"
 #include "render/scene_program.hpp"
+#include "render/shadow_maps.hpp"
 #include "render/target.hpp"
 #include "scene/scene.hpp"
 #include "walk/objects.hpp"
@@ -97,6 +98,7 @@ struct RendererData {
     std::vector<lights::RoomLights> scene_room_lights;
     std::shared_ptr<const layout::Layout> lit_layout;
     LightBuffers lights;
+    ShadowMaps shadow_maps;  // the props' shadows of `lights` (render/shadow_maps.hpp)
     GpuScene gpu;
     gl::VertexArray empty_vao;  // for the attribute-less full-target triangle
     Programs programs;

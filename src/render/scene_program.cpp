@@ -81,8 +81,9 @@ Result<SceneProgram> link_scene_program(const SceneVariant& variant, const std::
                                             embedded_shader(GL_FRAGMENT_SHADER, variant.fragment)};
     // The volume test, shared by both fragment shaders, goes before the
     // fragment shader's own text (whose lines keep their numbers).
-    // So does the lit colour (the LIGHTS variants only).
+    // So do the props' shadows and the lit colour (the LIGHTS variants only).
     stages[1].text = std::string(embedded::find("shaders/volume_clip.frag.glsl")) + "\n" +
+                     std::string(embedded::find("shaders/shadow_lookup.frag.glsl")) + "\n" +
                      std::string(embedded::find("shaders/lighting.frag.glsl")) + "\n#line 1\n" + stages[1].text;
     Result<gl::Program> built = gl::build_program(stages, defines + variant_defines(variant));
     if (!built) return built;

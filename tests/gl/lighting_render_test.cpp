@@ -156,6 +156,7 @@ render::FrameDesc lit_frame(const layout::Layout& l, const char* room, math::dve
     f.head = {position, yaw, pitch, 0.0};
     f.eye_width = 160;
     f.eye_height = 96;
+    f.shadows = false;  // props cast no shadows: the CPU side has none (see above)
     return f;
 }
 
@@ -223,11 +224,54 @@ TEST(LightingRender, LightsMovingPropsVolumeRoomsAndMirrors) {
         f.head = {rig.layout.start.position, rig.layout.start.yaw_deg, -15.0, 0.0};
         f.eye_width = 160;
         f.eye_height = 96;
+        f.shadows = false;
         for (const double time : {0.0, 2.5}) {
             f.time = time;
             expect_lit_agree(rig.render(f), lit_cpu_frame(rig.layout, f),
                              std::string(name) + " at " + std::to_string(time) + " s");
         }
+    }
+}
+
+TEST(LightingRender, MatchesTheTracerWhereNoPropCastsAShadow) {
+    // The lamp hall without its props, and the mirror hall's lamps (whose
+    // props are left out too): the tracer's exact shadow rays against the
+    // shader's aperture test, every view, light depths 0 to 2.
+    layout::Layout hall = lit_lamp_hall(2);
+    for (layout::Room& room : hall.rooms) room.props.clear();
+    layout::Layout mirrors = lit_example("mirror_hall.json", 2);
+    for (layout::Room& room : mirrors.rooms) room.props.clear();
+    for (const int depth : {0, 1, 2}) {
+        LightingRig rig(hall);
+        ASSERT_TRUE(rig.renderer);
+        for (const LitView& v : kLitViews) {
+            render::FrameDesc f = lit_frame(rig.layout, v.room, v.position, v.yaw, v.pitch);
+            f.light_depth = depth;
+            expect_lit_agree(rig.render(f), trace::trace_frame(rig.layout, cli::trace_desc_for(f)).value(),
+                             std::string("traced: ") + v.what + ", light depth " + std::to_string(depth));
+        }
+    }
+    LightingRig rig(mirrors);
+    ASSERT_TRUE(rig.renderer);
+    render::FrameDesc f = lit_frame(rig.layout, "hall", rig.layout.start.position, rig.layout.start.yaw_deg, -15.0);
+    expect_lit_agree(rig.render(f), trace::trace_frame(rig.layout, cli::trace_desc_for(f)).value(),
+                     "traced: mirror_hall, light depth 2");
+}
+
+TEST(LightingRender, PropsShadowsFromTheMapsAgainstTheTracer) {
+    // The lamp hall with its props and their shadows (cube shadow maps): the
+    // ids exactly, the colour approximately (the maps' texels at shadow
+    // edges); the figures are printed.
+    LightingRig rig(lit_lamp_hall(2));
+    ASSERT_TRUE(rig.renderer);
+    for (const LitView& v : kLitViews) {
+        render::FrameDesc f = lit_frame(rig.layout, v.room, v.position, v.yaw, v.pitch);
+        f.shadows = true;
+        const image::Image traced = trace::trace_frame(rig.layout, cli::trace_desc_for(f)).value();
+        const image::Comparison cmp = image::compare_pictures(rig.render(f), traced);
+        std::printf("  shadows: %-39s %s\n", v.what, image::summary_line(cmp).c_str());
+        EXPECT_EQ(cmp.id_mismatches, 0) << v.what;
+        EXPECT_GE(cmp.interior_psnr_db, 30.0) << v.what;
     }
 }
 
@@ -269,7 +313,8 @@ TEST(LightingRender, ALightBehindAClosedWallAddsNoImages) {
 TEST(LightingRender, StereoModesSamplesAndPortalTexturesAgree) {
     LightingRig rig(lit_lamp_hall(2));
     ASSERT_TRUE(rig.renderer);
-    const render::FrameDesc base = lit_frame(rig.layout, "hall", {-0.5, 1.6, 0.4}, -90.0, -20.0);
+    render::FrameDesc base = lit_frame(rig.layout, "hall", {-0.5, 1.6, 0.4}, -90.0, -20.0);
+    base.shadows = true;  // the maps in every mode too
     const image::Image reference = rig.render(base);
     for (const render::StereoMode mode : {render::StereoMode::ViewportIndex, render::StereoMode::TwoPass}) {
         render::FrameDesc f = base;
