@@ -145,30 +145,42 @@ bool may_cross(const ScenePortal& p, const ShadowLeg& leg) {
 bool shadow_ray_clear(const LightSearch& s, int k, const dvec3& image, double d) {
     // Surfaces within the tolerance of the point do not count: the ray
     // starts that far along.
-    const dvec3 origin = s.at.point + (s.tolerance / d) * (image - s.at.point);
-    std::array<ShadowLeg, layout::kMaxLightDepth + 1> legs;
-    legs[0].room = s.at.room;
-    legs[0].origin = origin;
-    legs[0].dir = image - origin;
+    ShadowLeg first;
+    first.room = s.at.room;
+    first.origin = s.at.point + (s.tolerance / d) * (image - s.at.point);
+    first.dir = image - first.origin;
+    // The cheap tests first, every leg; the legs are mapped again below
+    // rather than kept, as few paths get that far.
+    ShadowLeg leg = first;
     for (int i = 0; i < k; ++i) {
-        if (!may_cross(s.scene.portals[s.steps[i].portal], legs[i])) return false;
-        legs[i + 1] = next_leg(s.scene, legs[i], s.steps[i]);
+        if (!may_cross(s.scene.portals[s.steps[i].portal], leg)) return false;
+        leg = next_leg(s.scene, leg, s.steps[i]);
     }
     Nearest n;
+    leg = first;
     for (int i = 0; i < k; ++i) {
-        const ShadowLeg& leg = legs[i];
         nearest_for_light(s.scene, s.objects, leg.room, leg.origin, leg.dir, leg.clip, 1.0, n);
         if (!n.found || n.portal != s.steps[i].portal) return false;
+        leg = next_leg(s.scene, leg, s.steps[i]);
     }
-    const ShadowLeg& last = legs[k];
-    nearest_for_light(s.scene, s.objects, last.room, last.origin, last.dir, last.clip, 1.0, n);
+    nearest_for_light(s.scene, s.objects, leg.room, leg.origin, leg.dir, leg.clip, 1.0, n);
     return !n.found;
+}
+
+// Whether the light's image lies inside the aperture of the path's k
+// portals (with the slack of in_aperture): a shadow ray to it can pass them.
+bool image_in_aperture(const LightSearch& s, int k, const dvec3& image) {
+    const dvec3 v = image - s.at.point;
+    for (int j = 0; j < 4 * k; ++j)
+        if (glm::dot(s.aperture[j], v) < -kApertureSlack) return false;
+    return true;
 }
 
 // The contribution of `light` (of the prefix's room) along the path of the
 // prefix's k portals, where its shadow ray is clear.
 void add_light(LightSearch& s, const PathPrefix& prefix, int k, const layout::Light& light) {
     const dvec3 image = dvec3(prefix.from_room * dvec4(light.position, 1.0));
+    if (!image_in_aperture(s, k, image)) return;
     const dvec3 v = image - s.at.point;
     const double d = glm::length(v);
     if (!(d > 0.0)) return;
