@@ -258,6 +258,23 @@ TEST(LayoutLights, AGltfLightOutsideItsRoomIsAnErrorAtTheProp) {
     expect_one_error(text, "{ \"gltf\"", "rooms[0].props[1]: the model's light 0 stands at [1, 100.5, 0]");
 }
 
+TEST(LayoutLights, AGltfLightInsideAnotherPropIsAWarningAtItsProp) {
+    // Scaled by 2 and moved up 0.2: the light stands at [0, 0.4, 0], inside
+    // the hall's red box; the model's own bounds do not count against it.
+    const std::string path = lamp("lamp_in_box.gltf", {{"type", "point"}}, {{"translation", {0, 0.1, 0}}});
+    const std::string text = lit_with_lamp(path, "[0, 0.2, 0]");
+    const LoadResult r = load(text);
+    ASSERT_TRUE(r.errors.empty()) << all_messages(r.errors);
+    ASSERT_EQ(r.warnings.size(), 1u) << all_messages(r.warnings);
+    const Pos want = position_of(text, "{ \"gltf\"");
+    EXPECT_EQ(r.warnings[0].line, want.line);
+    EXPECT_EQ(r.warnings[0].column, want.column);
+    EXPECT_EQ(r.warnings[0].message.rfind(
+                  "rooms[0].props[1]: the model's light at [0, 0.4, 0] is inside rooms[0].props[0]", 0),
+              0u)
+        << r.warnings[0].message;
+}
+
 TEST(LayoutLights, DirectionalLightsAreSkippedAndPointsDefault) {
     GltfWriter w;
     w.node({{"mesh", w.mesh({{"attributes", {{"POSITION", w.vec3(kTriangle)}}}})}});
