@@ -4,10 +4,11 @@
 // coordinates; only the difference is needed, so any origin will do), 0 when
 // one does; always 1 for an image without a map (no props on its path, or
 // shadows off). The map holds the nearest prop's distance per texel; a point
-// counts as lit when it is no farther than that plus a bias of
-// bias_texels texels at distance d (a texel spans about 2 / size radians)
-// and a relative 1e-5, so that a lit prop face is not shadowed by itself up
-// to an incidence of atan(2 · bias_texels).
+// counts as lit when it is no farther than that plus a bias of some texels
+// at distance d (a texel spans about shadow_texel = 2 / size radians) and a
+// relative 1e-5: shadow_bias_texels plus SHADOW_SLOPE_TEXELS times the slope
+// tan(incidence) when the caller passes the cosine of the incidence (the
+// four-argument light_visible), or a fixed 2 · SHADOW_SLOPE_TEXELS without it.
 //
 // Only the LIGHTS variants compile it (it goes before lighting.frag.glsl,
 // which then uses this light_visible instead of its own, always 1); the
@@ -15,6 +16,9 @@
 // (render/shadow_maps.hpp, prepare_shadow_maps), with shadows off too.
 #if defined(LIGHTS)
 #define SHADOWS
+// Texels of bias per unit of tan(incidence): a nearest texel's direction is
+// within half a texel (along a diagonal, 0.71 texel) of the point's.
+#define SHADOW_SLOPE_TEXELS 0.75
 layout(binding = 3) uniform samplerCubeArray u_shadow_maps;
 layout(std430, binding = 6) readonly buffer ShadowMapLayers {
     float shadow_texel;        // 2 / size: a texel's angle at a face's centre, radians
@@ -22,12 +26,28 @@ layout(std430, binding = 6) readonly buffer ShadowMapLayers {
     int shadow_layer[];        // per light image: its cube map, or -1
 };
 
-float light_visible(int g, vec3 p_minus_lprime, float d) {
+// The stored distance against d, with a bias of `texels` texels at d.
+float shadow_test(int g, vec3 p_minus_lprime, float d, float texels) {
     if (g < 0 || g >= shadow_layer.length()) return 1.0;
     int layer = shadow_layer[g];
     if (layer < 0) return 1.0;
     float stored = textureLod(u_shadow_maps, vec4(p_minus_lprime, float(layer)), 0.0).r;
-    float bias = d * (shadow_texel * shadow_bias_texels + 1e-5);
-    return d <= stored + bias ? 1.0 : 0.0;
+    return d <= stored + d * (shadow_texel * texels + 1e-5) ? 1.0 : 0.0;
+}
+
+// With the cosine of the angle of incidence (dot(n, w) > 0, which the caller
+// has): the bias grows with the slope tan(incidence) that a half texel's
+// error in direction turns into depth, so a lit face is never shadowed by
+// itself (up to an incidence of 87°, where the light adds 5 % of head-on),
+// and stays half a texel near head-on (props' contact shadows start there).
+float light_visible(int g, vec3 p_minus_lprime, float d, float cos_incidence) {
+    float c = clamp(cos_incidence, 0.05, 1.0);
+    return shadow_test(g, p_minus_lprime, d, shadow_bias_texels + SHADOW_SLOPE_TEXELS * sqrt(1.0 - c * c) / c);
+}
+
+// Without it: a fixed bias of shadow_bias_texels + 2 · SHADOW_SLOPE_TEXELS
+// texels (a lit face is not shadowed by itself up to an incidence of 63°).
+float light_visible(int g, vec3 p_minus_lprime, float d) {
+    return shadow_test(g, p_minus_lprime, d, shadow_bias_texels + 2.0 * SHADOW_SLOPE_TEXELS);
 }
 #endif

@@ -56,10 +56,11 @@ inline constexpr int kMinShadowMapSize = 16;
 // inside a prop is still inside it: its faces are farther).
 inline constexpr double kShadowNear = 1e-4;
 
-// The lookup's bias, in texels of the map at the point's distance (plus a
-// relative 1e-5 for float32): a point on a lit prop face is not shadowed by
-// the face itself up to tan(angle of incidence) ≈ 2 · kShadowBiasTexels.
-inline constexpr double kShadowBiasTexels = 1.5;
+// The lookup's constant bias, in texels of the map at the point's distance
+// (shadow_lookup.frag.glsl adds 0.75 texel per unit of tan(incidence), and a
+// relative 1e-5 for float32): where a prop's shadow may start short of its
+// contact with a surface lit head-on.
+inline constexpr double kShadowBiasTexels = 0.5;
 
 // The size a frame's maps are drawn at: the requested size, halved until
 // `maps` maps fit in kMaxShadowMapBytes.

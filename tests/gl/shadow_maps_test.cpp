@@ -27,14 +27,17 @@ namespace {
 // light_visible(g, direction, d).
 const char* const kShadowProbeSource = R"(
 layout(local_size_x = 1) in;
-layout(std430, binding = 7) readonly buffer ShadowProbeQueries { vec4 q[]; };  // p - L', d
+// Per query two vec4s: p - L' and d; the cosine of incidence (0: none).
+layout(std430, binding = 7) readonly buffer ShadowProbeQueries { vec4 q[]; };
 layout(std430, binding = 8) writeonly buffer ShadowProbeResults { vec2 r[]; };
 uniform int u_image;
 void main() {
     uint i = gl_GlobalInvocationID.x;
+    vec4 v = q[2 * i];
+    float c = q[2 * i + 1].x;
     int layer = u_image < shadow_layer.length() ? shadow_layer[u_image] : -1;
-    float stored = layer < 0 ? -1.0 : textureLod(u_shadow_maps, vec4(q[i].xyz, float(layer)), 0.0).r;
-    r[i] = vec2(stored, light_visible(u_image, q[i].xyz, q[i].w));
+    float stored = layer < 0 ? -1.0 : textureLod(u_shadow_maps, vec4(v.xyz, float(layer)), 0.0).r;
+    r[i] = vec2(stored, c > 0.0 ? light_visible(u_image, v.xyz, v.w, c) : light_visible(u_image, v.xyz, v.w));
 }
 )";
 
@@ -91,11 +94,17 @@ struct ShadowRig {
         return drawn ? *drawn : -1;
     }
 
-    // Light image g's map along each (p - L') direction, with d = |p - L'|.
-    std::vector<ShadowProbeResult> probe_at(int g, const std::vector<glm::dvec3>& offsets) {
+    // Light image g's map along each (p - L') direction, with d = |p - L'|,
+    // and the cosine of incidence for the four-argument light_visible (none:
+    // the three-argument one).
+    std::vector<ShadowProbeResult> probe_at(int g, const std::vector<glm::dvec3>& offsets,
+                                            const std::vector<double>& cosines = {}) {
         std::vector<float> queries;
-        for (const glm::dvec3& v : offsets)
-            queries.insert(queries.end(), {float(v.x), float(v.y), float(v.z), float(glm::length(v))});
+        for (size_t k = 0; k < offsets.size(); ++k) {
+            const glm::dvec3& v = offsets[k];
+            const float c = k < cosines.size() ? float(cosines[k]) : 0.0f;
+            queries.insert(queries.end(), {float(v.x), float(v.y), float(v.z), float(glm::length(v)), c, 0, 0, 0});
+        }
         gl::Buffer in = gl::create_buffer(), out = gl::create_buffer();
         glNamedBufferData(in.get(), static_cast<GLsizeiptr>(queries.size() * sizeof(float)), queries.data(),
                           GL_STATIC_DRAW);
@@ -282,6 +291,36 @@ TEST(ShadowMaps, AStaticLayoutDrawsItsMapsOnceAndAMovingPropRedrawsThem) {
     EXPECT_EQ(rig.update({room}), 1);
     EXPECT_EQ(rig.probe_at(0, {down})[0].visible, 1.0f);
     EXPECT_EQ(rig.probe_at(0, {glm::dvec3(0.5, -2.5, 0.0)})[0].visible, 0.0f);
+}
+
+// A long slab lit at grazing incidence: with the cosine of incidence the
+// bias grows with the slope, so that the slab's top is not shadowed by
+// itself at 80° and more; the floor under it stays shadowed.
+TEST(ShadowMaps, AFaceLitAtGrazingIncidenceIsNotShadowedByItself) {
+    ShadowRig rig(R"({
+      "format": "impossible-layout", "version": 1,
+      "start": { "room": "a", "position": [2, 1.6, 2] },
+      "rooms": [ { "id": "a", "min": [-3, 0, -3], "max": [3, 3, 3],
+        "props": [ { "box": { "min": [-2.5, 1.0, -0.5], "max": [2.5, 1.2, 0.5] } } ] } ] })");
+    const glm::dvec3 light(0.0, 1.35, 0.0);
+    lights::RoomLights room;
+    room.images.push_back(direct_image(0, light));
+    for (const int size : {128, 512}) {
+        EXPECT_EQ(rig.update({room}, size), 1);
+        std::vector<glm::dvec3> offsets;
+        std::vector<double> cosines;
+        for (int k = 0; k <= 40; ++k) {  // x = 0.8 .. 2.4, z = -0.4 .. 0.4: incidence 79° to 86°
+            const glm::dvec3 p(0.8 + 0.04 * k, 1.2, -0.4 + 0.02 * k);
+            offsets.push_back(p - light);
+            cosines.push_back(glm::normalize(light - p).y);
+        }
+        const glm::dvec3 floor(1.0, 0.0, 0.1);
+        offsets.push_back(floor - light);
+        cosines.push_back(glm::normalize(light - floor).y);
+        const std::vector<ShadowProbeResult> r = rig.probe_at(0, offsets, cosines);
+        for (size_t k = 0; k + 1 < r.size(); ++k) EXPECT_EQ(r[k].visible, 1.0f) << size << " point " << k;
+        EXPECT_EQ(r.back().visible, 0.0f) << size;
+    }
 }
 
 TEST(ShadowMaps, TheMapsMemoryIsCappedByLoweringTheSize) {
