@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "trace/material_test_util.hpp"
 #include "trace/trace_test_util.hpp"
 #include "trace/tracer.hpp"
 
@@ -461,6 +462,29 @@ TEST(TracerLights, TwoFacingMirrorsStopAtTheFactorRule) {
     }
     EXPECT_GT(by_hand(8), by_hand(3));
     EXPECT_EQ(by_hand(16), by_hand(8));
+}
+
+TEST(TracerLights, LightPassesAnAlphaCutOutAndNotTheRestOfTheModel) {
+    // material_test_util's quad (x in [-1, 1], y in [0.5, 2.5] at z = -1,
+    // facing +z), its top-right quadrant (x ≥ 0, y ≥ 1.5) alpha 0 under
+    // MASK; a lamp of intensity 1 behind it at (0.5, 2, -1.5).
+    layout::Layout l = lit_room();
+    layout::GltfProp model;
+    assets::Material material;
+    material.texture = 0;
+    material.alpha_mode = assets::AlphaMode::Mask;
+    model.materials.push_back(material);
+    model.textures.push_back(test::texture(test::quadrants(0), assets::sampler_code::kNearest));
+    test::add_quad(model, 0);
+    l.rooms[0].props.push_back(model);
+    l.rooms[0].lights.push_back(point_light({0.5, 2, -1.5}, 1.0));
+    const Scene scene = prepare_scene(l).value();
+    // (0.5, 0, 1): v = (0, 2, -2.5) crosses z = -1 at t = 0.8, y = 1.6: the
+    // cut-out. d² = 10.25, cos = 2 / √10.25.
+    expect_color(floor_seen(scene, {0.5, 1.5, 2}, {0.5, 0, 1}),
+                 lit_by_hand(kFloor, dvec3(2.0 / std::sqrt(10.25) / 10.25)));
+    // (0.5, 0, 0): crosses at t = 2/3, y = 4/3, the opaque bottom-right quadrant.
+    expect_color(floor_seen(scene, {0.5, 1.5, 2}, {0.5, 0, 0}), lit_by_hand(kFloor));
 }
 
 }  // namespace
