@@ -191,9 +191,14 @@ void add_light(LightSearch& s, const PathPrefix& prefix, int k, const layout::Li
     if (c == dvec3(0.0)) return;  // out of range or of the cone, or black
     // A light within the tolerance: no surface counts, so only k = 0 reaches it.
     if (d <= s.tolerance ? k > 0 : !shadow_ray_clear(s, k, image, d)) return;
-    // 1 / d² may overflow that close: the channel saturates, never NaN.
-    for (int ch = 0; ch < 3; ++ch)
-        if (!std::isfinite(c[ch])) c[ch] = light.color[ch] * prefix.factor[ch] > 0.0 ? 1e300 : 0.0;
+    // 1 / d² may overflow that close (and times a zero make NaN): a channel
+    // the light reaches saturates, any other stays 0.
+    if (!std::isfinite(c.x + c.y + c.z)) {
+        const bool reaches = shading::spot_factor(light, to_light) > 0.0 && light.intensity > 0.0 &&
+                             (light.range <= 0.0 || d < light.range);
+        for (int ch = 0; ch < 3; ++ch)
+            if (!std::isfinite(c[ch])) c[ch] = reaches && light.color[ch] * prefix.factor[ch] > 0.0 ? 1e300 : 0.0;
+    }
     s.sum += c;
 }
 

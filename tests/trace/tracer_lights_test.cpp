@@ -487,5 +487,18 @@ TEST(TracerLights, LightPassesAnAlphaCutOutAndNotTheRestOfTheModel) {
     expect_color(floor_seen(scene, {0.5, 1.5, 2}, {0.5, 0, 0}), lit_by_hand(kFloor));
 }
 
+TEST(TracerLights, ALightTouchingTheSurfaceSaturatesWithoutNaN) {
+    // A lamp 1e-155 m above the floor point (0, 0, 0) (built in code; the
+    // loader would refuse it): 1 / d² overflows. Its red and blue saturate
+    // (base · (0.1 + huge), clamped to 1); its green is 0, so green keeps the
+    // ambient, 0.5 · 0.1, and no channel is NaN.
+    layout::Layout l = lit_room();
+    l.rooms[0].lights.push_back(point_light({0, 1e-155, 0}, 1.0, {1, 0, 1}));
+    const Scene scene = prepare_scene(l).value();
+    const TraceHit hit = trace_ray(scene, {0, 1, 1}, {0, -1, -1}, 0, RayLimits{});
+    EXPECT_EQ(hit.point, dvec3(0.0));
+    expect_color(hit.color, dvec3(1.0, 0.05, 1.0));
+}
+
 }  // namespace
 }  // namespace impossible::trace::lights_test
