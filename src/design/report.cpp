@@ -27,8 +27,9 @@ const char* const kSearchStopped = "the search stopped at its limit of pairs tes
 
 void count_lights(const layout::Layout& layout, Report& r) {
     if (layout.lighting != layout::Lighting::Lights) return;
-    const std::vector<lights::RoomLights> images =
-        lights::light_images(layout, links::link_portals(layout), layout.light_depth);
+    const links::PortalLinks links = links::link_portals(layout);
+    r.light_paths_depth = lights::light_depth_within(layout, links, layout.light_depth, kMaxReportedLightPaths);
+    const std::vector<lights::RoomLights> images = lights::light_images(layout, links, r.light_paths_depth);
     for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
         r.room_lights.push_back(static_cast<int>(layout.rooms[i].lights.size()));
         r.room_light_paths.push_back(i < images.size() ? static_cast<int>(images[i].images.size()) : 0);
@@ -40,6 +41,11 @@ void count_lights(const layout::Layout& layout, Report& r) {
 std::string lights_text(const layout::Layout& layout, const Report& r) {
     if (layout.lighting != layout::Lighting::Lights) return "";
     std::string out = "lighting: lights, light depth " + std::to_string(layout.light_depth) + "\n";
+    if (r.light_paths_depth < layout.light_depth) {
+        out += "  light paths: more than " + std::to_string(kMaxReportedLightPaths) +
+               " in all rooms together; counted at light depth " + std::to_string(r.light_paths_depth) +
+               ", the deepest within that\n";
+    }
     for (std::size_t i = 0; i < r.room_lights.size(); ++i) {
         out += "  " + layout.rooms[i].id + ": " +
                count_of(static_cast<std::size_t>(r.room_lights[i]), "light", "lights") + ", " +

@@ -38,7 +38,16 @@ struct Report {
     // light it at the layout's light_depth (lights/light_images.hpp).
     std::vector<int> room_lights;
     std::vector<int> room_light_paths;
+    // The light depth the paths were counted at: the layout's, or where the
+    // rooms together would have more than kMaxReportedLightPaths, the
+    // deepest that stays within (lights::light_depth_within).
+    int light_paths_depth = 0;
 };
+
+// validate enumerates at most this many light paths, all rooms together
+// (docs/bounded-work.md): a 2 m cube of six windows has 1.6 million at
+// light depth 8 and more, 5 GB and 26 s to list.
+inline constexpr std::size_t kMaxReportedLightPaths = 100'000;
 
 Report make_report(const layout::Layout& layout);
 

@@ -130,6 +130,10 @@ ordered_json report_json(const layout::Layout& layout, const Report& r,
     if (layout.lighting == layout::Lighting::Lights) {  // only then: fixed layouts' documents stay as they were
         ordered_json lighting;
         lighting["light_depth"] = layout.light_depth;
+        if (r.light_paths_depth < layout.light_depth) {  // only then
+            lighting["light_paths_truncated"] = true;
+            lighting["light_paths_depth"] = r.light_paths_depth;
+        }
         ordered_json rooms = ordered_json::array();
         for (std::size_t i = 0; i < r.room_lights.size(); ++i) {
             ordered_json room;

@@ -65,6 +65,56 @@ TEST(LightsReport, TheTextAndTheJsonSayIt) {
     EXPECT_EQ(j["lighting"]["rooms"][1]["light_paths"], 1);
 }
 
+// A 2 m cube of six windows paired face to face, reflectance 0.5: 1.6
+// million light paths from light depth 8 on.
+const char* const kWindowCube = R"({ "format": "impossible-layout", "version": 1, "lighting": "lights",
+  "light_depth": 16, "start": { "room": "cube", "position": [0, 1, 0] },
+  "rooms": [ { "id": "cube", "min": [-1, 0, -1], "max": [1, 2, 1], "lights": [ { "position": [0.3, 1.2, 0.1] } ] } ],
+  "portals": [
+    { "id": "ax", "room": "cube", "kind": "window", "center": [-1, 1, 0], "normal": [1, 0, 0], "width": 2,
+      "height": 2, "reflectance": 0.5, "target": "bx" },
+    { "id": "bx", "room": "cube", "kind": "window", "center": [1, 1, 0], "normal": [-1, 0, 0], "width": 2,
+      "height": 2, "reflectance": 0.5, "target": "ax" },
+    { "id": "ay", "room": "cube", "kind": "window", "center": [0, 0, 0], "normal": [0, 1, 0], "up": [0, 0, 1],
+      "width": 2, "height": 2, "reflectance": 0.5, "target": "by" },
+    { "id": "by", "room": "cube", "kind": "window", "center": [0, 2, 0], "normal": [0, -1, 0], "up": [0, 0, 1],
+      "width": 2, "height": 2, "reflectance": 0.5, "target": "ay" },
+    { "id": "az", "room": "cube", "kind": "window", "center": [0, 1, -1], "normal": [0, 0, 1], "width": 2,
+      "height": 2, "reflectance": 0.5, "target": "bz" },
+    { "id": "bz", "room": "cube", "kind": "window", "center": [0, 1, 1], "normal": [0, 0, -1], "width": 2,
+      "height": 2, "reflectance": 0.5, "target": "az" } ] })";
+
+TEST(LightsReport, TooManyLightPathsAreCountedAtALowerDepth) {
+    const layout::LoadResult loaded = layout::load_layout_text(kWindowCube, "cube.json", ".");
+    ASSERT_TRUE(loaded.layout) << (loaded.errors.empty() ? "" : loaded.errors[0].str());
+    const layout::Layout& l = *loaded.layout;
+    const design::Report r = design::make_report(l);
+    EXPECT_LT(r.light_paths_depth, 16);
+    EXPECT_GE(r.light_paths_depth, 1);
+    ASSERT_EQ(r.room_light_paths.size(), 1u);
+    EXPECT_LE(std::size_t(r.room_light_paths[0]), design::kMaxReportedLightPaths);
+    EXPECT_GT(r.room_light_paths[0], 1);
+    const std::string text = design::report_text(l, r);
+    EXPECT_NE(text.find("lighting: lights, light depth 16\n  light paths: more than 100000 in all rooms together; "
+                        "counted at light depth " +
+                        std::to_string(r.light_paths_depth) + ", the deepest within that\n  cube: 1 light, "),
+              std::string::npos)
+        << text;
+    const nlohmann::ordered_json j = design::report_json(l, r, {});
+    EXPECT_EQ(j["lighting"]["light_paths_truncated"], true);
+    EXPECT_EQ(j["lighting"]["light_paths_depth"], r.light_paths_depth);
+    // Within the budget, nothing is said.
+    const layout::Layout shallow = [&] {
+        layout::Layout copy = l;
+        copy.light_depth = 2;
+        return copy;
+    }();
+    const design::Report within = design::make_report(shallow);
+    EXPECT_EQ(within.light_paths_depth, 2);
+    EXPECT_EQ(design::report_text(shallow, within).find("more than"), std::string::npos);
+    EXPECT_FALSE(design::report_json(shallow, within, {})["lighting"].contains("light_paths_truncated"));
+}
+
 TEST(LightsReport, AFixedLayoutsReportHasNoLighting) {
     std::string text = lit_hall("");
     text.replace(text.find("LIGHTS"), 6, "");

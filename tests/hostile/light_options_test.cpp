@@ -39,5 +39,40 @@ TEST_F(Hostile, ABadLightIsOneErrorAtItsField) {
     EXPECT_FALSE(fs::exists(dir_ / "x.png"));
 }
 
+TEST_F(Hostile, ValidateBoundsTheLightPathsItCounts) {
+    // A 2 m cube of six windows paired face to face (reflectance 0.5) at
+    // light depth 16: 1.6 million light paths, 5 GB and 26 s to list them
+    // all; validate counts at most 100,000.
+    std::string portals;
+    const char* const specs[][4] = {{"x", "[-1, 1, 0]", "[1, 0, 0]", "[0, 1, 0]"},
+                                    {"y", "[0, 0, 0]", "[0, 1, 0]", "[0, 0, 1]"},
+                                    {"z", "[0, 1, -1]", "[0, 0, 1]", "[0, 1, 0]"}};
+    const char* const far[][2] = {
+        {"[1, 1, 0]", "[-1, 0, 0]"}, {"[0, 2, 0]", "[0, -1, 0]"}, {"[0, 1, 1]", "[0, 0, -1]"}};
+    for (int i = 0; i < 3; ++i) {
+        const std::string n = specs[i][0], up = specs[i][3];
+        const auto window = [&](const std::string& id, const std::string& center, const std::string& normal,
+                                const std::string& target) {
+            return "{\"id\": \"" + id + "\", \"room\": \"cube\", \"kind\": \"window\", \"center\": " + center +
+                   ", \"normal\": " + normal + ", \"up\": " + up +
+                   ", \"width\": 2, \"height\": 2, \"reflectance\": 0.5, \"target\": \"" + target + "\"}";
+        };
+        portals += (i ? ",\n" : "") + window("a" + n, specs[i][1], specs[i][2], "b" + n) + ",\n" +
+                   window("b" + n, far[i][0], far[i][1], "a" + n);
+    }
+    spit(dir_ / "cube.json",
+         "{\"format\": \"impossible-layout\", \"version\": 1, \"lighting\": \"lights\", \"light_depth\": 16,\n"
+         "\"start\": {\"room\": \"cube\", \"position\": [0, 1, 0]},\n"
+         "\"rooms\": [{\"id\": \"cube\", \"min\": [-1, 0, -1], \"max\": [1, 2, 1], \"lights\": [{\"position\": "
+         "[0.3, 1.2, 0.1]}]}],\n\"portals\": [" +
+             portals + "]}\n");
+    const Outcome r = run("ulimit -v 2000000; $BIN validate cube.json", 10);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_LT(r.seconds, 5.0);
+    EXPECT_NE(r.out.find("  light paths: more than 100000 in all rooms together; counted at light depth "),
+              std::string::npos)
+        << r.out;
+}
+
 }  // namespace
 }  // namespace impossible::hostile
