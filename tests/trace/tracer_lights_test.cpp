@@ -500,5 +500,39 @@ TEST(TracerLights, ALightTouchingTheSurfaceSaturatesWithoutNaN) {
     expect_color(hit.color, dvec3(1.0, 0.05, 1.0));
 }
 
+TEST(TracerLights, ARoomSplitByAWallSizedDoorIsLitAsTheWholeRoom) {
+    // [-2, 2] × [0, 3] × [-6, 2] as one room, and cut at z = -2 into two
+    // joined by coincident doors filling the whole wall (M_AB = identity):
+    // every segment from one part to a lamp in the other crosses the door,
+    // so each point's light is the same sum, once as k = 0 and once through
+    // the door. The frames' colours agree; only the ids tell the parts apart.
+    const dvec3 ambient(0.1);
+    layout::Layout whole = lit_room({-2, 0, -6}, {2, 3, 2});
+    whole.rooms[0].lights = {point_light({0.5, 2, 0.5}, 2.0), point_light({-0.7, 2.5, -4}, 3.0, {1, 0.6, 0.3})};
+    layout::Layout split = lit_room();
+    split.rooms.push_back(make_room("back", {-2, 0, -6}, {2, 3, -2}));
+    split.rooms[1].ambient = ambient;
+    add_pair(split, make_portal("front_door", 0, {0, 1.5, -2}, {0, 0, 1}, 4.0, 3.0),
+             make_portal("back_door", 1, {0, 1.5, -2}, {0, 0, -1}, 4.0, 3.0));
+    split.rooms[0].lights = {whole.rooms[0].lights[0]};
+    split.rooms[1].lights = {whole.rooms[0].lights[1]};
+    TraceDesc desc;
+    desc.room = 0;
+    desc.head.position = {0.3, 1.6, 1.5};
+    desc.head.yaw_deg = 10.0;
+    desc.head.pitch_deg = -20.0;
+    desc.fov_y_deg = 100.0;
+    desc.eye_width = 64;
+    desc.eye_height = 36;
+    desc.threads = 2;
+    const image::Image one = trace_frame(whole, desc).value();
+    const image::Image two = trace_frame(split, desc).value();
+    ASSERT_EQ(one.rgb.size(), two.rgb.size());
+    EXPECT_GT(test::count_id(two, 2), 500);  // much of the frame is the back part
+    int worst = 0;
+    for (std::size_t i = 0; i < one.rgb.size(); ++i) worst = std::max(worst, std::abs(one.rgb[i] - two.rgb[i]));
+    EXPECT_EQ(worst, 0);
+}
+
 }  // namespace
 }  // namespace impossible::trace::lights_test
