@@ -251,11 +251,24 @@ TEST(LightingRender, MatchesTheTracerWhereNoPropCastsAShadow) {
                              std::string("traced: ") + v.what + ", light depth " + std::to_string(depth));
         }
     }
-    LightingRig rig(mirrors);
-    ASSERT_TRUE(rig.renderer);
-    render::FrameDesc f = lit_frame(rig.layout, "hall", rig.layout.start.position, rig.layout.start.yaw_deg, -15.0);
-    expect_lit_agree(rig.render(f), trace::trace_frame(rig.layout, cli::trace_desc_for(f)).value(),
-                     "traced: mirror_hall, light depth 2");
+    // Mirrors and windows (both of a window's branches), at several
+    // recursion depths.
+    for (const char* name : {"mirror_hall.json", "window_pair.json", "glass_gallery.json"}) {
+        layout::Layout l = name == std::string("mirror_hall.json") ? mirrors : lit_example(name, 2);
+        for (layout::Room& room : l.rooms) room.props.clear();
+        LightingRig rig(l);
+        ASSERT_TRUE(rig.renderer);
+        for (const int max_depth : {1, 8}) {
+            render::FrameDesc f;
+            f.room = rig.layout.start.room;
+            f.head = {rig.layout.start.position, rig.layout.start.yaw_deg, -15.0, 0.0};
+            f.eye_width = 160;
+            f.eye_height = 96;
+            f.max_depth = max_depth;
+            expect_lit_agree(rig.render(f), trace::trace_frame(rig.layout, cli::trace_desc_for(f)).value(),
+                             std::string("traced: ") + name + ", depth " + std::to_string(max_depth));
+        }
+    }
 }
 
 TEST(LightingRender, PropsShadowsFromTheMapsAgainstTheTracer) {
