@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -57,8 +58,9 @@ struct ShadowRig {
     std::vector<walk::ObjectInstance> instances;
     std::vector<int> instance_mesh;
 
-    explicit ShadowRig(const char* text)
-        : layout(testing::layout_from_text(text)),
+    explicit ShadowRig(const char* text) : ShadowRig(testing::layout_from_text(text)) {}
+    explicit ShadowRig(layout::Layout l)
+        : layout(std::move(l)),
           scene(scene::build_scene(layout)),
           context(std::move(gl::create_context(gl::Backend::Egl).value())),
           gpu(render::upload_scene(scene)) {
@@ -321,6 +323,59 @@ TEST(ShadowMaps, AFaceLitAtGrazingIncidenceIsNotShadowedByItself) {
         for (size_t k = 0; k + 1 < r.size(); ++k) EXPECT_EQ(r[k].visible, 1.0f) << size << " point " << k;
         EXPECT_EQ(r.back().visible, 0.0f) << size;
     }
+}
+
+// A glTF quad (x -1.5..1.5, y 0.5..2.5 at z = -1.5, facing +z) textured 2×2
+// with alpha 1, 0 (top right), 1, 0.5 (bottom right) and cutoff 0.6: light
+// passes its cut-out quadrants.
+TEST(ShadowMaps, AlphaCutOutsLetLightThrough) {
+    layout::Layout l = testing::layout_from_text(kShadowBoxRoom);
+    l.rooms[0].props.clear();
+    layout::GltfProp prop;
+    prop.path = prop.resolved_path = "<quad>";
+    const glm::dvec3 bl(-1.5, 0.5, -1.5), br(1.5, 0.5, -1.5), tr(1.5, 2.5, -1.5), tl(-1.5, 2.5, -1.5);
+    const auto tri = [&](glm::dvec3 a, glm::dvec3 b, glm::dvec3 c, glm::dvec2 ua, glm::dvec2 ub, glm::dvec2 uc) {
+        assets::ModelTriangle t;
+        t.position = {a, b, c};
+        t.normal = {glm::dvec3(0, 0, 1), glm::dvec3(0, 0, 1), glm::dvec3(0, 0, 1)};
+        t.uv = {ua, ub, uc};
+        t.color = glm::dvec3(1.0);
+        t.material = 0;
+        prop.triangles.push_back(t);
+    };
+    tri(bl, br, tr, {0, 1}, {1, 1}, {1, 0});
+    tri(bl, tr, tl, {0, 1}, {1, 0}, {0, 0});
+    auto image = std::make_shared<image::Pixels>();
+    image->width = image->height = 2;
+    image->data = {255, 255, 255, 255, 255, 255, 255, 0, 255, 255, 255, 255, 255, 255, 255, 128};
+    assets::Texture texture;
+    texture.image = image;
+    texture.sampler.mag_filter = assets::sampler_code::kNearest;
+    texture.sampler.min_filter = assets::sampler_code::kNearest;
+    prop.textures.push_back(texture);
+    assets::Material m;
+    m.texture = 0;
+    m.alpha_mode = assets::AlphaMode::Mask;
+    m.alpha_cutoff = 0.6;
+    prop.materials.push_back(m);
+    l.rooms[0].props.push_back(prop);
+    ShadowRig rig(l);
+    const glm::dvec3 light(0.0, 1.5, 1.0);
+    lights::RoomLights room;
+    room.images.push_back(direct_image(0, light));
+    EXPECT_EQ(rig.update({room}), 1);
+    // Behind each quadrant's centre, on the wall at z = -3.
+    const glm::dvec3 centres[4] = {{-0.75, 2.0, -1.5}, {0.75, 2.0, -1.5}, {-0.75, 1.0, -1.5}, {0.75, 1.0, -1.5}};
+    std::vector<glm::dvec3> offsets;
+    for (const glm::dvec3& c : centres) offsets.push_back(2.0 * (c - light));
+    const std::vector<ShadowProbeResult> r = rig.probe_at(0, offsets);
+    const float quad = static_cast<float>(glm::length(centres[0] - light));
+    EXPECT_NEAR(r[0].stored, quad, 0.02f);
+    EXPECT_EQ(r[0].visible, 0.0f);
+    EXPECT_EQ(r[1].stored, render::kNoShadowOccluder);  // alpha 0
+    EXPECT_EQ(r[1].visible, 1.0f);
+    EXPECT_NEAR(r[2].stored, quad, 0.02f);
+    EXPECT_EQ(r[3].stored, render::kNoShadowOccluder);  // alpha 0.5 < 0.6
 }
 
 TEST(ShadowMaps, TheMapsMemoryIsCappedByLoweringTheSize) {
