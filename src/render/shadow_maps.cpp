@@ -1,5 +1,6 @@
 #include "render/shadow_maps.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -238,9 +239,14 @@ Result<int> update_shadow_maps(ShadowMaps& m, gl::StateCache& state, const Shado
     m.layer.assign(images.size(), -1);
     const bool on = frame.shadows && frame.shadow_map_size > 0;
     const std::vector<std::vector<int>> by_room = on ? instances_by_room(s) : std::vector<std::vector<int>>{};
+    if (m.max_maps == 0) {
+        GLint layers = 0;
+        glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &layers);
+        m.max_maps = std::max(1, static_cast<int>(layers) / 6);
+    }
     int count = 0;
     if (on)
-        for (size_t g = 0; g < images.size(); ++g)
+        for (size_t g = 0; g < images.size() && count < m.max_maps; ++g)
             if (has_occluders(s, by_room, *images[g])) m.layer[g] = count++;
     int drawn = 0;
     if (count > 0) {

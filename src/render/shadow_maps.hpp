@@ -63,7 +63,10 @@ inline constexpr double kShadowNear = 1e-4;
 inline constexpr double kShadowBiasTexels = 0.5;
 
 // The size a frame's maps are drawn at: the requested size, halved until
-// `maps` maps fit in kMaxShadowMapBytes.
+// `maps` maps fit in kMaxShadowMapBytes. A frame has at most
+// GL_MAX_ARRAY_TEXTURE_LAYERS / 6 maps (341 on llvmpipe and most drivers):
+// the images past them (in the global order) have none, and light passes
+// their props.
 int shadow_map_size_for(int requested, std::size_t maps);
 
 // Where the maps' occluders are drawn from (the renderer's data and the
@@ -86,6 +89,7 @@ struct ShadowMaps {
     GLint model = -1, face_proj = -1, planes = -1, textured = -1, alpha_cutoff = -1;
     int size = 0;                           // texels per face side of `maps`
     int capacity = 0;                       // cube maps `maps` holds
+    int max_maps = 0;                       // GL_MAX_ARRAY_TEXTURE_LAYERS / 6 (0: not asked yet)
     std::vector<int> layer;                 // per global image: its cube map, or -1 (no props, or shadows off)
     std::vector<std::vector<double>> keys;  // per cube map: what it was drawn from
 };

@@ -378,6 +378,26 @@ TEST(ShadowMaps, AlphaCutOutsLetLightThrough) {
     EXPECT_EQ(r[3].stored, render::kNoShadowOccluder);  // alpha 0.5 < 0.6
 }
 
+// More images with props than a cube map array holds (GL_MAX_ARRAY_TEXTURE_LAYERS
+// / 6): the first ones get maps, the rest none (lit through props), and GL
+// reports no error.
+TEST(ShadowMaps, ImagesPastTheArraysLayersHaveNoMap) {
+    ShadowRig rig(kShadowBoxRoom);
+    GLint layers = 0;
+    glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &layers);
+    const int max_maps = layers / 6;
+    lights::RoomLights room;
+    for (int k = 0; k < max_maps + 5; ++k) room.images.push_back(direct_image(0, {0.001 * k, 2.5, 0.0}));
+    EXPECT_EQ(rig.update({room}, 16), max_maps);
+    EXPECT_EQ(rig.maps.capacity, max_maps);
+    EXPECT_EQ(rig.maps.layer[static_cast<size_t>(max_maps - 1)], max_maps - 1);
+    EXPECT_EQ(rig.maps.layer[static_cast<size_t>(max_maps)], -1);
+    const glm::dvec3 down(0.0, -2.5, 0.0);
+    EXPECT_EQ(rig.probe_at(max_maps - 1, {down})[0].visible, 0.0f);
+    EXPECT_EQ(rig.probe_at(max_maps, {down})[0].visible, 1.0f);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
 TEST(ShadowMaps, TheMapsMemoryIsCappedByLoweringTheSize) {
     EXPECT_EQ(render::shadow_map_size_for(512, 1), 512);
     EXPECT_EQ(render::shadow_map_size_for(4096, 1), 2048);  // 6 · 4096² · 4 bytes = 384 MiB
