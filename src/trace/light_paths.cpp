@@ -206,7 +206,7 @@ void add_light(LightSearch& s, const PathPrefix& prefix, int k, const layout::Li
     s.sum += c;
 }
 
-void visit(LightSearch& s, const PathPrefix& prefix, int k);
+void visit_paths(LightSearch& s, const PathPrefix& prefix, int k);
 
 // Follows the prefix through portal step k (its matrix m, m's inverse, the
 // room beyond and the portal's factor) unless the factor falls too low.
@@ -214,14 +214,14 @@ void follow_step(LightSearch& s, const PathPrefix& prefix, int k, const dmat4& m
                  const dvec3& factor) {
     PathPrefix next{room, m * prefix.to_room, prefix.from_room * m_inverse, prefix.factor * factor};
     if (shading::max_channel(next.factor) < shading::kMinLightFactor) return;
-    visit(s, next, k + 1);
+    visit_paths(s, next, k + 1);
 }
 
 // The lights of the prefix's room, then every longer path: through each
 // portal of the room that the point's image lies in front of (a shadow ray
 // meets a portal only from its front) and whose image lies partly inside
 // the cone of the path's last portal, a window both ways, its reflection first.
-void visit(LightSearch& s, const PathPrefix& prefix, int k) {
+void visit_paths(LightSearch& s, const PathPrefix& prefix, int k) {
     for (const layout::Light& light : s.scene.rooms[prefix.room].lights) add_light(s, prefix, k, light);
     if (k >= s.depth) return;
     const dvec3 seen = dvec3(prefix.to_room * dvec4(s.at.point, 1.0));
@@ -254,7 +254,7 @@ dvec3 light_sum(const Scene& scene, const FrameObjects* objects, const LitPoint&
     s.tolerance = shading::shadow_ray_start_tolerance(at.point);
     PathPrefix start;
     start.room = at.room;
-    visit(s, start, 0);
+    visit_paths(s, start, 0);
     return s.sum;
 }
 
