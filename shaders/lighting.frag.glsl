@@ -15,15 +15,29 @@ in vec3 v_light_position;
 //   [2] xyz: the spot's axis in the room's coordinates, w: 1 / (cos inner - cos outer)
 //   [3] x: the first of its path's rectangles, y: their number (as floats)
 //   [4] unused (the shadow lookup's)
+// LIGHT_UBO: the same as uniform blocks, which llvmpipe reads faster (where
+// they fit in LIGHT_UBO_VEC4S vec4s each).
+#if defined(LIGHT_UBO)
+layout(std140, binding = 4) uniform LightImages {
+    vec4 light_images[LIGHT_UBO_VEC4S];
+};
+#else
 layout(std430, binding = 4) readonly buffer LightImages {
     vec4 light_images[];
 };
+#endif
 // The portal rectangles of the paths: four vec4s each, the centre (w: 1 for
 // a blocker, 0 for an aperture), the normal (towards the surface's side),
 // and the right and up axes divided by the half width and height.
+#if defined(LIGHT_UBO)
+layout(std140, binding = 5) uniform LightRects {
+    vec4 light_rects[LIGHT_UBO_VEC4S];
+};
+#else
 layout(std430, binding = 5) readonly buffer LightRects {
     vec4 light_rects[];
 };
+#endif
 uniform int u_light_first;   // the room's first image in light_images
 uniform int u_light_count;   // its number of images
 uniform vec3 u_light_ambient;

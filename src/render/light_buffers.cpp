@@ -48,9 +48,11 @@ void push_image(PackedLights& out, const lights::LightImage& image, const layout
     out.images.insert(out.images.end(), {0.0f, 0.0f, 0.0f, 0.0f});
 }
 
-// A buffer of `data`, at least one vec4 (a buffer's storage cannot be empty).
-gl::Buffer upload_floats(std::vector<float> data) {
+// A buffer of `data`, at least one vec4 (a buffer's storage cannot be
+// empty); for a uniform block, all of the block's kLightUboVec4s.
+gl::Buffer upload_floats(std::vector<float> data, bool ubo) {
     if (data.empty()) data.assign(4, 0.0f);
+    if (ubo) data.resize(4 * static_cast<size_t>(kLightUboVec4s), 0.0f);
     gl::Buffer buffer = gl::create_buffer();
     glNamedBufferStorage(buffer.get(), static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(), 0);
     return buffer;
@@ -84,14 +86,26 @@ LightBuffers upload_light_images(const std::vector<lights::RoomLights>& rooms, c
     }
     out.rooms = rooms;
     PackedLights packed = pack_light_images(rooms, layout, origins);
-    out.images = upload_floats(std::move(packed.images));
-    out.rects = upload_floats(std::move(packed.rects));
+    const auto fits = [](const std::vector<float>& v) { return v.size() <= 4 * static_cast<size_t>(kLightUboVec4s); };
+    GLint block_bytes = 0;
+    glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &block_bytes);
+    out.ubo = fits(packed.images) && fits(packed.rects) && block_bytes >= 16 * kLightUboVec4s;
+    out.images = upload_floats(std::move(packed.images), out.ubo);
+    out.rects = upload_floats(std::move(packed.rects), out.ubo);
     return out;
 }
 
 void bind_light_buffers(const LightBuffers* buffers) {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightImagesBinding, buffers ? buffers->images.get() : 0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightRectsBinding, buffers ? buffers->rects.get() : 0);
+    const GLenum target = buffers && buffers->ubo ? GL_UNIFORM_BUFFER : GL_SHADER_STORAGE_BUFFER;
+    if (!buffers)
+        for (const GLenum t : {GL_UNIFORM_BUFFER, GL_SHADER_STORAGE_BUFFER}) {
+            glBindBufferBase(t, kLightImagesBinding, 0);
+            glBindBufferBase(t, kLightRectsBinding, 0);
+        }
+    else {
+        glBindBufferBase(target, kLightImagesBinding, buffers->images.get());
+        glBindBufferBase(target, kLightRectsBinding, buffers->rects.get());
+    }
 }
 
 void set_light_uniforms(const LightBuffers& buffers, const SceneProgram& program, int room,

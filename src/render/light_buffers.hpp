@@ -24,12 +24,14 @@ struct LightBuffers {
     int depth = -1;  // the light depth they were made for; -1: none
     gl::Buffer images;
     gl::Buffer rects;
-    std::vector<int> first;                 // per room
-    std::vector<int> count;                 // per room
-    std::vector<glm::vec3> ambient;         // per room
-    std::vector<glm::dvec3> origins;        // per room: its cell origin
-    int total = 0;                          // images of every room
-    std::vector<lights::RoomLights> rooms;  // the images themselves (the shadow maps')
+    std::vector<int> first;           // per room
+    std::vector<int> count;           // per room
+    std::vector<glm::vec3> ambient;   // per room
+    std::vector<glm::dvec3> origins;  // per room: its cell origin
+    int total = 0;                    // images of every room
+    std::vector<lights::RoomLights> rooms;
+    bool ubo =
+        false;  // both fit kLightUboVec4s: bound as uniform blocks (kLightsUbo variants)  // the images themselves (the shadow maps')
 };
 
 // The GPU layout of the images: kLightImageVec4s vec4s per image, 4 per rectangle.

@@ -142,7 +142,10 @@ void draw_volume_room(const DrawContext& ctx, const LevelView& view, const Sciss
 
 }  // namespace
 
-unsigned light_flags(const DrawContext& ctx) { return ctx.renderer.lit ? kLights : 0u; }
+unsigned light_flags(const DrawContext& ctx) {
+    const RendererData& r = ctx.renderer;
+    return r.lit ? kLights | (r.lights.ubo ? kLightsUbo : 0u) : 0u;
+}
 
 void set_room_lights(const DrawContext& ctx, const SceneProgram& program, int room, bool count) {
     const RendererData& r = ctx.renderer;

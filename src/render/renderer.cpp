@@ -51,6 +51,9 @@ Result<void> ensure_variants(RendererData& r, StereoMode mode, bool objects) {
         if ((flags & (kObjectCuts | kVolumes | kLights)) == 0u) continue;
         if (((flags & kObjectCuts) && !objects) || ((flags & kVolumes) && !volumes)) continue;
         if ((flags & kLights) && !r.lit) continue;
+        // The light buffers' kind for the frame's light depth (ensure_lights).
+        if ((flags & kLightsUbo) && (!(flags & kLights) || !r.lights.ubo)) continue;
+        if ((flags & kLights) && !(flags & kLightsUbo) && r.lights.ubo) continue;
         if ((flags & kMaterials) && !r.has_materials) continue;
         std::optional<SceneProgram>& slot = r.programs.variants[mode_index(mode)][flags];
         if (slot) continue;
@@ -86,8 +89,8 @@ Result<void> prepare_frame(RendererData& r, FrameTargets& targets, const FrameDe
     if (r.has_materials)
         if (Result<void> made = ensure_program(programs, frame.stereo, true); !made) return made;
     const bool objects = !r.object_set.props.empty() || frame.hands.has_value();
+    ensure_lights(r, frame);  // before the variants: which kind of light buffers
     if (Result<void> made = ensure_variants(r, frame.stereo, objects); !made) return made;
-    ensure_lights(r, frame);
     if (Result<void> made = ensure_multisampled(programs, targets, frame); !made) return made;
     if (r.has_windows) {
         if (Result<void> made = prepare_window_blend(programs, false); !made) return made;

@@ -40,6 +40,7 @@ struct SceneVariant {
     bool object_cuts = false;  // OBJECT_CUTS
     bool volumes = false;      // VOLUMES
     bool lights = false;       // LIGHTS
+    bool light_ubo = false;    // LIGHT_UBO
 };
 
 std::string variant_defines(const SceneVariant& variant) {
@@ -50,6 +51,8 @@ std::string variant_defines(const SceneVariant& variant) {
     if (variant.volumes) defines += "#define VOLUMES\n#define VOLUME_TOLERANCE 1e-6\n";
     if (variant.lights)
         defines += "#define LIGHTS\n#define LIGHT_MAX_APERTURES " + std::to_string(layout::kMaxLightDepth) + "\n";
+    if (variant.lights && variant.light_ubo)
+        defines += "#define LIGHT_UBO\n#define LIGHT_UBO_VEC4S " + std::to_string(kLightUboVec4s) + "\n";
     return defines;
 }
 
@@ -136,6 +139,7 @@ Result<SceneProgram> build_scene_variant(StereoMode mode, unsigned flags) {
     variant.object_cuts = (flags & kObjectCuts) != 0;
     variant.volumes = (flags & kVolumes) != 0;
     variant.lights = (flags & kLights) != 0;
+    variant.light_ubo = (flags & kLightsUbo) != 0;
     return link_scene_program(variant, defines);
 }
 

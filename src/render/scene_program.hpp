@@ -61,7 +61,13 @@ inline constexpr unsigned kMaterials = 1u;   // MATERIALS: textures and cut-outs
 inline constexpr unsigned kObjectCuts = 2u;  // OBJECT_CUTS: instances of dynamic objects
 inline constexpr unsigned kVolumes = 4u;     // VOLUMES: the draws of a cell with volume portals
 inline constexpr unsigned kLights = 8u;      // LIGHTS: the colour passes of a lit layout ("lighting": "lights")
-inline constexpr unsigned kSceneVariantCount = 16u;
+inline constexpr unsigned kLightsUbo = 16u;  // with kLights: the light buffers as uniform blocks (LIGHT_UBO)
+inline constexpr unsigned kSceneVariantCount = 32u;
+
+// The vec4s of each light buffer's uniform block (kLightsUbo): 64 KiB, the
+// least GL_MAX_UNIFORM_BLOCK_SIZE GL 4.5 allows. Larger light buffers are
+// read as shader storage.
+inline constexpr int kLightUboVec4s = 4096;
 
 // `materials`: the variant that reads textures and drops cut-out fragments
 // (shaders/scene.frag.glsl, MATERIALS), for batches that need it.

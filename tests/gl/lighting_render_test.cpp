@@ -288,6 +288,25 @@ TEST(LightingRender, PropsShadowsFromTheMapsAgainstTheTracer) {
     }
 }
 
+TEST(LightingRender, ManyImagesAreReadAsShaderStorage) {
+    // 900 lamps in one room: their images (4500 vec4s) overflow the uniform
+    // blocks (kLightUboVec4s), so the shader storage variant draws them.
+    layout::Layout l = lit_lamp_hall(0);
+    for (layout::Room& room : l.rooms) room.props.clear();
+    l.rooms[0].lights.clear();
+    for (int i = 0; i < 30; ++i)
+        for (int k = 0; k < 30; ++k)
+            l.rooms[0].lights.push_back(lit_point({-1.8 + 0.12 * i, 2.5, -1.8 + 0.12 * k}, {1.0, 0.9, 0.8}, 0.004));
+    LightingRig rig(l);
+    ASSERT_TRUE(rig.renderer);
+    render::FrameDesc f = lit_frame(rig.layout, "hall", {-1.3, 1.6, 0.9}, -75.0, -15.0);
+    f.eye_width = 48;
+    f.eye_height = 32;
+    render::FrameStats stats;
+    expect_lit_agree(rig.render(f, &stats), lit_cpu_frame(rig.layout, f), "900 lamps in the hall");
+    EXPECT_EQ(stats.light_images, 900);
+}
+
 TEST(LightingRender, LightDepthOfTheViewReplacesTheLayouts) {
     LightingRig rig(lit_lamp_hall(0));
     ASSERT_TRUE(rig.renderer);
