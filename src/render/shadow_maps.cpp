@@ -25,25 +25,26 @@ struct ShadowLeg {
 
 // Keep d >= 0 in front of (front = true) or behind an aperture, as a plane
 // in L'-relative coordinates.
-math::dvec4 aperture_plane(const lights::Aperture& a, const math::dvec3& lprime, bool front) {
+math::dvec4 shadow_aperture_plane(const lights::Aperture& a, const math::dvec3& lprime, bool front) {
     const math::dvec3 n = front ? a.rect.normal : -a.rect.normal;
     return {n, glm::dot(n, lprime - a.rect.center)};
 }
 
-std::vector<ShadowLeg> legs_of(const lights::LightImage& image) {
+std::vector<ShadowLeg> shadow_legs_of(const lights::LightImage& image) {
     std::vector<ShadowLeg> legs(image.rooms.size());
     const math::dmat4 to_relative = glm::translate(math::dmat4(1.0), -image.position);
     for (size_t i = 0; i < legs.size(); ++i) {
         legs[i].room = image.rooms[i];
         legs[i].from_room = to_relative * glm::inverse(image.to_room[i]);
-        if (i < image.apertures.size()) legs[i].slab[0] = aperture_plane(image.apertures[i], image.position, true);
-        if (i > 0) legs[i].slab[1] = aperture_plane(image.apertures[i - 1], image.position, false);
+        if (i < image.apertures.size())
+            legs[i].slab[0] = shadow_aperture_plane(image.apertures[i], image.position, true);
+        if (i > 0) legs[i].slab[1] = shadow_aperture_plane(image.apertures[i - 1], image.position, false);
     }
     return legs;
 }
 
 // Per room, the frame's instances drawn in it.
-std::vector<std::vector<int>> instances_by_room(const ShadowSources& s) {
+std::vector<std::vector<int>> shadow_instances_by_room(const ShadowSources& s) {
     std::vector<std::vector<int>> by_room(s.objects->size());
     for (size_t i = 0; i < s.instances->size(); ++i) {
         const int cell = (*s.instances)[i].cell;
@@ -52,8 +53,8 @@ std::vector<std::vector<int>> instances_by_room(const ShadowSources& s) {
     return by_room;
 }
 
-bool has_occluders(const ShadowSources& s, const std::vector<std::vector<int>>& by_room,
-                   const lights::LightImage& image) {
+bool shadow_has_occluders(const ShadowSources& s, const std::vector<std::vector<int>>& by_room,
+                          const lights::LightImage& image) {
     for (const int room : image.rooms) {
         const auto r = static_cast<size_t>(room);
         if (!(*s.objects)[r].batches.empty() || !by_room[r].empty()) return true;
@@ -61,22 +62,22 @@ bool has_occluders(const ShadowSources& s, const std::vector<std::vector<int>>& 
     return false;
 }
 
-void push(std::vector<double>& key, const math::dmat4& m) {
+void shadow_key_push(std::vector<double>& key, const math::dmat4& m) {
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r) key.push_back(m[c][r]);
 }
 
 // Everything a map depends on: equal keys, equal maps.
-std::vector<double> key_of(const ShadowSources& s, const std::vector<std::vector<int>>& by_room,
-                           const lights::LightImage& image, int size) {
+std::vector<double> shadow_key_of(const ShadowSources& s, const std::vector<std::vector<int>>& by_room,
+                                  const lights::LightImage& image, int size) {
     std::vector<double> key = {double(size), image.position.x, image.position.y, image.position.z};
     for (size_t i = 0; i < image.rooms.size(); ++i) {
         key.push_back(image.rooms[i]);
-        push(key, image.to_room[i]);
+        shadow_key_push(key, image.to_room[i]);
         for (const int k : by_room[static_cast<size_t>(image.rooms[i])]) {
             const walk::ObjectInstance& inst = (*s.instances)[static_cast<size_t>(k)];
             key.push_back((*s.instance_mesh)[static_cast<size_t>(k)]);
-            push(key, inst.to_cell);
+            shadow_key_push(key, inst.to_cell);
             key.push_back(inst.cut_count);
             for (int c = 0; c < inst.cut_count; ++c)
                 for (int j = 0; j < 4; ++j) key.push_back(inst.cuts[static_cast<size_t>(c)].plane[j]);
@@ -89,7 +90,7 @@ std::vector<double> key_of(const ShadowSources& s, const std::vector<std::vector
     return key;
 }
 
-Result<void> ensure_program(ShadowMaps& m) {
+Result<void> ensure_shadow_program(ShadowMaps& m) {
     if (m.program) return {};
     std::vector<gl::ShaderSource> stages = {embedded_shader(GL_VERTEX_SHADER, "shaders/shadow_map.vert.glsl"),
                                             embedded_shader(GL_FRAGMENT_SHADER, "shaders/shadow_map.frag.glsl")};
@@ -106,7 +107,7 @@ Result<void> ensure_program(ShadowMaps& m) {
 }
 
 // Storage for `count` maps of `size`² texels per face; false if kept.
-bool ensure_storage(ShadowMaps& m, gl::StateCache& state, int size, int count) {
+bool ensure_shadow_storage(ShadowMaps& m, gl::StateCache& state, int size, int count) {
     if (m.maps && m.size == size && m.capacity >= count) return false;
     state.deleting_texture(m.maps.get());
     state.deleting_texture(m.depth.get());
@@ -126,13 +127,13 @@ bool ensure_storage(ShadowMaps& m, gl::StateCache& state, int size, int count) {
 }
 
 // The GL cube map faces' views (+X, -X, +Y, -Y, +Z, -Z), looking from L'.
-math::dmat4 face_view(int face) {
+math::dmat4 shadow_face_view(int face) {
     static const math::dvec3 dirs[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
     static const math::dvec3 ups[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
     return glm::lookAt(math::dvec3(0.0), dirs[face], ups[face]);
 }
 
-void set_planes(const ShadowMaps& m, const ShadowLeg& leg, const walk::ObjectInstance* inst) {
+void set_shadow_planes(const ShadowMaps& m, const ShadowLeg& leg, const walk::ObjectInstance* inst) {
     float planes[4][4];
     for (int k = 0; k < 4; ++k) {
         math::dvec4 p(0.0, 0.0, 0.0, 1.0);
@@ -145,8 +146,8 @@ void set_planes(const ShadowMaps& m, const ShadowLeg& leg, const walk::ObjectIns
     glProgramUniform4fv(m.program.get(), m.planes, 4, &planes[0][0]);
 }
 
-void draw_batches(const ShadowMaps& m, gl::StateCache& state, const ShadowSources& s,
-                  const std::vector<scene::DrawBatch>& batches, const math::dmat4& model) {
+void draw_shadow_batches(const ShadowMaps& m, gl::StateCache& state, const ShadowSources& s,
+                         const std::vector<scene::DrawBatch>& batches, const math::dmat4& model) {
     const glm::mat4 model_f(model);
     const GLuint p = m.program.get();
     glProgramUniformMatrix4fv(p, m.model, 1, GL_FALSE, &model_f[0][0]);
@@ -162,19 +163,19 @@ void draw_batches(const ShadowMaps& m, gl::StateCache& state, const ShadowSource
 }
 
 // A leg's props: the room's static ones, then the instances placed in it.
-void draw_leg(const ShadowMaps& m, gl::StateCache& state, const ShadowSources& s, const std::vector<int>& instances,
-              const ShadowLeg& leg) {
+void draw_shadow_leg(const ShadowMaps& m, gl::StateCache& state, const ShadowSources& s,
+                     const std::vector<int>& instances, const ShadowLeg& leg) {
     const auto room = static_cast<size_t>(leg.room);
-    set_planes(m, leg, nullptr);
-    draw_batches(m, state, s, (*s.objects)[room].batches,
-                 leg.from_room * glm::translate(math::dmat4(1.0), (*s.origins)[room].origin));
+    set_shadow_planes(m, leg, nullptr);
+    draw_shadow_batches(m, state, s, (*s.objects)[room].batches,
+                        leg.from_room * glm::translate(math::dmat4(1.0), (*s.origins)[room].origin));
     for (const int k : instances) {
         const walk::ObjectInstance& inst = (*s.instances)[static_cast<size_t>(k)];
         const scene::ObjectMesh& mesh =
             (*s.object_meshes)[static_cast<size_t>((*s.instance_mesh)[static_cast<size_t>(k)])];
-        set_planes(m, leg, &inst);
-        draw_batches(m, state, s, mesh.batches,
-                     leg.from_room * inst.to_cell * glm::translate(math::dmat4(1.0), mesh.origin));
+        set_shadow_planes(m, leg, &inst);
+        draw_shadow_batches(m, state, s, mesh.batches,
+                            leg.from_room * inst.to_cell * glm::translate(math::dmat4(1.0), mesh.origin));
     }
 }
 
@@ -189,9 +190,9 @@ gl::PassState shadow_pass_state() {
     return p;
 }
 
-void draw_map(const ShadowMaps& m, gl::StateCache& state, const ShadowSources& s,
-              const std::vector<std::vector<int>>& by_room, const lights::LightImage& image, int layer) {
-    const std::vector<ShadowLeg> legs = legs_of(image);
+void draw_shadow_map(const ShadowMaps& m, gl::StateCache& state, const ShadowSources& s,
+                     const std::vector<std::vector<int>>& by_room, const lights::LightImage& image, int layer) {
+    const std::vector<ShadowLeg> legs = shadow_legs_of(image);
     math::Frustum f;
     f.fov_y_deg = 90.0;
     f.aspect = 1.0;
@@ -204,13 +205,13 @@ void draw_map(const ShadowMaps& m, gl::StateCache& state, const ShadowSources& s
         glNamedFramebufferTextureLayer(fb, GL_COLOR_ATTACHMENT0, m.maps.get(), 0, 6 * layer + face);
         glClearNamedFramebufferfv(fb, GL_COLOR, 0, none);
         glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
-        const glm::mat4 face_proj(projection * face_view(face));
+        const glm::mat4 face_proj(projection * shadow_face_view(face));
         glProgramUniformMatrix4fv(m.program.get(), m.face_proj, 1, GL_FALSE, &face_proj[0][0]);
-        for (const ShadowLeg& leg : legs) draw_leg(m, state, s, by_room[static_cast<size_t>(leg.room)], leg);
+        for (const ShadowLeg& leg : legs) draw_shadow_leg(m, state, s, by_room[static_cast<size_t>(leg.room)], leg);
     }
 }
 
-void upload_layers(ShadowMaps& m) {
+void upload_shadow_layers(ShadowMaps& m) {
     std::vector<std::int32_t> data(m.layer.size() + 2);
     const float header[2] = {m.size > 0 ? 2.0f / static_cast<float>(m.size) : 0.0f,
                              static_cast<float>(kShadowBiasTexels)};
@@ -238,7 +239,7 @@ Result<int> update_shadow_maps(ShadowMaps& m, gl::StateCache& state, const Shado
         for (const lights::LightImage& image : room.images) images.push_back(&image);
     m.layer.assign(images.size(), -1);
     const bool on = frame.shadows && frame.shadow_map_size > 0;
-    const std::vector<std::vector<int>> by_room = on ? instances_by_room(s) : std::vector<std::vector<int>>{};
+    const std::vector<std::vector<int>> by_room = on ? shadow_instances_by_room(s) : std::vector<std::vector<int>>{};
     if (m.max_maps == 0) {
         GLint layers = 0;
         glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &layers);
@@ -247,12 +248,12 @@ Result<int> update_shadow_maps(ShadowMaps& m, gl::StateCache& state, const Shado
     int count = 0;
     if (on)
         for (size_t g = 0; g < images.size() && count < m.max_maps; ++g)
-            if (has_occluders(s, by_room, *images[g])) m.layer[g] = count++;
+            if (shadow_has_occluders(s, by_room, *images[g])) m.layer[g] = count++;
     int drawn = 0;
     if (count > 0) {
-        if (Result<void> made = ensure_program(m); !made) return Error{made.error()};
+        if (Result<void> made = ensure_shadow_program(m); !made) return Error{made.error()};
         const int size = shadow_map_size_for(frame.shadow_map_size, static_cast<std::size_t>(count));
-        ensure_storage(m, state, size, count);
+        ensure_shadow_storage(m, state, size, count);
         state.apply(shadow_pass_state(), 0);
         state.no_scissor();
         state.viewport({0, 0, size, size});
@@ -263,15 +264,15 @@ Result<int> update_shadow_maps(ShadowMaps& m, gl::StateCache& state, const Shado
         for (size_t g = 0; g < images.size(); ++g) {
             const int layer = m.layer[g];
             if (layer < 0) continue;
-            std::vector<double> key = key_of(s, by_room, *images[g], size);
+            std::vector<double> key = shadow_key_of(s, by_room, *images[g], size);
             key.push_back(static_cast<double>(g));
             if (m.keys[static_cast<size_t>(layer)] == key) continue;
-            draw_map(m, state, s, by_room, *images[g], layer);
+            draw_shadow_map(m, state, s, by_room, *images[g], layer);
             m.keys[static_cast<size_t>(layer)] = std::move(key);
             ++drawn;
         }
     }
-    upload_layers(m);
+    upload_shadow_layers(m);
     return drawn;
 }
 

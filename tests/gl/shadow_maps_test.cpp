@@ -129,7 +129,7 @@ struct ShadowRig {
 };
 
 // A light of room `room` seen directly (no portals).
-lights::LightImage direct_image(int room, const glm::dvec3& position) {
+lights::LightImage shadow_direct_image(int room, const glm::dvec3& position) {
     lights::LightImage image;
     image.light_room = room;
     image.light = 0;
@@ -161,7 +161,7 @@ TEST(ShadowMaps, ABoxsDistanceInTheMapMatchesTheCpusWithinATexel) {
     const glm::dvec3 light(0.1, 2.5, -0.2);
     const glm::dvec3 lo(-0.5, 1.0, -0.4), hi(0.6, 1.2, 0.5);
     lights::RoomLights room;
-    room.images.push_back(direct_image(0, light));
+    room.images.push_back(shadow_direct_image(0, light));
     const int size = 256;
     EXPECT_EQ(rig.update({room}, size), 1);
     std::vector<glm::dvec3> offsets;
@@ -270,7 +270,7 @@ TEST(ShadowMaps, AStaticLayoutDrawsItsMapsOnceAndAMovingPropRedrawsThem) {
     {
         ShadowRig rig(kShadowBoxRoom);
         lights::RoomLights room;
-        room.images.push_back(direct_image(0, {0.0, 2.5, 0.0}));
+        room.images.push_back(shadow_direct_image(0, {0.0, 2.5, 0.0}));
         EXPECT_EQ(rig.update({room}), 1);
         EXPECT_EQ(rig.update({room}), 0);
         EXPECT_EQ(rig.update({room}, 128), 1);  // another size
@@ -281,7 +281,7 @@ TEST(ShadowMaps, AStaticLayoutDrawsItsMapsOnceAndAMovingPropRedrawsThem) {
     ShadowRig rig(kShadowMovingRoom);
     ASSERT_EQ(rig.scene.object_set.props.size(), 1u);
     lights::RoomLights room;
-    room.images.push_back(direct_image(0, {0.0, 2.5, 0.0}));
+    room.images.push_back(shadow_direct_image(0, {0.0, 2.5, 0.0}));
     rig.place(0.0);
     ASSERT_EQ(rig.instances.size(), 1u);
     EXPECT_EQ(rig.update({room}), 1);
@@ -306,7 +306,7 @@ TEST(ShadowMaps, AFaceLitAtGrazingIncidenceIsNotShadowedByItself) {
         "props": [ { "box": { "min": [-2.5, 1.0, -0.5], "max": [2.5, 1.2, 0.5] } } ] } ] })");
     const glm::dvec3 light(0.0, 1.35, 0.0);
     lights::RoomLights room;
-    room.images.push_back(direct_image(0, light));
+    room.images.push_back(shadow_direct_image(0, light));
     for (const int size : {128, 512}) {
         EXPECT_EQ(rig.update({room}, size), 1);
         std::vector<glm::dvec3> offsets;
@@ -362,7 +362,7 @@ TEST(ShadowMaps, AlphaCutOutsLetLightThrough) {
     ShadowRig rig(l);
     const glm::dvec3 light(0.0, 1.5, 1.0);
     lights::RoomLights room;
-    room.images.push_back(direct_image(0, light));
+    room.images.push_back(shadow_direct_image(0, light));
     EXPECT_EQ(rig.update({room}), 1);
     // Behind each quadrant's centre, on the wall at z = -3.
     const glm::dvec3 centres[4] = {{-0.75, 2.0, -1.5}, {0.75, 2.0, -1.5}, {-0.75, 1.0, -1.5}, {0.75, 1.0, -1.5}};
@@ -387,7 +387,7 @@ TEST(ShadowMaps, ImagesPastTheArraysLayersHaveNoMap) {
     glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &layers);
     const int max_maps = layers / 6;
     lights::RoomLights room;
-    for (int k = 0; k < max_maps + 5; ++k) room.images.push_back(direct_image(0, {0.001 * k, 2.5, 0.0}));
+    for (int k = 0; k < max_maps + 5; ++k) room.images.push_back(shadow_direct_image(0, {0.001 * k, 2.5, 0.0}));
     EXPECT_EQ(rig.update({room}, 16), max_maps);
     EXPECT_EQ(rig.maps.capacity, max_maps);
     EXPECT_EQ(rig.maps.layer[static_cast<size_t>(max_maps - 1)], max_maps - 1);
