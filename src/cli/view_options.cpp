@@ -8,6 +8,8 @@
 #include "base/text.hpp"
 #include "image/png.hpp"
 #include "layout/path_file.hpp"
+#include "lights/light_images.hpp"
+#include "links/portal_links.hpp"
 #include "walk/replay.hpp"
 
 namespace impossible::cli {
@@ -190,7 +192,17 @@ int parse_shadow_size(const std::string& text) {
 
 std::string light_options_warning(const layout::Layout& layout, const std::optional<int>& light_depth,
                                   bool shadow_options) {
-    if (layout.lighting != layout::Lighting::Fixed || (!light_depth && !shadow_options)) return "";
+    if (layout.lighting == layout::Lighting::Lights) {
+        // The light paths' bound (docs/bounded-work.md): both renderers light
+        // at most lights::kMaxLightPaths paths, at a lower depth if need be.
+        const int asked = light_depth.value_or(layout.light_depth);
+        const int most = lights::max_light_depth(layout, links::link_portals(layout));
+        if (asked <= most) return "";
+        return "warning: light depth " + std::to_string(asked) + " gives more than " +
+               std::to_string(lights::kMaxLightPaths) + " light paths in " + one_line(layout.source, 1000) +
+               ": lit at light depth " + std::to_string(most) + "\n";
+    }
+    if (!light_depth && !shadow_options) return "";
     const std::string what = light_depth && shadow_options ? "--light-depth and the shadow options have"
                              : light_depth                 ? "--light-depth has"
                                                            : "the shadow options have";

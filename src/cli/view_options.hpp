@@ -68,7 +68,9 @@ int parse_shadow_size(const std::string& text);
 
 // The warning line (ending in '\n') for --light-depth (`light_depth` set)
 // or the shadow options (`shadow_options`) on a layout whose lighting is
-// "fixed", where they change nothing; "" otherwise.
+// "fixed", where they change nothing; on a lit layout, for a light depth
+// (asked for, or the layout's) that gives more than lights::kMaxLightPaths
+// light paths, which both renderers lower (docs/bounded-work.md); "" otherwise.
 std::string light_options_warning(const layout::Layout& layout, const std::optional<int>& light_depth,
                                   bool shadow_options);
 

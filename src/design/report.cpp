@@ -43,7 +43,7 @@ std::string lights_text(const layout::Layout& layout, const Report& r) {
     std::string out = "lighting: lights, light depth " + std::to_string(layout.light_depth) + "\n";
     if (r.light_paths_depth < layout.light_depth) {
         out += "  light paths: more than " + std::to_string(kMaxReportedLightPaths) +
-               " in all rooms together; counted at light depth " + std::to_string(r.light_paths_depth) +
+               " in all rooms together; frames are lit at light depth " + std::to_string(r.light_paths_depth) +
                ", the deepest within that\n";
     }
     for (std::size_t i = 0; i < r.room_lights.size(); ++i) {

@@ -14,6 +14,7 @@
 #include "design/overlap.hpp"
 #include "design/placement.hpp"
 #include "layout/layout.hpp"
+#include "lights/light_images.hpp"
 
 namespace impossible::design {
 
@@ -44,10 +45,11 @@ struct Report {
     int light_paths_depth = 0;
 };
 
-// validate enumerates at most this many light paths, all rooms together
-// (docs/bounded-work.md): a 2 m cube of six windows has 1.6 million at
-// light depth 8 and more, 5 GB and 26 s to list.
-inline constexpr std::size_t kMaxReportedLightPaths = 100'000;
+// validate counts the light paths frames are lit by: at most this many, all
+// rooms together, as the rasteriser and the tracer (docs/bounded-work.md): a
+// 2 m cube of six windows has 1.6 million at light depth 8 and more, 5 GB
+// and 26 s to list, and is lit at light depth 2 (133 paths).
+inline constexpr std::size_t kMaxReportedLightPaths = lights::kMaxLightPaths;
 
 Report make_report(const layout::Layout& layout);
 

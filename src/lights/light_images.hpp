@@ -108,6 +108,20 @@ inline std::size_t light_path_count(const RoomLights& room) { return room.images
 int light_depth_within(const layout::Layout& layout, const links::PortalLinks& links, int light_depth,
                        std::size_t max_images);
 
+// The most light paths a frame is lit by, all rooms together
+// (docs/bounded-work.md): a layout whose light depth would give more is
+// lit at the largest light depth that gives at most this many, by the
+// rasteriser and the tracer alike, and the commands warn. A 2 m cube of six
+// paired windows has 133 paths at light depth 2 and over 1,300 at 3.
+inline constexpr std::size_t kMaxLightPaths = 1024;
+
+// The deepest light depth within kMaxLightPaths (kMaxLightDepth when every
+// depth is): a frame asking for depth d is lit at min(d, this). Paths only
+// grow with the depth, so one count serves every request.
+inline int max_light_depth(const layout::Layout& layout, const links::PortalLinks& links) {
+    return light_depth_within(layout, links, layout::kMaxLightDepth, kMaxLightPaths);
+}
+
 // The exact aperture test of the lit shader, in double precision (its
 // reference): the segment from p (in C's coordinates) to the image's
 // position crosses every aperture's plane from its front to its back,

@@ -69,7 +69,7 @@ Result<void> ensure_variants(RendererData& r, StereoMode mode, bool objects) {
 // frame asks for another depth.
 void ensure_lights(RendererData& r, const FrameDesc& frame) {
     if (!r.lit) return;
-    const int depth = frame.light_depth.value_or(r.scene_light_depth);
+    const int depth = std::min(frame.light_depth.value_or(r.scene_light_depth), r.max_light_depth);
     if (r.lights.depth == depth) return;
     if (depth == r.scene_light_depth) {
         r.lights = upload_light_images(r.scene_room_lights, *r.lit_layout, r.cell_origins, depth);
@@ -285,6 +285,7 @@ Result<Renderer> Renderer::create(gl::StateCache& state, const scene::Scene& sce
     r.lit = scene.lighting == layout::Lighting::Lights && scene.lit_layout != nullptr;
     if (r.lit) {
         r.scene_light_depth = scene.light_depth;
+        r.max_light_depth = scene.max_light_depth;
         r.scene_room_lights = scene.room_lights;
         r.lit_layout = scene.lit_layout;
     }

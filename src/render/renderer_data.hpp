@@ -95,6 +95,7 @@ struct RendererData {
     // depth last drawn on the GPU (made before the frame that needs them).
     bool lit = false;
     int scene_light_depth = 0;
+    int max_light_depth = layout::kMaxLightDepth;  // Scene::max_light_depth
     std::vector<lights::RoomLights> scene_room_lights;
     std::shared_ptr<const layout::Layout> lit_layout;
     LightBuffers lights;

@@ -2,6 +2,7 @@
 // (each room's faces then its static props, one contiguous index range per
 // cell), then every portal's box (front range, inner range), then the
 // dynamic objects' meshes (scene/object_meshes.hpp).
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -128,11 +129,13 @@ Scene build_scene(const layout::Layout& layout) {
     }
     append_object_meshes(scene, out, layout);
     if (layout.lighting == layout::Lighting::Lights) {
-        // The light images at the layout's depth; the layout is kept for a
-        // renderer asked for another depth (View::light_depth).
+        // The light images at the layout's depth, lowered to stay within
+        // lights::kMaxLightPaths as the tracer lowers it; the layout is kept
+        // for a renderer asked for another depth (View::light_depth).
         scene.lighting = layout::Lighting::Lights;
-        scene.light_depth = layout.light_depth;
-        scene.room_lights = lights::light_images(layout, scene.links, layout.light_depth);
+        scene.max_light_depth = lights::max_light_depth(layout, scene.links);
+        scene.light_depth = std::min(layout.light_depth, scene.max_light_depth);
+        scene.room_lights = lights::light_images(layout, scene.links, scene.light_depth);
         scene.lit_layout = std::make_shared<const layout::Layout>(layout);
     }
     return scene;

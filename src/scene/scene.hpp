@@ -151,7 +151,10 @@ struct Scene {
     // the layout, for a renderer asked for another depth (View::light_depth).
     // "fixed": Lighting::Fixed, nothing else.
     layout::Lighting lighting = layout::Lighting::Fixed;
-    int light_depth = layout::kDefaultLightDepth;
+    int light_depth = layout::kDefaultLightDepth;  // the layout's, at most max_light_depth
+    // The deepest light depth within lights::kMaxLightPaths: a frame asking
+    // for more (View::light_depth) is lit at this depth.
+    int max_light_depth = layout::kMaxLightDepth;
     std::vector<lights::RoomLights> room_lights;
     std::shared_ptr<const layout::Layout> lit_layout;
 };

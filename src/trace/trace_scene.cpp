@@ -1,5 +1,6 @@
 #include "trace/trace_scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -7,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "lights/light_images.hpp"
 #include "links/portal_links.hpp"
 #include "trace/bvh.hpp"
 
@@ -225,8 +227,10 @@ Result<Scene> prepare_scene(const layout::Layout& layout) {
     if (const std::optional<Error> error = check_portals(layout)) return *error;
     Scene scene;
     scene.lit = layout.lighting == layout::Lighting::Lights;
-    scene.light_depth = layout.light_depth;
-    scene.objects = walk::build_object_set(layout, links::link_portals(layout));
+    const links::PortalLinks links = links::link_portals(layout);
+    scene.max_light_depth = scene.lit ? lights::max_light_depth(layout, links) : layout::kMaxLightDepth;
+    scene.light_depth = std::min(layout.light_depth, scene.max_light_depth);
+    scene.objects = walk::build_object_set(layout, links);
     for (std::size_t r = 0; r < layout.rooms.size(); ++r) {
         const layout::Room& room = layout.rooms[r];
         SceneRoom sr = scene_room(room);

@@ -213,9 +213,12 @@ struct Scene {
     // "lighting": "lights": surfaces are lit by their room's ambient and the
     // light paths of light_paths.hpp, at most `light_depth` portals long
     // (the layout's; RayLimits::light_depth may replace it). Otherwise the
-    // fixed model of shading/shading.hpp.
+    // fixed model of shading/shading.hpp. Either depth is lowered to
+    // max_light_depth, the deepest within lights::kMaxLightPaths paths, as
+    // the rasteriser lowers it.
     bool lit = false;
     int light_depth = layout::kDefaultLightDepth;
+    int max_light_depth = layout::kMaxLightDepth;
 };
 
 // The dynamic objects of a view: its props at view.time and its hands

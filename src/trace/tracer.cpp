@@ -2,6 +2,8 @@
 // (layout-format.md) step by step, through portals, mirrors and windows.
 #include "trace/tracer.hpp"
 
+#include <algorithm>
+
 #include <glm/geometric.hpp>
 
 #include "shading/lighting.hpp"
@@ -223,7 +225,8 @@ TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, in
     ray.room = room;
     Tree tree{limits.max_depth, limits.max_passes};
     tree.objects = objects.placed.empty() ? nullptr : &objects;
-    tree.light_depth = limits.light_depth >= 0 ? limits.light_depth : scene.light_depth;
+    tree.light_depth =
+        limits.light_depth >= 0 ? std::min(limits.light_depth, scene.max_light_depth) : scene.light_depth;
     hit.color = follow(scene, ray, tree, &hit);
     hit.passes = tree.passes;
     hit.budget_fills = tree.budget_fills;

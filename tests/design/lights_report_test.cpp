@@ -95,8 +95,8 @@ TEST(LightsReport, TooManyLightPathsAreCountedAtALowerDepth) {
     EXPECT_LE(std::size_t(r.room_light_paths[0]), design::kMaxReportedLightPaths);
     EXPECT_GT(r.room_light_paths[0], 1);
     const std::string text = design::report_text(l, r);
-    EXPECT_NE(text.find("lighting: lights, light depth 16\n  light paths: more than 100000 in all rooms together; "
-                        "counted at light depth " +
+    EXPECT_NE(text.find("lighting: lights, light depth 16\n  light paths: more than 1024 in all rooms together; "
+                        "frames are lit at light depth " +
                         std::to_string(r.light_paths_depth) + ", the deepest within that\n  cube: 1 light, "),
               std::string::npos)
         << text;

@@ -39,10 +39,9 @@ TEST_F(Hostile, ABadLightIsOneErrorAtItsField) {
     EXPECT_FALSE(fs::exists(dir_ / "x.png"));
 }
 
-TEST_F(Hostile, ValidateBoundsTheLightPathsItCounts) {
-    // A 2 m cube of six windows paired face to face (reflectance 0.5) at
-    // light depth 16: 1.6 million light paths, 5 GB and 26 s to list them
-    // all; validate counts at most 100,000.
+// A 2 m cube of six windows paired face to face (reflectance 0.5), lit by
+// one lamp at light depth 16: 1.6 million light paths.
+std::string lit_window_cube() {
     std::string portals;
     const char* const specs[][4] = {{"x", "[-1, 1, 0]", "[1, 0, 0]", "[0, 1, 0]"},
                                     {"y", "[0, 0, 0]", "[0, 1, 0]", "[0, 0, 1]"},
@@ -60,18 +59,41 @@ TEST_F(Hostile, ValidateBoundsTheLightPathsItCounts) {
         portals += (i ? ",\n" : "") + window("a" + n, specs[i][1], specs[i][2], "b" + n) + ",\n" +
                    window("b" + n, far[i][0], far[i][1], "a" + n);
     }
-    spit(dir_ / "cube.json",
-         "{\"format\": \"impossible-layout\", \"version\": 1, \"lighting\": \"lights\", \"light_depth\": 16,\n"
-         "\"start\": {\"room\": \"cube\", \"position\": [0, 1, 0]},\n"
-         "\"rooms\": [{\"id\": \"cube\", \"min\": [-1, 0, -1], \"max\": [1, 2, 1], \"lights\": [{\"position\": "
-         "[0.3, 1.2, 0.1]}]}],\n\"portals\": [" +
-             portals + "]}\n");
+    return "{\"format\": \"impossible-layout\", \"version\": 1, \"lighting\": \"lights\", \"light_depth\": 16,\n"
+           "\"start\": {\"room\": \"cube\", \"position\": [0, 1, 0]},\n"
+           "\"rooms\": [{\"id\": \"cube\", \"min\": [-1, 0, -1], \"max\": [1, 2, 1], \"lights\": [{\"position\": "
+           "[0.3, 1.2, 0.1]}]}],\n\"portals\": [" +
+           portals + "]}\n";
+}
+
+TEST_F(Hostile, ValidateBoundsTheLightPathsItCounts) {
+    // A 2 m cube of six windows paired face to face (reflectance 0.5) at
+    // light depth 16: 1.6 million light paths, 5 GB and 26 s to list them
+    // all; validate counts at most 1,024, the paths frames are lit by.
+    spit(dir_ / "cube.json", lit_window_cube());
     const Outcome r = run("ulimit -v 2000000; $BIN validate cube.json", 10);
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_LT(r.seconds, 5.0);
-    EXPECT_NE(r.out.find("  light paths: more than 100000 in all rooms together; counted at light depth "),
+    EXPECT_NE(r.out.find("  light paths: more than 1024 in all rooms together; frames are lit at light depth "),
               std::string::npos)
         << r.out;
+}
+
+TEST_F(Hostile, FramesAreLitByBoundedLightPaths) {
+    // The same cube rendered and traced: both light at light depth 2 (133
+    // paths, the deepest within 1,024) and say so; before, render listed all
+    // 1.6 million paths (minutes, gigabytes) and trace followed them per hit.
+    spit(dir_ / "cube.json", lit_window_cube());
+    const std::string warning =
+        "warning: light depth 16 gives more than 1024 light paths in cube.json: lit at light depth 2\n";
+    for (const char* command : {"render", "trace"}) {
+        const Outcome r = run(std::string("ulimit -v 4000000; $BIN ") + command +
+                                  " cube.json --size 24x16 --max-depth 2 --out " + command + ".png",
+                              60);
+        EXPECT_EQ(r.status, 0) << command << ": " << r.err;
+        EXPECT_EQ(r.err, warning) << command;
+        EXPECT_LT(r.seconds, 30.0) << command;
+    }
 }
 
 }  // namespace
