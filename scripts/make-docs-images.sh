@@ -43,6 +43,14 @@ render hands_door-behind hands_door.json --room hall --pose 0.3,1.4,-0.3,145,-15
   --hands=-0.18,1.25,0.0556,0,0,0,0.18,1.25,0.0556,0,0,0
 render scanner_lab scanner_lab.json
 render scanner_lab-side scanner_lab.json --room lab --pose=-2.1,1.5,0.6,-50,-12,0
+# Light through portals (issue 27): the lamp hall's pool of light on the
+# annex floor, cut by the door frame; the mirror's second lamp; green light
+# through a tinted window; spots down a corridor.
+render lamp_hall lamp_hall.json --room hall --pose=-1.7,1.6,0.4,-80,-15,0
+render lamp_hall-annex lamp_hall.json --room annex --pose 1.9,2.0,0.0,90,-35,0
+render mirror_lamp mirror_lamp.json
+render tinted_window tinted_window.json --room greenhouse --pose 5.2,1.7,0.4,80,-20,0
+render spot_corridor spot_corridor.json --room corridor --pose 0,1.6,1.5,0,-12,0
 
 # The preview window (HUD, minimap, boundary grid) at the end of a scripted walk
 # into the tunnel, on a private X server. Only the HUD's frame time varies
