@@ -147,13 +147,15 @@ struct Measurer {
     void compare_with_tracer() {
         std::vector<trace::Scene> scenes;
         for (const layout::Layout& l : plan.layouts) scenes.push_back(value_or_throw(trace::prepare_scene(l)));
-        std::map<std::tuple<int, size_t, int, int>, image::Image> traced;
+        // One reference per layout variant, pose, size and light depth.
+        std::map<std::tuple<int, size_t, int, int, int>, image::Image> traced;
         const double n = static_cast<double>(poses.size());
         for (size_t p = 0; p < poses.size(); ++p)
             for (ConfigResult& r : results) {
                 if (!r.error.empty()) continue;
                 const render::FrameDesc f = frame_at(r.config, poses[p]);
-                const auto key = std::make_tuple(r.config.layout_variant, p, f.eye_width, f.eye_height);
+                const auto key =
+                    std::make_tuple(r.config.layout_variant, p, f.eye_width, f.eye_height, f.light_depth.value_or(-1));
                 if (!traced.count(key)) {
                     trace::TraceDesc t = trace_desc_for(f);
                     t.max_depth = options.reference_depth;
