@@ -133,9 +133,10 @@ std::array<api::Pose, 2> hands_of(py::handle value, double limit = 1e7) {
 }
 
 // One frame's view.
-api::View view_of(const ViewBase& base, py::handle pose, py::handle room, py::handle hands, double time,
-                  int max_depth) {
+api::View view_of(const ViewBase& base, py::handle pose, py::handle room, py::handle hands, double time, int max_depth,
+                  py::handle light_depth) {
     api::View v;
+    if (!light_depth.is_none()) v.light_depth = light_depth.cast<int>();
     if (!hands.is_none()) v.hands = hands_of(hands);
     if (!pose.is_none()) v.pose = pose_of(pose, 1e7, "pose");
     if (!room.is_none()) v.room = room.cast<std::string>();
@@ -166,8 +167,9 @@ public:
           base_(base),
           thread_(std::this_thread::get_id()) {}
 
-    py::dict render(py::handle pose, py::handle room, py::handle hands, double time, int max_depth) {
-        const api::View view = view_of(base_, pose, room, hands, time, max_depth);
+    py::dict render(py::handle pose, py::handle room, py::handle hands, double time, int max_depth,
+                    py::handle light_depth) {
+        const api::View view = view_of(base_, pose, room, hands, time, max_depth, light_depth);
         if (std::this_thread::get_id() != thread_)
             raise(PyExc_RuntimeError, "a Renderer draws only on the thread that made it");
         api::Expected<api::Frame> frame = [&] {
@@ -177,8 +179,9 @@ public:
         return frame_dict(value_or_raise(std::move(frame)), true);
     }
 
-    py::dict trace(py::handle pose, py::handle room, py::handle hands, double time, int max_depth, int threads) {
-        return trace_frame(layout_, view_of(base_, pose, room, hands, time, max_depth), threads);
+    py::dict trace(py::handle pose, py::handle room, py::handle hands, double time, int max_depth, int threads,
+                   py::handle light_depth) {
+        return trace_frame(layout_, view_of(base_, pose, room, hands, time, max_depth, light_depth), threads);
     }
 
     const api::Layout& layout() const { return layout_; }
@@ -346,21 +349,24 @@ void bind_renderer(py::module_& m) {
              py::arg("layout"), py::arg("size") = std::pair<int, int>(1280, 720), py::arg("samples") = 1,
              py::arg("backend") = "egl", py::arg("ipd") = 0.064, py::arg("fov") = 90.0)
         .def("render", &PyRenderer::render, py::arg("pose") = py::none(), py::arg("room") = py::none(),
-             py::arg("hands") = py::none(), py::arg("time") = 0.0, py::arg("max_depth") = 8)
+             py::arg("hands") = py::none(), py::arg("time") = 0.0, py::arg("max_depth") = 8,
+             py::arg("light_depth") = py::none())
         .def("trace", &PyRenderer::trace, py::arg("pose") = py::none(), py::arg("room") = py::none(),
-             py::arg("hands") = py::none(), py::arg("time") = 0.0, py::arg("max_depth") = 8, py::arg("threads") = 0)
+             py::arg("hands") = py::none(), py::arg("time") = 0.0, py::arg("max_depth") = 8, py::arg("threads") = 0,
+             py::arg("light_depth") = py::none())
         .def_property_readonly("layout", &PyRenderer::layout)
         .def_property_readonly("size", [](const PyRenderer& r) { return r.base().size; })
         .def_property_readonly("gl_renderer", &PyRenderer::gl_renderer);
     m.def(
         "trace",
         [](const api::Layout& layout, std::pair<int, int> size, int samples, py::handle pose, py::handle room,
-           py::handle hands, double time, int max_depth, int threads) {
-            return trace_frame(layout, view_of({size, samples}, pose, room, hands, time, max_depth), threads);
+           py::handle hands, double time, int max_depth, int threads, py::handle light_depth) {
+            return trace_frame(layout, view_of({size, samples}, pose, room, hands, time, max_depth, light_depth),
+                               threads);
         },
         py::arg("layout"), py::arg("size") = std::pair<int, int>(1280, 720), py::arg("samples") = 1,
         py::arg("pose") = py::none(), py::arg("room") = py::none(), py::arg("hands") = py::none(),
-        py::arg("time") = 0.0, py::arg("max_depth") = 8, py::arg("threads") = 0,
+        py::arg("time") = 0.0, py::arg("max_depth") = 8, py::arg("threads") = 0, py::arg("light_depth") = py::none(),
         "The reference ray tracer (`impossible trace`); no GL context needed");
 }
 

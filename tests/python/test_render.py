@@ -71,6 +71,21 @@ def test_pose_room_depth_samples_time(tmp_path):
     assert_frame(renderer.trace(pose=[0.2, 1.5, 0.5, 30, -10, 5], room="corridor", max_depth=3), color, ids)
 
 
+@pytest.mark.parametrize("depth", [0, 1])
+def test_light_depth_as_the_cli(tmp_path, depth):
+    """light_depth= lights what --light-depth lights (rasteriser and tracer)."""
+    path = SOURCE_DIR / "layouts" / "lamp_hall.json"
+    options = ["--room", "annex", "--pose", "1.9,2.0,0.0,90,-35,0", "--light-depth", str(depth)]
+    color, ids, _ = cli_images(tmp_path, "render", path, *options)
+    renderer = impossible.Renderer(impossible.load(path), size=SIZE)
+    pose = (1.9, 2.0, 0.0, 90, -35, 0)
+    assert_frame(renderer.render(pose=pose, room="annex", light_depth=depth), color, ids)
+    color, ids, _ = cli_images(tmp_path, "trace", path, *options)
+    assert_frame(renderer.trace(pose=pose, room="annex", light_depth=depth), color, ids)
+    assert_frame(impossible.trace(impossible.load(path), size=SIZE, pose=pose, room="annex", light_depth=depth),
+                 color, ids)
+
+
 def test_hands_and_time_as_the_cli(tmp_path):
     """hands= and time= draw what --hands and --time draw (rasteriser and tracer)."""
     path = SOURCE_DIR / "layouts" / "rotated.json"
