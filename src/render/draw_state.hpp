@@ -33,7 +33,8 @@ struct DrawContext {
     const SceneProgram* material_program;  // the same with materials; null when no batch has them
     const Target& target;                  // what is drawn into
     const FrameTargets& targets;           // the portal textures
-    math::dmat4 projection{1.0};
+    // Each eye's projection (the same unless the frame gives per-eye frusta).
+    std::array<math::dmat4, 2> projections{math::dmat4{1.0}, math::dmat4{1.0}};
     int eye = -1;                       // two-pass stereo: the eye being drawn; -1: both
     FrameProfiler* profiler = nullptr;  // null unless FrameDesc::profile
     FrameScratch& scratch;              // the only thing drawing writes, besides GL

@@ -119,7 +119,7 @@ LevelView moved_view(const DrawContext& ctx, const LevelView& view, const math::
         ev.active = view.eyes[e].active && !rects[e].empty();
         ev.eye = math::transform_eye(m, view.eyes[e].eye);
         const math::dmat4 view_matrix = math::view_matrix(ev.eye);
-        ev.view_proj = ctx.projection * view_matrix;
+        ev.view_proj = ctx.projections[e] * view_matrix;
         ev.rect = rects[e];
         ev.behind_exit = math::signed_distance(b.rect, ev.eye.position) < 0.0;
         if (!ev.behind_exit) continue;
@@ -127,8 +127,8 @@ LevelView moved_view(const DrawContext& ctx, const LevelView& view, const math::
         if (ctx.frame.clip == ClipMode::Oblique) {
             const math::dvec4 plane_eye = math::transform_plane(view_matrix, plane);
             ev.view_proj =
-                (ctx.frame.depth == DepthMode::ReversedZ ? math::oblique_reversed_z(ctx.projection, plane_eye)
-                                                         : math::oblique_standard(ctx.projection, plane_eye)) *
+                (ctx.frame.depth == DepthMode::ReversedZ ? math::oblique_reversed_z(ctx.projections[e], plane_eye)
+                                                         : math::oblique_standard(ctx.projections[e], plane_eye)) *
                 view_matrix;
         } else
             ev.clip_plane = plane;

@@ -57,7 +57,7 @@ void draw_portal_via_texture(const DrawContext& ctx, const LevelView& view, int 
                              .material_program = ctx.material_program,
                              .target = texture,
                              .targets = ctx.targets,
-                             .projection = ctx.projection,
+                             .projections = ctx.projections,
                              .eye = ctx.eye,
                              .profiler = ctx.profiler,
                              .scratch = ctx.scratch};

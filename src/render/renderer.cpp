@@ -113,32 +113,34 @@ Result<void> prepare_frame(RendererData& r, FrameTargets& targets, const FrameDe
 }
 
 // Per-eye views of the head's room at level 0, restricted to `eye_mask`.
-LevelView root_view(const FrameDesc& frame, const math::dmat4& projection, unsigned eye_mask) {
+LevelView root_view(const FrameDesc& frame, const std::array<math::dmat4, 2>& projections, unsigned eye_mask) {
     LevelView view;
     view.cell = frame.room;
     const std::array<math::Eye, 2> eyes = math::eyes_of(frame.head, frame.ipd);
     for (int e = 0; e < 2; ++e) {
         view.eyes[e].active = (eye_mask >> e) & 1u;
         view.eyes[e].eye = eyes[e];
-        view.eyes[e].view_proj = projection * math::view_matrix(eyes[e]);
+        view.eyes[e].view_proj = projections[e] * math::view_matrix(eyes[e]);
     }
     return view;
 }
 
-math::dmat4 projection_of(const FrameDesc& frame) {
+// Each eye's projection (both the same: one symmetric frustum).
+std::array<math::dmat4, 2> projections_of(const FrameDesc& frame) {
     math::Frustum frustum;
     frustum.fov_y_deg = frame.fov_y_deg;
     frustum.aspect = static_cast<double>(frame.eye_width) / frame.eye_height;
     frustum.near = near_distance(frame);
-    return frame.depth == DepthMode::ReversedZ ? math::perspective_reversed_z(frustum)
-                                               : math::perspective_standard(frustum, frame.far);
+    const math::dmat4 p = frame.depth == DepthMode::ReversedZ ? math::perspective_reversed_z(frustum)
+                                                              : math::perspective_standard(frustum, frame.far);
+    return {p, p};
 }
 
 // Both eyes' views of the frame, as the stereo mode draws them.
 void draw_stereo(const DrawContext& ctx) {
     const FrameDesc& frame = ctx.frame;
     if (frame.stereo != StereoMode::TwoPass) {
-        draw_level(ctx, root_view(frame, ctx.projection, 3u));
+        draw_level(ctx, root_view(frame, ctx.projections, 3u));
         return;
     }
     const std::optional<SceneProgram>* variants = ctx.renderer.programs.variants[mode_index(StereoMode::TwoPass)];
@@ -150,7 +152,7 @@ void draw_stereo(const DrawContext& ctx) {
             if (variants[flags]) glProgramUniform1i(variants[flags]->program.get(), variants[flags]->single_eye, e);
         DrawContext one_eye = ctx;
         one_eye.eye = e;
-        draw_level(one_eye, root_view(frame, ctx.projection, 1u << e));
+        draw_level(one_eye, root_view(frame, ctx.projections, 1u << e));
     }
 }
 
@@ -185,7 +187,7 @@ Result<void> draw_frame(RendererParts& parts, const FrameDesc& frame, FrameStats
                           .material_program = r.has_materials ? &*r.programs.material[mode] : nullptr,
                           .target = target,
                           .targets = parts.targets,
-                          .projection = projection_of(frame),
+                          .projections = projections_of(frame),
                           .eye = -1,
                           .profiler = frame.profile ? &profiler : nullptr,
                           .scratch = scratch};
