@@ -66,30 +66,12 @@ std::optional<glm::dvec3> read_ambient(Checker& check, const Path& at, const jso
     return out;
 }
 
-// A spot's `direction`: non-zero, unit within kUnitTolerance, normalised
-// (as a portal's normal).
-std::optional<glm::dvec3> read_spot_direction(Checker& check, const Path& at, const json& value) {
-    const auto v = check.read_vec3(at, value, NumberKind::Direction);
-    if (!v) return std::nullopt;
-    const double length = glm::length(*v);
-    if (!(length > 0.0)) {
-        check.error(at, "must not be the zero vector");
-        return std::nullopt;
-    }
-    if (std::abs(length - 1.0) > limits::kUnitTolerance) {
-        check.error(at, "must be a unit vector (its length is " + format_number(length) + "; allowed is 1 ± " +
-                            format_number(limits::kUnitTolerance) + ")");
-        return std::nullopt;
-    }
-    return *v / length;
-}
-
 std::optional<Spot> read_spot(Checker& check, const Path& at, const json& value) {
     if (!check.expect_object(at, value)) return std::nullopt;
     bool ok = check.check_fields(at, value, {"direction", "inner_deg", "outer_deg"}, {"direction"});
     Spot spot;
     if (const json* v = field(value, "direction")) {
-        const auto d = read_spot_direction(check, at / "direction", *v);
+        const auto d = read_normal(check, at / "direction", *v);
         ok = ok && d.has_value();
         if (d) spot.direction = *d;
     }

@@ -36,31 +36,6 @@ void warn_if_shallow(Checker& check, const Path& at, double depth) {
     }
 }
 
-// A non-zero vector, read for normalisation.
-std::optional<glm::dvec3> read_direction(Checker& check, const Path& at, const json& value) {
-    const auto v = check.read_vec3(at, value, NumberKind::Direction);
-    if (!v) return std::nullopt;
-    const double length = glm::length(*v);
-    if (!(length > 0.0)) {
-        check.error(at, "must not be the zero vector");
-        return std::nullopt;
-    }
-    return v;
-}
-
-// The unit normal, or nothing (reported).
-std::optional<glm::dvec3> read_normal(Checker& check, const Path& at, const json& value) {
-    std::optional<glm::dvec3> n = read_direction(check, at, value);
-    if (!n) return std::nullopt;
-    const double length = glm::length(*n);
-    if (std::abs(length - 1.0) > limits::kUnitTolerance) {
-        check.error(at, "must be a unit vector (its length is " + format_number(length) + "; allowed is 1 ± " +
-                            format_number(limits::kUnitTolerance) + ")");
-        return std::nullopt;
-    }
-    return *n / length;
-}
-
 // `up` (default [0, 1, 0]) made orthogonal to the unit normal `n`; false when
 // it is bad or within 1° of the normal's line (reported). Without a good
 // normal, only `up` itself is checked.
@@ -326,6 +301,31 @@ void link_target(Checker& check, std::size_t i, std::vector<PortalDraft>& portal
 }
 
 }  // namespace
+
+// A non-zero vector, read for normalisation.
+std::optional<glm::dvec3> read_direction(Checker& check, const Path& at, const json& value) {
+    const auto v = check.read_vec3(at, value, NumberKind::Direction);
+    if (!v) return std::nullopt;
+    const double length = glm::length(*v);
+    if (!(length > 0.0)) {
+        check.error(at, "must not be the zero vector");
+        return std::nullopt;
+    }
+    return v;
+}
+
+// readers.hpp: a unit vector (a portal's normal, a spot's direction).
+std::optional<glm::dvec3> read_normal(Checker& check, const Path& at, const json& value) {
+    std::optional<glm::dvec3> n = read_direction(check, at, value);
+    if (!n) return std::nullopt;
+    const double length = glm::length(*n);
+    if (std::abs(length - 1.0) > limits::kUnitTolerance) {
+        check.error(at, "must be a unit vector (its length is " + format_number(length) + "; allowed is 1 ± " +
+                            format_number(limits::kUnitTolerance) + ")");
+        return std::nullopt;
+    }
+    return *n / length;
+}
 
 std::vector<PortalDraft> read_portals(Checker& check, const Path& at, const json& portals) {
     std::vector<PortalDraft> drafts;

@@ -65,6 +65,13 @@ std::optional<HandShape> read_hands(Checker& check, const Path& at, const json& 
 // and light_depth are errors (read_lights.cpp).
 void read_lighting(Checker& check, const json& root, std::vector<RoomDraft>& rooms, Layout& layout);
 
+// A non-zero vector (reported otherwise), not normalised.
+std::optional<glm::dvec3> read_direction(Checker& check, const Path& at, const json& value);
+
+// A unit vector within limits::kUnitTolerance, normalised, or nothing
+// (reported): a portal's normal, a spot's direction.
+std::optional<glm::dvec3> read_normal(Checker& check, const Path& at, const json& value);
+
 // Farther than 1e-9 · (1 + |p|) from every face of the room's box.
 bool strictly_inside(const Room& room, const glm::dvec3& p);
 
