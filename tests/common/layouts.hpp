@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 #include "layout/layout.hpp"
@@ -19,6 +20,29 @@ inline layout::Room make_room(const std::string& id, glm::dvec3 min, glm::dvec3 
     room.max = max;
     for (int f = 0; f < layout::kFaceCount; ++f) room.face_color[f] = glm::dvec3(0.1 + 0.1 * f, tint.y, tint.z);
     return room;
+}
+
+// A grey room (every face 0.8) appended to `l`; returns its index.
+inline int add_room(layout::Layout& l, const std::string& id, glm::dvec3 min, glm::dvec3 max) {
+    layout::Room r;
+    r.id = id;
+    r.min = min;
+    r.max = max;
+    r.face_color.fill(glm::dvec3(0.8));
+    l.rooms.push_back(r);
+    return static_cast<int>(l.rooms.size()) - 1;
+}
+
+// A portal rectangle with `up` made orthogonal to the (normalised) normal.
+inline math::PortalRect make_rect(glm::dvec3 center, glm::dvec3 normal, double width = 1.0, double height = 2.0,
+                                  glm::dvec3 up = {0, 1, 0}) {
+    math::PortalRect p;
+    p.center = center;
+    p.normal = glm::normalize(normal);
+    p.up = glm::normalize(up - glm::dot(up, p.normal) * p.normal);
+    p.width = width;
+    p.height = height;
+    return p;
 }
 
 // A portal of `room` (normal and up unit and orthogonal), target unset.

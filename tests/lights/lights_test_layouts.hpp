@@ -11,32 +11,15 @@
 
 #include <glm/geometric.hpp>
 
+#include "common/layouts.hpp"
 #include "layout/layout.hpp"
 #include "lights/light_images.hpp"
 #include "links/portal_links.hpp"
 
 namespace impossible::lights::testing {
 
-inline int add_room(layout::Layout& l, const std::string& id, glm::dvec3 min, glm::dvec3 max) {
-    layout::Room r;
-    r.id = id;
-    r.min = min;
-    r.max = max;
-    r.face_color.fill(glm::dvec3(0.8));
-    l.rooms.push_back(r);
-    return static_cast<int>(l.rooms.size()) - 1;
-}
-
-inline math::PortalRect make_rect(glm::dvec3 center, glm::dvec3 normal, double width = 1.0, double height = 2.0,
-                                  glm::dvec3 up = {0, 1, 0}) {
-    math::PortalRect p;
-    p.center = center;
-    p.normal = glm::normalize(normal);
-    p.up = glm::normalize(up - glm::dot(up, p.normal) * p.normal);
-    p.width = width;
-    p.height = height;
-    return p;
-}
+using test::add_room;
+using test::make_rect;
 
 inline int add_portal(layout::Layout& l, const std::string& id, int room, const math::PortalRect& rect,
                       layout::PortalKind kind = layout::PortalKind::Door, int hole_face = -1) {

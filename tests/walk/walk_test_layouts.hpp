@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "common/layouts.hpp"
 #include "layout/layout.hpp"
 #include "math/pose.hpp"
 
@@ -16,26 +17,8 @@ inline math::HeadPose at(glm::dvec3 p, double yaw = 0.0) { return math::HeadPose
 // No portals crossed.
 inline std::vector<int> none() { return {}; }
 
-inline int add_room(layout::Layout& l, const std::string& id, glm::dvec3 min, glm::dvec3 max) {
-    layout::Room r;
-    r.id = id;
-    r.min = min;
-    r.max = max;
-    r.face_color.fill(glm::dvec3(0.8));
-    l.rooms.push_back(r);
-    return static_cast<int>(l.rooms.size()) - 1;
-}
-
-inline math::PortalRect make_rect(glm::dvec3 center, glm::dvec3 normal, double width = 1.0, double height = 2.0,
-                                  glm::dvec3 up = {0, 1, 0}) {
-    math::PortalRect p;
-    p.center = center;
-    p.normal = glm::normalize(normal);
-    p.up = glm::normalize(up - glm::dot(up, p.normal) * p.normal);
-    p.width = width;
-    p.height = height;
-    return p;
-}
+using test::add_room;
+using test::make_rect;
 
 // Adds portals a (in room ra) and b (in room rb), linked to each other;
 // returns the index of a (b is the next one).
