@@ -1,10 +1,11 @@
-// Shared by the GL tests of crossing objects and volume portals: one context
-// and renderer for many frames of a layout, compared with the tracer.
+// Shared by the GL tests of crossing objects, volume portals and lights: one
+// context and renderer for many frames of a layout, compared with the tracer.
 #pragma once
 
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "cli/view_options.hpp"
 #include "gl_fixture.hpp"
@@ -19,7 +20,8 @@ struct CrossingRig {
     gl::Context context;
     std::optional<render::Renderer> renderer;
 
-    explicit CrossingRig(const char* text) : layout(layout_from_text(text)) {
+    explicit CrossingRig(const char* text) : CrossingRig(layout_from_text(text)) {}
+    explicit CrossingRig(layout::Layout l) : layout(std::move(l)) {
         Result<gl::Context> made = gl::create_context(gl::Backend::Egl);
         EXPECT_TRUE(made.has_value()) << made.error();
         context = std::move(*made);

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "cli/view_options.hpp"
+#include "crossing_rig.hpp"
 #include "gl_fixture.hpp"
 #include "image/compare.hpp"
 #include "lights/light_images.hpp"
@@ -128,27 +129,7 @@ image::Image lit_cpu_frame(const layout::Layout& lit, const render::FrameDesc& f
     return out;
 }
 
-struct LightingRig {
-    layout::Layout layout;
-    gl::Context context;
-    std::optional<render::Renderer> renderer;
-
-    explicit LightingRig(layout::Layout l) : layout(std::move(l)) {
-        Result<gl::Context> made = gl::create_context(gl::Backend::Egl);
-        EXPECT_TRUE(made.has_value()) << made.error();
-        context = std::move(*made);
-        Result<render::Renderer> r = render::Renderer::create(context.state(), scene::build_scene(layout));
-        EXPECT_TRUE(r.has_value()) << r.error();
-        if (r) renderer.emplace(std::move(*r));
-    }
-    image::Image render(const render::FrameDesc& f, render::FrameStats* stats = nullptr) {
-        Result<render::RenderedFrame> out = renderer->render(f);
-        EXPECT_TRUE(out.has_value()) << out.error();
-        if (!out) return {};
-        if (stats) *stats = out->stats;
-        return out->image;
-    }
-};
+using LightingRig = testing::CrossingRig;
 
 render::FrameDesc lit_frame(const layout::Layout& l, const char* room, math::dvec3 position, double yaw, double pitch) {
     render::FrameDesc f;
