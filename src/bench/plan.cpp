@@ -105,13 +105,14 @@ void add_techniques(PlanBuilder& b) {
 
 // One item of --sweep boxes: "N", or "N/all" (the same boxes with per-object
 // culling off), or "N/separate" (one draw per run of visible props instead of
-// a multi-draw), to compare in one run.
+// a multi-draw), or "N/all-faces" (every face of a visible box, back faces
+// too: FrameDesc::cull_box_faces off), to compare in one run.
 void add_boxes(PlanBuilder& b, const std::string& name, const std::string& item) {
     const auto suffixed = [&](const std::string& suffix) {
         return item.size() > suffix.size() && item.compare(item.size() - suffix.size(), suffix.size(), suffix) == 0;
     };
-    const bool all = suffixed("/all"), separate = suffixed("/separate");
-    const std::string count = all || separate ? item.substr(0, item.find('/')) : item;
+    const bool all = suffixed("/all"), separate = suffixed("/separate"), all_faces = suffixed("/all-faces");
+    const std::string count = all || separate || all_faces ? item.substr(0, item.find('/')) : item;
     const int n = parse_int("--sweep boxes", count, 0, 100000);
     // One layout per count, shared by its variants (the tracer then
     // draws each count's reference once).
@@ -123,6 +124,7 @@ void add_boxes(PlanBuilder& b, const std::string& name, const std::string& item)
         c.layout_variant = variant;
         c.frame.cull_objects = !all;
         c.frame.multi_draw = !separate;
+        c.frame.cull_box_faces = !all_faces;
     });
 }
 

@@ -70,10 +70,11 @@ void bind_draw(const DrawContext& ctx, const LevelView& view, const TargetDraw& 
 
 int instances_of(const DrawContext& ctx) { return ctx.frame.stereo == StereoMode::TwoPass ? 1 : 2; }
 
-void submit_queued(const DrawContext& ctx, const LevelView& view, const SceneDraw& draw) {
+void submit_queued(const DrawContext& ctx, const LevelView& view, const SceneDraw& draw, GLuint vertex_array) {
     IndirectDraws& queue = ctx.scratch.indirect;
     if (queue.pending.empty()) return;
     bind_draw(ctx, view, draw);
+    if (vertex_array != 0) ctx.renderer.state->vertex_array(vertex_array);
     for (const IndirectDraw& d : queue.pending)
         ctx.scratch.stats.triangles += static_cast<long>(d.count / 3) * static_cast<long>(d.instance_count);
     ctx.scratch.stats.draw_calls += submit_indirect(*ctx.renderer.state, queue);

@@ -76,8 +76,9 @@ void bind_draw(const DrawContext& ctx, const LevelView& view, const TargetDraw& 
 void draw_range(const DrawContext& ctx, const LevelView& view, const SceneDraw& draw, const scene::IndexRange& range);
 
 // Submits the ranges queued in the scratch's IndirectDraws (multi_draw.hpp)
-// as `draw`, and counts them.
-void submit_queued(const DrawContext& ctx, const LevelView& view, const SceneDraw& draw);
+// as `draw`, and counts them; `vertex_array` other than 0 replaces the
+// scene's (GpuScene::face_vao: ranges of the face stream).
+void submit_queued(const DrawContext& ctx, const LevelView& view, const SceneDraw& draw, GLuint vertex_array = 0);
 
 // Instances per range: 2 (both eyes), 1 in two-pass stereo.
 int instances_of(const DrawContext& ctx);

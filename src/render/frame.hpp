@@ -68,6 +68,11 @@ struct FrameDesc : math::View {
     // glMultiDrawElementsIndirect instead of one draw each (render/multi_draw.hpp);
     // off only to compare the two (bench).
     bool multi_draw = true;
+    // With per-object culling: of each visible box prop, only the faces an
+    // eye of the level may see from the front, from a stream written per
+    // frame (render/box_faces.hpp); the image is the same. Off only to
+    // compare (bench's N/all-faces, tests).
+    bool cull_box_faces = true;
     // Textures read at mip level 0 with the magnification filter, as the
     // tracer reads them, instead of through their mipmaps: for comparing the
     // two (tests, bench's error), never for viewing (minified textures alias).

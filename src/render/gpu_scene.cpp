@@ -33,6 +33,23 @@ gl::Texture upload_texture(const scene::SceneTexture& t) {
     return texture;
 }
 
+// scene::Vertex from `vertices`, indices from `indices`.
+void describe_vertices(GLuint vao, GLuint vertices, GLuint indices) {
+    glVertexArrayVertexBuffer(vao, 0, vertices, 0, sizeof(scene::Vertex));
+    glVertexArrayElementBuffer(vao, indices);
+    auto attribute = [vao](GLuint index, GLint size, std::size_t offset) {
+        glEnableVertexArrayAttrib(vao, index);
+        glVertexArrayAttribFormat(vao, index, size, GL_FLOAT, GL_FALSE, static_cast<GLuint>(offset));
+        glVertexArrayAttribBinding(vao, index, 0);
+    };
+    attribute(0, 3, offsetof(scene::Vertex, position));
+    attribute(1, 3, offsetof(scene::Vertex, normal));
+    attribute(2, 3, offsetof(scene::Vertex, color));
+    attribute(3, 1, offsetof(scene::Vertex, checker));
+    attribute(4, 2, offsetof(scene::Vertex, uv));
+    attribute(5, 1, offsetof(scene::Vertex, alpha));
+}
+
 }  // namespace
 
 GpuScene upload_scene(const scene::Scene& scene) {
@@ -50,20 +67,10 @@ GpuScene upload_scene(const scene::Scene& scene) {
     glNamedBufferSubData(gpu.indices.get(), 0, static_cast<GLsizeiptr>(scene.indices.size() * sizeof(std::uint32_t)),
                          scene.indices.data());
 
-    const GLuint vao = gpu.vao.get();
-    glVertexArrayVertexBuffer(vao, 0, gpu.vertices.get(), 0, sizeof(scene::Vertex));
-    glVertexArrayElementBuffer(vao, gpu.indices.get());
-    auto attribute = [vao](GLuint index, GLint size, std::size_t offset) {
-        glEnableVertexArrayAttrib(vao, index);
-        glVertexArrayAttribFormat(vao, index, size, GL_FLOAT, GL_FALSE, static_cast<GLuint>(offset));
-        glVertexArrayAttribBinding(vao, index, 0);
-    };
-    attribute(0, 3, offsetof(scene::Vertex, position));
-    attribute(1, 3, offsetof(scene::Vertex, normal));
-    attribute(2, 3, offsetof(scene::Vertex, color));
-    attribute(3, 1, offsetof(scene::Vertex, checker));
-    attribute(4, 2, offsetof(scene::Vertex, uv));
-    attribute(5, 1, offsetof(scene::Vertex, alpha));
+    gpu.face_indices = gl::create_buffer();
+    gpu.face_vao = gl::create_vertex_array();
+    describe_vertices(gpu.vao.get(), gpu.vertices.get(), gpu.indices.get());
+    describe_vertices(gpu.face_vao.get(), gpu.vertices.get(), gpu.face_indices.get());
 
     gpu.textures.reserve(scene.textures.size());
     for (const scene::SceneTexture& t : scene.textures) gpu.textures.push_back(upload_texture(t));

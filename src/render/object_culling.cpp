@@ -4,6 +4,7 @@
 #include <array>
 #include <cassert>
 
+#include "render/box_faces.hpp"
 #include "scene/mesh_writer.hpp"
 
 namespace impossible::render {
@@ -154,6 +155,45 @@ void visible_batches(const scene::CellObjects& cell, const LevelView& view, int 
             scene::add_batch(out, cell.batches[b]);
     }
     for (const scene::DrawBatch& b : cell.surfaces) scene::add_batch(out, b);
+}
+
+void visible_draws(const scene::CellObjects& cell, const LevelView& view, int eye_width, int eye_height,
+                   double margin_px, const BoxFaceView& faces, CullScratch& scratch,
+                   std::vector<std::uint32_t>& face_indices, std::vector<VisibleDraw>& out) {
+    out.clear();
+    face_indices.clear();
+    const auto add = [&](const scene::DrawBatch& b) {
+        if (!out.empty() && !out.back().faces && out.back().batch.same_state(b) &&
+            out.back().batch.range.first + out.back().batch.range.count == b.range.first) {
+            out.back().batch.range.count += b.range.count;
+            return;
+        }
+        if (b.range.count > 0) out.push_back({b, false});
+    };
+    if (!cell.nodes.empty()) {
+        collect_visible(cell, view, eye_width, eye_height, margin_px, scratch);
+        assert(std::is_sorted(scratch.visible.begin(), scratch.visible.end()));
+    } else {
+        scratch.visible.clear();
+    }
+    for (const int o : scratch.visible) {
+        const scene::CellObject& object = cell.objects[static_cast<std::size_t>(o)];
+        if (object.box_vertex < 0) {
+            for (std::uint32_t b = object.first_batch; b < object.first_batch + object.batch_count; ++b)
+                add(cell.batches[b]);
+            continue;
+        }
+        const auto first = static_cast<std::uint32_t>(face_indices.size());
+        append_box_faces(static_cast<std::uint32_t>(object.box_vertex),
+                         box_front_faces(object.lo, object.hi, view, faces), face_indices);
+        const auto count = static_cast<std::uint32_t>(face_indices.size()) - first;
+        if (count == 0) continue;
+        if (!out.empty() && out.back().faces)
+            out.back().batch.range.count += count;
+        else
+            out.push_back({scene::DrawBatch{{first, count}}, true});
+    }
+    for (const scene::DrawBatch& b : cell.surfaces) add(b);
 }
 
 }  // namespace impossible::render

@@ -4,8 +4,10 @@
 // No GL: the result is the batches to draw.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
+#include "render/box_faces.hpp"
 #include "render/view.hpp"
 #include "scene/scene.hpp"
 
@@ -26,6 +28,22 @@ struct CullScratch {
 // pixels of an eye_width × eye_height image), for both eyes.
 void visible_batches(const scene::CellObjects& cell, const LevelView& view, int eye_width, int eye_height,
                      double margin_px, CullScratch& scratch, std::vector<scene::DrawBatch>& out);
+
+// A level's draw of part of a cell: a batch of the scene's index buffer, or
+// (`faces`) a range of the frame's face stream (render/box_faces.hpp).
+struct VisibleDraw {
+    scene::DrawBatch batch;
+    bool faces = false;
+};
+
+// visible_batches, with each visible box prop's faces that the level's eyes
+// may see (box_front_faces with `faces`) appended to
+// `face_indices` instead of its batch: the same triangles in the same
+// order, less back faces. Consecutive boxes make one range of the stream
+// (relative to the start of face_indices, cleared first).
+void visible_draws(const scene::CellObjects& cell, const LevelView& view, int eye_width, int eye_height,
+                   double margin_px, const BoxFaceView& faces, CullScratch& scratch,
+                   std::vector<std::uint32_t>& face_indices, std::vector<VisibleDraw>& out);
 
 // The same test for objects that are not the cell's own (a frame's dynamic
 // objects, object_draw.cpp): the indices into cell.objects, in increasing

@@ -25,16 +25,41 @@ void unmark_portal(const DrawContext& ctx, const LevelView& view, int p, const s
         rects);
 }
 
-void draw_cell(const DrawContext& ctx, const LevelView& view, const SceneDraw& draw) {
+namespace {
+
+// A level's draws of its cell into scratch.cull_draws, in the cell's order:
+// every batch; with per-object culling those of the props an eye may see;
+// and with FrameDesc::cull_box_faces the faces of the visible boxes that an
+// eye may see from the front, as ranges of the face stream, uploaded here.
+// Returns where this level's indices start in the stream.
+std::uint32_t level_draws(const DrawContext& ctx, const LevelView& view) {
     const RendererData& r = ctx.renderer;
     FrameScratch& s = ctx.scratch;
     const auto cell = static_cast<std::size_t>(view.cell);
+    const bool culled = ctx.frame.cull_portals && ctx.frame.cull_objects && !r.objects[cell].objects.empty();
+    // Two pixels of margin: one more than the eye rectangles' own.
+    if (culled && ctx.frame.cull_box_faces) {
+        const BoxFaceView faces = box_face_view(view, ctx.frame.eye_width, ctx.frame.eye_height, ctx.frame.samples);
+        visible_draws(r.objects[cell], view, ctx.frame.eye_width, ctx.frame.eye_height, 2.0, faces, s.cull,
+                      s.faces.pending, s.cull_draws);
+        return upload_faces(s.faces, r.gpu.face_indices.get());
+    }
     const std::vector<scene::DrawBatch>* batches = &r.cells[cell];
-    if (ctx.frame.cull_portals && ctx.frame.cull_objects && !r.objects[cell].objects.empty()) {
-        // Two pixels of margin: one more than the eye rectangles' own.
+    if (culled) {
         visible_batches(r.objects[cell], view, ctx.frame.eye_width, ctx.frame.eye_height, 2.0, s.cull, s.cull_batches);
         batches = &s.cull_batches;
     }
+    s.cull_draws.clear();
+    for (const scene::DrawBatch& b : *batches) s.cull_draws.push_back({b, false});
+    return 0;
+}
+
+}  // namespace
+
+void draw_cell(const DrawContext& ctx, const LevelView& view, const SceneDraw& draw) {
+    const RendererData& r = ctx.renderer;
+    FrameScratch& s = ctx.scratch;
+    const std::uint32_t face_base = level_draws(ctx, view);
     // Plain batches queued and submitted together (FrameDesc::multi_draw)
     // before the next batch with materials and at the end; the others with
     // the material variant, whose per-level uniforms are set when it is
@@ -44,7 +69,14 @@ void draw_cell(const DrawContext& ctx, const LevelView& view, const SceneDraw& d
         ctx.material_program ? &cell_program(ctx, view.cell, kMaterials | light_flags(ctx)) : nullptr;
     with_materials.program = material_program;
     bool material_ready = false;
-    for (const scene::DrawBatch& b : *batches) {
+    for (const VisibleDraw& d : s.cull_draws) {
+        const scene::DrawBatch& b = d.batch;
+        if (d.faces) {  // box faces, from the stream (plain)
+            submit_queued(ctx, view, draw);
+            queue_range(s.indirect, {b.range.first + face_base, b.range.count}, instances_of(ctx));
+            submit_queued(ctx, view, draw, r.gpu.face_vao.get());
+            continue;
+        }
         if (b.texture < 0 && b.alpha_cutoff < 0.0f) {
             queue_range(s.indirect, b.range, instances_of(ctx));
             if (!ctx.frame.multi_draw) submit_queued(ctx, view, draw);

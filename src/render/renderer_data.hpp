@@ -19,6 +19,7 @@
 #include "gl/handles.hpp"
 #include "gl/state.hpp"
 #include "links/portal_links.hpp"
+#include "render/box_faces.hpp"
 #include "render/frame.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/light_buffers.hpp"
@@ -129,6 +130,8 @@ struct FrameScratch {
     std::unique_ptr<walk::PropWalks> prop_walks;
     std::vector<int> visible_instances;
     IndirectDraws indirect;                  // FrameDesc::multi_draw's commands
+    FaceStream faces;                        // FrameDesc::cull_box_faces's indices (box_faces.hpp)
+    std::vector<VisibleDraw> cull_draws;     // a level's draws with box faces culled
     std::vector<gl::Query> mark_queries;     // occlusion queries of portals, made on first use
     size_t mark_queries_used = 0;            // of mark_queries, by this frame
     std::vector<SavedColour> saved_colours;  // per window being drawn, made on first use
@@ -139,6 +142,7 @@ struct FrameScratch {
     void begin_frame() {
         stats = {};
         begin_indirect_frame(indirect);
+        faces.used = 0;
         mark_queries_used = 0;
         saved_colours_used = 0;
         conditional = false;

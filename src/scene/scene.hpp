@@ -94,6 +94,10 @@ struct CellObject {
     glm::dvec3 hi{0.0};
     std::uint32_t first_batch = 0;  // into CellObjects::batches
     std::uint32_t batch_count = 0;
+    // A box prop: its first vertex (append_box_prop's 24, four per face,
+    // faces -x, +x, -y, +y, -z, +z); -1 for a model. A level may then draw
+    // only the faces its eyes can see (render/box_faces.hpp).
+    std::int64_t box_vertex = -1;
 };
 
 // A node of a cell's bounding-volume hierarchy over its objects, stored depth
