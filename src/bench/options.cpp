@@ -58,7 +58,8 @@ constexpr Option<BenchOptions> kBenchOptions[] = {
     {"--sweep", "WHAT",
      "configurations measured in one run, interleaved frame by frame:\n"
      "techniques (stereo, clip, culling, depth 1..64; implies --error),\n"
-     "portals:0,2,4,6  depth:1,16  size:320x180,640x360\n"
+     "portals:0,2,4,6 (6/all-steps: every door pass, no cheaper steps)\n"
+     "depth:1,16  size:320x180,640x360\n"
      "boxes:0,1000 (that many 12-triangle boxes on every room's floor;\n"
      "1000/all: the same without per-object culling; 1000/separate:\n"
      "one draw per run of visible props instead of a multi-draw;\n"

@@ -132,10 +132,18 @@ void add_boxes(PlanBuilder& b, const std::string& name, const std::string& item)
 void add_sweep_item(PlanBuilder& b, const layout::Layout& layout, const std::string& kind, const std::string& item) {
     const std::string name = kind + "=" + item;
     if (kind == "portals") {
-        const int n = parse_int("--sweep portals", item, 0, 1000000);
+        // "N/all-steps": the same N portals with every door pass
+        // (FrameDesc::portal_steps off), to compare in one run.
+        const std::string suffix = "/all-steps";
+        const bool all_steps = item.size() > suffix.size() && item.ends_with(suffix);
+        const std::string count = all_steps ? item.substr(0, item.size() - suffix.size()) : item;
+        const int n = parse_int("--sweep portals", count, 0, 1000000);
         b.plan.layouts.push_back(keep_first_portals(layout, n));
         const int variant = static_cast<int>(b.plan.layouts.size()) - 1;
-        b.add(name, kind, [variant](BenchConfig& c) { c.layout_variant = variant; });
+        b.add(name, kind, [variant, all_steps](BenchConfig& c) {
+            c.layout_variant = variant;
+            c.frame.portal_steps = !all_steps;
+        });
     } else if (kind == "boxes") {
         add_boxes(b, name, item);
     } else if (kind == "samples") {

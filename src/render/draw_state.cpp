@@ -18,7 +18,7 @@ gl::WindowRect eye_viewport(const FrameDesc& frame, int eye) {
 }
 
 // What every draw names: its target, depth convention, pass state (for the
-// view's winding), program and scissor.
+// view's winding), level (the stencil reference), program and scissor.
 void bind_common(const DrawContext& ctx, const LevelView& view, Pass pass, int stencil_ref, GLuint program,
                  const Scissor& scissor, int clip_distances = -1) {
     gl::StateCache& state = *ctx.renderer.state;
@@ -28,7 +28,9 @@ void bind_common(const DrawContext& ctx, const LevelView& view, Pass pass, int s
     state.clip_control(reversed_z ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
     gl::PassState pass_gl = pass_state(pass, reversed_z, view.mirrored);
     if (clip_distances >= 0) pass_gl.clip_distances = clip_distances;
-    state.apply(pass_gl, stencil_ref);
+    // The draw names a level; the stencil holds it encoded (passes.hpp).
+    const GLint reference = stencil_reference(pass, stencil_ref, ctx.frame.max_depth, pass_gl.stencil);
+    state.apply(pass_gl, reference);
     state.program(program);
     if (scissor)
         state.scissor(*scissor);

@@ -68,6 +68,11 @@ struct FrameDesc : math::View {
     // glMultiDrawElementsIndirect instead of one draw each (render/multi_draw.hpp);
     // off only to compare the two (bench).
     bool multi_draw = true;
+    // With culling: a portal that no other visible portal of its level comes
+    // near on screen is marked with its depth reset in one draw, and one that
+    // no later one comes near is not unmarked (render/portal_steps.cpp,
+    // PortalSteps); the image is the same. Off only to compare (tests, bench).
+    bool portal_steps = true;
     // With per-object culling: of each visible box prop, only the faces an
     // eye of the level may see from the front, from a stream written per
     // frame (render/box_faces.hpp); the image is the same. Off only to
@@ -123,6 +128,8 @@ struct FrameStats {
     int portal_passes_culled = 0;  // portals skipped as invisible to both eyes
     int portal_fills = 0;          // portals shown as the flat fill (depth limit or budget)
     int budget_fills = 0;          // of those, the ones drawn so because max_portal_passes was spent
+    int one_draw_marks = 0;        // portals marked with their depth reset in one draw (PortalSteps)
+    int unmarks_skipped = 0;       // portals left marked after their view (PortalSteps)
     int max_level_reached = 0;
     int light_images = 0;       // lit layouts: light images of the cells drawn, summed over the cells' draws
     int shadow_maps_drawn = 0;  // cube shadow maps (re)drawn this frame

@@ -11,18 +11,28 @@
 
 namespace impossible::render {
 
-void mark_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
+void mark_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects,
+                 const PortalSteps& steps) {
+    if (steps.one_draw_mark) {
+        clear_depth_in_portal(ctx, view, view.level, rects, Pass::PortalMarkReset);
+        ctx.scratch.stats.one_draw_marks += 1;
+        return;
+    }
     draw_portal_box(ctx, view,
                     {Pass::PortalMark, view.level, &cell_program(ctx, view.cell), portal_scissor(ctx, view, rects)}, p,
                     rects);
     clear_depth_in_portal(ctx, view, view.level + 1, rects);
 }
 
-void unmark_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
-    draw_portal_box(
-        ctx, view,
-        {Pass::PortalUnmark, view.level + 1, &cell_program(ctx, view.cell), portal_scissor(ctx, view, rects)}, p,
-        rects);
+void unmark_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects,
+                   const PortalSteps& steps) {
+    if (!steps.unmark) {
+        ctx.scratch.stats.unmarks_skipped += 1;
+        return;
+    }
+    draw_portal_box(ctx, view,
+                    {Pass::PortalUnmark, view.level, &cell_program(ctx, view.cell), portal_scissor(ctx, view, rects)},
+                    p, rects);
 }
 
 namespace {

@@ -3,7 +3,9 @@
 //
 // A mirror at level L: mark its pixels (L → L + 1) and clear their depth,
 // draw its room from the mirrored eyes (the winding flips; the mirror's plane
-// clips), multiply the pixels by the tint, unmark.
+// clips), multiply the pixels by the tint, unmark (as PortalSteps says). The
+// full-target passes cover level L + 1 and deeper: a door in the view may
+// have left its pixels marked.
 //
 // A window's pixels show two views blended by their final colours,
 // (1 - r) · tint · C_through + r · C_reflect. Blending while drawing would
@@ -113,23 +115,25 @@ Result<void> prepare_window_blend(Programs& programs, bool multisample) {
     return {};
 }
 
-void draw_mirror_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
+void draw_mirror_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects,
+                        const PortalSteps& steps) {
     const scene::PortalInfo& m = ctx.renderer.portals[p];
-    mark_portal(ctx, view, p, rects);
+    mark_portal(ctx, view, p, rects, steps);
     ctx.scratch.stats.portal_passes_drawn += 1;
     draw_level(ctx, reflected_view(ctx, view, p, rects, shading::max_channel(m.tint)));
     if (!is_white(m.tint)) draw_region(ctx, view, Pass::Tint, rects, m.tint);
-    unmark_portal(ctx, view, p, rects);
+    unmark_portal(ctx, view, p, rects, steps);
 }
 
-void draw_window_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
+void draw_window_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects,
+                        const PortalSteps& steps) {
     const scene::PortalInfo& w = ctx.renderer.portals[p];
     const double r = w.reflectance;
     const double through_factor = (1.0 - r) * shading::max_channel(w.tint);
     const bool reflect = view.weight * r >= shading::kMinBranchWeight;
     const bool through = view.weight * through_factor >= shading::kMinBranchWeight;
     FrameScratch& s = ctx.scratch;
-    mark_portal(ctx, view, p, rects);
+    mark_portal(ctx, view, p, rects, steps);
 
     GLuint saved = 0;
     if (reflect) {
@@ -146,7 +150,7 @@ void draw_window_portal(const DrawContext& ctx, const LevelView& view, int p, co
     }
     blend_window(ctx, view, rects, w, saved);
     if (reflect) s.saved_colours_used -= 1;
-    unmark_portal(ctx, view, p, rects);
+    unmark_portal(ctx, view, p, rects, steps);
 }
 
 }  // namespace impossible::render

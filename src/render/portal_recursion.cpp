@@ -7,7 +7,9 @@
 // box is the visible surface (level → level + 1), reset depth there, draw the
 // target room from the virtual cameras M_AB · eye clipped at the target
 // portal's plane, recurse, then unmark and put the box's depth back so that
-// it occludes what the rest of this level draws. Every draw is one instanced
+// it occludes what the rest of this level draws (where portals stand apart
+// on screen, the mark and reset take one draw and the unmark none:
+// portal_steps.cpp). Every draw is one instanced
 // draw for both eyes; an eye that cannot see a portal gets an empty
 // rectangle, which its clip distances turn into no work. Every draw names its
 // pass, stencil reference, program and scissor (draw_state.hpp).
@@ -19,10 +21,10 @@
 namespace impossible::render {
 
 void clear_depth_in_portal(const DrawContext& ctx, const LevelView& view, int stencil_ref,
-                           const std::array<NdcRect, 2>& rects) {
+                           const std::array<NdcRect, 2>& rects, Pass pass) {
     const ClearDepthProgram& clear = ctx.renderer.programs.clear_depth;
     const GLuint program = clear.program.get();
-    const TargetDraw draw{Pass::ClearDepth, stencil_ref, program, portal_scissor(ctx, view, rects)};
+    const TargetDraw draw{pass, stencil_ref, program, portal_scissor(ctx, view, rects)};
     glProgramUniform1f(program, clear.far_depth, far_depth(ctx.frame));
     if (!ctx.frame.cull_portals) {
         glProgramUniform1i(program, clear.eye_quads, 0);
@@ -60,8 +62,9 @@ void clear_depth_in_portal(const DrawContext& ctx, const LevelView& view, int st
 namespace {
 
 // One visible portal of `view`: the fill at the depth limit, or mark, depth
-// reset, the view through it (recursively) and unmark.
-void draw_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects) {
+// reset, the view through it (recursively) and unmark, as `steps` says.
+void draw_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects,
+                 const PortalSteps& steps) {
     const int level = view.level;
     FrameStats& stats = ctx.scratch.stats;
     // The recursion limit, or the frame's budget of portal passes spent:
@@ -73,14 +76,14 @@ void draw_portal(const DrawContext& ctx, const LevelView& view, int p, const std
         return;
     }
     switch (ctx.renderer.portals[p].kind) {
-        case layout::PortalKind::Mirror: draw_mirror_portal(ctx, view, p, rects); return;
-        case layout::PortalKind::Window: draw_window_portal(ctx, view, p, rects); return;
+        case layout::PortalKind::Mirror: draw_mirror_portal(ctx, view, p, rects, steps); return;
+        case layout::PortalKind::Window: draw_window_portal(ctx, view, p, rects, steps); return;
         case layout::PortalKind::Door: break;
     }
-    mark_portal(ctx, view, p, rects);
+    mark_portal(ctx, view, p, rects, steps);
     stats.portal_passes_drawn += 1;
     draw_level(ctx, child_view(ctx, view, p, rects));
-    unmark_portal(ctx, view, p, rects);
+    unmark_portal(ctx, view, p, rects, steps);
 }
 
 // One occlusion query per visible portal of this level, drawn after the
@@ -105,10 +108,10 @@ std::vector<GLuint> test_portal_visibility(const DrawContext& ctx, const LevelVi
 }
 
 // draw_portal for a portal of the head's cell, timed by the profiler.
-void draw_top_portal_profiled(const DrawContext& ctx, const LevelView& view, int p,
-                              const std::array<NdcRect, 2>& rects) {
+void draw_top_portal_profiled(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects,
+                              const PortalSteps& steps) {
     ctx.profiler->begin_top_portal(p);
-    draw_portal(ctx, view, p, rects);
+    draw_portal(ctx, view, p, rects, steps);
     ctx.profiler->end_top_portal(ctx.scratch.stats);
 }
 
@@ -191,6 +194,7 @@ void draw_level(const DrawContext& ctx, const LevelView& view) {
     const bool occlusion = ctx.frame.occlusion_test && ctx.frame.cull_portals && !s.conditional;
     const std::vector<GLuint> tests =
         occlusion ? test_portal_visibility(ctx, view, portals, visible) : std::vector<GLuint>(portals.size(), 0);
+    const std::vector<PortalSteps> steps = portal_steps(ctx, view, visible);
 
     for (size_t k = 0; k < portals.size(); ++k) {
         const std::array<NdcRect, 2>& rects = visible[k];
@@ -208,9 +212,9 @@ void draw_level(const DrawContext& ctx, const LevelView& view) {
         if (level == 0 && door && ctx.frame.portal_texture_scale > 0.0)
             draw_portal_via_texture(ctx, view, portals[k], rects, k);
         else if (ctx.profiler && level == 0)
-            draw_top_portal_profiled(ctx, view, portals[k], rects);
+            draw_top_portal_profiled(ctx, view, portals[k], rects, steps[k]);
         else
-            draw_portal(ctx, view, portals[k], rects);
+            draw_portal(ctx, view, portals[k], rects, steps[k]);
         if (tests[k]) {
             glEndConditionalRender();
             s.conditional = false;

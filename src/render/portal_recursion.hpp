@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <vector>
 
 #include "render/draw_state.hpp"
 
@@ -16,12 +17,32 @@ void draw_level(const DrawContext& ctx, const LevelView& view);
 
 // --- Shared by the stencil and the render-to-texture portals (portal_draw.cpp).
 
+// How a visible portal of a level is marked and unmarked (portal_steps.cpp).
+struct PortalSteps {
+    // One quad per eye marks the portal and resets its depth (the box bit,
+    // passes.hpp): no other visible portal of the level comes near it on
+    // screen. Else its box marks and a quad resets depth, two draws.
+    bool one_draw_mark = false;
+    // Unmarked after its view: some later portal of the level comes near it
+    // on screen (or no culling). Else its pixels keep their deeper levels,
+    // which no later draw of the level touches, until an unmark of an outer
+    // level or the end of the frame.
+    bool unmark = true;
+};
+
+// The steps of each portal of the level with a non-empty rectangle in
+// `visible` (one per portal of view.cell).
+std::vector<PortalSteps> portal_steps(const DrawContext& ctx, const LevelView& view,
+                                      const std::vector<std::array<NdcRect, 2>>& visible);
+
 // Stencil level → level + 1 where the portal is the visible surface, and
-// depth there back to far; and back to level with the portal's depth, so
-// that it occludes the rest of the level. Every kind of portal is drawn
-// between these two.
-void mark_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects);
-void unmark_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects);
+// depth there back to far; and every deeper level back to level with the
+// portal's depth, so that it occludes the rest of the level (unless
+// steps.unmark is off). Every kind of portal is drawn between these two.
+void mark_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects,
+                 const PortalSteps& steps);
+void unmark_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects,
+                   const PortalSteps& steps);
 
 // A level's cell: its plain batches as `draw` (with FrameDesc::multi_draw,
 // in one call), and those with a texture or an alpha cutoff as `draw` with
@@ -56,8 +77,10 @@ LevelView reflected_view(const DrawContext& ctx, const LevelView& view, int port
 
 // A visible mirror or window of `view` below the recursion limit: the view(s)
 // in it, tinted and blended, drawn where it is the visible surface.
-void draw_mirror_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects);
-void draw_window_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects);
+void draw_mirror_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects,
+                        const PortalSteps& steps);
+void draw_window_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects,
+                        const PortalSteps& steps);
 
 // The window blend's program for single-sample or multisampled targets,
 // built on first use; prepare_frame makes the ones a frame may need.
@@ -65,10 +88,11 @@ Result<void> prepare_window_blend(Programs& programs, bool multisample);
 
 // --- Shared steps of portal_recursion.cpp.
 
-// Depth back to far where the stencil equals stencil_ref, within the
-// portal's rectangle in each eye that sees it.
+// Depth back to far where the stencil equals level `stencil_ref`, within
+// the portal's rectangle in each eye that sees it: Pass::ClearDepth, or
+// Pass::PortalMarkReset, which also marks (drawn with the portal's level).
 void clear_depth_in_portal(const DrawContext& ctx, const LevelView& view, int stencil_ref,
-                           const std::array<NdcRect, 2>& rects);
+                           const std::array<NdcRect, 2>& rects, Pass pass = Pass::ClearDepth);
 
 // --- Render-to-texture portals (portal_texture.cpp).
 

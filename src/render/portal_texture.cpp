@@ -50,7 +50,7 @@ void draw_portal_via_texture(const DrawContext& ctx, const LevelView& view, int 
     // The view through the portal, at level + 1 everywhere in the texture,
     // which is its own target: the view is not limited to the portal's
     // pixels there.
-    clear_target(*r.state, texture, view.level + 1);
+    clear_target(*r.state, texture, stencil_level(ctx.frame.max_depth, view.level + 1));
     const DrawContext inside{.renderer = r,
                              .frame = inner,
                              .scene_program = ctx.scene_program,

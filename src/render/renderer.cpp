@@ -177,7 +177,7 @@ Result<void> draw_frame(RendererParts& parts, const FrameDesc& frame, FrameStats
         bind_light_buffers(&r.lights);
     }
     const Target& target = drawing_target(parts.targets, frame);
-    clear_target(state, target, 0);
+    clear_target(state, target, stencil_level(frame.max_depth, 0));
 
     FrameProfiler profiler;
     const int mode = mode_index(frame.stereo);
