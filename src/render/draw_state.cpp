@@ -29,7 +29,7 @@ void bind_common(const DrawContext& ctx, const LevelView& view, Pass pass, int s
     gl::PassState pass_gl = pass_state(pass, reversed_z, view.mirrored);
     if (clip_distances >= 0) pass_gl.clip_distances = clip_distances;
     // The draw names a level; the stencil holds it encoded (passes.hpp).
-    const GLint reference = stencil_reference(pass, stencil_ref, ctx.frame.max_depth, pass_gl.stencil);
+    const GLint reference = stencil_reference(pass, stencil_ref, ctx.frame.max_depth, view.box_bits, pass_gl.stencil);
     state.apply(pass_gl, reference);
     state.program(program);
     if (scissor)

@@ -8,7 +8,8 @@
 // test of "this level or deeper" reaches it. With max_depth <= kMaxBoxBitDepth
 // the lowest bit is the box bit: a pixel of level L is 253 - 2L, or 252 - 2L
 // where a portal box of the level is the visible surface (PortalDepth clears
-// the bit, every Scene fragment that passes sets it again), so that one quad
+// the bit, every Scene fragment that passes sets it again on a level with
+// visible portals, LevelView::box_bits), so that one quad
 // per eye can mark a portal and reset its depth at once (PortalMarkReset).
 // Deeper limits use 254 - L and no box bit. Levels are compared through the
 // read mask (0xFE with the box bit): a comparison of levels flips
@@ -151,13 +152,16 @@ inline constexpr GLint stencil_level(int max_depth, int level) {
 }
 
 // The stencil reference of a draw of `pass` named with `level`, and its
-// state's masks and operation for the frame's encoding.
-inline GLint stencil_reference(Pass pass, int level, int max_depth, gl::StencilState& s) {
+// state's masks and operation for the frame's encoding. `box_bits`: the
+// level has visible portals, whose boxes its surfaces may hide (else its
+// surfaces write no stencil).
+inline GLint stencil_reference(Pass pass, int level, int max_depth, bool box_bits, gl::StencilState& s) {
     const GLint value = stencil_level(max_depth, level);
     if (!has_box_bit(max_depth)) return value;
     s.read_mask = 0xFE;  // the level, not the box bit
     switch (pass) {
         case Pass::Scene:  // a surface drawn: no box is visible here
+            if (!box_bits) return value;
             s.pass = GL_REPLACE;
             s.write_mask = 0x01;
             return value;

@@ -183,7 +183,12 @@ void draw_level(const DrawContext& ctx, const LevelView& view) {
     const std::vector<int>& portals = r.links.room_portals[view.cell];
     const std::vector<std::array<NdcRect, 2>> visible = visible_portals(ctx, view, portals);
 
-    draw_level_surfaces(ctx, view, portals, visible);
+    // Its surfaces keep the box bit only for portals to mark (passes.hpp).
+    LevelView surfaces = view;
+    surfaces.box_bits = std::any_of(visible.begin(), visible.end(), [](const std::array<NdcRect, 2>& rects) {
+        return !rects[0].empty() || !rects[1].empty();
+    });
+    draw_level_surfaces(ctx, surfaces, portals, visible);
 
     // A portal hidden behind the cell's own surfaces (say, a wall) passes the
     // frustum test but not this one: conditional rendering then drops every

@@ -48,6 +48,9 @@ struct LevelView {
     // the portal's pixels (its scissor, with culling); false at the root of
     // a target (the head's view, a render-to-texture portal's view).
     bool through_portal = false;
+    // The level's surfaces set the stencil's box bit where they hide a
+    // portal's box (passes.hpp): only while it has visible portals.
+    bool box_bits = false;
     std::array<EyeView, 2> eyes;
 };
 
