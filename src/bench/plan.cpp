@@ -99,6 +99,17 @@ void add_techniques(PlanBuilder& b) {
         std::snprintf(name, sizeof name, "texture=%g", scale);
         b.add(name, "technique", [scale](BenchConfig& c) { c.frame.portal_texture_scale = scale; });
     }
+    // Hybrid (stencil above level K, textures at full scale from it on) and
+    // z-clear (depth 1 only: compare it with depth=1).
+    for (int k : {1, 2, 4})
+        b.add("hybrid=" + std::to_string(k), "technique", [k](BenchConfig& c) {
+            c.frame.portal_texture_scale = 1.0;
+            c.frame.portal_texture_level = k;
+        });
+    b.add("z-clear", "technique", [](BenchConfig& c) {
+        c.frame.z_clear = true;
+        c.frame.max_depth = 1;
+    });
     for (int d : {1, 2, 4, 8, 16, 64})
         b.add("depth=" + std::to_string(d), "depth", [d](BenchConfig& c) { c.frame.max_depth = d; });
 }

@@ -112,6 +112,12 @@ constexpr Option<ViewOptions> kViewOptions[] = {
      "render-to-texture portals (the classic technique, for comparison):\n"
      "each portal's view at SCALE x the eye size, e.g. 0.25, 0.5, 1",
      [](ViewOptions& o, const OptionValue& v) { o.frame.portal_texture_scale = parse_portal_texture(v); }},
+    {"--technique", "NAME",
+     "stencil (default), hybrid (textures from --texture-from-level on)\n"
+     "or z-clear (depth 1, doors only); docs/cli.md",
+     [](ViewOptions& o, const OptionValue& v) { o.technique = parse_technique(v.name, v.text); }},
+    {"--texture-from-level", "K", "hybrid: the level whose doors take textures (default 0)",
+     [](ViewOptions& o, const OptionValue& v) { o.texture_from_level = parse_int(v.name, v.text, 0, 250); }},
     {"--occlusion-test", nullptr,
      "also skip portals hidden behind the room's props or walls (an\n"
      "occlusion query and conditional rendering; costs one sync a frame)",
@@ -252,6 +258,7 @@ ViewOptions parse_view_options(const ParsedArgs& args, OptionTable<ViewOptions> 
     ViewOptions o;
     if (!args.positional.empty()) o.layout_path = args.positional[0];
     apply_options(table, args, o);
+    resolve_technique(o.technique, o.texture_from_level, o.frame);
     return o;
 }
 

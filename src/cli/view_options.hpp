@@ -10,6 +10,7 @@
 #include "cli/args.hpp"
 #include "cli/option_table.hpp"
 #include "cli/output_files.hpp"
+#include "cli/technique_options.hpp"
 #include "gl/context.hpp"
 #include "layout/layout.hpp"
 #include "render/frame.hpp"
@@ -33,6 +34,10 @@ struct ViewOptions {
     // against the layout (--time and --hands are here too).
     render::FrameDesc frame;
     bool stats = false;
+    // --technique and --texture-from-level as given; parse_view_options puts
+    // them (with --portal-texture) into frame.
+    std::optional<Technique> technique;
+    std::optional<int> texture_from_level;
     bool shadow_options = false;  // --shadow-size or --no-shadows given (frame has their values)
 };
 

@@ -94,6 +94,19 @@ struct FrameDesc : math::View {
     // scale × the eye size, which the portal's box then shows. 0: stencil
     // portals all the way (the default). Needs StereoMode::ClipShift.
     double portal_texture_scale = 0.0;
+    // Hybrid portals (--technique hybrid --texture-from-level K, Valve's
+    // scheme as Rinsma describes it): with portal_texture_scale > 0, the
+    // doors seen at this recursion level are drawn through textures (all
+    // deeper levels inside them by stencil); the levels above it by stencil.
+    // 0: the doors of the head's cell, as above. A level at or past max_depth
+    // draws no texture (byte for byte the stencil frame).
+    int portal_texture_level = 0;
+    // z-clear portals (--technique z-clear, the PowerVR scheme;
+    // render/technique_zclear.cpp): each visible door's target room drawn
+    // first within its rectangle, depth cleared, the doors into depth, then
+    // the head's room. Depth 1 (max_depth <= 1), doors only, with culling,
+    // no portal textures; anything else is an error.
+    bool z_clear = false;
     // Measure the frame (for `impossible bench`): GL_SAMPLES_PASSED queries
     // around the colour passes, and glFinish + a monotonic clock around each
     // level-0 portal's subtree. The glFinish calls perturb the frame's own

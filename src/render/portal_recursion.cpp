@@ -212,9 +212,11 @@ void draw_level(const DrawContext& ctx, const LevelView& view) {
             s.conditional = true;
         }
         // Mirrors and windows always take the stencil path: their views are
-        // blended in place (portal_glass.cpp).
+        // blended in place (portal_glass.cpp). A door at the texture level
+        // takes the texture unless draw_portal would show the fill.
         const bool door = r.portals[portals[k]].kind == layout::PortalKind::Door;
-        if (level == 0 && door && ctx.frame.portal_texture_scale > 0.0)
+        if (door && level == ctx.frame.portal_texture_level && ctx.frame.portal_texture_scale > 0.0 &&
+            level < ctx.frame.max_depth && s.stats.portal_passes_drawn < ctx.frame.max_portal_passes)
             draw_portal_via_texture(ctx, view, portals[k], rects, k);
         else if (ctx.profiler && level == 0)
             draw_top_portal_profiled(ctx, view, portals[k], rects, steps[k]);

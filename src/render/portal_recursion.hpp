@@ -106,6 +106,18 @@ Result<void> ensure_portal_textures(const RendererData& r, FrameTargets& targets
 void draw_portal_via_texture(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects,
                              size_t slot);
 
+// --- z-clear portals (technique_zclear.cpp).
+
+// Whether the frame's z-clear portals can be drawn (FrameDesc::z_clear):
+// depth <= 1, doors only, no volumes, with culling, no portal textures; the
+// error names the option and what breaks the rule.
+Result<void> check_zclear(const RendererData& r, const FrameDesc& frame);
+
+// The head's view (level 0) by the z-clear scheme: each visible door's target
+// room first, within its rectangle, then depth cleared, the doors into depth
+// and the head's room over them.
+void draw_zclear(const DrawContext& ctx, const LevelView& view);
+
 // --- Dynamic objects and volume portals (object_draw.cpp).
 
 // The frame's dynamic objects placed (walk::place_objects), grouped per cell

@@ -1,5 +1,6 @@
 // Render-to-texture portals (the classic technique, for comparison): the view
-// through each portal of the head's cell is drawn into a texture of scale ×
+// through each door of the head's cell (or, hybrid, of the cells at
+// FrameDesc::portal_texture_level) is drawn into a texture of scale ×
 // the eye size, both eyes side by side (recursion inside it by stencil), and
 // the box then shows that texture where it is the visible surface.
 #include <algorithm>
@@ -26,7 +27,12 @@ FrameDesc inner_frame(const FrameDesc& f) {
 Result<void> ensure_portal_textures(const RendererData& r, FrameTargets& targets, const FrameDesc& frame) {
     assert(frame.room >= 0 && static_cast<size_t>(frame.room) < r.links.room_portals.size());
     const FrameDesc inner = inner_frame(frame);
-    const size_t count = r.links.room_portals[frame.room].size();
+    // One slot per portal of a cell whose doors may take a texture (a slot
+    // is drawn and shown before the next door's): the head's cell at level
+    // 0, any cell deeper (hybrid portals).
+    size_t count = r.links.room_portals[frame.room].size();
+    if (frame.portal_texture_level > 0)
+        for (const std::vector<int>& portals : r.links.room_portals) count = std::max(count, portals.size());
     if (targets.portal_textures.size() < count) targets.portal_textures.resize(count);
     for (size_t slot = 0; slot < count; ++slot) {
         Target& texture = targets.portal_textures[slot];

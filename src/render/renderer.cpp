@@ -97,6 +97,8 @@ Result<void> prepare_frame(RendererData& r, FrameTargets& targets, const FrameDe
         if (frame.samples > 1)
             if (Result<void> made = prepare_window_blend(programs, true); !made) return made;
     }
+    if (frame.z_clear)
+        if (Result<void> ok = check_zclear(r, frame); !ok) return ok;
     if (frame.portal_texture_scale <= 0.0) return {};
     if (frame.stereo != StereoMode::ClipShift) return Error{"render-to-texture portals need --stereo clip-shift"};
     if (!programs.portal_texture) {
@@ -139,8 +141,9 @@ std::array<math::dmat4, 2> projections_of(const FrameDesc& frame) {
 // Both eyes' views of the frame, as the stereo mode draws them.
 void draw_stereo(const DrawContext& ctx) {
     const FrameDesc& frame = ctx.frame;
+    const auto draw_root = frame.z_clear ? draw_zclear : draw_level;
     if (frame.stereo != StereoMode::TwoPass) {
-        draw_level(ctx, root_view(frame, ctx.projections, 3u));
+        draw_root(ctx, root_view(frame, ctx.projections, 3u));
         return;
     }
     const std::optional<SceneProgram>* variants = ctx.renderer.programs.variants[mode_index(StereoMode::TwoPass)];
@@ -152,7 +155,7 @@ void draw_stereo(const DrawContext& ctx) {
             if (variants[flags]) glProgramUniform1i(variants[flags]->program.get(), variants[flags]->single_eye, e);
         DrawContext one_eye = ctx;
         one_eye.eye = e;
-        draw_level(one_eye, root_view(frame, ctx.projections, 1u << e));
+        draw_root(one_eye, root_view(frame, ctx.projections, 1u << e));
     }
 }
 

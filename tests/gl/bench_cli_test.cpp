@@ -82,7 +82,17 @@ TEST_F(BenchCli, TechniqueSweepMeasuresEveryConfigurationWithItsError) {
     const nlohmann::json j = json("t.json");
     std::map<std::string, nlohmann::json> by_name;
     for (const nlohmann::json& c : j["configs"]) by_name[c["name"]] = c;
-    ASSERT_EQ(by_name.size(), 18u);
+    ASSERT_EQ(by_name.size(), 22u);
+    // The seeds' techniques, each with its error: hybrid at full scale is
+    // exact; z-clear draws one level (compare it with depth=1).
+    for (const char* name : {"hybrid=1", "hybrid=2", "hybrid=4", "z-clear"}) {
+        ASSERT_TRUE(by_name[name].contains("id_mismatch_percent")) << name << by_name[name];
+        EXPECT_EQ(by_name[name]["group"], "technique") << name;
+    }
+    EXPECT_EQ(by_name["hybrid=1"]["id_mismatch_percent"], by_name["base"]["id_mismatch_percent"]);
+    EXPECT_EQ(by_name["z-clear"]["max_depth"], 1);
+    EXPECT_EQ(by_name["z-clear"]["id_mismatch_percent"], by_name["depth=1"]["id_mismatch_percent"]);
+    EXPECT_EQ(by_name["z-clear"]["psnr_db"], by_name["depth=1"]["psnr_db"]);
     // Render-to-texture at full scale is exact; a quarter-size texture blurs.
     EXPECT_EQ(by_name["texture=1"]["id_mismatch_percent"], by_name["base"]["id_mismatch_percent"]);
     auto psnr = [](const nlohmann::json& v) { return v.is_null() ? HUGE_VAL : v.get<double>(); };  // null: identical
