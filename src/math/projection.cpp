@@ -7,7 +7,20 @@ namespace impossible::math {
 
 namespace {
 double tan_half_fov(const Frustum& f) { return std::tan(radians(0.5 * f.fov_y_deg)); }
+
+// The off-axis projection's x and y rows: x_ndc = (2·tx - (r + l)) / (r - l)
+// for the tangent tx = x / -z, and the same for y.
+void set_off_axis(dmat4& m, const FovTangents& t) {
+    m[0][0] = 2.0 / (t.right - t.left);
+    m[2][0] = (t.right + t.left) / (t.right - t.left);
+    m[1][1] = 2.0 / (t.up - t.down);
+    m[2][1] = (t.up + t.down) / (t.up - t.down);
+}
 }  // namespace
+
+FovTangents fov_tangents(const FovAngles& a) {
+    return {std::tan(radians(a.left)), std::tan(radians(a.right)), std::tan(radians(a.up)), std::tan(radians(a.down))};
+}
 
 dmat4 perspective_reversed_z(const Frustum& f) {
     // clip = (x·s/aspect, y·s, near, -z): depth = near / -z, 1 at the near
@@ -18,6 +31,7 @@ dmat4 perspective_reversed_z(const Frustum& f) {
     m[1][1] = s;
     m[2][3] = -1.0;
     m[3][2] = f.near;
+    if (f.tangents) set_off_axis(m, *f.tangents);
     return m;
 }
 
@@ -29,10 +43,15 @@ dmat4 perspective_standard(const Frustum& f, double far) {
     m[2][2] = -(far + f.near) / (far - f.near);
     m[2][3] = -1.0;
     m[3][2] = -2.0 * far * f.near / (far - f.near);
+    if (f.tangents) set_off_axis(m, *f.tangents);
     return m;
 }
 
 dvec3 image_point_ray_eye(const Frustum& f, int width, int height, double x, double y) {
+    if (f.tangents) {
+        const FovTangents& t = *f.tangents;
+        return {t.left + (x / width) * (t.right - t.left), t.up - (y / height) * (t.up - t.down), -1.0};
+    }
     const double t = tan_half_fov(f);
     const double aspect = static_cast<double>(width) / static_cast<double>(height);
     const double nx = 2.0 * (x / width) - 1.0;   // -1 at the left edge

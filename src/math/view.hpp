@@ -7,13 +7,25 @@
 #include <array>
 #include <optional>
 
+#include "math/polygon.hpp"
 #include "math/pose.hpp"
+#include "math/projection.hpp"
 
 namespace impossible::math {
 
 // The default budget of portal passes (--max-portal-passes): per frame for
 // the rasteriser, per ray tree for the tracer (docs/bounded-work.md).
 inline constexpr int kDefaultMaxPortalPasses = 10'000;
+
+// One eye of a headset (--fov-angles, --hmd; docs/headsets.md): its
+// asymmetric field of view and the part of its image the lenses show.
+struct EyeOptics {
+    FovAngles fov;
+    // The visible area in normalised image coordinates (math/hidden_area.hpp);
+    // empty: every pixel is visible. Pixels outside are masked: black, id 0.
+    Polygon2 visible_area;
+    bool operator==(const EyeOptics&) const = default;
+};
 
 struct View {
     math::HeadPose head;
@@ -38,6 +50,25 @@ struct View {
     // --light-depth: replaces the layout's light_depth under "lighting":
     // "lights" (cli.md); none: the layout's. No effect on "fixed" layouts.
     std::optional<int> light_depth;
+    // Per-eye optics, left then right: the eyes' frusta are then these
+    // angles (fov_y_deg is not read) and the hidden areas are masked.
+    std::optional<std::array<EyeOptics, 2>> eye_optics;
 };
+
+// The frustum of eye `eye` (0 left, 1 right) of `view` for an image of its
+// eye size: symmetric from fov_y_deg, or the eye's optics' angles.
+inline Frustum eye_frustum(const View& view, int eye) {
+    Frustum f;
+    f.fov_y_deg = view.fov_y_deg;
+    f.aspect = static_cast<double>(view.eye_width) / view.eye_height;
+    if (view.eye_optics) f.tangents = fov_tangents((*view.eye_optics)[static_cast<std::size_t>(eye)].fov);
+    return f;
+}
+
+// Whether any eye of `view` has a hidden area to mask.
+inline bool has_hidden_area(const View& view) {
+    return view.eye_optics &&
+           (!(*view.eye_optics)[0].visible_area.empty() || !(*view.eye_optics)[1].visible_area.empty());
+}
 
 }  // namespace impossible::math

@@ -139,6 +139,7 @@ struct FrameStats {
                                    // counted (not the full-screen depth-clear triangles)
     int portal_passes_drawn = 0;   // portals whose target was drawn (both eyes count once)
     int portal_passes_culled = 0;  // portals skipped as invisible to both eyes
+    int portal_passes_masked = 0;  // of those, the ones only the hidden area hides (hidden_mask.hpp)
     int portal_fills = 0;          // portals shown as the flat fill (depth limit or budget)
     int budget_fills = 0;          // of those, the ones drawn so because max_portal_passes was spent
     int one_draw_marks = 0;        // portals marked with their depth reset in one draw (PortalSteps)

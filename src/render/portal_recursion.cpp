@@ -123,26 +123,32 @@ void draw_top_portal_profiled(const DrawContext& ctx, const LevelView& view, int
 // the draws are not narrowed (set_eye_uniforms, level_scissor). The portal
 // the view came out of lies behind a virtual eye that stands behind it,
 // where the plane clips it.
+// A headset's hidden area (hidden_mask.hpp) hides a portal from an eye
+// whose rectangle of it holds no visible pixel; `masked[k]` is set when that
+// alone hides portal k from an eye.
 std::vector<std::array<NdcRect, 2>> visible_portals(const DrawContext& ctx, const LevelView& view,
-                                                    const std::vector<int>& portals) {
+                                                    const std::vector<int>& portals, std::vector<char>& masked) {
     const RendererData& r = ctx.renderer;
     const FrameDesc& f = ctx.frame;
     const bool occluders = f.cull_portals && f.cull_objects;
     std::vector<std::array<NdcRect, 2>> visible(portals.size());
+    masked.assign(portals.size(), 0);
     for (size_t k = 0; k < portals.size(); ++k) {
         const int p = portals[k];
         for (int e = 0; e < 2; ++e) {
             const EyeView& ev = view.eyes[e];
             const bool behind_exit = p == view.entered_by && ev.behind_exit;
-            if (behind_exit || !ev.active)
-                visible[k][e] = NdcRect::none();
-            else if (const NdcRect rect = portal_rect(r.portals[p].rect, ev);
-                     covers_pixel_centre(rect, f.eye_width, f.eye_height, f.samples) &&
-                     !(occluders &&
-                       hidden_by_occluder(r.objects[static_cast<size_t>(view.cell)], ev, r.portals[p].rect)))
-                visible[k][e] = rect;
-            else
-                visible[k][e] = NdcRect::none();
+            visible[k][e] = NdcRect::none();
+            if (behind_exit || !ev.active) continue;
+            const NdcRect rect = portal_rect(r.portals[p].rect, ev);
+            if (!covers_pixel_centre(rect, f.eye_width, f.eye_height, f.samples)) continue;
+            if (occluders && hidden_by_occluder(r.objects[static_cast<size_t>(view.cell)], ev, r.portals[p].rect))
+                continue;
+            if (!meets_visible_area(ctx.targets.hidden_mask, e, rect, f.samples)) {
+                masked[k] = 1;
+                continue;
+            }
+            visible[k][e] = rect;
         }
     }
     return visible;
@@ -181,7 +187,8 @@ void draw_level(const DrawContext& ctx, const LevelView& view) {
     const int level = view.level;
     s.stats.max_level_reached = std::max(s.stats.max_level_reached, level);
     const std::vector<int>& portals = r.links.room_portals[view.cell];
-    const std::vector<std::array<NdcRect, 2>> visible = visible_portals(ctx, view, portals);
+    std::vector<char> masked;
+    const std::vector<std::array<NdcRect, 2>> visible = visible_portals(ctx, view, portals, masked);
 
     // Its surfaces keep the box bit only for portals to mark (passes.hpp).
     LevelView surfaces = view;
@@ -205,6 +212,7 @@ void draw_level(const DrawContext& ctx, const LevelView& view) {
         const std::array<NdcRect, 2>& rects = visible[k];
         if (rects[0].empty() && rects[1].empty()) {
             s.stats.portal_passes_culled += 1;
+            s.stats.portal_passes_masked += masked[k];
             continue;
         }
         if (tests[k]) {

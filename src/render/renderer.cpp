@@ -92,6 +92,7 @@ Result<void> prepare_frame(RendererData& r, FrameTargets& targets, const FrameDe
     ensure_lights(r, frame);  // before the variants: which kind of light buffers
     if (Result<void> made = ensure_variants(r, frame.stereo, objects); !made) return made;
     if (Result<void> made = ensure_multisampled(programs, targets, frame); !made) return made;
+    if (Result<void> made = prepare_hidden_mask(targets.hidden_mask, frame); !made) return made;
     if (r.has_windows) {
         if (Result<void> made = prepare_window_blend(programs, false); !made) return made;
         if (frame.samples > 1)
@@ -127,15 +128,18 @@ LevelView root_view(const FrameDesc& frame, const std::array<math::dmat4, 2>& pr
     return view;
 }
 
-// Each eye's projection (both the same: one symmetric frustum).
+// Each eye's projection: one symmetric frustum for both, or each eye's
+// optics (math::eye_frustum, as the tracer's).
 std::array<math::dmat4, 2> projections_of(const FrameDesc& frame) {
-    math::Frustum frustum;
-    frustum.fov_y_deg = frame.fov_y_deg;
-    frustum.aspect = static_cast<double>(frame.eye_width) / frame.eye_height;
-    frustum.near = near_distance(frame);
-    const math::dmat4 p = frame.depth == DepthMode::ReversedZ ? math::perspective_reversed_z(frustum)
-                                                              : math::perspective_standard(frustum, frame.far);
-    return {p, p};
+    std::array<math::dmat4, 2> out;
+    for (int e = 0; e < 2; ++e) {
+        math::Frustum frustum = math::eye_frustum(frame, e);
+        frustum.near = near_distance(frame);
+        out[static_cast<size_t>(e)] = frame.depth == DepthMode::ReversedZ
+                                          ? math::perspective_reversed_z(frustum)
+                                          : math::perspective_standard(frustum, frame.far);
+    }
+    return out;
 }
 
 // Both eyes' views of the frame, as the stereo mode draws them.
@@ -181,6 +185,7 @@ Result<void> draw_frame(RendererParts& parts, const FrameDesc& frame, FrameStats
     }
     const Target& target = drawing_target(parts.targets, frame);
     clear_target(state, target, stencil_level(frame.max_depth, 0));
+    draw_hidden_mask(state, target, parts.targets.hidden_mask, r.empty_vao.get(), scratch.stats);
 
     FrameProfiler profiler;
     const int mode = mode_index(frame.stereo);

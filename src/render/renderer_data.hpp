@@ -22,6 +22,7 @@
 #include "render/box_faces.hpp"
 #include "render/frame.hpp"
 #include "render/gpu_scene.hpp"
+#include "render/hidden_mask.hpp"
 #include "render/light_buffers.hpp"
 #include "render/multi_draw.hpp"
 #include "render/multisample.hpp"
@@ -110,6 +111,7 @@ struct FrameTargets {
     Target target;                        // single-sample: what is read back or shown
     Multisampling multisampling;          // with FrameDesc::samples > 1
     std::vector<Target> portal_textures;  // one per portal of the head's cell (render-to-texture portals)
+    HiddenMask hidden_mask;               // the frame's hidden areas (headset optics)
 };
 
 // A window's reflected view, copied aside while the view through it is drawn

@@ -11,6 +11,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "math/hidden_area.hpp"
 #include "math/projection.hpp"
 #include "shading/shading.hpp"
 #include "trace/sample_pattern.hpp"
@@ -22,11 +23,19 @@ std::uint8_t to_byte(double c) { return static_cast<std::uint8_t>(std::lround(st
 
 namespace {
 
-math::Frustum frustum_of(const TraceDesc& desc) {
-    math::Frustum f;
-    f.fov_y_deg = desc.fov_y_deg;
-    f.aspect = static_cast<double>(desc.eye_width) / desc.eye_height;
-    return f;
+// Eye `eye`'s frustum: symmetric, or the eye's optics (math/view.hpp).
+math::Frustum frustum_of(const TraceDesc& desc, int eye) { return math::eye_frustum(desc, eye); }
+
+// Each eye's hidden pixels (math/hidden_area.hpp), rows from the top; empty
+// for an eye with no hidden area.
+std::array<std::vector<std::uint8_t>, 2> hidden_masks(const TraceDesc& desc) {
+    std::array<std::vector<std::uint8_t>, 2> masks;
+    if (!desc.eye_optics) return masks;
+    for (int e = 0; e < 2; ++e) {
+        const math::Polygon2& visible = (*desc.eye_optics)[static_cast<size_t>(e)].visible_area;
+        if (!visible.empty()) masks[e] = math::hidden_pixels(visible, desc.eye_width, desc.eye_height);
+    }
+    return masks;
 }
 
 PixelRay eye_pixel_ray(const TraceDesc& desc, const math::Frustum& frustum, const math::Eye& eye, int i, int j) {
@@ -96,7 +105,7 @@ std::optional<Error> check_desc(const Scene& scene, const TraceDesc& desc) {
 }  // namespace
 
 PixelRay pixel_ray(const TraceDesc& desc, int eye, int i, int j) {
-    return eye_pixel_ray(desc, frustum_of(desc), math::eyes_of(desc.head, desc.ipd)[eye], i, j);
+    return eye_pixel_ray(desc, frustum_of(desc, eye), math::eyes_of(desc.head, desc.ipd)[eye], i, j);
 }
 
 Result<image::Image> trace_frame(const Scene& scene, const TraceDesc& desc, TraceStats* stats) {
@@ -110,13 +119,17 @@ Result<image::Image> trace_frame(const Scene& scene, const TraceDesc& desc, Trac
     image.ids.assign(pixels, 0);
 
     const std::array<math::Eye, 2> eyes = math::eyes_of(desc.head, desc.ipd);
-    const math::Frustum frustum = frustum_of(desc);
+    const std::array<math::Frustum, 2> frusta = {frustum_of(desc, 0), frustum_of(desc, 1)};
+    // A hidden pixel keeps the background: black, id 0 (docs/headsets.md).
+    const std::array<std::vector<std::uint8_t>, 2> hidden = hidden_masks(desc);
     const FrameRays frame{scene, desc, place_frame_objects(scene, desc)};
     auto trace_row = [&](int j, TraceStats& counted) {
         for (int eye = 0; eye < 2; ++eye) {
+            const std::vector<std::uint8_t>& mask = hidden[static_cast<size_t>(eye)];
             for (int i = 0; i < desc.eye_width; ++i) {
                 const size_t at = static_cast<size_t>(j) * image.width + eye * desc.eye_width + i;
-                trace_pixel(frame, frustum, eyes[eye], i, j, &image.ids[at], &image.rgb[3 * at], counted);
+                if (!mask.empty() && mask[static_cast<size_t>(j) * desc.eye_width + i]) continue;
+                trace_pixel(frame, frusta[eye], eyes[eye], i, j, &image.ids[at], &image.rgb[3 * at], counted);
             }
         }
     };
