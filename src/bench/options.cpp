@@ -30,11 +30,11 @@ void check_sweep(const std::string& sweep) {
     const std::string kind = sweep.substr(0, colon);
     if (colon == std::string::npos ||
         (kind != "portals" && kind != "depth" && kind != "size" && kind != "boxes" && kind != "samples" &&
-         kind != "lights" && kind != "light-depth" && kind != "shadow-size") ||
+         kind != "lights" && kind != "light-depth" && kind != "shadow-size" && kind != "mask") ||
         colon + 1 == sweep.size())
         throw InputError("--sweep: '" + sweep +
                          "' is not techniques, portals:N,..., boxes:N,..., depth:N,..., size:WxH,..., samples:N,..., "
-                         "lights:fixed|N,..., light-depth:N,... or shadow-size:N,...");
+                         "lights:fixed|N,..., light-depth:N,..., shadow-size:N,... or mask:on|off,...");
 }
 
 // In the order of the help and of the checks.
@@ -67,7 +67,9 @@ constexpr Option<BenchOptions> kBenchOptions[] = {
      "samples:1,4 (multisampling; counts the driver lacks are reported)\n"
      "lights:fixed,0,1,8,32 (the fixed light, or N lights in every room)\n"
      "light-depth:0,1,2,4 (a lit layout's light depth)\n"
-     "shadow-size:0,256,512 (cube shadow maps' size; 0: no prop shadows)",
+     "shadow-size:0,256,512 (cube shadow maps' size; 0: no prop shadows)\n"
+     "mask:on,off (with --hmd: the hidden-area mask, or the same frusta\n"
+     "without it)",
      [](BenchOptions& o, const OptionValue& v) { o.sweep = v.text; }},
     {"--error", nullptr, "compare each configuration with the tracer (ids, PSNR)",
      [](BenchOptions& o, const OptionValue&) { o.error = true; }},

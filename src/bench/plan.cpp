@@ -176,6 +176,16 @@ void add_sweep_item(PlanBuilder& b, const layout::Layout& layout, const std::str
             c.frame.shadow_map_size = size;
             c.frame.shadows = size > 0;
         });
+    } else if (kind == "mask") {
+        // With --hmd: the profile's hidden areas masked, or the same frusta
+        // drawing every pixel (docs/headsets.md).
+        if (!math::has_hidden_area(b.base)) throw cli::InputError("--sweep mask: needs --hmd with a visible_area");
+        if (item != "on" && item != "off") throw cli::InputError("--sweep mask: '" + item + "' is not on or off");
+        const bool on = item == "on";
+        b.add(name, kind, [on](BenchConfig& c) {
+            if (!on)
+                for (math::EyeOptics& e : *c.frame.eye_optics) e.visible_area.clear();
+        });
     } else if (kind == "depth") {
         const int d = parse_int("--sweep depth", item, 0, 250);
         b.add(name, kind, [d](BenchConfig& c) { c.frame.max_depth = d; });

@@ -147,15 +147,16 @@ struct Measurer {
     void compare_with_tracer() {
         std::vector<trace::Scene> scenes;
         for (const layout::Layout& l : plan.layouts) scenes.push_back(value_or_throw(trace::prepare_scene(l)));
-        // One reference per layout variant, pose, size and light depth.
-        std::map<std::tuple<int, size_t, int, int, int>, image::Image> traced;
+        // One reference per layout variant, pose, size, light depth and
+        // hidden-area mask (--sweep mask).
+        std::map<std::tuple<int, size_t, int, int, int, bool>, image::Image> traced;
         const double n = static_cast<double>(poses.size());
         for (size_t p = 0; p < poses.size(); ++p)
             for (ConfigResult& r : results) {
                 if (!r.error.empty()) continue;
                 const render::FrameDesc f = frame_at(r.config, poses[p]);
-                const auto key =
-                    std::make_tuple(r.config.layout_variant, p, f.eye_width, f.eye_height, f.light_depth.value_or(-1));
+                const auto key = std::make_tuple(r.config.layout_variant, p, f.eye_width, f.eye_height,
+                                                 f.light_depth.value_or(-1), math::has_hidden_area(f));
                 if (!traced.count(key)) {
                     trace::TraceDesc t = trace_desc_for(f);
                     t.max_depth = options.reference_depth;

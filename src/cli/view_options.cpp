@@ -1,5 +1,6 @@
 #include "cli/view_options.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string_view>
 #include <tuple>
@@ -7,6 +8,7 @@
 #include "api/api_data.hpp"
 #include "base/text.hpp"
 #include "image/png.hpp"
+#include "layout/hmd_profile.hpp"
 #include "layout/path_file.hpp"
 #include "lights/light_images.hpp"
 #include "links/portal_links.hpp"
@@ -79,6 +81,16 @@ constexpr Option<ViewOptions> kViewOptions[] = {
      [](ViewOptions& o, const OptionValue& v) { o.frame.ipd = parse_ipd(v.text); }},
     {"--fov", "DEG", "vertical field of view of each eye (default 90)",
      [](ViewOptions& o, const OptionValue& v) { o.frame.fov_y_deg = parse_fov(v.text); }},
+    {"--fov-angles", "L,R,U,D",
+     "asymmetric field of view instead of --fov: the left eye's angles in\n"
+     "degrees as OpenXR gives them (left, down negative), mirrored for the\n"
+     "right eye; or 8 numbers, the left eye's then the right eye's",
+     [](ViewOptions& o, const OptionValue& v) { o.frame.eye_optics = parse_fov_angles(v.text); }},
+    {"--hmd", "FILE.json",
+     "a headset profile (docs/headsets.md): each eye's angles, size and\n"
+     "hidden area (masked: black, id 0), and the IPD; --size and --ipd\n"
+     "replace its size and IPD",
+     [](ViewOptions& o, const OptionValue& v) { o.hmd = v.text; }},
     {"--size", "WxH", "size of each eye's image (default 1280x720); the image is 2W x H",
      [](ViewOptions& o, const OptionValue& v) {
          std::tie(o.frame.eye_width, o.frame.eye_height) = parse_size(v.name, v.text);
@@ -185,6 +197,37 @@ double parse_fps(const std::string& text) {
     return fps;
 }
 
+std::array<math::EyeOptics, 2> parse_fov_angles(const std::string& text) {
+    const std::size_t commas = static_cast<std::size_t>(std::count(text.begin(), text.end(), ','));
+    const std::vector<double> n = parse_numbers("--fov-angles", text, commas >= 7 ? 8 : 4);
+    std::array<math::EyeOptics, 2> eyes;
+    eyes[0].fov = {n[0], n[1], n[2], n[3]};
+    eyes[1].fov = n.size() == 8 ? math::FovAngles{n[4], n[5], n[6], n[7]} : math::mirrored(eyes[0].fov);
+    for (int e = 0; e < 2; ++e)
+        if (const std::optional<std::string> problem = layout::fov_angles_problem(eyes[static_cast<size_t>(e)].fov))
+            throw InputError("--fov-angles: " + std::string(e == 0 ? "left" : "right") + " eye: " + *problem);
+    return eyes;
+}
+
+void check_headset_combinations(const ParsedArgs& args) {
+    const bool fov = args.value("--fov").has_value(), angles = args.value("--fov-angles").has_value(),
+               hmd = args.value("--hmd").has_value();
+    if (fov && angles) throw UsageError("--fov and --fov-angles exclude each other");
+    if (fov && hmd) throw UsageError("--fov and --hmd exclude each other (the profile gives each eye's angles)");
+    if (angles && hmd)
+        throw UsageError("--fov-angles and --hmd exclude each other (the profile gives each eye's angles)");
+}
+
+void apply_hmd_profile(const std::string& path, math::View& frame, bool size_given, bool ipd_given) {
+    const layout::HmdProfile profile = value_or_throw(layout::read_hmd_profile_file(path));
+    frame.eye_optics = profile.eyes;
+    if (!size_given) {
+        frame.eye_width = profile.eye_width;
+        frame.eye_height = profile.eye_height;
+    }
+    if (!ipd_given) frame.ipd = profile.ipd;
+}
+
 std::array<math::HeadPose, 2> parse_hands(const std::string& text) {
     const std::vector<double> n = parse_pose_numbers("--hands", text, 12);
     return {pose_at(n, 0), pose_at(n, 6)};
@@ -255,9 +298,11 @@ void check_path_combinations(const ParsedArgs& args) {
 
 ViewOptions parse_view_options(const ParsedArgs& args, OptionTable<ViewOptions> table) {
     if (has_option(table, "--path")) check_path_combinations(args);
+    check_headset_combinations(args);
     ViewOptions o;
     if (!args.positional.empty()) o.layout_path = args.positional[0];
     apply_options(table, args, o);
+    if (o.hmd) apply_hmd_profile(*o.hmd, o.frame, args.value("--size").has_value(), args.value("--ipd").has_value());
     resolve_technique(o.technique, o.texture_from_level, o.frame);
     return o;
 }
@@ -274,6 +319,7 @@ CommandOutputs frame_outputs(const ViewOptions& options) {
     CommandOutputs outputs;
     if (options.layout_path) outputs.input("the layout", *options.layout_path);
     if (options.path) outputs.input("--path", *options.path);
+    if (options.hmd) outputs.input("--hmd", *options.hmd);
     outputs.output("--out", options.out);
     if (options.ids) outputs.output("--ids", *options.ids);
     return outputs;

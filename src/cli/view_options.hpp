@@ -38,7 +38,8 @@ struct ViewOptions {
     // them (with --portal-texture) into frame.
     std::optional<Technique> technique;
     std::optional<int> texture_from_level;
-    bool shadow_options = false;  // --shadow-size or --no-shadows given (frame has their values)
+    bool shadow_options = false;     // --shadow-size or --no-shadows given (frame has their values)
+    std::optional<std::string> hmd;  // --hmd FILE.json (its optics are in frame)
 };
 
 // The view options of render and trace (bench drops the image files), in
@@ -65,6 +66,16 @@ int parse_samples(const std::string& text);  // 1, 2, 4, 8 or 16
 // --fps of the commands that replay a path: in kMinFps..kMaxFps.
 inline constexpr double kMinFps = 1e-3, kMaxFps = 1e6;
 double parse_fps(const std::string& text);
+// --fov-angles: LEFT,RIGHT,UP,DOWN in degrees (OpenXR's XrFovf) for the
+// left eye, mirrored for the right (-RIGHT,-LEFT,UP,DOWN); or eight numbers,
+// the left eye's then the right eye's. No hidden area.
+std::array<math::EyeOptics, 2> parse_fov_angles(const std::string& text);
+// The usage errors of --fov, --fov-angles and --hmd (each excludes the others).
+void check_headset_combinations(const ParsedArgs& args);
+// --hmd FILE: the profile's optics into `frame`, and its eye size and IPD
+// unless --size (`size_given`) or --ipd (`ipd_given`) replace them; throws
+// InputError FILE:LINE:COLUMN: field: message for a bad profile.
+void apply_hmd_profile(const std::string& path, math::View& frame, bool size_given, bool ipd_given);
 // --hands: twelve numbers, the left then the right hand (as --pose).
 std::array<math::HeadPose, 2> parse_hands(const std::string& text);
 // --light-depth: 0..layout::kMaxLightDepth; --shadow-size: 0..kMaxShadowMapSize.

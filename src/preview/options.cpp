@@ -93,6 +93,10 @@ constexpr Option<PreviewOptions> kPreviewOptions[] = {
      [](PreviewOptions& o, const OptionValue& v) { o.frame.ipd = parse_ipd(v.text); }},
     {"--fov", "DEG", "vertical field of view of each eye (default 90)",
      [](PreviewOptions& o, const OptionValue& v) { o.frame.fov_y_deg = parse_fov(v.text); }},
+    {"--fov-angles", "L,R,U,D", "asymmetric field of view as 'render' (4 or 8 numbers, degrees)",
+     [](PreviewOptions& o, const OptionValue& v) { o.frame.eye_optics = cli::parse_fov_angles(v.text); }},
+    {"--hmd", "FILE.json", "a headset profile as 'render' (docs/headsets.md)",
+     [](PreviewOptions& o, const OptionValue& v) { o.hmd = v.text; }},
     {"--max-depth", "N", "portals one line of sight may pass (default 8, at most 250)",
      [](PreviewOptions& o, const OptionValue& v) { o.frame.max_depth = parse_int(v.name, v.text, 0, 250); }},
     {"--stereo", "MODE", "clip-shift (default), viewport-index or two-pass",
@@ -157,7 +161,9 @@ PreviewOptions parse_preview_options(const std::vector<std::string>& args, bool*
     if (!a.positional.empty()) o.layout_path = a.positional[0];
     if (a.flag("--cross") && a.flag("--anaglyph")) throw UsageError("--cross and --anaglyph exclude each other");
     if (a.value("--fps") && !a.value("--path")) throw UsageError("--fps needs --path FILE");
+    cli::check_headset_combinations(a);
     apply_options(kPreviewOptions, a, o);
+    if (o.hmd) cli::apply_hmd_profile(*o.hmd, o.frame, a.value("--size").has_value(), a.value("--ipd").has_value());
     return o;
 }
 

@@ -36,9 +36,10 @@ struct PreviewOptions {
     bool hud = true;
     bool minimap = true;
     bool vsync = true;
-    bool hand = false;            // G: a hand held out in front of the head (preview/head.hpp)
-    double hand_distance = 0.4;   // , and . : how far in front, metres
-    bool shadow_options = false;  // --shadow-size or --no-shadows given (frame has their values)
+    bool hand = false;               // G: a hand held out in front of the head (preview/head.hpp)
+    double hand_distance = 0.4;      // , and . : how far in front, metres
+    bool shadow_options = false;     // --shadow-size or --no-shadows given (frame has their values)
+    std::optional<std::string> hmd;  // --hmd FILE.json (its optics are in frame)
 };
 
 // Throws UsageError (exit 2) for unknown or conflicting options and

@@ -120,9 +120,12 @@ void draw_boundary_grids(PreviewSession& s, const WindowLayout& places, int fb_w
     math::Frustum frustum;
     frustum.fov_y_deg = s.options.frame.fov_y_deg;
     frustum.aspect = eye_aspect(s.options);
-    const math::dmat4 projection = math::perspective_reversed_z(frustum);
     const std::array<math::Eye, 2> eyes = math::eyes_of(s.physical, s.options.frame.ipd);
     for (int e = 0; e < 2; ++e) {
+        // Each eye's own angles with a headset profile (--fov-angles, --hmd).
+        if (s.options.frame.eye_optics)
+            frustum.tangents = math::fov_tangents((*s.options.frame.eye_optics)[static_cast<size_t>(e)].fov);
+        const math::dmat4 projection = math::perspective_reversed_z(frustum);
         OverlayBatch grid;
         if (add_boundary_grid(grid, *area, s.physical.position, eyes[e], projection) == 0) break;
         const PixelRect& r = places.eye_rects[e];

@@ -1,0 +1,173 @@
+// Headset profiles; see hmd_profile.hpp.
+#include "layout/hmd_profile.hpp"
+
+#include <cmath>
+
+#include "base/file_io.hpp"
+#include "layout/checker.hpp"
+#include "layout/json_doc.hpp"
+#include "math/polygon.hpp"
+
+namespace impossible::layout {
+
+namespace {
+
+using detail::Checker;
+using detail::json;
+using detail::NumberKind;
+using detail::Path;
+
+std::string degrees(double v) {
+    std::string s = std::to_string(v);
+    while (s.size() > 1 && s.back() == '0') s.pop_back();
+    if (!s.empty() && s.back() == '.') s.pop_back();
+    return s;
+}
+
+std::optional<math::FovAngles> read_fov(Checker& check, const Path& at, const json& j) {
+    if (!check.expect_object(at, j) ||
+        !check.check_fields(at, j, {"left", "right", "up", "down"}, {"left", "right", "up", "down"}))
+        return std::nullopt;
+    double v[4] = {};
+    const char* names[4] = {"left", "right", "up", "down"};
+    for (int k = 0; k < 4; ++k) {
+        const std::optional<double> n = check.read_number(at / names[k], j[names[k]], NumberKind::Angle);
+        if (!n) return std::nullopt;
+        if (!(std::abs(*n) <= kMaxFovAngleDeg)) {
+            check.error(at / names[k], degrees(*n) + " is not within ±89.5 degrees");
+            return std::nullopt;
+        }
+        v[k] = *n;
+    }
+    const math::FovAngles fov{v[0], v[1], v[2], v[3]};
+    if (const std::optional<std::string> problem = fov_angles_problem(fov)) {
+        check.error(at, *problem);
+        return std::nullopt;
+    }
+    return fov;
+}
+
+std::optional<std::array<int, 2>> read_resolution(Checker& check, const Path& at, const json& j) {
+    if (!check.expect_array(at, j, 2)) return std::nullopt;
+    if (j.size() != 2) {
+        check.error(at, "expected [width, height]");
+        return std::nullopt;
+    }
+    std::array<int, 2> out{};
+    for (std::size_t k = 0; k < 2; ++k) {
+        const json& n = j[k];
+        if (!n.is_number_integer() || n.get<long long>() < 1 || n.get<long long>() > 8192) {
+            check.error(at / k, "expected a whole number of pixels, 1..8192");
+            return std::nullopt;
+        }
+        out[k] = static_cast<int>(n.get<long long>());
+    }
+    return out;
+}
+
+std::optional<math::Polygon2> read_visible_area(Checker& check, const Path& at, const json& j) {
+    if (!check.expect_array(at, j, kMaxVisibleAreaCorners)) return std::nullopt;
+    if (j.size() < 3) {
+        check.error(at, "a polygon needs at least 3 corners [u, v]");
+        return std::nullopt;
+    }
+    math::Polygon2 poly;
+    for (std::size_t k = 0; k < j.size(); ++k) {
+        const std::optional<glm::dvec2> p = check.read_vec2(at / k, j[k], NumberKind::Fraction);
+        if (!p) return std::nullopt;
+        poly.push_back(*p);
+    }
+    if (const std::optional<math::PolygonProblem> problem = math::simple_polygon_problem(poly)) {
+        check.error(at / static_cast<std::size_t>(problem->corner),
+                    "the visible area must be a simple polygon: " + problem->message);
+        return std::nullopt;
+    }
+    return poly;
+}
+
+struct EyeRead {
+    math::EyeOptics optics;
+    std::array<int, 2> resolution{};
+};
+
+std::optional<EyeRead> read_eye(Checker& check, const Path& at, const json& j) {
+    if (!check.expect_object(at, j) ||
+        !check.check_fields(at, j, {"fov", "resolution", "visible_area"}, {"fov", "resolution"}))
+        return std::nullopt;
+    EyeRead eye;
+    const std::optional<math::FovAngles> fov = read_fov(check, at / "fov", j["fov"]);
+    const std::optional<std::array<int, 2>> size = read_resolution(check, at / "resolution", j["resolution"]);
+    if (!fov || !size) return std::nullopt;
+    eye.optics.fov = *fov;
+    eye.resolution = *size;
+    if (j.contains("visible_area")) {
+        const std::optional<math::Polygon2> area = read_visible_area(check, at / "visible_area", j["visible_area"]);
+        if (!area) return std::nullopt;
+        eye.optics.visible_area = *area;
+    }
+    return eye;
+}
+
+Result<HmdProfile> read_profile(Checker& check, const json& j) {
+    HmdProfile out;
+    const Path root;
+    auto first_error = [&]() -> Result<HmdProfile> { return Error{check.take_errors().front().str()}; };
+    if (!check.expect_object(root, j) ||
+        !check.check_fields(root, j, {"name", "source", "ipd", "left", "right"}, {"name", "source", "left", "right"}))
+        return first_error();
+    const std::optional<std::string> name = check.read_string(root / "name", j["name"]);
+    const std::optional<std::string> source = check.read_string(root / "source", j["source"]);
+    if (j.contains("ipd")) {
+        const std::optional<double> ipd = check.read_number(root / "ipd", j["ipd"], NumberKind::Coordinate);
+        if (ipd && !(*ipd >= 0.0 && *ipd <= 10.0)) check.error(root / "ipd", "is not in 0..10 m");
+        if (ipd) out.ipd = *ipd;
+    }
+    const std::optional<EyeRead> left = read_eye(check, root / "left", j["left"]);
+    const std::optional<EyeRead> right = left ? read_eye(check, root / "right", j["right"]) : std::nullopt;
+    if (check.has_errors() || !name || !source || !left || !right) return first_error();
+    if (left->resolution != right->resolution)
+        check.error(root / "right" / "resolution",
+                    "the eyes' resolutions differ (" + std::to_string(left->resolution[0]) + "x" +
+                        std::to_string(left->resolution[1]) + " and " + std::to_string(right->resolution[0]) + "x" +
+                        std::to_string(right->resolution[1]) +
+                        "): both eyes share one side-by-side target, so they must be the same");
+    if (check.has_errors()) return first_error();
+    out.name = *name;
+    out.source = *source;
+    out.eye_width = left->resolution[0];
+    out.eye_height = left->resolution[1];
+    out.eyes = {left->optics, right->optics};
+    return out;
+}
+
+}  // namespace
+
+std::optional<std::string> fov_angles_problem(const math::FovAngles& fov) {
+    const double v[4] = {fov.left, fov.right, fov.up, fov.down};
+    for (double a : v)
+        if (!(std::abs(a) <= kMaxFovAngleDeg)) return degrees(a) + " is not an angle within ±89.5 degrees";
+    if (!(fov.right - fov.left >= kMinFovExtentDeg))
+        return "right (" + degrees(fov.right) + ") must be at least 1 degree right of left (" + degrees(fov.left) + ")";
+    if (!(fov.up - fov.down >= kMinFovExtentDeg))
+        return "up (" + degrees(fov.up) + ") must be at least 1 degree above down (" + degrees(fov.down) + ")";
+    return std::nullopt;
+}
+
+Result<HmdProfile> parse_hmd_profile(std::string_view text, const std::string& file) {
+    const detail::JsonParse parsed = detail::parse_json(text);
+    Checker check(text, file);
+    if (!parsed.document) {
+        check.error_at_offset(parsed.error->offset, parsed.error->message);
+        return Error{check.take_errors().front().str()};
+    }
+    return read_profile(check, parsed.document->root);
+}
+
+Result<HmdProfile> read_hmd_profile_file(const std::string& path) {
+    Result<std::vector<unsigned char>> bytes = read_file_bytes(path, kMaxHmdProfileBytes, false);
+    if (!bytes) return Error{path + ": " + bytes.error()};
+    const std::string_view text(reinterpret_cast<const char*>(bytes->data()), bytes->size());
+    return parse_hmd_profile(text, path);
+}
+
+}  // namespace impossible::layout
