@@ -93,11 +93,11 @@ TEST(BoxFaces, TheBoxesOfSixRoomsThroughDoorsTakeFarFewerTrianglesForTheSameImag
     EXPECT_LT(with * 10, without * 6) << with << " of " << without;
 }
 
-TEST(BoxFaces, EveryStereoClipDepthAndSampleModeDrawsTheSameImage) {
+TEST(BoxFaces, EveryStereoClipDepthSampleAndPortalTextureModeDrawsTheSameImage) {
     const layout::Layout l = bf_crowded(60);
     auto r = bf_renderer(l);
     ASSERT_TRUE(r);
-    for (int mode = 0; mode < 6; ++mode) {
+    for (int mode = 0; mode < 7; ++mode) {
         render::FrameDesc f;
         f.room = l.start.room;
         f.head.position = l.start.position + glm::dvec3(0.1, -0.4, 0.1);
@@ -111,6 +111,7 @@ TEST(BoxFaces, EveryStereoClipDepthAndSampleModeDrawsTheSameImage) {
         if (mode == 3) f.clip = render::ClipMode::Oblique;
         if (mode == 4) f.depth = render::DepthMode::Standard;
         if (mode == 5) f.samples = 4;
+        if (mode == 6) f.portal_texture_scale = 0.5;  // the doors' views drawn into textures
         const auto [a, b] = bf_compare(*r->renderer, f, "mode " + std::to_string(mode));
         EXPECT_LT(a, b) << "mode " << mode;
     }
