@@ -26,25 +26,30 @@ namespace impossible::render {
 inline constexpr int kHiddenStencil = 255;
 
 struct HiddenMask {
-    // What it was made for: the frame's optics and eye size.
+    // What it was made for: the optics and eye size of the last frame with
+    // a hidden area (kept across frames without one, which do not use it).
     std::optional<std::array<math::EyeOptics, 2>> optics;
     int eye_width = 0, eye_height = 0;
-    bool active = false;  // some pixel of some eye is hidden
-    gl::Texture texture;  // GL_R8UI, 2 × eye_width by eye_height, rows from the bottom: 1 hidden
+    bool multisample = false;  // made for a multisampled target (hidden_mask.cpp)
+    bool active = false;       // this frame masks: it has a hidden area, and some pixel is hidden
+    // The hidden pixels as trapezoids (hidden_mask.cpp), two triangles each,
+    // in the target's NDC.
+    gl::Buffer vertices;
+    gl::VertexArray vertex_array;
+    int vertex_count = 0;
     gl::Program program;  // built on first use
     // Per eye and image row (from the top): the first and last visible
     // column (first > last: none), for culling.
     std::array<std::vector<std::array<int, 2>>, 2> rows;
 };
 
-// Makes `mask` the one for the frame's optics and size (again only when they
-// changed); inactive without a hidden area.
-Result<void> prepare_hidden_mask(HiddenMask& mask, const math::View& frame);
+// Makes `mask` the one for the frame's optics and size (made again only
+// when they change); inactive for a frame without a hidden area.
+Result<void> prepare_hidden_mask(HiddenMask& mask, const math::View& frame, int samples);
 
 // Sets the stencil of the hidden pixels of `target` (just cleared) to
 // kHiddenStencil. Nothing when the mask is inactive.
-void draw_hidden_mask(gl::StateCache& state, const Target& target, const HiddenMask& mask, GLuint empty_vao,
-                      FrameStats& stats);
+void draw_hidden_mask(gl::StateCache& state, const Target& target, const HiddenMask& mask, FrameStats& stats);
 
 // Whether `rect` (eye `eye`'s NDC) may hold a visible pixel centre (with
 // samples > 1, any part of a visible pixel): true for an inactive mask.

@@ -92,7 +92,7 @@ Result<void> prepare_frame(RendererData& r, FrameTargets& targets, const FrameDe
     ensure_lights(r, frame);  // before the variants: which kind of light buffers
     if (Result<void> made = ensure_variants(r, frame.stereo, objects); !made) return made;
     if (Result<void> made = ensure_multisampled(programs, targets, frame); !made) return made;
-    if (Result<void> made = prepare_hidden_mask(targets.hidden_mask, frame); !made) return made;
+    if (Result<void> made = prepare_hidden_mask(targets.hidden_mask, frame, frame.samples); !made) return made;
     if (r.has_windows) {
         if (Result<void> made = prepare_window_blend(programs, false); !made) return made;
         if (frame.samples > 1)
@@ -185,7 +185,7 @@ Result<void> draw_frame(RendererParts& parts, const FrameDesc& frame, FrameStats
     }
     const Target& target = drawing_target(parts.targets, frame);
     clear_target(state, target, stencil_level(frame.max_depth, 0));
-    draw_hidden_mask(state, target, parts.targets.hidden_mask, r.empty_vao.get(), scratch.stats);
+    draw_hidden_mask(state, target, parts.targets.hidden_mask, scratch.stats);
 
     FrameProfiler profiler;
     const int mode = mode_index(frame.stereo);

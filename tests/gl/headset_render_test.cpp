@@ -102,30 +102,41 @@ TEST(HeadsetMask, TheVisibleAreaIsByteIdenticalToTheUnmaskedFrame) {
     masked.profile = true;
     render::FrameDesc open = masked;
     for (math::EyeOptics& e : *open.eye_optics) e.visible_area.clear();
-    for (render::StereoMode mode : {render::StereoMode::ClipShift, render::StereoMode::TwoPass}) {
-        masked.stereo = open.stereo = mode;
+    const std::vector<std::uint8_t> hidden = hidden_of(masked);
+    struct Variant {
+        render::StereoMode stereo;
+        int samples;
+    };
+    for (const Variant v : {Variant{render::StereoMode::ClipShift, 1}, Variant{render::StereoMode::TwoPass, 1},
+                            Variant{render::StereoMode::ClipShift, 4}}) {
+        masked.stereo = open.stereo = v.stereo;
+        masked.samples = open.samples = v.samples;
         render::FrameStats ms, os;
         const image::Image a = testing::render_once(gl::Backend::Egl, l, masked, &ms);
         const image::Image b = testing::render_once(gl::Backend::Egl, l, open, &os);
         ASSERT_EQ(a.ids.size(), b.ids.size());
-        const std::vector<std::uint8_t> hidden = hidden_of(masked);
-        long hidden_count = 0, differing = 0;
+        long hidden_count = 0, differing = 0, unmasked = 0;
         for (size_t p = 0; p < hidden.size(); ++p) {
+            const bool rgb_equal = a.rgb[3 * p] == b.rgb[3 * p] && a.rgb[3 * p + 1] == b.rgb[3 * p + 1] &&
+                                   a.rgb[3 * p + 2] == b.rgb[3 * p + 2];
             if (hidden[p]) {
                 ++hidden_count;
-                EXPECT_EQ(a.ids[p], 0);
+                unmasked += a.ids[p] != 0 || (a.rgb[3 * p] | a.rgb[3 * p + 1] | a.rgb[3 * p + 2]) != 0;
                 continue;
             }
-            differing += a.ids[p] != b.ids[p] || a.rgb[3 * p] != b.rgb[3 * p] || a.rgb[3 * p + 1] != b.rgb[3 * p + 1] ||
-                         a.rgb[3 * p + 2] != b.rgb[3 * p + 2];
+            // Multisampled, an id at the mask's edge may resolve otherwise: a
+            // tie between two ids is broken by the 3 x 3 block around the
+            // pixel, which holds hidden pixels (docs/accuracy.md).
+            differing += !rgb_equal || (v.samples == 1 && a.ids[p] != b.ids[p]);
         }
-        EXPECT_EQ(differing, 0);
+        EXPECT_EQ(unmasked, 0) << v.samples;
+        EXPECT_EQ(differing, 0) << v.samples;
         // Every pixel of a closed room takes at least one colour fragment
-        // unmasked; masked, the hidden ones take none.
-        std::printf("  colour fragments: masked %ld, unmasked %ld, hidden pixels %ld\n", ms.colour_fragments,
-                    os.colour_fragments, hidden_count);
+        // (sample) unmasked; masked, the hidden ones take none.
+        std::printf("  samples %d: colour fragments masked %ld, unmasked %ld, hidden pixels %ld\n", v.samples,
+                    ms.colour_fragments, os.colour_fragments, hidden_count);
         EXPECT_GT(hidden_count, 0);
-        EXPECT_LE(ms.colour_fragments, os.colour_fragments - hidden_count);
+        EXPECT_LE(ms.colour_fragments, os.colour_fragments - v.samples * hidden_count);
         EXPECT_EQ(ms.portal_passes_drawn, os.portal_passes_drawn);
     }
 }
