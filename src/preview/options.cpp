@@ -164,6 +164,9 @@ PreviewOptions parse_preview_options(const std::vector<std::string>& args, bool*
     cli::check_headset_combinations(a);
     apply_options(kPreviewOptions, a, o);
     if (o.hmd) cli::apply_hmd_profile(*o.hmd, o.frame, a.value("--size").has_value(), a.value("--ipd").has_value());
+    if (o.frame.eye_width > 4096 || o.frame.eye_height > 4096)
+        throw InputError("--hmd: " + *o.hmd +
+                         "'s eye size is larger than a window can be (at most 4096x4096 per eye; give --size)");
     return o;
 }
 
