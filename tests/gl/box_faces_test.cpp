@@ -118,9 +118,13 @@ TEST(BoxFaces, EveryStereoClipDepthSampleAndPortalTextureModeDrawsTheSameImage) 
 }
 
 TEST(BoxFaces, EveryExampleLayoutWithBoxesDrawsTheSameImageMirrorsIncluded) {
-    for (const char* name : {"default.json", "corridor_wall.json", "four_rooms.json", "glass_gallery.json",
-                             "mirror_hall.json", "mirror_lamp.json", "rotated.json", "scanner_lab.json",
-                             "three_kinds.json", "tinted_window.json", "tunnel.json", "window_pair.json"}) {
+    // Every example layout with box props (in sliding_box.json the box moves:
+    // a dynamic object, drawn as before).
+    for (const char* name :
+         {"corridor.json", "corridor_wall.json", "crossing.json", "default.json", "four_rooms.json",
+          "glass_gallery.json", "hands_door.json", "lamp_hall.json", "mirror_hall.json", "mirror_lamp.json",
+          "rotated.json", "scanner_lab.json", "sliding_box.json", "spot_corridor.json", "three_kinds.json",
+          "tinted_window.json", "tunnel.json", "vr_study.json", "window_pair.json"}) {
         const layout::Layout l = testing::example_layout(name);
         auto r = bf_renderer(l);
         ASSERT_TRUE(r) << name;
@@ -137,7 +141,10 @@ TEST(BoxFaces, EveryExampleLayoutWithBoxesDrawsTheSameImageMirrorsIncluded) {
             with += a;
             without += b;
         }
-        EXPECT_LT(with, without) << name;
+        // Mirrors' views too: their boxes are seen by reflected eyes.
+        if (std::string(name) != "sliding_box.json") {
+            EXPECT_LT(with, without) << name;
+        }
     }
 }
 
