@@ -161,18 +161,27 @@ TEST_F(BenchCli, ClosedPortalsAndDepthSweep) {
     EXPECT_EQ(d["configs"][1]["portal_fills"].get<double>(), 1.0);
 
     // Scene triangles: 10 extra boxes on the floor add 12 triangles each to
-    // the head's room, drawn for both eyes.
+    // the head's room, drawn for both eyes, with every face ("N/all-faces").
+    // By default the faces no eye sees from the front are left out.
     // "10/all" draws the same boxes without per-object culling: here all ten
-    // are in view, so the counts agree; the image, and so the error, too.
-    // "10/separate" draws them with a draw per run instead of a multi-draw.
-    ASSERT_EQ(run(std::string(kQuick) + " --portals 0 --sweep boxes:0,10,10/all,10/separate --json b.json").status, 0);
+    // are in view, so the counts agree with every face; the image, and so the
+    // error, too. "10/separate" draws them with a draw per run instead of a
+    // multi-draw.
+    ASSERT_EQ(run(std::string(kQuick) +
+                  " --portals 0 --sweep boxes:0,0/all-faces,10,10/all,10/separate,10/all-faces --json b.json")
+                  .status,
+              0);
     const nlohmann::json b = json("b.json");
-    ASSERT_EQ(b["configs"].size(), 5u);
-    EXPECT_EQ(b["configs"][2]["triangles"].get<double>() - b["configs"][1]["triangles"].get<double>(), 10 * 12 * 2);
-    EXPECT_EQ(b["configs"][3]["name"], "boxes=10/all");
-    EXPECT_EQ(b["configs"][3]["triangles"].get<double>(), b["configs"][2]["triangles"].get<double>());
-    EXPECT_EQ(b["configs"][4]["name"], "boxes=10/separate");
-    EXPECT_EQ(b["configs"][4]["triangles"].get<double>(), b["configs"][2]["triangles"].get<double>());
+    ASSERT_EQ(b["configs"].size(), 7u);
+    const auto triangles = [&](int c) { return b["configs"][c]["triangles"].get<double>(); };
+    EXPECT_EQ(b["configs"][6]["name"], "boxes=10/all-faces");
+    EXPECT_EQ(triangles(6) - triangles(2), 10 * 12 * 2);
+    EXPECT_GT(triangles(3) - triangles(1), 0.0);
+    EXPECT_LT(triangles(3) - triangles(1), 10 * 12 * 2);  // without their back faces
+    EXPECT_EQ(b["configs"][4]["name"], "boxes=10/all");
+    EXPECT_EQ(triangles(4), triangles(6));
+    EXPECT_EQ(b["configs"][5]["name"], "boxes=10/separate");
+    EXPECT_EQ(triangles(5), triangles(3));
     EXPECT_EQ(run(std::string(kQuick) + " --sweep boxes:10/bogus").status, 1);
 }
 
