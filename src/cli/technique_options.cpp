@@ -1,8 +1,15 @@
 #include "cli/technique_options.hpp"
 
+#include "cli/args.hpp"
 #include "cli/errors.hpp"
 
 namespace impossible::cli {
+
+double parse_portal_texture(const std::string& name, const std::string& text) {
+    const double scale = parse_number(name, text);
+    if (!(scale > 0.0 && scale <= 4.0)) throw InputError(name + ": " + text + " is not in (0, 4]");
+    return scale;
+}
 
 Technique parse_technique(const std::string& name, const std::string& text) {
     if (text == "stencil") return Technique::Stencil;

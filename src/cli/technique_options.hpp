@@ -16,6 +16,9 @@ enum class Technique {
     ZClear,   // the PowerVR scheme: depth 1, doors only
 };
 
+// --portal-texture's value: a scale in (0, 4]; InputError naming the option.
+double parse_portal_texture(const std::string& name, const std::string& text);
+
 // --technique's value; InputError naming the option if it is none of them.
 Technique parse_technique(const std::string& name, const std::string& text);
 

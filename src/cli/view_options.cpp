@@ -48,12 +48,6 @@ render::DepthMode parse_depth(const OptionValue& v) {
     throw InputError(v.name + ": '" + v.text + "' is not reversed-z or standard");
 }
 
-double parse_portal_texture(const OptionValue& v) {
-    const double scale = parse_number(v.name, v.text);
-    if (!(scale > 0.0 && scale <= 4.0)) throw InputError(v.name + ": " + v.text + " is not in (0, 4]");
-    return scale;
-}
-
 // In the order of the help and of the checks (the first bad value in this
 // order is the one reported).
 constexpr Option<ViewOptions> kViewOptions[] = {
@@ -123,7 +117,7 @@ constexpr Option<ViewOptions> kViewOptions[] = {
     {"--portal-texture", "SCALE",
      "render-to-texture portals (the classic technique, for comparison):\n"
      "each portal's view at SCALE x the eye size, e.g. 0.25, 0.5, 1",
-     [](ViewOptions& o, const OptionValue& v) { o.frame.portal_texture_scale = parse_portal_texture(v); }},
+     [](ViewOptions& o, const OptionValue& v) { o.frame.portal_texture_scale = parse_portal_texture(v.name, v.text); }},
     {"--technique", "NAME",
      "stencil (default), hybrid (textures from --texture-from-level on)\n"
      "or z-clear (depth 1, doors only); docs/cli.md",

@@ -105,6 +105,14 @@ constexpr Option<PreviewOptions> kPreviewOptions[] = {
      [](PreviewOptions& o, const OptionValue& v) { o.frame.clip = parse_clip(v.text); }},
     {"--no-cull", nullptr, "draw every portal and prop without per-eye culling and scissor",
      [](PreviewOptions& o, const OptionValue&) { o.frame.cull_portals = false; }},
+    {"--portal-texture", "SCALE", "hybrid: the textures' scale of the eye size, as 'render'",
+     [](PreviewOptions& o, const OptionValue& v) {
+         o.frame.portal_texture_scale = cli::parse_portal_texture(v.name, v.text);
+     }},
+    {"--technique", "NAME", "stencil (default), hybrid or z-clear, as 'render'",
+     [](PreviewOptions& o, const OptionValue& v) { o.technique = cli::parse_technique(v.name, v.text); }},
+    {"--texture-from-level", "K", "hybrid: the level whose doors take textures (default 0)",
+     [](PreviewOptions& o, const OptionValue& v) { o.texture_from_level = parse_int(v.name, v.text, 0, 250); }},
     {"--samples", "N",
      "multisampling: 1 (default), 2, 4, 8 or 16 samples per pixel (the\n"
      "counts the driver offers; llvmpipe: 4)",
@@ -163,6 +171,7 @@ PreviewOptions parse_preview_options(const std::vector<std::string>& args, bool*
     if (a.value("--fps") && !a.value("--path")) throw UsageError("--fps needs --path FILE");
     cli::check_headset_combinations(a);
     apply_options(kPreviewOptions, a, o);
+    cli::resolve_technique(o.technique, o.texture_from_level, o.frame);
     if (o.hmd) cli::apply_hmd_profile(*o.hmd, o.frame, a.value("--size").has_value(), a.value("--ipd").has_value());
     if (o.frame.eye_width > 4096 || o.frame.eye_height > 4096)
         throw InputError("--hmd: " + *o.hmd +

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cli/args.hpp"
+#include "cli/technique_options.hpp"
 #include "render/frame.hpp"
 
 namespace impossible::preview {
@@ -33,6 +34,10 @@ struct PreviewOptions {
     std::optional<double> fps;               // --fps: frame k of --path is at time k / fps
     std::optional<std::string> screenshots;  // --screenshots DIR: every frame saved
     std::optional<long> frames;              // --frames N: quit after N frames
+    // --technique and --texture-from-level as given (cli/technique_options.hpp),
+    // put into frame with --portal-texture by parse_preview_options.
+    std::optional<cli::Technique> technique;
+    std::optional<int> texture_from_level;
     bool hud = true;
     bool minimap = true;
     bool vsync = true;

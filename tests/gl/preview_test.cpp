@@ -314,6 +314,34 @@ TEST_F(Preview, MaterialsMatchRender) {
               testing::read_png_ok((dir_ / "r-ids.png").string()).data);
 }
 
+// --technique in the window: the same frame as `render` with it, which is
+// not the stencil frame (a half-size texture blurs the view through the
+// door; z-clear at depth 1 shows the corridor's fill one door deep).
+TEST_F(Preview, TechniquesMatchRender) {
+    const Xvfb x;
+    ASSERT_FALSE(x.display.empty()) << x.error;
+    const std::string layout = q(fs::path(IMPOSSIBLE_SOURCE_DIR) / "layouts/corridor.json");
+    const ProgramRun plain = run_program("", "render " + layout + " --size 80x60 --out " + q(dir_ / "plain.png"), dir_);
+    ASSERT_EQ(plain.status, 0) << plain.err;
+    int k = 0;
+    for (const std::string technique :
+         {"--technique hybrid --portal-texture 0.5", "--technique z-clear --max-depth 1"}) {
+        const std::string shots = "s" + std::to_string(k), out = "r" + std::to_string(k++) + ".png";
+        const ProgramRun preview =
+            run_program("DISPLAY=" + x.display,
+                        "preview " + layout + " " + technique + " --frames 1 --no-vsync --size 80x60 --screenshots " +
+                            q(dir_ / shots),
+                        dir_);
+        ASSERT_EQ(preview.status, 0) << technique << preview.err;
+        const ProgramRun render =
+            run_program("", "render " + layout + " " + technique + " --size 80x60 --out " + q(dir_ / out), dir_);
+        ASSERT_EQ(render.status, 0) << technique << render.err;
+        const image::Pixels rendered = testing::read_png_ok((dir_ / out).string());
+        EXPECT_EQ(testing::read_png_ok((dir_ / shots / "frame-0000.png").string()).data, rendered.data) << technique;
+        EXPECT_NE(rendered.data, testing::read_png_ok((dir_ / "plain.png").string()).data) << technique;
+    }
+}
+
 TEST_F(Preview, WithoutADisplayFailsWithOneLine) {
     const ProgramRun r = run_program("-u DISPLAY -u WAYLAND_DISPLAY", "preview --frames 1", dir_);
     EXPECT_EQ(r.status, 1);

@@ -1,7 +1,8 @@
-// --technique and --texture-from-level (cli.md, "Portal techniques"): bad
-// values are one line naming the option (exit 1), wrong combinations usage
-// errors (exit 2), z-clear's rules refused with the option named, and
-// nothing written; trace accepts and ignores them.
+// --technique and --texture-from-level (cli.md, "Portal techniques") of
+// render, trace, bench and preview: bad values are one line naming the
+// option (exit 1), wrong combinations usage errors (exit 2), z-clear's rules
+// refused with the option named, and nothing written; trace accepts and
+// ignores them.
 #include <string>
 
 #include "hostile/hostile_util.hpp"
@@ -27,6 +28,12 @@ TEST_F(Hostile, TechniqueValuesAreChecked) {
                        "--portal-texture needs --technique hybrid");
         EXPECT_EQ(listing(dir_), "lay.json\n") << command;
     }
+    // preview takes them too, checked before any window opens.
+    expect_refused(run("$BIN preview lay.json --technique portal"), 1,
+                   "--technique: 'portal' is not stencil, hybrid or z-clear");
+    expect_refused(run("$BIN preview lay.json --texture-from-level 1"), 2,
+                   "--texture-from-level needs --technique hybrid");
+    expect_refused(run("$BIN preview lay.json --portal-texture 9"), 1, "--portal-texture: 9 is not in (0, 4]");
 }
 
 TEST_F(Hostile, ZClearRefusesWhatItCannotDraw) {
