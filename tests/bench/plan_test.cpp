@@ -1,8 +1,10 @@
 // keep_first_portals: closing portals for the bench's portal sweep keeps
-// pairs whole, mirrors (which have no target) and renumbers targets.
+// pairs whole, mirrors (which have no target) and renumbers targets; the
+// sweep's N/all-steps item draws every door pass.
 #include <gtest/gtest.h>
 
 #include "bench/plan.hpp"
+#include "cli/errors.hpp"
 
 namespace impossible::bench {
 namespace {
@@ -38,6 +40,31 @@ TEST(BenchPlan, KeepFirstPortalsKeepsMirrorsAndWholePairs) {
     for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(all.portals[i].target, l.portals[i].target);
     // None.
     EXPECT_TRUE(keep_first_portals(l, 0).portals.empty());
+}
+
+// "N/all-steps" keeps the same N portals with every door pass
+// (FrameDesc::portal_steps off), beside "N" with the cheaper steps.
+TEST(BenchPlan, AllStepsItemDrawsEveryDoorPass) {
+    layout::Layout l;
+    l.rooms.resize(1);
+    l.rooms[0].min = {-2, 0, -2};
+    l.rooms[0].max = {2, 3, 2};
+    l.start.room = 0;
+    l.start.position = {0, 1.6, 0};
+    using layout::PortalKind;
+    l.portals = {portal("a", 1, PortalKind::Door), portal("b", 0, PortalKind::Door)};
+    BenchOptions o;
+    o.sweep = "portals:0,2,2/all-steps";
+    const BenchPlan plan = plan_bench(l, o);
+    ASSERT_EQ(plan.configs.size(), 4u);  // base + 3
+    EXPECT_EQ(plan.configs[2].name, "portals=2");
+    EXPECT_TRUE(plan.configs[2].frame.portal_steps);
+    EXPECT_EQ(plan.configs[3].name, "portals=2/all-steps");
+    EXPECT_FALSE(plan.configs[3].frame.portal_steps);
+    EXPECT_EQ(plan.layouts[plan.configs[3].layout_variant].portals.size(), 2u);
+    EXPECT_TRUE(plan.layouts[plan.configs[1].layout_variant].portals.empty());
+    o.sweep = "portals:2/some-steps";
+    EXPECT_THROW(plan_bench(l, o), cli::InputError);
 }
 
 }  // namespace
