@@ -53,6 +53,11 @@ a face one pixel thin that differs unlit too, or an isolated pixel, and
 where the pixels the maps leave alone reach 50 dB, is a "shadow" case: the
 licensed approximation of props' shadows (docs/lighting.md, "Shadows").
 
+--headset draws every case through a random headset profile (--hmd,
+docs/headsets.md) instead of its --fov: each eye's asymmetric angles (each
+0.6-1.3 times the case's half field of view) and, in three cases of four, a
+random star-shaped visible area; hidden pixels are black with id 0 in both.
+
     tools/diff_fuzz.py --binary build/impossible --seed 1 --cases 300
     tools/diff_fuzz.py --binary build/impossible --seed 1 --case 17 --keep /tmp/case17
     tools/diff_fuzz.py --binary build/impossible --seed 1 --cases 100 --kinds glass
@@ -920,7 +925,40 @@ LIT_MIN_PSNR_NO_PROPS = 50.0
 LIT_MIN_PSNR_PROPS = 40.0
 
 
-def run_case(binary, seed, number, size, keep, extra, kinds=DEFAULT_KINDS, lit=False):
+def headset_profile(seed, number, fov):
+    """--headset: a random headset profile (docs/headsets.md) for the case,
+    from its own generator (the layout and pose stay those of the case):
+    each eye's asymmetric angles about the case's field of view, and, in
+    three cases of four, a random star-shaped visible area."""
+    r = random.Random(seed * 7_000_013 + number)
+    half = fov / 2.0
+
+    def angles():
+        return {"left": round(-half * r.uniform(0.6, 1.3), 4), "right": round(half * r.uniform(0.6, 1.3), 4),
+                "up": round(half * r.uniform(0.6, 1.3), 4), "down": round(-half * r.uniform(0.6, 1.3), 4)}
+
+    def area():
+        cx, cy, corners = r.uniform(0.35, 0.65), r.uniform(0.35, 0.65), r.randint(3, 40)
+        out = []
+        for k in range(corners):
+            # Star-shaped about (cx, cy), each corner within the image: simple.
+            a = 2 * math.pi * k / corners
+            dx, dy = math.cos(a), math.sin(a)
+            reach = min((1 - cx) / dx if dx > 1e-9 else -cx / dx if dx < -1e-9 else 9,
+                        (1 - cy) / dy if dy > 1e-9 else -cy / dy if dy < -1e-9 else 9)
+            rad = min(r.uniform(0.25, 0.75), reach)
+            out.append([round(cx + rad * dx, 5), round(cy + rad * dy, 5)])
+        return out
+
+    eyes = {}
+    for eye in ("left", "right"):
+        eyes[eye] = {"fov": angles(), "resolution": [16, 16]}
+        if r.random() < 0.75:
+            eyes[eye]["visible_area"] = area()
+    return dict({"name": "diff_fuzz", "source": "random"}, **eyes)
+
+
+def run_case(binary, seed, number, size, keep, extra, kinds=DEFAULT_KINDS, lit=False, headset=False):
     case = Case(seed, number, kinds)
     work = keep or tempfile.mkdtemp(prefix="diff-fuzz-")
     os.makedirs(work, exist_ok=True)
@@ -929,6 +967,12 @@ def run_case(binary, seed, number, size, keep, extra, kinds=DEFAULT_KINDS, lit=F
         json.dump(case.layout(lit), f, indent=1)
     base = os.path.join(work, "case-%d-%d" % (seed, number))
     view = case.view_args(size) + extra
+    if headset:
+        # The case's --fov replaced by a profile (--size stays; the IPD is 0.064 as before).
+        with open(base + "-hmd.json", "w") as f:
+            json.dump(headset_profile(seed, number, case.fov), f)
+        at = view.index("--fov")
+        view[at:at + 2] = ["--hmd", base + "-hmd.json"]
     render = [binary, "render", layout_path] + view + ["--out", base + "-r.png", "--ids", base + "-r-ids.png"]
     trace = [binary, "trace", layout_path] + view + ["--threads", "1", "--out", base + "-t.png", "--ids", base + "-t-ids.png"]
     compare = [binary, "compare", base + "-r.png", base + "-t.png", "--ids-a", base + "-r-ids.png",
@@ -974,7 +1018,8 @@ def run_case(binary, seed, number, size, keep, extra, kinds=DEFAULT_KINDS, lit=F
     if status == "fail" and case.near_plane_note() and not extra:
         result["near"] = case.near_plane_note()
     if not keep:
-        for suffix in ("-r.png", "-r-ids.png", "-t.png", "-t-ids.png", "-s.png", "-u.json", "-ur.png", "-ut.png"):
+        for suffix in ("-r.png", "-r-ids.png", "-t.png", "-t-ids.png", "-s.png", "-u.json", "-ur.png", "-ut.png",
+                       "-hmd.json"):
             try:
                 os.remove(base + suffix)
             except OSError:
@@ -1002,17 +1047,22 @@ def main():
     ap.add_argument("--lit", action="store_true",
                     help='make every case lit ("lighting": "lights", random lights and light depth) and compare colours'
                          " too: interior PSNR >= %.0f dB, %.0f dB with props" % (LIT_MIN_PSNR_NO_PROPS, LIT_MIN_PSNR_PROPS))
+    ap.add_argument("--headset", action="store_true",
+                    help="draw every case through a random headset profile (--hmd: asymmetric angles per eye and,"
+                         " in three cases of four, a random visible area; docs/headsets.md)")
     ap.add_argument("extra", nargs="*", help="more options for render and trace (after --)")
     a = ap.parse_args()
     kinds = a.kinds.split(",")
     if not kinds or any(k not in KINDS for k in kinds):
         ap.error("--kinds: %s: the kinds are %s" % (a.kinds, ", ".join(KINDS)))
     # The kinds select each case's layout: a case is reproduced with the same list.
-    kinds_arg = ("" if kinds == DEFAULT_KINDS else " --kinds " + ",".join(kinds)) + (" --lit" if a.lit else "")
+    kinds_arg = ("" if kinds == DEFAULT_KINDS else " --kinds " + ",".join(kinds)) + (" --lit" if a.lit else "") + (
+        " --headset" if a.headset else "")
     numbers = [a.case] if a.case is not None else list(range(a.first, a.first + a.cases))
     results = []
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, a.jobs)) as pool:
-        futures = [pool.submit(run_case, a.binary, a.seed, n, a.size, a.keep, a.extra, kinds, a.lit) for n in numbers]
+        futures = [pool.submit(run_case, a.binary, a.seed, n, a.size, a.keep, a.extra, kinds, a.lit, a.headset)
+                   for n in numbers]
         for fut in futures:
             res = fut.result()
             results.append(res)
