@@ -51,6 +51,10 @@ render lamp_hall-annex lamp_hall.json --room annex --pose 1.9,2.0,0.0,90,-35,0
 render mirror_lamp mirror_lamp.json
 render tinted_window tinted_window.json --room greenhouse --pose 5.2,1.7,0.4,80,-20,0
 render spot_corridor spot_corridor.json --room corridor --pose 0,1.6,1.5,0,-12,0
+# A headset profile (issue 24): the HTC Vive's asymmetric frusta and its
+# hidden area, black, at a size of the Vive's aspect.
+"$bin" render "$root/layouts/four_rooms.json" --hmd "$root/profiles/htc-vive.json" --size 360x400 \
+  --out "$out/headset-vive.png"
 
 # The preview window (HUD, minimap, boundary grid) at the end of a scripted walk
 # into the tunnel, on a private X server. Only the HUD's frame time varies
