@@ -102,6 +102,37 @@ private:
     std::shared_ptr<const LayoutData> data_;
 };
 
+// An eye's field of view as OpenXR's XrFovf: degrees from the eye's view
+// axis, left and down negative (`--fov-angles`, docs/headsets.md). Each
+// within ±89.5; right at least 1 degree right of left, up 1 above down.
+struct FovAngles {
+    double left = -45, right = 45, up = 45, down = -45;
+};
+
+// One eye of a headset: its asymmetric field of view, and the part of its
+// image the lenses show.
+struct EyeOptics {
+    FovAngles fov;
+    // The visible area: a simple polygon of 3..4096 corners (u, v), u from 0
+    // at the image's left edge to 1 at its right, v from 0 at the top to 1 at
+    // the bottom. Pixels whose centre lies outside it are masked (black, id
+    // 0) by both the renderer and the tracer. Empty: every pixel is visible.
+    std::vector<std::array<double, 2>> visible_area;
+};
+
+// A headset profile (`--hmd FILE.json`, docs/headsets.md).
+struct HmdProfile {
+    std::string name;
+    std::string source;  // where its numbers come from
+    double ipd = 0.064;
+    int eye_width = 0, eye_height = 0;  // each eye's image
+    std::array<EyeOptics, 2> eyes;      // left, right
+};
+
+// Reads and checks a profile; a bad one is an Error "FILE:LINE:COLUMN:
+// field: message", as a layout's.
+Expected<HmdProfile> load_hmd_profile(const std::string& path);
+
 // One stereo view: where the head is and how it is drawn. The defaults are
 // those of `impossible render`.
 struct View {
@@ -124,7 +155,15 @@ struct View {
     // the layout's light_depth (as `render --light-depth`); none: the
     // layout's. No effect on a "fixed" layout.
     std::optional<int> light_depth;
+    // Each eye's optics, left then right (as `--fov-angles` or `--hmd`): the
+    // eyes' frusta are these angles (fov_deg is not read) and each eye's
+    // hidden area is masked; none: symmetric frusta of fov_deg.
+    std::optional<std::array<EyeOptics, 2>> eye_optics;
 };
+
+// The view through a headset, as `render --hmd FILE` without --size and
+// --ipd: the profile's optics, eye size and IPD.
+void use_hmd_profile(View& view, const HmdProfile& profile);
 
 // Counters of a rasterised frame (render --stats).
 struct FrameStats {

@@ -24,6 +24,14 @@ inline Pose to_pose(const math::HeadPose& h) {
     return {h.position.x, h.position.y, h.position.z, h.yaw_deg, h.pitch_deg, h.roll_deg};
 }
 
+inline math::FovAngles to_fov(const FovAngles& f) { return {f.left, f.right, f.up, f.down}; }
+inline math::Polygon2 to_polygon(const std::vector<std::array<double, 2>>& corners) {
+    math::Polygon2 poly;
+    poly.reserve(corners.size());
+    for (const std::array<double, 2>& c : corners) poly.emplace_back(c[0], c[1]);
+    return poly;
+}
+
 // The view as the renderer and tracer take it: the head and its room
 // resolved as `render` does (a pose in no room or in several needs a room),
 // sizes and numbers checked as the CLI checks them.

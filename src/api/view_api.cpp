@@ -4,6 +4,8 @@
 
 #include "api/api_data.hpp"
 #include "base/format.hpp"
+#include "layout/hmd_profile.hpp"
+#include "math/polygon.hpp"
 
 namespace impossible::api {
 
@@ -13,6 +15,26 @@ bool finite_pose(const Pose& p) {
     for (double v : {p.x, p.y, p.z, p.yaw, p.pitch, p.roll})
         if (!std::isfinite(v)) return false;
     return true;
+}
+
+// What is wrong with one eye's optics (the profile's rules,
+// docs/headsets.md), or nothing.
+std::string optics_problem(const EyeOptics& eye, const char* name) {
+    const std::string at = std::string(name) + " eye: ";
+    if (const std::optional<std::string> problem = layout::fov_angles_problem(to_fov(eye.fov)))
+        return at + "fov: " + *problem;
+    const std::size_t corners = eye.visible_area.size();
+    if (corners == 0) return {};
+    if (corners < 3 || corners > layout::kMaxVisibleAreaCorners)
+        return at + "visible_area has " + std::to_string(corners) + " corners, not 3.." +
+               std::to_string(layout::kMaxVisibleAreaCorners);
+    for (std::size_t k = 0; k < corners; ++k)
+        for (double c : eye.visible_area[k])
+            if (!(c >= 0.0 && c <= 1.0)) return at + "visible_area[" + std::to_string(k) + "] is not within 0..1";
+    if (const std::optional<math::PolygonProblem> problem = math::simple_polygon_problem(to_polygon(eye.visible_area)))
+        return at + "visible_area[" + std::to_string(problem->corner) +
+               "]: the visible area must be a simple polygon: " + problem->message;
+    return {};
 }
 
 // The ranges of the view options (docs/cli.md).
@@ -33,6 +55,10 @@ std::string range_problem(const View& v) {
     if (v.pose && !finite_pose(*v.pose)) return "the pose holds a number that is not finite";
     if (v.hands && !(finite_pose((*v.hands)[0]) && finite_pose((*v.hands)[1])))
         return "the hands hold a number that is not finite";
+    if (v.eye_optics)
+        for (std::size_t e = 0; e < 2; ++e)
+            if (std::string problem = optics_problem((*v.eye_optics)[e], e == 0 ? "left" : "right"); !problem.empty())
+                return problem;
     return {};
 }
 
@@ -58,6 +84,12 @@ Result<math::View> resolve_view(const layout::Layout& layout, const View& view) 
     v.max_depth = view.max_depth;
     v.time = view.time;
     v.light_depth = view.light_depth;
+    if (view.eye_optics) {
+        std::array<math::EyeOptics, 2> eyes;
+        for (std::size_t e = 0; e < 2; ++e)
+            eyes[e] = {to_fov((*view.eye_optics)[e].fov), to_polygon((*view.eye_optics)[e].visible_area)};
+        v.eye_optics = eyes;
+    }
     if (view.hands)
         v.hands = std::array<math::HeadPose, 2>{to_head_pose((*view.hands)[0]), to_head_pose((*view.hands)[1])};
     if (view.pose) {
