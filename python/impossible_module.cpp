@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -116,12 +117,103 @@ api::Backend backend_of(const std::string& name) {
     raise(PyExc_ValueError, "backend must be 'egl', 'osmesa' or 'any', not '" + name + "'");
 }
 
+std::string path_string(py::handle path) { return py::module_::import("os").attr("fspath")(path).cast<std::string>(); }
+
 // What every frame of a renderer shares: size, samples, eyes.
 struct ViewBase {
     std::pair<int, int> size{1280, 720};
     int samples = 1;
     double ipd = 0.064, fov = 90;
+    std::optional<std::array<api::EyeOptics, 2>> eye_optics;  // fov_angles=, hmd=
 };
+
+std::vector<double> numbers_of(py::handle value, const char* what, const std::string& expected) {
+    if (py::isinstance<py::str>(value) || !py::isinstance<py::sequence>(value))
+        raise(PyExc_TypeError, std::string(what) + ": expected " + expected);
+    std::vector<double> out;
+    for (py::handle n : py::reinterpret_borrow<py::sequence>(value)) {
+        try {
+            out.push_back(n.cast<double>());
+        } catch (const py::cast_error&) {
+            raise(PyExc_TypeError, std::string(what) + ": expected " + expected);
+        }
+    }
+    return out;
+}
+
+// fov_angles: (left, right, up, down) in degrees, both eyes mirrored, or 8
+// numbers, the left eye's then the right eye's (--fov-angles).
+std::array<api::EyeOptics, 2> optics_of(py::handle angles) {
+    const std::vector<double> n = numbers_of(angles, "fov_angles", "4 or 8 numbers (left, right, up, down)");
+    if (n.size() != 4 && n.size() != 8)
+        raise(PyExc_ValueError,
+              "fov_angles: expected 4 or 8 numbers (left, right, up, down), got " + std::to_string(n.size()));
+    std::array<api::EyeOptics, 2> eyes;
+    eyes[0].fov = {n[0], n[1], n[2], n[3]};
+    eyes[1].fov = n.size() == 8 ? api::FovAngles{n[4], n[5], n[6], n[7]} : api::FovAngles{-n[1], -n[0], n[2], n[3]};
+    return eyes;
+}
+
+// visible_area: (left, right), each a list of (u, v) corners or None.
+void visible_areas_of(py::handle areas, std::array<api::EyeOptics, 2>& eyes) {
+    const char* expected = "visible_area: expected two polygons, the left and the right eye's ([(u, v), ...] or None)";
+    if (py::isinstance<py::str>(areas) || !py::isinstance<py::sequence>(areas) || py::len(areas) != 2)
+        raise(PyExc_TypeError, expected);
+    const auto seq = py::reinterpret_borrow<py::sequence>(areas);
+    for (std::size_t e = 0; e < 2; ++e) {
+        if (seq[e].is_none()) continue;
+        if (py::isinstance<py::str>(seq[e]) || !py::isinstance<py::sequence>(seq[e])) raise(PyExc_TypeError, expected);
+        for (py::handle corner : py::reinterpret_borrow<py::sequence>(seq[e])) {
+            const std::vector<double> c = numbers_of(corner, "visible_area", "corners of 2 numbers (u, v)");
+            if (c.size() != 2) raise(PyExc_ValueError, "visible_area: expected corners of 2 numbers (u, v)");
+            eyes[e].visible_area.push_back({c[0], c[1]});
+        }
+    }
+}
+
+// The eyes of a renderer or a trace, with the CLI's rules: fov, fov_angles
+// and hmd exclude each other; hmd's size and IPD unless size or ipd is given.
+ViewBase base_of(py::handle size, int samples, py::handle ipd, py::handle fov, py::handle fov_angles,
+                 py::handle visible_area, py::handle hmd) {
+    if (!fov.is_none() && !fov_angles.is_none()) raise(PyExc_ValueError, "fov and fov_angles exclude each other");
+    if (!hmd.is_none() && !(fov.is_none() && fov_angles.is_none()))
+        raise(PyExc_ValueError, std::string(fov.is_none() ? "fov_angles" : "fov") +
+                                    " and hmd exclude each other (the profile gives each eye's angles)");
+    if (!visible_area.is_none() && fov_angles.is_none())
+        raise(PyExc_ValueError, "visible_area needs fov_angles (a profile has its own)");
+    ViewBase base;
+    base.samples = samples;
+    if (!hmd.is_none()) {
+        const api::HmdProfile profile = value_or_raise(api::load_hmd_profile(path_string(hmd)));
+        base.size = {profile.eye_width, profile.eye_height};
+        base.ipd = profile.ipd;
+        base.eye_optics = profile.eyes;
+    }
+    if (!fov_angles.is_none()) base.eye_optics = optics_of(fov_angles);
+    if (!visible_area.is_none()) visible_areas_of(visible_area, *base.eye_optics);
+    if (!size.is_none()) base.size = size.cast<std::pair<int, int>>();
+    if (!ipd.is_none()) base.ipd = ipd.cast<double>();
+    if (!fov.is_none()) base.fov = fov.cast<double>();
+    return base;
+}
+
+py::dict profile_dict(const api::HmdProfile& p) {
+    py::dict d;
+    d["name"] = p.name;
+    d["source"] = p.source;
+    d["ipd"] = p.ipd;
+    d["size"] = py::make_tuple(p.eye_width, p.eye_height);
+    py::list angles, areas;
+    for (const api::EyeOptics& eye : p.eyes) {
+        for (double a : {eye.fov.left, eye.fov.right, eye.fov.up, eye.fov.down}) angles.append(a);
+        py::list area;
+        for (const std::array<double, 2>& c : eye.visible_area) area.append(py::make_tuple(c[0], c[1]));
+        areas.append(area);
+    }
+    d["fov_angles"] = py::tuple(angles);
+    d["visible_area"] = py::tuple(areas);
+    return d;
+}
 
 // Two poses, the left and the right hand, each as `pose` (--hands).
 std::array<api::Pose, 2> hands_of(py::handle value, double limit = 1e7) {
@@ -144,6 +236,7 @@ api::View view_of(const ViewBase& base, py::handle pose, py::handle room, py::ha
     v.samples = base.samples;
     v.ipd = base.ipd;
     v.fov_deg = base.fov;
+    v.eye_optics = base.eye_optics;
     v.time = time;
     v.max_depth = max_depth;
     return v;
@@ -312,8 +405,6 @@ std::string generate(py::handle play_area, int rooms, long long seed, std::optio
     return value_or_raise(api::generate(request));
 }
 
-std::string path_string(py::handle path) { return py::module_::import("os").attr("fspath")(path).cast<std::string>(); }
-
 void bind_layout(py::module_& m) {
     py::class_<api::Layout>(m, "Layout", "A loaded, valid layout (impossible.load)")
         .def_property_readonly("source", &api::Layout::source)
@@ -342,12 +433,15 @@ void bind_layout(py::module_& m) {
 
 void bind_renderer(py::module_& m) {
     py::class_<PyRenderer>(m, "Renderer", "The OpenGL rasteriser for one layout, in a headless context of its own")
-        .def(py::init([](const api::Layout& layout, std::pair<int, int> size, int samples, const std::string& backend,
-                         double ipd, double fov) {
-                 return new PyRenderer(layout, {size, samples, ipd, fov}, backend);
+        .def(py::init([](const api::Layout& layout, py::handle size, int samples, const std::string& backend,
+                         py::handle ipd, py::handle fov, py::handle fov_angles, py::handle visible_area,
+                         py::handle hmd) {
+                 return new PyRenderer(layout, base_of(size, samples, ipd, fov, fov_angles, visible_area, hmd),
+                                       backend);
              }),
-             py::arg("layout"), py::arg("size") = std::pair<int, int>(1280, 720), py::arg("samples") = 1,
-             py::arg("backend") = "egl", py::arg("ipd") = 0.064, py::arg("fov") = 90.0)
+             py::arg("layout"), py::arg("size") = py::none(), py::arg("samples") = 1, py::arg("backend") = "egl",
+             py::arg("ipd") = py::none(), py::arg("fov") = py::none(), py::arg("fov_angles") = py::none(),
+             py::arg("visible_area") = py::none(), py::arg("hmd") = py::none())
         .def("render", &PyRenderer::render, py::arg("pose") = py::none(), py::arg("room") = py::none(),
              py::arg("hands") = py::none(), py::arg("time") = 0.0, py::arg("max_depth") = 8,
              py::arg("light_depth") = py::none())
@@ -359,15 +453,22 @@ void bind_renderer(py::module_& m) {
         .def_property_readonly("gl_renderer", &PyRenderer::gl_renderer);
     m.def(
         "trace",
-        [](const api::Layout& layout, std::pair<int, int> size, int samples, py::handle pose, py::handle room,
-           py::handle hands, double time, int max_depth, int threads, py::handle light_depth) {
-            return trace_frame(layout, view_of({size, samples}, pose, room, hands, time, max_depth, light_depth),
-                               threads);
+        [](const api::Layout& layout, py::handle size, int samples, py::handle pose, py::handle room, py::handle hands,
+           double time, int max_depth, int threads, py::handle light_depth, py::handle ipd, py::handle fov,
+           py::handle fov_angles, py::handle visible_area, py::handle hmd) {
+            const ViewBase base = base_of(size, samples, ipd, fov, fov_angles, visible_area, hmd);
+            return trace_frame(layout, view_of(base, pose, room, hands, time, max_depth, light_depth), threads);
         },
-        py::arg("layout"), py::arg("size") = std::pair<int, int>(1280, 720), py::arg("samples") = 1,
-        py::arg("pose") = py::none(), py::arg("room") = py::none(), py::arg("hands") = py::none(),
-        py::arg("time") = 0.0, py::arg("max_depth") = 8, py::arg("threads") = 0, py::arg("light_depth") = py::none(),
-        "The reference ray tracer (`impossible trace`); no GL context needed");
+        py::arg("layout"), py::arg("size") = py::none(), py::arg("samples") = 1, py::arg("pose") = py::none(),
+        py::arg("room") = py::none(), py::arg("hands") = py::none(), py::arg("time") = 0.0, py::arg("max_depth") = 8,
+        py::arg("threads") = 0, py::arg("light_depth") = py::none(), py::arg("ipd") = py::none(),
+        py::arg("fov") = py::none(), py::arg("fov_angles") = py::none(), py::arg("visible_area") = py::none(),
+        py::arg("hmd") = py::none(), "The reference ray tracer (`impossible trace`); no GL context needed");
+    m.def(
+        "load_hmd_profile",
+        [](py::handle path) { return profile_dict(value_or_raise(api::load_hmd_profile(path_string(path)))); },
+        py::arg("path"),
+        "A headset profile (`--hmd`) as a dict: name, source, ipd, size, fov_angles (8), visible_area (left, right)");
 }
 
 void bind_tools(py::module_& m) {
