@@ -154,6 +154,8 @@ std::vector<std::array<NdcRect, 2>> visible_portals(const DrawContext& ctx, cons
     return visible;
 }
 
+}  // namespace
+
 // The level's portal boxes into depth first, so that portals and surfaces
 // occlude each other, and the cell's surfaces behind a portal fail the depth
 // test instead of being drawn and then covered by the view through it; then
@@ -177,8 +179,6 @@ void draw_level_surfaces(const DrawContext& ctx, const LevelView& view, const st
     draw_cell_instances(ctx, view, scissor, view.cell, -1);
     draw_volume_rooms(ctx, view, scissor);
 }
-
-}  // namespace
 
 void draw_level(const DrawContext& ctx, const LevelView& view) {
     const RendererData& r = ctx.renderer;

@@ -15,6 +15,12 @@ namespace impossible::render {
 // cell that either eye can see, recursively.
 void draw_level(const DrawContext& ctx, const LevelView& view);
 
+// A level's portal boxes of `portals` visible in `visible` (per portal, the
+// eyes' rectangles) into depth, then the cell's surfaces, its objects'
+// instances and its volumes' rooms, before any portal is marked.
+void draw_level_surfaces(const DrawContext& ctx, const LevelView& view, const std::vector<int>& portals,
+                         const std::vector<std::array<NdcRect, 2>>& visible);
+
 // --- Shared by the stencil and the render-to-texture portals (portal_draw.cpp).
 
 // How a visible portal of a level is marked and unmarked (portal_steps.cpp).

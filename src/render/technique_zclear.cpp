@@ -85,22 +85,6 @@ void zclear_draw_target(const DrawContext& ctx, const LevelView& view, int p, co
     ctx.scratch.stats.max_level_reached = std::max(ctx.scratch.stats.max_level_reached, 1);
 }
 
-// The head's room over the targets: its doors into depth, then its surfaces,
-// instances and fills, as portal_recursion.cpp's draw_level_surfaces.
-void zclear_draw_own_room(const DrawContext& ctx, const LevelView& view, const std::vector<int>& portals,
-                          const std::vector<std::array<NdcRect, 2>>& visible) {
-    const SceneDraw depth{Pass::PortalDepth, 0, &cell_program(ctx, view.cell), std::nullopt};
-    for (size_t k = 0; k < portals.size(); ++k)
-        if (!visible[k][0].empty() || !visible[k][1].empty()) draw_portal_box(ctx, view, depth, portals[k], visible[k]);
-    const SceneProgram& shaded = cell_program(ctx, view.cell, light_flags(ctx));
-    set_eye_uniforms(ctx, view, shaded, {view.eyes[0].rect, view.eyes[1].rect});
-    set_cell_id(shaded, static_cast<unsigned>(view.cell + 1), false);
-    set_room_lights(ctx, shaded, view.cell, true);
-    const ColourQueryScope colour(ctx.profiler);
-    draw_cell(ctx, view, {Pass::Scene, 0, &shaded, std::nullopt});
-    draw_cell_instances(ctx, view, std::nullopt, view.cell, -1);
-}
-
 }  // namespace
 
 Result<void> check_zclear(const RendererData& r, const FrameDesc& frame) {
@@ -138,7 +122,10 @@ void draw_zclear(const DrawContext& ctx, const LevelView& view) {
         }
     }
     zclear_depth(ctx, std::nullopt);
-    zclear_draw_own_room(ctx, view, portals, visible);
+    // The head's room over the targets, as a level's surfaces (its doors into
+    // depth first; no stencil: the view's box bits are off, and the layout
+    // has no volumes).
+    draw_level_surfaces(ctx, view, portals, visible);
     for (size_t k : fills) draw_fill(ctx, view, portals[k], visible[k], 0);
 }
 
