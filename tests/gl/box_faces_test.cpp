@@ -16,27 +16,6 @@
 namespace impossible {
 namespace {
 
-// vr_study.json (six doors) with a grid of n small boxes of three heights on
-// every room's floor.
-layout::Layout bf_crowded(int n) {
-    layout::Layout l = testing::example_layout("vr_study.json");
-    const int side = static_cast<int>(std::ceil(std::sqrt(double(n))));
-    for (layout::Room& room : l.rooms) {
-        const glm::dvec3 extent = room.max - room.min;
-        const double size = 0.4 * std::min(extent.x, extent.z) / side;
-        for (int i = 0; i < n; ++i) {
-            layout::BoxProp box;
-            const double x = room.min.x + (i % side + 0.5) * extent.x / side;
-            const double z = room.min.z + (i / side + 0.5) * extent.z / side;
-            box.min = {x - 0.5 * size, room.min.y, z - 0.5 * size};
-            box.max = {x + 0.5 * size, room.min.y + (1 + i % 3) * size, z + 0.5 * size};
-            box.color = {0.3 + 0.1 * (i % 5), 0.5, 0.3 + 0.1 * (i % 3)};
-            room.props.push_back(box);
-        }
-    }
-    return l;
-}
-
 struct BfRenderer {
     std::optional<gl::Context> context;
     std::optional<render::Renderer> renderer;
@@ -71,7 +50,7 @@ std::pair<long, long> bf_compare(render::Renderer& renderer, render::FrameDesc f
 }
 
 TEST(BoxFaces, TheBoxesOfSixRoomsThroughDoorsTakeFarFewerTrianglesForTheSameImage) {
-    const layout::Layout l = bf_crowded(150);
+    const layout::Layout l = testing::crowded_vr_study(150);
     auto r = bf_renderer(l);
     ASSERT_TRUE(r);
     long with = 0, without = 0;
@@ -94,7 +73,7 @@ TEST(BoxFaces, TheBoxesOfSixRoomsThroughDoorsTakeFarFewerTrianglesForTheSameImag
 }
 
 TEST(BoxFaces, EveryStereoClipDepthSampleAndPortalTextureModeDrawsTheSameImage) {
-    const layout::Layout l = bf_crowded(60);
+    const layout::Layout l = testing::crowded_vr_study(60);
     auto r = bf_renderer(l);
     ASSERT_TRUE(r);
     for (int mode = 0; mode < 7; ++mode) {
@@ -212,7 +191,7 @@ TEST(BoxFaces, AFarBoxBetweenPixelCentresDrawsNoFaceWithOneSampleOnly) {
 }
 
 TEST(BoxFaces, TheFacesIndicesAreTheBoxPropsOwn) {
-    const layout::Layout l = bf_crowded(4);
+    const layout::Layout l = testing::crowded_vr_study(4);
     const scene::Scene s = scene::build_scene(l);
     int boxes = 0;
     for (const scene::CellObjects& cell : s.objects) {

@@ -32,12 +32,33 @@ inline layout::Layout layout_from_file(const std::string& path) {
     return r.layout ? *r.layout : layout::Layout{};
 }
 
-// Renders one frame in a fresh context of the given backend.
 // One of the example layouts in layouts/, by file name.
 inline layout::Layout example_layout(const char* name) {
     return layout_from_file(std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/" + name);
 }
 
+// vr_study.json (six doors) with a grid of n small boxes of three heights on
+// every room's floor (the culling and box-face tests).
+inline layout::Layout crowded_vr_study(int n) {
+    layout::Layout l = example_layout("vr_study.json");
+    const int side = static_cast<int>(std::ceil(std::sqrt(double(n))));
+    for (layout::Room& room : l.rooms) {
+        const glm::dvec3 extent = room.max - room.min;
+        const double size = 0.4 * std::min(extent.x, extent.z) / side;
+        for (int i = 0; i < n; ++i) {
+            layout::BoxProp box;
+            const double x = room.min.x + (i % side + 0.5) * extent.x / side;
+            const double z = room.min.z + (i / side + 0.5) * extent.z / side;
+            box.min = {x - 0.5 * size, room.min.y, z - 0.5 * size};
+            box.max = {x + 0.5 * size, room.min.y + (1 + i % 3) * size, z + 0.5 * size};
+            box.color = {0.3 + 0.1 * (i % 5), 0.5, 0.3};
+            room.props.push_back(box);
+        }
+    }
+    return l;
+}
+
+// Renders one frame in a fresh context of the given backend.
 inline image::Image render_once(gl::Backend backend, const layout::Layout& layout, const render::FrameDesc& frame,
                                 render::FrameStats* stats = nullptr) {
     Result<gl::Context> context = gl::create_context(backend);

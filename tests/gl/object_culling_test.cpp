@@ -13,28 +13,8 @@
 namespace impossible {
 namespace {
 
-// vr_study.json (six doors) with a grid of n small boxes on every room's floor.
-layout::Layout crowded(int n) {
-    layout::Layout l = testing::layout_from_file(std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/vr_study.json");
-    const int side = static_cast<int>(std::ceil(std::sqrt(double(n))));
-    for (layout::Room& room : l.rooms) {
-        const glm::dvec3 extent = room.max - room.min;
-        const double size = 0.4 * std::min(extent.x, extent.z) / side;
-        for (int i = 0; i < n; ++i) {
-            layout::BoxProp box;
-            const double x = room.min.x + (i % side + 0.5) * extent.x / side;
-            const double z = room.min.z + (i / side + 0.5) * extent.z / side;
-            box.min = {x - 0.5 * size, room.min.y, z - 0.5 * size};
-            box.max = {x + 0.5 * size, room.min.y + (1 + i % 3) * size, z + 0.5 * size};
-            box.color = {0.3 + 0.1 * (i % 5), 0.5, 0.3};
-            room.props.push_back(box);
-        }
-    }
-    return l;
-}
-
 TEST(ObjectCulling, SameImageWithFarFewerTrianglesThroughSixDoors) {
-    const layout::Layout l = crowded(150);
+    const layout::Layout l = testing::crowded_vr_study(150);
     Result<gl::Context> context = gl::create_context(gl::Backend::Egl);
     ASSERT_TRUE(context.has_value()) << context.error();
     Result<render::Renderer> renderer = render::Renderer::create(context->state(), scene::build_scene(l));
@@ -80,7 +60,7 @@ TEST(ObjectCulling, SameImageWithFarFewerTrianglesThroughSixDoors) {
 }
 
 TEST(ObjectCulling, ATreeOverManyObjectsKeepsEveryObjectOnceAndBoundsItsChildren) {
-    const scene::Scene s = scene::build_scene(crowded(1000));
+    const scene::Scene s = scene::build_scene(testing::crowded_vr_study(1000));
     for (const scene::CellObjects& cell : s.objects) {
         ASSERT_GE(cell.objects.size(), 1000u);
         std::vector<int> seen(cell.objects.size(), 0);
