@@ -80,9 +80,18 @@ std::vector<PortalSteps> portal_steps(const DrawContext& ctx, const LevelView& v
             reach[k] = steps_union(reach[k], eyes[k][e]);
         }
     const bool box_bit = has_box_bit(f.max_depth);
+    // Only the portals some eye sees take part: a level may hold thousands of
+    // culled ones, and the pairs below are quadratic in what is left.
+    // (An unseen one meets nothing: one draw, no unmark, as the loop gives.)
+    std::vector<size_t> seen;
     for (size_t k = 0; k < n; ++k) {
+        steps[k].one_draw_mark = box_bit;
+        steps[k].unmark = false;
+        if (!reach[k].empty) seen.push_back(k);
+    }
+    for (const size_t k : seen) {
         bool near_any = false, near_later = false;
-        for (size_t j = 0; j < n; ++j) {
+        for (const size_t j : seen) {
             if (j == k) continue;
             const bool near = steps_meet(eyes[k][0], eyes[j][0]) || steps_meet(eyes[k][1], eyes[j][1]);
             near_any = near_any || near;
