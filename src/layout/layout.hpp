@@ -25,7 +25,10 @@
 
 namespace impossible::layout {
 
-// Face order used everywhere (room colours, meshes, tracer hits).
+// Face order used everywhere (room colours, meshes, tracer hits): a box
+// room's six faces. A prism room (layout-format.md, "Rooms of any shape") has
+// floor and ceiling at the same indices and then its walls: face 2 + i is
+// wall i (room_shape.hpp, face_count).
 enum class Face : int { Floor = 0, Ceiling, NegX, PosX, NegZ, PosZ };
 inline constexpr int kFaceCount = 6;
 inline constexpr std::array<const char*, kFaceCount> kFaceNames = {"floor", "ceiling", "-x", "+x", "-z", "+z"};
@@ -129,14 +132,23 @@ inline const glm::dvec3 kDefaultAmbient{0.1, 0.1, 0.1};
 
 struct Room {
     std::string id;
+    // A box room's corners; a prism room's bounding box (its floor polygon's
+    // x and z range, its `y` range).
     glm::dvec3 min{0.0};
     glm::dvec3 max{0.0};
-    std::array<glm::dvec3, kFaceCount> face_color{};  // `color` with `face_colors` applied
-    double checker = 0.0;                             // 0: plain
+    // A prism room's floor polygon, corners [x, z] in file order (either
+    // winding; room_shape.hpp reads it); empty for a box room. A prism's
+    // floor is at min.y and its ceiling at max.y.
+    std::vector<glm::dvec2> floor;
+    // Per face, in face order (kFaceCount for a box, 2 + walls for a prism).
+    std::vector<glm::dvec3> face_color = std::vector<glm::dvec3>(kFaceCount);  // `color` with `face_colors` applied
+    double checker = 0.0;                                                      // 0: plain
     // `textures` with `all` applied: a face's image (null: none), multiplied
     // by its colour, one tile per texture_size metres from whole multiples of
-    // it in layout coordinates (room_texture_uv in shading.hpp orients it).
-    std::array<std::shared_ptr<const image::Pixels>, kFaceCount> face_texture{};  // RGBA
+    // it in layout coordinates (room_texture_uv in shading.hpp orients it);
+    // on a prism's wall tiles run along the wall (room_shape.hpp, wall_uv).
+    std::vector<std::shared_ptr<const image::Pixels>> face_texture =
+        std::vector<std::shared_ptr<const image::Pixels>>(kFaceCount);  // RGBA
     double texture_size = 1.0;
     std::vector<Prop> props;
     // Only under "lighting": "lights" (layout-format.md, "Lights").
@@ -160,8 +172,8 @@ struct Portal {
     PortalKind kind = PortalKind::Door;
     glm::dvec3 tint{1.0};      // mirrors and windows: multiplies the light through or back
     double reflectance = 0.1;  // windows: the reflection's share r
-    // The face of its room in which the rectangle cuts a hole (a Face as int),
-    // or -1 for a portal standing free in the room (layout-format.md, "The
+    // The face of its room in which the rectangle cuts a hole (a Face as int;
+    // for a prism room floor, ceiling or 2 + wall), or -1 for a portal standing free in the room (layout-format.md, "The
     // portal box"). The hole has exactly the rectangle's size.
     int hole_face = -1;
 };

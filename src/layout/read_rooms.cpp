@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <array>
 #include <map>
 #include <memory>
@@ -115,7 +116,7 @@ RoomDraft read_room(Checker& check, const Path& at, const json& value, assets::A
     if (const json* v = field(value, "color")) {
         if (const auto c = check.read_colour(at / "color", *v)) colour = *c;
     }
-    room.face_color.fill(colour);
+    std::fill(room.face_color.begin(), room.face_color.end(), colour);
     if (const json* v = field(value, "face_colors")) read_face_colors(check, at / "face_colors", *v, room);
     if (const json* v = field(value, "checker")) {
         if (const auto c = check.read_number(at / "checker", *v, NumberKind::Length)) room.checker = *c;

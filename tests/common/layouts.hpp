@@ -1,9 +1,13 @@
 // Rooms and portals built in code, shared by the test programs (no loader).
 #pragma once
 
+#include <algorithm>
 #include <string>
+#include <vector>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "layout/layout.hpp"
@@ -28,9 +32,34 @@ inline int add_room(layout::Layout& l, const std::string& id, glm::dvec3 min, gl
     r.id = id;
     r.min = min;
     r.max = max;
-    r.face_color.fill(glm::dvec3(0.8));
+    std::fill(r.face_color.begin(), r.face_color.end(), glm::dvec3(0.8));
     l.rooms.push_back(r);
     return static_cast<int>(l.rooms.size()) - 1;
+}
+
+// A prism room (layout-format.md, "Rooms of any shape") over the floor
+// polygon `floor` ([x, z], either winding) from y0 to y1: face f has colour
+// (0.1 + 0.05·f mod 1, tint.y, tint.z), so a test can tell the faces apart.
+inline layout::Room prism_room(const std::string& id, std::vector<glm::dvec2> floor, double y0, double y1,
+                               glm::dvec3 tint = {0.0, 0.5, 0.9}) {
+    layout::Room room;
+    room.id = id;
+    room.min = {floor.front().x, y0, floor.front().y};
+    room.max = room.min;
+    for (const glm::dvec2& c : floor) {
+        room.min = glm::min(room.min, glm::dvec3(c.x, y0, c.y));
+        room.max = glm::max(room.max, glm::dvec3(c.x, y1, c.y));
+    }
+    room.max.y = y1;
+    const std::size_t faces = 2 + floor.size();
+    room.floor = std::move(floor);
+    room.face_color.resize(faces);
+    room.face_texture.resize(faces);
+    for (std::size_t f = 0; f < faces; ++f) {
+        const double x = 0.1 + 0.05 * static_cast<double>(f);
+        room.face_color[f] = glm::dvec3(x - static_cast<double>(static_cast<int>(x)), tint.y, tint.z);
+    }
+    return room;
 }
 
 // A portal rectangle with `up` made orthogonal to the (normalised) normal.
