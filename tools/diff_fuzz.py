@@ -37,6 +37,14 @@ says so when its render reached the portal-pass budget (docs/bounded-work.md)
 or an eye lies inside the rasteriser's 10 µm near plane of a face of its
 room (docs/accuracy.md, "Mirrors and windows", has a long run's failures).
 
+"prism" is rooms of any floor shape (layout-format.md, "Rooms of any
+shape"; tools/diff_fuzz_prisms.py): convex floors of 3-12 corners, turned
+rectangles, concave floors (L, U, star) with a door beside a reflex corner,
+curved corridors of 10-40 walls (endless or joined to a room) and trapdoors
+in a floor and a ceiling; poses millimetres from slanted walls, grazing
+walls, in front of the door (one eye behind its plane), above and below a
+trapdoor, random looks.
+
 --lit makes every case lit (layout-format.md, "Lights"): the same rooms,
 portals and pose, with "lighting": "lights", a random ambient per room, 0-3
 point or spot lights per room (random colour, intensity 0.3-12, sometimes a
@@ -84,11 +92,12 @@ import zlib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from diff_fuzz_objects import ObjectCases  # noqa: E402  (the kinds "crossing" and "volume")
+from diff_fuzz_prisms import PrismCases, inside_polygon  # noqa: E402  (the kind "prism")
 
 # The kinds a run cycles through by default (docs/accuracy.md's figures are
 # for these); --kinds picks others. "glass" is mirrors and windows.
 DEFAULT_KINDS = ["coincident", "wall_pair", "free_pair", "corridor"]
-KINDS = DEFAULT_KINDS + ["glass", "crossing", "volume"]
+KINDS = DEFAULT_KINDS + ["glass", "crossing", "volume", "prism"]
 # The layouts of the glass kind, one chosen per case (Case.make_glass).
 GLASS_SUBKINDS = ["mirrors", "facing_mirrors", "window_pair", "window_loop", "door_glass"]
 
@@ -101,7 +110,7 @@ def log_uniform(r, lo, hi):
     return math.exp(r.uniform(math.log(lo), math.log(hi)))
 
 
-class Case(ObjectCases):
+class Case(ObjectCases, PrismCases):
     """One layout and one pose, made from (seed, number) and the kinds alone."""
 
     def __init__(self, seed, number, kinds=DEFAULT_KINDS):
@@ -115,7 +124,7 @@ class Case(ObjectCases):
         self.rooms, self.portals = [], []
         getattr(self, "make_" + self.kind)()
         make_pose = {"glass": self.make_glass_pose, "crossing": self.crossing_pose,
-                     "volume": self.volume_pose}.get(self.kind, self.make_pose)
+                     "volume": self.volume_pose, "prism": self.prism_pose}.get(self.kind, self.make_pose)
         self.pose, self.room, self.max_depth, self.fov, self.what = make_pose()
 
     # --- rooms and portals ---------------------------------------------
@@ -605,7 +614,7 @@ class Case(ObjectCases):
         kind = self.kind if self.sub is None else "%s, %s" % (self.kind, self.sub)
         out = {"format": "impossible-layout", "version": 1,
                "name": "diff_fuzz seed %d case %d (%s)" % (self.seed, self.number, kind),
-               "start": {"room": "a", "position": self.pose[:3]},
+               "start": {"room": self.room if self.kind == "prism" else "a", "position": self.pose[:3]},
                "rooms": self.rooms, "portals": self.portals}
         if lit:
             self.add_lights(out)
@@ -677,6 +686,8 @@ class Case(ObjectCases):
             up = p.get("up", [0.0, 1.0, 0.0])
             right = [up[1] * n[2] - up[2] * n[1], up[2] * n[0] - up[0] * n[2], up[0] * n[1] - up[1] * n[0]]
             room = rooms[p["room"]]
+            if "floor" in room:
+                continue  # the prism kind puts every portal in a face of its room
             for sr in (-0.5, 0.5):
                 for su in (-0.5, 0.5):
                     corner = [p["center"][a] + sr * p["width"] * right[a] + su * p["height"] * up[a]
@@ -704,6 +715,8 @@ class Case(ObjectCases):
         the rasteriser's near plane (10 µm, docs/accuracy.md "Contact
         distance"), which clips the face there: a note for a failure."""
         room = next(x for x in self.rooms if x["id"] == self.room)
+        if "floor" in room:
+            return self.prism_near_plane_note(room, near)
         notes = []
         for eye, e in zip(("left", "right"), self.eyes()):
             if not all(room["min"][a] <= e[a] <= room["max"][a] for a in range(3)):
