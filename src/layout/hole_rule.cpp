@@ -18,6 +18,8 @@
 #include "base/user_text.hpp"
 #include "layout/limits.hpp"
 #include "layout/readers.hpp"
+#include "layout/room_shape.hpp"
+#include "math/polygon.hpp"
 
 namespace impossible::layout::detail {
 
@@ -155,15 +157,15 @@ void report_partly_inside(Checker& check, const PortalDraft& draft, int face, co
                       " must lie wholly inside a face of its room, making a hole; move it inside"
                 : "a portal in the plane of a face must lie wholly inside it, making a hole, or wholly "
                   "outside";
-    check.error(draft.path / "center", "the rectangle lies in the plane of the " +
-                                           std::string(kFaceNames[static_cast<std::size_t>(face)]) + " face of room " +
-                                           quote(room.id) + " but is only partly inside that face (" + rule + ")");
+    check.error(draft.path / "center", "the rectangle lies in the plane of the " + face_name(room, face) +
+                                           " face of room " + quote(room.id) +
+                                           " but is only partly inside that face (" + rule + ")");
 }
 
-// Portal `i`'s hole, if it makes one: sets its hole_face and adds it to
-// `holes`. A portal partly inside a face, or a mirror or window standing
-// free, is an error.
-void find_hole(Checker& check, std::size_t i, PortalDraft& draft, const RoomDraft& room, FaceHoles& holes) {
+// Portal `i`'s hole in a box room, if it makes one: sets its hole_face and
+// adds it to `holes`. A portal partly inside a face, or a mirror or window
+// standing free, is an error.
+void find_box_hole(Checker& check, std::size_t i, PortalDraft& draft, const RoomDraft& room, FaceHoles& holes) {
     const double eps = limits::kHolePlaneTolerance;
     const int room_index = draft.portal.room;
     const math::PortalRect& rect = draft.portal.rect;
@@ -196,6 +198,112 @@ void find_hole(Checker& check, std::size_t i, PortalDraft& draft, const RoomDraf
     if (boxless && draft.portal.hole_face < 0 && !partly) report_free_standing(check, draft, room.room, c);
 }
 
+// The faces of a prism room, in face order.
+std::vector<FaceFrame> face_frames(const Room& room) {
+    std::vector<FaceFrame> frames;
+    for (int f = 0; f < face_count(room); ++f) frames.push_back(face_frame(room, f));
+    return frames;
+}
+
+// "the floor (y = 0)", "wall3 (from [0, 0] to [4, 0])".
+std::string prism_face_text(const Room& room, int face) {
+    if (face < 2)
+        return std::string("the ") +
+               (face == 0 ? "floor (y = " + format_number(room.min.y) : "ceiling (y = " + format_number(room.max.y)) +
+               ")";
+    const Wall w = wall(room, face - 2);
+    return face_name(room, face) + " (from [" + format_number(w.a.x) + ", " + format_number(w.a.y) + "] to [" +
+           format_number(w.b.x) + ", " + format_number(w.b.y) + "])";
+}
+
+// A mirror or window that stands free in a prism room: which face it is
+// nearest and what to change (as report_free_standing for a box).
+void report_free_standing_prism(Checker& check, const PortalDraft& draft, const Room& room,
+                                const std::vector<FaceFrame>& frames, const std::array<glm::dvec3, 4>& c) {
+    const double eps = limits::kHolePlaneTolerance;
+    const glm::dvec3 n = draft.portal.rect.normal;
+    const auto farthest_corner = [&](const FaceFrame& f) {
+        double away = 0.0;
+        for (const glm::dvec3& v : c) away = std::max(away, std::abs(glm::dot(v - f.origin, f.normal)));
+        return away;
+    };
+    std::string why;
+    std::size_t best = 0;
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+        if (why.empty() && farthest_corner(frames[f]) <= eps) {
+            why = glm::dot(n, frames[f].normal) > 0.5
+                      ? "it lies in the plane of " + prism_face_text(room, static_cast<int>(f)) +
+                            " but outside that face; move it inside the face"
+                      : "it lies in the plane of " + prism_face_text(room, static_cast<int>(f)) +
+                            " but its normal points out of the room; turn the normal around";
+        }
+        if (glm::dot(n, frames[f].normal) > glm::dot(n, frames[best].normal)) best = f;
+    }
+    if (why.empty()) {
+        const double away = std::round(farthest_corner(frames[best]) * 1e6) / 1e6;
+        why = glm::dot(n, frames[best].normal) > 0.5
+                  ? "a corner is " + format_number(away) + " m from " + prism_face_text(room, static_cast<int>(best)) +
+                        ", the face its normal looks away from; move it into that face"
+                  : "its normal is tilted away from every face; make it perpendicular to the face it belongs in, "
+                    "pointing into the room";
+    }
+    check.error(draft.path / "center",
+                std::string("a ") + kind_name(draft.portal.kind) + " must lie in a face of its own room " +
+                    quote(room.id) + " (within " + format_number(eps) +
+                    " m of the face's plane, inside the face), but this one stands free: " + why);
+}
+
+// Whether the rectangle (in a face's (s, t)) reaches into the face by more
+// than the 1e-4 sliver: for a wall, the separating-axis overlap of the two
+// rectangles (as for a box); for a floor or ceiling polygon, an area inside
+// it larger than a 1e-4 m strip along the rectangle's longer side.
+bool reaches_into(const Quad& quad, const FaceFrame& frame, int face) {
+    const double eps = limits::kHolePlaneTolerance;
+    if (face >= 2) {
+        const math::Polygon2& o = frame.outline;
+        return overlap(quad, Quad{o[0], o[1], o[2], o[3]}) > eps;
+    }
+    const double side = std::max(glm::distance(quad[0], quad[1]), glm::distance(quad[1], quad[2]));
+    return math::intersection_area(frame.outline, {quad.begin(), quad.end()}) > eps * side;
+}
+
+// Portal `i`'s hole in a prism room (layout-format.md, "Rooms of any shape"):
+// the first face in whose plane it lies, normal into the room, and inside
+// which it lies (each edge inside the face's outline within 1e-4 m). One
+// wholly outside a face in its plane goes on to the next face (collinear
+// walls share a plane); one partly inside is an error.
+void find_prism_hole(Checker& check, std::size_t i, PortalDraft& draft, const Room& room,
+                     const std::vector<FaceFrame>& frames, FaceHoles& holes) {
+    const double eps = limits::kHolePlaneTolerance;
+    const math::PortalRect& rect = draft.portal.rect;
+    const std::array<glm::dvec3, 4> c = corners(rect);
+    bool partly = false;
+    for (std::size_t face = 0; face < frames.size() && !partly && draft.portal.hole_face < 0; ++face) {
+        const FaceFrame& f = frames[face];
+        const bool in_plane = std::all_of(
+            c.begin(), c.end(), [&](const glm::dvec3& v) { return std::abs(glm::dot(v - f.origin, f.normal)) <= eps; });
+        if (!in_plane || !(glm::dot(rect.normal, f.normal) > 0.5)) continue;
+        Hole hole;
+        hole.portal = i;
+        for (std::size_t k = 0; k < 4; ++k) hole.quad[k] = to_face(f, c[k]);
+        bool inside = true;
+        for (std::size_t k = 0; k < 4 && inside; ++k) {
+            inside = math::segment_inside(f.outline, hole.quad[k], hole.quad[(k + 1) % 4], eps);
+        }
+        if (inside) {
+            draft.portal.hole_face = static_cast<int>(face);
+            hole.min_a = std::min({hole.quad[0].x, hole.quad[1].x, hole.quad[2].x, hole.quad[3].x});
+            hole.max_a = std::max({hole.quad[0].x, hole.quad[1].x, hole.quad[2].x, hole.quad[3].x});
+            holes[{draft.portal.room, static_cast<int>(face)}].push_back(hole);
+        } else if (reaches_into(hole.quad, f, static_cast<int>(face))) {
+            partly = true;
+            report_partly_inside(check, draft, static_cast<int>(face), room);
+        }
+    }
+    const bool boxless = draft.kind_ok && draft.portal.kind != PortalKind::Door;
+    if (boxless && draft.portal.hole_face < 0 && !partly) report_free_standing_prism(check, draft, room, frames, c);
+}
+
 // Overlapping holes in one face: sweep along the face's first axis.
 // Each portal is reported once.
 void report_overlapping_holes(Checker& check, const std::vector<PortalDraft>& portals,
@@ -211,9 +319,9 @@ void report_overlapping_holes(Checker& check, const std::vector<PortalDraft>& po
                 if (reported[later] || reported[first]) continue;
                 if (overlap(list[i].quad, list[j].quad) <= eps) continue;
                 reported[later] = true;
+                const Room& room = rooms[static_cast<std::size_t>(key.first)].room;
                 check.error(portals[later].path / "center",
-                            "its hole in the " + std::string(kFaceNames[static_cast<std::size_t>(key.second)]) +
-                                " face of room " + quote(rooms[static_cast<std::size_t>(key.first)].room.id) +
+                            "its hole in the " + face_name(room, key.second) + " face of room " + quote(room.id) +
                                 " overlaps the hole of portal " + quote(portals[first].portal.id) + " (portals[" +
                                 std::to_string(first) + "])");
             }
@@ -225,14 +333,21 @@ void report_overlapping_holes(Checker& check, const std::vector<PortalDraft>& po
 
 void check_holes(Checker& check, std::vector<PortalDraft>& portals, const std::vector<RoomDraft>& rooms) {
     FaceHoles holes;
+    std::map<int, std::vector<FaceFrame>> prism_frames;  // by room, made once per room with portals
     for (std::size_t i = 0; i < portals.size(); ++i) {
         PortalDraft& draft = portals[i];
         const int room_index = draft.portal.room;
         // Volumes stand anywhere (layout-format.md, "Volume portals").
         if (!draft.rect_ok || room_index < 0 || draft.volume) continue;
         const RoomDraft& room = rooms[static_cast<std::size_t>(room_index)];
-        if (!room.box_ok) continue;
-        find_hole(check, i, draft, room, holes);
+        if (!room.shape_ok) continue;
+        if (!is_prism(room.room)) {
+            find_box_hole(check, i, draft, room, holes);
+            continue;
+        }
+        auto frames = prism_frames.find(room_index);
+        if (frames == prism_frames.end()) frames = prism_frames.emplace(room_index, face_frames(room.room)).first;
+        find_prism_hole(check, i, draft, room.room, frames->second, holes);
     }
     report_overlapping_holes(check, portals, rooms, holes);
 }

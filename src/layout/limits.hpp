@@ -24,6 +24,10 @@ inline constexpr std::size_t kMaxRooms = 10'000;
 inline constexpr std::size_t kMaxPortals = 20'000;
 inline constexpr std::size_t kMaxPropsPerRoom = 10'000;
 inline constexpr std::size_t kMaxPlayAreaCorners = 10'000;
+// Corners (so walls) of one prism room's `floor`. A curved corridor in 1°
+// steps has a few hundred; the simple-polygon test is quadratic in them, and
+// every portal of the room is tested against every wall by the hole rule.
+inline constexpr std::size_t kMaxRoomCorners = 1'000;
 
 // Moving props (layout-format.md, "Moving props"): keys of one motion path,
 // and its times in seconds. The walker walks a path's keys up to the time

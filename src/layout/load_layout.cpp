@@ -10,6 +10,7 @@
 #include "layout/json_doc.hpp"
 #include "layout/limits.hpp"
 #include "layout/readers.hpp"
+#include "layout/room_shape.hpp"
 #include "math/polygon.hpp"
 
 namespace impossible::layout {
@@ -177,10 +178,7 @@ void link_start(Checker& check, StartDraft& start, const std::vector<detail::Roo
     }
     start.start.room = it->second;
     const detail::RoomDraft& room = rooms[static_cast<std::size_t>(it->second)];
-    const glm::dvec3& p = start.start.position;
-    const bool inside =
-        glm::all(glm::greaterThanEqual(p, room.room.min)) && glm::all(glm::lessThanEqual(p, room.room.max));
-    if (start.ok && room.box_ok && !inside) {
+    if (start.ok && room.shape_ok && !room_contains(room.room, start.start.position)) {
         check.warning(top / "start" / "position", "the head starts outside its room " + quote(room.room.id));
     }
 }

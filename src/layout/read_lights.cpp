@@ -9,6 +9,8 @@
 #include "base/user_text.hpp"
 #include "layout/limits.hpp"
 #include "layout/readers.hpp"
+#include "layout/room_shape.hpp"
+#include "math/polygon.hpp"
 
 namespace impossible::layout::detail {
 
@@ -127,6 +129,16 @@ void only_with_lights(Checker& check, const Path& at) {
 }
 
 void read_room_lighting(Checker& check, const Path& at, const json& value, RoomDraft& draft, bool lit) {
+    // The lights' shadow rays do not yet meet a room's own walls
+    // (docs/layout-limits.md): in a non-convex room they would light what its
+    // walls hide. Light can come in through any portal, so the room is refused
+    // whether or not it has lights of its own.
+    if (lit && draft.shape_ok && !floor_convex(draft.room)) {
+        check.error(at / "floor",
+                    "lights in a room whose floor is not convex are not supported yet; under "
+                    "\"lighting\": \"lights\" split the room into convex rooms joined by doors, or "
+                    "use \"lighting\": \"fixed\"");
+    }
     if (const json* v = field(value, "ambient")) {
         if (!lit) {
             only_with_lights(check, at / "ambient");
@@ -145,7 +157,7 @@ void read_room_lighting(Checker& check, const Path& at, const json& value, RoomD
         const Path light_at = at / "lights" / i;
         std::optional<Light> light = read_light(check, light_at, (*lights)[i]);
         if (!light) continue;
-        if (draft.box_ok && !strictly_inside(draft.room, light->position)) {
+        if (draft.shape_ok && !strictly_inside(draft.room, light->position)) {
             check.error(light_at / "position", "the light at " + light_point_text(light->position) +
                                                    " is not strictly inside its room " + quote(draft.room.id));
             continue;
@@ -158,6 +170,11 @@ void read_room_lighting(Checker& check, const Path& at, const json& value, RoomD
 
 bool strictly_inside(const Room& room, const glm::dvec3& p) {
     const double tolerance = 1e-9 * (1.0 + glm::length(p));
+    if (is_prism(room)) {
+        if (!(p.y - room.min.y > tolerance && room.max.y - p.y > tolerance)) return false;
+        const glm::dvec2 q{p.x, p.z};
+        return math::contains(room.floor, q, 0.0) && math::distance_to_boundary(room.floor, q) > tolerance;
+    }
     for (int a = 0; a < 3; ++a) {
         if (!(p[a] - room.min[a] > tolerance && room.max[a] - p[a] > tolerance)) return false;
     }

@@ -22,7 +22,13 @@ struct RoomDraft {
     Room room;
     Path path;
     bool has_id = false;
-    bool box_ok = false;  // min/max read and max > min
+    // The shape was read and is valid: a box (min/max, max > min), or a
+    // prism (floor and y, see read_rooms.cpp).
+    bool shape_ok = false;
+    // Written with `floor` (layout-format.md, "Rooms of any shape"): its face
+    // keys are a prism's. room.floor holds the corners as soon as they could
+    // be read, valid or not, so that "wallN" can be checked against them.
+    bool prism = false;
 };
 
 struct PortalDraft {
@@ -43,6 +49,12 @@ struct PortalDraft {
 // The props' ids seen so far in the layout, each with where it was first
 // used ("rooms[0].props[2]"): prop ids are unique in the whole layout.
 using PropIds = std::map<std::string, std::string>;
+
+// A room's `face_colors` and `textures` (room_faces.cpp), into room.face_color
+// (already filled with `color`) and room.face_texture (already sized): box
+// keys for a box room, "walls" and "wallN" for a prism.
+void read_face_colors(Checker& check, const Path& at, const json& value, RoomDraft& draft);
+void read_textures(Checker& check, const Path& at, const json& value, assets::AssetCache& models, RoomDraft& draft);
 
 std::vector<RoomDraft> read_rooms(Checker& check, const Path& at, const json& rooms, assets::AssetCache& models);
 
@@ -72,7 +84,8 @@ std::optional<glm::dvec3> read_direction(Checker& check, const Path& at, const j
 // (reported): a portal's normal, a spot's direction.
 std::optional<glm::dvec3> read_normal(Checker& check, const Path& at, const json& value);
 
-// Farther than 1e-9 · (1 + |p|) from every face of the room's box.
+// Farther than 1e-9 · (1 + |p|) from every face of the room (its box, or its
+// prism's floor, ceiling and walls).
 bool strictly_inside(const Room& room, const glm::dvec3& p);
 
 // Once everything is read without error: under "lights" (`lit`) each glTF

@@ -4,9 +4,27 @@
 
 #include "base/text.hpp"
 #include "layout/layout.hpp"
+#include "layout/room_shape.hpp"
 #include "math/polygon.hpp"
 
 namespace impossible::layout {
+
+namespace {
+
+// Whether the room's floor lies inside the play area's outline, edges
+// included. A convex floor (a box's rectangle among them) is clipped to the
+// area, with a tolerance relative to the floor so rooms exactly on the edge
+// fit; any other floor is inside when each of its edges is.
+bool floor_inside(const Room& room, const math::Polygon2& area) {
+    const math::Polygon2 floor = floor_outline(room);
+    if (floor_convex(room)) return math::convex_inside(floor, area, 1e-9 * (1.0 + math::area(floor)));
+    for (std::size_t i = 0; i < floor.size(); ++i) {
+        if (!math::segment_inside(area, floor[i], floor[(i + 1) % floor.size()])) return false;
+    }
+    return true;
+}
+
+}  // namespace
 
 Summary summarize(const Layout& layout) {
     Summary s;
@@ -26,7 +44,7 @@ Summary summarize(const Layout& layout) {
     s.volumes = static_cast<int>(layout.volumes.size());
     std::set<const image::Pixels*> images;
     for (const Room& room : layout.rooms) {
-        s.floor_area += (room.max.x - room.min.x) * (room.max.z - room.min.z);
+        s.floor_area += layout::floor_area(room);
         for (const auto& texture : room.face_texture) {
             if (texture == nullptr) continue;
             ++s.textured_faces;
@@ -45,10 +63,7 @@ Summary summarize(const Layout& layout) {
         s.play_area_area = math::area(area);
         s.expansion_ratio = s.floor_area / *s.play_area_area;
         for (const Room& room : layout.rooms) {
-            const math::Polygon2 floor = math::rectangle({room.min.x, room.min.z}, {room.max.x, room.max.z});
-            // A tolerance relative to the floor, so rooms exactly on the edge fit.
-            if (!math::convex_inside(floor, area, 1e-9 * (1.0 + math::area(floor))))
-                s.rooms_outside_play_area.push_back(room.id);
+            if (!floor_inside(room, area)) s.rooms_outside_play_area.push_back(room.id);
         }
     }
     return s;

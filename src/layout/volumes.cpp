@@ -1,5 +1,6 @@
 // Volume portals (layout-format.md, "Volume portals"): their target rooms,
-// overlaps between the volumes of a room, and volumes outside their room.
+// overlaps between the volumes of a room, and volumes outside their room (its
+// box, or its prism).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -9,6 +10,8 @@
 
 #include "base/user_text.hpp"
 #include "layout/readers.hpp"
+#include "layout/room_shape.hpp"
+#include "math/polygon.hpp"
 
 namespace impossible::layout::detail {
 
@@ -27,6 +30,7 @@ OrientedBox volume_box(const math::PortalRect& rect) {
             {rect.width / 2, rect.height / 2, rect.depth / 2}};
 }
 
+// A box room, or a prism room's bounding box.
 OrientedBox room_box(const Room& room) {
     return {(room.min + room.max) / 2.0,
             {glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1)},
@@ -171,13 +175,77 @@ void check_overlaps(Checker& check, const std::vector<PortalDraft>& portals, con
     }
 }
 
-// A volume wholly outside its room's box is seen from nowhere in the room:
-// a warning (partly outside is fine: it shows its target through the walls).
+// The convex hull of points in the plane (Andrew's monotone chain),
+// counter-clockwise, without collinear points.
+math::Polygon2 convex_hull(std::vector<glm::dvec2> points) {
+    std::sort(points.begin(), points.end(),
+              [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    const auto turn = [](const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b) {
+        return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+    };
+    math::Polygon2 hull(2 * points.size());
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        while (k >= 2 && turn(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
+        hull[k++] = points[i];
+    }
+    for (std::size_t i = points.size() - 1, t = k + 1; i-- > 0;) {
+        while (k >= t && turn(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
+        hull[k++] = points[i];
+    }
+    hull.resize(k > 0 ? k - 1 : 0);
+    return hull;
+}
+
+// Whether the volume's box shares interior with a prism room: the part of
+// the box between the floor and the ceiling (each moved in by the
+// tolerance, so a box that only touches them stays out), seen from above,
+// overlaps the floor polygon by more than a sliver.
+bool volume_meets_prism(const OrientedBox& box, const Room& room) {
+    const double tolerance = 1e-9 * (1.0 + std::max(largest(box.center), largest(box.half)));
+    const double y0 = room.min.y + tolerance, y1 = room.max.y - tolerance;
+    std::array<glm::dvec3, 8> corner{};
+    for (std::size_t i = 0; i < 8; ++i) {
+        corner[i] = box.center;
+        for (std::size_t a = 0; a < 3; ++a) {
+            corner[i] +=
+                box.axis[a] * (((i >> a) & 1u) != 0 ? box.half[static_cast<int>(a)] : -box.half[static_cast<int>(a)]);
+        }
+    }
+    std::vector<glm::dvec2> points;
+    for (std::size_t i = 0; i < 8; ++i) {
+        const glm::dvec3& p = corner[i];
+        if (p.y >= y0 && p.y <= y1) points.push_back({p.x, p.z});
+        for (std::size_t a = 0; a < 3; ++a) {  // the edges from corner i to a corner further along one axis
+            const std::size_t j = i | (1u << a);
+            if (j == i) continue;
+            const glm::dvec3& q = corner[j];
+            for (const double y : {y0, y1}) {
+                if ((p.y - y) * (q.y - y) < 0.0) {
+                    const glm::dvec3 m = p + (q - p) * ((y - p.y) / (q.y - p.y));
+                    points.push_back({m.x, m.z});
+                }
+            }
+        }
+    }
+    if (points.size() < 3) return false;
+    const math::Polygon2 hull = convex_hull(points);
+    if (hull.size() < 3) return false;
+    return math::intersection_area(room.floor, hull) > tolerance * (1.0 + std::sqrt(math::area(hull)));
+}
+
+// A volume wholly outside its room's box (or prism) is seen from nowhere in
+// the room: a warning (partly outside is fine: it shows its target through
+// the walls).
 void warn_outside(Checker& check, const std::vector<PortalDraft>& portals, const std::vector<RoomDraft>& rooms) {
     for (const PortalDraft& d : portals) {
         if (!d.volume || !d.rect_ok || d.portal.room < 0) continue;
         const RoomDraft& room = rooms[static_cast<std::size_t>(d.portal.room)];
-        if (!room.box_ok || boxes_overlap(volume_box(d.portal.rect), room_box(room.room))) continue;
+        if (!room.shape_ok) continue;
+        const OrientedBox box = volume_box(d.portal.rect);
+        const bool meets =
+            boxes_overlap(box, room_box(room.room)) && (!is_prism(room.room) || volume_meets_prism(box, room.room));
+        if (meets) continue;
         check.warning(d.path / "center", "the volume lies wholly outside its room " + quote(room.room.id) +
                                              ", so nothing in the room is seen through it");
     }
