@@ -12,20 +12,38 @@
 #include <string>
 #include <vector>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "fuzz_check.hpp"
 #include "layout/layout.hpp"
+#include "layout/room_shape.hpp"
+#include "math/polygon.hpp"
 
 namespace {
 
 using impossible::fuzz::require;
 namespace layout = impossible::layout;
 
+// What the loader promises of a prism room (layout-format.md, "Rooms of any
+// shape"): a simple floor polygon whose bounding box is min/max in x and z,
+// and one colour and texture slot per face.
+void check_room_shape(const layout::Room& room) {
+    const auto faces = static_cast<std::size_t>(layout::face_count(room));
+    require(room.face_color.size() == faces && room.face_texture.size() == faces, "one colour and texture per face");
+    if (!layout::is_prism(room)) return;
+    require(!impossible::math::simple_polygon_problem(room.floor), "a prism's floor is a simple polygon");
+    glm::dvec2 lo = room.floor[0], hi = room.floor[0];
+    for (const glm::dvec2& c : room.floor) lo = glm::min(lo, c), hi = glm::max(hi, c);
+    require(lo == glm::dvec2(room.min.x, room.min.z) && hi == glm::dvec2(room.max.x, room.max.z),
+            "a prism's min/max is its floor's bounding box");
+    require(room.max.y > room.min.y, "a prism has a height");
+}
+
 // What the loader promises of a layout it accepts: paired portals name each
 // other within Layout::portals (the volumes left out), a volume shows a room
 // without portals, motions start at 0 and increase, moving props have ids and
-// prop ids are unique.
+// prop ids are unique; prism rooms are sound, and holes name a face.
 void check_layout(const layout::Layout& l) {
     const int portals = static_cast<int>(l.portals.size());
     const int rooms = static_cast<int>(l.rooms.size());
@@ -34,6 +52,8 @@ void check_layout(const layout::Layout& l) {
         const layout::Portal& p = l.portals[static_cast<std::size_t>(i)];
         require(p.room >= 0 && p.room < rooms, "a portal's room is a room");
         has_portal[static_cast<std::size_t>(p.room)] = true;
+        require(p.hole_face >= -1 && p.hole_face < layout::face_count(l.rooms[static_cast<std::size_t>(p.room)]),
+                "a hole is in a face of the portal's room");
         if (p.kind == layout::PortalKind::Mirror) continue;
         require(p.target >= 0 && p.target < portals && l.portals[static_cast<std::size_t>(p.target)].target == i,
                 "paired portals name each other");
@@ -60,6 +80,7 @@ void check_layout(const layout::Layout& l) {
             require(!m.loop || m.keys.size() >= 2, "a loop has two keys");
         }
     }
+    for (const layout::Room& room : l.rooms) check_room_shape(room);
     for (const layout::Room& room : l.rooms) {
         const bool lit = l.lighting == layout::Lighting::Lights;
         require(lit || room.lights.empty(), "a fixed layout has no lights");
@@ -68,6 +89,13 @@ void check_layout(const layout::Layout& l) {
             for (int a = 0; a < 3; ++a) {
                 require(light.position[a] - room.min[a] > tolerance && room.max[a] - light.position[a] > tolerance,
                         "a light is strictly inside its room");
+            }
+            if (layout::is_prism(room)) {
+                const glm::dvec2 p{light.position.x, light.position.z};
+                require(layout::floor_convex(room), "a lit prism room is convex");
+                require(impossible::math::contains(room.floor, p, 0.0) &&
+                            impossible::math::distance_to_boundary(room.floor, p) > tolerance,
+                        "a light is strictly inside its prism");
             }
             require(light.intensity > 0 && light.range >= 0, "a light shines");
             require(!light.spot || (light.spot->inner_deg >= 0 && light.spot->outer_deg > light.spot->inner_deg &&

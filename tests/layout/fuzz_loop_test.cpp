@@ -8,9 +8,12 @@
 #include <iterator>
 #include <random>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "layout/room_shape.hpp"
 #include "layout_test_util.hpp"
+#include "math/polygon.hpp"
 
 namespace layout_test {
 namespace {
@@ -37,6 +40,12 @@ void check_lights(const Layout& layout, const Room& room) {
             EXPECT_GT(light.position[a] - room.min[a], tolerance);
             EXPECT_GT(room.max[a] - light.position[a], tolerance);
         }
+        if (is_prism(room)) {
+            EXPECT_TRUE(floor_convex(room)) << "lit prism rooms are convex for now";
+            const glm::dvec2 p{light.position.x, light.position.z};
+            EXPECT_TRUE(impossible::math::contains(room.floor, p, 0.0));
+            EXPECT_GT(impossible::math::distance_to_boundary(room.floor, p), tolerance);
+        }
         EXPECT_TRUE(in_unit_range(light.color));
         EXPECT_GT(light.intensity, 0.0);
         EXPECT_GE(light.range, 0.0);
@@ -51,6 +60,23 @@ void check_lights(const Layout& layout, const Room& room) {
             EXPECT_TRUE(std::holds_alternative<GltfProp>(room.props[std::size_t(light.prop)]));
         }
     }
+}
+
+// The promises of a prism room (layout-format.md, "Rooms of any shape"): a
+// simple floor polygon of at most 1000 corners whose bounding box is the
+// room's min/max in x and z.
+void check_prism(const Room& room) {
+    if (!is_prism(room)) return;
+    EXPECT_LE(room.floor.size(), 1000u);
+    EXPECT_FALSE(impossible::math::simple_polygon_problem(room.floor).has_value());
+    glm::dvec2 lo = room.floor[0], hi = room.floor[0];
+    for (const glm::dvec2& c : room.floor) {
+        EXPECT_TRUE(std::isfinite(c.x) && std::isfinite(c.y));
+        lo = glm::min(lo, c);
+        hi = glm::max(hi, c);
+    }
+    EXPECT_EQ(lo, glm::dvec2(room.min.x, room.min.z));
+    EXPECT_EQ(hi, glm::dvec2(room.max.x, room.max.z));
 }
 
 // The promises of a loaded layout (layout.hpp).
@@ -71,6 +97,9 @@ void check_invariants(const Layout& layout) {
         EXPECT_EQ(find_room(layout, room.id), int(i)) << "ids are unique";
         EXPECT_TRUE(finite(room.min) && finite(room.max));
         EXPECT_TRUE(room.max.x > room.min.x && room.max.y > room.min.y && room.max.z > room.min.z);
+        check_prism(room);
+        EXPECT_EQ(room.face_color.size(), std::size_t(face_count(room)));
+        EXPECT_EQ(room.face_texture.size(), std::size_t(face_count(room)));
         for (const glm::dvec3& c : room.face_color) EXPECT_TRUE(in_unit_range(c));
         check_lights(layout, room);
         EXPECT_GE(room.checker, 0.0);
@@ -104,7 +133,7 @@ void check_invariants(const Layout& layout) {
         EXPECT_GT(p.rect.width, 0.0);
         EXPECT_GT(p.rect.height, 0.0);
         EXPECT_GE(p.hole_face, -1);
-        EXPECT_LT(p.hole_face, kFaceCount);
+        EXPECT_LT(p.hole_face, face_count(layout.rooms[std::size_t(p.room)]));
         EXPECT_TRUE(in_unit_range(p.tint));
         EXPECT_TRUE(p.reflectance >= 0.0 && p.reflectance <= 1.0);
         if (p.kind == PortalKind::Door) {
@@ -201,6 +230,17 @@ private:
         "\"reflectance\": 0.5,",
         "\"depth\": 0.1,",
         "\"target\": \"hall_mirror\",",
+        // Prism rooms (layout-format.md, "Rooms of any shape").
+        "\"floor\": [[0, 0], [4, 0], [4, 4], [0, 4]], \"y\": [0, 3],",
+        "\"floor\": [[0, 0], [4, 0], [2, 2], [4, 4], [0, 4]],",
+        "\"y\": [0, 3],",
+        "\"min\": [0, 0, 0],",
+        "\"walls\": [0.5, 0.5, 0.5],",
+        "\"wall0\": [1, 0, 0],",
+        "\"wall23\": [1, 0, 0],",
+        "\"-x\": [1, 0, 0],",
+        "[2, 2], ",
+        "\"lighting\": \"lights\",",
     };
     static constexpr const char* kNumbers[] = {
         "NaN",
@@ -262,8 +302,12 @@ private:
 
 TEST(LayoutFuzzLoop, MutatedLayoutsGiveErrorsOrValidLayouts) {
     const std::vector<std::string> seeds = {
-        two_rooms(), read_text(kLayoutDir + "/impossible.json"), read_text(kLayoutDir + "/props.json"),
-        read_text(kLayoutDir + "/mirrors_windows.json"), read_text(kLayoutDir + "/lit_rooms.json")};
+        two_rooms(),
+        read_text(kLayoutDir + "/impossible.json"),
+        read_text(kLayoutDir + "/props.json"),
+        read_text(kLayoutDir + "/mirrors_windows.json"),
+        read_text(kLayoutDir + "/lit_rooms.json"),
+        read_text(std::string(IMPOSSIBLE_SOURCE_DIR) + "/tests/fuzz/layout_corpus/prism_rooms.json")};
     for (const std::string& seed : seeds) {
         const LoadResult r = load_layout_text(seed, "fuzz.json", kLayoutDir);
         ASSERT_TRUE(r.layout.has_value()) << all_messages(r.errors);
