@@ -13,10 +13,32 @@ double overlap_limit_percent(double smaller_area) {
     return smaller_area <= kSmallRoomArea + 1e-9 ? kSmallRoomLimit : kLargeRoomLimit;
 }
 
+bool is_convex(const math::Polygon2& poly) {
+    bool left = false, right = false;
+    for (std::size_t i = 0, n = poly.size(); i < n; ++i) {
+        const glm::dvec2 e0 = poly[(i + 1) % n] - poly[i], e1 = poly[(i + 2) % n] - poly[(i + 1) % n];
+        const double turn = e0.x * e1.y - e0.y * e1.x;
+        left = left || turn > 0.0;
+        right = right || turn < 0.0;
+    }
+    return !(left && right);
+}
+
+bool polygon_inside(const math::Polygon2& inner, const math::Polygon2& outer, double tolerance) {
+    if (is_convex(inner)) return math::convex_inside(inner, outer, tolerance);
+    return math::area(inner) - intersection_area(outer, inner) <= tolerance;
+}
+
 Overlap overlap_of(const math::Polygon2& a, const math::Polygon2& b) {
     Overlap o;
-    o.shared = math::clip_to_convex(a, b);
-    o.area = math::area(o.shared);
+    if (is_convex(a) && is_convex(b)) {
+        math::Polygon2 shared = math::clip_to_convex(a, b);
+        o.area = math::area(shared);
+        if (!shared.empty()) o.shared.push_back(std::move(shared));
+    } else {
+        o.shared = intersection(a, b);
+        for (const math::Polygon2& piece : o.shared) o.area += math::area(piece);
+    }
     const double smaller = std::min(math::area(a), math::area(b));
     o.percent = smaller > 0.0 ? 100.0 * o.area / smaller : 0.0;
     o.limit = overlap_limit_percent(smaller);

@@ -29,12 +29,12 @@ inline constexpr double kMinSharedArea = 1e-6;   // m²; less is touching, not s
 double overlap_limit_percent(double smaller_area);
 
 struct Overlap {
-    int a = -1, b = -1;       // room indices, a < b
-    double area = 0.0;        // m² shared
-    double percent = 0.0;     // of the smaller floor
-    double limit = 0.0;       // overlap_limit_percent of the smaller floor
-    bool noticeable = false;  // percent > limit
-    math::Polygon2 shared;    // the shared floor
+    int a = -1, b = -1;                  // room indices, a < b
+    double area = 0.0;                   // m² shared
+    double percent = 0.0;                // of the smaller floor
+    double limit = 0.0;                  // overlap_limit_percent of the smaller floor
+    bool noticeable = false;             // percent > limit
+    std::vector<math::Polygon2> shared;  // the shared floor: one polygon per piece, counter-clockwise
 };
 
 // How far the search for overlapping pairs goes. A report lists at most
@@ -62,14 +62,38 @@ struct Overlaps {
     bool truncated() const { return !exact || pairs > listed.size(); }
 };
 
-// The overlaps of convex floors (one per room): every pair that shares more
+// The overlaps of the floors (one simple polygon per room, either winding): every pair that shares more
 // than kMinSharedArea, found by a sweep over the floors' bounding rectangles
 // sorted by x; memory grows with the floors and `limits.listed`, not with
 // the pairs. Without a limit reached, `listed` holds the first pairs in
 // order of (a, b).
 Overlaps room_overlaps(const std::vector<math::Polygon2>& floors, const OverlapLimits& limits = {});
 
-// One pair's figures (shared may be empty when they do not overlap).
+// One pair's figures (shared may be empty when they do not overlap). Two
+// convex floors (every box room's) are clipped as they always were
+// (math::clip_to_convex, exact for convex polygons, so box rooms' figures
+// stay as they were to the last bit); a pair with a non-convex floor goes
+// through intersection() below.
 Overlap overlap_of(const math::Polygon2& a, const math::Polygon2& b);
+
+// The intersection of two simple polygons of any shape (either winding,
+// convex or not), by Boost.Geometry (design/polygon_clip.cpp; docs/choices.md):
+// its pieces, counter-clockwise, without holes (two simple polygons share
+// none), and its area in m². Degenerate input (fewer than 3 corners) shares
+// nothing. Should the library refuse a pair (it throws on input it finds
+// invalid), the area is found by intersection_area_by_triangles instead.
+std::vector<math::Polygon2> intersection(const math::Polygon2& a, const math::Polygon2& b);
+double intersection_area(const math::Polygon2& a, const math::Polygon2& b);
+
+// The same area without the library: `b` cut into triangles by ear clipping
+// and `a` clipped to each (math::clip_to_convex); slower, and the tests'
+// second opinion.
+double intersection_area_by_triangles(const math::Polygon2& a, const math::Polygon2& b);
+
+// Whether every corner turns the same way (collinear corners allowed).
+bool is_convex(const math::Polygon2& poly);
+
+// Whether `inner` lies inside `outer`: at most `tolerance` m² of it outside.
+bool polygon_inside(const math::Polygon2& inner, const math::Polygon2& outer, double tolerance);
 
 }  // namespace impossible::design

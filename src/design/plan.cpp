@@ -188,7 +188,8 @@ void add_floor(Drawing& d, const layout::Layout& layout, const Report& r) {
     for (const Overlap& o : r.overlaps) {
         // Light, so that several pairs stacked on one spot still show the rooms under them.
         const Rgba c = o.noticeable ? Rgba{0.85, 0.1, 0.1, 0.08} : Rgba{0.1, 0.1, 0.1, 0.08};
-        d.shapes.push_back(fill("overlaps", layout.rooms[o.a].id + "/" + layout.rooms[o.b].id, o.shared, c));
+        for (const math::Polygon2& piece : o.shared)
+            d.shapes.push_back(fill("overlaps", layout.rooms[o.a].id + "/" + layout.rooms[o.b].id, piece, c));
     }
     for (std::size_t i = 0; i < layout.rooms.size(); ++i)
         for (const layout::Prop& prop : layout.rooms[i].props)
