@@ -8,7 +8,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libglm-dev libegl-dev libosmesa6-dev libglfw3-dev libtinygltf-dev
-  nlohmann-json3-dev libstb-dev libgtest-dev libbenchmark-dev python3-glad
+  nlohmann-json3-dev libstb-dev libgtest-dev libbenchmark-dev python3-glad libglu1-mesa-dev
   libboost-dev
   xvfb libegl-mesa0 libgl1-mesa-dri
   python3-dev pybind11-dev python3-numpy python3-pytest

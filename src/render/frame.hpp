@@ -86,7 +86,8 @@ struct FrameDesc : math::View {
     // occlusion (a query after the cell's surfaces) and drop the subtree of a
     // hidden one by conditional rendering. Exact, but the driver must
     // synchronise once a frame (about 1 ms on llvmpipe), so it pays only
-    // where portals hide behind props; rooms are convex, so off by default.
+    // where portals hide behind props or a concave room's own walls; off by
+    // default (without it such a portal is drawn and hidden by depth).
     bool occlusion_test = false;
     // Render-to-texture portals, the classic technique, for comparison: with a
     // scale > 0, each portal of the head's cell is drawn by rendering its view

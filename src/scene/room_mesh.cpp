@@ -10,7 +10,10 @@
 #include <glm/common.hpp>
 #include <glm/vec2.hpp>
 
+#include "layout/room_shape.hpp"
 #include "scene/face_slabs.hpp"
+#include "scene/grid_front.hpp"
+#include "scene/prism_mesh.hpp"
 
 namespace impossible::scene {
 
@@ -93,31 +96,6 @@ struct FaceGrid {
     glm::vec3 point(std::size_t i, std::size_t j) const { return plane_point(f.axis, plane, f.in, as[i], bs[j]); }
 };
 
-// The front of a hole covering the grid cells [i0, i1) × [j0, j1): the grid
-// points it spans, in columns along the portal's right and rows along its up.
-FrontGrid hole_front(const FaceGrid& grid, const FaceHole& h, std::size_t i0, std::size_t i1, std::size_t j0,
-                     std::size_t j1) {
-    // The portal's right and up along the face's axes, from its corners.
-    const glm::dvec2 along_r = h.corners[1] - h.corners[0];
-    const glm::dvec2 along_u = h.corners[3] - h.corners[0];
-    const bool r_on_a = std::abs(along_r.x) >= std::abs(along_r.y);
-    const bool r_up = (r_on_a ? along_r.x : along_r.y) > 0.0;  // r along +axis
-    const bool u_up = (r_on_a ? along_u.y : along_u.x) > 0.0;
-    const std::size_t r_lo = r_on_a ? i0 : j0, r_hi = r_on_a ? i1 : j1;
-    const std::size_t u_lo = r_on_a ? j0 : i0, u_hi = r_on_a ? j1 : i1;
-    FrontGrid g;
-    g.cols = static_cast<int>(r_hi - r_lo + 1);
-    g.rows = static_cast<int>(u_hi - u_lo + 1);
-    for (int j = 0; j < g.rows; ++j) {
-        for (int i = 0; i < g.cols; ++i) {
-            const std::size_t ri = r_up ? r_lo + static_cast<std::size_t>(i) : r_hi - static_cast<std::size_t>(i);
-            const std::size_t uj = u_up ? u_lo + static_cast<std::size_t>(j) : u_hi - static_cast<std::size_t>(j);
-            g.points.push_back(r_on_a ? grid.point(ri, uj) : grid.point(uj, ri));
-        }
-    }
-    return g;
-}
-
 // One face on the room's grid; fills the fronts of its holes.
 void append_grid_face(MeshWriter& out, const layout::Room& room, int face, const Lines& lines,
                       const std::vector<FaceHole>& holes, std::vector<std::optional<FrontGrid>>& fronts) {
@@ -137,7 +115,8 @@ void append_grid_face(MeshWriter& out, const layout::Room& room, int face, const
         for (std::size_t j = j0; j < j1; ++j) {
             for (std::size_t i = i0; i < i1; ++i) open[j * (na - 1) + i] = 0;
         }
-        fronts[static_cast<std::size_t>(h.portal)] = hole_front(grid, h, i0, i1, j0, j1);
+        fronts[static_cast<std::size_t>(h.portal)] = grid_front(
+            h.corners, [&](std::size_t i, std::size_t j) { return grid.point(i, j); }, i0, i1, j0, j1);
     }
 
     const glm::dvec3 normal = inward_normal(f);
@@ -187,10 +166,11 @@ void append_face(MeshWriter& out, const layout::Room& room, int face, const Line
 
 }  // namespace
 
-std::array<IndexRange, layout::kFaceCount> append_room_faces(MeshWriter& out, const layout::Layout& layout,
-                                                             int room_index, const std::vector<int>& room_portals,
-                                                             std::vector<std::optional<FrontGrid>>& fronts) {
+std::vector<IndexRange> append_room_faces(MeshWriter& out, const layout::Layout& layout, int room_index,
+                                          const std::vector<int>& room_portals,
+                                          std::vector<std::optional<FrontGrid>>& fronts) {
     const layout::Room& room = layout.rooms[static_cast<std::size_t>(room_index)];
+    if (layout::is_prism(room)) return append_prism_faces(out, layout, room_index, room_portals, fronts);
     std::array<std::vector<FaceHole>, layout::kFaceCount> holes;
     std::array<bool, layout::kFaceCount> slabs{};  // faces with a hole that is not axis-aligned
     for (const int p : room_portals) {
@@ -221,7 +201,7 @@ std::array<IndexRange, layout::kFaceCount> append_room_faces(MeshWriter& out, co
         l.erase(std::unique(l.begin(), l.end()), l.end());
     }
 
-    std::array<IndexRange, layout::kFaceCount> ranges{};
+    std::vector<IndexRange> ranges(layout::kFaceCount);
     for (int face = 0; face < layout::kFaceCount; ++face) {
         const auto fi = static_cast<std::size_t>(face);
         const std::uint32_t first = out.index_count();

@@ -1,7 +1,10 @@
-// A room's six faces, seen from inside, with exact rectangular holes where its
+// A room's faces, seen from inside, with exact rectangular holes where its
 // own portals lie in them (layout-format.md, "Rooms" and "The portal box").
 // Which portal is a hole in which face is the loader's decision
 // (layout::Portal::hole_face), so the rasteriser and the tracer agree on it.
+//
+// A prism room's faces are scene/prism_mesh.hpp's; the rest of this comment
+// is about box rooms.
 //
 // Triangulation: each face is cut into a grid along lines shared by the whole
 // room, on each axis the room's bounds and the edges of every hole, and emits
@@ -27,14 +30,16 @@
 
 namespace impossible::scene {
 
-// Appends the six faces of layout.rooms[room], in layout::Face order, with
-// the room's colours and checker. `room_portals` lists the room's portals
+// Appends the faces of layout.rooms[room] in face order (layout/room_shape.hpp:
+// a box room's six, a prism room's floor, ceiling and walls, prism_mesh.hpp),
+// with the room's colours and checker. `room_portals` lists the room's portals
 // (indices into layout.portals, ascending). For each portal p of them with a
 // hole_face, sets fronts[p] (fronts has one entry per portal) to the front
 // that matches the hole's edges. A face with a texture gets texture
-// coordinates (FaceUv). Returns each face's index range, in layout::Face order.
-std::array<IndexRange, layout::kFaceCount> append_room_faces(MeshWriter& out, const layout::Layout& layout, int room,
-                                                             const std::vector<int>& room_portals,
-                                                             std::vector<std::optional<FrontGrid>>& fronts);
+// coordinates (FaceUv). Returns each face's index range, in face order
+// (layout::face_count(room) of them).
+std::vector<IndexRange> append_room_faces(MeshWriter& out, const layout::Layout& layout, int room,
+                                          const std::vector<int>& room_portals,
+                                          std::vector<std::optional<FrontGrid>>& fronts);
 
 }  // namespace impossible::scene

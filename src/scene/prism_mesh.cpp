@@ -1,0 +1,313 @@
+#include "scene/prism_mesh.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "layout/room_shape.hpp"
+#include "scene/grid_front.hpp"
+#include "scene/polygon_tess.hpp"
+
+namespace impossible::scene {
+
+namespace {
+
+// As room_mesh.cpp's: a rectangle whose corners lie within this of their
+// bounding rectangle's in a wall's (s, t) is upright in it.
+constexpr double kPrismAlignTolerance = 1e-6;
+
+// A portal that is a hole in a face, in the face's (s, t).
+struct PrismHole {
+    int portal = -1;
+    std::array<glm::dvec2, 4> corners;  // math::box_corners' front corners
+    glm::dvec2 lo{0.0}, hi{0.0};        // their bounding rectangle
+    bool aligned = true;
+};
+
+// The hole of `rect` in the face `frame`; a wall's clamps its corners to the
+// wall's rectangle [bounds[0], bounds[1]] (a floor's or ceiling's is left as
+// it is: the tessellator cuts it to the polygon).
+PrismHole prism_hole(const layout::FaceFrame& frame, int portal, const math::PortalRect& rect,
+                     const glm::dvec2* bounds) {
+    math::dvec3 c[8];
+    math::box_corners(rect, c);
+    PrismHole h;
+    h.portal = portal;
+    h.lo = glm::dvec2(std::numeric_limits<double>::infinity());
+    h.hi = -h.lo;
+    for (std::size_t k = 0; k < 4; ++k) {
+        glm::dvec2 st = layout::to_face(frame, c[k]);
+        if (bounds != nullptr) st = glm::clamp(st, bounds[0], bounds[1]);
+        h.corners[k] = st;
+        h.lo = glm::min(h.lo, st);
+        h.hi = glm::max(h.hi, st);
+    }
+    const auto near = [](double x, double a, double b) {
+        return std::abs(x - a) <= kPrismAlignTolerance || std::abs(x - b) <= kPrismAlignTolerance;
+    };
+    for (const glm::dvec2& p : h.corners) {
+        h.aligned = h.aligned && near(p.x, h.lo.x, h.hi.x) && near(p.y, h.lo.y, h.hi.y);
+    }
+    return h;
+}
+
+// Wall i in its frame: s = 0 at corner i (a), s = length at corner i + 1 (b).
+struct PrismWall {
+    layout::FaceFrame frame;
+    glm::dvec2 a{0.0}, b{0.0};    // (x, z)
+    double length = 0.0;          // negative where s runs from b towards a
+    std::vector<double> s_lines;  // ascending: the wall's ends, and its holes' edges on a grid wall
+    std::vector<PrismHole> holes;
+    bool grid = true;  // every hole upright in it
+
+    // The point (s, y) of the wall, in layout coordinates; the wall's ends
+    // are its corners exactly.
+    glm::dvec3 point(double s, double y) const {
+        const glm::dvec2 xz = s == 0.0 ? a : s == length ? b : a + (s / length) * (b - a);
+        return {xz.x, y, xz.y};
+    }
+    // s_lines from corner a to corner b.
+    std::vector<double> from_a() const {
+        std::vector<double> s = s_lines;
+        if (length < 0.0) std::reverse(s.begin(), s.end());
+        return s;
+    }
+};
+
+struct PrismPlan {
+    std::vector<PrismWall> walls;
+    // The heights every wall is cut at: floor, ceiling, and the top and
+    // bottom edges of the holes of every grid wall, ascending.
+    std::vector<double> heights;
+    std::array<layout::FaceFrame, 2> caps;            // floor, ceiling
+    std::array<std::vector<PrismHole>, 2> cap_holes;  // in the caps' (s, t)
+};
+
+void sort_unique(std::vector<double>& v) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+void add_prism_hole(PrismPlan& plan, const layout::Room& room, int p, const layout::Portal& portal) {
+    const auto face = static_cast<std::size_t>(portal.hole_face);
+    if (face < 2) {
+        plan.cap_holes[face].push_back(prism_hole(plan.caps[face], p, portal.rect, nullptr));
+        return;
+    }
+    PrismWall& w = plan.walls[face - 2];
+    const glm::dvec2 bounds[2] = {{std::min(0.0, w.length), room.min.y}, {std::max(0.0, w.length), room.max.y}};
+    const PrismHole h = prism_hole(w.frame, p, portal.rect, bounds);
+    w.grid = w.grid && h.aligned;
+    w.holes.push_back(h);
+}
+
+PrismPlan plan_prism(const layout::Layout& layout, int room_index, const std::vector<int>& room_portals) {
+    const layout::Room& room = layout.rooms[static_cast<std::size_t>(room_index)];
+    PrismPlan plan;
+    for (int i = 0; i < layout::wall_count(room); ++i) {
+        const layout::Wall lw = layout::wall(room, i);
+        PrismWall w;
+        w.frame = layout::face_frame(room, 2 + i);
+        w.a = lw.a;
+        w.b = lw.b;
+        w.length = glm::dot(glm::dvec3(lw.b.x - lw.a.x, 0.0, lw.b.y - lw.a.y), w.frame.s_axis);
+        plan.walls.push_back(w);
+    }
+    for (std::size_t f = 0; f < 2; ++f) plan.caps[f] = layout::face_frame(room, static_cast<int>(f));
+    for (const int p : room_portals) {
+        const layout::Portal& portal = layout.portals[static_cast<std::size_t>(p)];
+        if (portal.room != room_index || portal.hole_face < 0) continue;
+        assert(portal.hole_face < layout::face_count(room));
+        add_prism_hole(plan, room, p, portal);
+    }
+    plan.heights = {room.min.y, room.max.y};
+    for (PrismWall& w : plan.walls) {
+        w.s_lines = {std::min(0.0, w.length), std::max(0.0, w.length)};
+        if (!w.grid) continue;
+        for (const PrismHole& h : w.holes) {
+            w.s_lines.insert(w.s_lines.end(), {h.lo.x, h.hi.x});
+            plan.heights.insert(plan.heights.end(), {h.lo.y, h.hi.y});
+        }
+        sort_unique(w.s_lines);
+    }
+    sort_unique(plan.heights);
+    return plan;
+}
+
+// How a wall's vertices look: its exact normal, colour, checker, and its
+// texture coordinates along the wall (layout::wall_uv: (s, -y) / size, less
+// `shift`, whole tiles that keep them small far from the origin).
+struct WallStyle {
+    glm::dvec3 normal{0.0};
+    glm::dvec3 color{0.0};
+    double checker = 0.0;
+    bool textured = false;
+    double size = 1.0;
+    glm::dvec2 shift{0.0};
+};
+
+std::uint32_t wall_vertex(MeshWriter& out, const WallStyle& style, const glm::vec3& position, double s, double t) {
+    const glm::dvec2 uv = style.textured ? glm::dvec2(s, -t) / style.size - style.shift : glm::dvec2(0.0);
+    return out.vertex(position, style.normal, style.color, style.checker, uv, 1.0);
+}
+
+std::size_t line_at(const std::vector<double>& lines, double value) {
+    const auto it = std::lower_bound(lines.begin(), lines.end(), value);
+    assert(it != lines.end() && *it == value);
+    return static_cast<std::size_t>(it - lines.begin());
+}
+
+// A wall on its grid (s_lines × heights); fills the fronts of its holes.
+void append_grid_wall(MeshWriter& out, const PrismPlan& plan, const PrismWall& w, const WallStyle& style,
+                      std::vector<std::optional<FrontGrid>>& fronts) {
+    const std::vector<double>& ss = w.s_lines;
+    const std::vector<double>& ts = plan.heights;
+    const std::size_t na = ss.size(), nb = ts.size();
+    std::vector<glm::vec3> points(na * nb);
+    for (std::size_t j = 0; j < nb; ++j)
+        for (std::size_t i = 0; i < na; ++i) points[j * na + i] = out.local(w.point(ss[i], ts[j]));
+    std::vector<char> open((na - 1) * (nb - 1), 1);  // cell (i, j) at [j * (na - 1) + i]
+    for (const PrismHole& h : w.holes) {
+        const std::size_t i0 = line_at(ss, h.lo.x), i1 = line_at(ss, h.hi.x);
+        const std::size_t j0 = line_at(ts, h.lo.y), j1 = line_at(ts, h.hi.y);
+        for (std::size_t j = j0; j < j1; ++j)
+            for (std::size_t i = i0; i < i1; ++i) open[j * (na - 1) + i] = 0;
+        fronts[static_cast<std::size_t>(h.portal)] = grid_front(
+            h.corners, [&](std::size_t i, std::size_t j) { return points[j * na + i]; }, i0, i1, j0, j1);
+    }
+    constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+    std::vector<std::uint32_t> ids(na * nb, kNone);  // made when first used
+    const auto id = [&](std::size_t i, std::size_t j) {
+        std::uint32_t& v = ids[j * na + i];
+        if (v == kNone) v = wall_vertex(out, style, points[j * na + i], ss[i], ts[j]);
+        return v;
+    };
+    for (std::size_t j = 0; j + 1 < nb; ++j) {
+        for (std::size_t i = 0; i + 1 < na; ++i) {
+            if (!open[j * (na - 1) + i]) continue;
+            out.triangle(id(i, j), id(i + 1, j), id(i + 1, j + 1));
+            out.triangle(id(i, j), id(i + 1, j + 1), id(i, j + 1));
+        }
+    }
+}
+
+// A hole's front from its corners, given as the face's vertices there.
+FrontGrid corners_front(const std::array<glm::vec3, 4>& c) { return FrontGrid{2, 2, {c[0], c[1], c[3], c[2]}}; }
+
+// Emits the tessellation's triangles, a vertex per point made when first used.
+template <class MakeVertex>
+void append_tessellation(MeshWriter& out, const Tessellation& tess, MakeVertex make_vertex) {
+    constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+    std::vector<std::uint32_t> ids(tess.points.size(), kNone);
+    const auto id = [&](int k) {
+        std::uint32_t& v = ids[static_cast<std::size_t>(k)];
+        if (v == kNone) v = make_vertex(static_cast<std::size_t>(k));
+        return v;
+    };
+    for (const std::array<int, 3>& t : tess.triangles) out.triangle(id(t[0]), id(t[1]), id(t[2]));
+}
+
+// A wall with a hole that is not upright in it: its rectangle (cut at every
+// height on its sides) less its holes, by the tessellator.
+void append_tessellated_wall(MeshWriter& out, const PrismPlan& plan, const PrismWall& w, const WallStyle& style,
+                             std::vector<std::optional<FrontGrid>>& fronts) {
+    const double s0 = w.s_lines.front(), s1 = w.s_lines.back();
+    std::vector<std::vector<glm::dvec2>> contours(1);
+    contours[0].push_back({s0, plan.heights.front()});
+    for (const double t : plan.heights) contours[0].push_back({s1, t});
+    for (std::size_t k = plan.heights.size() - 1; k > 0; --k) contours[0].push_back({s0, plan.heights[k]});
+    for (const PrismHole& h : w.holes) {
+        contours.emplace_back(h.corners.begin(), h.corners.end());
+        std::array<glm::vec3, 4> c;
+        for (std::size_t k = 0; k < 4; ++k) c[k] = out.local(w.point(h.corners[k].x, h.corners[k].y));
+        fronts[static_cast<std::size_t>(h.portal)] = corners_front(c);
+    }
+    const Tessellation tess = tessellate(contours);
+    append_tessellation(out, tess, [&](std::size_t k) {
+        const glm::dvec2 st = tess.points[k];
+        return wall_vertex(out, style, out.local(w.point(st.x, st.y)), st.x, st.y);
+    });
+}
+
+// The floor (face 0) or ceiling (1): the polygon through every wall's grid
+// points along its edges, less the trapdoors' holes, by the tessellator.
+void append_cap(MeshWriter& out, const layout::Room& room, const PrismPlan& plan, int face,
+                std::vector<std::optional<FrontGrid>>& fronts) {
+    const auto f = static_cast<std::size_t>(face);
+    const layout::FaceFrame& frame = plan.caps[f];
+    const double y = face == 0 ? room.min.y : room.max.y;
+    std::vector<std::vector<glm::dvec2>> contours(1);
+    std::vector<glm::vec3> positions;
+    for (const PrismWall& w : plan.walls) {
+        const std::vector<double> s = w.from_a();
+        for (std::size_t k = 0; k + 1 < s.size(); ++k) {  // corner b is the next wall's a
+            const glm::dvec3 p = w.point(s[k], y);
+            contours[0].push_back(layout::to_face(frame, p));
+            positions.push_back(out.local(p));
+        }
+    }
+    for (const PrismHole& h : plan.cap_holes[f]) {
+        contours.emplace_back(h.corners.begin(), h.corners.end());
+        std::array<glm::vec3, 4> c;
+        for (std::size_t k = 0; k < 4; ++k) c[k] = out.local(layout::from_face(frame, h.corners[k]));
+        positions.insert(positions.end(), c.begin(), c.end());
+        fronts[static_cast<std::size_t>(h.portal)] = corners_front(c);
+    }
+    const Tessellation tess = tessellate(contours);
+    for (std::size_t k = positions.size(); k < tess.points.size(); ++k)
+        positions.push_back(out.local(layout::from_face(frame, tess.points[k])));
+    const glm::dvec3& color = room.face_color[f];
+    append_tessellation(out, tess,
+                        [&](std::size_t k) { return out.vertex(positions[k], frame.normal, color, room.checker); });
+}
+
+WallStyle wall_style(const MeshWriter& out, const layout::Room& room, const PrismWall& w, std::size_t face) {
+    WallStyle style;
+    style.normal = w.frame.normal;
+    style.color = room.face_color[face];
+    style.checker = room.checker;
+    style.textured = room.face_texture[face] != nullptr;
+    style.size = room.texture_size;
+    style.shift = glm::dvec2(0.0, std::floor(-out.origin.y / room.texture_size));
+    return style;
+}
+
+}  // namespace
+
+std::vector<IndexRange> append_prism_faces(MeshWriter& out, const layout::Layout& layout, int room_index,
+                                           const std::vector<int>& room_portals,
+                                           std::vector<std::optional<FrontGrid>>& fronts) {
+    const layout::Room& room = layout.rooms[static_cast<std::size_t>(room_index)];
+    const PrismPlan plan = plan_prism(layout, room_index, room_portals);
+    std::vector<IndexRange> ranges(static_cast<std::size_t>(layout::face_count(room)));
+    for (std::size_t face = 0; face < ranges.size(); ++face) {
+        const std::uint32_t first = out.index_count();
+        out.face_uv.reset();
+        if (face < 2) {
+            if (room.face_texture[face]) {
+                const auto f = static_cast<layout::Face>(face);
+                out.face_uv = FaceUv{f, room.texture_size,
+                                     glm::floor(shading::room_texture_uv(f, out.origin, room.texture_size))};
+            }
+            append_cap(out, room, plan, static_cast<int>(face), fronts);
+        } else {
+            const PrismWall& w = plan.walls[face - 2];
+            const WallStyle style = wall_style(out, room, w, face);
+            if (w.grid)
+                append_grid_wall(out, plan, w, style, fronts);
+            else
+                append_tessellated_wall(out, plan, w, style, fronts);
+        }
+        ranges[face] = out.range_since(first);
+    }
+    out.face_uv.reset();
+    return ranges;
+}
+
+}  // namespace impossible::scene

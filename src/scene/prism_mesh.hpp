@@ -1,0 +1,41 @@
+// The faces of a prism room (layout-format.md, "Rooms of any shape"), seen
+// from inside, with exact holes where its own portals lie in them: the floor,
+// the ceiling and one wall per edge of the floor polygon, in face order
+// (layout/room_shape.hpp).
+//
+// Walls: each wall is cut into a grid in its own frame (s along the wall, t =
+// y), on s at its ends and the edges of its holes, on t at the floor, the
+// ceiling and the top and bottom edges of every hole in any wall of the room
+// (so that neighbouring walls meet vertex to vertex at their shared corner),
+// and emits the cells no hole covers; a hole's portal front is built from
+// the same grid points. A wall holding a rectangle that is not upright in it
+// is triangulated with its holes by the GLU tessellator (polygon_tess.hpp)
+// instead, its portals' fronts made of the holes' corners.
+//
+// Floor and ceiling: the floor polygon with every wall's grid points along
+// its edges (so that floor and walls meet vertex to vertex) and the holes of
+// trapdoors, triangulated by the tessellator; a trapdoor's front is made of
+// its hole's corners, projected into the face's plane.
+//
+// Every vertex is computed once in double, in layout coordinates, and
+// converted to the mesh's local coordinates (MeshWriter::local) once, so the
+// faces and fronts that share a point share it bit for bit. Wall corners are
+// the polygon's corners exactly.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "layout/layout.hpp"
+#include "scene/mesh_writer.hpp"
+#include "scene/portal_box.hpp"
+
+namespace impossible::scene {
+
+// As append_room_faces (room_mesh.hpp) for a prism room: returns
+// layout::face_count(room) index ranges, floor, ceiling, then wall 0, 1, …
+std::vector<IndexRange> append_prism_faces(MeshWriter& out, const layout::Layout& layout, int room,
+                                           const std::vector<int>& room_portals,
+                                           std::vector<std::optional<FrontGrid>>& fronts);
+
+}  // namespace impossible::scene
