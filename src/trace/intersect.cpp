@@ -106,8 +106,11 @@ dvec4 triangle_color(const PropTriangle& tri, std::span<const PropMaterial> mate
 
 dvec3 room_face_color(const RoomFace& face, const dvec3& p) {
     if (!face.texture) return face.color;
-    const dvec4 texel =
-        sample_mip0(*face.texture, assets::Sampler{}, shading::room_texture_uv(face.face, p, face.texture_size));
+    // A prism's wall: layout::wall_uv, from the wall's frame kept in the face.
+    const glm::dvec2 uv = face.wall >= 0
+                              ? glm::dvec2(glm::dot(p - face.wall_origin, face.wall_s_axis), -p.y) / face.texture_size
+                              : shading::room_texture_uv(face.face, p, face.texture_size);
+    const dvec4 texel = sample_mip0(*face.texture, assets::Sampler{}, uv);
     return face.color * dvec3(texel);
 }
 

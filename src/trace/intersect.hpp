@@ -147,8 +147,9 @@ std::optional<SurfaceHit> hit_triangle(const PropTriangle& tri, std::span<const 
 dvec4 triangle_color(const PropTriangle& tri, std::span<const PropMaterial> materials, glm::dvec2 barycentric);
 
 // A room face's base colour at a point p of it: its colour, times the
-// texel of its texture (if any) at shading::room_texture_uv(face, p, size),
-// read at mip level 0 with the default sampler (repeat, linear).
+// texel of its texture (if any) at shading::room_texture_uv(face, p, size)
+// (on a prism's wall at layout::wall_uv's coordinates), read at mip level 0
+// with the default sampler (repeat, linear).
 dvec3 room_face_color(const RoomFace& face, const dvec3& p);
 
 // A portal's box for a ray from `origin`, which is the (possibly virtual)

@@ -5,6 +5,8 @@
 
 #include <span>
 
+#include "trace/prism_faces.hpp"
+
 namespace impossible::trace {
 
 namespace {
@@ -81,6 +83,19 @@ void nearest_in_mixed_room(const Scene& scene, const FrameObjects* objects, int 
     nearest_through_volumes(scene, objects, room, origin, dir, clip, nearest);
 }
 
+void nearest_prism_static(const Scene& scene, const SceneRoom& room, const dvec3& origin, const dvec3& dir,
+                          const ClipPlane& clip, Nearest& nearest) {
+    const PrismHit hit = hit_prism_faces(scene, room.prism, origin, dir, clip, limit_of(nearest));
+    if (hit.face >= 0) {
+        const PrismFace& f = room.prism.faces[static_cast<std::size_t>(hit.face)];
+        nearest.offer(SurfaceHit{hit.t, f.normal}, hit.portal, f.surface.color, room.checker);
+        if (f.surface.texture) nearest.textured_face = &f.surface;
+    }
+    nearest_prop(room, origin, dir, clip, nearest);
+    for (int p : room.box_portals)
+        nearest.offer(hit_portal_box(scene.portals[p], origin, dir, clip), p, dvec3(0.0), 0.0);
+}
+
 void nearest_for_light(const Scene& scene, const FrameObjects* objects, int room_index, const dvec3& origin,
                        const dvec3& dir, const ClipPlane& clip, double t_limit, Nearest& nearest) {
     const SceneRoom& room = scene.rooms[room_index];
@@ -89,9 +104,14 @@ void nearest_for_light(const Scene& scene, const FrameObjects* objects, int room
     nearest.t = t_limit;
     nearest.portal = -1;
     nearest.source = SurfaceSource{};
-    for (const RoomFace& f : room.faces) {
-        if (const std::optional<FaceHit> hit = hit_room_face(f, scene, origin, dir, clip, nearest.t))
-            nearest.offer(SurfaceHit{hit->t, axis_normal(f.rect.axis, f.rect.sign)}, hit->portal, f.color, 0.0);
+    if (room.prism.faces.empty()) {
+        for (const RoomFace& f : room.faces) {
+            if (const std::optional<FaceHit> hit = hit_room_face(f, scene, origin, dir, clip, nearest.t))
+                nearest.offer(SurfaceHit{hit->t, axis_normal(f.rect.axis, f.rect.sign)}, hit->portal, f.color, 0.0);
+        }
+    } else if (const PrismHit hit = hit_prism_faces(scene, room.prism, origin, dir, clip, nearest.t); hit.face >= 0) {
+        const PrismFace& f = room.prism.faces[static_cast<std::size_t>(hit.face)];
+        nearest.offer(SurfaceHit{hit.t, f.normal}, hit.portal, f.surface.color, 0.0);
     }
     nearest_prop(room, origin, dir, clip, nearest);
     for (int p : room.box_portals)

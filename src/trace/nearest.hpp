@@ -89,11 +89,20 @@ inline void nearest_prop(const PropSurfaces& s, const dvec3& origin, const dvec3
     }
 }
 
+// nearest_static in a prism room (nearest.cpp): its faces (prism_faces.hpp),
+// then as in a box room.
+void nearest_prism_static(const Scene& scene, const SceneRoom& room, const dvec3& origin, const dvec3& dir,
+                          const ClipPlane& clip, Nearest& nearest);
+
 // A room's static surfaces: the faces first, the first in order at the
 // smallest t (a face no nearer than the nearest so far would lose to it),
 // then the props, then the portals' boxes, each losing a tie to those before.
 inline void nearest_static(const Scene& scene, const SceneRoom& room, const dvec3& origin, const dvec3& dir,
                            const ClipPlane& clip, Nearest& nearest) {
+    if (!room.prism.faces.empty()) [[unlikely]] {
+        nearest_prism_static(scene, room, origin, dir, clip, nearest);
+        return;
+    }
     int face = -1;
     FaceHit face_hit{limit_of(nearest), -1};
     for (int f = 0; f < layout::kFaceCount; ++f) {

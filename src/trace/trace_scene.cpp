@@ -11,6 +11,7 @@
 #include "lights/light_images.hpp"
 #include "links/portal_links.hpp"
 #include "trace/bvh.hpp"
+#include "trace/prism_faces.hpp"
 
 namespace impossible::trace {
 
@@ -139,7 +140,8 @@ std::optional<Error> check_portals(const layout::Layout& layout) {
 
 SceneRoom scene_room(const layout::Room& room) {
     SceneRoom r;
-    for (int f = 0; f < layout::kFaceCount; ++f) {
+    if (layout::is_prism(room)) r.prism = prism_shape(room);  // its `faces` stay unused
+    for (int f = 0; f < layout::kFaceCount && !layout::is_prism(room); ++f) {
         r.faces[f].rect = room_face_rect(room.min, room.max, static_cast<layout::Face>(f));
         r.faces[f].face = static_cast<layout::Face>(f);
         r.faces[f].color = room.face_color[f];
@@ -177,12 +179,22 @@ void add_portal(Scene& scene, const layout::Layout& layout, int i) {
 
     SceneRoom& room = scene.rooms[p.room];
     room.portals.push_back(i);
-    for (RoomFace& face : room.faces) {
-        if (cuts_hole(face.rect, p.rect)) {
-            face.holes.push_back(i);
-            scene.portals[i].in_hole = true;
-            break;  // a rectangle lies in one face's plane at most
+    // The face whose hole the rectangle fills (a rectangle lies in one
+    // face's plane at most).
+    RoomFace* holed = nullptr;
+    if (const layout::Room& own = layout.rooms[p.room]; layout::is_prism(own)) {
+        if (const int f = prism_hole_face(own, p.rect); f >= 0) holed = &room.prism.faces[std::size_t(f)].surface;
+    } else {
+        for (RoomFace& face : room.faces) {
+            if (cuts_hole(face.rect, p.rect)) {
+                holed = &face;
+                break;
+            }
         }
+    }
+    if (holed) {
+        holed->holes.push_back(i);
+        scene.portals[i].in_hole = true;
     }
     if (!scene.portals[i].in_hole || p.kind == layout::PortalKind::Door) room.box_portals.push_back(i);
 }

@@ -49,9 +49,40 @@ struct RoomFace {
     std::vector<int> holes;  // portals (indices into Scene::portals) cutting a hole here
     // Multiplies `color` where set: read at shading::room_texture_uv(face, p,
     // texture_size) with the default sampler (docs/tracer.md, "Materials
-    // and textures").
+    // and textures"), or on a prism's wall at layout::wall_uv's coordinates.
     std::shared_ptr<const image::Pixels> texture;
     double texture_size = 1.0;
+    // A prism room's wall (PrismFace): its index, and its face frame's origin
+    // and s axis, along which its texture runs (layout::wall_uv); -1 otherwise.
+    int wall = -1;
+    dvec3 wall_origin{0.0};
+    dvec3 wall_s_axis{0.0};
+};
+
+// A face of a prism room (layout-format.md, "Rooms of any shape"), seen from
+// inside: its colour, holes and texture as a box room's face has them
+// (`surface`, whose rect is not read), and its unit normal into the room.
+// Where it lies is its index's: 0 the floor and 1 the ceiling, at height
+// `y` over the floor polygon, 2 + i wall i, from corner i to corner i + 1
+// (PrismShape::corners) between the floor and the ceiling.
+struct PrismFace {
+    RoomFace surface;
+    dvec3 normal{0.0};
+    double y = 0.0;  // the floor's or the ceiling's height
+};
+
+// A prism room's faces (prism_faces.hpp intersects them). Walls meet the
+// ray's line where it separates their two corners (in x, z), each corner's
+// side computed once per ray, so two walls that share a corner leave no gap
+// between them; the floor and the ceiling reach `tolerance` past the
+// polygon's edges, so none opens between them and a wall either.
+struct PrismShape {
+    std::vector<glm::dvec2> corners;  // the floor polygon (x, z) in file order
+    double winding = 1.0;             // +1: counter-clockwise in (x, z) (math::signed_area > 0), else -1
+    glm::dvec2 lo{0.0}, hi{0.0};      // the polygon's bounding rectangle
+    double y0 = 0.0, y1 = 0.0;        // floor and ceiling heights
+    double tolerance = 0.0;           // 1e-9 · (1 + the largest |corner coordinate|)
+    std::vector<PrismFace> faces;     // in layout face order: floor, ceiling, walls
 };
 
 // A prop box, visible from outside.
@@ -150,7 +181,8 @@ struct PropSurfaces {
 // A room: its faces, and as PropSurfaces its static props only (a dynamic
 // one, walk/objects.hpp, is a SceneObject, placed anew each frame).
 struct SceneRoom : PropSurfaces {
-    std::array<RoomFace, layout::kFaceCount> faces;  // in layout::Face order
+    std::array<RoomFace, layout::kFaceCount> faces;  // a box room's, in layout::Face order
+    PrismShape prism;                                // a prism room's (faces not empty; `faces` then unused)
     std::vector<int> portals;                        // indices into Scene::portals
     // Those of `portals` with more to hit than a hole's front, which the
     // faces meet (hit_room_face): free-standing portals and doors, whose
