@@ -1,6 +1,7 @@
 // impossible generate --play-area WxD | --play-area-file POLY.json --rooms N
 // --seed S [--max-overlap P] [--out FILE.json]: a random valid layout
 // (design/generate.hpp); standard output without --out.
+#include <cstdio>
 #include <iostream>
 
 #include "app/commands.hpp"
@@ -93,14 +94,19 @@ int run_generate_command(const Args& args, std::ostream& out, std::ostream& err)
     if (const auto file = parsed.value("--out")) outputs.output("--out", *file);
     GenerateArgs o;
     apply_options(kGenerateOptions, parsed, o);
-    const std::string text = value_or_throw(design::generate_layout(o.generate));
+    const design::Generated g = value_or_throw(design::generate(o.generate));
     if (o.out) {
-        outputs.set(*o.out, text);
+        outputs.set(*o.out, g.text);
         outputs.commit();
-        err << "generate: wrote " << o.generate.rooms << " rooms to " << *o.out << "\n";
+        err << "generate: wrote " << g.rooms << " rooms to " << *o.out << "\n";
     } else {
-        out << text;
+        out << g.text;
     }
+    char ratio[160];
+    std::snprintf(ratio, sizeof ratio,
+                  "generate: expansion ratio %.3f (%.2f m2 of room floor on %.2f m2 of play area)\n", g.expansion_ratio,
+                  g.floor_area, g.play_area);
+    err << ratio;
     return kExitOk;
 }
 

@@ -1,22 +1,25 @@
 // `impossible generate`: a random, valid layout of N rooms on a given floor,
 // in the spirit of Vasylevska and Kaufmann's procedural "Flexible Spaces"
-// (Vasylevska, Kaufmann, Bolas and Suma, IEEE 3DUI 2013; here rooms are
-// boxes and doors are portals, not corridors).
+// (Vasylevska, Kaufmann, Bolas and Suma, IEEE 3DUI 2013).
 //
-// Rooms are axis-aligned boxes on a 0.1 m grid, each inside the play area.
-// The first room is placed at random; each further room B grows out of a
-// wall of an existing room A: a door in A's wall, and a coincident door in B
-// facing the other way (so the transfer is the identity and B lies where it
-// is drawn on the physical floor). B reaches at least kMinReach beyond A's
-// wall, so there is room to step through, and may reach back into A: that
-// part is the overlap, the impossible part. B's door stands free in B, or
-// lies in B's wall when B only touches A. Every pair of rooms must overlap
-// by at most the limit (a percentage of the smaller floor: --max-overlap, or
-// by default the published threshold of design/overlap.hpp). Each room gets
-// its own hue, a checker on every other room, and one or two props of its
-// own shape in corners away from its doors.
+// The rooms are packed onto the play area so that their summed floor, the
+// expansion ratio, is as large as the overlap limit allows
+// (design/pack_search.hpp): strips turned to the play area's edges that
+// cross their neighbours, bent into L-shapes, turned, or made curved
+// corridors where that adds floor; each room inside the play area and at
+// least 1.5 m wide, every pair overlapping by at most the limit (a
+// percentage of the smaller floor: --max-overlap, or by default the
+// published threshold of design/overlap.hpp). Consecutive rooms are joined by
+// coincident doors (the transfer is the identity, so a room lies where it is
+// drawn on the physical floor): a door in a wall of one room, standing free
+// in the other (or in its wall where the two only touch), with room to walk
+// past it. Where the packer finds nothing (a play area of more than
+// kPackMaxCorners corners, or rooms that do not fit its lattices), rooms are
+// grown out of each other as boxes on a 0.1 m grid (generate_boxes.cpp).
+// Each room gets its own hue, a checker on every other room, and one or two
+// props of its own shape in corners away from its doors.
 //
-// Deterministic: a splitmix64 generator and integer decimetres throughout;
+// Deterministic: a splitmix64 generator and work budgets counted in tries;
 // the same options write the same bytes.
 #pragma once
 
@@ -44,7 +47,22 @@ struct GenerateOptions {
     std::optional<double> max_overlap;  // percent of the smaller floor
 };
 
+struct Generated {
+    std::string text;  // the layout as JSON (ends with a newline)
+    int rooms = 0;
+    double floor_area = 0.0;  // m², summed over rooms
+    double play_area = 0.0;   // m²
+    double expansion_ratio = 0.0;
+};
+
+// The layout, or why it could not be made (one line).
+Result<Generated> generate(const GenerateOptions& options);
+
 // The layout as JSON text (ends with a newline), or why it could not be made.
 Result<std::string> generate_layout(const GenerateOptions& options);
+
+struct Packing;
+// In generate_boxes.cpp: rooms grown out of each other as boxes.
+std::optional<Packing> grow_boxes(const GenerateOptions& options);
 
 }  // namespace impossible::design

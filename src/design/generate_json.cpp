@@ -1,15 +1,18 @@
-// The generator's draft written as layout JSON: ids, colours, props, doors.
+// The generator's packing written as layout JSON: ids, colours, props, doors.
+// A room that is an axis-aligned rectangle is a box room (min/max); any other
+// (turned, L-shaped, a corridor) a prism room (floor polygon and y).
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "design/decimetres.hpp"
-
 #include "design/generate.hpp"
+#include "design/pack_search.hpp"
 
 namespace impossible::design {
 namespace {
@@ -35,35 +38,49 @@ ordered_json hsv(double h, double s, double v) {
 }
 
 ordered_json vec(double a, double b, double c) { return {a, b, c}; }
+double micro(double v) { return std::round(v * 1e6) / 1e6 + 0.0; }
 
-struct DoorPlace {
-    glm::dvec2 centre;  // metres
-    bool along_z;       // the door's width runs along z
-};
+// Where a prop of floor size `s` (x, z) fits in the corner `k` of the room:
+// the first spot along the corner's bisector with the whole box 2 cm inside.
+std::optional<glm::dvec2> corner_spot(const math::Polygon2& room, std::size_t k, glm::dvec2 s) {
+    const std::size_t n = room.size();
+    const glm::dvec2 p = room[k], a = glm::normalize(room[(k + n - 1) % n] - p),
+                     b = glm::normalize(room[(k + 1) % n] - p);
+    if (a.x * b.y - a.y * b.x > -1e-9) return std::nullopt;  // a reflex or straight corner
+    const glm::dvec2 bisector = glm::normalize(a + b);
+    for (double r = 0.3; r <= 1.6; r += 0.05) {
+        const glm::dvec2 lo = glm::dvec2(cents(p.x + bisector.x * r - s.x / 2), cents(p.y + bisector.y * r - s.y / 2));
+        const glm::dvec2 hi = lo + s;
+        bool fits = true;
+        for (const glm::dvec2 c : {lo, hi, glm::dvec2(lo.x, hi.y), glm::dvec2(hi.x, lo.y)})
+            fits = fits && math::contains(room, c, 0.0) && math::distance_to_boundary(room, c) >= 0.02;
+        for (const glm::dvec2& q : room) fits = fits && !(q.x > lo.x && q.x < hi.x && q.y > lo.y && q.y < hi.y);
+        if (fits) return lo;
+    }
+    return std::nullopt;
+}
 
 // Corner props: one shape per room (by index), in corners at least 1 m from its doors.
-ordered_json props(int index, const std::array<int, 5>& r, const std::vector<DoorPlace>& doors, double hue,
-                   std::uint64_t bits) {
+ordered_json props(int index, const math::Polygon2& room, const std::vector<std::array<glm::dvec2, 2>>& doors,
+                   double hue, std::uint64_t bits) {
     static const double kShape[4][3] = {{0.4, 2.4, 0.4}, {0.6, 0.6, 0.6}, {0.5, 1.2, 0.5}, {0.6, 0.9, 0.3}};
     const double* s = kShape[index % 4];
     ordered_json out = ordered_json::array();
     int placed = 0;
-    for (int c = 0; c < 4 && placed < 1 + static_cast<int>(bits & 1); ++c) {
-        const int corner = static_cast<int>((c + (bits >> 1)) % 4);
-        const bool hi_x = corner & 1, hi_z = corner & 2;
-        const double x0 = hi_x ? dm(r[2]) - s[0] : dm(r[0]), z0 = hi_z ? dm(r[3]) - s[2] : dm(r[1]);
+    const std::size_t corners = room.size();
+    for (std::size_t c = 0; c < corners && placed < 1 + static_cast<int>(bits & 1); ++c) {
+        const std::optional<glm::dvec2> lo = corner_spot(room, (c + (bits >> 1)) % corners, {s[0], s[2]});
+        if (!lo) continue;
         bool clear = true;
-        for (const DoorPlace& d : doors) {
-            const glm::dvec2 half = d.along_z ? glm::dvec2(0, 0.45) : glm::dvec2(0.45, 0);
-            for (const glm::dvec2 p : {d.centre - half, d.centre, d.centre + half}) {
-                const double dx = std::max({x0 - p.x, 0.0, p.x - (x0 + s[0])});
-                const double dz = std::max({z0 - p.y, 0.0, p.y - (z0 + s[2])});
+        for (const auto& d : doors)
+            for (const glm::dvec2 p : {d[0], (d[0] + d[1]) / 2.0, d[1]}) {
+                const double dx = std::max({lo->x - p.x, 0.0, p.x - (lo->x + s[0])});
+                const double dz = std::max({lo->y - p.y, 0.0, p.y - (lo->y + s[2])});
                 if (std::hypot(dx, dz) < 1.0) clear = false;
             }
-        }
         if (!clear) continue;
         ordered_json prop;
-        prop["box"] = {{"min", vec(cents(x0), 0, cents(z0))}, {"max", vec(cents(x0 + s[0]), s[1], cents(z0 + s[2]))}};
+        prop["box"] = {{"min", vec(lo->x, 0, lo->y)}, {"max", vec(cents(lo->x + s[0]), s[1], cents(lo->y + s[2]))}};
         prop["color"] = hsv(hue + 0.5 + 0.08 * placed, 0.65, 0.75);
         out.push_back(prop);
         ++placed;
@@ -77,22 +94,66 @@ ordered_json portal(const std::string& id, const std::string& room, glm::dvec2 c
     p["id"] = id;
     p["room"] = room;
     p["center"] = vec(c.x, 1.05, c.y);
-    p["normal"] = vec(n.x, 0, n.y);
-    p["width"] = dm(kDoorWidth);
+    p["normal"] = vec(micro(n.x), 0, micro(n.y));
+    p["width"] = kPackDoorWidth;
     p["height"] = 2.1;
     p["target"] = target;
     return p;
 }
 
+// Where the walk starts in room 0: of a few points on its body, the one
+// farthest from its doors.
+glm::dvec2 start_point(const RoomGeom& room, const std::vector<std::array<glm::dvec2, 2>>& doors) {
+    const math::Polygon2& body = room.pieces[room.pieces.size() / 2];
+    glm::dvec2 centre(0.0);
+    for (const glm::dvec2& p : body) centre += p / static_cast<double>(body.size());
+    glm::dvec2 best = centre;
+    double clearance = -1.0;
+    for (const glm::dvec2& corner : body)
+        for (const double f : {0.0, 0.25, 0.5}) {
+            const glm::dvec2 p(cents(centre.x + (corner.x - centre.x) * f),
+                               cents(centre.y + (corner.y - centre.y) * f));
+            double c = math::contains(room.outline, p, 0.0) ? math::distance_to_boundary(room.outline, p) : -1.0;
+            for (const auto& d : doors) c = std::min(c, math::distance_to_segment(p, d[0], d[1]));
+            if (c > clearance + 1e-9) clearance = c, best = p;
+        }
+    return best;
+}
+
+ordered_json room_json(int i, const RoomGeom& g, int height, const std::vector<std::array<glm::dvec2, 2>>& doors,
+                       std::uint64_t prop_seed) {
+    const double hue = 0.13 + 0.618034 * static_cast<double>(i);
+    ordered_json room;
+    room["id"] = room_id(i);
+    if (g.box) {
+        room["min"] = vec(g.lo.x, 0, g.lo.y);
+        room["max"] = vec(g.hi.x, dm(height), g.hi.y);
+    } else {
+        ordered_json floor = ordered_json::array();
+        for (const glm::dvec2& p : g.outline) floor.push_back({p.x, p.y});
+        room["floor"] = floor;
+        room["y"] = {0.0, dm(height)};
+    }
+    room["color"] = hsv(hue, 0.35, 0.88);
+    room["face_colors"] = {{"floor", hsv(hue, 0.5, 0.45)}};
+    if (i % 2 == 1) room["checker"] = 0.5;
+    const std::uint64_t bits = (prop_seed >> (2 * (i % 30))) ^ static_cast<std::uint64_t>(i);
+    room["props"] = props(i, g.outline, doors, hue, bits);
+    return room;
+}
+
 }  // namespace
 
-std::string layout_text(const GenerateOptions& o, const std::vector<std::array<int, 5>>& rooms,
-                        const std::vector<std::array<int, 4>>& doors, std::uint64_t prop_seed) {
+std::string layout_text(const GenerateOptions& o, const Packing& pk, const std::vector<int>& heights,
+                        std::uint64_t prop_seed) {
     ordered_json j;
     j["format"] = "impossible-layout";
     j["version"] = 1;
-    j["name"] = std::to_string(rooms.size()) + " generated rooms (seed " + std::to_string(o.seed) + ")";
-    j["_generated"] = "impossible generate; rooms joined by coincident doors, each inside the play area";
+    j["name"] = std::to_string(pk.rooms.size()) + " generated rooms (seed " + std::to_string(o.seed) + ")";
+    char ratio[64];
+    std::snprintf(ratio, sizeof ratio, "%.3f", pk.floor_area / math::area(o.play_area));
+    j["_generated"] = std::string("impossible generate; rooms packed onto the play area and joined by coincident ") +
+                      "doors, each inside it; expansion ratio " + ratio;
     if (o.rectangle) {
         j["play_area"] = {{"min", {o.play_area[0].x, o.play_area[0].y}}, {"max", {o.play_area[2].x, o.play_area[2].y}}};
     } else {
@@ -100,40 +161,21 @@ std::string layout_text(const GenerateOptions& o, const std::vector<std::array<i
         for (const glm::dvec2& p : o.play_area) poly.push_back({p.x, p.y});
         j["play_area"] = {{"polygon", poly}};
     }
-    const auto& r0 = rooms[0];
-    j["start"] = {
-        {"room", room_id(0)}, {"position", vec(dm(r0[0] + r0[2]) / 2, 1.6, dm(r0[1] + r0[3]) / 2)}, {"yaw_deg", 0.0}};
-    std::vector<std::vector<DoorPlace>> places(rooms.size());
+    std::vector<std::vector<std::array<glm::dvec2, 2>>> lines(pk.rooms.size());
     ordered_json portals = ordered_json::array();
-    for (const auto& d : doors) {
-        const auto& a = rooms[d[0]];
-        const int side = d[2];
-        const int wall = side == 0 ? a[0] : side == 1 ? a[2] : side == 2 ? a[1] : a[3];
-        const bool along_z = side < 2;
-        const glm::dvec2 c = along_z ? glm::dvec2(dm(wall), dm(d[3])) : glm::dvec2(dm(d[3]), dm(wall));
-        const double out = side % 2 == 1 ? 1.0 : -1.0;  // A's outward direction along the wall's axis
-        const glm::dvec2 n_a = along_z ? glm::dvec2(-out, 0) : glm::dvec2(0, -out);
-        const std::string ida = room_id(d[0]), idb = room_id(d[1]);
-        portals.push_back(portal(ida + "_to_" + idb, ida, c, n_a, idb + "_from_" + ida));
-        portals.push_back(portal(idb + "_from_" + ida, idb, c, -n_a, ida + "_to_" + idb));
-        places[d[0]].push_back({c, along_z});
-        places[d[1]].push_back({c, along_z});
+    for (const PackedDoor& d : pk.doors) {
+        const glm::dvec2 along(d.normal.y, -d.normal.x), half = along * (kPackDoorWidth / 2);
+        const std::string ida = room_id(d.from), idb = room_id(d.to);
+        portals.push_back(portal(ida + "_to_" + idb, ida, d.centre, d.normal, idb + "_from_" + ida));
+        portals.push_back(portal(idb + "_from_" + ida, idb, d.centre, -d.normal, ida + "_to_" + idb));
+        lines[d.from].push_back({d.centre - half, d.centre + half});
+        lines[d.to].push_back({d.centre - half, d.centre + half});
     }
+    const glm::dvec2 start = start_point(pk.rooms[0], lines[0]);
+    j["start"] = {{"room", room_id(0)}, {"position", vec(start.x, 1.6, start.y)}, {"yaw_deg", 0.0}};
     ordered_json list = ordered_json::array();
-    for (std::size_t i = 0; i < rooms.size(); ++i) {
-        const auto& r = rooms[i];
-        const double hue = 0.13 + 0.618034 * static_cast<double>(i);
-        ordered_json room;
-        room["id"] = room_id(static_cast<int>(i));
-        room["min"] = vec(dm(r[0]), 0, dm(r[1]));
-        room["max"] = vec(dm(r[2]), dm(r[4]), dm(r[3]));
-        room["color"] = hsv(hue, 0.35, 0.88);
-        room["face_colors"] = {{"floor", hsv(hue, 0.5, 0.45)}};
-        if (i % 2 == 1) room["checker"] = 0.5;
-        const std::uint64_t bits = (prop_seed >> (2 * (i % 30))) ^ i;
-        room["props"] = props(static_cast<int>(i), r, places[i], hue, bits);
-        list.push_back(room);
-    }
+    for (std::size_t i = 0; i < pk.rooms.size(); ++i)
+        list.push_back(room_json(static_cast<int>(i), pk.rooms[i], heights[i], lines[i], prop_seed));
     j["rooms"] = list;
     j["portals"] = portals;
     return j.dump(2) + "\n";

@@ -1,0 +1,31 @@
+// The packer's rules on a whole set of rooms, and the local search that
+// improves a set: one room at a time is grown, moved, bent into an L, turned
+// or made a corridor, and the move is kept when every rule still holds and no
+// floor is lost (pack_search.hpp).
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "design/pack_search.hpp"
+#include "design/splitmix.hpp"
+
+namespace impossible::design {
+
+struct PackState {
+    std::vector<Shape> shapes;
+    std::vector<RoomGeom> geoms;
+    double area = 0.0;  // m², summed
+};
+
+// The rooms with their geometry when every room is at least kRoomMinWidth
+// wide and inside the play area, every pair is allowed and doors can join
+// them all; nothing otherwise.
+std::optional<PackState> evaluate(const PackRules& rules, const std::vector<Shape>& shapes);
+
+// Moves tried per room by `improve`.
+inline constexpr int kMovesPerRoom = 200;
+
+void improve(const PackRules& rules, PackState& state, SplitMix& rng);
+
+}  // namespace impossible::design
