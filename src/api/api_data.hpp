@@ -37,8 +37,9 @@ inline math::Polygon2 to_polygon(const std::vector<std::array<double, 2>>& corne
 // sizes and numbers checked as the CLI checks them.
 Result<math::View> resolve_view(const layout::Layout& layout, const View& view);
 
-// The rooms whose boxes hold the head, in file order: a view given only a
-// pose is in the one room holding it (the API's and the commands' rule).
+// The rooms whose box or prism holds the head (layout::room_contains, edges
+// included), in file order: a view given only a pose is in the one room
+// holding it (the API's and the commands' rule).
 std::vector<int> rooms_holding(const layout::Layout& layout, const math::dvec3& head);
 
 // Runs `body`, turning any exception (memory, a library's) into an Error:

@@ -5,6 +5,7 @@
 #include "api/api_data.hpp"
 #include "base/format.hpp"
 #include "layout/hmd_profile.hpp"
+#include "layout/room_shape.hpp"
 #include "math/polygon.hpp"
 
 namespace impossible::api {
@@ -67,9 +68,8 @@ std::string range_problem(const View& v) {
 std::vector<int> rooms_holding(const layout::Layout& layout, const math::dvec3& p) {
     std::vector<int> holding;
     for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
-        const layout::Room& r = layout.rooms[i];
-        if (p.x >= r.min.x && p.x <= r.max.x && p.y >= r.min.y && p.y <= r.max.y && p.z >= r.min.z && p.z <= r.max.z)
-            holding.push_back(static_cast<int>(i));
+        // Its box, or its prism (layout-format.md, "Rooms of any shape").
+        if (layout::room_contains(layout.rooms[i], p)) holding.push_back(static_cast<int>(i));
     }
     return holding;
 }

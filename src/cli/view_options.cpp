@@ -55,7 +55,7 @@ constexpr Option<ViewOptions> kViewOptions[] = {
      [](ViewOptions& o, const OptionValue& v) { o.pose = parse_pose(v); }},
     {"--room", "ID",
      "the room the head is in; default: start.room, or with --pose the\n"
-     "one room whose box holds the head",
+     "one room whose box or prism holds the head",
      [](ViewOptions& o, const OptionValue& v) { o.room = v.text; }},
     {"--time", "T", "seconds: moving props stand where their motion puts them (default 0)",
      [](ViewOptions& o, const OptionValue& v) { o.frame.time = parse_number(v.name, v.text); }},

@@ -91,9 +91,9 @@ std::string light_options_warning(const layout::Layout& layout, const std::optio
                                   bool shadow_options);
 
 // The head pose and room of the frame: the layout's start without --pose;
-// with --pose, --room or else the one room whose box holds the head; with
-// --path, line K's after walking lines 0..K (walk/replay.hpp), at time
-// K / fps. Throws InputError for a bad path file, UsageError for a K past
+// with --pose, --room or else the one room whose box or prism holds the
+// head; with --path, line K's after walking lines 0..K (walk/replay.hpp),
+// at time K / fps. Throws InputError for a bad path file, UsageError for a K past
 // its last line.
 render::FrameDesc frame_for(const layout::Layout& layout, const ViewOptions& options);
 

@@ -61,6 +61,9 @@ std::shared_ptr<const layout::Layout> walk_layout_of(const layout::Layout& layou
         r.id = room.id;
         r.min = room.min;
         r.max = room.max;
+        r.floor = room.floor;
+        r.face_color.resize(room.face_color.size());
+        r.face_texture.resize(room.face_texture.size());
         copy->rooms.push_back(std::move(r));
     }
     return copy;
