@@ -227,17 +227,24 @@ void report_free_standing_prism(Checker& check, const PortalDraft& draft, const 
         for (const glm::dvec3& v : c) away = std::max(away, std::abs(glm::dot(v - f.origin, f.normal)));
         return away;
     };
+    // In a face's plane facing into the room but beside the face; else in
+    // a face's plane, over the face, facing out of the room.
     std::string why;
     std::size_t best = 0;
     for (std::size_t f = 0; f < frames.size(); ++f) {
-        if (why.empty() && farthest_corner(frames[f]) <= eps) {
-            why = glm::dot(n, frames[f].normal) > 0.5
-                      ? "it lies in the plane of " + prism_face_text(room, static_cast<int>(f)) +
-                            " but outside that face; move it inside the face"
-                      : "it lies in the plane of " + prism_face_text(room, static_cast<int>(f)) +
-                            " but its normal points out of the room; turn the normal around";
+        const bool in_plane = farthest_corner(frames[f]) <= eps;
+        if (why.empty() && in_plane && glm::dot(n, frames[f].normal) > 0.5) {
+            why = "it lies in the plane of " + prism_face_text(room, static_cast<int>(f)) +
+                  " but outside that face; move it inside the face";
         }
         if (glm::dot(n, frames[f].normal) > glm::dot(n, frames[best].normal)) best = f;
+    }
+    for (std::size_t f = 0; f < frames.size() && why.empty(); ++f) {
+        if (farthest_corner(frames[f]) <= eps &&
+            math::contains(frames[f].outline, to_face(frames[f], draft.portal.rect.center), eps)) {
+            why = "it lies in the plane of " + prism_face_text(room, static_cast<int>(f)) +
+                  " but its normal points out of the room; turn the normal around";
+        }
     }
     if (why.empty()) {
         const double away = std::round(farthest_corner(frames[best]) * 1e6) / 1e6;

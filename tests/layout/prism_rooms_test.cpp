@@ -225,6 +225,13 @@ TEST(LayoutPrismRooms, MirrorsMustLieInAFaceOfAPrismRoom) {
                      "portals[0].center: a mirror must lie in a face of its own room \"r\" (within 0.0001 m of the "
                      "face's plane, inside the face), but this one stands free: it lies in the plane of wall2 (from "
                      "[4, 2] to [2, 2]) but outside that face; move it inside the face");
+    const std::string out =
+        prism_layout({l_room()}, {"{ \"id\": \"m\", \"room\": \"r\", \"kind\": \"mirror\", \"center\": [3, 1.5, 2], "
+                                  "\"normal\": [0, 0, 1], \"width\": 1, \"height\": 1 }"});
+    expect_one_error(out, "[3, 1.5, 2]",
+                     "portals[0].center: a mirror must lie in a face of its own room \"r\" (within 0.0001 m of the "
+                     "face's plane, inside the face), but this one stands free: it lies in the plane of wall2 (from "
+                     "[4, 2] to [2, 2]) but its normal points out of the room; turn the normal around");
 }
 
 TEST(LayoutPrismRooms, BothFormsOrNeitherAreErrors) {
