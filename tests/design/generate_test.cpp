@@ -80,7 +80,14 @@ TEST(Generate, AFloorTooSmallIsAnError) {
     o.rooms = 2;
     const auto r = design::generate_layout(o);
     ASSERT_FALSE(r.has_value());
-    EXPECT_NE(r.error().find("could not fit"), std::string::npos) << r.error();
+    EXPECT_EQ(r.error(), "a room cannot be 1.5 m wide on a 1 x 1 m floor (it needs 1.52 m across)");
+    // Wide enough, but too many rooms for the overlap limit: no lattice or
+    // grown rooms fit, and it says so.
+    o.play_area = math::rectangle({-1, -1}, {1, 1});
+    o.rooms = 5;
+    const auto many = design::generate_layout(o);
+    ASSERT_FALSE(many.has_value());
+    EXPECT_NE(many.error().find("could not fit 5 rooms of at least 1.5 m"), std::string::npos) << many.error();
 }
 
 }  // namespace

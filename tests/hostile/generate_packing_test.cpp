@@ -1,0 +1,54 @@
+// `generate` as a new user tries it (issue 23, deliver 5): six rooms on a
+// 4 x 4 m floor failed for every seed ("could not fit 6 rooms of at least
+// 1.5 m"); now they are packed, the expansion ratio is reported, the same
+// seed writes the same bytes, the layout validates and its tour visits every
+// room, and a floor too narrow for any room is refused by name.
+#include "hostile/hostile_util.hpp"
+
+namespace impossible::hostile {
+namespace {
+
+TEST_F(Hostile, GenerateSixRoomsOnFourByFourReportsTheRatio) {
+    const Outcome g = run("$BIN generate --play-area 4x4 --rooms 6 --seed 7 --out g.json");
+    ASSERT_EQ(g.status, 0) << g.err;
+    EXPECT_NE(g.err.find("generate: wrote 6 rooms to g.json\n"), std::string::npos) << g.err;
+    const std::size_t at = g.err.find("generate: expansion ratio ");
+    ASSERT_NE(at, std::string::npos) << g.err;
+    EXPECT_GE(std::stod(g.err.substr(at + 26)), 2.4) << g.err;
+    EXPECT_NE(g.err.find("m2 of room floor on 16.00 m2 of play area)\n"), std::string::npos) << g.err;
+    // The same arguments, the same bytes, on standard output too.
+    const Outcome again = run("$BIN generate --play-area 4x4 --rooms 6 --seed 7 2>/dev/null | cmp - g.json");
+    EXPECT_EQ(again.status, 0) << again.out << again.err;
+    const Outcome v = run("$BIN validate g.json");
+    EXPECT_EQ(v.status, 0) << v.err;
+    EXPECT_NE(v.out.find("reachable rooms: 6 of 6"), std::string::npos) << v.out;
+    EXPECT_NE(v.out.find("findings: 0"), std::string::npos) << v.out;
+    const Outcome t = run("$BIN tour g.json --out t.txt");
+    EXPECT_EQ(t.status, 0) << t.err;
+    EXPECT_NE(t.out.find("rooms visited: 6 of 6"), std::string::npos) << t.out;
+}
+
+TEST_F(Hostile, GenerateOnAFloorNarrowerThanARoomSaysSo) {
+    expect_refused(run("$BIN generate --play-area 1.2x4 --rooms 2 --seed 1 --out g.json"), 1,
+                   "a room cannot be 1.5 m wide on a 1.2 x 4 m floor (it needs 1.52 m across)");
+    EXPECT_EQ(listing(dir_), "lay.json\n");  // no partial output
+    spit(dir_ / "thin.json", "[[0, 0], [6, 0], [6, 1.4], [0, 1.4]]");
+    expect_refused(run("$BIN generate --play-area-file thin.json --rooms 1 --seed 1"), 1,
+                   "a room cannot be 1.5 m wide on a 6 x 1.4 m floor");
+}
+
+TEST_F(Hostile, GenerateOnAnLShapedFloorWritesPrismRoomsThatValidate) {
+    spit(dir_ / "l.json", "{\"polygon\": [[-3, -3], [3, -3], [3, 0], [0, 0], [0, 3], [-3, 3]]}");
+    const Outcome g = run("$BIN generate --play-area-file l.json --rooms 8 --seed 2 --out g.json");
+    ASSERT_EQ(g.status, 0) << g.err;
+    EXPECT_NE(g.err.find("generate: expansion ratio "), std::string::npos) << g.err;
+    const Outcome v = run("$BIN validate g.json");
+    EXPECT_EQ(v.status, 0) << v.err;
+    EXPECT_NE(v.out.find("reachable rooms: 8 of 8"), std::string::npos) << v.out;
+    EXPECT_NE(v.out.find("findings: 0"), std::string::npos) << v.out;
+    const Outcome t = run("$BIN tour g.json --out t.txt");
+    EXPECT_NE(t.out.find("rooms visited: 8 of 8"), std::string::npos) << t.out << t.err;
+}
+
+}  // namespace
+}  // namespace impossible::hostile
