@@ -1,8 +1,8 @@
 // Holes in prism rooms' faces in the tracer (layout-format.md, "Rooms of any
 // shape" and "The portal box"): a door in a slanted wall, seen and stood in;
 // a trapdoor in a floor seen from above and from below; an L's concave
-// corner hiding a door behind it and letting it be seen past it; and a
-// shadow ray stopped by an L's wall.
+// corner hiding a door behind it and letting it be seen past it; a shadow
+// ray stopped by an L's wall; and the same holes as the loader finds.
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -220,6 +220,59 @@ TEST(TracerPrismHoles, AnLsWallsStopShadowRays) {
     test::expect_point(seen({0.5, 1.5, 3.0}, {0.5, 0.0, 3.5}), floor_color * 0.1, 1e-12);
     const dvec3 lit = seen({1.0, 1.5, 1.5}, {1.0, 0.0, 1.0});
     EXPECT_GT(lit.x, floor_color.x * 0.1 + 0.01);
+}
+
+// The tracer finds the same holes as the loader (Portal::hole_face) in a
+// layout file's prism rooms: a door in an L's wall beside its concave
+// corner, a trapdoor turned in its floor, a door in a turned room's slanted
+// wall, and a door standing free in the L.
+TEST(TracerPrismHoles, TheTracersHolesAreTheLoaders) {
+    const char* text = R"({
+      "format": "impossible-layout", "version": 1,
+      "start": { "room": "ell", "position": [1, 1.6, 1] },
+      "rooms": [
+        { "id": "ell", "floor": [[0, 0], [4, 0], [4, 2], [2, 2], [2, 4], [0, 4]], "y": [0, 3] },
+        { "id": "cellar", "floor": [[1, -1.2], [3.2, 1], [1, 3.2], [-1.2, 1]], "y": [-3, 0] },
+        { "id": "turned", "floor": [[19.267949192431, -2.732050807569], [22.732050807569, -0.732050807569],
+                                    [20.732050807569, 2.732050807569], [17.267949192431, 0.732050807569]], "y": [0, 3] },
+        { "id": "box", "min": [60, 0, -2], "max": [64, 3, 2] }
+      ],
+      "portals": [
+        { "id": "trap_down", "room": "ell", "center": [1, 0, 1], "normal": [0, 1, 0], "up": [0.34202, 0, -0.93969],
+          "width": 1, "height": 1.2, "target": "trap_up" },
+        { "id": "trap_up", "room": "cellar", "center": [1, 0, 1], "normal": [0, -1, 0], "up": [0.34202, 0, -0.93969],
+          "width": 1, "height": 1.2, "target": "trap_down" },
+        { "id": "ell_turned", "room": "ell", "center": [2, 1.1, 3], "normal": [-1, 0, 0], "width": 1, "height": 2.2,
+          "target": "turned_ell" },
+        { "id": "turned_ell", "room": "turned", "center": [21.732050807569, 1.1, 1.0],
+          "normal": [-0.866025403784, 0, -0.5], "width": 1, "height": 2.2, "target": "ell_turned" },
+        { "id": "ell_box", "room": "ell", "center": [1, 1.1, 3], "normal": [0, 0, -1], "width": 0.8, "height": 2,
+          "target": "box_ell" },
+        { "id": "box_ell", "room": "box", "center": [60, 1.1, 0], "normal": [1, 0, 0], "width": 0.8, "height": 2,
+          "target": "ell_box" }
+      ]
+    })";
+    const layout::LoadResult loaded = layout::load_layout_text(text, "<test>", ".");
+    ASSERT_TRUE(loaded.errors.empty()) << loaded.errors.front().str();
+    const layout::Layout& l = *loaded.layout;
+    const Scene scene = prepare_scene(l).value();
+    for (std::size_t p = 0; p < l.portals.size(); ++p) {
+        int traced_face = -1;
+        const SceneRoom& room = scene.rooms[std::size_t(l.portals[p].room)];
+        for (std::size_t f = 0; f < room.prism.faces.size(); ++f)
+            for (int h : room.prism.faces[f].surface.holes)
+                if (h == static_cast<int>(p)) traced_face = static_cast<int>(f);
+        for (int f = 0; f < layout::kFaceCount && room.prism.faces.empty(); ++f)
+            for (int h : room.faces[f].holes)
+                if (h == static_cast<int>(p)) traced_face = f;
+        EXPECT_EQ(traced_face, l.portals[p].hole_face) << l.portals[p].id;
+    }
+    EXPECT_EQ(l.portals[0].hole_face, 0);   // the ell's floor
+    EXPECT_EQ(l.portals[1].hole_face, 1);   // the cellar's ceiling
+    EXPECT_EQ(l.portals[2].hole_face, 5);   // the ell's wall 3
+    EXPECT_EQ(l.portals[3].hole_face, 3);   // the turned room's wall 1
+    EXPECT_EQ(l.portals[4].hole_face, -1);  // free-standing
+    EXPECT_EQ(l.portals[5].hole_face, int(layout::Face::NegX));
 }
 
 }  // namespace
