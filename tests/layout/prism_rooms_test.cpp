@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "gltf_writer.hpp"
 #include "hostile/png_bytes.hpp"
 #include "layout/room_shape.hpp"
 #include "layout_test_util.hpp"
@@ -358,6 +359,29 @@ TEST(LayoutPrismRooms, LightsMustBeStrictlyInsideTheConvexPrism) {
                      "rooms[0].lights[0].position: the light at [3, 2, 3] is not strictly inside its room \"r\"");
     expect_one_error(prism_layout({tri + "{ \"position\": [2, 2, 2] } ] }"}, {}, "[1, 1.6, 1]", lit), "[2, 2, 2]",
                      "rooms[0].lights[0].position: the light at [2, 2, 2] is not strictly inside its room \"r\"");
+}
+
+TEST(LayoutPrismRooms, AGltfPropsLightMustBeInsideThePrism) {
+    // A model whose point light sits 0.5 m above its origin.
+    GltfWriter w;
+    w.node({{"mesh", w.mesh({{"attributes", {{"POSITION", w.vec3(kTriangle)}}}})}});
+    w.node({{"translation", {0, 0.5, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+    w.doc["extensionsUsed"] = json::array({"KHR_lights_punctual"});
+    w.doc["extensions"] = {{"KHR_lights_punctual", {{"lights", json::array({{{"type", "point"}}})}}}};
+    const std::string path = temp_path("prism_lamp.gltf");
+    w.write(path);
+    const std::string lit = "  \"lighting\": \"lights\",\n";
+    const auto room = [&](const std::string& at) {
+        return "{ \"id\": \"r\", \"floor\": [[0, 0], [4, 0], [0, 4]], \"y\": [0, 3], \"props\": [ { \"gltf\": \"" +
+               path + "\", \"position\": " + at + " } ] }";
+    };
+    const Layout l = expect_valid(prism_layout({room("[1, 0, 1]")}, {}, "[1, 1.6, 1]", lit));
+    ASSERT_EQ(l.rooms[0].lights.size(), 1u);
+    EXPECT_EQ(l.rooms[0].lights[0].position, glm::dvec3(1, 0.5, 1));
+    // Beyond the slanted wall, inside the bounding box.
+    expect_one_error(prism_layout({room("[2.5, 0, 2.5]")}, {}, "[1, 1.6, 1]", lit), "{ \"gltf\"",
+                     "rooms[0].props[0]: the model's light 0 stands at [2.5, 0.5, 2.5], not strictly inside the room "
+                     "\"r\"");
 }
 
 TEST(LayoutPrismRooms, ANonConvexRoomUnderLightsIsAnErrorForNow) {
