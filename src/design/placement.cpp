@@ -3,6 +3,7 @@
 
 #include <deque>
 
+#include "layout/room_shape.hpp"
 #include "math/rigid.hpp"
 
 namespace impossible::design {
@@ -50,6 +51,11 @@ glm::dvec2 to_floor(const math::dmat4& to_physical, const math::dvec3& p) {
 
 math::Polygon2 physical_floor(const layout::Room& room, const math::dmat4& m) {
     const double y = room.min.y;
+    if (layout::is_prism(room)) {
+        math::Polygon2 floor;
+        for (const glm::dvec2& c : layout::floor_outline(room)) floor.push_back(to_floor(m, {c.x, y, c.y}));
+        return floor;
+    }
     math::Polygon2 floor = {to_floor(m, {room.min.x, y, room.min.z}), to_floor(m, {room.max.x, y, room.min.z}),
                             to_floor(m, {room.max.x, y, room.max.z}), to_floor(m, {room.min.x, y, room.max.z})};
     return floor;

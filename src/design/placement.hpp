@@ -40,7 +40,9 @@ struct Placement {
 
 Placement place_rooms(const layout::Layout& layout);
 
-// A room's floor rectangle mapped to the physical floor (4 corners).
+// A room's floor mapped to the physical floor: a box room's rectangle (4
+// corners), a prism room's polygon (layout::floor_outline, counter-
+// clockwise; a rigid placement keeps it so).
 math::Polygon2 physical_floor(const layout::Room& room, const math::dmat4& to_physical);
 
 // The floor line of a door's rectangle (its bottom edge dropped to y = 0),

@@ -20,16 +20,16 @@ Rgba hue(int index, double s, double v, double a) {
     return {c[k][0], c[k][1], c[k][2], a};
 }
 
-Shape fill(const std::string& group, const std::string& name, math::Polygon2 points, Rgba colour) {
-    Shape s;
+PlanShape fill(const std::string& group, const std::string& name, math::Polygon2 points, Rgba colour) {
+    PlanShape s;
     s.group = group, s.name = name, s.points = std::move(points), s.colour = colour;
     return s;
 }
 
-Shape stroke(const std::string& group, const std::string& name, math::Polygon2 points, Rgba colour, double width,
-             bool closed = false, bool dashed = false) {
-    Shape s = fill(group, name, std::move(points), colour);
-    s.kind = Shape::Kind::Stroke, s.width = width, s.closed = closed, s.dashed = dashed;
+PlanShape stroke(const std::string& group, const std::string& name, math::Polygon2 points, Rgba colour, double width,
+                 bool closed = false, bool dashed = false) {
+    PlanShape s = fill(group, name, std::move(points), colour);
+    s.kind = PlanShape::Kind::Stroke, s.width = width, s.closed = closed, s.dashed = dashed;
     return s;
 }
 
@@ -160,13 +160,40 @@ private:
     }
 };
 
+// Where a floor's label goes: a box room's centre (the mean of its four
+// corners), a polygon's centroid, or, where the centroid falls outside it (a
+// bent corridor), the middle of its widest stretch along the centroid's z.
+glm::dvec2 label_spot(const math::Polygon2& floor) {
+    glm::dvec2 at{0.0};
+    if (floor.size() == 4) {
+        for (const glm::dvec2& p : floor) at += 0.25 * p;
+        return at;
+    }
+    const double twice = 2.0 * math::signed_area(floor);
+    if (floor.size() < 3 || twice == 0.0) return floor.empty() ? at : floor[0];
+    for (std::size_t i = 0, n = floor.size(); i < n; ++i) {
+        const glm::dvec2 a = floor[i], b = floor[(i + 1) % n];
+        at += (a + b) * (a.x * b.y - b.x * a.y) / (3.0 * twice);
+    }
+    if (math::contains(floor, at)) return at;
+    std::vector<double> xs;
+    for (std::size_t i = 0, n = floor.size(); i < n; ++i) {
+        const glm::dvec2 a = floor[i], b = floor[(i + 1) % n];
+        if ((a.y <= at.y) != (b.y <= at.y)) xs.push_back(a.x + (at.y - a.y) / (b.y - a.y) * (b.x - a.x));
+    }
+    std::sort(xs.begin(), xs.end());
+    double widest = -1.0;
+    for (std::size_t k = 0; k + 1 < xs.size(); k += 2)
+        if (xs[k + 1] - xs[k] > widest) widest = xs[k + 1] - xs[k], at.x = 0.5 * (xs[k] + xs[k + 1]);
+    return at;
+}
+
 void add_labels(Drawing& d, const layout::Layout& layout, const Report& r) {
     LabelSpots spots;
     for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
-        glm::dvec2 at{0.0};
-        for (const glm::dvec2& p : r.floors[i]) at += 0.25 * p;
-        Shape s = fill("labels", layout.rooms[i].id, {spots.place(at)}, hue(static_cast<int>(i), 0.9, 0.35, 1.0));
-        s.kind = Shape::Kind::Text;
+        const glm::dvec2 at = label_spot(r.floors[i]);
+        PlanShape s = fill("labels", layout.rooms[i].id, {spots.place(at)}, hue(static_cast<int>(i), 0.9, 0.35, 1.0));
+        s.kind = PlanShape::Kind::Text;
         s.text = layout.rooms[i].id + (r.placement.rooms[i].reachable ? "" : " (unreachable)");
         d.shapes.push_back(s);
     }

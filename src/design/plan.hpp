@@ -28,7 +28,7 @@ struct Rgba {
     double r = 0, g = 0, b = 0, a = 1;
 };
 
-struct Shape {
+struct PlanShape {
     enum class Kind { Fill, Stroke, Text };
     Kind kind = Kind::Fill;
     std::string group;      // "grid", "play-area", "rooms", "overlaps", "props", "doors", "mirrors", "windows",
@@ -46,7 +46,7 @@ struct Shape {
 struct Drawing {
     std::string title;
     glm::dvec2 min{0.0}, max{0.0};  // the floor shown, m
-    std::vector<Shape> shapes;
+    std::vector<PlanShape> shapes;
 };
 
 // `path` holds physical head poses (may be empty).

@@ -49,7 +49,7 @@ void add_run(Pieces& out, DashRun run, const Rgba& c, int height) {
 // A stroke as polygons: segments (dashed ones cut into dashes) and joins.
 // Opaque strokes get round joins; translucent ones none, so nothing is
 // blended twice where pieces meet (they overlap at most at the joins).
-void add_stroke(Pieces& out, const Shape& s, double k, double dash_on, double dash_off, int height) {
+void add_stroke(Pieces& out, const PlanShape& s, double k, double dash_on, double dash_off, int height) {
     const double half = std::max(0.5 * kPlanSuper, 0.5 * s.width * k);
     std::vector<glm::dvec2> pts = s.points;
     if (s.closed && !pts.empty()) pts.push_back(pts.front());
@@ -111,11 +111,11 @@ Pieces plan_pieces(const Drawing& d, double k, int height) {
     auto px = [&](glm::dvec2 p) {
         return glm::dvec2((p.x - d.min.x) * k, (p.y - d.min.y) * k + kPlanTitle * kPlanSuper);
     };
-    for (const Shape& s : d.shapes) {
-        if (s.kind == Shape::Kind::Text) continue;
-        Shape mapped = s;
+    for (const PlanShape& s : d.shapes) {
+        if (s.kind == PlanShape::Kind::Text) continue;
+        PlanShape mapped = s;
         for (glm::dvec2& p : mapped.points) p = px(p);
-        if (s.kind == Shape::Kind::Fill) {
+        if (s.kind == PlanShape::Kind::Fill) {
             add_polygon(out, mapped.points, s.colour, height);
         } else {
             add_stroke(out, mapped, k, 0.12 * k, 0.08 * k, height);

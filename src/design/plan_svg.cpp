@@ -38,11 +38,11 @@ std::string colour(const Rgba& c) {
     return text;
 }
 
-std::string shape_svg(const Drawing& d, const Shape& s, double k) {
+std::string shape_svg(const Drawing& d, const PlanShape& s, double k) {
     auto px = [&](glm::dvec2 p) { return num((p.x - d.min.x) * k) + "," + num((p.y - d.min.y) * k + kTitleHeight); };
     const std::string name = s.name.empty() ? "" : " data-name=\"" + escape(s.name) + "\"";
     const std::string opacity = s.colour.a < 1.0 ? " opacity=\"" + num(s.colour.a) + "\"" : "";
-    if (s.kind == Shape::Kind::Text) {
+    if (s.kind == PlanShape::Kind::Text) {
         const glm::dvec2 p = s.points.front();
         return "<text x=\"" + num((p.x - d.min.x) * k) + "\" y=\"" + num((p.y - d.min.y) * k + kTitleHeight) +
                "\" font-size=\"" + num(s.size * k) + "\" text-anchor=\"middle\" fill=\"" + colour(s.colour) + "\"" +
@@ -50,7 +50,7 @@ std::string shape_svg(const Drawing& d, const Shape& s, double k) {
     }
     std::string points;
     for (const glm::dvec2& p : s.points) points += (points.empty() ? "" : " ") + px(p);
-    if (s.kind == Shape::Kind::Fill)
+    if (s.kind == PlanShape::Kind::Fill)
         return "<polygon points=\"" + points + "\" fill=\"" + colour(s.colour) + "\"" + opacity + name + "/>\n";
     const std::string dash = s.dashed ? " stroke-dasharray=\"" + num(0.12 * k) + "," + num(0.08 * k) + "\"" : "";
     return std::string("<") + (s.closed ? "polygon" : "polyline") + " points=\"" + points +
@@ -69,7 +69,7 @@ std::string plan_svg(const Drawing& d, double k) {
     out += "<rect x=\"0\" y=\"0\" width=\"" + num(width) + "\" height=\"" + num(height) + "\" fill=\"#ffffff\"/>\n";
     out += "<text x=\"8\" y=\"19\" font-size=\"14\" fill=\"#333333\">" + escape(d.title) + "</text>\n";
     std::string group;
-    for (const Shape& s : d.shapes) {
+    for (const PlanShape& s : d.shapes) {
         if (s.group != group) {
             if (!group.empty()) out += "</g>\n";
             group = s.group;

@@ -59,7 +59,10 @@ void find_outside(const layout::Layout& layout, Report& r) {
     const math::Polygon2 area = layout::outline(*layout.play_area);
     for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
         const double room_area = math::area(r.floors[i]);
-        const double outside = room_area - math::intersection_area(area, r.floors[i]);
+        // A convex floor (every box room's) is clipped as before; any other by the library.
+        const double inside =
+            is_convex(r.floors[i]) ? math::intersection_area(area, r.floors[i]) : intersection_area(area, r.floors[i]);
+        const double outside = room_area - inside;
         if (outside > 1e-9 * (1.0 + room_area)) r.rooms_outside.push_back({static_cast<int>(i), outside});
     }
     for (std::size_t p = 0; p < layout.portals.size(); ++p) {

@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "design/placement.hpp"
+#include "layout/room_shape.hpp"
 
 namespace impossible::design {
 namespace {
@@ -56,6 +57,9 @@ RoomGrid::RoomGrid(const layout::Layout& layout, int room_index, const math::dma
     nx_ = std::max(1, static_cast<int>(std::ceil(extent.x / cell_)));
     nz_ = std::max(1, static_cast<int>(std::ceil(extent.y / cell_)));
     const std::vector<Footprint> props = prop_footprints(room, o.head_height);
+    // A prism room's floor polygon, inset by the body radius below; a box
+    // room keeps its rectangle test.
+    const math::Polygon2 prism = layout::is_prism(room) ? layout::floor_outline(room) : math::Polygon2{};
     std::vector<std::array<glm::dvec2, 2>> doors;
     for (const layout::Portal& p : layout.portals)
         if (p.room == room_index && p.kind == layout::PortalKind::Door) doors.push_back(door_line(p, math::dmat4(1.0)));
@@ -63,8 +67,10 @@ RoomGrid::RoomGrid(const layout::Layout& layout, int room_index, const math::dma
     for (int k = 0; k < nz_; ++k) {
         for (int i = 0; i < nx_; ++i) {
             const glm::dvec2 c = centre(i, k);
-            bool ok = c.x >= room.min.x + o.body_radius && c.x <= room.max.x - o.body_radius &&
-                      c.y >= room.min.z + o.body_radius && c.y <= room.max.z - o.body_radius;
+            bool ok = prism.empty()
+                          ? c.x >= room.min.x + o.body_radius && c.x <= room.max.x - o.body_radius &&
+                                c.y >= room.min.z + o.body_radius && c.y <= room.max.z - o.body_radius
+                          : math::contains(prism, c, 0.0) && math::distance_to_boundary(prism, c) >= o.body_radius;
             for (std::size_t n = 0; ok && n < props.size(); ++n)
                 ok = rect_distance(c, props[n].lo, props[n].hi) >= o.body_radius;
             for (std::size_t n = 0; ok && n < doors.size(); ++n)

@@ -4,7 +4,8 @@
 // then straightened by skipping corners that have a clear line of sight.
 //
 // A cell is free when its centre is at least `body_radius` from the room's
-// walls, from every prop that reaches below the head (box props, and glTF
+// walls (inside the floor polygon of a prism room, so a path goes round the
+// inner corner of an L and along a bent corridor), from every prop that reaches below the head (box props, and glTF
 // props by the bounding box of their triangles), and from the floor line of
 // every door of the room (so a path never walks through a door it does not
 // mean to; mirrors and windows lie in the room's faces and are passed like

@@ -1,27 +1,34 @@
 #include "preview/minimap.hpp"
 
 #include <algorithm>
-#include <array>
+#include <vector>
 
+#include "layout/room_shape.hpp"
 #include "math/rigid.hpp"
 #include "preview/hud.hpp"
 
 namespace impossible::preview {
 namespace {
 
-using Quad = std::array<glm::dvec2, 4>;
+using Outline = std::vector<glm::dvec2>;
 
-// A room's floor rectangle, its corners mapped by `m` and seen from above.
-Quad floor_of(const layout::Room& room, const math::dmat4& m) {
+// A room's floor, its corners mapped by `m` and seen from above: a box
+// room's rectangle, a prism room's polygon (layout::floor_outline).
+Outline floor_of(const layout::Room& room, const math::dmat4& m) {
     const double y = room.min.y;
-    const std::array<math::dvec3, 4> corners = {math::dvec3{room.min.x, y, room.min.z},
-                                                {room.max.x, y, room.min.z},
-                                                {room.max.x, y, room.max.z},
-                                                {room.min.x, y, room.max.z}};
-    Quad q;
-    for (int i = 0; i < 4; ++i) {
-        const math::dvec4 p = m * math::dvec4(corners[i], 1.0);
-        q[i] = {p.x, p.z};
+    std::vector<math::dvec3> corners;
+    if (layout::is_prism(room)) {
+        for (const glm::dvec2& c : layout::floor_outline(room)) corners.push_back({c.x, y, c.y});
+    } else {
+        corners = {math::dvec3{room.min.x, y, room.min.z},
+                   {room.max.x, y, room.min.z},
+                   {room.max.x, y, room.max.z},
+                   {room.min.x, y, room.max.z}};
+    }
+    Outline q;
+    for (const math::dvec3& c : corners) {
+        const math::dvec4 p = m * math::dvec4(c, 1.0);
+        q.push_back({p.x, p.z});
     }
     return q;
 }
@@ -65,8 +72,8 @@ struct MapView {
         glm::vec2 pa = to_pixel(a), pb = to_pixel(b);
         if (clip_segment(pa, pb, lo, hi)) batch.line(pa, pb, color);
     }
-    void loop(OverlayBatch& batch, const Quad& q, glm::vec4 color) const {
-        for (int i = 0; i < 4; ++i) segment(batch, q[i], q[(i + 1) % 4], color);
+    void loop(OverlayBatch& batch, const Outline& q, glm::vec4 color) const {
+        for (std::size_t i = 0; i < q.size(); ++i) segment(batch, q[i], q[(i + 1) % q.size()], color);
     }
 };
 
@@ -132,11 +139,11 @@ void add_room(OverlayBatch& batch, const MapView& view, const layout::Layout& la
         const math::PortalRect& r = p.rect;
         const math::dvec3 right = math::portal_right(r);
         const math::dvec3 hw = right * (0.5 * r.width), hh = r.up * (0.5 * r.height);
-        Quad q;
-        const math::dvec3 corners[4] = {r.center - hw - hh, r.center + hw - hh, r.center + hw + hh, r.center - hw + hh};
-        for (int k = 0; k < 4; ++k) {
-            const math::dvec4 c = to_physical * math::dvec4(corners[k], 1.0);
-            q[k] = {c.x, c.z};
+        Outline q;
+        for (const math::dvec3& corner :
+             {r.center - hw - hh, r.center + hw - hh, r.center + hw + hh, r.center - hw + hh}) {
+            const math::dvec4 c = to_physical * math::dvec4(corner, 1.0);
+            q.push_back({c.x, c.z});
         }
         const glm::vec4 colour = minimap_portal_colour(p.kind);
         view.loop(batch, q, colour);

@@ -1,5 +1,6 @@
 // The preview's minimap: the play area in physical coordinates (x right, -z
-// up, so the start's yaw 0 looks up), the current room's floor mapped into it
+// up, so the start's yaw 0 looks up), the current room's floor (its
+// rectangle, or a prism room's polygon) mapped into it
 // by the inverse of the walker's W, the rooms one door away mapped through
 // their doors (so rooms sharing the same floor show as overlapping
 // outlines), the current room's portals (doors orange, mirrors silver,

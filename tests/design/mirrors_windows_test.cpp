@@ -109,7 +109,7 @@ TEST(DesignMirrors, ThePlanDrawsMirrorsAndWindowsApart) {
     const design::Drawing d = design::plan_drawing(l, design::make_report(l), {});
     std::set<std::string> doors, mirrors, windows;
     std::vector<std::string> groups;
-    for (const design::Shape& s : d.shapes) {
+    for (const design::PlanShape& s : d.shapes) {
         if (groups.empty() || groups.back() != s.group) groups.push_back(s.group);
         if (s.group == "doors") doors.insert(s.name);
         if (s.group == "mirrors") mirrors.insert(s.name);
@@ -129,7 +129,7 @@ TEST(DesignMirrors, ThePlanDrawsMirrorsAndWindowsApart) {
     EXPECT_GT(image.width, 0);
     // A layout of doors only has no such groups.
     const layout::Layout plain = load_file("default.json");
-    for (const design::Shape& s : design::plan_drawing(plain, design::make_report(plain), {}).shapes) {
+    for (const design::PlanShape& s : design::plan_drawing(plain, design::make_report(plain), {}).shapes) {
         EXPECT_NE(s.group, "mirrors");
         EXPECT_NE(s.group, "windows");
     }

@@ -62,7 +62,7 @@ math::Polygon2 ref_disc(glm::dvec2 c, double r) {
 // A stroke as polygons: segments (dashed ones cut into dashes) and joins.
 // Opaque strokes get round joins; translucent ones none, so nothing is
 // blended twice where pieces meet (they overlap at most at the joins).
-std::vector<math::Polygon2> ref_stroke_polygons(const design::Shape& s, double k, double dash_on, double dash_off) {
+std::vector<math::Polygon2> ref_stroke_polygons(const design::PlanShape& s, double k, double dash_on, double dash_off) {
     std::vector<math::Polygon2> out;
     const double half = std::max(0.5 * kRefSuper, 0.5 * s.width * k);
     std::vector<glm::dvec2> pts = s.points;
@@ -92,15 +92,15 @@ image::Pixels reference_raster(const design::Drawing& d, double k_out) {
     RefCanvas canvas{image.width * kRefSuper, image.height * kRefSuper, {}};
     canvas.rgb.assign(static_cast<std::size_t>(canvas.w) * canvas.h * 3, 1.0f);
     auto px = [&](glm::dvec2 p) { return glm::dvec2((p.x - d.min.x) * k, (p.y - d.min.y) * k + kTitle * kRefSuper); };
-    for (const design::Shape& s : d.shapes) {
-        if (s.kind == design::Shape::Kind::Text) continue;
+    for (const design::PlanShape& s : d.shapes) {
+        if (s.kind == design::PlanShape::Kind::Text) continue;
         math::Polygon2 pts;
         for (const glm::dvec2& p : s.points) pts.push_back(px(p));
-        if (s.kind == design::Shape::Kind::Fill) {
+        if (s.kind == design::PlanShape::Kind::Fill) {
             canvas.fill(pts, s.colour);
             continue;
         }
-        design::Shape mapped = s;
+        design::PlanShape mapped = s;
         mapped.points = pts;
         for (const math::Polygon2& poly : ref_stroke_polygons(mapped, k, 0.12 * k, 0.08 * k))
             canvas.fill(poly, s.colour);
