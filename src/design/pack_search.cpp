@@ -8,17 +8,18 @@
 #include "design/overlap.hpp"
 #include "design/pack_moves.hpp"
 #include "design/splitmix.hpp"
+#include "math/conventions.hpp"
 
 namespace impossible::design {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kInset = 0.001;           // m: rooms keep this far inside the play area before rounding
 constexpr double kMaxSpan = kMaxRoomSpan;  // m of a larger floor that one lattice covers
 constexpr double kWidthStep = 0.05;        // m between the widths tried
 constexpr double kNearBest = 0.98;         // the seed picks among lattices at least this good
 constexpr double kPairBudget = 4e6;        // pairs of rooms tested by the lattice scan, at most
 constexpr int kJoinTries = 12;             // lattices tried when doors cannot join one
+constexpr int kGreedyRestarts = 8;         // tries at placing rooms one at a time
 
 // The play area in a frame turned by `angle`: corner (x, z) becomes (U, V),
 // or (V, U) when swapped.
@@ -69,9 +70,9 @@ std::vector<double> frame_angles(const math::Polygon2& area, SplitMix& rng) {
     std::vector<std::pair<double, double>> weight;  // angle, summed edge length
     for (std::size_t i = 0, n = area.size(); i < n; ++i) {
         const glm::dvec2 d = area[(i + 1) % n] - area[i];
-        double a = std::fmod(std::atan2(d.y, d.x), kPi / 2);
-        if (a < 0.0) a += kPi / 2;
-        if (a >= kPi / 2 - 1e-12) a = 0.0;
+        double a = std::fmod(std::atan2(d.y, d.x), math::kPi / 2);
+        if (a < 0.0) a += math::kPi / 2;
+        if (a >= math::kPi / 2 - 1e-12) a = 0.0;
         auto it =
             std::find_if(weight.begin(), weight.end(), [&](const auto& w) { return std::abs(w.first - a) < 1e-9; });
         if (it == weight.end()) weight.push_back({a, 0.0}), it = weight.end() - 1;
@@ -80,7 +81,7 @@ std::vector<double> frame_angles(const math::Polygon2& area, SplitMix& rng) {
     std::stable_sort(weight.begin(), weight.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
     std::vector<double> angles;
     for (std::size_t i = 0; i < weight.size() && angles.size() < 2; ++i) angles.push_back(weight[i].first);
-    angles.push_back(rng.real() * kPi / 2);
+    angles.push_back(rng.real() * math::kPi / 2);
     return angles;
 }
 
@@ -221,7 +222,16 @@ std::optional<Packing> pack_rooms(const PackRules& rules) {
     Context c{rules, {}};
     for (const double a : frame_angles(rules.area, rng)) c.frames.push_back(make_frame(rules.area, a, rng));
     std::vector<Scored> found = scan(c);
-    if (found.empty()) return std::nullopt;
+    if (found.empty()) {  // no lattice fits: rooms one at a time
+        std::vector<double> angles;
+        for (const Frame& f : c.frames) angles.push_back(f.angle);
+        for (int t = 0; t < kGreedyRestarts; ++t)
+            if (std::optional<PackState> s = place_greedily(rules, angles, rng)) {
+                improve(rules, *s, rng, kGreedyMovesPerRoom);
+                if (auto joined = join_rooms(s->shapes, s->geoms, rng.next())) return joined;
+            }
+        return std::nullopt;
+    }
     double best = 0.0;
     for (const Scored& s : found) best = std::max(best, s.area);
     std::vector<Scored> near;

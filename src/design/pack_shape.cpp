@@ -4,10 +4,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "math/conventions.hpp"
+
 namespace impossible::design {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double millimetres(double v) { return std::round(v * 1000.0) / 1000.0 + 0.0; }  // + 0.0: no -0
 
@@ -58,7 +58,7 @@ RoomGeom l_geom(const Shape& s) {
 }
 
 int arc_walls(const Shape& s) {
-    return std::max(1, static_cast<int>(std::ceil((s.a1 - s.a0) / (kArcWallDegrees * kPi / 180.0) - 1e-9)));
+    return std::max(1, static_cast<int>(std::ceil((s.a1 - s.a0) / (kArcWallDegrees * math::kPi / 180.0) - 1e-9)));
 }
 
 RoomGeom arc_geom(const Shape& s) {
