@@ -205,6 +205,17 @@ TEST(LayoutPrismRooms, OverlappingHolesInOneWallAreAnError) {
                                            door("c", "r", "[1.5, 1, 4]", "[0, 0, -1]", "d"), door_in_s("d", "c", 3.0)});
     expect_one_error(text, "[1.5, 1, 4]",
                      "portals[2].center: its hole in the wall4 face of room \"r\" overlaps the hole of portal \"a\"");
+    const std::string up = "\"up\": [0, 0, -1]";
+    const std::string floor = prism_layout(
+        {l_room(), box_s()}, {door("a", "r", "[1, 0, 1]", "[0, 1, 0]", "b", up), door_in_s("b", "a"),
+                              door("c", "r", "[1, 0, 1.5]", "[0, 1, 0]", "d", up), door_in_s("d", "c", 3.0)});
+    expect_one_error(floor, "[1, 0, 1.5]",
+                     "portals[2].center: its hole in the floor face of room \"r\" overlaps the hole of portal \"a\"");
+    // Side by side, touching: fine.
+    const Layout l = expect_valid(prism_layout(
+        {l_room(), box_s()}, {door("a", "r", "[1, 0, 1]", "[0, 1, 0]", "b", up), door_in_s("b", "a"),
+                              door("c", "r", "[1, 0, 3]", "[0, 1, 0]", "d", up), door_in_s("d", "c", 3.0)}));
+    EXPECT_EQ(l.portals[2].hole_face, int(Face::Floor));
 }
 
 TEST(LayoutPrismRooms, MirrorsMustLieInAFaceOfAPrismRoom) {
