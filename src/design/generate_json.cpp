@@ -102,8 +102,9 @@ ordered_json portal(const std::string& id, const std::string& room, glm::dvec2 c
 }
 
 // Where the walk starts in room 0: of a few points on its body, the one
-// farthest from its doors.
-glm::dvec2 start_point(const RoomGeom& room, const std::vector<std::array<glm::dvec2, 2>>& doors) {
+// farthest from its walls, doors and props.
+glm::dvec2 start_point(const RoomGeom& room, const std::vector<std::array<glm::dvec2, 2>>& doors,
+                       const ordered_json& props) {
     const math::Polygon2& body = room.pieces[room.pieces.size() / 2];
     glm::dvec2 centre(0.0);
     for (const glm::dvec2& p : body) centre += p / static_cast<double>(body.size());
@@ -115,6 +116,12 @@ glm::dvec2 start_point(const RoomGeom& room, const std::vector<std::array<glm::d
                                cents(centre.y + (corner.y - centre.y) * f));
             double c = math::contains(room.outline, p, 0.0) ? math::distance_to_boundary(room.outline, p) : -1.0;
             for (const auto& d : doors) c = std::min(c, math::distance_to_segment(p, d[0], d[1]));
+            for (const ordered_json& prop : props) {
+                const ordered_json &lo = prop["box"]["min"], &hi = prop["box"]["max"];
+                const double dx = std::max({lo[0].get<double>() - p.x, 0.0, p.x - hi[0].get<double>()});
+                const double dz = std::max({lo[2].get<double>() - p.y, 0.0, p.y - hi[2].get<double>()});
+                c = std::min(c, std::hypot(dx, dz));
+            }
             if (c > clearance + 1e-9) clearance = c, best = p;
         }
     return best;
@@ -171,11 +178,11 @@ std::string layout_text(const GenerateOptions& o, const Packing& pk, const std::
         lines[d.from].push_back({d.centre - half, d.centre + half});
         lines[d.to].push_back({d.centre - half, d.centre + half});
     }
-    const glm::dvec2 start = start_point(pk.rooms[0], lines[0]);
-    j["start"] = {{"room", room_id(0)}, {"position", vec(start.x, 1.6, start.y)}, {"yaw_deg", 0.0}};
     ordered_json list = ordered_json::array();
     for (std::size_t i = 0; i < pk.rooms.size(); ++i)
         list.push_back(room_json(static_cast<int>(i), pk.rooms[i], heights[i], lines[i], prop_seed));
+    const glm::dvec2 start = start_point(pk.rooms[0], lines[0], list[0]["props"]);
+    j["start"] = {{"room", room_id(0)}, {"position", vec(start.x, 1.6, start.y)}, {"yaw_deg", 0.0}};
     j["rooms"] = list;
     j["portals"] = portals;
     return j.dump(2) + "\n";

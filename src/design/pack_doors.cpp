@@ -2,6 +2,7 @@
 // tree walked depth first; see pack_search.hpp (join_rooms).
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "design/pack_search.hpp"
 #include "design/splitmix.hpp"
@@ -9,8 +10,10 @@
 namespace impossible::design {
 namespace {
 
-constexpr double kDoorSpacing = 1.5;     // m between the centres of two doors of one room
+constexpr double kDoorSpacing = 1.2;     // m between the centres of two doors of one room
 constexpr int kChainExpansions = 20000;  // steps of the search for a chain
+constexpr int kChainsPlaced = 64;        // chains whose doors are tried, at most
+constexpr double kDoorStep = 0.1;        // m between the spots tried along a stretch of wall
 using Joins = std::vector<std::vector<char>>;
 
 struct Segment {
@@ -23,11 +26,13 @@ double segment_gap(const Segment& s, const Segment& t) {
                      math::distance_to_segment(t.a, s.a, s.b), math::distance_to_segment(t.b, s.a, s.b)});
 }
 
-// A chain through every room, found depth first from `start`, the
-// neighbour with the fewest onward choices first (Warnsdorff's rule).
-bool chain_from(const Joins& adj, std::vector<int>& path, std::vector<char>& used, int& budget) {
+// Chains through every room, found depth first from path[0], the
+// neighbour with the fewest onward choices first (Warnsdorff's rule), until
+// `accept` takes one or the budget of steps is spent.
+bool chain_from(const Joins& adj, std::vector<int>& path, std::vector<char>& used, int& budget,
+                const std::function<bool(const std::vector<int>&)>& accept) {
     const int n = static_cast<int>(adj.size());
-    if (static_cast<int>(path.size()) == n) return true;
+    if (static_cast<int>(path.size()) == n) return accept(path);
     if (--budget < 0) return false;
     const int last = path.back();
     std::vector<std::pair<int, int>> next;  // onward choices, room
@@ -40,7 +45,8 @@ bool chain_from(const Joins& adj, std::vector<int>& path, std::vector<char>& use
     std::stable_sort(next.begin(), next.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     for (const auto& [onward, j] : next) {
         used[j] = 1, path.push_back(j);
-        if (chain_from(adj, path, used, budget)) return true;
+        if (chain_from(adj, path, used, budget, accept)) return true;
+        if (budget < 0) return false;
         used[j] = 0, path.pop_back();
     }
     return false;
@@ -118,9 +124,12 @@ struct Placer {
             const int walls = static_cast<int>(rooms[from].outline.size()), first = rng.uniform(0, walls - 1);
             for (int w = 0; w < walls; ++w) {
                 const int wall = (first + w) % walls;
-                for (const Interval& v : door_stretches(rooms[from], wall, rooms[to]))
+                for (const Interval& v : door_stretches(rooms[from], wall, rooms[to])) {
                     for (const double t : {v.lo, v.hi, (v.lo + v.hi) / 2})
                         if (try_at(from, to, wall, t)) return true;
+                    for (double t = v.lo + kDoorStep; t < v.hi; t += kDoorStep)
+                        if (try_at(from, to, wall, t)) return true;
+                }
             }
         }
         return false;
@@ -146,26 +155,32 @@ std::optional<Packing> join_rooms(std::vector<Shape> shapes, std::vector<RoomGeo
             adj[i][j] = adj[j][i] = door_possible(rooms[i], rooms[j]) || door_possible(rooms[j], rooms[i]);
     SplitMix rng{seed};
     std::vector<int> order;
-    std::vector<std::pair<int, int>> links;
-    int budget = kChainExpansions;
+    std::optional<std::vector<PackedDoor>> doors;
+    int budget = kChainExpansions, chains = 0;
+    const std::uint64_t door_seed = rng.next();
+    auto accept = [&](const std::vector<int>& path) {
+        std::vector<std::pair<int, int>> links;
+        for (std::size_t k = 0; k + 1 < path.size(); ++k) links.push_back({path[k], path[k + 1]});
+        if (++chains > kChainsPlaced) budget = -1;
+        doors = place_doors(rooms, links, door_seed);
+        if (doors) order = path;
+        return doors.has_value();
+    };
     const int start = rng.uniform(0, n - 1);
-    for (int s = 0; s < n && order.empty(); ++s) {
+    for (int s = 0; s < n && !doors && budget >= 0; ++s) {
         std::vector<int> path{(start + s) % n};
         std::vector<char> used(n, 0);
         used[path[0]] = 1;
-        if (chain_from(adj, path, used, budget)) order = path;
-        if (budget < 0) break;
+        chain_from(adj, path, used, budget, accept);
     }
-    for (std::size_t k = 0; k + 1 < order.size(); ++k) links.push_back({order[k], order[k + 1]});
-    std::optional<std::vector<PackedDoor>> doors;
-    if (!order.empty()) doors = place_doors(rooms, links, rng.next());
-    if (!doors) {  // no chain, or its doors did not fit: a tree
-        order.clear(), links.clear();
-        tree_from(adj, start, order, links);
+    for (int s = 0; s < n && !doors; ++s) {  // no chain whose doors fit: a tree
+        std::vector<std::pair<int, int>> links;
+        order.clear();
+        tree_from(adj, (start + s) % n, order, links);
         if (static_cast<int>(order.size()) != n) return std::nullopt;
-        doors = place_doors(rooms, links, rng.next());
-        if (!doors) return std::nullopt;
+        doors = place_doors(rooms, links, door_seed);
     }
+    if (!doors) return std::nullopt;
     std::vector<int> position(n);
     for (int k = 0; k < n; ++k) position[order[k]] = k;
     Packing out;

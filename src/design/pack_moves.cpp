@@ -144,14 +144,14 @@ std::optional<PackState> evaluate(const PackRules& rules, const std::vector<Shap
     return s;
 }
 
-void improve(const PackRules& rules, PackState& state, SplitMix& rng) {
+void improve(const PackRules& rules, PackState& state, SplitMix& rng, int moves_per_room) {
     const int n = static_cast<int>(state.shapes.size());
     glm::dvec2 lo = rules.area[0], hi = lo;
     for (const glm::dvec2& p : rules.area) lo = glm::min(lo, p), hi = glm::max(hi, p);
     Adjacency adj(n, std::vector<char>(n, 0));
     for (int i = 0; i < n; ++i)
         for (int j = i + 1; j < n; ++j) adj[i][j] = adj[j][i] = joinable(state.geoms[i], state.geoms[j]);
-    for (int move = 0; move < kMovesPerRoom * n; ++move) {
+    for (int move = 0; move < moves_per_room * n; ++move) {
         const int r = rng.uniform(0, n - 1);
         const Shape t = propose(state.shapes[r], lo, hi, rng);
         if (!shape_sane(t) || shape_width(t) < kNarrowest) continue;

@@ -19,7 +19,7 @@ constexpr double kWidthStep = 0.05;        // m between the widths tried
 constexpr double kNearBest = 0.98;         // the seed picks among lattices at least this good
 constexpr double kPairBudget = 4e6;        // pairs of rooms tested by the lattice scan, at most
 constexpr int kJoinTries = 12;             // lattices tried when doors cannot join one
-constexpr int kGreedyRestarts = 8;         // tries at placing rooms one at a time
+constexpr int kGreedyRestarts = 24;        // tries at placing rooms one at a time
 
 // The play area in a frame turned by `angle`: corner (x, z) becomes (U, V),
 // or (V, U) when swapped.
