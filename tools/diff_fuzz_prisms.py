@@ -122,8 +122,8 @@ class PrismCases:
         angles = sorted(r.uniform(0, 2 * math.pi) for _ in range(n))
         if r.random() < 0.3 and n > 3:  # two corners a few centimetres apart
             angles[1] = angles[0] + r.uniform(0.01, 0.05) / radius
-        pts = [[centre[0] + radius * math.cos(a), centre[1] + radius * math.sin(a) * r.uniform(0.6, 1.0)]
-               for a in angles]
+        squash = r.uniform(0.6, 1.0)  # an ellipse: still convex
+        pts = [[centre[0] + radius * math.cos(a), centre[1] + radius * squash * math.sin(a)] for a in angles]
         return pts if abs(area2(pts)) > 1.0 else self.turned_floor(centre, radius, radius)
 
     def turned_floor(self, centre, hx, hz):
@@ -190,6 +190,17 @@ class PrismCases:
         self.portal(pid, room["id"], [p[0], y1 if ceiling else y0, p[1]], n, w, ph, target, self.box_depth())
         return True
 
+    def door_pair(self, a, wall_a, b, wall_b, prefix=("a_door", "b_door"), w=None, ph=None):
+        """Doors of one size in wall_a of room a and wall_b of room b, joined."""
+        r = self.r
+        room_h = min(a["y"][1] - a["y"][0], b["y"][1] - b["y"][0])
+        span = min(self.wall_length(a, wall_a), self.wall_length(b, wall_b)) - 0.02
+        w = min(w if w is not None else log_uniform_p(r, 0.05, span), span)
+        ph = min(ph if ph is not None else r.uniform(min(1.0, room_h / 2), room_h - 0.02), room_h - 0.02)
+        w, ph = round(w, 6), round(ph, 6)
+        self.wall_door(prefix[0], a, wall_a, prefix[1], w, ph)
+        self.wall_door(prefix[1], b, wall_b, prefix[0], w, ph)
+
     # --- the layouts -------------------------------------------------------------
     def make_prism(self):
         r, o = self.r, self.origin
@@ -210,8 +221,7 @@ class PrismCases:
                 self.wall_door("end1", a, ends[1], "end0", w, ph)
             else:
                 b = self.prism("b", self.convex_floor(other, r.uniform(2, 4)), y0, y0 + h, r.randint(0, 2))
-                w2, ph2 = self.wall_door("a_door", a, ends[0], "b_door", w, ph)
-                self.wall_door("b_door", b, self.longest_wall(b), "a_door", w2, ph2)
+                self.door_pair(a, ends[0], b, self.longest_wall(b), w=w, ph=ph)
             return
         if self.sub == "trapdoor":
             a = self.prism("a", self.convex_floor(centre, r.uniform(2, 4)) if r.random() < 0.5 else
@@ -222,8 +232,7 @@ class PrismCases:
             if not self.floor_door("a_down", a, "b_up", w, ph) or not self.floor_door("b_up", b, "a_down", w, ph,
                                                                                      ceiling=True):
                 del self.portals[:]
-                self.wall_door("a_down", a, self.longest_wall(a), "b_up", 0.8, 1.8)
-                self.wall_door("b_up", b, self.longest_wall(b), "a_down", 0.8, 1.8)
+                self.door_pair(a, self.longest_wall(a), b, self.longest_wall(b), ("a_down", "b_up"), 0.8, 1.8)
             return
         if self.sub == "concave":
             a = self.prism("a", self.concave_floor(centre, r.uniform(4, 8)), y0, y0 + h, r.randint(0, 3))
@@ -237,8 +246,7 @@ class PrismCases:
         b = self.prism("b", self.convex_floor(other, r.uniform(2, 4)) if r.random() < 0.5 else
                        self.turned_floor(other, r.uniform(1, 3), r.uniform(1, 3)), y0, y0 + r.uniform(2.2, 3.5),
                        r.randint(0, 2))
-        w, ph = self.wall_door("a_door", a, wall, "b_door")
-        self.wall_door("b_door", b, self.longest_wall(b), "a_door", w, ph)
+        self.door_pair(a, wall, b, self.longest_wall(b))
 
     def wall_length(self, room, i):
         f = room["floor"]
