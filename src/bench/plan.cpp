@@ -7,6 +7,7 @@
 
 #include "bench/light_sweep.hpp"
 #include "layout/path_file.hpp"
+#include "layout/room_shape.hpp"
 #include "walk/walker.hpp"
 
 namespace impossible::bench {
@@ -46,8 +47,26 @@ layout::Layout keep_first_portals(const layout::Layout& layout, int n) {
     return out;
 }
 
+namespace {
+
+// Whether a box's footprint lies on the room's floor: always in a box room;
+// in a prism room, its corners inside the floor and no corner of the floor
+// inside the footprint.
+bool box_on_floor(const layout::Room& room, const layout::BoxProp& box) {
+    if (!layout::is_prism(room)) return true;
+    for (const double x : {box.min.x, box.max.x})
+        for (const double z : {box.min.z, box.max.z})
+            if (!inside_floor(room, {x, room.min.y, z}, 0.0)) return false;
+    return std::none_of(room.floor.begin(), room.floor.end(), [&](const glm::dvec2& c) {
+        return c.x > box.min.x && c.x < box.max.x && c.y > box.min.z && c.y < box.max.z;
+    });
+}
+
+}  // namespace
+
 // The layout with `n` small boxes (12 triangles each) added on the floor of
-// every room, in a grid: scene triangles without changing which rooms show.
+// every room, in a grid: scene triangles without changing which rooms show
+// (in a prism room, those of the grid that stand on its floor).
 layout::Layout with_extra_boxes(const layout::Layout& layout, int n) {
     layout::Layout out = layout;
     const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
@@ -61,7 +80,7 @@ layout::Layout with_extra_boxes(const layout::Layout& layout, int n) {
             box.min = {x - 0.5 * size, room.min.y, z - 0.5 * size};
             box.max = {x + 0.5 * size, room.min.y + size, z + 0.5 * size};
             box.color = {0.7, 0.5, 0.3};
-            room.props.push_back(box);
+            if (box_on_floor(room, box)) room.props.push_back(box);
         }
     }
     return out;

@@ -6,6 +6,8 @@
 #include "bench/light_sweep.hpp"
 #include "bench/plan.hpp"
 #include "cli/errors.hpp"
+#include "common/layouts.hpp"
+#include "layout/room_shape.hpp"
 
 namespace impossible::bench {
 namespace {
@@ -77,6 +79,42 @@ TEST(BenchLightSweep, PlanItems) {
     ASSERT_EQ(sizes.configs.size(), 3u);
     EXPECT_FALSE(sizes.configs[1].frame.shadows);
     EXPECT_EQ(sizes.configs[2].frame.shadow_map_size, 256);
+}
+
+// Prism rooms (issue 23): an L takes no lights (lights in non-convex rooms
+// are refused) but boxes on its floor only; a turned square keeps the
+// grid's lights over its floor, 5 cm from its walls, summing to 4.
+TEST(BenchLightSweep, PrismRoomsKeepLightsAndBoxesOnTheirFloors) {
+    layout::Layout l;
+    l.rooms.push_back(test::prism_room("l", {{0, 0}, {6, 0}, {6, 3}, {3, 3}, {3, 6}, {0, 6}}, 0.0, 2.5));
+    l.rooms.push_back(test::prism_room("turned", {{0, -3}, {3, 0}, {0, 3}, {-3, 0}}, 0.0, 2.5));
+    l.start.room = 0;
+    l.start.position = {1, 1.6, 1};
+    const layout::Layout lit = with_lights(l, 16);
+    EXPECT_TRUE(lit.rooms[0].lights.empty());
+    const layout::Room& turned = lit.rooms[1];
+    ASSERT_GT(turned.lights.size(), 0u);
+    EXPECT_LT(turned.lights.size(), 16u);
+    double sum = 0.0;
+    for (const layout::Light& light : turned.lights) {
+        EXPECT_TRUE(inside_floor(turned, light.position));
+        sum += light.intensity;
+    }
+    EXPECT_NEAR(sum, 4.0, 1e-12);
+    BenchOptions o;
+    o.sweep = "boxes:100";
+    const BenchPlan plan = plan_bench(l, o);
+    ASSERT_EQ(plan.layouts.size(), 2u);
+    for (const layout::Room& room : plan.layouts[1].rooms) {
+        ASSERT_GT(room.props.size(), 0u);
+        EXPECT_LT(room.props.size(), 100u);
+        for (const layout::Prop& prop : room.props) {
+            const auto& box = std::get<layout::BoxProp>(prop);
+            for (const double x : {box.min.x, box.max.x})
+                for (const double z : {box.min.z, box.max.z}) EXPECT_TRUE(layout::room_contains(room, {x, 0.0, z}));
+            EXPECT_FALSE(box.min.x < 3.0 && box.max.x > 3.0 && box.min.z < 3.0 && box.max.z > 3.0) << "over the corner";
+        }
+    }
 }
 
 }  // namespace
