@@ -41,7 +41,10 @@ struct PrismText {
     std::string start_room;
     glm::dvec3 start{0.0};
 
-    void prism(const std::string& id, const Floor& floor, double y0, double y1, double checker = 0.0) {
+    bool lit = false;
+
+    void prism(const std::string& id, const Floor& floor, double y0, double y1, double checker = 0.0,
+               const std::string& extra = "") {
         std::string s = "{\"id\": \"" + id + "\", \"floor\": [";
         for (std::size_t k = 0; k < floor.size(); ++k)
             s += (k ? ", [" : "[") + prism_num(floor[k].x) + ", " + prism_num(floor[k].y) + "]";
@@ -49,11 +52,11 @@ struct PrismText {
         s += ", \"face_colors\": {\"floor\": [0.3, 0.35, 0.5], \"ceiling\": [0.9, 0.9, 0.85], \"wall0\": [0.8, 0.3, "
              "0.2]}";
         if (checker > 0.0) s += ", \"checker\": " + prism_num(checker);
-        rooms.push_back(s + "}");
+        rooms.push_back(s + extra + "}");
     }
-    void box(const std::string& id, glm::dvec3 min, glm::dvec3 max) {
+    void box(const std::string& id, glm::dvec3 min, glm::dvec3 max, const std::string& extra = "") {
         rooms.push_back("{\"id\": \"" + id + "\", \"min\": " + prism_vec(min) + ", \"max\": " + prism_vec(max) +
-                        ", \"color\": [0.4, 0.7, 0.45], \"checker\": 0.5}");
+                        ", \"color\": [0.4, 0.7, 0.45], \"checker\": 0.5" + extra + "}");
     }
     void door(const std::string& id, const std::string& room, glm::dvec3 centre, glm::dvec3 normal, double width,
               double height, const std::string& target, glm::dvec3 up = {0, 1, 0}) {
@@ -64,7 +67,9 @@ struct PrismText {
     }
     layout::Layout load() const {
         std::string s = "{\"format\": \"impossible-layout\", \"version\": 1, \"start\": {\"room\": \"" + start_room +
-                        "\", \"position\": " + prism_vec(start) + "}, \"rooms\": [";
+                        "\", \"position\": " + prism_vec(start) + "}, ";
+        if (lit) s += "\"lighting\": \"lights\", ";
+        s += "\"rooms\": [";
         for (std::size_t k = 0; k < rooms.size(); ++k) s += (k ? ", " : "") + rooms[k];
         s += "], \"portals\": [";
         for (std::size_t k = 0; k < portals.size(); ++k) s += (k ? ", " : "") + portals[k];
@@ -330,6 +335,33 @@ TEST(PrismRender, GrazingViewsAlongACurvedCorridor) {
             l, prism_frame(l, "arc", r * radial + glm::dvec3(0, 1.4, 0), yaw_along(p.outer ? tangent : -tangent), 2.0),
             what, p.door);
     }
+    EXPECT_EQ(sum, 0);
+}
+
+// Under "lighting": "lights": a convex hexagon, turned, lit by a point
+// light and a spot, with a box prop (its shadow), and a door in a slanted
+// wall into a lit box room; faces lit by their exact normals.
+TEST(PrismRender, LitConvexPrismRoom) {
+    Floor hex;
+    for (int k = 0; k < 6; ++k)
+        hex.push_back({3.0 * std::cos(kPrismPi / 3 * k + 0.3), 3.0 * std::sin(kPrismPi / 3 * k + 0.3)});
+    PrismText t;
+    t.lit = true;
+    t.prism("hex", hex, 0.0, 3.0, 0.5,
+            ", \"ambient\": [0.15, 0.15, 0.15], \"lights\": [{\"position\": [0.5, 2.6, -0.4], \"intensity\": 5}, "
+            "{\"position\": [-1.2, 2.2, 1.0], \"intensity\": 12, \"spot\": {\"direction\": [0.36, -0.8, -0.48]}}], "
+            "\"props\": [{\"box\": {\"min\": [0.2, 0, -0.6], \"max\": [0.9, 0.8, 0.1]}, \"color\": [0.2, 0.3, 0.8]}]");
+    t.box("box", {-2, 0, -2}, {2, 3, 2}, ", \"lights\": [{\"position\": [0.5, 2.5, 0.5], \"intensity\": 6}]");
+    t.door("slanted", "hex", wall_point(hex, 1, 0.5, 1.1), wall_normal(hex, 1), 1.0, 2.2, "back");
+    t.door("back", "box", {0, 1.1, -2}, {0, 0, 1}, 1.0, 2.2, "slanted");
+    t.start_room = "hex";
+    t.start = {0, 1.6, 0};
+    const layout::Layout l = t.load();
+    ASSERT_EQ(l.lighting, layout::Lighting::Lights);
+    int sum = prism_mismatches(l, prism_frame(l, "hex", {0.3, 1.6, -1.5}, yaw_along(-wall_normal(hex, 1)), -15.0),
+                               "lit hexagon: the slanted door");
+    sum += prism_mismatches(l, prism_frame(l, "hex", {-1.5, 2.0, -0.8}, yaw_along({1, 0, 0.3}), -35.0, 100.0),
+                            "lit hexagon: walls, floor and the box's shadow", false);
     EXPECT_EQ(sum, 0);
 }
 
