@@ -13,9 +13,9 @@ tours="$root/docs/tours"
 examples="$root/docs/examples"
 mkdir -p "$images" "$tours" "$examples"
 
-"$bin" generate --play-area 6x6 --rooms 5 --seed 3 --out "$examples/generated-6x6.json"
+"$bin" generate --play-area 6x6 --rooms 10 --seed 3 --out "$examples/generated-6x6.json"
 printf '{"polygon": [[-3, -3], [3, -3], [3, 0], [0, 0], [0, 3], [-3, 3]]}\n' > "$examples/l-floor.json"
-"$bin" generate --play-area-file "$examples/l-floor.json" --rooms 4 --seed 8 --out "$examples/generated-l.json"
+"$bin" generate --play-area-file "$examples/l-floor.json" --rooms 8 --seed 8 --out "$examples/generated-l.json"
 
 plan() {  # NAME LAYOUT
   local name=$1 layout=$2
