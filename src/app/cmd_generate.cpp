@@ -78,10 +78,13 @@ int run_generate_command(const Args& args, std::ostream& out, std::ostream& err)
         out << "usage: impossible generate --play-area WxD | --play-area-file POLY.json --rooms N --seed S\n"
                "                           [--max-overlap PERCENT] [--out FILE.json]\n"
                "Writes a valid layout of N rooms on the floor (a W x D m rectangle centred on the origin,\n"
-               "or a polygon file: [[x, z], ...] or {\"polygon\": [...]}), each inside it, joined by\n"
-               "coincident doors into one connected space, every pair overlapping by at most PERCENT of\n"
+               "or a polygon file: [[x, z], ...] or {\"polygon\": [...]}), each inside it and at least\n"
+               "1.5 m wide, packed so that their summed floor (the expansion ratio) is as large as the\n"
+               "overlap limit allows: crossing strips, turned rooms, L-shapes and curved corridors, joined\n"
+               "by coincident doors into one connected space, every pair overlapping by at most PERCENT of\n"
                "the smaller floor (default: Suma et al. 2012's 56 % for rooms up to 16 m2, 31 % above).\n"
-               "The same arguments write the same bytes; standard output without --out.\n";
+               "The same arguments write the same bytes; standard output without --out. The ratio\n"
+               "reached goes to standard error.\n";
         return kExitOk;
     }
     const auto area = parsed.value("--play-area"), area_file = parsed.value("--play-area-file");
