@@ -3,7 +3,7 @@
 // windings; an eye 1 mm from a slanted wall; closed prism rooms show
 // themselves at every pixel; grazing views and rays aimed exactly at the
 // shared corners of a curved corridor's 24 walls never escape; textures run
-// along walls.
+// along walls; a light lights slanted walls by their own normals.
 #include <algorithm>
 #include <cmath>
 
@@ -236,6 +236,33 @@ TEST(TracerPrism, WallTexturesRunAlongTheWall) {
             }
         }
     }
+}
+
+// Under "lights", a point light in a turned room lights its floor and its
+// slanted walls by the spec's formula, base · (ambient + I · cos / d²), the
+// cosine taken with each wall's own normal (worked out by hand).
+TEST(TracerPrism, ALightInATurnedRoomLightsItsFacesByTheFormula) {
+    const std::vector<glm::dvec2> floor = turned_square({0.0, 0.0}, 2.0, 30.0);
+    layout::Layout l = prism_layout(floor);
+    l.lighting = layout::Lighting::Lights;
+    l.rooms[0].ambient = dvec3(0.1);
+    layout::Light light;
+    light.position = {0.2, 2.5, -0.1};
+    light.intensity = 4.0;
+    l.rooms[0].lights.push_back(light);
+    const Scene scene = prepare_scene(l).value();
+    const dvec3 eye(-0.3, 1.2, 0.4);
+    auto expect_lit = [&](const dvec3& p, const dvec3& n, const dvec3& base) {
+        const TraceHit hit = trace_ray(scene, eye, p - eye, 0, RayLimits{8});
+        ASSERT_EQ(hit.id, 1);
+        const dvec3 v = light.position - p;
+        const double d2 = glm::dot(v, v);
+        const double cosine = glm::dot(v, n) / std::sqrt(d2);
+        test::expect_point(hit.color, glm::clamp(base * (0.1 + 4.0 * cosine / d2), 0.0, 1.0), 1e-12);
+    };
+    expect_lit({0.5, 0.0, -0.3}, {0, 1, 0}, l.rooms[0].face_color[0]);
+    for (int i = 0; i < 4; ++i)
+        expect_lit(wall_point(floor, i, 1.5, 0.4), inward_normal(floor, i), l.rooms[0].face_color[std::size_t(2 + i)]);
 }
 
 }  // namespace
