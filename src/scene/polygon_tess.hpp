@@ -24,8 +24,8 @@ struct Tessellation {
 // The region inside contours[0] (the outline) and outside every other contour
 // (its holes), each contour in either winding. Points between two corners on
 // an edge are kept as vertices of the triangles. Empty when the tessellator
-// fails (it does so only for coordinates beyond 1e150 or a contour of fewer
-// than three points).
+// reports an error: with these callbacks, only for a coordinate beyond
+// GLU_TESS_MAX_COORD (1e150), far past the loader's limits.
 Tessellation tessellate(const std::vector<std::vector<glm::dvec2>>& contours);
 
 }  // namespace impossible::scene
