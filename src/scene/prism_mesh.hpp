@@ -20,7 +20,9 @@
 // Every vertex is computed once in double, in layout coordinates, and
 // converted to the mesh's local coordinates (MeshWriter::local) once, so the
 // faces and fronts that share a point share it bit for bit. Wall corners are
-// the polygon's corners exactly.
+// the polygon's corners exactly. Each vertex carries its face's exact normal
+// (layout::face_frame's), rounded to float so that the checker's dominant
+// axis stays the one the exact normal has.
 #pragma once
 
 #include <optional>
