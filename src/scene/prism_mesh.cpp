@@ -60,9 +60,11 @@ PrismHole prism_hole(const layout::FaceFrame& frame, int portal, const math::Por
 // Wall i in its frame: s = 0 at corner i (a), s = length at corner i + 1 (b).
 struct PrismWall {
     layout::FaceFrame frame;
-    glm::dvec2 a{0.0}, b{0.0};    // (x, z)
-    double length = 0.0;          // negative where s runs from b towards a
-    std::vector<double> s_lines;  // ascending: the wall's ends, and its holes' edges on a grid wall
+    glm::dvec2 a{0.0}, b{0.0};  // (x, z)
+    double length = 0.0;        // negative where s runs from b towards a
+    // Its cuts along s, ascending: its ends, its holes' edges (a grid wall),
+    // and where floor and ceiling holes meet it.
+    std::vector<double> s_lines;
     std::vector<PrismHole> holes;
     bool grid = true;  // every hole upright in it
 
@@ -107,6 +109,31 @@ void add_prism_hole(PrismPlan& plan, const layout::Room& room, int p, const layo
     w.holes.push_back(h);
 }
 
+// Floor and ceiling holes' corners within this of a wall (the loader's
+// "inside" tolerance) lie on it: a trapdoor flush with a wall.
+constexpr double kPrismSnap = 1e-4;
+
+// A floor or ceiling hole's corners that lie on a wall (within kPrismSnap)
+// are moved onto it, to the wall's point there, which becomes a cut of the
+// wall (s_lines): the hole, the floor's outline, the wall and the trapdoor's
+// front then meet vertex to vertex, as box rooms' faces do.
+void snap_to_walls(PrismPlan& plan, const layout::FaceFrame& cap, double y, PrismHole& h) {
+    for (glm::dvec2& st : h.corners) {
+        const glm::dvec3 p = layout::from_face(cap, st);
+        for (PrismWall& w : plan.walls) {
+            const double s = glm::dot(glm::dvec3(p.x - w.a.x, 0.0, p.z - w.a.y), w.frame.s_axis);
+            const double d = glm::dot(glm::dvec3(p.x - w.a.x, 0.0, p.z - w.a.y), w.frame.normal);
+            if (std::abs(d) > kPrismSnap || s < std::min(0.0, w.length) - kPrismSnap ||
+                s > std::max(0.0, w.length) + kPrismSnap)
+                continue;
+            const double at = std::abs(s) <= kPrismSnap ? 0.0 : std::abs(s - w.length) <= kPrismSnap ? w.length : s;
+            w.s_lines.push_back(at);
+            st = layout::to_face(cap, w.point(at, y));
+            break;
+        }
+    }
+}
+
 PrismPlan plan_prism(const layout::Layout& layout, int room_index, const std::vector<int>& room_portals) {
     const layout::Room& room = layout.rooms[static_cast<std::size_t>(room_index)];
     PrismPlan plan;
@@ -126,10 +153,15 @@ PrismPlan plan_prism(const layout::Layout& layout, int room_index, const std::ve
         assert(portal.hole_face < layout::face_count(room));
         add_prism_hole(plan, room, p, portal);
     }
+    for (std::size_t f = 0; f < 2; ++f)
+        for (PrismHole& h : plan.cap_holes[f]) snap_to_walls(plan, plan.caps[f], f == 0 ? room.min.y : room.max.y, h);
     plan.heights = {room.min.y, room.max.y};
     for (PrismWall& w : plan.walls) {
-        w.s_lines = {std::min(0.0, w.length), std::max(0.0, w.length)};
-        if (!w.grid) continue;
+        w.s_lines.insert(w.s_lines.end(), {std::min(0.0, w.length), std::max(0.0, w.length)});
+        if (!w.grid) {
+            sort_unique(w.s_lines);
+            continue;
+        }
         for (const PrismHole& h : w.holes) {
             w.s_lines.insert(w.s_lines.end(), {h.lo.x, h.hi.x});
             plan.heights.insert(plan.heights.end(), {h.lo.y, h.hi.y});
@@ -217,11 +249,15 @@ void append_tessellation(MeshWriter& out, const Tessellation& tess, MakeVertex m
 // height on its sides) less its holes, by the tessellator.
 void append_tessellated_wall(MeshWriter& out, const PrismPlan& plan, const PrismWall& w, const WallStyle& style,
                              std::vector<std::optional<FrontGrid>>& fronts) {
-    const double s0 = w.s_lines.front(), s1 = w.s_lines.back();
+    // The outline counter-clockwise through every cut: bottom, right side,
+    // top, left side.
+    const std::vector<double>& ss = w.s_lines;
+    const std::vector<double>& hs = plan.heights;
     std::vector<std::vector<glm::dvec2>> contours(1);
-    contours[0].push_back({s0, plan.heights.front()});
-    for (const double t : plan.heights) contours[0].push_back({s1, t});
-    for (std::size_t k = plan.heights.size() - 1; k > 0; --k) contours[0].push_back({s0, plan.heights[k]});
+    for (std::size_t k = 0; k + 1 < ss.size(); ++k) contours[0].push_back({ss[k], hs.front()});
+    for (std::size_t k = 0; k + 1 < hs.size(); ++k) contours[0].push_back({ss.back(), hs[k]});
+    for (std::size_t k = ss.size() - 1; k > 0; --k) contours[0].push_back({ss[k], hs.back()});
+    for (std::size_t k = hs.size() - 1; k > 0; --k) contours[0].push_back({ss.front(), hs[k]});
     for (const PrismHole& h : w.holes) {
         contours.emplace_back(h.corners.begin(), h.corners.end());
         std::array<glm::vec3, 4> c;

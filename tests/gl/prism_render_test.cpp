@@ -225,6 +225,9 @@ layout::Layout l_layout() {
     t.box("box", {-2, 0, -2}, {2, 3, 2});
     t.door("corner", "l", {1.0, 1.1, 6.0}, {0, 0, -1}, 1.0, 2.2, "back");
     t.door("back", "box", {0, 1.1, -2}, {0, 0, 1}, 1.0, 2.2, "corner");
+    // A hatch in the floor flush with the wall x = 0, into the box's ceiling.
+    t.door("hatch", "l", {0.5, 0.0, 1.5}, {0, 1, 0}, 1.0, 1.2, "lid", {0, 0, 1});
+    t.door("lid", "box", {0.0, 3.0, 0.0}, {0, -1, 0}, 1.0, 1.2, "hatch", {0, 0, 1});
     t.start_room = "l";
     t.start = {1.5, 1.6, 1.5};
     return t.load();
@@ -244,6 +247,17 @@ TEST(PrismRender, DoorInAConcaveCornersWallSeenPastTheCorner) {
     sum +=
         prism_mismatches(l, prism_frame(l, "l", {5.8, 2.0, 0.2}, yaw_along({-1, 0, 1}), -15.0), "L: overview", false);
     sum += prism_mismatches(l, prism_frame(l, "l", {1.0, 1.6, 3.0}, 180.0), "L: the door straight on");
+    EXPECT_EQ(sum, 0);
+}
+
+TEST(PrismRender, TrapdoorFlushWithAWall) {
+    const layout::Layout l = l_layout();
+    // Down at the hatch along the wall it touches, from 1 cm and from 1 m
+    // off the wall, and up at it from the room below.
+    int sum =
+        prism_mismatches(l, prism_frame(l, "l", {0.01, 1.2, 0.3}, 180.0, -55.0), "hatch along its wall, 1 cm off");
+    sum += prism_mismatches(l, prism_frame(l, "l", {1.2, 1.8, 0.6}, 150.0, -60.0), "hatch from above");
+    sum += prism_mismatches(l, prism_frame(l, "box", {0.8, 1.4, 1.2}, 30.0, 55.0), "hatch from below");
     EXPECT_EQ(sum, 0);
 }
 

@@ -102,8 +102,8 @@ void expect_prism_faces(const Scene& s, const layout::Room& room) {
 // Whether a triangle of ts covers the layout point q (the cell's vertices
 // are relative to its origin).
 bool prism_covers(const Scene& s, const std::vector<Triangle>& ts, const glm::dvec3& q) {
-    for (const Triangle& t : ts)
-        if (covers(t, q - s.origins[0].origin)) return true;
+    for (const Triangle& t : ts)  // (covers() takes a triangle of no area for one that covers everything)
+        if (t.area() > 1e-12 && covers(t, q - s.origins[0].origin)) return true;
     return false;
 }
 
@@ -196,6 +196,27 @@ TEST(PrismMesh, TrapdoorsInFloorAndCeiling) {
     EXPECT_FALSE(prism_covers(s, ts, down.rect.center));
     EXPECT_FALSE(prism_covers(s, ts, up.rect.center));
     EXPECT_TRUE(prism_covers(s, ts, {1.5, 0.0, 5.3}));
+}
+
+TEST(PrismMesh, TrapdoorsFlushWithWalls) {
+    layout::Layout l = prism_layout(prism_room("l", kPrismL, 0.0, 2.5));
+    // One against the wall x = 0 (50 um inside the loader's tolerance
+    // beyond it), one in the corner (6, 0) of two walls, in the ceiling.
+    layout::Portal down = make_portal("down", 0, {0.5 - 5e-5, 0.0, 4.5}, {0, 1, 0}, 1.0, 1.2, {0, 0, 1});
+    down.hole_face = 0;
+    layout::Portal up = make_portal("up", 0, {5.4, 2.5, 0.5}, {0, -1, 0}, 1.0, 1.2, {1, 0, 0});
+    up.hole_face = 1;
+    l.portals.push_back(down);
+    l.portals.push_back(up);
+    const Scene s = build_scene(l);
+    const auto ts = triangles(s, s.cells[0]);
+    // The first hole loses its 50 um beyond the wall.
+    expect_prism_area(ts, prism_surface(l.rooms[0]) - (1.0 - 5e-5) * 1.2 - 1.2);
+    expect_prism_faces(s, l.rooms[0]);
+    // The walls take the holes' corners: floor, walls and fronts close.
+    EXPECT_TRUE(closed_and_consistent(prism_closed(s, {0, 1})));
+    EXPECT_FALSE(prism_covers(s, ts, {0.01, 0.0, 4.5}));
+    EXPECT_FALSE(prism_covers(s, ts, {5.99, 2.5, 0.01}));
 }
 
 TEST(PrismMesh, DoorTiltedInItsWallIsTessellated) {
