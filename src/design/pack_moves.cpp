@@ -108,7 +108,7 @@ Shape propose(const Shape& s, glm::dvec2 lo, glm::dvec2 hi, SplitMix& rng) {
 }
 
 bool shape_sane(const Shape& s) {
-    if (s.kind == Shape::Kind::Arc) return s.r0 > 0.1 && s.r1 > s.r0 && s.a1 > s.a0 && s.a1 - s.a0 <= 1.5 * kMovesPi;
+    if (s.kind == Shape::Kind::Arc) return s.r0 > 0.5 && s.r1 > s.r0 && s.a1 > s.a0 && s.a1 - s.a0 <= 1.5 * kMovesPi;
     if (s.kind == Shape::Kind::L) {
         const double side = s.arm_side < 2 ? s.u1 - s.u0 : s.v1 - s.v0;
         return s.arm_length >= kShortestArm - 1e-9 && s.arm_width >= kNarrowest && s.arm_width <= side - 0.3 + 1e-9;

@@ -3,6 +3,7 @@
 #include "design/pack_search.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "design/overlap.hpp"
@@ -95,14 +96,39 @@ struct Lattice {
     int frame = 0, n1 = 0;
     double w1 = 0.0, w2 = 0.0;
     double spread = 1.0;  // the share of the window's width the bands spread over
+    int m1 = 1, m2 = 1;   // rooms per band (a band cut along its length)
+    double reach = 1.0;   // a cut band's rooms are this many times the band over m long
 };
+
+// The band cuts tried: rooms per band, and how far a cut band's rooms
+// overlap (1: they only touch).
+constexpr int kCuts[] = {1, 2, 3, 4, 6};
+constexpr double kReaches[] = {1.0, 1.4};
+constexpr int kMaxCutRooms = 24;  // more rooms: no cut bands (the scan would take too long)
 
 // Spreads tried: the whole window, and its middle for floors that narrow
 // towards their ends (a hexagon, a triangle).
 constexpr double kSpreads[] = {1.0, 0.75, 0.5};
 
-// n strips of width w spread evenly over the middle `spread` of the window.
-bool strips(const Frame& f, bool along_u, int n, double w, double spread, std::vector<Shape>& out) {
+// Cuts the span into m rooms, each `reach` times span / m long (at least
+// kRoomMinWidth), spread evenly along it.
+std::vector<Interval> cuts(const Interval& span, int m, double reach) {
+    if (m == 1) return {span};
+    const double length = std::max(kRoomMinWidth + 0.01, (span.hi - span.lo) / m * reach);
+    if (length > span.hi - span.lo) return {};
+    std::vector<Interval> out;
+    for (int i = 0; i < m; ++i) {
+        const double lo = span.lo + (span.hi - span.lo - length) * i / (m - 1);
+        out.push_back({lo, i + 1 == m ? span.hi : lo + length});
+    }
+    return out;
+}
+
+// n strips of width w spread evenly over the middle `spread` of the window,
+// each cut into m rooms.
+bool strips(const Frame& f, bool along_u, int n, double w, const Lattice& l, std::vector<Shape>& out) {
+    const double spread = l.spread;
+    const int m = along_u ? l.m1 : l.m2;
     const Interval window = along_u ? f.v : f.u, along = along_u ? f.u : f.v;
     const double middle = (window.lo + window.hi) / 2, half = (window.hi - window.lo) * spread / 2;
     const Interval across{std::max(window.lo, middle - std::max(half, w / 2)),
@@ -114,14 +140,18 @@ bool strips(const Frame& f, bool along_u, int n, double w, double spread, std::v
             n == 1 ? (across.lo + across.hi - w) / 2 : across.lo + (across.hi - across.lo - w) * i / (n - 1);
         const std::optional<Interval> span = band_span(along_u ? f.uv : f.vu, b0, b0 + w, along.lo, along.hi);
         if (!span || span->hi - span->lo < kRoomMinWidth + 0.01) return false;
-        Shape s;
-        s.angle = f.angle;
-        if (along_u) {
-            s.u0 = span->lo, s.u1 = span->hi, s.v0 = b0, s.v1 = b0 + w;
-        } else {
-            s.u0 = b0, s.u1 = b0 + w, s.v0 = span->lo, s.v1 = span->hi;
+        const std::vector<Interval> pieces = cuts(*span, m, l.reach);
+        if (pieces.empty()) return false;
+        for (const Interval& piece : pieces) {
+            Shape s;
+            s.angle = f.angle;
+            if (along_u) {
+                s.u0 = piece.lo, s.u1 = piece.hi, s.v0 = b0, s.v1 = b0 + w;
+            } else {
+                s.u0 = b0, s.u1 = b0 + w, s.v0 = piece.lo, s.v1 = piece.hi;
+            }
+            out.push_back(s);
         }
-        out.push_back(s);
     }
     return true;
 }
@@ -134,9 +164,8 @@ struct Context {
 std::optional<PackState> lattice_layout(const Context& c, const Lattice& l) {
     std::vector<Shape> shapes;
     const Frame& f = c.frames[l.frame];
-    if (!strips(f, true, l.n1, l.w1, l.spread, shapes) ||
-        !strips(f, false, c.rules.rooms - l.n1, l.w2, l.spread, shapes))
-        return {};
+    const int n2 = (c.rules.rooms - l.n1 * l.m1) / l.m2;
+    if (!strips(f, true, l.n1, l.w1, l, shapes) || !strips(f, false, n2, l.w2, l, shapes)) return {};
     return evaluate(c.rules, shapes);
 }
 
@@ -154,10 +183,15 @@ Frame make_frame(const math::Polygon2& area, double angle, SplitMix& rng) {
     return f;
 }
 
-std::vector<double> widths(const Interval& across, double step) {
+// The widths tried: steps from the narrowest, and the widths at which k
+// bands fill the window exactly (rooms that only touch).
+std::vector<double> widths(const Interval& across, double step, int bands) {
     std::vector<double> out;
-    for (double w = kRoomMinWidth + 0.01; w <= std::min(across.hi - across.lo, kMaxSpan) + 1e-9; w += step)
-        out.push_back(w);
+    const double widest = std::min(across.hi - across.lo, kMaxSpan);
+    for (double w = kRoomMinWidth + 0.01; w <= widest + 1e-9; w += step) out.push_back(w);
+    for (int k = std::max(1, bands); k >= 1; --k)
+        if ((across.hi - across.lo) / k >= kRoomMinWidth + 0.01 && (across.hi - across.lo) / k <= widest + 1e-9)
+            out.push_back((across.hi - across.lo) / k);
     return out;
 }
 
@@ -171,13 +205,14 @@ struct Scored {
 void scan_split(const Context& c, Lattice base, double step, std::vector<Scored>& found) {
     const Frame& f = c.frames[base.frame];
     std::optional<Scored> best;
-    for (const double w : widths(base.n1 > 0 ? f.v : f.u, step)) {
+    for (const double w : widths(base.n1 > 0 ? f.v : f.u, step, std::max(base.n1, 1))) {
         Lattice l = base;
         l.w1 = l.w2 = w;
         if (const auto e = lattice_layout(c, l); e && (!best || e->area > best->area)) best = Scored{l, e->area};
     }
     if (!best) return;
     found.push_back(*best);
+    if (base.m1 > 1 || base.m2 > 1) return;  // cut bands: the widths' scan only
     for (int a = -3; a <= 3; ++a)
         for (int b = -3; b <= 3; ++b) {
             Lattice l = best->lattice;
@@ -201,6 +236,23 @@ std::vector<Scored> scan(const Context& c) {
     for (int fi = 0; fi < static_cast<int>(c.frames.size()); ++fi)
         for (const int n1 : splits)
             for (const double spread : kSpreads) scan_split(c, Lattice{fi, n1, 0.0, 0.0, spread}, step, found);
+    // Bands cut into rooms (a long narrow floor, rooms that only touch),
+    // in coarser steps of width.
+    std::vector<std::array<int, 3>> cut;  // n1, m1, m2
+    for (int n1 = 0; n1 <= n && n <= kMaxCutRooms; ++n1)
+        for (const int m1 : kCuts)
+            for (const int m2 : kCuts) {
+                const int rest = n - n1 * m1;
+                if ((n1 == 0 && m1 > 1) || rest < 0 || (rest == 0 && m2 > 1) || rest % m2 != 0) continue;
+                if (m1 > 1 || m2 > 1) cut.push_back({n1, m1, m2});
+            }
+    const double cut_tries = static_cast<double>(c.frames.size() * cut.size() * 2 * std::size(kReaches)) * 140.0;
+    const double cut_step = 2 * kWidthStep * std::max(1.0, std::ceil(cut_tries * pairs / kPairBudget / 2));
+    for (int fi = 0; fi < static_cast<int>(c.frames.size()); ++fi)
+        for (const auto& [n1, m1, m2] : cut)
+            for (const double spread : {kSpreads[0], kSpreads[1]})
+                for (const double reach : kReaches)
+                    scan_split(c, Lattice{fi, n1, 0.0, 0.0, spread, m1, m2, reach}, cut_step, found);
     return found;
 }
 
@@ -213,7 +265,7 @@ bool pair_allowed(const RoomGeom& a, const RoomGeom& b, const std::optional<doub
     const double limit = max_overlap                        ? *max_overlap
                          : smaller <= kSmallRoomArea - 1e-6 ? kSmallRoomLimit
                                                             : kLargeRoomLimit;
-    return 100.0 * shared / smaller <= limit - 1e-6;
+    return 100.0 * shared / smaller <= limit - 1e-4;
 }
 
 std::optional<Packing> pack_rooms(const PackRules& rules) {

@@ -11,7 +11,7 @@ namespace {
 
 double millimetres(double v) { return std::round(v * 1000.0) / 1000.0 + 0.0; }  // + 0.0: no -0
 
-glm::dvec2 rounded(glm::dvec2 p) { return {millimetres(p.x), millimetres(p.y)}; }
+glm::dvec2 mm_rounded(glm::dvec2 p) { return {millimetres(p.x), millimetres(p.y)}; }
 
 double cross2(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
 
@@ -28,7 +28,7 @@ glm::dvec2 l_frame_point(const Shape& s, double cs, double ct) {
 
 glm::dvec2 frame_to_floor(double angle, glm::dvec2 uv) {
     const double c = std::cos(angle), s = std::sin(angle);
-    return rounded({uv.x * c - uv.y * s, uv.x * s + uv.y * c});
+    return mm_rounded({uv.x * c - uv.y * s, uv.x * s + uv.y * c});
 }
 
 math::Polygon2 frame_rect(double angle, double u0, double u1, double v0, double v1) {
@@ -40,20 +40,21 @@ void counter_clockwise(math::Polygon2& p) {
     if (math::signed_area(p) < 0.0) std::reverse(p.begin(), p.end());
 }
 
+// The L's outline, and two convex pieces that share its corners (so that
+// they tile the rounded outline exactly): the body side up to the inner
+// corner, and the arm side from the first corner through the inner corner.
 RoomGeom l_geom(const Shape& s) {
     const bool along_u = s.arm_side < 2;
     const double A = along_u ? s.u1 - s.u0 : s.v1 - s.v0, B = along_u ? s.v1 - s.v0 : s.u1 - s.u0;
     const double aw = s.arm_width, top = B + s.arm_length;
     const double canon[6][2] = {{0, 0}, {A, 0}, {A, B}, {aw, B}, {aw, top}, {0, top}};
+    math::Polygon2 p;
+    for (const auto& c : canon) p.push_back(frame_to_floor(s.angle, l_frame_point(s, c[0], c[1])));
     RoomGeom g;
-    for (const auto& c : canon) g.outline.push_back(frame_to_floor(s.angle, l_frame_point(s, c[0], c[1])));
+    g.outline = p;
+    g.pieces = {{p[0], p[1], p[2], p[3]}, {p[0], p[3], p[4], p[5]}};
     counter_clockwise(g.outline);
-    g.pieces.push_back(frame_rect(s.angle, s.u0, s.u1, s.v0, s.v1));
-    math::Polygon2 arm;
-    for (const auto& c : {glm::dvec2(0, B), glm::dvec2(aw, B), glm::dvec2(aw, top), glm::dvec2(0, top)})
-        arm.push_back(frame_to_floor(s.angle, l_frame_point(s, c.x, c.y)));
-    counter_clockwise(arm);
-    g.pieces.push_back(arm);
+    for (math::Polygon2& piece : g.pieces) counter_clockwise(piece);
     return g;
 }
 
@@ -67,8 +68,8 @@ RoomGeom arc_geom(const Shape& s) {
     for (int k = 0; k <= n; ++k) {
         const double a = s.a0 + (s.a1 - s.a0) * k / n;
         const glm::dvec2 dir(std::cos(a), std::sin(a));
-        outer.push_back(rounded(s.centre + s.r1 * dir));
-        inner.push_back(rounded(s.centre + s.r0 * dir));
+        outer.push_back(mm_rounded(s.centre + s.r1 * dir));
+        inner.push_back(mm_rounded(s.centre + s.r0 * dir));
     }
     RoomGeom g;
     g.outline = outer;
