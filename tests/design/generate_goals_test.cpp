@@ -112,6 +112,12 @@ TEST(GenerateGoals, ASlantedFloorGetsTurnedRooms) {
     EXPECT_GT(turned, 0);
 }
 
+TEST(GenerateGoals, RoomsThatOnlyTouchUnderAZeroOverlapLimit) {
+    design::GenerateOptions o = goals_square(4, 4, 1);
+    o.max_overlap = 0.0;
+    EXPECT_GT(goals_check(o), 0.99);  // four rooms of 2 x 2 m, doors in the walls they share
+}
+
 TEST(GenerateGoals, TheSameSeedWritesTheSameBytesWithPrismRooms) {
     const auto a = design::generate(goals_square(6, 10, 5)), b = design::generate(goals_square(6, 10, 5));
     ASSERT_TRUE(a.has_value() && b.has_value());
@@ -146,6 +152,11 @@ TEST(GenerateGoals, AnLAndACorridorAreTiledByTheirPieces) {
     EXPECT_EQ(lg.outline.size(), 6u);
     EXPECT_NEAR(lg.area, 8.0 + 1.5, 1e-9);
     EXPECT_DOUBLE_EQ(design::shape_width(l), 1.5);
+    // Turned, rounded to millimetres: the pieces still share the outline's
+    // corners, so they tile it exactly (no sliver for overlaps to miss).
+    l.angle = 0.3;
+    const design::RoomGeom turned = design::room_geom(l);
+    EXPECT_NEAR(math::area(turned.pieces[0]) + math::area(turned.pieces[1]), turned.area, 1e-12);
     design::Shape arc;
     arc.kind = design::Shape::Kind::Arc;
     arc.r0 = 2, arc.r1 = 3.6, arc.a0 = 0, arc.a1 = M_PI / 2;
