@@ -17,7 +17,7 @@ namespace impossible::scene {
 // holes lie inside it without touching it or each other).
 struct Tessellation {
     std::vector<glm::dvec2> points;
-    std::vector<std::array<int, 3>> triangles;  // counter-clockwise (or of zero area)
+    std::vector<std::array<int, 3>> triangles;  // counter-clockwise, no slivers (polygon_tess.cpp)
     int added = 0;                              // points added by the tessellator
 };
 

@@ -352,6 +352,37 @@ TEST(PrismRender, GrazingViewsAlongACurvedCorridor) {
     EXPECT_EQ(sum, 0);
 }
 
+// tools/diff_fuzz.py --kinds prism --seed 25 --case 1233: a square turned
+// 45 degrees with a narrow door in one wall. The ceiling's tessellation
+// joined the door's cuts on the ceiling's edge into slivers beside one long
+// triangle; llvmpipe snapped them to face away and left one pixel of
+// nothing at the ceiling's edge (polygon_tess.cpp now splits them away).
+TEST(PrismRender, NoCrackAlongATurnedCeilingsEdge) {
+    const layout::Layout l = testing::layout_from_text(R"({"format": "impossible-layout", "version": 1,
+      "start": {"room": "a", "position": [1.686970091327769, 0.5745413438895985, -1.5657898334048572]},
+      "rooms": [{"id": "a", "floor": [[-4.494495, -0.332043], [0.332043, 4.494495], [4.494495, 0.332043],
+                                      [-0.332043, -4.494495]], "y": [0.0, 2.929118], "color": [0.937, 0.215, 0.557]},
+                {"id": "b", "floor": [[1.901118, 1.295718], [1.691929, 1.105973], [-3.721253, 2.181083],
+                                      [-3.560575, 3.145092], [-2.763749, 3.957295], [2.209234, 3.172428],
+                                      [2.22469, 3.14427]], "y": [0.0, 2.997525], "color": [0.389, 0.432, 0.575]}],
+      "portals": [{"id": "a_door", "room": "a", "center": [-3.578876, 1.838552, -1.247662],
+                   "normal": [0.707106781, 0.0, 0.707106781], "width": 0.095926, "height": 1.744976,
+                   "target": "b_door", "depth": 0.089785},
+                  {"id": "b_door", "room": "b", "center": [-0.868117, 1.135383, 1.614423],
+                   "normal": [0.194804665, 0.0, 0.980842058], "width": 0.095926, "height": 1.744976,
+                   "target": "a_door", "depth": 0.312973}]})");
+    render::FrameDesc f;
+    f.head.position = {1.686970091327769, 0.57454134388959854, -1.5657898334048572};
+    f.head.yaw_deg = 93.457232701174945;
+    f.head.pitch_deg = 13.474200583483386;
+    f.room = 0;
+    f.fov_y_deg = 94.191;
+    f.eye_width = 96;
+    f.eye_height = 64;
+    f.max_depth = 2;
+    EXPECT_EQ(prism_mismatches(l, f, "fuzz 25/1233: the ceiling's edge", false), 0);
+}
+
 // Under "lighting": "lights": a convex hexagon, turned, lit by a point
 // light and a spot, with a box prop (its shadow), and a door in a slanted
 // wall into a lit box room; faces lit by their exact normals.
