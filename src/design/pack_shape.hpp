@@ -70,20 +70,13 @@ struct Interval {
 };
 std::vector<Interval> line_inside(const math::Polygon2& outline, glm::dvec2 p, glm::dvec2 d);
 
-// A door in wall `wall` of room `from` (outline edge wall -> wall + 1) that
-// leads into room `to`: its centre on the wall, and its normal into `from`.
-struct DoorSpot {
-    int wall = -1;
-    glm::dvec2 centre{0.0};
-    glm::dvec2 normal{0.0};  // unit, into `from`
-};
-
-// The stretches of wall `wall` of `from` where a door's centre may go: the
-// door is kPackDoorWidth wide, at least 0.1 m from the wall's ends, with
+// A door in wall `wall` of room `from` (outline edge wall -> wall + 1)
+// leading into room `to`: the stretches of that wall where the door's
+// centre may go, as intervals of the distance from the wall's first corner.
+// The door is kPackDoorWidth wide, at least 0.1 m from the wall's ends, with
 // `from` in front of it and `to` behind it for kDoorReach; in `to` (where it
 // stands free) it leaves kDoorPassage free on one side and keeps 0.05 m
-// from `to`'s walls on the other. Intervals of the distance from the wall's
-// first corner.
+// from `to`'s walls on the other.
 std::vector<Interval> door_stretches(const RoomGeom& from, int wall, const RoomGeom& to);
 
 // Whether some wall of `from` can hold a door into `to`.
