@@ -127,6 +127,19 @@ glm::dvec2 start_point(const RoomGeom& room, const std::vector<std::array<glm::d
     return best;
 }
 
+// The start's yaw: of the eight compass points, the one that looks furthest
+// across room 0 (yaw 0 looks along -z, a positive yaw turns left).
+double start_yaw(const RoomGeom& room, glm::dvec2 start) {
+    double best = 0.0, reach = -1.0;
+    for (int k = 0; k < 8; ++k) {
+        const double yaw = 45.0 * k, a = yaw * 3.14159265358979323846 / 180.0;
+        const glm::dvec2 d(-std::sin(a), -std::cos(a));
+        for (const Interval& v : line_inside(room.outline, start, d))
+            if (v.lo <= 1e-9 && v.hi > reach + 1e-9) reach = v.hi, best = yaw;
+    }
+    return best;
+}
+
 ordered_json room_json(int i, const RoomGeom& g, int height, const std::vector<std::array<glm::dvec2, 2>>& doors,
                        std::uint64_t prop_seed) {
     const double hue = 0.13 + 0.618034 * static_cast<double>(i);
@@ -182,7 +195,8 @@ std::string layout_text(const GenerateOptions& o, const Packing& pk, const std::
     for (std::size_t i = 0; i < pk.rooms.size(); ++i)
         list.push_back(room_json(static_cast<int>(i), pk.rooms[i], heights[i], lines[i], prop_seed));
     const glm::dvec2 start = start_point(pk.rooms[0], lines[0], list[0]["props"]);
-    j["start"] = {{"room", room_id(0)}, {"position", vec(start.x, 1.6, start.y)}, {"yaw_deg", 0.0}};
+    j["start"] = {
+        {"room", room_id(0)}, {"position", vec(start.x, 1.6, start.y)}, {"yaw_deg", start_yaw(pk.rooms[0], start)}};
     j["rooms"] = list;
     j["portals"] = portals;
     return j.dump(2) + "\n";
