@@ -120,6 +120,7 @@ private:
     OverlapLimits limits_;
     std::vector<FloorBounds> bounds_;
     std::size_t clipped_ = 0;
+    std::size_t work_ = 0;  // corners multiplied, summed over the clipped pairs
     Overlaps out_;
 
     static bool by_rooms(const Overlap& x, const Overlap& y) { return x.a < y.a || (x.a == y.a && x.b < y.b); }
@@ -166,7 +167,8 @@ private:
             if (shared > kMinSharedArea) add(i, j, std::move(later));
             return true;
         }
-        if (++clipped_ > limits_.clipped) {
+        work_ += floors_[i].size() * floors_[j].size();
+        if (++clipped_ > limits_.clipped || work_ > limits_.work) {
             out_.exact = false;
             return false;
         }

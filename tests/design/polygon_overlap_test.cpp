@@ -3,6 +3,7 @@
 // clipping and convex clips), and the overlap figures of non-convex rooms.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <random>
 
@@ -125,6 +126,55 @@ TEST(PolygonOverlap, LibraryAgreesWithEarClipping) {
         shared += library > 0.01;
     }
     EXPECT_GT(shared, 200);  // most pairs overlap, so the comparison means something
+}
+
+// A saw of `teeth` teeth 10 m high along x over a 1 m strip; turned, a
+// second one's teeth cross every tooth of the first.
+Polygon2 saw(int teeth, bool turn) {
+    Polygon2 p;
+    const double dx = 10.0 / teeth;
+    for (int i = 0; i < teeth; ++i) {
+        p.push_back({i * dx, 0});
+        p.push_back({(i + 0.5) * dx, 10});
+    }
+    for (const glm::dvec2 c : {glm::dvec2(10, 0), glm::dvec2(10, -1), glm::dvec2(0, -1)}) p.push_back(c);
+    if (turn)
+        for (glm::dvec2& c : p) c = {c.y + 0.5, c.x};
+    return p;
+}
+
+TEST(PolygonOverlap, BoundariesMeetingEverywhereStayCheap) {
+    // 497 teeth a side: about 250,000 crossings, beyond the library's
+    // kMaxLibraryMeetings (it took minutes); the triangles take milliseconds.
+    const Polygon2 a = saw(497, false), b = saw(497, true);
+    const auto start = std::chrono::steady_clock::now();
+    const double area = d::intersection_area(a, b);
+    const std::vector<Polygon2> pieces = d::intersection(a, b);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_LT(seconds, 5.0);
+    EXPECT_NEAR(area, d::intersection_area_by_triangles(a, b), 1e-9);
+    EXPECT_NEAR(pieces_area(pieces), area, 1e-9);
+    // A few teeth: the library, and the same area as the fallback's.
+    const Polygon2 c = saw(3, false), e = saw(3, true);
+    EXPECT_NEAR(d::intersection_area(c, e), d::intersection_area_by_triangles(c, e), 1e-9);
+    EXPECT_GT(d::intersection_area(c, e), 1.0);
+}
+
+TEST(PolygonOverlap, TheSweepStopsAtItsWork) {
+    // 30 saws of 99 corners on one spot: 435 pairs of 99² corner pairs each.
+    const std::vector<Polygon2> floors(30, saw(48, false));
+    d::OverlapLimits limits;
+    limits.work = 20 * 99 * 99;  // 20 pairs
+    const d::Overlaps o = d::room_overlaps(floors, limits);
+    EXPECT_FALSE(o.exact);
+    EXPECT_EQ(o.pairs, 20u);
+    const d::Overlaps all = d::room_overlaps(floors);  // within the default work
+    EXPECT_TRUE(all.exact);
+    EXPECT_EQ(all.pairs, 30u * 29 / 2);
+    // At the default work, 1000-corner floors stop after 200 pairs.
+    const d::Overlaps big = d::room_overlaps(std::vector<Polygon2>(22, saw(498, false)));
+    EXPECT_FALSE(big.exact);
+    EXPECT_EQ(big.pairs, d::kMaxClipWork / (1000 * 1000));
 }
 
 TEST(PolygonOverlap, PolygonInside) {
