@@ -13,164 +13,11 @@
 #include "layout/room_shape.hpp"
 #include "scene/grid_front.hpp"
 #include "scene/polygon_tess.hpp"
+#include "scene/prism_plan.hpp"
 
 namespace impossible::scene {
 
 namespace {
-
-// As room_mesh.cpp's: a rectangle whose corners lie within this of their
-// bounding rectangle's in a wall's (s, t) is upright in it.
-constexpr double kPrismAlignTolerance = 1e-6;
-
-// A portal that is a hole in a face, in the face's (s, t).
-struct PrismHole {
-    int portal = -1;
-    std::array<glm::dvec2, 4> corners;  // math::box_corners' front corners
-    glm::dvec2 lo{0.0}, hi{0.0};        // their bounding rectangle
-    bool aligned = true;
-};
-
-// The hole of `rect` in the face `frame`; a wall's clamps its corners to the
-// wall's rectangle [bounds[0], bounds[1]] (a floor's or ceiling's is left as
-// it is: the tessellator cuts it to the polygon).
-PrismHole prism_hole(const layout::FaceFrame& frame, int portal, const math::PortalRect& rect,
-                     const glm::dvec2* bounds) {
-    math::dvec3 c[8];
-    math::box_corners(rect, c);
-    PrismHole h;
-    h.portal = portal;
-    h.lo = glm::dvec2(std::numeric_limits<double>::infinity());
-    h.hi = -h.lo;
-    for (std::size_t k = 0; k < 4; ++k) {
-        glm::dvec2 st = layout::to_face(frame, c[k]);
-        if (bounds != nullptr) st = glm::clamp(st, bounds[0], bounds[1]);
-        h.corners[k] = st;
-        h.lo = glm::min(h.lo, st);
-        h.hi = glm::max(h.hi, st);
-    }
-    const auto near = [](double x, double a, double b) {
-        return std::abs(x - a) <= kPrismAlignTolerance || std::abs(x - b) <= kPrismAlignTolerance;
-    };
-    for (const glm::dvec2& p : h.corners) {
-        h.aligned = h.aligned && near(p.x, h.lo.x, h.hi.x) && near(p.y, h.lo.y, h.hi.y);
-    }
-    return h;
-}
-
-// Wall i in its frame: s = 0 at corner i (a), s = length at corner i + 1 (b).
-struct PrismWall {
-    layout::FaceFrame frame;
-    glm::dvec2 a{0.0}, b{0.0};  // (x, z)
-    double length = 0.0;        // negative where s runs from b towards a
-    // Its cuts along s, ascending: its ends, its holes' edges (a grid wall),
-    // and where floor and ceiling holes meet it.
-    std::vector<double> s_lines;
-    std::vector<PrismHole> holes;
-    bool grid = true;  // every hole upright in it
-
-    // The point (s, y) of the wall, in layout coordinates; the wall's ends
-    // are its corners exactly.
-    glm::dvec3 point(double s, double y) const {
-        const glm::dvec2 xz = s == 0.0 ? a : s == length ? b : a + (s / length) * (b - a);
-        return {xz.x, y, xz.y};
-    }
-    // s_lines from corner a to corner b.
-    std::vector<double> from_a() const {
-        std::vector<double> s = s_lines;
-        if (length < 0.0) std::reverse(s.begin(), s.end());
-        return s;
-    }
-};
-
-struct PrismPlan {
-    std::vector<PrismWall> walls;
-    // The heights every wall is cut at: floor, ceiling, and the top and
-    // bottom edges of the holes of every grid wall, ascending.
-    std::vector<double> heights;
-    std::array<layout::FaceFrame, 2> caps;            // floor, ceiling
-    std::array<std::vector<PrismHole>, 2> cap_holes;  // in the caps' (s, t)
-};
-
-void sort_unique(std::vector<double>& v) {
-    std::sort(v.begin(), v.end());
-    v.erase(std::unique(v.begin(), v.end()), v.end());
-}
-
-void add_prism_hole(PrismPlan& plan, const layout::Room& room, int p, const layout::Portal& portal) {
-    const auto face = static_cast<std::size_t>(portal.hole_face);
-    if (face < 2) {
-        plan.cap_holes[face].push_back(prism_hole(plan.caps[face], p, portal.rect, nullptr));
-        return;
-    }
-    PrismWall& w = plan.walls[face - 2];
-    const glm::dvec2 bounds[2] = {{std::min(0.0, w.length), room.min.y}, {std::max(0.0, w.length), room.max.y}};
-    const PrismHole h = prism_hole(w.frame, p, portal.rect, bounds);
-    w.grid = w.grid && h.aligned;
-    w.holes.push_back(h);
-}
-
-// Floor and ceiling holes' corners within this of a wall (the loader's
-// "inside" tolerance) lie on it: a trapdoor flush with a wall.
-constexpr double kPrismSnap = 1e-4;
-
-// A floor or ceiling hole's corners that lie on a wall (within kPrismSnap)
-// are moved onto it, to the wall's point there, which becomes a cut of the
-// wall (s_lines): the hole, the floor's outline, the wall and the trapdoor's
-// front then meet vertex to vertex, as box rooms' faces do.
-void snap_to_walls(PrismPlan& plan, const layout::FaceFrame& cap, double y, PrismHole& h) {
-    for (glm::dvec2& st : h.corners) {
-        const glm::dvec3 p = layout::from_face(cap, st);
-        for (PrismWall& w : plan.walls) {
-            const double s = glm::dot(glm::dvec3(p.x - w.a.x, 0.0, p.z - w.a.y), w.frame.s_axis);
-            const double d = glm::dot(glm::dvec3(p.x - w.a.x, 0.0, p.z - w.a.y), w.frame.normal);
-            if (std::abs(d) > kPrismSnap || s < std::min(0.0, w.length) - kPrismSnap ||
-                s > std::max(0.0, w.length) + kPrismSnap)
-                continue;
-            const double at = std::abs(s) <= kPrismSnap ? 0.0 : std::abs(s - w.length) <= kPrismSnap ? w.length : s;
-            w.s_lines.push_back(at);
-            st = layout::to_face(cap, w.point(at, y));
-            break;
-        }
-    }
-}
-
-PrismPlan plan_prism(const layout::Layout& layout, int room_index, const std::vector<int>& room_portals) {
-    const layout::Room& room = layout.rooms[static_cast<std::size_t>(room_index)];
-    PrismPlan plan;
-    for (int i = 0; i < layout::wall_count(room); ++i) {
-        const layout::Wall lw = layout::wall(room, i);
-        PrismWall w;
-        w.frame = layout::face_frame(room, 2 + i);
-        w.a = lw.a;
-        w.b = lw.b;
-        w.length = glm::dot(glm::dvec3(lw.b.x - lw.a.x, 0.0, lw.b.y - lw.a.y), w.frame.s_axis);
-        plan.walls.push_back(w);
-    }
-    for (std::size_t f = 0; f < 2; ++f) plan.caps[f] = layout::face_frame(room, static_cast<int>(f));
-    for (const int p : room_portals) {
-        const layout::Portal& portal = layout.portals[static_cast<std::size_t>(p)];
-        if (portal.room != room_index || portal.hole_face < 0) continue;
-        assert(portal.hole_face < layout::face_count(room));
-        add_prism_hole(plan, room, p, portal);
-    }
-    for (std::size_t f = 0; f < 2; ++f)
-        for (PrismHole& h : plan.cap_holes[f]) snap_to_walls(plan, plan.caps[f], f == 0 ? room.min.y : room.max.y, h);
-    plan.heights = {room.min.y, room.max.y};
-    for (PrismWall& w : plan.walls) {
-        w.s_lines.insert(w.s_lines.end(), {std::min(0.0, w.length), std::max(0.0, w.length)});
-        if (!w.grid) {
-            sort_unique(w.s_lines);
-            continue;
-        }
-        for (const PrismHole& h : w.holes) {
-            w.s_lines.insert(w.s_lines.end(), {h.lo.x, h.hi.x});
-            plan.heights.insert(plan.heights.end(), {h.lo.y, h.hi.y});
-        }
-        sort_unique(w.s_lines);
-    }
-    sort_unique(plan.heights);
-    return plan;
-}
 
 // How a wall's vertices look: its exact normal, colour, checker, and its
 // texture coordinates along the wall (layout::wall_uv: (s, -y) / size, less
@@ -195,11 +42,11 @@ std::size_t line_at(const std::vector<double>& lines, double value) {
     return static_cast<std::size_t>(it - lines.begin());
 }
 
-// A wall on its grid (s_lines × heights); fills the fronts of its holes.
-void append_grid_wall(MeshWriter& out, const PrismPlan& plan, const PrismWall& w, const WallStyle& style,
+// A wall on its grid (s_lines × rows); fills the fronts of its holes.
+void append_grid_wall(MeshWriter& out, const PrismWall& w, const WallStyle& style,
                       std::vector<std::optional<FrontGrid>>& fronts) {
     const std::vector<double>& ss = w.s_lines;
-    const std::vector<double>& ts = plan.heights;
+    const std::vector<double>& ts = w.rows;
     const std::size_t na = ss.size(), nb = ts.size();
     std::vector<glm::vec3> points(na * nb);
     for (std::size_t j = 0; j < nb; ++j)
@@ -245,19 +92,20 @@ void append_tessellation(MeshWriter& out, const Tessellation& tess, MakeVertex m
     for (const std::array<int, 3>& t : tess.triangles) out.triangle(id(t[0]), id(t[1]), id(t[2]));
 }
 
-// A wall with a hole that is not upright in it: its rectangle (cut at every
-// height on its sides) less its holes, by the tessellator.
-void append_tessellated_wall(MeshWriter& out, const PrismPlan& plan, const PrismWall& w, const WallStyle& style,
+// A wall that is not a grid (no holes, or one not upright in it): its
+// rectangle, through every cut along its bottom and top and every height on
+// its sides, less its holes, by the tessellator.
+void append_tessellated_wall(MeshWriter& out, const PrismWall& w, const WallStyle& style,
                              std::vector<std::optional<FrontGrid>>& fronts) {
-    // The outline counter-clockwise through every cut: bottom, right side,
-    // top, left side.
+    // The outline counter-clockwise: bottom, high side, top, low side.
     const std::vector<double>& ss = w.s_lines;
-    const std::vector<double>& hs = plan.heights;
+    const std::vector<double>& high = w.high_side;
+    const std::vector<double>& low = w.low_side;
     std::vector<std::vector<glm::dvec2>> contours(1);
-    for (std::size_t k = 0; k + 1 < ss.size(); ++k) contours[0].push_back({ss[k], hs.front()});
-    for (std::size_t k = 0; k + 1 < hs.size(); ++k) contours[0].push_back({ss.back(), hs[k]});
-    for (std::size_t k = ss.size() - 1; k > 0; --k) contours[0].push_back({ss[k], hs.back()});
-    for (std::size_t k = hs.size() - 1; k > 0; --k) contours[0].push_back({ss.front(), hs[k]});
+    for (std::size_t k = 0; k + 1 < ss.size(); ++k) contours[0].push_back({ss[k], low.front()});
+    for (std::size_t k = 0; k + 1 < high.size(); ++k) contours[0].push_back({ss.back(), high[k]});
+    for (std::size_t k = ss.size() - 1; k > 0; --k) contours[0].push_back({ss[k], high.back()});
+    for (std::size_t k = low.size() - 1; k > 0; --k) contours[0].push_back({ss.front(), low[k]});
     for (const PrismHole& h : w.holes) {
         contours.emplace_back(h.corners.begin(), h.corners.end());
         std::array<glm::vec3, 4> c;
@@ -354,9 +202,9 @@ std::vector<IndexRange> append_prism_faces(MeshWriter& out, const layout::Layout
             const PrismWall& w = plan.walls[face - 2];
             const WallStyle style = wall_style(out, room, w, face);
             if (w.grid)
-                append_grid_wall(out, plan, w, style, fronts);
+                append_grid_wall(out, w, style, fronts);
             else
-                append_tessellated_wall(out, plan, w, style, fronts);
+                append_tessellated_wall(out, w, style, fronts);
         }
         ranges[face] = out.range_since(first);
     }

@@ -3,14 +3,16 @@
 // the ceiling and one wall per edge of the floor polygon, in face order
 // (layout/room_shape.hpp).
 //
-// Walls: each wall is cut into a grid in its own frame (s along the wall, t =
-// y), on s at its ends and the edges of its holes, on t at the floor, the
-// ceiling and the top and bottom edges of every hole in any wall of the room
-// (so that neighbouring walls meet vertex to vertex at their shared corner),
-// and emits the cells no hole covers; a hole's portal front is built from
-// the same grid points. A wall holding a rectangle that is not upright in it
-// is triangulated with its holes by the GLU tessellator (polygon_tess.hpp)
-// instead, its portals' fronts made of the holes' corners.
+// Walls (scene/prism_plan.hpp says how they are cut): a wall with holes is
+// cut into a grid in its own frame (s along the wall, t = y), on s at its
+// ends and the edges of its holes, on t at the floor, the ceiling and the
+// top and bottom edges of the holes of its run of neighbouring walls with
+// holes, and emits the cells no hole covers; a hole's portal front is built
+// from the same grid points. Every other wall (no holes, or a rectangle
+// that is not upright in it) is triangulated by the GLU tessellator
+// (polygon_tess.hpp) with the heights of the grids beside it on its sides,
+// so that neighbouring walls meet vertex to vertex; its portals' fronts are
+// made of the holes' corners.
 //
 // Floor and ceiling: the floor polygon with every wall's grid points along
 // its edges (so that floor and walls meet vertex to vertex) and the holes of

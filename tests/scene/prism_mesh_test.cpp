@@ -226,6 +226,33 @@ TEST(PrismMesh, TrapdoorsFlushWithWalls) {
     EXPECT_FALSE(prism_covers(s, ts, {5.99, 2.5, 0.01}));
 }
 
+TEST(PrismMesh, WindowsCutOnlyTheirOwnRunOfWalls) {
+    // A 60-sided room with windows at 13 different heights: one in every
+    // fifth wall, and two side by side in walls 30 and 31 (a run of two).
+    std::vector<glm::dvec2> floor;
+    for (int k = 0; k < 60; ++k)
+        floor.push_back({8.0 * std::cos(0.10471975511965977 * k), 8.0 * std::sin(0.10471975511965977 * k)});
+    layout::Layout l = prism_layout(prism_room("round", floor, 0.0, 3.0));
+    double holes = 0.0;
+    for (int i = 0; i < 60; i += 5) {
+        l.portals.push_back(prism_door(l, i, 0.5, 0.4, 0.3, 0.2 + 0.17 * i / 5));
+        holes += 0.12;
+    }
+    l.portals.push_back(prism_door(l, 31, 0.5, 0.4, 0.5, 0.7));
+    holes += 0.2;
+    for (std::size_t p = 0; p < l.portals.size(); ++p) l.portals[p].id = "w" + std::to_string(p);
+    const Scene s = build_scene(l);
+    const auto ts = triangles(s, s.cells[0]);
+    expect_prism_area(ts, prism_surface(l.rooms[0]) - holes);
+    expect_prism_faces(s, l.rooms[0]);
+    std::vector<int> all(l.portals.size());
+    for (std::size_t p = 0; p < all.size(); ++p) all[p] = static_cast<int>(p);
+    EXPECT_TRUE(closed_and_consistent(prism_closed(s, all)));
+    // Heights shared room-wide would cut all 60 walls 27 times (over 3,000
+    // triangles); each window cuts its own wall, and the pair each other.
+    EXPECT_LT(ts.size(), 700u);
+}
+
 TEST(PrismMesh, DoorTiltedInItsWallIsTessellated) {
     layout::Layout l = prism_layout(prism_room("l", kPrismL, 0.0, 2.5));
     layout::Portal p = prism_door(l, 1, 0.5, 0.8, 1.0, 0.8);  // wall 1 is x = 6, facing -x
