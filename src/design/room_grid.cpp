@@ -46,6 +46,69 @@ std::vector<Footprint> prop_footprints(const layout::Room& room, double head_hei
     return out;
 }
 
+// The x range of segment ab within the strip z0 <= z <= z1, or false.
+bool strip_span(const glm::dvec2& a, const glm::dvec2& b, double z0, double z1, double& lo, double& hi) {
+    double t0 = 0.0, t1 = 1.0;
+    const double dz = b.y - a.y;
+    if (dz == 0.0) {
+        if (a.y < z0 || a.y > z1) return false;
+    } else {
+        const double u = (z0 - a.y) / dz, v = (z1 - a.y) / dz;
+        t0 = std::max(t0, std::min(u, v));
+        t1 = std::min(t1, std::max(u, v));
+        if (t0 > t1) return false;
+    }
+    const double x0 = a.x + t0 * (b.x - a.x), x1 = a.x + t1 * (b.x - a.x);
+    lo = std::min(x0, x1), hi = std::max(x0, x1);
+    return true;
+}
+
+// The cells of a prism room's grid whose centres lie inside its floor
+// polygon and at least `radius` from every wall: the cells between the
+// polygon's crossings of each row of centres (even-odd), less those that
+// some wall's `radius` band reaches (tested exactly, distance_to_segment,
+// in the rows and columns the band can reach). The same cells as testing
+// every centre against every wall, in about rows × walls + the bands'
+// cells instead of rows × columns × walls steps.
+std::vector<unsigned char> prism_cells(const math::Polygon2& poly, glm::dvec2 origin, double cell, int nx, int nz,
+                                       double radius) {
+    std::vector<unsigned char> ok(static_cast<std::size_t>(nx) * nz, 0);
+    const std::size_t n = poly.size();
+    std::vector<double> xs;
+    for (int k = 0; k < nz; ++k) {
+        const double z = origin.y + (k + 0.5) * cell;
+        xs.clear();
+        for (std::size_t e = 0; e < n; ++e) {
+            const glm::dvec2 a = poly[e], b = poly[(e + 1) % n];
+            if ((a.y <= z) != (b.y <= z)) xs.push_back(a.x + (z - a.y) / (b.y - a.y) * (b.x - a.x));
+        }
+        std::sort(xs.begin(), xs.end());
+        for (std::size_t j = 0; j + 1 < xs.size(); j += 2) {
+            const int i0 = std::max(0, static_cast<int>(std::ceil((xs[j] - origin.x) / cell - 0.5)));
+            const int i1 = std::min(nx - 1, static_cast<int>(std::floor((xs[j + 1] - origin.x) / cell - 0.5)));
+            for (int i = i0; i <= i1; ++i) ok[static_cast<std::size_t>(k) * nx + i] = 1;
+        }
+    }
+    for (std::size_t e = 0; e < n; ++e) {
+        const glm::dvec2 a = poly[e], b = poly[(e + 1) % n];
+        const int k0 = std::max(0, static_cast<int>(std::floor((std::min(a.y, b.y) - radius - origin.y) / cell)));
+        const int k1 = std::min(nz - 1, static_cast<int>(std::ceil((std::max(a.y, b.y) + radius - origin.y) / cell)));
+        for (int k = k0; k <= k1; ++k) {
+            const double z = origin.y + (k + 0.5) * cell;
+            double lo = 0.0, hi = 0.0;
+            if (!strip_span(a, b, z - radius, z + radius, lo, hi)) continue;
+            const int i0 = std::max(0, static_cast<int>(std::floor((lo - radius - origin.x) / cell)) - 1);
+            const int i1 = std::min(nx - 1, static_cast<int>(std::ceil((hi + radius - origin.x) / cell)) + 1);
+            for (int i = i0; i <= i1; ++i) {
+                unsigned char& c = ok[static_cast<std::size_t>(k) * nx + i];
+                const glm::dvec2 centre = origin + glm::dvec2(i + 0.5, k + 0.5) * cell;
+                if (c && math::distance_to_segment(centre, a, b) < radius) c = 0;
+            }
+        }
+    }
+    return ok;
+}
+
 }  // namespace
 
 RoomGrid::RoomGrid(const layout::Layout& layout, int room_index, const math::dmat4& to_physical,
@@ -57,9 +120,12 @@ RoomGrid::RoomGrid(const layout::Layout& layout, int room_index, const math::dma
     nx_ = std::max(1, static_cast<int>(std::ceil(extent.x / cell_)));
     nz_ = std::max(1, static_cast<int>(std::ceil(extent.y / cell_)));
     const std::vector<Footprint> props = prop_footprints(room, o.head_height);
-    // A prism room's floor polygon, inset by the body radius below; a box
-    // room keeps its rectangle test.
-    const math::Polygon2 prism = layout::is_prism(room) ? layout::floor_outline(room) : math::Polygon2{};
+    // A prism room's floor polygon inset by the body radius; a box room
+    // keeps its rectangle test.
+    const bool prism = layout::is_prism(room);
+    const std::vector<unsigned char> inset =
+        prism ? prism_cells(layout::floor_outline(room), origin_, cell_, nx_, nz_, o.body_radius)
+              : std::vector<unsigned char>{};
     std::vector<std::array<glm::dvec2, 2>> doors;
     for (const layout::Portal& p : layout.portals)
         if (p.room == room_index && p.kind == layout::PortalKind::Door) doors.push_back(door_line(p, math::dmat4(1.0)));
@@ -67,10 +133,9 @@ RoomGrid::RoomGrid(const layout::Layout& layout, int room_index, const math::dma
     for (int k = 0; k < nz_; ++k) {
         for (int i = 0; i < nx_; ++i) {
             const glm::dvec2 c = centre(i, k);
-            bool ok = prism.empty()
-                          ? c.x >= room.min.x + o.body_radius && c.x <= room.max.x - o.body_radius &&
-                                c.y >= room.min.z + o.body_radius && c.y <= room.max.z - o.body_radius
-                          : math::contains(prism, c, 0.0) && math::distance_to_boundary(prism, c) >= o.body_radius;
+            bool ok = prism ? inset[index(i, k)] != 0
+                            : c.x >= room.min.x + o.body_radius && c.x <= room.max.x - o.body_radius &&
+                                  c.y >= room.min.z + o.body_radius && c.y <= room.max.z - o.body_radius;
             for (std::size_t n = 0; ok && n < props.size(); ++n)
                 ok = rect_distance(c, props[n].lo, props[n].hi) >= o.body_radius;
             for (std::size_t n = 0; ok && n < doors.size(); ++n)

@@ -112,6 +112,32 @@ TEST(PrismDesign, AWayAlongACurvedCorridorStaysInIt) {
     }
 }
 
+TEST(PrismDesign, TheGridsFreeCellsAreThoseAtLeastABodyRadiusInside) {
+    // Every cell centre against every wall, for an L, the half ring and a
+    // star of 41 corners turned off the axes.
+    math::Polygon2 star;
+    for (int i = 0; i < 41; ++i) {
+        const double a = 2.0 * M_PI * i / 41 + 0.3, r = i % 2 ? 1.2 : 3.0;
+        star.push_back({1.0 + r * std::cos(a), -2.0 + r * std::sin(a)});
+    }
+    for (const math::Polygon2& floor : {kEll, half_ring(), star}) {
+        layout::Layout l;
+        l.rooms.push_back(test::prism_room("p", floor, 0.0, 3.0));
+        const design::GridOptions options;
+        const design::RoomGrid grid(l, 0, math::dmat4(1.0), {}, options);
+        const glm::dvec2 lo{l.rooms[0].min.x, l.rooms[0].min.z}, hi{l.rooms[0].max.x, l.rooms[0].max.z};
+        int free = 0;
+        for (double z = lo.y + 0.025; z < hi.y; z += 0.05)
+            for (double x = lo.x + 0.025; x < hi.x; x += 0.05) {
+                const glm::dvec2 c{x, z};
+                const bool expected = math::contains(floor, c, 0.0) && math::distance_to_boundary(floor, c) >= 0.25;
+                ASSERT_EQ(grid.free(c), expected) << x << ", " << z;
+                free += expected;
+            }
+        EXPECT_GT(free, 100);
+    }
+}
+
 TEST(PrismDesign, ValidateMeasuresTheLNotItsBox) {
     // A 2 x 2 m box over the L's inner corner: a quarter of it in the notch.
     const layout::Layout l =
