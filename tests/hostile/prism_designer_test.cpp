@@ -127,5 +127,26 @@ TEST_F(HostilePrismDesign, FloorsWhoseWallsCrossEverywhereAreMeasuredInBoundedTi
     EXPECT_NE(r.out.find("  a / b: "), std::string::npos) << r.out;
 }
 
+TEST_F(HostilePrismDesign, TourInARoomOfAThousandWallsIsQuick) {
+    // A half ring of radii 2 and 10 m, 500 walls a side: its grid of 400 x
+    // 200 cells took 2 s tested cell by wall; now a few hundredths.
+    std::string floor = "[";
+    for (int i = 0; i < 1000; ++i) {
+        const double a = M_PI * (i < 500 ? i : 999 - i) / 499, r = i < 500 ? 10.0 : 2.0;
+        char text[64];
+        std::snprintf(text, sizeof text, "%s[%.4f, %.4f]", i ? ", " : "", r * std::cos(a), r * std::sin(a));
+        floor += text;
+    }
+    spit(dir_ / "arc.json",
+         "{ \"format\": \"impossible-layout\", \"version\": 1,\n"
+         "  \"start\": { \"room\": \"arc\", \"position\": [6, 1.6, 0.5] },\n"
+         "  \"rooms\": [ { \"id\": \"arc\", \"floor\": " +
+             floor + "], \"y\": [0, 3] } ] }\n");
+    const Outcome r = run("$BIN tour arc.json --out arc.txt");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_LT(r.seconds, 1.5);  // 0.03 s on the development machine
+    EXPECT_NE(r.out.find("rooms visited: 1 of 1 reachable: arc\n"), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace impossible::hostile
