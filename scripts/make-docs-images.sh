@@ -51,6 +51,14 @@ render lamp_hall-annex lamp_hall.json --room annex --pose 1.9,2.0,0.0,90,-35,0
 render mirror_lamp mirror_lamp.json
 render tinted_window tinted_window.json --room greenhouse --pose 5.2,1.7,0.4,80,-20,0
 render spot_corridor spot_corridor.json --room corridor --pose 0,1.6,1.5,0,-12,0
+# Rooms of any shape (issue 23): an L, a turned room, a curved corridor and a
+# trapdoor seen from above and below.
+render l_flat l_flat.json --room hall --pose=-2.0,1.6,2.2,-55.9,-5,0
+render turned_room turned_room.json
+render curved_corridor curved_corridor.json
+render curved_corridor-inside curved_corridor.json --room corridor --pose 2.0,1.5,0,180,0,0
+render trapdoor trapdoor.json --room tower --pose 0.4,1.6,0.9,0,-55,0
+render trapdoor-below trapdoor.json --room cellar --pose 0.4,-1.4,0.6,0,65,0
 # A headset profile (issue 24): the HTC Vive's asymmetric frusta and its
 # hidden area, black, at a size of the Vive's aspect.
 "$bin" render "$root/layouts/four_rooms.json" --hmd "$root/profiles/htc-vive.json" --size 360x400 \

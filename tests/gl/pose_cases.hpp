@@ -37,6 +37,18 @@ inline const PoseCase kPoseCases[] = {
     {"glass_gallery.json", "gallery", {-0.8, 1.6, 1.8}, -20, 0, 0, "start"},
     {"window_pair.json", "studio", {0.6, 1.45, 0.3}, 86, 0, 0, "start"},
     {"three_kinds.json", "atelier", {0.05, 1.55, 0.45}, 0, 0, 0, "start"},
+    // Rooms of any shape (issue 23).
+    {"l_flat.json", "hall", {-1.6, 1.6, 1.8}, -20, 0, 0, "start"},
+    {"l_flat.json", "hall", {-1.5, 1.6, -1.5}, -118.6, 0, 0, "through the bedroom door"},
+    {"l_flat.json", "hall", {-2.0, 1.6, 2.2}, -55.9, 0, 0, "the inner corner hides a door"},
+    {"l_flat.json", "study", {1.5, 1.5, 1.25}, 90, -5, 0, "back into the hall"},
+    {"turned_room.json", "hall", {-1.4, 1.6, 2.424871}, -30, 0, 0, "start"},
+    {"turned_room.json", "reading_room", {0.0, 1.5, 0.0}, 150, 0, 0, "back through the slanted wall"},
+    {"curved_corridor.json", "studio", {-1.0, 1.6, -1.5}, -90, 0, 0, "start"},
+    {"curved_corridor.json", "corridor", {2.0, 1.5, 0.0}, 180, 0, 0, "along the curve"},
+    {"curved_corridor.json", "library", {-1.0, 1.6, 1.5}, -90, 0, 0, "into the corridor's far end"},
+    {"trapdoor.json", "tower", {0.4, 1.6, 0.6}, 0, -60, 0, "down through the trapdoor"},
+    {"trapdoor.json", "cellar", {0.4, -1.4, 0.5}, 0, 70, 0, "up through the trapdoor"},
 };
 
 }  // namespace impossible::testing
