@@ -92,7 +92,7 @@ import zlib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from diff_fuzz_objects import ObjectCases  # noqa: E402  (the kinds "crossing" and "volume")
-from diff_fuzz_prisms import PrismCases, inside_polygon  # noqa: E402  (the kind "prism")
+from diff_fuzz_prisms import PrismCases, boundary_distance, inside_polygon  # noqa: E402  (the kind "prism")
 
 # The kinds a run cycles through by default (docs/accuracy.md's figures are
 # for these); --kinds picks others. "glass" is mirrors and windows.
@@ -628,14 +628,16 @@ class Case(ObjectCases, PrismCases):
         of their own, so a case's rooms, portals and pose are those of the
         unlit case."""
         r = random.Random(self.seed * 1_000_003 + self.number + 0x5eed)
+        if not self.lights_allowed():
+            return  # lights in a non-convex prism room are refused (docs/layout-limits.md): the case stays unlit
         out["lighting"] = "lights"
         out["light_depth"] = r.randint(0, 3)
         for room in out["rooms"]:
             room["ambient"] = [round(r.uniform(0.0, 0.3), 3) for _ in range(3)]
-            lo, hi = room["min"], room["max"]
+            lo, hi = self.room_bounds(room)
             lights = []
             for _ in range(r.randint(0, 3)):
-                pos = self.light_position(r, lo, hi, room.get("props", []))
+                pos = self.light_position(r, lo, hi, room.get("props", []), room.get("floor"))
                 if pos is None:
                     continue
                 light = {"position": pos, "color": rnd_color(r), "intensity": round(log_uniform(r, 0.3, 12.0), 4)}
@@ -652,10 +654,13 @@ class Case(ObjectCases, PrismCases):
                 room["lights"] = lights
 
     @staticmethod
-    def light_position(r, lo, hi, props):
+    def light_position(r, lo, hi, props, floor=None):
         for _ in range(20):
             pos = [round(r.uniform(lo[i] + 0.05 * (hi[i] - lo[i]), hi[i] - 0.05 * (hi[i] - lo[i])), 6)
                    for i in range(3)]
+            if floor is not None and not (inside_polygon(floor, pos[0], pos[2]) and
+                                          boundary_distance(floor, pos[0], pos[2]) > 0.01):
+                continue
             inside = False
             for prop in props:
                 box = prop.get("box")
