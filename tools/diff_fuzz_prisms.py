@@ -122,6 +122,7 @@ class PrismCases:
         angles = sorted(r.uniform(0, 2 * math.pi) for _ in range(n))
         if r.random() < 0.3 and n > 3:  # two corners a few centimetres apart
             angles[1] = angles[0] + r.uniform(0.01, 0.05) / radius
+            angles.sort()  # the moved corner may pass the next one
         squash = r.uniform(0.6, 1.0)  # an ellipse: still convex
         pts = [[centre[0] + radius * math.cos(a), centre[1] + radius * squash * math.sin(a)] for a in angles]
         return pts if abs(area2(pts)) > 1.0 else self.turned_floor(centre, radius, radius)
