@@ -88,6 +88,25 @@ double overlap(const Quad& p, const Quad& q) {
     return least;
 }
 
+// Why a mirror or window is in no face: its corners are `away` m from the
+// face its normal looks away from (`facing`), or its normal is tilted.
+std::string away_reason(double away, const std::string& face_text, bool facing) {
+    if (!facing) {
+        return "its normal is tilted away from every face; make it perpendicular to the face it belongs in, "
+               "pointing into the room";
+    }
+    const double micrometres = std::round(away * 1e6) / 1e6;  // no 0.30000000000000004
+    return "a corner is " + format_number(micrometres) + " m from " + face_text +
+           ", the face its normal looks away from; move it into that face";
+}
+
+void refuse_free_glass(Checker& check, const PortalDraft& draft, const Room& room, double eps, const std::string& why) {
+    check.error(draft.path / "center",
+                std::string("a ") + kind_name(draft.portal.kind) + " must lie in a face of its own room " +
+                    quote(room.id) + " (within " + format_number(eps) +
+                    " m of the face's plane, inside the face), but this one stands free: " + why);
+}
+
 // A mirror or window that stands free (layout-format.md, "Mirrors and
 // windows": it must lie in a face of its own room). The message says which
 // face it is nearest and what to change.
@@ -126,17 +145,9 @@ void report_free_standing(Checker& check, const PortalDraft& draft, const Room& 
             if (rect.normal[f.axis] * f.inward > rect.normal[b.axis] * b.inward) best = face;
         }
         const FaceAxes f = face_axes(room, static_cast<Face>(best));
-        const double away = std::round(farthest_corner(f) * 1e6) / 1e6;  // micrometres: no 0.30000000000000004
-        why = rect.normal[f.axis] * f.inward > 0.5
-                  ? "a corner is " + format_number(away) + " m from " + name(best) +
-                        ", the face its normal looks away from; move it into that face"
-                  : "its normal is tilted away from every face; make it perpendicular to the face it belongs in, "
-                    "pointing into the room";
+        why = away_reason(farthest_corner(f), name(best), rect.normal[f.axis] * f.inward > 0.5);
     }
-    check.error(draft.path / "center",
-                std::string("a ") + kind_name(draft.portal.kind) + " must lie in a face of its own room " +
-                    quote(room.id) + " (within " + format_number(eps) +
-                    " m of the face's plane, inside the face), but this one stands free: " + why);
+    refuse_free_glass(check, draft, room, eps, why);
 }
 
 struct Hole {
@@ -247,17 +258,10 @@ void report_free_standing_prism(Checker& check, const PortalDraft& draft, const 
         }
     }
     if (why.empty()) {
-        const double away = std::round(farthest_corner(frames[best]) * 1e6) / 1e6;
-        why = glm::dot(n, frames[best].normal) > 0.5
-                  ? "a corner is " + format_number(away) + " m from " + prism_face_text(room, static_cast<int>(best)) +
-                        ", the face its normal looks away from; move it into that face"
-                  : "its normal is tilted away from every face; make it perpendicular to the face it belongs in, "
-                    "pointing into the room";
+        why = away_reason(farthest_corner(frames[best]), prism_face_text(room, static_cast<int>(best)),
+                          glm::dot(n, frames[best].normal) > 0.5);
     }
-    check.error(draft.path / "center",
-                std::string("a ") + kind_name(draft.portal.kind) + " must lie in a face of its own room " +
-                    quote(room.id) + " (within " + format_number(eps) +
-                    " m of the face's plane, inside the face), but this one stands free: " + why);
+    refuse_free_glass(check, draft, room, eps, why);
 }
 
 // Whether the rectangle (in a face's (s, t)) reaches into the face by more

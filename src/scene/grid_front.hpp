@@ -7,6 +7,9 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <vector>
 
 #include <glm/vec2.hpp>
 
@@ -41,6 +44,28 @@ FrontGrid grid_front(const std::array<glm::dvec2, 4>& corners, PointAt point, st
         }
     }
     return g;
+}
+
+// Emits the open cells of an na × nb grid of points (open[j·(na-1)+i] for
+// cell (i, j)), two triangles each, making each point's vertex the first time
+// a cell uses it (`make_vertex(i, j)`), in the same order for every face that
+// is cut into a grid.
+template <class Out, class Open, class MakeVertex>
+void emit_open_cells(Out& out, std::size_t na, std::size_t nb, const Open& open, MakeVertex make_vertex) {
+    constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+    std::vector<std::uint32_t> ids(na * nb, kNone);  // made when first used
+    const auto id = [&](std::size_t i, std::size_t j) {
+        std::uint32_t& v = ids[j * na + i];
+        if (v == kNone) v = make_vertex(i, j);
+        return v;
+    };
+    for (std::size_t j = 0; j + 1 < nb; ++j) {
+        for (std::size_t i = 0; i + 1 < na; ++i) {
+            if (!open[j * (na - 1) + i]) continue;
+            out.triangle(id(i, j), id(i + 1, j), id(i + 1, j + 1));
+            out.triangle(id(i, j), id(i + 1, j + 1), id(i, j + 1));
+        }
+    }
 }
 
 }  // namespace impossible::scene

@@ -60,20 +60,9 @@ void append_grid_wall(MeshWriter& out, const PrismWall& w, const WallStyle& styl
         fronts[static_cast<std::size_t>(h.portal)] = grid_front(
             h.corners, [&](std::size_t i, std::size_t j) { return points[j * na + i]; }, i0, i1, j0, j1);
     }
-    constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-    std::vector<std::uint32_t> ids(na * nb, kNone);  // made when first used
-    const auto id = [&](std::size_t i, std::size_t j) {
-        std::uint32_t& v = ids[j * na + i];
-        if (v == kNone) v = wall_vertex(out, style, points[j * na + i], ss[i], ts[j]);
-        return v;
-    };
-    for (std::size_t j = 0; j + 1 < nb; ++j) {
-        for (std::size_t i = 0; i + 1 < na; ++i) {
-            if (!open[j * (na - 1) + i]) continue;
-            out.triangle(id(i, j), id(i + 1, j), id(i + 1, j + 1));
-            out.triangle(id(i, j), id(i + 1, j + 1), id(i, j + 1));
-        }
-    }
+    emit_open_cells(out, na, nb, open, [&](std::size_t i, std::size_t j) {
+        return wall_vertex(out, style, points[j * na + i], ss[i], ts[j]);
+    });
 }
 
 // A hole's front from its corners, given as the face's vertices there.

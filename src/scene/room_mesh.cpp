@@ -121,20 +121,9 @@ void append_grid_face(MeshWriter& out, const layout::Room& room, int face, const
 
     const glm::dvec3 normal = inward_normal(f);
     const glm::dvec3& color = room.face_color[static_cast<std::size_t>(face)];
-    constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-    std::vector<std::uint32_t> ids(na * nb, kNone);  // made when first used
-    const auto id = [&](std::size_t i, std::size_t j) {
-        std::uint32_t& v = ids[j * na + i];
-        if (v == kNone) v = out.vertex(grid.point(i, j), normal, color, room.checker);
-        return v;
-    };
-    for (std::size_t j = 0; j + 1 < nb; ++j) {
-        for (std::size_t i = 0; i + 1 < na; ++i) {
-            if (!open[j * (na - 1) + i]) continue;
-            out.triangle(id(i, j), id(i + 1, j), id(i + 1, j + 1));
-            out.triangle(id(i, j), id(i + 1, j + 1), id(i, j + 1));
-        }
-    }
+    emit_open_cells(out, na, nb, open, [&](std::size_t i, std::size_t j) {
+        return out.vertex(grid.point(i, j), normal, color, room.checker);
+    });
 }
 
 void append_face(MeshWriter& out, const layout::Room& room, int face, const Lines& lines,
