@@ -65,6 +65,33 @@ unsigned bf_not_behind(const glm::dvec3& lo, const glm::dvec3& hi, const math::d
     return out;
 }
 
+// The faces lying in the eye's clip plane (every corner within the tracer's
+// tolerance of it): "What a pixel shows" keeps only what lies strictly in
+// front of the plane, so none of their fragments belongs in the image, but a
+// clip distance of 0 give or take float rounding would keep some (a box
+// standing on a floor seen from below through a trapdoor in it).
+unsigned bf_in_plane(const glm::dvec3& lo, const glm::dvec3& hi, const math::dvec4& plane) {
+    const glm::dvec3 n(plane.x, plane.y, plane.z);
+    if (n == glm::dvec3(0.0)) return 0;  // no clip plane
+    unsigned out = 0;
+    for (int a = 0; a < 3; ++a) {
+        const int b = (a + 1) % 3, c = (a + 2) % 3;
+        for (const int positive : {0, 1}) {
+            glm::dvec3 corner = lo;
+            corner[a] = positive ? hi[a] : lo[a];
+            bool in_plane = true;
+            for (int k = 0; k < 4 && in_plane; ++k) {
+                corner[b] = (k & 1) ? hi[b] : lo[b];
+                corner[c] = (k & 2) ? hi[c] : lo[c];
+                const double d = glm::dot(n, corner) + plane.w;
+                in_plane = std::abs(d) <= 1e-9 * (1.0 + std::abs(plane.w) + glm::length(corner));
+            }
+            if (in_plane) out |= 1u << (2 * a + positive);
+        }
+    }
+    return out;
+}
+
 // The faces of `faces` whose corners' image, within `reach`, holds a pixel
 // centre; all of them when a corner is not in front of the eye.
 unsigned bf_with_pixels(const glm::dvec3& lo, const glm::dvec3& hi, const EyeView& ev, const NdcRect& reach, int width,
@@ -112,6 +139,17 @@ unsigned box_front_faces(const glm::dvec3& lo, const glm::dvec3& hi, const Level
         seen |= faces;
     }
     return eyes == 0 ? kAllBoxFaces : seen;
+}
+
+unsigned faces_in_clip_planes(const glm::dvec3& box_min, const glm::dvec3& box_max, const LevelView& view) {
+    unsigned out = kAllBoxFaces;
+    int eyes = 0;
+    for (const EyeView& ev : view.eyes) {
+        if (!ev.active || ev.rect.empty()) continue;
+        ++eyes;
+        out &= bf_in_plane(box_min, box_max, ev.exit_plane);
+    }
+    return eyes == 0 ? 0u : out;
 }
 
 void append_box_faces(std::uint32_t first_vertex, unsigned faces, std::vector<std::uint32_t>& out) {

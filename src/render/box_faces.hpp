@@ -55,6 +55,15 @@ BoxFaceView box_face_view(const LevelView& view, int width, int height, int samp
 inline constexpr double kSmallBoxPx = 8.0;
 unsigned box_front_faces(const glm::dvec3& lo, const glm::dvec3& hi, const LevelView& view, const BoxFaceView& bf);
 
+// The faces of the box [box_min, box_max] (exact, as the layout writes it)
+// that lie in the exit plane (EyeView::exit_plane) of every active eye of
+// `view`, within the
+// tracer's tolerance. "What a pixel shows" keeps only what lies strictly in
+// front of the plane, so they have no fragment in the image; a clip distance
+// of 0, give or take float rounding, would keep some (a box standing on a
+// floor seen from below through a trapdoor in it).
+unsigned faces_in_clip_planes(const glm::dvec3& box_min, const glm::dvec3& box_max, const LevelView& view);
+
 // Appends the indices of `faces` of the box whose 24 vertices start at
 // `first_vertex` (scene/box_mesh.hpp), in append_box_prop's order.
 void append_box_faces(std::uint32_t first_vertex, unsigned faces, std::vector<std::uint32_t>& out);

@@ -185,7 +185,9 @@ void visible_draws(const scene::CellObjects& cell, const LevelView& view, int ey
         }
         const auto first = static_cast<std::uint32_t>(face_indices.size());
         append_box_faces(static_cast<std::uint32_t>(object.box_vertex),
-                         box_front_faces(object.lo, object.hi, view, faces), face_indices);
+                         box_front_faces(object.lo, object.hi, view, faces) &
+                             ~faces_in_clip_planes(object.box_min, object.box_max, view),
+                         face_indices);
         const auto count = static_cast<std::uint32_t>(face_indices.size()) - first;
         if (count == 0) continue;
         if (!out.empty() && out.back().faces)

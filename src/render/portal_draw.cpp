@@ -166,6 +166,7 @@ LevelView moved_view(const DrawContext& ctx, const LevelView& view, const math::
         ev.behind_exit = math::signed_distance(b.rect, ev.eye.position) < 0.0;
         if (!ev.behind_exit) continue;
         const math::dvec4 plane = math::portal_plane(b.rect);
+        ev.exit_plane = plane;
         if (ctx.frame.clip == ClipMode::Oblique) {
             const math::dvec4 plane_eye = math::transform_plane(view_matrix, plane);
             ev.view_proj =

@@ -36,6 +36,9 @@ struct EyeView {
     math::dvec4 clip_plane{0, 0, 0, 1};  // keep dot(plane, (p, 1)) >= 0
     NdcRect rect;                        // where this level is visible
     bool behind_exit = false;            // the eye stands behind the portal it came out of
+    // That portal's plane while behind_exit, in either clip mode (with
+    // ClipMode::Oblique clip_plane stays unset: the projection clips).
+    math::dvec4 exit_plane{0, 0, 0, 1};
 };
 
 struct LevelView {

@@ -62,7 +62,11 @@ void append_prop(Scene& scene, MeshWriter& out, const layout::Prop& prop, CellOb
         },
         prop);
     CellObject object;
-    if (std::holds_alternative<layout::BoxProp>(prop)) object.box_vertex = first_vertex;
+    if (const auto* box = std::get_if<layout::BoxProp>(&prop)) {
+        object.box_vertex = first_vertex;
+        object.box_min = box->min;
+        object.box_max = box->max;
+    }
     bound_object(scene, first_vertex, out.origin, object);
     object.first_batch = static_cast<std::uint32_t>(objects.batches.size());
     object.batch_count = static_cast<std::uint32_t>(own.size());

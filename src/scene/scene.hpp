@@ -98,6 +98,7 @@ struct CellObject {
     // faces -x, +x, -y, +y, -z, +z); -1 for a model. A level may then draw
     // only the faces its eyes can see (render/box_faces.hpp).
     std::int64_t box_vertex = -1;
+    glm::dvec3 box_min{0.0}, box_max{0.0};  // a box prop's corners as the layout writes them
 };
 
 // A node of a cell's bounding-volume hierarchy over its objects, stored depth
