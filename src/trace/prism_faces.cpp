@@ -39,6 +39,7 @@ PrismShape prism_shape(const layout::Room& room) {
             surface.wall_origin = frame.origin;
             surface.wall_s_axis = frame.s_axis;
         }
+        face.frame = frame;
         s.faces.push_back(std::move(face));
     }
     return s;
@@ -56,9 +57,9 @@ bool cuts_prism_hole(const layout::FaceFrame& face, const math::PortalRect& rect
     return true;
 }
 
-int prism_hole_face(const layout::Room& room, const math::PortalRect& rect) {
-    for (int f = 0; f < layout::face_count(room); ++f)
-        if (cuts_prism_hole(layout::face_frame(room, f), rect)) return f;
+int prism_hole_face(const PrismShape& prism, const math::PortalRect& rect) {
+    for (std::size_t f = 0; f < prism.faces.size(); ++f)
+        if (cuts_prism_hole(prism.faces[f].frame, rect)) return static_cast<int>(f);
     return -1;
 }
 

@@ -23,8 +23,10 @@ PrismShape prism_shape(const layout::Room& room);
 // sliver of the same tolerance outside counts as inside).
 bool cuts_prism_hole(const layout::FaceFrame& face, const math::PortalRect& rect);
 
-// The first face of the prism room in which the rectangle cuts a hole, or -1.
-int prism_hole_face(const layout::Room& room, const math::PortalRect& rect);
+// The first face of the prism room (prism_shape's faces, whose frames it
+// keeps: a face's frame costs a pass over the floor) in which the rectangle
+// cuts a hole, or -1.
+int prism_hole_face(const PrismShape& prism, const math::PortalRect& rect);
 
 // Whether (x, z) lies in the floor polygon or within its tolerance of an edge.
 bool in_prism_floor(const PrismShape& prism, double x, double z);

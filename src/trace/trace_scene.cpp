@@ -183,7 +183,8 @@ void add_portal(Scene& scene, const layout::Layout& layout, int i) {
     // face's plane at most).
     RoomFace* holed = nullptr;
     if (const layout::Room& own = layout.rooms[p.room]; layout::is_prism(own)) {
-        if (const int f = prism_hole_face(own, p.rect); f >= 0) holed = &room.prism.faces[std::size_t(f)].surface;
+        if (const int f = prism_hole_face(room.prism, p.rect); f >= 0)
+            holed = &room.prism.faces[std::size_t(f)].surface;
     } else {
         for (RoomFace& face : room.faces) {
             if (cuts_hole(face.rect, p.rect)) {

@@ -18,6 +18,7 @@
 
 #include "base/result.hpp"
 #include "layout/layout.hpp"
+#include "layout/room_shape.hpp"
 #include "math/conventions.hpp"
 #include "math/portal.hpp"
 #include "math/view.hpp"
@@ -67,6 +68,7 @@ struct RoomFace {
 // (PrismShape::corners) between the floor and the ceiling.
 struct PrismFace {
     RoomFace surface;
+    layout::FaceFrame frame;  // the face's plane and outline (prism_hole_face reads it)
     dvec3 normal{0.0};
     double y = 0.0;  // the floor's or the ceiling's height
 };
