@@ -628,8 +628,6 @@ class Case(ObjectCases, PrismCases):
         of their own, so a case's rooms, portals and pose are those of the
         unlit case."""
         r = random.Random(self.seed * 1_000_003 + self.number + 0x5eed)
-        if not self.lights_allowed():
-            return  # lights in a non-convex prism room are refused (docs/layout-limits.md): the case stays unlit
         out["lighting"] = "lights"
         out["light_depth"] = r.randint(0, 3)
         for room in out["rooms"]:

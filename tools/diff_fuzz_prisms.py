@@ -276,19 +276,6 @@ class PrismCases:
         xs, zs = [p[0] for p in room["floor"]], [p[1] for p in room["floor"]]
         return [min(xs), room["y"][0], min(zs)], [max(xs), room["y"][1], max(zs)]
 
-    def lights_allowed(self):
-        """Whether the loader takes lights in this layout: every prism floor convex."""
-        for room in self.rooms:
-            f = room.get("floor")
-            if f is None:
-                continue
-            sign = 1.0 if area2(f) > 0 else -1.0
-            for i in range(len(f)):
-                a, b, c = f[i - 1], f[i], f[(i + 1) % len(f)]
-                if sign * ((b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0])) < 0:
-                    return False
-        return True
-
     def prism_near_plane_note(self, room, near):
         """near_plane_note for a prism room: an eye closer to a wall, the
         floor or the ceiling than the rasteriser's near plane."""

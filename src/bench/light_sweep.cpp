@@ -24,9 +24,7 @@ layout::Layout with_lights(const layout::Layout& layout, int n) {
     const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(std::max(n, 1)))));
     for (layout::Room& room : out.rooms) {
         room.lights.clear();
-        // A non-convex room takes no lights (the loader refuses them there);
-        // in a prism, the grid's points outside its floor are left out.
-        if (!layout::floor_convex(room)) continue;
+        // In a prism, the grid's points outside its floor are left out.
         const glm::dvec3 lo = room.min + 0.15 * (room.max - room.min);
         const glm::dvec3 extent = 0.7 * (room.max - room.min);
         for (int i = 0; i < n; ++i) {

@@ -14,7 +14,7 @@ namespace impossible::bench {
 // n < 0: the layout under the fixed light (its lights dropped). A prism
 // room (layout-format.md, "Rooms of any shape") keeps the grid's lights
 // that stand inside its floor (farther than 5 cm from its walls), their
-// intensities summing to 4; a non-convex one takes none.
+// intensities summing to 4.
 layout::Layout with_lights(const layout::Layout& layout, int n);
 
 // Whether a point lies in the room: its box, or over a prism's floor

@@ -129,16 +129,6 @@ void only_with_lights(Checker& check, const Path& at) {
 }
 
 void read_room_lighting(Checker& check, const Path& at, const json& value, RoomDraft& draft, bool lit) {
-    // The lights' shadow rays do not yet meet a room's own walls
-    // (docs/layout-limits.md): in a non-convex room they would light what its
-    // walls hide. Light can come in through any portal, so the room is refused
-    // whether or not it has lights of its own.
-    if (lit && draft.shape_ok && !floor_convex(draft.room)) {
-        check.error(at / "floor",
-                    "lights in a room whose floor is not convex are not supported yet; under "
-                    "\"lighting\": \"lights\" split the room into convex rooms joined by doors, or "
-                    "use \"lighting\": \"fixed\"");
-    }
     if (const json* v = field(value, "ambient")) {
         if (!lit) {
             only_with_lights(check, at / "ambient");

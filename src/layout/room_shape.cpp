@@ -51,6 +51,21 @@ Wall wall(const Room& room, int index) {
     return w;
 }
 
+std::vector<int> crossable_walls(const Room& room) {
+    std::vector<int> out;
+    if (!is_prism(room)) return out;
+    const glm::dvec2 extent(room.max.x - room.min.x, room.max.z - room.min.z);
+    const double scale = 1.0 + std::abs(room.min.x) + std::abs(room.min.z) + extent.x + extent.y;
+    for (int i = 0; i < wall_count(room); ++i) {
+        const Wall w = wall(room, i);
+        const bool behind = std::any_of(room.floor.begin(), room.floor.end(), [&](const glm::dvec2& c) {
+            return glm::dot(c - w.a, w.inward) < -1e-9 * scale;
+        });
+        if (behind) out.push_back(i);
+    }
+    return out;
+}
+
 namespace {
 
 FaceFrame side_frame(const glm::dvec3& normal, const glm::dvec3& origin) {

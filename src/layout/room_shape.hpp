@@ -76,6 +76,13 @@ struct Wall {
 };
 Wall wall(const Room& room, int index);
 
+// The walls of a prism room that a straight segment between two points of
+// the room can cross: those with a floor corner more than 1e-9 m (scaled
+// by the floor's size) behind their line. None in a convex room or a box
+// room; in an L the two walls of its reflex corner. A light's shadow ray
+// meets these (lights::LightImage's blockers); no other wall can stop it.
+std::vector<int> crossable_walls(const Room& room);
+
 // Texture coordinates on a prism's wall, in tiles (layout-format.md, "Rooms
 // of any shape"): s = distance from corner i towards the right of a viewer
 // inside facing the wall, t = -y, both divided by `size`.

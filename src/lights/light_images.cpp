@@ -18,6 +18,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "layout/room_shape.hpp"
 #include "lights/aperture_clip.hpp"
 #include "math/rigid.hpp"
 #include "shading/lighting.hpp"
@@ -60,6 +61,7 @@ struct LiWalk {
     int depth = 0;
     bool cull = true;
     std::vector<std::vector<LiArrival>> arrivals;
+    std::vector<std::vector<int>> crossable;  // per room: layout::crossable_walls
     int light_room = -1;
     int light = -1;
     std::vector<LiStep> steps{};
@@ -70,6 +72,12 @@ struct LiWalk {
     std::size_t budget = 0;
     std::size_t count = 0;
 };
+
+std::vector<std::vector<int>> li_crossable(const layout::Layout& layout) {
+    std::vector<std::vector<int>> out;
+    for (const layout::Room& room : layout.rooms) out.push_back(layout::crossable_walls(room));
+    return out;
+}
 
 std::vector<std::vector<LiArrival>> li_arrivals(const layout::Layout& layout, const links::PortalLinks& links) {
     std::vector<std::vector<LiArrival>> arrivals(layout.rooms.size());
@@ -103,8 +111,31 @@ const layout::Light& li_light(const LiWalk& walk) {
     return walk.layout.rooms[static_cast<std::size_t>(walk.light_room)].lights[static_cast<std::size_t>(walk.light)];
 }
 
+// Wall i of a prism room as a rectangle (normal into the room, up +y).
+math::PortalRect li_wall_rect(const layout::Room& room, int i) {
+    const layout::Wall w = layout::wall(room, i);
+    const glm::dvec2 mid = 0.5 * (w.a + w.b);
+    math::PortalRect rect;
+    rect.center = dvec3(mid.x, 0.5 * (room.min.y + room.max.y), mid.y);
+    rect.normal = dvec3(w.inward.x, 0.0, w.inward.y);
+    rect.up = dvec3(0.0, 1.0, 0.0);
+    rect.width = glm::length(w.b - w.a);
+    rect.height = room.max.y - room.min.y;
+    rect.depth = 0.0;
+    return rect;
+}
+
+// The wall a portal is a hole in, or -1.
+int li_hole_wall(const LiWalk& walk, int portal, int room) {
+    if (portal < 0) return -1;
+    const int face = walk.layout.portals[static_cast<std::size_t>(portal)].hole_face;
+    return face < 0 ? -1 : layout::wall_of_face(walk.layout.rooms[static_cast<std::size_t>(room)], face);
+}
+
 // The free-standing portals of leg `leg`'s room, but for the portals the
-// shadow ray enters and leaves that room by, mapped into C's coordinates.
+// shadow ray enters and leaves that room by, and the walls of that room it
+// may cross (a non-convex prism's), but for the walls those two portals are
+// holes in (the leg only ends on them), mapped into C's coordinates.
 void li_add_blockers(const LiWalk& walk, LightImage& image, int leg) {
     const int k = static_cast<int>(image.apertures.size());
     int entry = -1;
@@ -119,6 +150,11 @@ void li_add_blockers(const LiWalk& walk, LightImage& image, int leg) {
         const layout::Portal& portal = walk.layout.portals[static_cast<std::size_t>(p)];
         if (portal.hole_face != -1 || p == entry || p == exit) continue;
         image.blockers.push_back({transform_rect(to_c, portal.rect), p, leg});
+    }
+    const layout::Room& leg_room = walk.layout.rooms[static_cast<std::size_t>(room)];
+    for (const int w : walk.crossable[static_cast<std::size_t>(room)]) {
+        if (w == li_hole_wall(walk, entry, room) || w == li_hole_wall(walk, exit, room)) continue;
+        image.blockers.push_back({transform_rect(to_c, li_wall_rect(leg_room, w)), -1, leg, w});
     }
 }
 
@@ -263,8 +299,12 @@ std::vector<RoomLights> light_images(const layout::Layout& layout, const links::
     if (layout.lighting != layout::Lighting::Lights) return result;
     result.resize(layout.rooms.size());
     for (std::size_t r = 0; r < layout.rooms.size(); ++r) result[r].ambient = layout.rooms[r].ambient;
-    LiWalk walk{layout, links, std::clamp(light_depth, 0, layout::kMaxLightDepth), options.cull,
-                li_arrivals(layout, links)};
+    LiWalk walk{layout,
+                links,
+                std::clamp(light_depth, 0, layout::kMaxLightDepth),
+                options.cull,
+                li_arrivals(layout, links),
+                li_crossable(layout)};
     li_walk_lights(walk);
     // By path length, then as a depth-first walk from C meets them.
     std::stable_sort(walk.out.begin(), walk.out.end(), [](const LiPending& a, const LiPending& b) {
@@ -285,7 +325,7 @@ int light_depth_within(const layout::Layout& layout, const links::PortalLinks& l
                        std::size_t max_images) {
     const int depth = std::clamp(light_depth, 0, layout::kMaxLightDepth);
     if (layout.lighting != layout::Lighting::Lights || max_images == 0) return depth;
-    LiWalk walk{layout, links, 0, true, li_arrivals(layout, links)};
+    LiWalk walk{layout, links, 0, true, li_arrivals(layout, links), li_crossable(layout)};
     walk.count_only = true;
     walk.budget = max_images;
     for (int d = 1; d <= depth; ++d) {

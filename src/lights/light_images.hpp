@@ -34,10 +34,13 @@ struct Aperture {
 // face), which would block a shadow ray meeting it, on leg `leg`: leg 0 runs
 // from the surface to aperture 0, leg i from aperture i-1 to aperture i, the
 // last (leg == apertures.size()) from the last aperture to the light.
+// A wall of a non-convex prism room that the leg may cross
+// (layout::crossable_walls) blocks it too.
 struct Blocker {
     math::PortalRect rect;  // in the lit room's coordinates, depth 0
-    int portal = -1;
+    int portal = -1;        // -1 for a wall
     int leg = 0;
+    int wall = -1;  // the wall's index in the leg's room, or -1 for a portal
 };
 
 // One image of a light as the surfaces of a room C see it:

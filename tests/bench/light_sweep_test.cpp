@@ -81,9 +81,9 @@ TEST(BenchLightSweep, PlanItems) {
     EXPECT_EQ(sizes.configs[2].frame.shadow_map_size, 256);
 }
 
-// Prism rooms (issue 23): an L takes no lights (lights in non-convex rooms
-// are refused) but boxes on its floor only; a turned square keeps the
-// grid's lights over its floor, 5 cm from its walls, summing to 4.
+// Prism rooms (issue 23): an L and a turned square keep the grid's lights
+// over their floors (none in the L's notch), 5 cm from their walls,
+// summing to 4, and boxes on their floors only.
 TEST(BenchLightSweep, PrismRoomsKeepLightsAndBoxesOnTheirFloors) {
     layout::Layout l;
     l.rooms.push_back(test::prism_room("l", {{0, 0}, {6, 0}, {6, 3}, {3, 3}, {3, 6}, {0, 6}}, 0.0, 2.5));
@@ -91,16 +91,16 @@ TEST(BenchLightSweep, PrismRoomsKeepLightsAndBoxesOnTheirFloors) {
     l.start.room = 0;
     l.start.position = {1, 1.6, 1};
     const layout::Layout lit = with_lights(l, 16);
-    EXPECT_TRUE(lit.rooms[0].lights.empty());
-    const layout::Room& turned = lit.rooms[1];
-    ASSERT_GT(turned.lights.size(), 0u);
-    EXPECT_LT(turned.lights.size(), 16u);
-    double sum = 0.0;
-    for (const layout::Light& light : turned.lights) {
-        EXPECT_TRUE(inside_floor(turned, light.position));
-        sum += light.intensity;
+    for (const layout::Room& room : lit.rooms) {
+        ASSERT_GT(room.lights.size(), 0u) << room.id;
+        EXPECT_LT(room.lights.size(), 16u) << room.id;
+        double sum = 0.0;
+        for (const layout::Light& light : room.lights) {
+            EXPECT_TRUE(inside_floor(room, light.position)) << room.id;
+            sum += light.intensity;
+        }
+        EXPECT_NEAR(sum, 4.0, 1e-12) << room.id;
     }
-    EXPECT_NEAR(sum, 4.0, 1e-12);
     BenchOptions o;
     o.sweep = "boxes:100";
     const BenchPlan plan = plan_bench(l, o);

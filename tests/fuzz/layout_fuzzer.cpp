@@ -92,7 +92,6 @@ void check_layout(const layout::Layout& l) {
             }
             if (layout::is_prism(room)) {
                 const glm::dvec2 p{light.position.x, light.position.z};
-                require(layout::floor_convex(room), "a lit prism room is convex");
                 require(impossible::math::contains(room.floor, p, 0.0) &&
                             impossible::math::distance_to_boundary(room.floor, p) > tolerance,
                         "a light is strictly inside its prism");

@@ -1,5 +1,6 @@
 // The lit example layouts (issue 27: the lamp hall, the mirror lamp, the
-// tinted window and the spot corridor) against the tracer: 0 id mismatches
+// tinted window and the spot corridor; issue 23: the lit L-shaped flat,
+// whose walls cast shadows) against the tracer: 0 id mismatches
 // and at least 40 dB of colour PSNR over interior pixels, the goal for lit
 // layouts whose props cast shadows (shadow maps approximate them). Prints the
 // figures.
@@ -30,6 +31,9 @@ const LitLayoutCase kLitLayoutCases[] = {
     {"tinted_window.json", "workshop", {-1.5, 1.6, 1.5}, -60, -10, "the lamp and the pane's reflection"},
     {"spot_corridor.json", "corridor", {0.0, 1.6, 1.5}, 0, -12, "start: spots and pillars"},
     {"spot_corridor.json", "gallery", {2.7, 1.6, -4.3}, 37, -20, "the gallery lit through the door"},
+    {"lit_flat.json", "hall", {1.5, 1.6, -1.6}, 138, -20, "the corner's shadow across the north arm"},
+    {"lit_flat.json", "hall", {-1.8, 1.7, 2.2}, -39, -20, "the north arm: shadow and two doors"},
+    {"lit_flat.json", "bedroom", {1.5, 1.6, 2.0}, 150, -20, "the hall's lamp through the bedroom door"},
 };
 
 TEST(LitLayouts, AgreeWithTheTracer) {

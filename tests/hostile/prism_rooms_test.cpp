@@ -139,10 +139,13 @@ TEST_F(HostilePrism, AMirrorBesideAWallOfAPrismIsRefused) {
                       "face's plane, inside the face), but this one stands free: it lies in the plane of wall2");
 }
 
-TEST_F(HostilePrism, ANonConvexRoomUnderLightsIsRefusedForNow) {
-    const std::string text =
-        prism_file("{ \"id\": \"r\", \"floor\": " + kL + ", \"y\": [0, 3] }", "", "", "  \"lighting\": \"lights\",");
-    expect_refused_at(text, kL, "rooms[0].floor: lights in a room whose floor is not convex are not supported yet");
+TEST_F(HostilePrism, ALightOnTheReflexCornerOfALitLIsRefused) {
+    // The corner (2, 2) is on the floor's boundary: not strictly inside.
+    const std::string text = prism_file(
+        "{ \"id\": \"r\", \"floor\": " + kL + ", \"y\": [0, 3], \"lights\": [ { \"position\": [2, 1, 2] } ] }", "", "",
+        "  \"lighting\": \"lights\",");
+    expect_refused_at(text, "[2, 1, 2]",
+                      "rooms[0].lights[0].position: the light at [2, 1, 2] is not strictly inside its room \"r\"");
 }
 
 }  // namespace

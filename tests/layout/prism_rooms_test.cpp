@@ -395,11 +395,16 @@ TEST(LayoutPrismRooms, AGltfPropsLightMustBeInsideThePrism) {
                      "\"r\"");
 }
 
-TEST(LayoutPrismRooms, ANonConvexRoomUnderLightsIsAnErrorForNow) {
+TEST(LayoutPrismRooms, ANonConvexRoomTakesLightsInsideItsFloor) {
     const std::string lit = "  \"lighting\": \"lights\",\n";
-    expect_one_error(prism_layout({l_room()}, {}, "[1, 1.6, 1]", lit), kLFloor,
-                     "rooms[0].floor: lights in a room whose floor is not convex are not supported yet");
-    expect_valid(prism_layout({l_room()}));  // fixed lighting: fine
+    const Layout l = expect_valid(prism_layout(
+        {l_room("\"lights\": [ { \"position\": [3, 2, 1] }, { \"position\": [1, 2, 3] } ]")}, {}, "[1, 1.6, 1]", lit));
+    ASSERT_EQ(l.rooms[0].lights.size(), 2u);
+    EXPECT_EQ(l.rooms[0].lights[1].position, glm::dvec3(1, 2, 3));
+    // In the notch: inside the bounding box, outside the L.
+    const std::string notch = "\"lights\": [ { \"position\": [3, 2, 3] } ]";
+    expect_one_error(prism_layout({l_room(notch)}, {}, "[1, 1.6, 1]", lit), "[3, 2, 3]",
+                     "rooms[0].lights[0].position: the light at [3, 2, 3] is not strictly inside its room \"r\"");
 }
 
 TEST(LayoutPrismRooms, AVolumeInTheNotchIsWhollyOutsideTheRoom) {

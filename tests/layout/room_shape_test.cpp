@@ -1,4 +1,6 @@
 // layout/room_shape.hpp: rooms as lists of faces (box and prism).
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
@@ -31,6 +33,26 @@ TEST(RoomShape, ABoxRoomHasSixFacesWithInwardFramesMatchingItsBox) {
     }
     EXPECT_NEAR(math::area(face_frame(box, static_cast<int>(Face::NegX)).outline), 6.0 * 2.5, 1e-12);
     EXPECT_NEAR(math::area(face_frame(box, static_cast<int>(Face::Floor)).outline), 4.0 * 6.0, 1e-12);
+}
+
+// The walls a segment between two points of the room can cross (what a
+// light's shadow ray meets): an L's two reflex walls, in either winding;
+// none in a box, a convex polygon or a square with a collinear corner; the
+// inner arc of a curved corridor, not its outer arc or its ends.
+TEST(RoomShape, OnlyWallsWithCornersBehindThemCanBeCrossed) {
+    EXPECT_EQ(crossable_walls(l_room()), (std::vector<int>{2, 3}));
+    EXPECT_EQ(crossable_walls(test::prism_room("l", {{4, 0}, {4, -2}, {2, -2}, {2, -4}, {0, -4}, {0, 0}}, 0.0, 3.0)),
+              (std::vector<int>{1, 2}));
+    EXPECT_TRUE(crossable_walls(test::make_room("b", {-1, 0, -2}, {3, 2.5, 4})).empty());
+    EXPECT_TRUE(crossable_walls(test::prism_room("sq", {{0, 0}, {2, 0}, {4, 0}, {4, 4}, {0, 4}}, 0.0, 3.0)).empty());
+    std::vector<glm::dvec2> arc;
+    const double quarter = 2.0 * std::atan(1.0);
+    for (int k = 0; k <= 8; ++k) arc.push_back(3.0 * glm::dvec2(std::cos(quarter * k / 8), std::sin(quarter * k / 8)));
+    for (int k = 8; k >= 0; --k) arc.push_back(2.0 * glm::dvec2(std::cos(quarter * k / 8), std::sin(quarter * k / 8)));
+    EXPECT_TRUE(
+        crossable_walls(test::prism_room("hex", {{2, 0}, {1, 1.7}, {-1, 1.7}, {-2, 0}, {-1, -1.7}}, 0, 3)).empty());
+    EXPECT_EQ(crossable_walls(test::prism_room("arc", arc, 0.0, 3.0)),
+              (std::vector<int>{9, 10, 11, 12, 13, 14, 15, 16}));
 }
 
 TEST(RoomShape, APrismRoomHasAWallPerEdgeFacingInwards) {

@@ -206,5 +206,59 @@ TEST(LightImages, DepthLimitsThePathLength) {
     expect_near(rooms[0].images[2].position, dvec3(8, 2, 0));
 }
 
+// A non-convex prism's walls that a shadow ray can cross (the two walls of
+// an L's reflex corner) block it on the legs in that room, but for the
+// wall the leg enters or leaves the room by (it only ends there).
+TEST(LightImages, AnLsReflexWallsBlockItsLegsButTheDoorsOwnWall) {
+    const layout::Layout l = l_flat();
+    const auto rooms = light_images(l, links::link_portals(l), 1);
+    const auto walls_of = [](const LightImage& image, int leg) {
+        std::vector<int> walls;
+        for (const Blocker& b : image.blockers)
+            if (b.leg == leg && b.portal == -1) walls.push_back(b.wall);
+        return walls;
+    };
+    int through_a = 0, through_b = 0;
+    for (const LightImage& image : rooms[0].images) {
+        if (image.apertures.empty()) {
+            EXPECT_EQ(walls_of(image, 0), (std::vector<int>{2, 3}));  // the L's own lamps
+            continue;
+        }
+        ASSERT_EQ(image.apertures.size(), 1u);
+        const int door = image.apertures[0].portal;
+        if (door == 0) ++through_a;
+        if (door == 2) ++through_b;
+        // Leg 0 runs in the L to the door: the other reflex wall blocks it.
+        // Leg 1 runs in a box room: no walls; both legs of the mirror's
+        // paths run in the L.
+        const std::vector<int> leg0 = door == 0   ? std::vector<int>{3}
+                                      : door == 2 ? std::vector<int>{2}
+                                                  : std::vector<int>{2, 3};
+        const std::vector<int> leg1 = door == 4 ? std::vector<int>{2, 3} : std::vector<int>{};
+        EXPECT_EQ(walls_of(image, 0), leg0) << "door " << door;
+        EXPECT_EQ(walls_of(image, 1), leg1) << "door " << door;
+    }
+    EXPECT_EQ(through_a, 1);
+    EXPECT_EQ(through_b, 1);
+    // A wall blocker is the wall's rectangle, facing into the room.
+    const Blocker& w2 = rooms[0].images[0].blockers[0];
+    expect_near(w2.rect.center, dvec3(4.5, 1.5, 3));
+    expect_near(w2.rect.normal, dvec3(0, 0, -1));
+    EXPECT_DOUBLE_EQ(w2.rect.width, 3.0);
+    EXPECT_DOUBLE_EQ(w2.rect.height, 3.0);
+    // The boxes see the L's lamps through their doors: on leg 1, in the L,
+    // the reflex wall that does not hold that door.
+    int l_walls_seen = 0;
+    for (std::size_t r = 1; r < rooms.size(); ++r)
+        for (const LightImage& image : rooms[r].images)
+            for (const Blocker& b : image.blockers) {
+                if (b.portal != -1) continue;
+                ++l_walls_seen;
+                EXPECT_EQ(b.leg, 1);
+                EXPECT_EQ(b.wall, r == 1 ? 3 : 2);
+            }
+    EXPECT_EQ(l_walls_seen, 2);  // one lamp each: the other stands in front of the door
+}
+
 }  // namespace
 }  // namespace impossible::lights

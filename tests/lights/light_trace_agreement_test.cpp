@@ -9,6 +9,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "layout/room_shape.hpp"
 #include "lights/light_images.hpp"
 #include "lights/lights_test_layouts.hpp"
 #include "shading/lighting.hpp"
@@ -51,6 +52,7 @@ int expect_agreement(const layout::Layout& l, int depth, std::mt19937_64& rng, i
             const dvec3 p = room.min + (room.max - room.min) * dvec3(0.005 + 0.99 * unit(rng), 0.005 + 0.99 * unit(rng),
                                                                      0.005 + 0.99 * unit(rng));
             const dvec3 n = glm::normalize(dvec3(sym(rng), sym(rng), sym(rng)));
+            if (!layout::room_contains(room, p)) continue;  // in a prism's bounding box, outside its floor
             const dvec3 mine = image_sum(l, rooms[c], p, n);
             const dvec3 oracle = trace::light_sum(*scene, nullptr, trace::LitPoint{static_cast<int>(c), p, n}, depth);
             const double scale = 1e-12 + glm::length(mine) + glm::length(oracle);
@@ -84,6 +86,24 @@ TEST(LightTraceAgreement, ATurnedDoorAndAMirror) {
     l.rooms[1].lights[0].spot = layout::Spot{glm::normalize(dvec3(0, -0.3, 1)), 5.0, 40.0};
     std::mt19937_64 rng(7);
     EXPECT_GT(expect_agreement(l, 4, rng, 1500), 300);
+}
+
+// A non-convex room's own walls cast shadows: lamps in both arms of an L,
+// light from the rooms beyond the doors in the reflex corner's walls, and
+// its reflection in a mirror, at random points of the L (and of the rooms).
+TEST(LightTraceAgreement, AnLShapedRoomsWallsCastShadows) {
+    const layout::Layout l = l_flat();
+    std::mt19937_64 rng(23);
+    EXPECT_GT(expect_agreement(l, 3, rng, 1500), 300);
+    // Without its wall blockers the L would be lit round its corner: the
+    // north arm's far end from the east arm's lamp, here.
+    const auto rooms = light_images(l, links::link_portals(l), 0);
+    ASSERT_EQ(rooms[0].images.size(), 2u);
+    const LightImage& east_lamp = rooms[0].images[0];
+    EXPECT_FALSE(segment_passes(east_lamp, {1.5, 0, 5.5}));
+    LightImage no_walls = east_lamp;
+    no_walls.blockers.clear();
+    EXPECT_TRUE(segment_passes(no_walls, {1.5, 0, 5.5}));
 }
 
 }  // namespace

@@ -61,6 +61,30 @@ constexpr int kNegX = static_cast<int>(layout::Face::NegX);
 constexpr int kPosZ = static_cast<int>(layout::Face::PosZ);
 constexpr int kNegZ = static_cast<int>(layout::Face::NegZ);
 
+// "l": an L (6 × 6 less its 3 × 3 corner at +x +z; walls 2 (z = 3) and 3
+// (x = 3) meet at the reflex corner (3, 3)), lit by a lamp in each arm; a
+// door in wall 2 into box "a" (x 1.5..6, z 3..6, reaching back over the
+// L's north arm) and one in wall 3 into box "b" (x 3..6, z 1.5..6, over
+// the east arm), each with a lamp; a mirror in wall 5 (x = 0). Portals:
+// 0 l→a, 1 a→l, 2 l→b, 3 b→l, 4 the mirror.
+inline layout::Layout l_flat() {
+    layout::Layout l = lit_layout("l_flat");
+    l.rooms.push_back(test::prism_room("l", {{0, 0}, {6, 0}, {6, 3}, {3, 3}, {3, 6}, {0, 6}}, 0.0, 3.0));
+    const int a = add_room(l, "a", {1.5, 0, 3}, {6, 2.8, 6});
+    const int b = add_room(l, "b", {3, 0, 1.5}, {6, 2.8, 6});
+    add_pair(l, "l_a", 0, make_rect({4.5, 1.1, 3}, {0, 0, -1}, 1.0, 2.2), 2 + 2, "a_l", a,
+             make_rect({4.5, 1.1, 3}, {0, 0, 1}, 1.0, 2.2), kNegZ);
+    add_pair(l, "l_b", 0, make_rect({3, 1.1, 4.5}, {-1, 0, 0}, 1.0, 2.2), 2 + 3, "b_l", b,
+             make_rect({3, 1.1, 4.5}, {1, 0, 0}, 1.0, 2.2), kNegX);
+    add_portal(l, "mirror", 0, make_rect({0, 1.5, 3}, {1, 0, 0}, 2.0, 2.0), layout::PortalKind::Mirror, 2 + 5);
+    add_light(l, 0, {5, 2.5, 1.5});
+    add_light(l, 0, {1.5, 2.5, 5});
+    add_light(l, a, {2.5, 2.5, 5});
+    add_light(l, b, {5, 2.0, 2.5});
+    l.start = {0, {1, 1.6, 1}, 0.0};
+    return l;
+}
+
 // "hall" (x -2..2) and "annex" (x 2..6) with a coincident door in the
 // wall between them at x = 2 (M = identity); portal 0 is the hall's.
 inline layout::Layout doorway() {
