@@ -54,6 +54,8 @@ render spot_corridor spot_corridor.json --room corridor --pose 0,1.6,1.5,0,-12,0
 # Rooms of any shape (issue 23): an L, a turned room, a curved corridor and a
 # trapdoor seen from above and below.
 render l_flat l_flat.json --room hall --pose=-2.0,1.6,2.2,-55.9,-5,0
+render lit_flat lit_flat.json --room hall --pose=-2.2,2.2,2.3,-40,-30,0
+render lit_flat-across lit_flat.json --room hall --pose 1.5,1.6,-1.6,138,-20,0
 render turned_room turned_room.json
 render curved_corridor curved_corridor.json
 render curved_corridor-inside curved_corridor.json --room corridor --pose 2.0,1.5,0,180,0,0
