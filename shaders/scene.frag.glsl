@@ -25,10 +25,11 @@ layout(location = 1) out uint o_id;
 
 bool checker_dark(vec3 p, vec3 n, float side) {
     if (side <= 0.0) return false;
+    // shading::checker_dark's rule: near-equal components tie, y first, then z.
     vec3 a = abs(n);
     vec2 uv = p.yz;
-    if (a.y >= a.x && a.y >= a.z) uv = p.xz;
-    else if (a.z >= a.x && a.z >= a.y) uv = p.xy;
+    if (a.y >= a.x - CHECKER_TIE && a.y >= a.z - CHECKER_TIE) uv = p.xz;
+    else if (a.z >= a.x - CHECKER_TIE) uv = p.xy;
     ivec2 cell = ivec2(floor(uv / side));
     return ((cell.x + cell.y) & 1) != 0;
 }

@@ -140,27 +140,9 @@ void append_cap(MeshWriter& out, const layout::Room& room, const PrismPlan& plan
                         [&](std::size_t k) { return out.vertex(positions[k], frame.normal, color, room.checker); });
 }
 
-// A wall's normal as its vertices store it (in float): where rounding would
-// make |x| and |z| equal, or nearly, though they differ in double (a wall
-// within about 1e-7 of 45 degrees), the smaller is moved to four float steps
-// below the larger, so that the shader's checker takes the dominant axis
-// the tracer takes from the exact normal (shading::checker_dark). Equal
-// components stay equal.
-glm::dvec3 wall_vertex_normal(const glm::dvec3& n) {
-    const double ax = std::abs(n.x), az = std::abs(n.z);
-    if (ax == az) return n;
-    float limit = static_cast<float>(std::max(ax, az));
-    for (int k = 0; k < 4; ++k) limit = std::nextafter(limit, 0.0f);
-    if (static_cast<float>(std::min(ax, az)) <= limit) return n;
-    glm::dvec3 out = n;
-    double& smaller = ax < az ? out.x : out.z;
-    smaller = std::copysign(static_cast<double>(limit), smaller);
-    return out;
-}
-
 WallStyle wall_style(const MeshWriter& out, const layout::Room& room, const PrismWall& w, std::size_t face) {
     WallStyle style;
-    style.normal = wall_vertex_normal(w.frame.normal);
+    style.normal = w.frame.normal;
     style.color = room.face_color[face];
     style.checker = room.checker;
     style.textured = room.face_texture[face] != nullptr;

@@ -7,7 +7,11 @@
 // The checker pattern uses the two world coordinates that lie in the face's
 // plane (the axes other than the normal's dominant axis), so a face's constant
 // coordinate never flips the parity by rounding: square (a, b) is dark when
-// floor(a / side) + floor(b / side) is odd.
+// floor(a / side) + floor(b / side) is odd. Components within kCheckerAxisTie
+// of each other tie, and a tie goes to y, then z: a prism wall at 45° has
+// |n.x| = |n.z| up to rounding, which the shader's float normal (interpolated
+// per pixel) and the tracer's double one would break differently, pixel by
+// pixel.
 #pragma once
 
 #include <algorithm>
@@ -27,6 +31,7 @@ inline const glm::dvec3 kLightDir = glm::normalize(glm::dvec3(0.3, 0.9, 0.4));
 inline constexpr double kAmbient = 0.45;
 inline constexpr double kDiffuse = 0.55;
 inline constexpr double kCheckerDark = 0.75;
+inline constexpr double kCheckerAxisTie = 1e-4;
 
 // What a pixel shows when the recursion limit is reached, and its id in the
 // id map (rooms have 1 + their index, below it; the rasteriser and the tracer
@@ -51,11 +56,12 @@ inline double max_channel(const glm::dvec3& c) { return std::max(c.x, std::max(c
 inline bool checker_dark(const glm::dvec3& position, const glm::dvec3& normal, double side) {
     if (side <= 0.0) return false;
     const glm::dvec3 a = glm::abs(normal);
+    const double tie = kCheckerAxisTie;
     double u = position.y, v = position.z;  // normal mostly along x
-    if (a.y >= a.x && a.y >= a.z) {
+    if (a.y >= a.x - tie && a.y >= a.z - tie) {
         u = position.x;
         v = position.z;
-    } else if (a.z >= a.x && a.z >= a.y) {
+    } else if (a.z >= a.x - tie) {
         u = position.x;
         v = position.y;
     }
