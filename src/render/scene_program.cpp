@@ -19,8 +19,7 @@ std::string shading_defines() {
     std::snprintf(buf, sizeof buf,
                   "#define LIGHT_DIR vec3(%.9g, %.9g, %.9g)\n#define AMBIENT %.9g\n"
                   "#define DIFFUSE %.9g\n#define CHECKER_DARK %.9g\n#define CHECKER_TIE %.9g\n",
-                  l.x, l.y, l.z, shading::kAmbient, shading::kDiffuse, shading::kCheckerDark,
-                  shading::kCheckerAxisTie);
+                  l.x, l.y, l.z, shading::kAmbient, shading::kDiffuse, shading::kCheckerDark, shading::kCheckerAxisTie);
     return buf;
 }
 

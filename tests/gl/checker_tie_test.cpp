@@ -34,7 +34,8 @@ std::string turned_square(bool lit) {
     std::string room =
         "{\"id\": \"diamond\", \"floor\": [[-6.296812, 27.785056], [-3.779405, 30.302463], [-0.832014, 27.355073], "
         "[-3.349422, 24.837666]], \"y\": [0, 2.7], \"color\": [0.8, 0.7, 0.5], \"checker\": 0.25";
-    if (lit) room += ", \"ambient\": [0.2, 0.2, 0.2], \"lights\": [{\"position\": [-3.3, 2.2, 27.2], \"intensity\": 4}]";
+    if (lit)
+        room += ", \"ambient\": [0.2, 0.2, 0.2], \"lights\": [{\"position\": [-3.3, 2.2, 27.2], \"intensity\": 4}]";
     return std::string("{\"format\": \"impossible-layout\", \"version\": 1, ") +
            (lit ? "\"lighting\": \"lights\", " : "") +
            "\"start\": {\"room\": \"diamond\", \"position\": [-3.5, 1.6, 27.6]}, \"rooms\": [" + room + "}]}";
