@@ -132,6 +132,55 @@ int li_hole_wall(const LiWalk& walk, int portal, int room) {
     return face < 0 ? -1 : layout::wall_of_face(walk.layout.rooms[static_cast<std::size_t>(room)], face);
 }
 
+// Where a door the leg enters or leaves its room by reaches outside that
+// room (a portal's rectangle may, layout-format.md, "The portal box"), the
+// segment to a point of it there leaves the room first, through a face the
+// tracer meets. A face plane that such a corner lies behind (by more than
+// the hole rule's 1e-4 m) blocks the leg: in a convex room, or for a convex
+// hull face of a prism (a floor, a ceiling, a wall that is not crossable),
+// crossing the plane from inside is leaving the room. The face's rectangle
+// is the whole plane for this (1e6 m), centred at the foot of the door's
+// centre. Rooms whose doors stay inside them get none.
+void li_add_face_planes(const LiWalk& walk, LightImage& image, int leg, int entry, int exit) {
+    const int room_index = image.rooms[static_cast<std::size_t>(leg)];
+    const layout::Room& room = walk.layout.rooms[static_cast<std::size_t>(room_index)];
+    constexpr double kOutside = 1e-4;
+    std::vector<dvec3> corners;
+    dvec3 centre(0.0);
+    for (const int p : {entry, exit}) {
+        if (p < 0) continue;
+        const math::PortalRect& rect = walk.layout.portals[static_cast<std::size_t>(p)].rect;
+        const Polygon3 c = rect_polygon(rect, 0.0);
+        corners.insert(corners.end(), c.begin(), c.end());
+        centre = rect.center;
+    }
+    if (std::all_of(corners.begin(), corners.end(),
+                    [&](const dvec3& c) { return layout::room_contains(room, c, kOutside); }))
+        return;
+    const std::vector<int>& crossable = walk.crossable[static_cast<std::size_t>(room_index)];
+    const dmat4 to_c = math::rigid_inverse(image.to_room[static_cast<std::size_t>(leg)]);
+    for (int f = 0; f < layout::face_count(room); ++f) {
+        const int wall = layout::wall_of_face(room, f);
+        if (std::find(crossable.begin(), crossable.end(), wall) != crossable.end() && wall >= 0) continue;
+        const auto holds = [&](int p) {
+            return p >= 0 && walk.layout.portals[static_cast<std::size_t>(p)].hole_face == f;
+        };
+        if (holds(entry) || holds(exit)) continue;
+        const layout::FaceFrame frame = layout::face_frame(room, f);
+        const bool behind = std::any_of(corners.begin(), corners.end(), [&](const dvec3& c) {
+            return glm::dot(c - frame.origin, frame.normal) < -kOutside;
+        });
+        if (!behind) continue;
+        math::PortalRect plane;
+        plane.normal = frame.normal;
+        plane.up = frame.t_axis;
+        plane.center = centre - glm::dot(centre - frame.origin, frame.normal) * frame.normal;
+        plane.width = plane.height = 1e6;
+        plane.depth = 0.0;
+        image.blockers.push_back({transform_rect(to_c, plane), -1, leg, wall, f});
+    }
+}
+
 // The free-standing portals of leg `leg`'s room, but for the portals the
 // shadow ray enters and leaves that room by, and the walls of that room it
 // may cross (a non-convex prism's), but for the walls those two portals are
@@ -156,6 +205,7 @@ void li_add_blockers(const LiWalk& walk, LightImage& image, int leg) {
         if (w == li_hole_wall(walk, entry, room) || w == li_hole_wall(walk, exit, room)) continue;
         image.blockers.push_back({transform_rect(to_c, li_wall_rect(leg_room, w)), -1, leg, w});
     }
+    li_add_face_planes(walk, image, leg, entry, exit);
 }
 
 // Where a depth-first walk from the step's room meets the step: the

@@ -35,12 +35,16 @@ struct Aperture {
 // from the surface to aperture 0, leg i from aperture i-1 to aperture i, the
 // last (leg == apertures.size()) from the last aperture to the light.
 // A wall of a non-convex prism room that the leg may cross
-// (layout::crossable_walls) blocks it too.
+// (layout::crossable_walls) blocks it too, and so does the plane of a face
+// the leg would leave its room by where a door on it reaches outside.
 struct Blocker {
     math::PortalRect rect;  // in the lit room's coordinates, depth 0
     int portal = -1;        // -1 for a wall
     int leg = 0;
     int wall = -1;  // the wall's index in the leg's room, or -1 for a portal
+    // A face whose plane the leg leaves its room by (where a door on the leg
+    // reaches outside the room): its index in the leg's room, or -1.
+    int face = -1;
 };
 
 // One image of a light as the surfaces of a room C see it:

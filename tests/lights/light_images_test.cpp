@@ -206,6 +206,26 @@ TEST(LightImages, DepthLimitsThePathLength) {
     expect_near(rooms[0].images[2].position, dvec3(8, 2, 0));
 }
 
+// A door reaching above its room's ceiling: the ceiling's plane blocks the
+// leg into the low room (leg 0) and nothing else does; near the ceiling a
+// shadow ray towards the door's top leaves the room first.
+TEST(LightImages, ADoorReachingOutsideItsRoomAddsThatFacesPlane) {
+    const layout::Layout l = low_ceiling();
+    const auto rooms = light_images(l, links::link_portals(l), 1);
+    ASSERT_EQ(rooms[1].images.size(), 1u);
+    const LightImage& image = rooms[1].images[0];
+    ASSERT_EQ(image.blockers.size(), 1u);
+    EXPECT_EQ(image.blockers[0].leg, 0);
+    EXPECT_EQ(image.blockers[0].face, static_cast<int>(layout::Face::Ceiling));
+    expect_near(image.blockers[0].rect.normal, dvec3(0, -1, 0));
+    EXPECT_FALSE(segment_passes(image, {0.2, 1.95, -1.5}));  // crosses y = 2 at z = -1.38
+    EXPECT_TRUE(segment_passes(image, {0.2, 0.5, -1.5}));    // under the ceiling all the way
+    // The high room's door stays inside it: its own lamp's leg meets the
+    // door standing free there, and no face's plane.
+    for (const LightImage& own : rooms[0].images)
+        for (const Blocker& b : own.blockers) EXPECT_EQ(b.face, -1);
+}
+
 // A non-convex prism's walls that a shadow ray can cross (the two walls of
 // an L's reflex corner) block it on the legs in that room, but for the
 // wall the leg enters or leaves the room by (it only ends there).

@@ -88,6 +88,13 @@ TEST(LightTraceAgreement, ATurnedDoorAndAMirror) {
     EXPECT_GT(expect_agreement(l, 4, rng, 1500), 300);
 }
 
+// A door reaching above its room's ceiling: light through its top part
+// reaches the room only where the shadow ray stays under the ceiling.
+TEST(LightTraceAgreement, ADoorReachingAboveTheCeiling) {
+    std::mt19937_64 rng(912);
+    EXPECT_GT(expect_agreement(low_ceiling(), 2, rng, 2000), 150);
+}
+
 // A non-convex room's own walls cast shadows: lamps in both arms of an L,
 // light from the rooms beyond the doors in the reflex corner's walls, and
 // its reflection in a mirror, at random points of the L (and of the rooms).

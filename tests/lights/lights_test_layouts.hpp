@@ -85,6 +85,23 @@ inline layout::Layout l_flat() {
     return l;
 }
 
+// "high" (y 0..3) and "low" (y 0..2) on the same 4 × 4 m floor, joined by
+// coincident doors standing free at z = 0 that reach to y = 2.5, above the
+// low room's ceiling (the fuzzer's layouts do that; seed 44 case 912): a
+// lamp of the high room at y = 2.6 shines through the door's top into the
+// low room only where the shadow ray does not leave the low room through
+// its ceiling first. Portals: 0 high→low (front +z), 1 low→high.
+inline layout::Layout low_ceiling() {
+    layout::Layout l = lit_layout("low_ceiling");
+    const int high = add_room(l, "high", {-2, 0, -2}, {2, 3, 2});
+    const int low = add_room(l, "low", {-2, 0, -2}, {2, 2, 2});
+    add_pair(l, "high_low", high, make_rect({0, 1.25, 0}, {0, 0, 1}, 1.5, 2.5), -1, "low_high", low,
+             make_rect({0, 1.25, 0}, {0, 0, -1}, 1.5, 2.5), -1);
+    add_light(l, high, {0.3, 2.6, 1.2});
+    l.start = {high, {0, 1.6, 1}, 0.0};
+    return l;
+}
+
 // "hall" (x -2..2) and "annex" (x 2..6) with a coincident door in the
 // wall between them at x = 2 (M = identity); portal 0 is the hall's.
 inline layout::Layout doorway() {
