@@ -54,7 +54,9 @@ from id edges) must reach 50 dB where no room has a prop and 40 dB where
 props cast shadows (which the rasteriser takes from shadow maps). A lit case
 below its bar whose differences are all explained is listed, not failed
 (lit_explained; docs/accuracy.md, "Lights"): isolated pixels on a light's
-edge are a "colour sliver"; a case where every pixel off by more than 8
+edge are a "colour sliver", and so are differences along one pixel column or
+row that go away one pixel wider and narrower (aligned_edge: a light's edge
+through a line of pixel centres); a case where every pixel off by more than 8
 levels is one the shadow maps change (the render with --no-shadows differs
 there or beside it, and the tracer is no brighter there than that render),
 a face one pixel thin that differs unlit too, or an isolated pixel, and
@@ -809,6 +811,52 @@ def colour_sliver(base):
     return not any((x + dx, y + dy) in bad for x, y in bad for dx, dy in ((1, 0), (-1, 0), (0, 1), (0, -1)))
 
 
+def aligned_edge(binary, layout_path, base, view, need):
+    """A colour difference along one pixel column or row: ("colour-sliver",
+    why) when the interior pixels that differ by more than 8 levels lie in
+    at most two columns or two rows and the same view one pixel wider and
+    taller, and one pixel narrower and lower, reaches the PSNR bar; else
+    None. A light's edge (the border of a pool of light through a door) that
+    runs exactly through a line of pixel centres puts every pixel of that
+    line on the float side in one renderer and on the double side in the
+    other, together: a colour sliver the isolated-pixel test misses. At
+    another size the edge falls between centres and the renderers agree (a
+    real offset of the edge would not go away)."""
+    r, t = read_png(base + "-r.png", 3), read_png(base + "-t.png", 3)
+    h, w = len(r), len(r[0]) // 3
+    bad = [(x, y) for y in range(h) for x in range(w)
+           if max(abs(r[y][3 * x + c] - t[y][3 * x + c]) for c in range(3)) > 8]
+    if not bad or (len({x for x, _ in bad}) > 2 and len({y for _, y in bad}) > 2):
+        return None
+    at = view.index("--size")
+    ew, eh = (int(v) for v in view[at + 1].split("x"))
+    figures = []
+    for dw in (1, -1):
+        size = "%dx%d" % (ew + dw, eh + dw)
+        v = view[:at + 1] + [size] + view[at + 2:]
+        out = base + "-aligned"
+        for cmd in ([binary, "render", layout_path] + v + ["--out", out + "-r.png", "--ids", out + "-ri.png"],
+                    [binary, "trace", layout_path] + v + ["--threads", "1", "--out", out + "-t.png", "--ids",
+                                                          out + "-ti.png"]):
+            if subprocess.run(cmd, capture_output=True, text=True, timeout=600).returncode != 0:
+                return None
+        p = subprocess.run([binary, "compare", out + "-r.png", out + "-t.png", "--ids-a", out + "-ri.png",
+                            "--ids-b", out + "-ti.png"], capture_output=True, text=True, timeout=600)
+        for suffix in ("-r.png", "-ri.png", "-t.png", "-ti.png"):
+            try:
+                os.remove(out + suffix)
+            except OSError:
+                pass
+        fields = dict(kv.split("=", 1) for kv in p.stdout.split() if "=" in kv)
+        psnr = fields.get("interior_psnr_db", "nan")
+        psnr = float("inf") if psnr == "inf" else float(psnr)
+        if fields.get("id_mismatches") != "0" or not psnr >= need:
+            return None
+        figures.append("%s %.2f dB" % (size, psnr))
+    return ("colour-sliver", "%d pixels on one pixel %s, a light's edge through their centres; at %s"
+            % (len(bad), "column" if len({x for x, _ in bad}) <= 2 else "row", ", ".join(figures)))
+
+
 def lit_explained(case, binary, base, view, bar=50.0):
     """Why a lit case's colours miss their PSNR bar, if the differences are
     ones the comparison licenses; None where they are not (a real failure).
@@ -1022,6 +1070,8 @@ def run_case(binary, seed, number, size, keep, extra, kinds=DEFAULT_KINDS, lit=F
                 status = "colour-sliver"
             else:
                 explained = lit_explained(case, binary, base, view, LIT_MIN_PSNR_NO_PROPS)
+                if not explained:
+                    explained = aligned_edge(binary, layout_path, base, view, need)
                 status = explained[0] if explained else "colour"
                 if explained:
                     result["explained"] = explained[1]
