@@ -125,11 +125,9 @@ math::PortalRect li_wall_rect(const layout::Room& room, int i) {
     return rect;
 }
 
-// The wall a portal is a hole in, or -1.
-int li_hole_wall(const LiWalk& walk, int portal, int room) {
-    if (portal < 0) return -1;
-    const int face = walk.layout.portals[static_cast<std::size_t>(portal)].hole_face;
-    return face < 0 ? -1 : layout::wall_of_face(walk.layout.rooms[static_cast<std::size_t>(room)], face);
+// The face of its room a portal is a hole in, or -1 (also for no portal).
+int li_hole_face(const LiWalk& walk, int portal) {
+    return portal < 0 ? -1 : walk.layout.portals[static_cast<std::size_t>(portal)].hole_face;
 }
 
 // Where a door the leg enters or leaves its room by reaches outside that
@@ -142,6 +140,7 @@ int li_hole_wall(const LiWalk& walk, int portal, int room) {
 // is the whole plane for this (1e6 m), centred at the foot of the door's
 // centre. Rooms whose doors stay inside them get none.
 void li_add_face_planes(const LiWalk& walk, LightImage& image, int leg, int entry, int exit) {
+    const int entry_face = li_hole_face(walk, entry), exit_face = li_hole_face(walk, exit);
     const int room_index = image.rooms[static_cast<std::size_t>(leg)];
     const layout::Room& room = walk.layout.rooms[static_cast<std::size_t>(room_index)];
     constexpr double kOutside = 1e-4;
@@ -161,11 +160,8 @@ void li_add_face_planes(const LiWalk& walk, LightImage& image, int leg, int entr
     const dmat4 to_c = math::rigid_inverse(image.to_room[static_cast<std::size_t>(leg)]);
     for (int f = 0; f < layout::face_count(room); ++f) {
         const int wall = layout::wall_of_face(room, f);
-        if (std::find(crossable.begin(), crossable.end(), wall) != crossable.end() && wall >= 0) continue;
-        const auto holds = [&](int p) {
-            return p >= 0 && walk.layout.portals[static_cast<std::size_t>(p)].hole_face == f;
-        };
-        if (holds(entry) || holds(exit)) continue;
+        if (wall >= 0 && std::find(crossable.begin(), crossable.end(), wall) != crossable.end()) continue;
+        if (f == entry_face || f == exit_face) continue;
         const layout::FaceFrame frame = layout::face_frame(room, f);
         const bool behind = std::any_of(corners.begin(), corners.end(), [&](const dvec3& c) {
             return glm::dot(c - frame.origin, frame.normal) < -kOutside;
@@ -201,8 +197,10 @@ void li_add_blockers(const LiWalk& walk, LightImage& image, int leg) {
         image.blockers.push_back({transform_rect(to_c, portal.rect), p, leg});
     }
     const layout::Room& leg_room = walk.layout.rooms[static_cast<std::size_t>(room)];
+    const int entry_wall = layout::wall_of_face(leg_room, li_hole_face(walk, entry));
+    const int exit_wall = layout::wall_of_face(leg_room, li_hole_face(walk, exit));
     for (const int w : walk.crossable[static_cast<std::size_t>(room)]) {
-        if (w == li_hole_wall(walk, entry, room) || w == li_hole_wall(walk, exit, room)) continue;
+        if (w == entry_wall || w == exit_wall) continue;
         image.blockers.push_back({transform_rect(to_c, li_wall_rect(leg_room, w)), -1, leg, w});
     }
     li_add_face_planes(walk, image, leg, entry, exit);

@@ -39,7 +39,7 @@ struct Aperture {
 // the leg would leave its room by where a door on it reaches outside.
 struct Blocker {
     math::PortalRect rect;  // in the lit room's coordinates, depth 0
-    int portal = -1;        // -1 for a wall
+    int portal = -1;        // -1 for a wall or a face's plane
     int leg = 0;
     int wall = -1;  // the wall's index in the leg's room, or -1 for a portal
     // A face whose plane the leg leaves its room by (where a door on the leg
