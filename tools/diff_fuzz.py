@@ -811,6 +811,15 @@ def colour_sliver(base):
     return not any((x + dx, y + dy) in bad for x, y in bad for dx, dy in ((1, 0), (-1, 0), (0, 1), (0, -1)))
 
 
+def compare_figures(stdout):
+    """`impossible compare`'s key=value fields, its id mismatches (-1 where
+    missing) and its interior PSNR in dB (inf for equal pictures, nan where
+    missing)."""
+    fields = dict(kv.split("=", 1) for kv in stdout.split() if "=" in kv)
+    interior = fields.get("interior_psnr_db", "nan")
+    return fields, int(fields.get("id_mismatches", "-1")), float("inf") if interior == "inf" else float(interior)
+
+
 def aligned_edge(binary, layout_path, base, view, need):
     """A colour difference along one pixel column or row: ("colour-sliver",
     why) when the interior pixels that differ by more than 8 levels lie in
@@ -847,10 +856,8 @@ def aligned_edge(binary, layout_path, base, view, need):
                 os.remove(out + suffix)
             except OSError:
                 pass
-        fields = dict(kv.split("=", 1) for kv in p.stdout.split() if "=" in kv)
-        psnr = fields.get("interior_psnr_db", "nan")
-        psnr = float("inf") if psnr == "inf" else float(psnr)
-        if fields.get("id_mismatches") != "0" or not psnr >= need:
+        _, mismatches, psnr = compare_figures(p.stdout)
+        if mismatches != 0 or not psnr >= need:
             return None
         figures.append("%s %.2f dB" % (size, psnr))
     return ("colour-sliver", "%d pixels on one pixel %s, a light's edge through their centres; at %s"
@@ -1055,13 +1062,10 @@ def run_case(binary, seed, number, size, keep, extra, kinds=DEFAULT_KINDS, lit=F
             # the rest shows the fill colour, which the tracer does not have.
             result["budget"] = p.stderr.strip()
     p = subprocess.run(compare, capture_output=True, text=True, timeout=600)
-    fields = dict(kv.split("=", 1) for kv in p.stdout.split() if "=" in kv)
-    mismatches = int(fields.get("id_mismatches", "-1"))
+    fields, mismatches, psnr = compare_figures(p.stdout)
     status = "pass" if mismatches == 0 else "fail"
     if lit and status == "pass":
         # Lit cases compare colours too (ids do not depend on lighting).
-        interior = fields.get("interior_psnr_db", "nan")
-        psnr = float("inf") if interior == "inf" else float(interior)
         need = LIT_MIN_PSNR_PROPS if case.casts_shadows() else LIT_MIN_PSNR_NO_PROPS
         result["interior_psnr"] = psnr
         if not psnr >= need:
