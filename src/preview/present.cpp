@@ -54,6 +54,9 @@ void present(Presenter& p, gl::StateCache& state, const render::Target& target, 
         p.width = target.width;
         p.height = target.height;
     }
+    // The blit obeys the scissor too, which the renderer's last pass may
+    // have left on a door's rectangle (the window was then mostly black).
+    state.no_scissor();
     glNamedFramebufferReadBuffer(target.framebuffer.get(), GL_COLOR_ATTACHMENT0);
     glBlitNamedFramebuffer(target.framebuffer.get(), p.framebuffer.get(), 0, 0, target.width, target.height, 0, 0,
                            target.width, target.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
