@@ -17,7 +17,7 @@
 #include "gl/context.hpp"
 #include "gl/gl.hpp"
 #include "render/renderer.hpp"
-#include "scene/scene.hpp"
+#include "session/session.hpp"
 
 using namespace impossible;
 
@@ -36,10 +36,11 @@ int main(int argc, char** argv) {
             path = a;
     }
     try {
-        const layout::Layout l = cli::load_layout_or_default(path);
+        const session::Session session(cli::load_layout_or_default(path));
+        const layout::Layout& l = session.layout();
         Result<gl::Context> context = gl::create_context(gl::Backend::Egl);
         if (!context) throw std::runtime_error(context.error());
-        Result<render::Renderer> r = render::Renderer::create(context->state(), scene::build_scene(l));
+        Result<render::Renderer> r = session.make_renderer(context->state());
         if (!r) throw std::runtime_error(r.error());
 
         const render::StereoMode modes[] = {render::StereoMode::ClipShift, render::StereoMode::ViewportIndex,

@@ -12,7 +12,7 @@ include(CMakePackageConfigHelpers)
 # 0.x releases break the ABI at each minor version: SONAME libimpossible.so.0.3.
 add_library(impossible_shared SHARED $<TARGET_OBJECTS:impossible_api>)
 add_library(impossible::impossible ALIAS impossible_shared)
-target_link_libraries(impossible_shared PRIVATE impossible_render impossible_trace impossible_design embedded_assets)
+target_link_libraries(impossible_shared PRIVATE impossible_session impossible_design embedded_assets)
 target_include_directories(
   impossible_shared PUBLIC $<BUILD_INTERFACE:${CMAKE_SOURCE_DIR}/include> $<BUILD_INTERFACE:${CMAKE_BINARY_DIR}/include>
                            $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)

@@ -117,12 +117,51 @@ api::Backend backend_of(const std::string& name) {
     raise(PyExc_ValueError, "backend must be 'egl', 'osmesa' or 'any', not '" + name + "'");
 }
 
+// The rasteriser's options (api::RenderOptions) from the keyword
+// arguments, named and spelled as `render`'s flags' values.
+template <class E, std::size_t N>
+E choice_of(const std::string& name, const std::string& value,
+            const std::array<std::pair<const char*, E>, N>& choices) {
+    std::string names;
+    for (const auto& [text, e] : choices) {
+        if (value == text) return e;
+        names += (names.empty() ? "'" : ", '") + std::string(text) + "'";
+    }
+    raise(PyExc_ValueError, name + " must be one of " + names + ", not '" + value + "'");
+}
+
+api::RenderOptions render_options_of(const std::string& stereo, const std::string& clip, const std::string& depth,
+                                     const std::string& technique, int texture_from_level, double texture_scale,
+                                     bool shadows, int shadow_size, bool occlusion_test, bool cull) {
+    api::RenderOptions o;
+    o.stereo = choice_of<api::Stereo, 3>("stereo", stereo,
+                                         {{{"clip-shift", api::Stereo::ClipShift},
+                                           {"viewport-index", api::Stereo::ViewportIndex},
+                                           {"two-pass", api::Stereo::TwoPass}}});
+    o.clip = choice_of<api::Clip, 2>("clip", clip,
+                                     {{{"clip-distance", api::Clip::ClipDistance}, {"oblique", api::Clip::Oblique}}});
+    o.depth = choice_of<api::Depth, 2>("depth", depth,
+                                       {{{"reversed-z", api::Depth::ReversedZ}, {"standard", api::Depth::Standard}}});
+    o.technique = choice_of<api::Technique, 3>("technique", technique,
+                                               {{{"stencil", api::Technique::Stencil},
+                                                 {"hybrid", api::Technique::Hybrid},
+                                                 {"z-clear", api::Technique::ZClear}}});
+    o.texture_from_level = texture_from_level;
+    o.texture_scale = texture_scale;
+    o.shadows = shadows;
+    o.shadow_size = shadow_size;
+    o.occlusion_test = occlusion_test;
+    o.cull = cull;
+    return o;
+}
+
 std::string path_string(py::handle path) { return py::module_::import("os").attr("fspath")(path).cast<std::string>(); }
 
 // What every frame of a renderer shares: size, samples, eyes.
 struct ViewBase {
     std::pair<int, int> size{1280, 720};
     int samples = 1;
+    int max_portal_passes = 10'000;
     double ipd = 0.064, fov = 90;
     std::optional<std::array<api::EyeOptics, 2>> eye_optics;  // fov_angles=, hmd=
 };
@@ -131,7 +170,9 @@ std::vector<double> numbers_of(py::handle value, const char* what, const std::st
     if (py::isinstance<py::str>(value) || !py::isinstance<py::sequence>(value))
         raise(PyExc_TypeError, std::string(what) + ": expected " + expected);
     std::vector<double> out;
-    for (py::handle n : py::reinterpret_borrow<py::sequence>(value)) {
+    // Each item held as an object: a handle to the accessor's temporary would
+    // dangle once the item is a new object (numpy's and array's numbers are).
+    for (const py::object n : py::reinterpret_borrow<py::sequence>(value)) {
         try {
             out.push_back(n.cast<double>());
         } catch (const py::cast_error&) {
@@ -163,7 +204,8 @@ void visible_areas_of(py::handle areas, std::array<api::EyeOptics, 2>& eyes) {
     for (std::size_t e = 0; e < 2; ++e) {
         if (seq[e].is_none()) continue;
         if (py::isinstance<py::str>(seq[e]) || !py::isinstance<py::sequence>(seq[e])) raise(PyExc_TypeError, expected);
-        for (py::handle corner : py::reinterpret_borrow<py::sequence>(seq[e])) {
+        const py::object area = seq[e];
+        for (const py::object corner : py::reinterpret_borrow<py::sequence>(area)) {
             const std::vector<double> c = numbers_of(corner, "visible_area", "corners of 2 numbers (u, v)");
             if (c.size() != 2) raise(PyExc_ValueError, "visible_area: expected corners of 2 numbers (u, v)");
             eyes[e].visible_area.push_back({c[0], c[1]});
@@ -234,6 +276,7 @@ api::View view_of(const ViewBase& base, py::handle pose, py::handle room, py::ha
     if (!room.is_none()) v.room = room.cast<std::string>();
     std::tie(v.width, v.height) = base.size;
     v.samples = base.samples;
+    v.max_portal_passes = base.max_portal_passes;
     v.ipd = base.ipd;
     v.fov_deg = base.fov;
     v.eye_optics = base.eye_optics;
@@ -254,10 +297,11 @@ py::dict trace_frame(const api::Layout& layout, const api::View& view, int threa
 // made it (the context is current there).
 class PyRenderer {
 public:
-    PyRenderer(const api::Layout& layout, ViewBase base, const std::string& backend)
+    PyRenderer(const api::Layout& layout, ViewBase base, const std::string& backend, const api::RenderOptions& options)
         : layout_(layout),
           renderer_(value_or_raise(api::Renderer::headless(layout, backend_of(backend)))),
           base_(base),
+          options_(options),
           thread_(std::this_thread::get_id()) {}
 
     py::dict render(py::handle pose, py::handle room, py::handle hands, double time, int max_depth,
@@ -267,7 +311,7 @@ public:
             raise(PyExc_RuntimeError, "a Renderer draws only on the thread that made it");
         api::Expected<api::Frame> frame = [&] {
             py::gil_scoped_release unlocked;
-            return renderer_.render(view);
+            return renderer_.render(view, options_);
         }();
         return frame_dict(value_or_raise(std::move(frame)), true);
     }
@@ -285,6 +329,7 @@ private:
     api::Layout layout_;
     api::Renderer renderer_;
     ViewBase base_;
+    api::RenderOptions options_;
     std::thread::id thread_;
 };
 
@@ -434,14 +479,23 @@ void bind_layout(py::module_& m) {
 void bind_renderer(py::module_& m) {
     py::class_<PyRenderer>(m, "Renderer", "The OpenGL rasteriser for one layout, in a headless context of its own")
         .def(py::init([](const api::Layout& layout, py::handle size, int samples, const std::string& backend,
-                         py::handle ipd, py::handle fov, py::handle fov_angles, py::handle visible_area,
-                         py::handle hmd) {
-                 return new PyRenderer(layout, base_of(size, samples, ipd, fov, fov_angles, visible_area, hmd),
-                                       backend);
+                         py::handle ipd, py::handle fov, py::handle fov_angles, py::handle visible_area, py::handle hmd,
+                         int max_portal_passes, const std::string& stereo, const std::string& clip,
+                         const std::string& depth, const std::string& technique, int texture_from_level,
+                         double texture_scale, bool shadows, int shadow_size, bool occlusion_test, bool cull) {
+                 ViewBase base = base_of(size, samples, ipd, fov, fov_angles, visible_area, hmd);
+                 base.max_portal_passes = max_portal_passes;
+                 return new PyRenderer(layout, base, backend,
+                                       render_options_of(stereo, clip, depth, technique, texture_from_level,
+                                                         texture_scale, shadows, shadow_size, occlusion_test, cull));
              }),
              py::arg("layout"), py::arg("size") = py::none(), py::arg("samples") = 1, py::arg("backend") = "egl",
              py::arg("ipd") = py::none(), py::arg("fov") = py::none(), py::arg("fov_angles") = py::none(),
-             py::arg("visible_area") = py::none(), py::arg("hmd") = py::none())
+             py::arg("visible_area") = py::none(), py::arg("hmd") = py::none(), py::arg("max_portal_passes") = 10'000,
+             py::arg("stereo") = "clip-shift", py::arg("clip") = "clip-distance", py::arg("depth") = "reversed-z",
+             py::arg("technique") = "stencil", py::arg("texture_from_level") = 0, py::arg("texture_scale") = 1.0,
+             py::arg("shadows") = true, py::arg("shadow_size") = 512, py::arg("occlusion_test") = false,
+             py::arg("cull") = true)
         .def("render", &PyRenderer::render, py::arg("pose") = py::none(), py::arg("room") = py::none(),
              py::arg("hands") = py::none(), py::arg("time") = 0.0, py::arg("max_depth") = 8,
              py::arg("light_depth") = py::none())

@@ -193,6 +193,29 @@ using GetProcAddress = void* (*)(const char* name);
 
 struct RendererParts;
 
+// How the rasteriser draws (`render`'s technique options, docs/cli.md): what
+// only the rasteriser reads. The View holds what both renderers read
+// (samples, max_portal_passes, light_depth). The defaults are `render`'s.
+enum class Stereo { ClipShift, ViewportIndex, TwoPass };  // --stereo
+enum class Clip { ClipDistance, Oblique };                // --clip
+enum class Depth { ReversedZ, Standard };                 // --depth
+enum class Technique { Stencil, Hybrid, ZClear };         // --technique
+struct RenderOptions {
+    Stereo stereo = Stereo::ClipShift;
+    Clip clip = Clip::ClipDistance;
+    Depth depth = Depth::ReversedZ;
+    Technique technique = Technique::Stencil;
+    // Hybrid: the doors seen at this recursion level, and deeper ones inside
+    // them, are drawn through textures of texture_scale × the eye size, (0, 4]
+    // (--texture-from-level, --portal-texture).
+    int texture_from_level = 0;
+    double texture_scale = 1.0;
+    bool shadows = true;     // props' shadows on lit layouts (--no-shadows)
+    int shadow_size = 512;   // texels per cube-map face side, 0..4096 (--shadow-size)
+    bool occlusion_test = false;  // --occlusion-test
+    bool cull = true;             // per-eye culling and scissor (--no-cull: off)
+};
+
 // The OpenGL 4.5 rasteriser for one layout.
 class Renderer {
 public:
@@ -207,11 +230,12 @@ public:
     Renderer& operator=(Renderer&&) noexcept;
     ~Renderer();
 
-    // Draws and reads back.
-    Expected<Frame> render(const View& view);
+    // Draws and reads back. A bad option is an error naming its field
+    // ("technique z-clear draws one level of doors: max_depth 8 ...").
+    Expected<Frame> render(const View& view, const RenderOptions& options = {});
     // Draws, then copies the colour into the caller's framebuffer object
     // `framebuffer` (0: the default one) at (0, 0), 2 × width by height.
-    Expected<FrameStats> draw_to(const View& view, unsigned framebuffer);
+    Expected<FrameStats> draw_to(const View& view, unsigned framebuffer, const RenderOptions& options = {});
 
     std::string gl_renderer() const;  // GL_RENDERER of the context
 

@@ -10,11 +10,17 @@
 #include "layout/layout.hpp"
 #include "math/pose.hpp"
 #include "math/view.hpp"
+#include "render/frame.hpp"
+#include "session/session.hpp"
 
 namespace impossible::api {
 
+// The session (the layout and its links, linked once) that every renderer,
+// tracer and walker made from one api::Layout shares.
 struct LayoutData {
-    layout::Layout layout;
+    explicit LayoutData(layout::Layout l) : session(std::move(l)) {}
+    session::Session session;
+    const layout::Layout& layout = session.layout();
     std::vector<layout::Diagnostic> warnings;  // the loader's
     std::vector<std::string> warning_lines;    // the same as "FILE:LINE:COLUMN: message"
 };
@@ -33,14 +39,14 @@ inline math::Polygon2 to_polygon(const std::vector<std::array<double, 2>>& corne
 }
 
 // The view as the renderer and tracer take it: the head and its room
-// resolved as `render` does (a pose in no room or in several needs a room),
-// sizes and numbers checked as the CLI checks them.
+// resolved by the session's one rule (a pose in no room or in several needs
+// a room), sizes and numbers checked against the named limits
+// (session/view_request.hpp), errors naming the View's fields.
 Result<math::View> resolve_view(const layout::Layout& layout, const View& view);
 
-// The rooms whose box or prism holds the head (layout::room_contains, edges
-// included), in file order: a view given only a pose is in the one room
-// holding it (the API's and the commands' rule).
-std::vector<int> rooms_holding(const layout::Layout& layout, const math::dvec3& head);
+// The rasteriser's frame: the resolved view, the samples and the options
+// (RenderOptions' ranges checked, errors naming its fields).
+Result<render::FrameDesc> frame_desc(const layout::Layout& layout, const View& view, const RenderOptions& options);
 
 // Runs `body`, turning any exception (memory, a library's) into an Error:
 // nothing throws across the API.

@@ -21,8 +21,7 @@ Expected<std::shared_ptr<const LayoutData>> data_of(layout::LoadResult&& loaded)
         for (const layout::Diagnostic& d : loaded.errors) message += (message.empty() ? "" : "\n") + d.str();
         return Error{message};
     }
-    auto data = std::make_shared<LayoutData>();
-    data->layout = std::move(*loaded.layout);
+    auto data = std::make_shared<LayoutData>(std::move(*loaded.layout));
     data->warnings = std::move(loaded.warnings);
     for (const layout::Diagnostic& d : data->warnings) data->warning_lines.push_back(d.str());
     return std::shared_ptr<const LayoutData>(std::move(data));

@@ -7,7 +7,7 @@
 #include "gl/gl.hpp"
 #include "gl/state.hpp"
 #include "render/renderer.hpp"
-#include "scene/scene.hpp"
+#include "session/field_error.hpp"
 
 namespace impossible::api {
 
@@ -46,21 +46,16 @@ FrameStats stats_of(const render::FrameStats& s) {
             s.portal_fills, s.budget_fills, s.max_level_reached};
 }
 
-Result<render::FrameDesc> frame_of(const layout::Layout& layout, const View& view) {
-    Result<math::View> resolved = resolve_view(layout, view);
-    if (!resolved) return resolved;
-    render::FrameDesc frame;
-    static_cast<math::View&>(frame) = *resolved;
-    frame.samples = view.samples;
-    frame.max_portal_passes = view.max_portal_passes;
-    return frame;
-}
-
 Expected<void> build(RendererParts& parts, const Layout& layout) {
-    Result<render::Renderer> made = render::Renderer::create(parts.state(), scene::build_scene(layout.data().layout));
+    Result<render::Renderer> made = layout.data().session.make_renderer(parts.state());
     if (!made) return Error{made.error()};
     parts.renderer.emplace(std::move(*made));
     return {};
+}
+
+// The renderer's messages name settings as {field}: the library's names.
+Error library_error(const std::string& message) {
+    return Error{session::spell_fields(message, session::library_field)};
 }
 
 }  // namespace
@@ -95,13 +90,13 @@ Expected<Renderer> Renderer::in_current_context(const Layout& layout, GetProcAdd
     });
 }
 
-Expected<Frame> Renderer::render(const View& view) {
+Expected<Frame> Renderer::render(const View& view, const RenderOptions& options) {
     return no_throw([&]() -> Expected<Frame> {
-        Result<render::FrameDesc> frame = frame_of(parts_->layout.data().layout, view);
+        Result<render::FrameDesc> frame = frame_desc(parts_->layout.data().layout, view, options);
         if (!frame) return Error{frame.error()};
         if (Result<void> ready = parts_->prepare(); !ready) return Error{ready.error()};
         Result<render::RenderedFrame> drawn = parts_->renderer->render(*frame);
-        if (!drawn) return Error{drawn.error()};
+        if (!drawn) return library_error(drawn.error());
         Frame out;
         out.width = drawn->image.width;
         out.height = drawn->image.height;
@@ -112,13 +107,13 @@ Expected<Frame> Renderer::render(const View& view) {
     });
 }
 
-Expected<FrameStats> Renderer::draw_to(const View& view, unsigned framebuffer) {
+Expected<FrameStats> Renderer::draw_to(const View& view, unsigned framebuffer, const RenderOptions& options) {
     return no_throw([&]() -> Expected<FrameStats> {
-        Result<render::FrameDesc> frame = frame_of(parts_->layout.data().layout, view);
+        Result<render::FrameDesc> frame = frame_desc(parts_->layout.data().layout, view, options);
         if (!frame) return Error{frame.error()};
         if (Result<void> ready = parts_->prepare(); !ready) return Error{ready.error()};
         render::FrameStats stats;
-        if (Result<void> drawn = parts_->renderer->draw(*frame, &stats); !drawn) return Error{drawn.error()};
+        if (Result<void> drawn = parts_->renderer->draw(*frame, &stats); !drawn) return library_error(drawn.error());
         const render::Target& target = parts_->renderer->target();
         const GLuint from = target.framebuffer.get();
         parts_->state().no_scissor();  // the scissor test applies to blits too

@@ -14,7 +14,9 @@ Expected<Frame> trace(const Layout& layout, const View& view, int threads) {
         static_cast<math::View&>(desc) = *resolved;
         desc.threads = threads;
         desc.samples = view.samples;
-        Result<image::Image> image = trace::trace_frame(l, desc);
+        Result<trace::Scene> scene = layout.data().session.make_trace_scene();
+        if (!scene) return Error{scene.error()};
+        Result<image::Image> image = trace::trace_frame(*scene, desc);
         if (!image) return Error{image.error()};
         Frame frame;
         frame.width = image->width;

@@ -4,7 +4,6 @@
 
 #include "api/api_data.hpp"
 #include "layout/path_file.hpp"
-#include "links/portal_links.hpp"
 #include "walk/objects.hpp"
 #include "walk/prop_walks.hpp"
 #include "walk/replay.hpp"
@@ -13,7 +12,7 @@
 namespace impossible::api {
 
 struct WalkerData {
-    explicit WalkerData(const Layout& l) : layout(l), walker(layout.data().layout) {}
+    explicit WalkerData(const Layout& l) : layout(l), walker(layout.data().session.make_walker()) {}
     Layout layout;  // the walker reads it; declared first, so it outlives the walker
     walk::Walker walker;
     std::optional<walk::ObjectSet> objects;  // made at the first step with hands (walk::place_hand)
@@ -108,7 +107,7 @@ std::vector<WalkStep> walk(const Layout& layout, const std::vector<PathLine>& ph
 std::vector<WalkStep> walk(const Layout& layout, const std::vector<PathLine>& physical, double fps) {
     std::vector<WalkStep> steps = walk(layout, physical);
     const layout::Layout& l = layout.data().layout;
-    const walk::ObjectSet set = walk::build_object_set(l, links::link_portals(l));
+    const walk::ObjectSet set = walk::build_object_set(l, layout.data().session.links());
     std::vector<int> moving;  // indices of set.props
     for (std::size_t k = 0; k < set.props.size(); ++k)
         if (!set.props[k].motion.keys.empty()) moving.push_back(static_cast<int>(k));

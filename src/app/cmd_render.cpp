@@ -2,10 +2,11 @@
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "cli/field_flags.hpp"
 #include "cli/layout_source.hpp"
 #include "cli/view_options.hpp"
 #include "render/renderer.hpp"
-#include "scene/scene.hpp"
+#include "session/session.hpp"
 
 namespace impossible::app {
 
@@ -23,24 +24,25 @@ const char* kRenderHelp =
 }  // namespace
 
 int run_render_command(const Args& args, std::ostream& out, std::ostream& err) {
-    const ParsedArgs parsed = parse_args(args, 1, view_options());
+    const ViewTables tables = view_options();
+    const ParsedArgs parsed = parse_args(args, 1, tables.own, tables.frame);
     if (parsed.help) {
-        out << kRenderHelp << options_help(view_options(), kViewHelpColumn);
+        out << kRenderHelp << view_help(tables);
         return kExitOk;
     }
-    const ViewOptions options = parse_view_options(parsed);
+    const ViewOptions options = parse_view_options(parsed, tables);
     CommandOutputs outputs = frame_outputs(options);
-    const layout::Layout layout = load_layout_or_default(options.layout_path, outputs);
-    const render::FrameDesc frame = frame_for(layout, options);
-    err << light_options_warning(layout, options.frame.light_depth, options.shadow_options);
+    const session::Session session(load_layout_or_default(options.layout_path, outputs));
+    const render::FrameDesc frame = frame_for(session, options);
+    err << light_options_warning(session, options.frame.light_depth, options.shadow_options);
 
     std::string fallback_note;
     const gl::Context context =
         value_or_throw(gl::create_context_with_fallback(options.backend, &fallback_note), "no OpenGL 4.5 context");
     if (!fallback_note.empty()) err << "note: " << fallback_note << "\n";
 
-    render::Renderer renderer = value_or_throw(render::Renderer::create(context.state(), scene::build_scene(layout)));
-    const render::RenderedFrame result = value_or_throw(renderer.render(frame));
+    render::Renderer renderer = value_or_throw(session.make_renderer(context.state()));
+    const render::RenderedFrame result = value_or_throw(with_flags(renderer.render(frame)));
 
     const image::Image& image = result.image;
     write_frame_pngs(outputs, options, image.width, image.height, image.rgb, image.ids);

@@ -8,6 +8,7 @@
 #include "app/commands.hpp"
 #include "cli/layout_source.hpp"
 #include "cli/view_options.hpp"
+#include "session/session.hpp"
 #include "trace/tracer.hpp"
 
 namespace impossible::app {
@@ -37,25 +38,25 @@ constexpr Option<TraceOptions> kTraceOptions[] = {
 }  // namespace
 
 int run_trace_command(const Args& args, std::ostream& out, std::ostream& err) {
-    const ParsedArgs parsed = parse_args(args, 1, trace_view_options(), kTraceOptions);
+    const ViewTables tables = trace_view_options();
+    const ParsedArgs parsed = parse_args(args, 1, tables.own, tables.frame, kTraceOptions);
     if (parsed.help) {
-        out << kTraceHelp << options_help(trace_view_options(), kViewHelpColumn)
-            << options_help(kTraceOptions, kViewHelpColumn);
+        out << kTraceHelp << view_help(tables) << options_help(kTraceOptions, kViewHelpColumn);
         return kExitOk;
     }
-    const ViewOptions options = parse_view_options(parsed, trace_view_options());
+    const ViewOptions options = parse_view_options(parsed, tables);
     CommandOutputs outputs = frame_outputs(options);
     TraceOptions own;
     apply_options(kTraceOptions, parsed, own);
     const int threads = own.threads;
-    const layout::Layout layout = load_layout_or_default(options.layout_path, outputs);
-    const render::FrameDesc frame = frame_for(layout, options);
-    err << light_options_warning(layout, options.frame.light_depth, false);
+    const session::Session session(load_layout_or_default(options.layout_path, outputs));
+    const render::FrameDesc frame = frame_for(session, options);
+    err << light_options_warning(session, options.frame.light_depth, false);
 
     const trace::TraceDesc desc = trace_desc_for(frame, threads);
 
     const auto start = std::chrono::steady_clock::now();
-    const trace::Scene scene = value_or_throw(trace::prepare_scene(layout));
+    const trace::Scene scene = value_or_throw(session.make_trace_scene());
     trace::TraceStats cut;
     const image::Image image = value_or_throw(trace::trace_frame(scene, desc, &cut));
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

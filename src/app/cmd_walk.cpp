@@ -130,15 +130,16 @@ std::string frame_line(const layout::Layout& layout, const walk::Walker& walker,
 
 }  // namespace
 
-int run_walk_stream(const layout::Layout& layout, std::istream& in, const std::string& name, std::ostream& out,
+int run_walk_stream(const session::Session& session, std::istream& in, const std::string& name, std::ostream& out,
                     std::ostream& err, double fps) {
+    const layout::Layout& layout = session.layout();
     const layout::PathFrames path = layout::read_path_frames_stream(in, name);
     if (!path) {
         err << one_line(path.error()) << '\n';
         return 1;
     }
     const std::vector<layout::PathFrame>& frames = *path;
-    walk::Walker walker(layout);
+    walk::Walker walker = session.make_walker();
     const std::unique_ptr<WalkObjects> objects = walk_objects(layout, walker, frames);
     for (std::size_t frame = 0; frame < frames.size(); ++frame) {
         const std::vector<int> passed = walker.step(frames[frame].head);
@@ -159,7 +160,7 @@ int run_walk_stream(const layout::Layout& layout, std::istream& in, const std::s
     return 0;
 }
 
-int run_walk(const layout::Layout& layout, const std::string& path_file, std::ostream& out, std::ostream& err,
+int run_walk(const session::Session& session, const std::string& path_file, std::ostream& out, std::ostream& err,
              double fps) {
     const Result<std::vector<unsigned char>> bytes = read_file_bytes(path_file, layout::kMaxPathFileBytes, false);
     if (!bytes) {
@@ -167,7 +168,7 @@ int run_walk(const layout::Layout& layout, const std::string& path_file, std::os
         return 1;
     }
     std::istringstream in(std::string(bytes->begin(), bytes->end()));
-    return run_walk_stream(layout, in, path_file, out, err, fps);
+    return run_walk_stream(session, in, path_file, out, err, fps);
 }
 
 }  // namespace impossible::app

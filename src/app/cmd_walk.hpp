@@ -29,17 +29,18 @@
 
 #include "layout/layout.hpp"
 #include "layout/path_file.hpp"
+#include "session/session.hpp"
 
 namespace impossible::app {
 
 // Reads the path file and replays it. Returns 0, or 1 on a bad or unreadable
 // path file (one line on err).
 // `fps` (> 0, finite): line k is at time k / fps.
-int run_walk(const layout::Layout& layout, const std::string& path_file, std::ostream& out, std::ostream& err,
+int run_walk(const session::Session& session, const std::string& path_file, std::ostream& out, std::ostream& err,
              double fps = layout::kDefaultPathFps);
 
 // The same on an already open stream; `name` is the FILE of error messages.
-int run_walk_stream(const layout::Layout& layout, std::istream& in, const std::string& name, std::ostream& out,
+int run_walk_stream(const session::Session& session, std::istream& in, const std::string& name, std::ostream& out,
                     std::ostream& err, double fps = layout::kDefaultPathFps);
 
 }  // namespace impossible::app

@@ -52,8 +52,8 @@ int run_walk_command(const Args& args, std::ostream& out, std::ostream& err) {
     WalkOptions options;
     apply_options(kWalkOptions, parsed, options);
     if (!options.path) throw UsageError("walk needs --path FILE");
-    const layout::Layout layout = load_layout_or_default(parsed.positional[0]);
-    return run_walk(layout, *options.path, out, err, options.fps);
+    const session::Session session(load_layout_or_default(parsed.positional[0]));
+    return run_walk(session, *options.path, out, err, options.fps);
 }
 
 }  // namespace impossible::app

@@ -35,22 +35,23 @@ const char* kHelp =
 }  // namespace
 
 int run_bench_command(const cli::Args& args, std::ostream& out, std::ostream& err) {
-    const ParsedArgs parsed = parse_args(args, 1, bench_view_options(), bench_options());
+    const cli::ViewTables tables = bench_view_options();
+    const ParsedArgs parsed = parse_args(args, 1, tables.own, tables.frame, bench_options());
     if (parsed.help) {
-        out << kHelp << options_help(bench_view_options(), kViewHelpColumn)
-            << options_help(bench_options(), kViewHelpColumn);
+        out << kHelp << cli::view_help(tables) << options_help(bench_options(), kViewHelpColumn);
         return kExitOk;
     }
     const BenchOptions options = parse_bench_options(parsed);
     cli::CommandOutputs outputs;
     if (options.view.layout_path) outputs.input("the layout", *options.view.layout_path);
     if (options.path) outputs.input("--path", *options.path);
+    if (options.view.hmd) outputs.input("--hmd", *options.view.hmd);
     if (options.json) outputs.output("--json", *options.json);
     if (options.csv) outputs.output("--csv", *options.csv);
-    const layout::Layout layout = load_layout_or_default(options.view.layout_path, outputs);
-    err << cli::light_options_warning(layout, options.view.frame.light_depth, options.view.shadow_options);
-    const std::vector<BenchPose> poses = bench_poses(layout, options);
-    const BenchPlan plan = plan_bench(layout, options);
+    const session::Session session(load_layout_or_default(options.view.layout_path, outputs));
+    err << cli::light_options_warning(session, options.view.frame.light_depth, options.view.shadow_options);
+    const std::vector<BenchPose> poses = bench_poses(session, options);
+    const BenchPlan plan = plan_bench(session, options);
 
     std::string fallback_note;
     const gl::Context context =

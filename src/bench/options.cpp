@@ -24,19 +24,6 @@ using cli::without;
 
 namespace {
 
-void check_sweep(const std::string& sweep) {
-    if (sweep.empty() || sweep == "techniques") return;
-    const size_t colon = sweep.find(':');
-    const std::string kind = sweep.substr(0, colon);
-    if (colon == std::string::npos ||
-        (kind != "portals" && kind != "depth" && kind != "size" && kind != "boxes" && kind != "samples" &&
-         kind != "lights" && kind != "light-depth" && kind != "shadow-size" && kind != "mask") ||
-        colon + 1 == sweep.size())
-        throw InputError("--sweep: '" + sweep +
-                         "' is not techniques, portals:N,..., boxes:N,..., depth:N,..., size:WxH,..., samples:N,..., "
-                         "lights:fixed|N,..., light-depth:N,..., shadow-size:N,... or mask:on|off,...");
-}
-
 // In the order of the help and of the checks.
 constexpr Option<BenchOptions> kBenchOptions[] = {
     {"--frames", "N", "timed frames per configuration and pose (default 20)",
@@ -52,7 +39,7 @@ constexpr Option<BenchOptions> kBenchOptions[] = {
      "line of 18 numbers carries the hands, and line k is at time k / fps",
      [](BenchOptions& o, const OptionValue& v) { o.path = v.text; }},
     {"--fps", "N", "frames a second of --path (default 90)",
-     [](BenchOptions& o, const OptionValue& v) { o.fps = cli::parse_fps(v.text); }},
+     [](BenchOptions& o, const OptionValue& v) { o.fps = cli::parse_fps(v); }},
     {"--portals", "N", "keep only the first N portals of the layout (pairs within them)",
      [](BenchOptions& o, const OptionValue& v) { o.portals = parse_int(v.name, v.text, 0, 1000000); }},
     {"--sweep", "WHAT",
@@ -74,11 +61,11 @@ constexpr Option<BenchOptions> kBenchOptions[] = {
     {"--error", nullptr, "compare each configuration with the tracer (ids, PSNR)",
      [](BenchOptions& o, const OptionValue&) { o.error = true; }},
     {"--reference-depth", "N", "the tracer's recursion depth for --error (default 64)",
-     [](BenchOptions& o, const OptionValue& v) { o.reference_depth = parse_int(v.name, v.text, 0, 250); }},
+     [](BenchOptions& o, const OptionValue& v) { o.reference_depth = cli::parse_max_depth(v); }},
     {"--reference-samples", "N",
      "the tracer's samples per pixel for --error (default 1; 16 for\n"
      "the anti-aliased ideal)",
-     [](BenchOptions& o, const OptionValue& v) { o.reference_samples = cli::parse_samples(v.text); }},
+     [](BenchOptions& o, const OptionValue& v) { o.reference_samples = cli::parse_samples(v); }},
     {"--json", "FILE", "write the results as JSON (schema: bench/README.md)",
      [](BenchOptions& o, const OptionValue& v) { o.json = v.text; }},
     {"--csv", "FILE", "write one CSV row per configuration",
@@ -87,12 +74,12 @@ constexpr Option<BenchOptions> kBenchOptions[] = {
 
 }  // namespace
 
-OptionTable<ViewOptions> bench_view_options() {
+cli::ViewTables bench_view_options() {
     // Not the image files or --stats: bench writes a table and its own files.
     // Nor render's --path, --frame and --fps: bench walks all of its --path.
-    static const std::vector<Option<ViewOptions>> table =
-        without(view_options(), {"--out", "--ids", "--stats", "--path", "--frame", "--fps"});
-    return table;
+    static const std::vector<Option<ViewOptions>> own =
+        without(view_options().own, {"--out", "--ids", "--stats", "--path", "--frame", "--fps"});
+    return {own, view_options().frame};
 }
 
 OptionTable<BenchOptions> bench_options() { return kBenchOptions; }
@@ -101,7 +88,7 @@ BenchOptions parse_bench_options(const ParsedArgs& args) {
     BenchOptions o;
     o.view = parse_view_options(args, bench_view_options());
     apply_options(kBenchOptions, args, o);
-    check_sweep(o.sweep);
+    o.sweep_items = parse_sweep(o.sweep);
     o.error = o.error || o.sweep == "techniques";
     if (o.path && o.view.pose) throw InputError("--path and --pose: give one of them");
     // As render's --path (usage errors; --path and --pose kept its exit 1).

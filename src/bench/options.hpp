@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/sweep.hpp"
 #include "cli/args.hpp"
 #include "cli/option_table.hpp"
 #include "cli/view_options.hpp"
@@ -26,14 +27,15 @@ struct BenchOptions {
     std::optional<double> fps;        // --fps of the walk: line k is at time k / fps
     std::optional<int> portals;       // keep only the first N portals (pairs within them)
     std::string sweep;                // "", "techniques", "portals:0,2,4,6", "depth:1,4", "size:WxH,...", "samples:1,4"
-    bool error = false;               // compare every configuration with the tracer
-    int reference_depth = 64;         // the tracer's recursion depth for the error
-    int reference_samples = 1;        // the tracer's samples per pixel for the error
+    std::vector<SweepItem> sweep_items;  // sweep's items, parsed (bench/sweep.hpp)
+    bool error = false;                  // compare every configuration with the tracer
+    int reference_depth = 64;            // the tracer's recursion depth for the error
+    int reference_samples = 1;           // the tracer's samples per pixel for the error
 };
 
 // bench's options: the view options without the image files and --stats,
 // then its own, both at cli::kViewHelpColumn in the help.
-cli::OptionTable<cli::ViewOptions> bench_view_options();
+cli::ViewTables bench_view_options();
 cli::OptionTable<BenchOptions> bench_options();
 
 // Throws InputError for a bad value.

@@ -13,23 +13,9 @@
 namespace impossible::bench {
 
 using cli::frame_for;
-using cli::parse_int;
-using cli::parse_size;
 using cli::ViewOptions;
 
 using cli::value_or_throw;
-
-namespace {
-
-std::vector<std::string> split(const std::string& text, char sep) {
-    std::vector<std::string> parts;
-    std::stringstream in(text);
-    std::string part;
-    while (std::getline(in, part, sep)) parts.push_back(part);
-    return parts;
-}
-
-}  // namespace
 
 layout::Layout keep_first_portals(const layout::Layout& layout, int n) {
     layout::Layout out = layout;
@@ -137,80 +123,65 @@ void add_techniques(PlanBuilder& b) {
 // culling off), or "N/separate" (one draw per run of visible props instead of
 // a multi-draw), or "N/all-faces" (every face of a visible box, back faces
 // too: FrameDesc::cull_box_faces off), to compare in one run.
-void add_boxes(PlanBuilder& b, const std::string& name, const std::string& item) {
-    const auto suffixed = [&](const std::string& suffix) {
-        return item.size() > suffix.size() && item.compare(item.size() - suffix.size(), suffix.size(), suffix) == 0;
-    };
-    const bool all = suffixed("/all"), separate = suffixed("/separate"), all_faces = suffixed("/all-faces");
-    const std::string count = all || separate || all_faces ? item.substr(0, item.find('/')) : item;
-    const int n = parse_int("--sweep boxes", count, 0, 100000);
+void add_boxes(PlanBuilder& b, const SweepItem& item) {
     // One layout per count, shared by its variants (the tracer then
     // draws each count's reference once).
     BenchPlan& plan = b.plan;
-    auto [at, made] = b.box_layouts.try_emplace(n, static_cast<int>(plan.layouts.size()));
-    if (made) plan.layouts.push_back(with_extra_boxes(plan.layouts[0], n));
+    auto [at, made] = b.box_layouts.try_emplace(item.n, static_cast<int>(plan.sessions.size()));
+    if (made) plan.sessions.emplace_back(with_extra_boxes(plan.sessions[0].layout(), item.n));
     const int variant = at->second;
-    b.add(name, "boxes", [&](BenchConfig& c) {
+    b.add(item.name, "boxes", [&](BenchConfig& c) {
         c.layout_variant = variant;
-        c.frame.cull_objects = !all;
-        c.frame.multi_draw = !separate;
-        c.frame.cull_box_faces = !all_faces;
+        c.frame.cull_objects = item.suffix != "all";
+        c.frame.multi_draw = item.suffix != "separate";
+        c.frame.cull_box_faces = item.suffix != "all-faces";
     });
 }
 
-// One item of --sweep KIND:ITEM,... (KIND checked by the options).
-void add_sweep_item(PlanBuilder& b, const layout::Layout& layout, const std::string& kind, const std::string& item) {
-    const std::string name = kind + "=" + item;
+// One item of --sweep KIND:ITEM,... (parsed with the options, bench/sweep.hpp).
+void add_sweep_item(PlanBuilder& b, const layout::Layout& layout, const SweepItem& item) {
+    const std::string& kind = item.kind;
+    const int n = item.n;
     if (kind == "portals") {
         // "N/all-steps": the same N portals with every door pass
         // (FrameDesc::portal_steps off), to compare in one run.
-        const std::string suffix = "/all-steps";
-        const bool all_steps = item.size() > suffix.size() && item.ends_with(suffix);
-        const std::string count = all_steps ? item.substr(0, item.size() - suffix.size()) : item;
-        const int n = parse_int("--sweep portals", count, 0, 1000000);
-        b.plan.layouts.push_back(keep_first_portals(layout, n));
-        const int variant = static_cast<int>(b.plan.layouts.size()) - 1;
-        b.add(name, kind, [variant, all_steps](BenchConfig& c) {
+        const bool all_steps = item.suffix == "all-steps";
+        b.plan.sessions.emplace_back(keep_first_portals(layout, n));
+        const int variant = static_cast<int>(b.plan.sessions.size()) - 1;
+        b.add(item.name, kind, [variant, all_steps](BenchConfig& c) {
             c.layout_variant = variant;
             c.frame.portal_steps = !all_steps;
         });
     } else if (kind == "boxes") {
-        add_boxes(b, name, item);
+        add_boxes(b, item);
     } else if (kind == "samples") {
-        const int n = cli::parse_samples(item);
-        b.add(name, kind, [n](BenchConfig& c) { c.frame.samples = n; });
+        b.add(item.name, kind, [n](BenchConfig& c) { c.frame.samples = n; });
     } else if (kind == "lights") {
-        const int n = item == "fixed" ? -1 : parse_int("--sweep lights", item, 0, 1000);
-        b.plan.layouts.push_back(with_lights(b.plan.layouts[0], n));
-        const int variant = static_cast<int>(b.plan.layouts.size()) - 1;
-        b.add(name, kind, [variant](BenchConfig& c) { c.layout_variant = variant; });
+        b.plan.sessions.emplace_back(with_lights(b.plan.sessions[0].layout(), n));
+        const int variant = static_cast<int>(b.plan.sessions.size()) - 1;
+        b.add(item.name, kind, [variant](BenchConfig& c) { c.layout_variant = variant; });
     } else if (kind == "light-depth") {
         if (layout.lighting != impossible::layout::Lighting::Lights)
             throw cli::InputError("--sweep light-depth: the layout's lighting is \"fixed\" (try --sweep lights:...)");
-        const int d = parse_int("--sweep light-depth", item, 0, impossible::layout::kMaxLightDepth);
-        b.add(name, kind, [d](BenchConfig& c) { c.frame.light_depth = d; });
+        b.add(item.name, kind, [n](BenchConfig& c) { c.frame.light_depth = n; });
     } else if (kind == "shadow-size") {
-        const int size = parse_int("--sweep shadow-size", item, 0, render::kMaxShadowMapSize);
-        b.add(name, kind, [size](BenchConfig& c) {
-            c.frame.shadow_map_size = size;
-            c.frame.shadows = size > 0;
+        b.add(item.name, kind, [n](BenchConfig& c) {
+            c.frame.shadow_map_size = n;
+            c.frame.shadows = n > 0;
         });
     } else if (kind == "mask") {
         // With --hmd: the profile's hidden areas masked, or the same frusta
         // drawing every pixel (docs/headsets.md).
         if (!math::has_hidden_area(b.base)) throw cli::InputError("--sweep mask: needs --hmd with a visible_area");
-        if (item != "on" && item != "off") throw cli::InputError("--sweep mask: '" + item + "' is not on or off");
-        const bool on = item == "on";
-        b.add(name, kind, [on](BenchConfig& c) {
+        const bool on = item.on;
+        b.add(item.name, kind, [on](BenchConfig& c) {
             if (!on)
                 for (math::EyeOptics& e : *c.frame.eye_optics) e.visible_area.clear();
         });
     } else if (kind == "depth") {
-        const int d = parse_int("--sweep depth", item, 0, 250);
-        b.add(name, kind, [d](BenchConfig& c) { c.frame.max_depth = d; });
+        b.add(item.name, kind, [n](BenchConfig& c) { c.frame.max_depth = n; });
     } else {
-        const auto [w, h] = parse_size("--sweep size", item);
-        b.add(name, kind, [w = w, h = h](BenchConfig& c) {
+        b.add(item.name, kind, [w = item.width, h = item.height](BenchConfig& c) {
             c.frame.eye_width = w;
             c.frame.eye_height = h;
         });
@@ -219,34 +190,35 @@ void add_sweep_item(PlanBuilder& b, const layout::Layout& layout, const std::str
 
 }  // namespace
 
-BenchPlan plan_bench(const layout::Layout& layout, const BenchOptions& o) {
+BenchPlan plan_bench(const session::Session& session, const BenchOptions& o) {
+    const layout::Layout& layout = session.layout();
     BenchPlan plan;
-    plan.layouts.push_back(o.portals ? keep_first_portals(layout, *o.portals) : layout);
+    if (o.portals)
+        plan.sessions.emplace_back(keep_first_portals(layout, *o.portals));
+    else
+        plan.sessions.push_back(session);
     // Head and room come per pose; frame_for only needs a valid room here.
     ViewOptions view = o.view;
     view.pose.reset();
     view.room.reset();
-    PlanBuilder builder{plan, frame_for(plan.layouts[0], view), {}};
+    PlanBuilder builder{plan, frame_for(plan.sessions[0], view), {}};
     builder.add("base", "base", [](BenchConfig&) {});
     if (o.sweep == "techniques") {
         add_techniques(builder);
-    } else if (!o.sweep.empty()) {
-        const size_t colon = o.sweep.find(':');
-        const std::string kind = o.sweep.substr(0, colon);
-        for (const std::string& item : split(o.sweep.substr(colon + 1), ','))
-            add_sweep_item(builder, layout, kind, item);
+    } else {
+        for (const SweepItem& item : o.sweep_items) add_sweep_item(builder, layout, item);
     }
     return plan;
 }
 
-std::vector<BenchPose> bench_poses(const layout::Layout& layout, const BenchOptions& o) {
+std::vector<BenchPose> bench_poses(const session::Session& session, const BenchOptions& o) {
     if (!o.path) {
-        const render::FrameDesc f = frame_for(layout, o.view);
+        const render::FrameDesc f = frame_for(session, o.view);
         return {{f.head, f.room, f.time, f.hands}};
     }
     const std::vector<layout::PathFrame> file = value_or_throw(layout::read_path_frames_file(*o.path));
     const double fps = o.fps.value_or(layout::kDefaultPathFps);
-    walk::Walker walker(layout);
+    walk::Walker walker = session.make_walker();
     std::vector<BenchPose> poses;
     for (std::size_t k = 0; k < file.size(); ++k) {
         walker.step(file[k].head);

@@ -8,6 +8,7 @@
 #include "bench/options.hpp"
 #include "layout/layout.hpp"
 #include "render/frame.hpp"
+#include "session/session.hpp"
 #include "walk/replay.hpp"
 
 namespace impossible::bench {
@@ -27,12 +28,12 @@ struct BenchConfig {
 };
 
 struct BenchPlan {
-    std::vector<layout::Layout> layouts;  // [0]: the layout as loaded (and --portals applied)
-    std::vector<BenchConfig> configs;     // [0]: the base configuration (the options as given)
+    std::vector<session::Session> sessions;  // layout variants; [0]: the layout as loaded (and --portals applied)
+    std::vector<BenchConfig> configs;        // [0]: the base configuration (the options as given)
 };
 
 // The configurations of the options' sweep over `layout`. Throws InputError.
-BenchPlan plan_bench(const layout::Layout& layout, const BenchOptions& options);
+BenchPlan plan_bench(const session::Session& session, const BenchOptions& options);
 
 // The virtual head, room, time and hands of each frame: the options' pose
 // (or the layout's start) once, or every line of the --path walk replayed
@@ -43,6 +44,6 @@ struct BenchPose {
     double time = 0.0;      // --time, or line k / fps of the walk
     walk::HandPoses hands;  // --hands, or the walk's line's hands mapped by its W
 };
-std::vector<BenchPose> bench_poses(const layout::Layout& layout, const BenchOptions& options);
+std::vector<BenchPose> bench_poses(const session::Session& session, const BenchOptions& options);
 
 }  // namespace impossible::bench

@@ -8,11 +8,11 @@
 #include <thread>
 #include <tuple>
 
+#include "cli/field_flags.hpp"
 #include "cli/view_options.hpp"
 #include "gl/gl.hpp"
 #include "image/compare.hpp"
 #include "render/renderer.hpp"
-#include "scene/scene.hpp"
 #include "trace/tracer.hpp"
 
 namespace impossible::bench {
@@ -38,7 +38,8 @@ render::FrameDesc frame_at(const BenchConfig& config, const BenchPose& pose) {
 }
 
 // A configuration's error text: empty when the frame was drawn.
-std::string error_of(const Result<void>& drawn) { return drawn ? std::string() : drawn.error(); }
+// The renderer's message with its settings spelled as flags (--samples).
+std::string error_of(const Result<void>& drawn) { return drawn ? std::string() : cli::with_flags(drawn.error()); }
 
 // Passed samples per pixel sample: with multisampling, a query counts samples.
 double pixels_of(const render::FrameDesc& f) { return 2.0 * f.eye_width * f.eye_height * f.samples; }
@@ -134,7 +135,7 @@ struct Measurer {
             for (const auto& [key, times] : portal_ms[c]) {
                 PortalResult pr;
                 pr.pose = key.first;
-                pr.portal = plan.layouts[r.config.layout_variant].portals[key.second].id;
+                pr.portal = plan.sessions[r.config.layout_variant].layout().portals[key.second].id;
                 pr.ms_median = spread_of(times).median;
                 pr.fragments_per_pixel = portal_fragments[c][key];
                 r.portals.push_back(pr);
@@ -146,7 +147,7 @@ struct Measurer {
     // size, with the reference depth: ids and colour PSNR, mean over poses.
     void compare_with_tracer() {
         std::vector<trace::Scene> scenes;
-        for (const layout::Layout& l : plan.layouts) scenes.push_back(value_or_throw(trace::prepare_scene(l)));
+        for (const session::Session& s : plan.sessions) scenes.push_back(value_or_throw(s.make_trace_scene()));
         // One reference per layout variant, pose, size, light depth and
         // hidden-area mask (--sweep mask).
         std::map<std::tuple<int, size_t, int, int, int, bool>, image::Image> traced;
@@ -166,7 +167,7 @@ struct Measurer {
                 const image::Image& t = traced[key];
                 Result<render::RenderedFrame> raster = renderer_of(r.config).render(f);
                 if (!raster) {
-                    r.error = raster.error();
+                    r.error = cli::with_flags(raster.error());
                     continue;
                 }
                 const image::Comparison cmp = image::compare_pictures(raster->image, t);
@@ -183,9 +184,8 @@ struct Measurer {
 BenchResult run_bench(const BenchPlan& plan, const std::vector<BenchPose>& poses, const BenchOptions& options,
                       gl::StateCache& state, const std::string& gl_renderer) {
     Measurer m{plan, poses, options, {}, {}};
-    for (const layout::Layout& l : plan.layouts) {
-        m.renderers.push_back(
-            std::make_unique<render::Renderer>(value_or_throw(render::Renderer::create(state, scene::build_scene(l)))));
+    for (const session::Session& s : plan.sessions) {
+        m.renderers.push_back(std::make_unique<render::Renderer>(value_or_throw(s.make_renderer(state))));
     }
     for (const BenchConfig& c : plan.configs)
         m.results.push_back({c, {}, {}, {}, 0, 0, 0, 0, 0, 0, 0, {}, false, 0, 0, 0});

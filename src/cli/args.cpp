@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "math/view_limits.hpp"
+
 namespace impossible::cli {
 
 std::optional<std::string> ParsedArgs::value(const std::string& name) const {
@@ -85,8 +87,8 @@ std::vector<double> parse_numbers(const std::string& option, const std::string& 
 std::pair<int, int> parse_size(const std::string& option, const std::string& text) {
     const size_t x = text.find('x');
     if (x == std::string::npos) throw InputError(option + ": '" + text + "' is not WIDTHxHEIGHT");
-    const int w = parse_int(option, text.substr(0, x), 1, 8192);
-    const int h = parse_int(option, text.substr(x + 1), 1, 8192);
+    const int w = parse_int(option, text.substr(0, x), math::limits::kEyeSide.min, math::limits::kEyeSide.max);
+    const int h = parse_int(option, text.substr(x + 1), math::limits::kEyeSide.min, math::limits::kEyeSide.max);
     return {w, h};
 }
 

@@ -27,7 +27,7 @@ const char* const kSearchStopped = "the search stopped at its limit of pairs tes
 
 void count_lights(const layout::Layout& layout, Report& r) {
     if (layout.lighting != layout::Lighting::Lights) return;
-    const links::PortalLinks links = links::link_portals(layout);
+    const links::PortalLinks& links = r.placement.links;  // linked once, by place_rooms
     r.light_paths_depth = lights::light_depth_within(layout, links, layout.light_depth, kMaxReportedLightPaths);
     const std::vector<lights::RoomLights> images = lights::light_images(layout, links, r.light_paths_depth);
     for (std::size_t i = 0; i < layout.rooms.size(); ++i) {

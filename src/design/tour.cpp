@@ -143,7 +143,7 @@ Result<Tour> Planner::run() {
             poses.push_back(math::HeadPose{p, std::round(yaw * 1e4) / 1e4 + 0.0, 0.0, 0.0});
         }
     }
-    replay(layout_, result_);
+    replay(layout_, placement_.links, result_);
     result_.missed.clear();
     for (const int r : placement_.order)
         if (std::find(result_.visited.begin(), result_.visited.end(), r) == result_.visited.end())
@@ -153,13 +153,13 @@ Result<Tour> Planner::run() {
 
 }  // namespace
 
-void replay(const layout::Layout& layout, Tour& tour) {
+void replay(const layout::Layout& layout, const links::PortalLinks& links, Tour& tour) {
     tour.visited.clear();
     tour.teleports = 0;
     tour.physical_distance = tour.virtual_distance = 0.0;
     tour.closest_edge = std::numeric_limits<double>::infinity();
     const math::Polygon2 area = layout.play_area ? layout::outline(*layout.play_area) : math::Polygon2{};
-    walk::Walker walker(layout);
+    walk::Walker walker(layout, layout.start.room, std::make_shared<const links::PortalLinks>(links));
     for (std::size_t i = 0; i < tour.poses.size(); ++i) {
         const math::dvec3 before = walker.position();
         tour.teleports += static_cast<int>(walker.step(tour.poses[i]).size());

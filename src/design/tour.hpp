@@ -16,6 +16,7 @@
 #include "base/result.hpp"
 #include "design/room_grid.hpp"
 #include "layout/layout.hpp"
+#include "links/portal_links.hpp"
 #include "math/pose.hpp"
 
 namespace impossible::design {
@@ -39,7 +40,8 @@ struct Tour {
 
 Result<Tour> plan_tour(const layout::Layout& layout, const TourOptions& options = {});
 
-// Replays poses with the walker and fills visited, teleports and distances.
-void replay(const layout::Layout& layout, Tour& tour);
+// Replays poses with a walker on the layout's `links` and fills visited,
+// teleports and distances.
+void replay(const layout::Layout& layout, const links::PortalLinks& links, Tour& tour);
 
 }  // namespace impossible::design

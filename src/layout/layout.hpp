@@ -22,6 +22,7 @@
 #include "assets/model.hpp"
 #include "image/pixels.hpp"
 #include "math/portal.hpp"
+#include "math/view_limits.hpp"
 
 namespace impossible::layout {
 
@@ -127,7 +128,7 @@ struct Light {
 enum class Lighting { Fixed, Lights };
 
 inline constexpr int kDefaultLightDepth = 2;
-inline constexpr int kMaxLightDepth = 16;
+inline constexpr int kMaxLightDepth = math::limits::kMaxLightDepth;
 inline const glm::dvec3 kDefaultAmbient{0.1, 0.1, 0.1};
 
 struct Room {

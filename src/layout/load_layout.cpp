@@ -230,7 +230,7 @@ void read_layout(Checker& check, const json& root, const std::string& base_dir, 
     // error already reported, so it is left out.
     const bool rooms_known = ids_reliable && !rooms.empty() &&
                              std::all_of(rooms.begin(), rooms.end(), [](const auto& r) { return r.has_id; });
-    detail::link_portals(check, portals, rooms, rooms_known);
+    detail::pair_portals(check, portals, rooms, rooms_known);
     detail::link_volumes(check, portals, rooms, rooms_known);
     detail::check_holes(check, portals, rooms);
     link_start(check, start, rooms, rooms_known);

@@ -345,7 +345,7 @@ std::vector<PortalDraft> read_portals(Checker& check, const Path& at, const json
     return drafts;
 }
 
-void link_portals(Checker& check, std::vector<PortalDraft>& portals, const std::vector<RoomDraft>& rooms,
+void pair_portals(Checker& check, std::vector<PortalDraft>& portals, const std::vector<RoomDraft>& rooms,
                   bool rooms_known) {
     const std::map<std::string, int> room_index = index_by_id(rooms);
     const std::map<std::string, int> portal_index = index_by_id(portals);

@@ -103,7 +103,7 @@ std::vector<PortalDraft> read_portals(Checker& check, const Path& at, const json
 
 // Resolves each portal's room and target, and checks the pairs. Without
 // `rooms_known` (the room list had errors) an unknown room id is not reported.
-void link_portals(Checker& check, std::vector<PortalDraft>& portals, const std::vector<RoomDraft>& rooms,
+void pair_portals(Checker& check, std::vector<PortalDraft>& portals, const std::vector<RoomDraft>& rooms,
                   bool rooms_known);
 
 // Volumes (layout-format.md, "Volume portals"): each target names a room

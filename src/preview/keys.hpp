@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "math/view_limits.hpp"
 #include "preview/actions.hpp"
 #include "preview/head.hpp"
 #include "preview/options.hpp"
@@ -18,7 +19,7 @@ struct KeyEffects {
     bool reset = false;
 };
 
-inline constexpr int kMaxPreviewDepth = 250;
+inline constexpr int kMaxPreviewDepth = math::limits::kMaxDepth.max;
 inline constexpr double kIpdStep = 0.002, kMaxIpd = 10.0;
 
 // Applies the actions in order to `options`. Esc releases a captured cursor;

@@ -4,25 +4,20 @@
 
 #include "cli/option_table.hpp"
 #include "cli/view_options.hpp"
+#include "math/view_limits.hpp"
 
 namespace impossible::preview {
 
 using cli::apply_options;
+using cli::FrameOptions;
 using cli::InputError;
 using cli::Option;
 using cli::options_help;
+using cli::OptionTable;
 using cli::OptionValue;
 using cli::parse_args;
-using cli::parse_clip;
-using cli::parse_fov;
-using cli::parse_fps;
 using cli::parse_int;
-using cli::parse_ipd;
-using cli::parse_light_depth;
-using cli::parse_samples;
-using cli::parse_shadow_size;
 using cli::parse_size;
-using cli::parse_stereo;
 using cli::ParsedArgs;
 using cli::UsageError;
 
@@ -71,13 +66,14 @@ const char* kPreviewKeys =
 
 std::pair<int, int> parse_window_size(const OptionValue& v) {
     const std::pair<int, int> size = parse_size(v.name, v.text);
-    if (size.first > 4096 || size.second > 4096)
+    if (!math::limits::kWindowEyeSide.contains(size.first) || !math::limits::kWindowEyeSide.contains(size.second))
         throw InputError(v.name + ": " + v.text + " is larger than a window can be (at most 4096x4096 per eye)");
     return size;
 }
 
 constexpr std::size_t kPreviewHelpColumn = 26;
-// In the order of the help and of the checks.
+// The preview's own rows, in the order of the help and of the checks; the
+// frame's rows (cli/frame_options.hpp) but --size, --time and --hands follow.
 constexpr Option<PreviewOptions> kPreviewOptions[] = {
     {"--size", "WxH",
      "size of each eye's image (default 640x480); the window starts 2W x H\n"
@@ -89,50 +85,6 @@ constexpr Option<PreviewOptions> kPreviewOptions[] = {
      [](PreviewOptions& o, const OptionValue&) { o.view = PreviewView::Cross; }},
     {"--anaglyph", nullptr, "one red-cyan picture (red: left eye)",
      [](PreviewOptions& o, const OptionValue&) { o.view = PreviewView::Anaglyph; }},
-    {"--ipd", "M", "distance between the eyes (default 0.064)",
-     [](PreviewOptions& o, const OptionValue& v) { o.frame.ipd = parse_ipd(v.text); }},
-    {"--fov", "DEG", "vertical field of view of each eye (default 90)",
-     [](PreviewOptions& o, const OptionValue& v) { o.frame.fov_y_deg = parse_fov(v.text); }},
-    {"--fov-angles", "L,R,U,D", "asymmetric field of view as 'render' (4 or 8 numbers, degrees)",
-     [](PreviewOptions& o, const OptionValue& v) { o.frame.eye_optics = cli::parse_fov_angles(v.text); }},
-    {"--hmd", "FILE.json", "a headset profile as 'render' (docs/headsets.md)",
-     [](PreviewOptions& o, const OptionValue& v) { o.hmd = v.text; }},
-    {"--max-depth", "N", "portals one line of sight may pass (default 8, at most 250)",
-     [](PreviewOptions& o, const OptionValue& v) { o.frame.max_depth = parse_int(v.name, v.text, 0, 250); }},
-    {"--stereo", "MODE", "clip-shift (default), viewport-index or two-pass",
-     [](PreviewOptions& o, const OptionValue& v) { o.frame.stereo = parse_stereo(v.text); }},
-    {"--clip", "MODE", "clip-distance (default) or oblique",
-     [](PreviewOptions& o, const OptionValue& v) { o.frame.clip = parse_clip(v.text); }},
-    {"--no-cull", nullptr, "draw every portal and prop without per-eye culling and scissor",
-     [](PreviewOptions& o, const OptionValue&) { o.frame.cull_portals = false; }},
-    {"--portal-texture", "SCALE", "hybrid: the textures' scale of the eye size, as 'render'",
-     [](PreviewOptions& o, const OptionValue& v) {
-         o.frame.portal_texture_scale = cli::parse_portal_texture(v.name, v.text);
-     }},
-    {"--technique", "NAME", "stencil (default), hybrid or z-clear, as 'render'",
-     [](PreviewOptions& o, const OptionValue& v) { o.technique = cli::parse_technique(v.name, v.text); }},
-    {"--texture-from-level", "K", "hybrid: the level whose doors take textures (default 0)",
-     [](PreviewOptions& o, const OptionValue& v) { o.texture_from_level = parse_int(v.name, v.text, 0, 250); }},
-    {"--samples", "N",
-     "multisampling: 1 (default), 2, 4, 8 or 16 samples per pixel (the\n"
-     "counts the driver offers; llvmpipe: 4)",
-     [](PreviewOptions& o, const OptionValue& v) { o.frame.samples = parse_samples(v.text); }},
-    {"--light-depth", "N",
-     "portals light may pass (0..16), instead of the layout's\n"
-     "light_depth; only with \"lighting\": \"lights\"",
-     [](PreviewOptions& o, const OptionValue& v) { o.frame.light_depth = parse_light_depth(v.text); }},
-    {"--shadow-size", "N",
-     "texels per face side of the props' cube shadow maps (default\n"
-     "512, at most 4096; 0: props cast no shadows)",
-     [](PreviewOptions& o, const OptionValue& v) {
-         o.frame.shadow_map_size = parse_shadow_size(v.text);
-         o.shadow_options = true;
-     }},
-    {"--no-shadows", nullptr, "props cast no shadows (lit layouts)",
-     [](PreviewOptions& o, const OptionValue&) {
-         o.frame.shadows = false;
-         o.shadow_options = true;
-     }},
     {"--no-hud", nullptr, "start with the HUD / minimap hidden",
      [](PreviewOptions& o, const OptionValue&) { o.hud = false; }, "--no-hud, --no-minimap"},
     {"--no-minimap", nullptr, nullptr, [](PreviewOptions& o, const OptionValue&) { o.minimap = false; }},
@@ -146,7 +98,7 @@ constexpr Option<PreviewOptions> kPreviewOptions[] = {
     {"--fps", "N",
      "with --path: frame k is at time k / N for moving props (default\n"
      "90); without it, the time is the seconds since the preview started",
-     [](PreviewOptions& o, const OptionValue& v) { o.fps = parse_fps(v.text); }},
+     [](PreviewOptions& o, const OptionValue& v) { o.fps = cli::parse_fps(v); }},
     {"--screenshots", "DIR",
      "save every frame: frame-NNNN.png (the renderer's side-by-side\n"
      "image, exactly as 'render' writes it at --size), frame-NNNN-ids.png,\n"
@@ -157,12 +109,27 @@ constexpr Option<PreviewOptions> kPreviewOptions[] = {
      [](PreviewOptions& o, const OptionValue& v) { o.frames = parse_int(v.name, v.text, 1, 100000000); }},
 };
 
+// render's frame rows, but the window's --size and what the preview drives
+// itself (the time, and the hands by G).
+OptionTable<FrameOptions> preview_frame_rows() {
+    static const std::vector<Option<FrameOptions>> rows = [] {
+        std::vector<Option<FrameOptions>> all;
+        for (OptionTable<FrameOptions> t : {cli::view_rows(), cli::technique_rows(), cli::diagnostic_rows()})
+            all.insert(all.end(), t.begin(), t.end());
+        return cli::without(all, {"--size", "--time", "--hands"});
+    }();
+    return rows;
+}
+
 }  // namespace
 
-std::string preview_help() { return kPreviewUsage + options_help(kPreviewOptions, kPreviewHelpColumn) + kPreviewKeys; }
+std::string preview_help() {
+    return kPreviewUsage + options_help(kPreviewOptions, kPreviewHelpColumn) +
+           options_help(preview_frame_rows(), kPreviewHelpColumn) + kPreviewKeys;
+}
 
 PreviewOptions parse_preview_options(const std::vector<std::string>& args, bool* help) {
-    const ParsedArgs a = parse_args(args, 1, kPreviewOptions);
+    const ParsedArgs a = parse_args(args, 1, kPreviewOptions, preview_frame_rows());
     PreviewOptions o;
     *help = a.help;
     if (a.help) return o;
@@ -171,9 +138,10 @@ PreviewOptions parse_preview_options(const std::vector<std::string>& args, bool*
     if (a.value("--fps") && !a.value("--path")) throw UsageError("--fps needs --path FILE");
     cli::check_headset_combinations(a);
     apply_options(kPreviewOptions, a, o);
-    cli::resolve_technique(o.technique, o.texture_from_level, o.frame);
-    if (o.hmd) cli::apply_hmd_profile(*o.hmd, o.frame, a.value("--size").has_value(), a.value("--ipd").has_value());
-    if (o.frame.eye_width > 4096 || o.frame.eye_height > 4096)
+    apply_options(preview_frame_rows(), a, o);
+    cli::finish_frame_options(a, o);
+    if (!math::limits::kWindowEyeSide.contains(o.frame.eye_width) ||
+        !math::limits::kWindowEyeSide.contains(o.frame.eye_height))
         throw InputError("--hmd: " + *o.hmd +
                          "'s eye size is larger than a window can be (at most 4096x4096 per eye; give --size)");
     return o;

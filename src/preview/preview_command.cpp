@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "cli/errors.hpp"
+#include "cli/field_flags.hpp"
 #include "cli/view_options.hpp"
 #include "gl/gl.hpp"
 #include "math/projection.hpp"
@@ -51,7 +52,7 @@ math::HeadPose next_physical_head(const PreviewSession& s, long frame, double dt
     if (static_cast<std::size_t>(frame) < s.path.size()) return s.path[static_cast<std::size_t>(frame)].head;
     const WindowInput& in = s.window->input;
     const MoveInput move = move_input(in.held, dt, cursor_captured(*s.window), in.mouse_dx, in.mouse_dy);
-    return move_head(s.physical, move, s.shown.layout->play_area);
+    return move_head(s.physical, move, s.shown.session->layout().play_area);
 }
 
 // The physical hands: the path's line's while the path lasts and the line
@@ -87,7 +88,7 @@ render::FrameDesc frame_desc(const PreviewSession& s, long frame, const PixelRec
 
 FrameRecord frame_record(const PreviewSession& s, long frame, const render::FrameDesc& desc,
                          const std::vector<int>& passed) {
-    const layout::Layout& lay = *s.shown.layout;
+    const layout::Layout& lay = s.shown.session->layout();
     FrameRecord r;
     r.frame = frame;
     r.room = lay.rooms[desc.room].id;
@@ -115,7 +116,7 @@ double save_rendered_frame(PreviewSession& s, long frame, const render::FrameDes
 
 // The boundary grid, per eye, seen by the physical eyes.
 void draw_boundary_grids(PreviewSession& s, const WindowLayout& places, int fb_w, int fb_h) {
-    const std::optional<layout::PlayArea>& area = s.shown.layout->play_area;
+    const std::optional<layout::PlayArea>& area = s.shown.session->layout().play_area;
     if (!area) return;
     math::Frustum frustum;
     frustum.fov_y_deg = s.options.frame.fov_y_deg;
@@ -144,14 +145,14 @@ HudFacts hud_facts(const PreviewSession& s, const render::FrameDesc& desc) {
     f.timed_frames = s.clock.frame_ms.size();
     f.eye_width = desc.eye_width;
     f.eye_height = desc.eye_height;
-    f.room = s.shown.layout->rooms[desc.room].id;
+    f.room = s.shown.session->layout().rooms[desc.room].id;
     f.portal_passes_drawn = s.stats.portal_passes_drawn;
     f.portal_passes_culled = s.stats.portal_passes_culled;
     f.max_level_reached = s.stats.max_level_reached;
     f.physical = s.physical;
     f.cursor_captured = cursor_captured(*s.window);
     f.time = desc.time;
-    const layout::Layout& layout = *s.shown.layout;
+    const layout::Layout& layout = s.shown.session->layout();
     f.lit = layout.lighting == layout::Lighting::Lights;
     f.room_lights = static_cast<int>(layout.rooms[desc.room].lights.size());
     f.light_images = s.stats.light_images;
@@ -172,8 +173,8 @@ void draw_window(PreviewSession& s, const WindowLayout& places, const render::Fr
     if (s.options.minimap) {
         const float side = std::min(0.42f * float(fb_h), 0.3f * float(fb_w));
         const walk::Walker& walker = *s.shown.walker;
-        const MinimapInput map{s.shown.layout.get(), desc.room, walker.physical_to_virtual(), &walker.links().transfer,
-                               s.physical};
+        const MinimapInput map{&s.shown.session->layout(), desc.room, walker.physical_to_virtual(),
+                               &walker.links().transfer, s.physical};
         add_minimap(batch, map, {float(fb_w) - side - 8.0f, float(fb_h) - side - 8.0f}, side);
     }
     draw_overlay(s.overlay, *s.state, batch);
@@ -208,7 +209,7 @@ bool run_frame(PreviewSession& s, long frame, std::ostream& err) {
     if (fb_w <= 0 || fb_h <= 0) return true;  // minimised
     const WindowLayout places = window_layout(fb_w, fb_h, eye_aspect(s.options), s.options.view);
     const render::FrameDesc desc = frame_desc(s, frame, places.eye_rects[0]);
-    check(s.shown.renderer->draw(desc, &s.stats));
+    check(cli::with_flags(s.shown.renderer->draw(desc, &s.stats)));
     s.clock.io_seconds = save_rendered_frame(s, frame, desc, passed);
     draw_window(s, places, desc, fb_w, fb_h);
     s.clock.io_seconds += save_window_files(s, frame, keys.screenshot, fb_w, fb_h, err);
@@ -230,7 +231,7 @@ int run_preview_command(const cli::Args& args, std::ostream& out, std::ostream& 
     }
     PreviewSession session;
     open_session(session, std::move(options));
-    err << cli::light_options_warning(*session.shown.layout, session.options.frame.light_depth,
+    err << cli::light_options_warning(*session.shown.session, session.options.frame.light_depth,
                                       session.options.shadow_options);
     for (long frame = 0; !session.options.frames || frame < *session.options.frames; ++frame)
         if (!run_frame(session, frame, err)) break;

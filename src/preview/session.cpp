@@ -4,7 +4,6 @@
 
 #include "cli/errors.hpp"
 #include "cli/layout_source.hpp"
-#include "scene/scene.hpp"
 
 namespace impossible::preview {
 
@@ -12,12 +11,11 @@ using cli::value_or_throw;
 
 Result<Shown> build_shown(gl::StateCache& state, layout::Layout layout, const std::string& room_id) {
     Shown s;
-    s.layout = std::make_unique<layout::Layout>(std::move(layout));
-    Result<render::Renderer> made = render::Renderer::create(state, scene::build_scene(*s.layout));
+    s.session = std::make_unique<session::Session>(std::move(layout));
+    Result<render::Renderer> made = s.session->make_renderer(state);
     if (!made) return made;
     s.renderer = std::make_unique<render::Renderer>(std::move(*made));
-    const int room = layout::find_room(*s.layout, room_id);
-    s.walker = room >= 0 ? std::make_unique<walk::Walker>(*s.layout, room) : std::make_unique<walk::Walker>(*s.layout);
+    s.walker = std::make_unique<walk::Walker>(s.session->make_walker(layout::find_room(s.session->layout(), room_id)));
     return s;
 }
 
@@ -55,6 +53,7 @@ void open_session(PreviewSession& s, PreviewOptions options) {
     cli::CommandOutputs files;
     if (o.layout_path) files.input("the layout", *o.layout_path);
     if (o.path_file) files.input("--path", *o.path_file);
+    if (o.hmd) files.input("--hmd", *o.hmd);
     declare_frame_files(files, o.screenshots);
     layout::Layout first = cli::load_layout_or_default(o.layout_path, files);
     if (o.path_file) s.path = value_or_throw(layout::read_path_frames_file(*o.path_file));
@@ -68,7 +67,7 @@ void open_session(PreviewSession& s, PreviewOptions options) {
     s.presenter = value_or_throw(build_presenter());
 
     if (o.layout_path) s.watcher = watch_layout(*o.layout_path);
-    s.physical = start_pose(*s.shown.layout);
+    s.physical = start_pose(s.shown.session->layout());
     if (!o.path_file) capture_cursor(*s.window, true);
     s.clock.last = s.clock.last_poll = s.clock.start = Clock::now();
 }
@@ -80,7 +79,7 @@ void poll_reload(PreviewSession& s, Clock::time_point now) {
     if (r.kind == ReloadPoll::Failed) s.reload_errors = r.errors;
     if (r.kind != ReloadPoll::Reloaded) return;
     const walk::Walker& walker = *s.shown.walker;
-    const std::string room_id = s.shown.layout->rooms[walker.room()].id;
+    const std::string room_id = s.shown.session->layout().rooms[walker.room()].id;
     const bool walking = walker.started();
     const math::dmat4 w = walker.physical_to_virtual();
     Result<Shown> built = build_shown(*s.state, std::move(*r.layout), room_id);
@@ -91,14 +90,14 @@ void poll_reload(PreviewSession& s, Clock::time_point now) {
     Shown& next = *built;
     // Walk on where the head was: same room (if it still exists) and the
     // same physical-to-virtual mapping.
-    if (walking && layout::find_room(*next.layout, room_id) >= 0) next.walker->resume(w, s.physical);
+    if (walking && layout::find_room(next.session->layout(), room_id) >= 0) next.walker->resume(w, s.physical);
     s.shown = std::move(next);
     s.reload_errors.clear();
 }
 
 void reset_walk(PreviewSession& s) {
-    s.shown.walker = std::make_unique<walk::Walker>(*s.shown.layout);
-    s.physical = start_pose(*s.shown.layout);
+    s.shown.walker = std::make_unique<walk::Walker>(s.shown.session->make_walker());
+    s.physical = start_pose(s.shown.session->layout());
 }
 
 }  // namespace impossible::preview

@@ -24,6 +24,7 @@
 #include "preview/window.hpp"
 #include "render/frame.hpp"
 #include "render/renderer.hpp"
+#include "session/session.hpp"
 #include "walk/replay.hpp"
 #include "walk/walker.hpp"
 
@@ -34,10 +35,11 @@ using Clock = std::chrono::steady_clock;
 inline constexpr std::size_t kTimedFrames = 60;  // frames in the HUD's median
 inline constexpr double kReloadPollSeconds = 0.25;
 
-// The layout being shown and what is built from it. The walker points into
-// the layout, so both live on the heap and are replaced together.
+// The layout being shown (its session) and what is built from it. The walker
+// points into the session's layout, so both live on the heap and are
+// replaced together.
 struct Shown {
-    std::unique_ptr<layout::Layout> layout;
+    std::unique_ptr<session::Session> session;
     std::unique_ptr<render::Renderer> renderer;
     std::unique_ptr<walk::Walker> walker;
 };

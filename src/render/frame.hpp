@@ -9,6 +9,7 @@
 #include "layout/limits.hpp"
 #include "math/pose.hpp"
 #include "math/view.hpp"
+#include "math/view_limits.hpp"
 
 namespace impossible::render {
 
@@ -46,18 +47,65 @@ inline constexpr int kDefaultMaxPortalPasses = math::kDefaultMaxPortalPasses;
 
 // Cube shadow maps' texels per face side (--shadow-size, FrameDesc).
 inline constexpr int kDefaultShadowMapSize = 512;
-inline constexpr int kMaxShadowMapSize = 4096;
+inline constexpr int kMaxShadowMapSize = math::limits::kShadowMapSize.max;
 
-// The view (scene/view.hpp) and how the rasteriser draws it.
-// View::max_portal_passes is the frame's budget: past it, portals show the
-// fill colour (FrameStats::budget_fills). Only a frame that needs more changes.
-struct FrameDesc : math::View {
-    double near = 0.0;  // 0: the depth mode's own (kNearReversedZ, kNearStandard)
-    double far = 2e5;   // only for DepthMode::Standard: beyond any valid layout
+// How the rasteriser draws a view: the settings a user picks (the command
+// line's technique options, the library's RenderOptions, Python's keyword
+// arguments). The view's own max_portal_passes and light_depth are
+// math::View's, as the tracer reads them too.
+struct Technique {
     StereoMode stereo = StereoMode::ClipShift;
     ClipMode clip = ClipMode::ClipDistance;
     DepthMode depth = DepthMode::ReversedZ;
-    bool cull_portals = true;  // per-eye frustum/facing culling and scissor
+    // Multisampling: 1 draws into single-sample buffers exactly as before;
+    // N > 1 draws into N-sample colour, id and depth-stencil buffers (the
+    // stencil portals then work per sample) and resolves them into the
+    // single-sample target at the end of the frame: colour by averaging
+    // (glBlitNamedFramebuffer), ids by a majority vote over the samples
+    // (docs/accuracy.md, "Anti-aliasing"). A count the driver does not offer
+    // is an error.
+    int samples = 1;
+    // Render-to-texture portals, the classic technique, for comparison: with a
+    // scale > 0, each portal of the head's cell is drawn by rendering its view
+    // (both eyes side by side, recursion inside by stencil) into a texture of
+    // scale × the eye size, which the portal's box then shows. 0: stencil
+    // portals all the way (the default). Needs StereoMode::ClipShift.
+    double portal_texture_scale = 0.0;
+    // Hybrid portals (--technique hybrid --texture-from-level K, Valve's
+    // scheme as Rinsma describes it): with portal_texture_scale > 0, the
+    // doors seen at this recursion level are drawn through textures (all
+    // deeper levels inside them by stencil); the levels above it by stencil.
+    // 0: the doors of the head's cell, as above. A level at or past max_depth
+    // draws no texture (byte for byte the stencil frame).
+    int portal_texture_level = 0;
+    // z-clear portals (--technique z-clear, the PowerVR scheme;
+    // render/technique_zclear.cpp): each visible door's target room drawn
+    // first within its rectangle, depth cleared, the doors into depth, then
+    // the head's room. Depth 1 (max_depth <= 1), doors only, with culling,
+    // no portal textures; anything else is an error.
+    bool z_clear = false;
+    // With culling: also test each visible portal of the head's cell for
+    // occlusion (a query after the cell's surfaces) and drop the subtree of a
+    // hidden one by conditional rendering. Exact, but the driver must
+    // synchronise once a frame (about 1 ms on llvmpipe), so it pays only
+    // where portals hide behind props or a concave room's own walls; off by
+    // default (without it such a portal is drawn and hidden by depth).
+    bool occlusion_test = false;
+    // Under "lighting": "lights" (layout-format.md, "Lights"): the shadows
+    // props cast, from cube shadow maps of shadow_map_size² texels per face
+    // and light image (render/shadow_maps.hpp); off (or a size of 0): light
+    // passes props as if they were not there. No effect on "fixed" layouts.
+    bool shadows = true;
+    int shadow_map_size = kDefaultShadowMapSize;
+};
+
+// Switches that exist only to compare (tests, bench) and the profiler: none
+// changes the image but the near and far planes, textures_mip_level0 and
+// cull_portals' scissor.
+struct Diagnostics {
+    double near = 0.0;         // 0: the depth mode's own (kNearReversedZ, kNearStandard)
+    double far = 2e5;          // only for DepthMode::Standard: beyond any valid layout
+    bool cull_portals = true;  // per-eye frustum/facing culling and scissor (off: --no-cull)
     // With culling: props are drawn only where an eye's frustum, narrowed
     // through the portals, may see their bounds, and a portal hidden behind
     // one of its room's large box props is skipped with its subtree
@@ -82,52 +130,18 @@ struct FrameDesc : math::View {
     // tracer reads them, instead of through their mipmaps: for comparing the
     // two (tests, bench's error), never for viewing (minified textures alias).
     bool textures_mip_level0 = false;
-    // With culling: also test each visible portal of the head's cell for
-    // occlusion (a query after the cell's surfaces) and drop the subtree of a
-    // hidden one by conditional rendering. Exact, but the driver must
-    // synchronise once a frame (about 1 ms on llvmpipe), so it pays only
-    // where portals hide behind props or a concave room's own walls; off by
-    // default (without it such a portal is drawn and hidden by depth).
-    bool occlusion_test = false;
-    // Render-to-texture portals, the classic technique, for comparison: with a
-    // scale > 0, each portal of the head's cell is drawn by rendering its view
-    // (both eyes side by side, recursion inside by stencil) into a texture of
-    // scale × the eye size, which the portal's box then shows. 0: stencil
-    // portals all the way (the default). Needs StereoMode::ClipShift.
-    double portal_texture_scale = 0.0;
-    // Hybrid portals (--technique hybrid --texture-from-level K, Valve's
-    // scheme as Rinsma describes it): with portal_texture_scale > 0, the
-    // doors seen at this recursion level are drawn through textures (all
-    // deeper levels inside them by stencil); the levels above it by stencil.
-    // 0: the doors of the head's cell, as above. A level at or past max_depth
-    // draws no texture (byte for byte the stencil frame).
-    int portal_texture_level = 0;
-    // z-clear portals (--technique z-clear, the PowerVR scheme;
-    // render/technique_zclear.cpp): each visible door's target room drawn
-    // first within its rectangle, depth cleared, the doors into depth, then
-    // the head's room. Depth 1 (max_depth <= 1), doors only, with culling,
-    // no portal textures; anything else is an error.
-    bool z_clear = false;
     // Measure the frame (for `impossible bench`): GL_SAMPLES_PASSED queries
     // around the colour passes, and glFinish + a monotonic clock around each
     // level-0 portal's subtree. The glFinish calls perturb the frame's own
     // time, so time frames with this off. Off: no queries, no extra work.
     bool profile = false;
-    // Multisampling: 1 draws into single-sample buffers exactly as before;
-    // N > 1 draws into N-sample colour, id and depth-stencil buffers (the
-    // stencil portals then work per sample) and resolves them into the
-    // single-sample target at the end of the frame: colour by averaging
-    // (glBlitNamedFramebuffer), ids by a majority vote over the samples
-    // (docs/accuracy.md, "Anti-aliasing"). A count the driver does not offer
-    // is an error.
-    int samples = 1;
-    // Under "lighting": "lights" (layout-format.md, "Lights"): the shadows
-    // props cast, from cube shadow maps of shadow_map_size² texels per face
-    // and light image (render/shadow_maps.hpp); off (or a size of 0): light
-    // passes props as if they were not there. No effect on "fixed" layouts.
-    bool shadows = true;
-    int shadow_map_size = kDefaultShadowMapSize;
 };
+
+// One frame for the rasteriser, in three parts: the view (math/view.hpp,
+// what the tracer draws too), the technique and the diagnostics.
+// View::max_portal_passes is the frame's budget: past it, portals show the
+// fill colour (FrameStats::budget_fills). Only a frame that needs more changes.
+struct FrameDesc : math::View, Technique, Diagnostics {};
 
 inline double near_distance(const FrameDesc& frame) {
     if (frame.near > 0.0) return frame.near;

@@ -71,7 +71,7 @@ Result<void> check_sample_count(int samples, DepthMode depth) {
     glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
     glGetIntegerv(GL_MAX_INTEGER_SAMPLES, &max_integer);
     const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    return Error{"--samples " + std::to_string(samples) + ": the OpenGL driver (" + (renderer ? renderer : "unknown") +
+    return Error{"{samples} " + std::to_string(samples) + ": the OpenGL driver (" + (renderer ? renderer : "unknown") +
                  ") offers " + list + " samples for these buffers (GL_MAX_SAMPLES " + std::to_string(max_samples) +
                  ", GL_MAX_INTEGER_SAMPLES " + std::to_string(max_integer) + ")"};
 }

@@ -101,7 +101,7 @@ Result<void> prepare_frame(RendererData& r, FrameTargets& targets, const FrameDe
     if (frame.z_clear)
         if (Result<void> ok = check_zclear(r, frame); !ok) return ok;
     if (frame.portal_texture_scale <= 0.0) return {};
-    if (frame.stereo != StereoMode::ClipShift) return Error{"render-to-texture portals need --stereo clip-shift"};
+    if (frame.stereo != StereoMode::ClipShift) return Error{"render-to-texture portals need {stereo} clip-shift"};
     if (!programs.portal_texture) {
         Result<SceneProgram> built = build_portal_texture_program();
         if (!built) return built;

@@ -88,16 +88,18 @@ void zclear_draw_target(const DrawContext& ctx, const LevelView& view, int p, co
 }  // namespace
 
 Result<void> check_zclear(const RendererData& r, const FrameDesc& frame) {
-    const std::string refused = "--technique z-clear ";
+    // Settings are named as {field}, for each front end to spell
+    // (session/field_error.hpp): the command line as its flags.
+    const std::string refused = "{technique} z-clear ";
     if (frame.max_depth > 1)
-        return Error{refused + "draws one level of doors: --max-depth " + std::to_string(frame.max_depth) +
-                     " (give --max-depth 1)"};
+        return Error{refused + "draws one level of doors: {max_depth} " + std::to_string(frame.max_depth) +
+                     " (give {max_depth} 1)"};
     for (const scene::PortalInfo& p : r.portals)
         if (p.kind != layout::PortalKind::Door)
             return Error{refused + "draws doors only: the layout has a " +
                          (p.kind == layout::PortalKind::Mirror ? "mirror" : "window")};
     if (r.has_volumes) return Error{refused + "draws doors only: the layout has volumes"};
-    if (!frame.cull_portals) return Error{refused + "needs each door's rectangle: not with --no-cull"};
+    if (!frame.cull_portals) return Error{refused + "needs each door's rectangle: not with {no_cull}"};
     if (frame.portal_texture_scale > 0.0) return Error{refused + "and portal textures exclude each other"};
     return {};
 }

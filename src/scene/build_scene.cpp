@@ -104,14 +104,16 @@ void append_cell(Scene& scene, MeshWriter& out, const layout::Layout& layout, st
 
 }  // namespace
 
-Scene build_scene(const layout::Layout& layout) {
+Scene build_scene(const layout::Layout& layout) { return build_scene(layout, links::link_portals(layout)); }
+
+Scene build_scene(const layout::Layout& layout, const links::PortalLinks& links) {
     Scene scene;
     MeshWriter out{scene};
     // Fronts of portals that are holes in their room's faces, set while the
     // room is built so that they share the wall's vertices.
     std::vector<std::optional<FrontGrid>> fronts(layout.portals.size());
     const std::vector<std::vector<int>> room_portals = portals_by_room(layout);
-    scene.links = links::link_portals(layout);
+    scene.links = links;
     scene.object_set = walk::build_object_set(layout, scene.links);
     scene.object_set.dynamic.resize(layout.rooms.size());
     scene.volumes.resize(layout.rooms.size());

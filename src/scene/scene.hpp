@@ -167,6 +167,9 @@ struct Scene {
 // Builds the meshes of every room and portal box, and links the portals. The
 // layout must be valid (from the loader); glTF props use the triangles the
 // loader read.
+Scene build_scene(const layout::Layout& layout, const links::PortalLinks& links);
+// The same, linking the layout's portals itself (tests and tools; the program
+// builds through session::Session, which links once).
 Scene build_scene(const layout::Layout& layout);
 
 }  // namespace impossible::scene

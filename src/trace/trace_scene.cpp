@@ -236,11 +236,12 @@ Result<void> add_objects(Scene& scene, const layout::Layout& layout) {
 
 }  // namespace
 
-Result<Scene> prepare_scene(const layout::Layout& layout) {
+Result<Scene> prepare_scene(const layout::Layout& layout) { return prepare_scene(layout, links::link_portals(layout)); }
+
+Result<Scene> prepare_scene(const layout::Layout& layout, const links::PortalLinks& links) {
     if (const std::optional<Error> error = check_portals(layout)) return *error;
     Scene scene;
     scene.lit = layout.lighting == layout::Lighting::Lights;
-    const links::PortalLinks links = links::link_portals(layout);
     scene.max_light_depth = scene.lit ? lights::max_light_depth(layout, links) : layout::kMaxLightDepth;
     scene.light_depth = std::min(layout.light_depth, scene.max_light_depth);
     scene.objects = walk::build_object_set(layout, links);

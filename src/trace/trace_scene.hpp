@@ -277,6 +277,9 @@ bool cuts_hole(const AxisRect& face, const math::PortalRect& rect);
 // out of range or whose target has portals or volumes, and a model's
 // material or texture indices out of range are an error naming the portal,
 // volume or model.
+Result<Scene> prepare_scene(const layout::Layout& layout, const links::PortalLinks& links);
+// The same, linking the layout's portals itself (tests and tools; the program
+// prepares through session::Session, which links once).
 Result<Scene> prepare_scene(const layout::Layout& layout);
 
 }  // namespace impossible::trace

@@ -18,12 +18,17 @@ void set_walked_view(math::View& view, const Walker& walker, const HandPoses& ph
     view.hands = virtual_hands(walker.physical_to_virtual(), physical_hands);
 }
 
-void set_replayed_view(math::View& view, const layout::Layout& layout, const std::vector<layout::PathFrame>& frames,
-                       std::size_t line, double fps) {
-    Walker walker(layout);
+void replay_view(math::View& view, Walker& walker, const std::vector<layout::PathFrame>& frames, std::size_t line,
+                 double fps) {
     for (std::size_t k = 0; k <= line && k < frames.size(); ++k) walker.step(frames[k].head);
     set_walked_view(view, walker, frames[line].hands);
     view.time = line_time(line, fps);
+}
+
+void set_replayed_view(math::View& view, const layout::Layout& layout, const std::vector<layout::PathFrame>& frames,
+                       std::size_t line, double fps) {
+    Walker walker(layout);
+    replay_view(view, walker, frames, line, fps);
 }
 
 }  // namespace impossible::walk

@@ -35,9 +35,14 @@ void set_walked_view(math::View& view, const Walker& walker, const HandPoses& ph
 // The time of line `line` at `fps` frames a second.
 inline double line_time(std::size_t line, double fps) { return static_cast<double>(line) / fps; }
 
-// Walks lines 0..line of `frames` from the layout's start (as `walk` does)
+// Walks lines 0..line of `frames` with a new `walker` (as `walk` does)
 // and sets the view's head, room and hands to line `line`'s and its time to
 // line / fps. `line` must be below frames.size().
+void replay_view(math::View& view, Walker& walker, const std::vector<layout::PathFrame>& frames, std::size_t line,
+                 double fps);
+
+// The same with a walker from the layout's start that links the layout
+// itself (tests and tools; the program replays through session::Session).
 void set_replayed_view(math::View& view, const layout::Layout& layout, const std::vector<layout::PathFrame>& frames,
                        std::size_t line, double fps);
 

@@ -32,7 +32,7 @@ Replay replay(const layout::Layout& l, const std::string& path_text, const std::
     std::istringstream in(path_text);
     std::ostringstream out, err;
     Replay r;
-    r.status = run_walk_stream(l, in, name, out, err);
+    r.status = run_walk_stream(session::Session(l), in, name, out, err);
     r.out = out.str();
     r.err = err.str();
     return r;
@@ -158,17 +158,17 @@ TEST(RunWalk, ReadsAFileAndReportsMissingOnes) {
         f << "0 1.6 1 0 0 0\n0 1.6 0.5 0 0 0\n";
     }
     std::ostringstream out, err;
-    EXPECT_EQ(run_walk(doorway(), file, out, err), 0);
+    EXPECT_EQ(run_walk(session::Session(doorway()), file, out, err), 0);
     EXPECT_EQ(parse_lines(out.str()).size(), 2u);
     EXPECT_EQ(err.str(), "");
 
     std::ostringstream out2, err2;
-    EXPECT_EQ(run_walk(doorway(), (dir / "missing.txt").string(), out2, err2), 1);
+    EXPECT_EQ(run_walk(session::Session(doorway()), (dir / "missing.txt").string(), out2, err2), 1);
     EXPECT_EQ(out2.str(), "");
     EXPECT_NE(err2.str().find("missing.txt: does not exist"), std::string::npos) << err2.str();
 
     std::ostringstream out3, err3;
-    EXPECT_EQ(run_walk(doorway(), dir.path().string(), out3, err3), 1);
+    EXPECT_EQ(run_walk(session::Session(doorway()), dir.path().string(), out3, err3), 1);
     EXPECT_EQ(out3.str(), "");
     EXPECT_NE(err3.str().find("directory"), std::string::npos) << err3.str();
 }

@@ -26,7 +26,7 @@ layout::Layout mirrors_windows() {
 std::vector<nlohmann::json> walk(const layout::Layout& l, const std::string& path) {
     std::istringstream in(path);
     std::ostringstream out, err;
-    EXPECT_EQ(run_walk_stream(l, in, "walk.txt", out, err), 0) << err.str();
+    EXPECT_EQ(run_walk_stream(session::Session(l), in, "walk.txt", out, err), 0) << err.str();
     EXPECT_EQ(err.str(), "");
     std::vector<nlohmann::json> lines;
     std::istringstream text(out.str());

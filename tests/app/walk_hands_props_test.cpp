@@ -32,7 +32,7 @@ HandsReplay hands_replay(const layout::Layout& l, const std::string& text, doubl
     std::istringstream in(text);
     std::ostringstream out, err;
     HandsReplay r;
-    r.status = run_walk_stream(l, in, "walk.txt", out, err, fps);
+    r.status = run_walk_stream(session::Session(l), in, "walk.txt", out, err, fps);
     r.out = out.str();
     r.err = err.str();
     std::istringstream lines(r.out);

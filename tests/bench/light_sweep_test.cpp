@@ -12,6 +12,12 @@
 namespace impossible::bench {
 namespace {
 
+// --sweep as parse_bench_options reads it: the items parsed before any layout.
+void set_sweep(BenchOptions& o, const std::string& sweep) {
+    o.sweep = sweep;
+    o.sweep_items = parse_sweep(sweep);
+}
+
 layout::Layout two_rooms() {
     layout::Layout l;
     l.rooms.resize(2);
@@ -57,25 +63,23 @@ TEST(BenchLightSweep, PlanItems) {
     l.start.room = 0;
     l.start.position = {0, 1.6, 0};
     BenchOptions o;
-    o.sweep = "lights:fixed,0,8";
-    const BenchPlan plan = plan_bench(l, o);
+    set_sweep(o, "lights:fixed,0,8");
+    const BenchPlan plan = plan_bench(session::Session(l), o);
     ASSERT_EQ(plan.configs.size(), 4u);  // base + 3
-    ASSERT_EQ(plan.layouts.size(), 4u);
-    EXPECT_EQ(plan.layouts[plan.configs[1].layout_variant].lighting, layout::Lighting::Fixed);
-    EXPECT_EQ(plan.layouts[plan.configs[3].layout_variant].rooms[0].lights.size(), 8u);
-    o.sweep = "lights:x";
-    EXPECT_THROW(plan_bench(l, o), cli::InputError);
+    ASSERT_EQ(plan.sessions.size(), 4u);
+    EXPECT_EQ(plan.sessions[plan.configs[1].layout_variant].layout().lighting, layout::Lighting::Fixed);
+    EXPECT_EQ(plan.sessions[plan.configs[3].layout_variant].layout().rooms[0].lights.size(), 8u);
+    EXPECT_THROW(set_sweep(o, "lights:x"), cli::InputError);
     // The light depth needs a lit layout; then each item sets View::light_depth.
-    o.sweep = "light-depth:0,2";
-    EXPECT_THROW(plan_bench(l, o), cli::InputError);
+    set_sweep(o, "light-depth:0,2");
+    EXPECT_THROW(plan_bench(session::Session(l), o), cli::InputError);
     l.lighting = layout::Lighting::Lights;
-    const BenchPlan depths = plan_bench(l, o);
+    const BenchPlan depths = plan_bench(session::Session(l), o);
     ASSERT_EQ(depths.configs.size(), 3u);
     EXPECT_EQ(depths.configs[2].frame.light_depth, 2);
-    o.sweep = "light-depth:17";
-    EXPECT_THROW(plan_bench(l, o), cli::InputError);
-    o.sweep = "shadow-size:0,256";
-    const BenchPlan sizes = plan_bench(l, o);
+    EXPECT_THROW(set_sweep(o, "light-depth:17"), cli::InputError);
+    set_sweep(o, "shadow-size:0,256");
+    const BenchPlan sizes = plan_bench(session::Session(l), o);
     ASSERT_EQ(sizes.configs.size(), 3u);
     EXPECT_FALSE(sizes.configs[1].frame.shadows);
     EXPECT_EQ(sizes.configs[2].frame.shadow_map_size, 256);
@@ -102,10 +106,10 @@ TEST(BenchLightSweep, PrismRoomsKeepLightsAndBoxesOnTheirFloors) {
         EXPECT_NEAR(sum, 4.0, 1e-12) << room.id;
     }
     BenchOptions o;
-    o.sweep = "boxes:100";
-    const BenchPlan plan = plan_bench(l, o);
-    ASSERT_EQ(plan.layouts.size(), 2u);
-    for (const layout::Room& room : plan.layouts[1].rooms) {
+    set_sweep(o, "boxes:100");
+    const BenchPlan plan = plan_bench(session::Session(l), o);
+    ASSERT_EQ(plan.sessions.size(), 2u);
+    for (const layout::Room& room : plan.sessions[1].layout().rooms) {
         ASSERT_GT(room.props.size(), 0u);
         EXPECT_LT(room.props.size(), 100u);
         for (const layout::Prop& prop : room.props) {

@@ -16,7 +16,8 @@ BenchOptions parse(const cli::Args& args) {
 
 TEST(BenchOptions, TheViewOptionsLackTheImageFilesAndStats) {
     std::set<std::string> names;
-    for (const auto& o : bench_view_options()) EXPECT_TRUE(names.insert(o.name).second) << o.name;
+    for (const auto& o : bench_view_options().own) EXPECT_TRUE(names.insert(o.name).second) << o.name;
+    for (const auto& o : bench_view_options().frame) EXPECT_TRUE(names.insert(o.name).second) << o.name;
     for (const auto& o : bench_options()) EXPECT_TRUE(names.insert(o.name).second) << o.name;
     for (const char* gone : {"--out", "--ids", "--stats"}) {
         EXPECT_EQ(names.count(gone), 0u) << gone;
@@ -73,6 +74,28 @@ TEST(BenchOptions, BadValuesAndCombinations) {
     const BenchOptions o = parse({"--path", "w.txt", "--fps", "30"});
     EXPECT_EQ(o.fps, 30.0);
     EXPECT_EQ(parse({"--time", "2", "--hands", "0,1,0,0,0,0,0,1,0,0,0,0"}).view.frame.time, 2.0);
+}
+
+// A sweep's items are read with the options, before any layout is loaded,
+// by the frame rows' parsers, and a bad one names --sweep KIND.
+TEST(BenchOptions, SweepItemsAreParsedByTheRowsAndNameTheSweep) {
+    const auto message = [](const cli::Args& args) {
+        try {
+            parse(args);
+        } catch (const cli::InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(message({"--sweep", "samples:1,3"}), "--sweep samples: 3 is not 1, 2, 4, 8 or 16");
+    EXPECT_EQ(message({"--sweep", "depth:251"}), "--sweep depth: 251 is out of range 0..250");
+    EXPECT_EQ(message({"--sweep", "shadow-size:4097"}), "--sweep shadow-size: 4097 is out of range 0..4096");
+    EXPECT_NE(message({"--sweep", "size:9000x10"}).find("--sweep size: "), std::string::npos);
+    const BenchOptions o = parse({"--sweep", "boxes:10,10/all-faces"});
+    ASSERT_EQ(o.sweep_items.size(), 2u);
+    EXPECT_EQ(o.sweep_items[1].n, 10);
+    EXPECT_EQ(o.sweep_items[1].suffix, "all-faces");
+    EXPECT_EQ(o.sweep_items[1].name, "boxes=10/all-faces");
 }
 
 }  // namespace

@@ -9,6 +9,12 @@
 namespace impossible::bench {
 namespace {
 
+// --sweep as parse_bench_options reads it: the items parsed before any layout.
+void with_sweep(BenchOptions& o, const std::string& sweep) {
+    o.sweep = sweep;
+    o.sweep_items = parse_sweep(sweep);
+}
+
 layout::Portal portal(const std::string& id, int target, layout::PortalKind kind) {
     layout::Portal p;
     p.id = id;
@@ -54,17 +60,16 @@ TEST(BenchPlan, AllStepsItemDrawsEveryDoorPass) {
     using layout::PortalKind;
     l.portals = {portal("a", 1, PortalKind::Door), portal("b", 0, PortalKind::Door)};
     BenchOptions o;
-    o.sweep = "portals:0,2,2/all-steps";
-    const BenchPlan plan = plan_bench(l, o);
+    with_sweep(o, "portals:0,2,2/all-steps");
+    const BenchPlan plan = plan_bench(session::Session(l), o);
     ASSERT_EQ(plan.configs.size(), 4u);  // base + 3
     EXPECT_EQ(plan.configs[2].name, "portals=2");
     EXPECT_TRUE(plan.configs[2].frame.portal_steps);
     EXPECT_EQ(plan.configs[3].name, "portals=2/all-steps");
     EXPECT_FALSE(plan.configs[3].frame.portal_steps);
-    EXPECT_EQ(plan.layouts[plan.configs[3].layout_variant].portals.size(), 2u);
-    EXPECT_TRUE(plan.layouts[plan.configs[1].layout_variant].portals.empty());
-    o.sweep = "portals:2/some-steps";
-    EXPECT_THROW(plan_bench(l, o), cli::InputError);
+    EXPECT_EQ(plan.sessions[plan.configs[3].layout_variant].layout().portals.size(), 2u);
+    EXPECT_TRUE(plan.sessions[plan.configs[1].layout_variant].layout().portals.empty());
+    EXPECT_THROW(with_sweep(o, "portals:2/some-steps"), cli::InputError);
 }
 
 }  // namespace

@@ -24,7 +24,7 @@ TEST_F(BenchWalk, EachLineHasItsTimeAndHands) {
     BenchOptions o;
     o.path = path;
     o.fps = 30.0;
-    const std::vector<BenchPose> poses = bench_poses(layout, o);
+    const std::vector<BenchPose> poses = bench_poses(session::Session(layout), o);
     ASSERT_EQ(poses.size(), 3u);
     const layout::PathFrames read = layout::read_path_frames_file(path);
     ASSERT_TRUE(read) << read.error();
@@ -42,7 +42,7 @@ TEST_F(BenchWalk, EachLineHasItsTimeAndHands) {
     BenchOptions still;
     still.view.frame.time = 4.5;
     still.view.frame.hands = std::array<math::HeadPose, 2>{};
-    const std::vector<BenchPose> one = bench_poses(layout, still);
+    const std::vector<BenchPose> one = bench_poses(session::Session(layout), still);
     ASSERT_EQ(one.size(), 1u);
     EXPECT_EQ(one[0].time, 4.5);
     EXPECT_TRUE(one[0].hands);

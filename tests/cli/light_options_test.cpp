@@ -10,7 +10,7 @@
 namespace impossible::cli {
 namespace {
 
-ViewOptions parse_lights(const Args& args, OptionTable<ViewOptions> table = view_options()) {
+ViewOptions parse_lights(const Args& args, const ViewTables& table = view_options()) {
     return parse_view_options(parse_args(args, 1, table), table);
 }
 
@@ -53,14 +53,14 @@ TEST(LightOptions, TraceHasNoShadowOptions) {
 TEST(LightOptions, AFixedLayoutWarnsOnce) {
     layout::Layout fixed;
     fixed.source = "a.json";
-    EXPECT_EQ(light_options_warning(fixed, std::nullopt, false), "");
-    EXPECT_EQ(light_options_warning(fixed, 3, false),
+    EXPECT_EQ(light_options_warning(session::Session(fixed), std::nullopt, false), "");
+    EXPECT_EQ(light_options_warning(session::Session(fixed), 3, false),
               "warning: --light-depth has no effect: a.json's lighting is \"fixed\"\n");
-    EXPECT_EQ(light_options_warning(fixed, std::nullopt, true),
+    EXPECT_EQ(light_options_warning(session::Session(fixed), std::nullopt, true),
               "warning: the shadow options have no effect: a.json's lighting is \"fixed\"\n");
     layout::Layout lit = fixed;
     lit.lighting = layout::Lighting::Lights;
-    EXPECT_EQ(light_options_warning(lit, 3, true), "");
+    EXPECT_EQ(light_options_warning(session::Session(lit), 3, true), "");
 }
 
 }  // namespace

@@ -23,8 +23,8 @@ layout::Layout l_and_notch() {
 }
 
 int room_at(const layout::Layout& l, const std::string& pose) {
-    const OptionTable<ViewOptions> table = view_options();
-    return frame_for(l, parse_view_options(parse_args({"--pose", pose}, 1, table), table)).room;
+    const ViewTables& table = view_options();
+    return frame_for(session::Session(l), parse_view_options(parse_args({"--pose", pose}, 1, table), table)).room;
 }
 
 std::string room_error(const layout::Layout& l, const std::string& pose) {

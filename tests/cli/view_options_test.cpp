@@ -1,6 +1,7 @@
 // The view options of render, trace and bench through their table: each
 // option reaches its field, the first bad value in table order is reported,
 // and bench's table lacks the image files.
+#include <set>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -10,7 +11,7 @@
 namespace impossible::cli {
 namespace {
 
-ViewOptions parse(const Args& args, OptionTable<ViewOptions> table = view_options()) {
+ViewOptions parse(const Args& args, const ViewTables& table = view_options()) {
     return parse_view_options(parse_args(args, 1, table), table);
 }
 
@@ -105,18 +106,31 @@ TEST(ViewOptions, BadValuesNameTheirOption) {
 }
 
 TEST(ViewOptions, TheHelpHasEveryOptionAtColumn29) {
-    const std::string help = options_help(view_options(), kViewHelpColumn);
-    for (const Option<ViewOptions>& o : view_options()) {
+    const std::string help = view_help(view_options());
+    const auto listed = [&](const auto& o) {
         const std::string left = option_label(o.name, o.value_name, o.label);
         // A long LEFT has its help on the next line.
         EXPECT_TRUE(help.find("  " + left + " ") != std::string::npos ||
                     help.find("  " + left + "\n") != std::string::npos)
             << left;
-    }
+    };
+    for (const Option<ViewOptions>& o : view_options().own) listed(o);
+    for (const Option<FrameOptions>& o : view_options().frame) listed(o);
     EXPECT_NE(help.find("\n  --room ID                  the room the head is in;"), std::string::npos);
     EXPECT_TRUE(
-        help.ends_with("\n  --stats                    print draw calls, triangles and portal passes"
-                       " to stderr\n"));
+        help.ends_with("\n  --no-cull                  draw every portal and prop without per-eye culling and"
+                       " scissor\n"));
+}
+
+// Every row of the frame's settings is declared once: render, trace, bench
+// and preview take the same rows, and no name is in two tables.
+TEST(ViewOptions, TheFramesRowsAreOneTablePerSettingsStruct) {
+    std::set<std::string> names;
+    for (OptionTable<FrameOptions> t : {view_rows(), technique_rows(), diagnostic_rows()})
+        for (const Option<FrameOptions>& o : t) EXPECT_TRUE(names.insert(o.name).second) << o.name;
+    for (const Option<ViewOptions>& o : view_options().own) EXPECT_TRUE(names.insert(o.name).second) << o.name;
+    EXPECT_EQ(view_options().frame.size(), view_rows().size() + technique_rows().size() + diagnostic_rows().size());
+    EXPECT_TRUE(names.count("--samples") && names.count("--stereo") && names.count("--max-depth"));
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string>
 
+#include "cli/field_flags.hpp"
 #include "cli/view_options.hpp"
 #include "gl_fixture.hpp"
 #include "image/compare.hpp"
@@ -110,7 +111,8 @@ std::string zclear_error(const layout::Layout& l, render::FrameDesc f) {
     EXPECT_TRUE(r) << r.error();
     if (!r) return "";
     Result<render::RenderedFrame> result = r->render(f);
-    return result ? "" : result.error();
+    // The renderer names settings as {field}; the command line spells them as flags.
+    return result ? "" : cli::with_flags(result.error());
 }
 
 TEST(Technique, ZClearRefusesWhatItCannotDraw) {

@@ -108,6 +108,19 @@ TEST_F(HostileOverInputs, BenchReportsOverAssetsAreUsageErrors) {
         "--csv gallery/double_sided.glb is the same file as the glTF model");
 }
 
+// bench --hmd p.json --json p.json replaced the profile with bench's JSON
+// and exited 0; render refused it. The profile is an input of every command.
+TEST_F(HostileOverInputs, BenchReportsOverTheHeadsetProfileAreUsageErrors) {
+    fs::copy_file(fs::path(IMPOSSIBLE_SOURCE_DIR) / "profiles/htc-vive.json", dir_ / "p.json");
+    before_[dir_ / "p.json"] = slurp(dir_ / "p.json");
+    for (const char* output : {"--json", "--csv"})
+        expect_kept(std::string("bench gallery.json --hmd p.json --size 32x24 --frames 1 --warmup 0 "
+                                "--profile-frames 1 ") +
+                        output + " p.json",
+                    std::string(output) + " p.json is the same file as --hmd");
+    expect_kept("render gallery.json --hmd p.json --size 32x24 --out p.json", "--out p.json is the same file as --hmd");
+}
+
 TEST_F(HostileOverInputs, EverySpellingOfAnAssetIsRefused) {
     ASSERT_EQ(
         run("ln -s gallery/brick.png link.png && ln -s gallery g && ln gallery/wood.png hard.png && mkdir sub").status,

@@ -88,3 +88,24 @@ def test_bad_headset_arguments(tmp_path):
     with pytest.raises(impossible.Error, match=r"left eye: visible_area\[1\] is not within 0..1"):
         impossible.trace(layout, size=(8, 8), fov_angles=(-40, 40, 40, -40),
                          visible_area=([(0, 0), (2, 0), (1, 1)], None))
+
+
+def test_numbers_from_numpy_and_array_do_not_crash():
+    """fov_angles and visible_area corners given as numpy arrays or an
+    array.array: each item is a new object, once held only by a dangling
+    handle (a segfault, three runs out of three)."""
+    import array
+
+    import numpy as np
+
+    layout = impossible.builtin()
+    plain = impossible.trace(layout, size=(8, 6), fov_angles=(-50, 40, 40, -45))
+    for angles in (array.array("d", [-50, 40, 40, -45]), np.array([-50.0, 40, 40, -45])):
+        frame = impossible.trace(layout, size=(8, 6), fov_angles=angles)
+        assert frame["color"].tobytes() == plain["color"].tobytes()
+    area = np.array([[0.5, 0], [1, 0.5], [0.5, 1], [0, 0.5]])
+    listed = impossible.trace(layout, size=(8, 6), fov_angles=(-50, 40, 40, -45),
+                              visible_area=([tuple(c) for c in area], None))
+    masked = impossible.trace(layout, size=(8, 6), fov_angles=(-50, 40, 40, -45), visible_area=(area, None))
+    assert masked["ids"].tobytes() == listed["ids"].tobytes()
+    assert (masked["ids"][:, :8] == 0).any()

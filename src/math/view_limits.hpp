@@ -1,0 +1,54 @@
+// The ranges of a view's and a frame's settings, named once. The command
+// line's option rows, the session's checks of a library or Python view, the
+// preview and bench's sweeps all read them here; docs/cli.md lists them for
+// users (keep the two in step).
+#pragma once
+
+namespace impossible::math::limits {
+
+// A closed range [min, max].
+template <class T>
+struct Range {
+    T min, max;
+    constexpr bool contains(T v) const { return v >= min && v <= max; }
+};
+
+// Each eye's image, pixels a side (GL guarantees textures of 8192).
+inline constexpr Range<int> kEyeSide{1, 8192};
+// The preview's window: each eye at most 4096 a side.
+inline constexpr Range<int> kWindowEyeSide{1, 4096};
+inline constexpr Range<double> kIpd{0.0, 10.0};  // metres
+// The vertical field of view, degrees: at least kMinFovDeg, less than
+// kMaxFovDeg. Below 1 degree a pixel's angle nears single precision's
+// resolution at 8192 pixels (the rasteriser drew 1e-6 degrees as background
+// while the tracer showed a room), so narrower views are refused.
+inline constexpr double kMinFovDeg = 1.0;
+inline constexpr double kMaxFovDeg = 179.0;
+// Portals one line of sight may pass; the stencil's 8 bits hold 250 levels
+// and the hidden-area mask (render/hidden_mask.hpp).
+inline constexpr Range<int> kMaxDepth{0, 250};
+// Portal passes of one frame or one pixel's ray tree (docs/bounded-work.md).
+inline constexpr Range<int> kPortalPasses{0, 10'000'000};
+// Each number of a head or hand pose (metres and degrees).
+inline constexpr double kMaxPoseComponent = 1e7;
+// Samples per pixel: one of these (the driver offers a subset).
+inline constexpr int kSampleCounts[] = {1, 2, 4, 8, 16};
+// Frames a second of a replayed path (--fps).
+inline constexpr Range<double> kFps{1e-3, 1e6};
+// The line of a path file (--frame).
+inline constexpr Range<int> kPathFrame{0, 100'000'000};
+// Portals light may pass (layout-format.md, "Lights").
+inline constexpr int kMaxLightDepth = 16;
+inline constexpr Range<int> kLightDepth{0, kMaxLightDepth};
+// Cube shadow maps' texels per face side (0: no shadows).
+inline constexpr Range<int> kShadowMapSize{0, 4096};
+// Render-to-texture portals: the scale of their textures, in (0, 4].
+inline constexpr double kMaxPortalTextureScale = 4.0;
+
+constexpr bool is_sample_count(int n) {
+    for (int c : kSampleCounts)
+        if (n == c) return true;
+    return false;
+}
+
+}  // namespace impossible::math::limits

@@ -1,0 +1,32 @@
+#include "session/session.hpp"
+
+#include "lights/light_images.hpp"
+#include "walk/replay.hpp"
+
+namespace impossible::session {
+
+Session::Session(layout::Layout layout)
+    : layout_(std::make_shared<const layout::Layout>(std::move(layout))),
+      links_(std::make_shared<const links::PortalLinks>(links::link_portals(*layout_))) {}
+
+scene::Scene Session::build_scene() const { return scene::build_scene(*layout_, *links_); }
+
+Result<render::Renderer> Session::make_renderer(gl::StateCache& state) const {
+    return render::Renderer::create(state, build_scene());
+}
+
+Result<trace::Scene> Session::make_trace_scene() const { return trace::prepare_scene(*layout_, *links_); }
+
+walk::Walker Session::make_walker(int room) const {
+    return walk::Walker(*layout_, room >= 0 ? room : layout_->start.room, links_);
+}
+
+int Session::max_light_depth() const { return lights::max_light_depth(*layout_, *links_); }
+
+void Session::set_replayed_view(math::View& view, const std::vector<layout::PathFrame>& frames, std::size_t line,
+                                double fps) const {
+    walk::Walker walker = make_walker();
+    walk::replay_view(view, walker, frames, line, fps);
+}
+
+}  // namespace impossible::session
