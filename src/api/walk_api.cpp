@@ -4,18 +4,14 @@
 
 #include "api/api_data.hpp"
 #include "layout/path_file.hpp"
-#include "walk/objects.hpp"
-#include "walk/prop_walks.hpp"
-#include "walk/replay.hpp"
-#include "walk/walker.hpp"
+#include "session/walk_driver.hpp"
 
 namespace impossible::api {
 
 struct WalkerData {
-    explicit WalkerData(const Layout& l) : layout(l), walker(layout.data().session.make_walker()) {}
-    Layout layout;  // the walker reads it; declared first, so it outlives the walker
-    walk::Walker walker;
-    std::optional<walk::ObjectSet> objects;  // made at the first step with hands (walk::place_hand)
+    explicit WalkerData(const Layout& l) : layout(l), driver(layout.data().session) {}
+    Layout layout;  // the driver reads its session; declared first, so it outlives the driver
+    session::WalkDriver driver;
 };
 
 Walker::Walker(const Layout& layout) : data_(std::make_unique<WalkerData>(layout)) {}
@@ -29,37 +25,34 @@ std::string room_id(const layout::Layout& l, int room) {
     return room >= 0 && static_cast<std::size_t>(room) < l.rooms.size() ? l.rooms[room].id : "";
 }
 
-}  // namespace
-
-WalkStep Walker::step(const Pose& physical) {
-    const layout::Layout& l = data_->layout.data().layout;
-    walk::Walker& w = data_->walker;
-    const std::vector<int> passed = w.step(to_head_pose(physical));
+WalkStep step_of(const layout::Layout& l, const session::WalkedFrame& f) {
     WalkStep s;
-    s.room = room_id(l, w.room());
-    for (const int p : passed) s.teleports.push_back(l.portals[p].id);
-    const math::dvec3 position = w.position(), forward = w.forward();
+    s.room = room_id(l, f.room);
+    for (const int p : f.teleports) s.teleports.push_back(l.portals[p].id);
     for (int k = 0; k < 3; ++k) {
-        s.position[k] = position[k];
-        s.forward[k] = forward[k];
+        s.position[k] = f.position[k];
+        s.forward[k] = f.forward[k];
     }
-    s.virtual_pose = to_pose(math::head_pose_from(position, w.rotation()));
+    s.virtual_pose = to_pose(f.virtual_pose);
+    if (f.hands) {
+        std::array<WalkHand, 2> hands;
+        for (std::size_t h = 0; h < 2; ++h)
+            hands[h] = {to_pose((*f.hands)[h].virtual_pose), room_id(l, (*f.hands)[h].room)};
+        s.hands = hands;
+    }
+    for (const session::WalkedProp& p : f.props) s.props.emplace_back(*p.id, room_id(l, p.room));
     return s;
 }
 
+}  // namespace
+
+WalkStep Walker::step(const Pose& physical) {
+    return step_of(data_->layout.data().layout, data_->driver.step(to_head_pose(physical)));
+}
+
 WalkStep Walker::step(const Pose& physical, const std::array<Pose, 2>& hands) {
-    WalkStep s = step(physical);
-    const layout::Layout& l = data_->layout.data().layout;
-    const walk::Walker& w = data_->walker;
-    if (!data_->objects) data_->objects = walk::build_object_set(l, w.links());
-    std::array<WalkHand, 2> out;
-    for (std::size_t h = 0; h < 2; ++h) {
-        const math::HeadPose hand = walk::virtual_pose(w.physical_to_virtual(), to_head_pose(hands[h]));
-        out[h].virtual_pose = to_pose(hand);
-        out[h].room = room_id(l, walk::place_hand(*data_->objects, w.room(), w.position(), hand).room);
-    }
-    s.hands = out;
-    return s;
+    const walk::HandPoses h = std::array<math::HeadPose, 2>{to_head_pose(hands[0]), to_head_pose(hands[1])};
+    return step_of(data_->layout.data().layout, data_->driver.step(to_head_pose(physical), h));
 }
 
 Expected<std::vector<Pose>> read_path(const std::string& path) {
@@ -105,23 +98,18 @@ std::vector<WalkStep> walk(const Layout& layout, const std::vector<PathLine>& ph
 }
 
 std::vector<WalkStep> walk(const Layout& layout, const std::vector<PathLine>& physical, double fps) {
-    std::vector<WalkStep> steps = walk(layout, physical);
-    const layout::Layout& l = layout.data().layout;
-    const walk::ObjectSet set = walk::build_object_set(l, layout.data().session.links());
-    std::vector<int> moving;  // indices of set.props
-    for (std::size_t k = 0; k < set.props.size(); ++k)
-        if (!set.props[k].motion.keys.empty()) moving.push_back(static_cast<int>(k));
-    if (moving.empty()) return steps;
-    walk::PropWalks walks(set);
+    // Moving props at line k / fps (a non-positive or infinite fps: time 0).
     const bool timed = fps > 0.0 && std::isfinite(fps);
-    for (std::size_t k = 0; k < steps.size(); ++k) {
+    session::WalkDriver driver(layout.data().session);
+    std::vector<WalkStep> steps;
+    steps.reserve(physical.size());
+    for (std::size_t k = 0; k < physical.size(); ++k) {
+        walk::HandPoses hands;
+        if (physical[k].hands)
+            hands = std::array<math::HeadPose, 2>{to_head_pose((*physical[k].hands)[0]),
+                                                  to_head_pose((*physical[k].hands)[1])};
         const double time = timed ? static_cast<double>(k) / fps : 0.0;
-        for (const int m : moving) {
-            const walk::DynamicProp& p = set.props[static_cast<std::size_t>(m)];
-            const std::string& id =
-                layout::prop_id(l.rooms[static_cast<std::size_t>(p.room)].props[static_cast<std::size_t>(p.index)]);
-            steps[k].props.emplace_back(id, room_id(l, walks.at(m, time).room));
-        }
+        steps.push_back(step_of(layout.data().layout, driver.step(to_head_pose(physical[k].head), hands, time)));
     }
     return steps;
 }
