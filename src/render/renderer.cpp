@@ -4,8 +4,8 @@
 #include <cassert>
 
 #include "math/projection.hpp"
-#include "render/passes.hpp"
-#include "render/portal_recursion.hpp"
+#include "render/portals/passes.hpp"
+#include "render/portals/portal_recursion.hpp"
 #include "render/renderer_data.hpp"
 #include "shading/shading.hpp"
 

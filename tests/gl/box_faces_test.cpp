@@ -11,7 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gl_fixture.hpp"
-#include "render/box_faces.hpp"
+#include "render/objects/box_faces.hpp"
 
 namespace impossible {
 namespace {

@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "gl_fixture.hpp"
-#include "render/passes.hpp"
+#include "render/portals/passes.hpp"
 
 namespace impossible {
 namespace {

@@ -13,9 +13,9 @@
 #include "base/embedded.hpp"
 #include "gl/context.hpp"
 #include "gl/shader.hpp"
-#include "render/gpu_scene.hpp"
-#include "render/scene_program.hpp"
-#include "render/shadow_maps.hpp"
+#include "render/lights/shadow_maps.hpp"
+#include "render/programs/gpu_scene.hpp"
+#include "render/programs/scene_program.hpp"
 #include "scene/scene.hpp"
 #include "walk/objects.hpp"
 

@@ -10,13 +10,13 @@
 // exactly the rows' hidden pixel centres. Multisampled, the side must also
 // pass between the samples (within kSampleTolerance at both row edges). The
 // horizontal sides lie on row boundaries, between centres.
-#include "render/hidden_mask.hpp"
+#include "render/targets/hidden_mask.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "math/hidden_area.hpp"
-#include "render/scene_program.hpp"
+#include "render/programs/scene_program.hpp"
 
 namespace impossible::render {
 

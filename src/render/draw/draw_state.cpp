@@ -1,5 +1,5 @@
 // The draws of a frame and the state each one names (see draw_state.hpp).
-#include "render/draw_state.hpp"
+#include "render/draw/draw_state.hpp"
 
 #include <algorithm>
 #include <cassert>

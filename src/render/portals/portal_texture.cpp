@@ -7,7 +7,7 @@
 #include <cassert>
 #include <cmath>
 
-#include "render/portal_recursion.hpp"
+#include "render/portals/portal_recursion.hpp"
 
 namespace impossible::render {
 namespace {

@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "render/box_faces.hpp"
-#include "render/view.hpp"
+#include "render/objects/box_faces.hpp"
+#include "render/portals/view.hpp"
 #include "scene/scene.hpp"
 
 namespace impossible::render {

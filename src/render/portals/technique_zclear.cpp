@@ -13,8 +13,8 @@
 #include <cassert>
 #include <string>
 
-#include "render/object_culling.hpp"
-#include "render/portal_recursion.hpp"
+#include "render/objects/object_culling.hpp"
+#include "render/portals/portal_recursion.hpp"
 
 namespace impossible::render {
 namespace {

@@ -7,7 +7,7 @@
 #include <array>
 #include <vector>
 
-#include "render/draw_state.hpp"
+#include "render/draw/draw_state.hpp"
 
 namespace impossible::render {
 

@@ -1,4 +1,4 @@
-#include "render/multi_draw.hpp"
+#include "render/objects/multi_draw.hpp"
 
 #include <algorithm>
 

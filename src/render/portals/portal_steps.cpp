@@ -21,7 +21,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/portal_recursion.hpp"
+#include "render/portals/portal_recursion.hpp"
 
 namespace impossible::render {
 namespace {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "gl/handles.hpp"
-#include "render/view.hpp"
+#include "render/portals/view.hpp"
 #include "scene/scene.hpp"
 
 namespace impossible::render {

@@ -17,7 +17,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/portal_recursion.hpp"
+#include "render/portals/portal_recursion.hpp"
 #include "scene/cell_objects.hpp"
 
 namespace impossible::render {

@@ -16,10 +16,10 @@
 
 #include <glm/vec3.hpp>
 
-#include "render/frame_profiler.hpp"
-#include "render/passes.hpp"
+#include "render/draw/frame_profiler.hpp"
+#include "render/portals/passes.hpp"
+#include "render/portals/view.hpp"
 #include "render/renderer_data.hpp"
-#include "render/view.hpp"
 
 namespace impossible::render {
 

@@ -16,7 +16,7 @@
 #include <algorithm>
 #include <cassert>
 
-#include "render/portal_recursion.hpp"
+#include "render/portals/portal_recursion.hpp"
 
 namespace impossible::render {
 

@@ -13,7 +13,7 @@
 
 #include "gl/handles.hpp"
 #include "lights/light_images.hpp"
-#include "render/scene_program.hpp"
+#include "render/programs/scene_program.hpp"
 #include "scene/scene.hpp"
 
 namespace impossible::render {

@@ -1,4 +1,4 @@
-#include "render/gpu_scene.hpp"
+#include "render/programs/gpu_scene.hpp"
 
 #include <algorithm>
 #include <cstddef>

@@ -22,7 +22,7 @@
 #include <algorithm>
 #include <cassert>
 
-#include "render/portal_recursion.hpp"
+#include "render/portals/portal_recursion.hpp"
 #include "shading/shading.hpp"
 
 namespace impossible::render {

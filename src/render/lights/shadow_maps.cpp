@@ -1,4 +1,4 @@
-#include "render/shadow_maps.hpp"
+#include "render/lights/shadow_maps.hpp"
 
 #include <algorithm>
 #include <array>
@@ -9,8 +9,8 @@
 
 #include "gl/shader.hpp"
 #include "math/projection.hpp"
+#include "render/programs/scene_program.hpp"
 #include "render/renderer_data.hpp"
-#include "render/scene_program.hpp"
 
 namespace impossible::render {
 namespace {

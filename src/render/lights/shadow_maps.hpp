@@ -32,7 +32,7 @@
 #include "gl/state.hpp"
 #include "lights/light_images.hpp"
 #include "render/frame.hpp"
-#include "render/gpu_scene.hpp"
+#include "render/programs/gpu_scene.hpp"
 #include "scene/scene.hpp"
 #include "walk/objects.hpp"
 

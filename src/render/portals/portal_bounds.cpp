@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/view.hpp"
+#include "render/portals/view.hpp"
 
 namespace impossible::render {
 

@@ -1,4 +1,4 @@
-#include "render/frame_profiler.hpp"
+#include "render/draw/frame_profiler.hpp"
 
 #include <algorithm>
 

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "math/oblique_projection.hpp"
-#include "render/portal_recursion.hpp"
+#include "render/portals/portal_recursion.hpp"
 #include "shading/shading.hpp"
 
 namespace impossible::render {

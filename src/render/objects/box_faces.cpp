@@ -1,4 +1,4 @@
-#include "render/box_faces.hpp"
+#include "render/objects/box_faces.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,12 +1,12 @@
 // Multisampled targets and their resolve (see multisample.hpp).
-#include "render/multisample.hpp"
+#include "render/targets/multisample.hpp"
 
 #include <algorithm>
 #include <cassert>
 #include <string>
 
+#include "render/programs/scene_program.hpp"
 #include "render/renderer_data.hpp"
-#include "render/scene_program.hpp"
 
 namespace impossible::render {
 namespace {

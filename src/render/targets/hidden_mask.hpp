@@ -18,8 +18,8 @@
 #include "gl/state.hpp"
 #include "math/view.hpp"
 #include "render/frame.hpp"
+#include "render/portals/view.hpp"
 #include "render/target.hpp"
-#include "render/view.hpp"
 
 namespace impossible::render {
 

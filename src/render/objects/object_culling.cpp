@@ -1,10 +1,10 @@
-#include "render/object_culling.hpp"
+#include "render/objects/object_culling.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cassert>
 
-#include "render/box_faces.hpp"
+#include "render/objects/box_faces.hpp"
 #include "scene/mesh_writer.hpp"
 
 namespace impossible::render {

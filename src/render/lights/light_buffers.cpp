@@ -1,10 +1,10 @@
-#include "render/light_buffers.hpp"
+#include "render/lights/light_buffers.hpp"
 
 #include <cassert>
 #include <cmath>
 
 #include "math/portal.hpp"
-#include "render/scene_program.hpp"
+#include "render/programs/scene_program.hpp"
 
 namespace impossible::render {
 namespace {

@@ -1,4 +1,4 @@
-#include "render/scene_program.hpp"
+#include "render/programs/scene_program.hpp"
 
 #include <cstdio>
 #include <string>
@@ -7,7 +7,7 @@
 #include "base/embedded.hpp"
 #include "gl/shader.hpp"
 #include "layout/layout.hpp"
-#include "render/gpu_scene.hpp"
+#include "render/programs/gpu_scene.hpp"
 #include "shading/shading.hpp"
 
 namespace impossible::render {
