@@ -4,8 +4,12 @@
 #include <cassert>
 
 #include "math/projection.hpp"
+#include "render/objects/frame_objects.hpp"
 #include "render/portals/passes.hpp"
+#include "render/portals/portal_glass.hpp"
 #include "render/portals/portal_recursion.hpp"
+#include "render/portals/portal_texture.hpp"
+#include "render/portals/technique_zclear.hpp"
 #include "render/renderer_data.hpp"
 #include "shading/shading.hpp"
 

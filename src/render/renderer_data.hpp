@@ -23,6 +23,7 @@
 #include "render/lights/light_buffers.hpp"
 #include "render/lights/shadow_maps.hpp"
 #include "render/objects/box_faces.hpp"
+#include "render/objects/frame_objects.hpp"
 #include "render/objects/multi_draw.hpp"
 #include "render/objects/object_culling.hpp"
 #include "render/programs/gpu_scene.hpp"
@@ -60,15 +61,6 @@ struct VolumeBox {
     math::dvec3 half{0.0};              // half the width, height, depth
     int target = -1;                    // the room shown inside
     glm::dvec3 tint{1.0};
-};
-
-// What a frame's dynamic objects are (walk::place_objects), placed once per
-// frame and looked up per cell by every level that draws the cell.
-struct FrameObjects {
-    std::vector<walk::ObjectInstance> instances;
-    std::vector<int> mesh;                  // per instance: its RendererData::object_meshes index
-    std::vector<scene::CellObjects> cells;  // per room: its instances' bounds (first_batch: the instance) and tree
-    std::vector<int> touched;               // the rooms whose `cells` entry is not empty
 };
 
 struct RendererData {

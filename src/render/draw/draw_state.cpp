@@ -209,4 +209,20 @@ void set_cell_id(const SceneProgram& program, unsigned id, bool unshaded) {
     glProgramUniform1i(p, program.unshaded, unshaded ? 1 : 0);
 }
 
+void set_volume_uniforms(const DrawContext& ctx, const LevelView& view, const SceneProgram& program,
+                         const math::dmat4& to_cell, int inside) {
+    if (program.volume_count < 0) return;
+    const auto cell = static_cast<size_t>(view.cell);
+    const std::vector<VolumeBox>& volumes = ctx.renderer.volumes[cell];
+    const math::dvec3 origin = ctx.renderer.cell_origins[cell].origin;
+    const glm::mat4 m(glm::translate(math::dmat4(1.0), -origin) * to_cell);
+    const glm::vec3 tint = inside >= 0 ? glm::vec3(volumes[static_cast<size_t>(inside)].tint) : glm::vec3(1.0f);
+    const GLuint p = program.program.get();
+    glProgramUniformMatrix4fv(p, program.to_volume_space, 1, GL_FALSE, &m[0][0]);
+    glProgramUniform1i(p, program.volume_first, ctx.renderer.volume_first[cell]);
+    glProgramUniform1i(p, program.volume_count, static_cast<int>(volumes.size()));
+    glProgramUniform1i(p, program.volume_inside, inside);
+    glProgramUniform3fv(p, program.volume_tint, 1, &tint[0]);
+}
+
 }  // namespace impossible::render

@@ -2,7 +2,7 @@
 // (layout-format.md, "Moving props, hands and crossing objects" and "Volume
 // portals"; docs/crossing.md).
 //
-// The frame's objects are placed once (walk::place_objects): instances, each
+// The frame's objects are placed once (frame_objects.hpp): instances, each
 // a mesh, a cell, a rigid matrix from the mesh's own coordinates and up to
 // two door planes that cut it. Every level that draws a cell draws the
 // cell's instances after its own batches, each batch one instanced draw for
@@ -11,35 +11,19 @@
 // variant). A cell with volumes is drawn, all of it, by the VOLUMES variant,
 // which drops its fragments inside the volumes; each volume's target room is
 // then drawn in the same level, shown only inside the volume and tinted.
+#include "render/objects/object_draw.hpp"
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/portals/portal_recursion.hpp"
-#include "scene/cell_objects.hpp"
+#include "render/lights/light_draw.hpp"
+#include "render/objects/object_culling.hpp"
 
 namespace impossible::render {
 namespace {
-
-// Where an instance may be seen: its mesh's bounds through its matrix, in
-// the cell's coordinates, padded as the cell's own objects are.
-scene::CellObject instance_bounds(const scene::ObjectMesh& mesh, const walk::ObjectInstance& inst) {
-    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
-    for (int k = 0; k < 8; ++k) {
-        const math::dvec3 corner((k & 1) ? mesh.hi.x : mesh.lo.x, (k & 2) ? mesh.hi.y : mesh.lo.y,
-                                 (k & 4) ? mesh.hi.z : mesh.lo.z);
-        const math::dvec3 p = math::dvec3(inst.to_cell * math::dvec4(corner, 1.0));
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
-    const glm::dvec3 pad = 1e-6 + 1e-9 * glm::max(glm::abs(lo), glm::abs(hi));
-    scene::CellObject o;
-    o.lo = lo - pad;
-    o.hi = hi + pad;
-    return o;
-}
 
 // A cut as a clip distance in the mesh's coordinates (the plane in the
 // cell's through `model`, in double): a strict cut (an image keeps d > 0) is
@@ -142,18 +126,6 @@ void draw_volume_room(const DrawContext& ctx, const LevelView& view, const Sciss
 
 }  // namespace
 
-unsigned light_flags(const DrawContext& ctx) {
-    const RendererData& r = ctx.renderer;
-    return r.lit ? kLights | (r.lights.ubo ? kLightsUbo : 0u) : 0u;
-}
-
-void set_room_lights(const DrawContext& ctx, const SceneProgram& program, int room, bool count) {
-    const RendererData& r = ctx.renderer;
-    if (!r.lit) return;
-    set_light_uniforms(r.lights, program, room, glm::mat4(1.0f));
-    if (count) ctx.scratch.stats.light_images += r.lights.count[static_cast<size_t>(room)];
-}
-
 const SceneProgram& cell_program(const DrawContext& ctx, int cell, unsigned flags) {
     const RendererData& r = ctx.renderer;
     if (!r.volumes[static_cast<size_t>(cell)].empty()) flags |= kVolumes;
@@ -165,34 +137,6 @@ const SceneProgram& cell_program(const DrawContext& ctx, int cell, unsigned flag
     const std::optional<SceneProgram>& variant = r.programs.variants[static_cast<int>(ctx.frame.stereo)][flags];
     assert(variant);  // prepare_frame built it
     return *variant;
-}
-
-void place_frame_objects(const RendererData& r, const FrameDesc& frame, FrameObjects& out, walk::PropWalks* walks) {
-    for (const int c : out.touched) {
-        scene::CellObjects& cell = out.cells[static_cast<size_t>(c)];
-        cell.objects.clear();
-        cell.nodes.clear();
-        cell.order.clear();
-    }
-    out.touched.clear();
-    out.cells.resize(r.cells.size());
-    out.instances = walk::place_objects(r.object_set, frame, walks);
-    out.mesh.resize(out.instances.size());
-    const int hand_mesh = static_cast<int>(r.object_meshes.size()) - 1;
-    for (size_t i = 0; i < out.instances.size(); ++i) {
-        const walk::ObjectInstance& inst = out.instances[i];
-        const int mesh = inst.kind == walk::ObjectKind::Hand
-                             ? hand_mesh
-                             : r.prop_mesh[static_cast<size_t>(inst.listed_room)][static_cast<size_t>(inst.index)];
-        assert(mesh >= 0);
-        out.mesh[i] = mesh;
-        scene::CellObjects& cell = out.cells[static_cast<size_t>(inst.cell)];
-        if (cell.objects.empty()) out.touched.push_back(inst.cell);
-        scene::CellObject o = instance_bounds(r.object_meshes[static_cast<size_t>(mesh)], inst);
-        o.first_batch = static_cast<std::uint32_t>(i);
-        cell.objects.push_back(o);
-    }
-    for (const int c : out.touched) scene::build_cull_tree(out.cells[static_cast<size_t>(c)]);
 }
 
 void draw_cell_instances(const DrawContext& ctx, const LevelView& view, const Scissor& scissor, int cell, int inside) {
@@ -249,22 +193,6 @@ void draw_volume_rooms(const DrawContext& ctx, const LevelView& view, const Scis
         draw_volume_room(ctx, narrowed, within, volumes[k].target, static_cast<int>(k));
         draw_cell_instances(ctx, narrowed, within, volumes[k].target, static_cast<int>(k));
     }
-}
-
-void set_volume_uniforms(const DrawContext& ctx, const LevelView& view, const SceneProgram& program,
-                         const math::dmat4& to_cell, int inside) {
-    if (program.volume_count < 0) return;
-    const auto cell = static_cast<size_t>(view.cell);
-    const std::vector<VolumeBox>& volumes = ctx.renderer.volumes[cell];
-    const math::dvec3 origin = ctx.renderer.cell_origins[cell].origin;
-    const glm::mat4 m(glm::translate(math::dmat4(1.0), -origin) * to_cell);
-    const glm::vec3 tint = inside >= 0 ? glm::vec3(volumes[static_cast<size_t>(inside)].tint) : glm::vec3(1.0f);
-    const GLuint p = program.program.get();
-    glProgramUniformMatrix4fv(p, program.to_volume_space, 1, GL_FALSE, &m[0][0]);
-    glProgramUniform1i(p, program.volume_first, ctx.renderer.volume_first[cell]);
-    glProgramUniform1i(p, program.volume_count, static_cast<int>(volumes.size()));
-    glProgramUniform1i(p, program.volume_inside, inside);
-    glProgramUniform3fv(p, program.volume_tint, 1, &tint[0]);
 }
 
 }  // namespace impossible::render

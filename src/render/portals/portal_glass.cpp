@@ -22,6 +22,8 @@
 #include <algorithm>
 #include <cassert>
 
+#include "render/portals/portal_draw.hpp"
+#include "render/portals/portal_glass.hpp"
 #include "render/portals/portal_recursion.hpp"
 #include "shading/shading.hpp"
 

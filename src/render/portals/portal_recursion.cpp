@@ -13,51 +13,18 @@
 // draw for both eyes; an eye that cannot see a portal gets an empty
 // rectangle, which its clip distances turn into no work. Every draw names its
 // pass, stencil reference, program and scissor (draw_state.hpp).
+#include "render/portals/portal_recursion.hpp"
+
 #include <algorithm>
 #include <cassert>
 
-#include "render/portals/portal_recursion.hpp"
+#include "render/lights/light_draw.hpp"
+#include "render/objects/object_draw.hpp"
+#include "render/portals/portal_draw.hpp"
+#include "render/portals/portal_glass.hpp"
+#include "render/portals/portal_texture.hpp"
 
 namespace impossible::render {
-
-void clear_depth_in_portal(const DrawContext& ctx, const LevelView& view, int stencil_ref,
-                           const std::array<NdcRect, 2>& rects, Pass pass) {
-    const ClearDepthProgram& clear = ctx.renderer.programs.clear_depth;
-    const GLuint program = clear.program.get();
-    const TargetDraw draw{pass, stencil_ref, program, portal_scissor(ctx, view, rects)};
-    glProgramUniform1f(program, clear.far_depth, far_depth(ctx.frame));
-    if (!ctx.frame.cull_portals) {
-        glProgramUniform1i(program, clear.eye_quads, 0);
-        draw_full_target(ctx, view, draw);
-        return;
-    }
-    // One rectangle per eye that sees the portal, in one instanced draw: the
-    // scissor of the pair spans the seam between the two halves of the
-    // target, and the triangle would cost in proportion to its area even
-    // where the stencil fails. Each rectangle is the eye's, widened by two
-    // pixels (the marked pixels lie within one, set_eye_uniforms), in the
-    // viewport's coordinates: the whole target's in clip-shift and
-    // viewport-index mode (drawn through the widened viewport 0), the eye's
-    // own in two-pass mode.
-    const bool side_by_side = ctx.frame.stereo != StereoMode::TwoPass;
-    float quads[2][4];
-    int count = 0;
-    for (int e = 0; e < 2; ++e) {
-        if (!view.eyes[e].active || rects[e].empty()) continue;
-        const NdcRect q = intersect(widened(rects[e], 2.0, ctx.frame.eye_width, ctx.frame.eye_height), NdcRect{});
-        const double shift = side_by_side ? (e == 0 ? -1.0 : 1.0) : 0.0;
-        const double scale = side_by_side ? 0.5 : 1.0;
-        quads[count][0] = static_cast<float>(scale * (q.x0 + shift));
-        quads[count][1] = static_cast<float>(q.y0);
-        quads[count][2] = static_cast<float>(scale * (q.x1 + shift));
-        quads[count][3] = static_cast<float>(q.y1);
-        ++count;
-    }
-    if (count == 0) return;
-    glProgramUniform4fv(program, clear.rects, count, &quads[0][0]);
-    glProgramUniform1i(program, clear.eye_quads, 1);
-    draw_full_target(ctx, view, draw, count);
-}
 
 namespace {
 

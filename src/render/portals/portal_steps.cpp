@@ -21,7 +21,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/portals/portal_recursion.hpp"
+#include "render/portals/portal_steps.hpp"
 
 namespace impossible::render {
 namespace {

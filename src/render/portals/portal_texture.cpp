@@ -7,7 +7,9 @@
 #include <cassert>
 #include <cmath>
 
+#include "render/portals/portal_draw.hpp"
 #include "render/portals/portal_recursion.hpp"
+#include "render/portals/portal_texture.hpp"
 
 namespace impossible::render {
 namespace {

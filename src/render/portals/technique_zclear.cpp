@@ -14,7 +14,9 @@
 #include <string>
 
 #include "render/objects/object_culling.hpp"
+#include "render/portals/portal_draw.hpp"
 #include "render/portals/portal_recursion.hpp"
+#include "render/portals/technique_zclear.hpp"
 
 namespace impossible::render {
 namespace {
