@@ -21,7 +21,7 @@ gl::WindowRect eye_viewport(const FrameDesc& frame, int eye) {
 // view's winding), level (the stencil reference), program and scissor.
 void bind_common(const DrawContext& ctx, const LevelView& view, Pass pass, int stencil_ref, GLuint program,
                  const Scissor& scissor, int clip_distances = -1) {
-    gl::StateCache& state = *ctx.renderer.state;
+    gl::StateCache& state = ctx.state;
     const bool reversed_z = ctx.frame.depth == DepthMode::ReversedZ;
     state.draw_framebuffer(ctx.target.framebuffer.get());
     // Reversed-Z: depth 1 at the near plane, 0 at infinity, in a float buffer.
@@ -43,7 +43,7 @@ void bind_common(const DrawContext& ctx, const LevelView& view, Pass pass, int s
 void bind_draw(const DrawContext& ctx, const LevelView& view, const SceneDraw& draw) {
     assert(draw.program != nullptr);
     bind_common(ctx, view, draw.pass, draw.stencil_ref, draw.program->program.get(), draw.scissor, draw.clip_distances);
-    gl::StateCache& state = *ctx.renderer.state;
+    gl::StateCache& state = ctx.state;
     switch (ctx.frame.stereo) {
         case StereoMode::ClipShift: state.viewport(whole_target(ctx.frame)); break;
         case StereoMode::ViewportIndex:
@@ -52,12 +52,12 @@ void bind_draw(const DrawContext& ctx, const LevelView& view, const SceneDraw& d
             break;
         case StereoMode::TwoPass: state.viewport(eye_viewport(ctx.frame, ctx.eye)); break;
     }
-    state.vertex_array(ctx.renderer.gpu.vao.get());
+    state.vertex_array(ctx.scene.gpu.vao.get());
 }
 
 void bind_draw(const DrawContext& ctx, const LevelView& view, const TargetDraw& draw) {
     bind_common(ctx, view, draw.pass, draw.stencil_ref, draw.program, draw.scissor);
-    gl::StateCache& state = *ctx.renderer.state;
+    gl::StateCache& state = ctx.state;
     if (kPassStates[static_cast<size_t>(draw.pass)].blend != gl::Blend::Replace)
         state.blend_color(draw.blend_color.r, draw.blend_color.g, draw.blend_color.b, 1.0f);
     // The triangle has no eye: with per-eye viewports it is drawn through
@@ -67,7 +67,7 @@ void bind_draw(const DrawContext& ctx, const LevelView& view, const TargetDraw& 
         case StereoMode::ViewportIndex: state.viewport_indexed(0, whole_target(ctx.frame)); break;
         case StereoMode::TwoPass: state.viewport(eye_viewport(ctx.frame, ctx.eye)); break;
     }
-    state.vertex_array(ctx.renderer.empty_vao.get());
+    state.vertex_array(ctx.programs.empty_vao.get());
 }
 
 int instances_of(const DrawContext& ctx) { return ctx.frame.stereo == StereoMode::TwoPass ? 1 : 2; }
@@ -76,10 +76,10 @@ void submit_queued(const DrawContext& ctx, const LevelView& view, const SceneDra
     IndirectDraws& queue = ctx.scratch.indirect;
     if (queue.pending.empty()) return;
     bind_draw(ctx, view, draw);
-    if (vertex_array != 0) ctx.renderer.state->vertex_array(vertex_array);
+    if (vertex_array != 0) ctx.state.vertex_array(vertex_array);
     for (const IndirectDraw& d : queue.pending)
         ctx.scratch.stats.triangles += static_cast<long>(d.count / 3) * static_cast<long>(d.instance_count);
-    ctx.scratch.stats.draw_calls += submit_indirect(*ctx.renderer.state, queue);
+    ctx.scratch.stats.draw_calls += submit_indirect(ctx.state, queue);
 }
 
 void draw_range(const DrawContext& ctx, const LevelView& view, const SceneDraw& draw, const scene::IndexRange& range) {
@@ -177,7 +177,7 @@ void set_eye_uniforms(const DrawContext& ctx, const LevelView& view, const Scene
     float plane[2][4];
     // The cell's vertices are relative to its origin: the move to layout
     // coordinates is folded into the matrices and planes here, in double.
-    const scene::CellOrigin& cell_origin = ctx.renderer.cell_origins[static_cast<size_t>(view.cell)];
+    const scene::CellOrigin& cell_origin = ctx.scene.cell_origins[static_cast<size_t>(view.cell)];
     const math::dvec3 origin = cell_origin.origin;
     const math::dmat4 from_cell = glm::translate(math::dmat4(1.0), origin);
     for (int e = 0; e < 2; ++e) {
@@ -213,13 +213,13 @@ void set_volume_uniforms(const DrawContext& ctx, const LevelView& view, const Sc
                          const math::dmat4& to_cell, int inside) {
     if (program.volume_count < 0) return;
     const auto cell = static_cast<size_t>(view.cell);
-    const std::vector<VolumeBox>& volumes = ctx.renderer.volumes[cell];
-    const math::dvec3 origin = ctx.renderer.cell_origins[cell].origin;
+    const std::vector<VolumeBox>& volumes = ctx.scene.volumes[cell];
+    const math::dvec3 origin = ctx.scene.cell_origins[cell].origin;
     const glm::mat4 m(glm::translate(math::dmat4(1.0), -origin) * to_cell);
     const glm::vec3 tint = inside >= 0 ? glm::vec3(volumes[static_cast<size_t>(inside)].tint) : glm::vec3(1.0f);
     const GLuint p = program.program.get();
     glProgramUniformMatrix4fv(p, program.to_volume_space, 1, GL_FALSE, &m[0][0]);
-    glProgramUniform1i(p, program.volume_first, ctx.renderer.volume_first[cell]);
+    glProgramUniform1i(p, program.volume_first, ctx.scene.volume_first[cell]);
     glProgramUniform1i(p, program.volume_count, static_cast<int>(volumes.size()));
     glProgramUniform1i(p, program.volume_inside, inside);
     glProgramUniform3fv(p, program.volume_tint, 1, &tint[0]);

@@ -16,10 +16,15 @@
 
 #include <glm/vec3.hpp>
 
+#include "gl/state.hpp"
 #include "render/draw/frame_profiler.hpp"
+#include "render/draw/frame_scratch.hpp"
+#include "render/lights/light_buffers.hpp"
 #include "render/portals/passes.hpp"
 #include "render/portals/view.hpp"
-#include "render/renderer_data.hpp"
+#include "render/programs/programs.hpp"
+#include "render/scene_data.hpp"
+#include "render/targets/frame_targets.hpp"
 
 namespace impossible::render {
 
@@ -27,7 +32,10 @@ namespace impossible::render {
 // of its own, into its texture, sharing the scratch). Everything but
 // `scratch` is fixed while the frame is drawn.
 struct DrawContext {
-    const RendererData& renderer;
+    gl::StateCache& state;       // the context's
+    const SceneData& scene;      // fixed for the layout
+    const Programs& programs;    // every program the frame may draw with (built by prepare_frame)
+    const LightBuffers& lights;  // a lit layout's light images of the frame's light depth
     const FrameDesc& frame;
     const SceneProgram& scene_program;     // the frame's stereo mode's
     const SceneProgram* material_program;  // the same with materials; null when no batch has them

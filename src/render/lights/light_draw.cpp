@@ -4,15 +4,13 @@
 namespace impossible::render {
 
 unsigned light_flags(const DrawContext& ctx) {
-    const RendererData& r = ctx.renderer;
-    return r.lit ? kLights | (r.lights.ubo ? kLightsUbo : 0u) : 0u;
+    return ctx.scene.lighting.lit ? kLights | (ctx.lights.ubo ? kLightsUbo : 0u) : 0u;
 }
 
 void set_room_lights(const DrawContext& ctx, const SceneProgram& program, int room, bool count) {
-    const RendererData& r = ctx.renderer;
-    if (!r.lit) return;
-    set_light_uniforms(r.lights, program, room, glm::mat4(1.0f));
-    if (count) ctx.scratch.stats.light_images += r.lights.count[static_cast<size_t>(room)];
+    if (!ctx.scene.lighting.lit) return;
+    set_light_uniforms(ctx.lights, program, room, glm::mat4(1.0f));
+    if (count) ctx.scratch.stats.light_images += ctx.lights.count[static_cast<size_t>(room)];
 }
 
 }  // namespace impossible::render

@@ -9,8 +9,9 @@
 
 #include "gl/shader.hpp"
 #include "math/projection.hpp"
+#include "render/objects/frame_objects.hpp"
 #include "render/programs/scene_program.hpp"
-#include "render/renderer_data.hpp"
+#include "render/scene_data.hpp"
 
 namespace impossible::render {
 namespace {
@@ -283,19 +284,19 @@ void bind_shadow_maps(const ShadowMaps& m, gl::StateCache& state) {
 
 void unbind_shadow_maps() { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShadowLayerBinding, 0); }
 
-Result<void> prepare_shadow_maps(ShadowMaps& maps, const RendererData& r, const FrameObjects& objects,
-                                 const std::vector<lights::RoomLights>& rooms, const FrameDesc& frame,
-                                 FrameStats& stats) {
+Result<void> prepare_shadow_maps(ShadowMaps& maps, gl::StateCache& state, const SceneData& r,
+                                 const FrameObjects& objects, const std::vector<lights::RoomLights>& rooms,
+                                 const FrameDesc& frame, FrameStats& stats) {
     const ShadowSources sources{.gpu = &r.gpu,
                                 .objects = &r.objects,
                                 .origins = &r.cell_origins,
                                 .object_meshes = &r.object_meshes,
                                 .instances = &objects.instances,
                                 .instance_mesh = &objects.mesh};
-    Result<int> drawn = update_shadow_maps(maps, *r.state, sources, rooms, frame);
+    Result<int> drawn = update_shadow_maps(maps, state, sources, rooms, frame);
     if (!drawn) return Error{drawn.error()};
     stats.shadow_maps_drawn = *drawn;
-    bind_shadow_maps(maps, *r.state);
+    bind_shadow_maps(maps, state);
     return {};
 }
 

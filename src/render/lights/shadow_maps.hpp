@@ -69,7 +69,7 @@ inline constexpr double kShadowBiasTexels = 0.5;
 // their props.
 int shadow_map_size_for(int requested, std::size_t maps);
 
-// Where the maps' occluders are drawn from (the renderer's data and the
+// Where the maps' occluders are drawn from (the scene's data and the
 // frame's placed objects; object_draw.cpp draws the same).
 struct ShadowSources {
     const GpuScene* gpu = nullptr;
@@ -109,13 +109,13 @@ void unbind_shadow_maps();
 
 // The renderer's part, once a frame of a lit layout, after the frame's
 // objects are placed and before its passes: updates the maps from the
-// renderer's data, the frame's objects and `rooms` (the light images of the
+// scene's data, the frame's objects and `rooms` (the light images of the
 // frame's light depth, those the lit shader's global indices count), counts
 // the maps drawn in stats.shadow_maps_drawn and binds them.
-struct RendererData;
+struct SceneData;
 struct FrameObjects;
-Result<void> prepare_shadow_maps(ShadowMaps& maps, const RendererData& r, const FrameObjects& objects,
-                                 const std::vector<lights::RoomLights>& rooms, const FrameDesc& frame,
-                                 FrameStats& stats);
+Result<void> prepare_shadow_maps(ShadowMaps& maps, gl::StateCache& state, const SceneData& r,
+                                 const FrameObjects& objects, const std::vector<lights::RoomLights>& rooms,
+                                 const FrameDesc& frame, FrameStats& stats);
 
 }  // namespace impossible::render

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "render/renderer_data.hpp"
+#include "render/scene_data.hpp"
 #include "scene/cell_objects.hpp"
 
 namespace impossible::render {
@@ -34,7 +34,7 @@ scene::CellObject instance_bounds(const scene::ObjectMesh& mesh, const walk::Obj
 
 }  // namespace
 
-void place_frame_objects(const RendererData& r, const FrameDesc& frame, FrameObjects& out, walk::PropWalks* walks) {
+void place_frame_objects(const SceneData& r, const FrameDesc& frame, FrameObjects& out, walk::PropWalks* walks) {
     for (const int c : out.touched) {
         scene::CellObjects& cell = out.cells[static_cast<size_t>(c)];
         cell.objects.clear();

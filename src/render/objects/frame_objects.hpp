@@ -11,13 +11,13 @@
 
 namespace impossible::render {
 
-struct RendererData;
+struct SceneData;
 
 // What a frame's dynamic objects are (walk::place_objects), placed once per
 // frame and looked up per cell by every level that draws the cell.
 struct FrameObjects {
     std::vector<walk::ObjectInstance> instances;
-    std::vector<int> mesh;                  // per instance: its RendererData::object_meshes index
+    std::vector<int> mesh;                  // per instance: its SceneData::object_meshes index
     std::vector<scene::CellObjects> cells;  // per room: its instances' bounds (first_batch: the instance) and tree
     std::vector<int> touched;               // the rooms whose `cells` entry is not empty
 };
@@ -25,6 +25,6 @@ struct FrameObjects {
 // The frame's dynamic objects placed (walk::place_objects), grouped per cell
 // with their bounds and a culling tree per cell.
 // `walks` (may be null) walks the moving props on from the last frame.
-void place_frame_objects(const RendererData& r, const FrameDesc& frame, FrameObjects& out, walk::PropWalks* walks);
+void place_frame_objects(const SceneData& r, const FrameDesc& frame, FrameObjects& out, walk::PropWalks* walks);
 
 }  // namespace impossible::render

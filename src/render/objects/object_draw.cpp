@@ -72,15 +72,15 @@ void set_material(const DrawContext& ctx, const SceneProgram& m, const scene::Dr
     glProgramUniform1i(m.program.get(), m.mip_level0, ctx.frame.textures_mip_level0 ? 1 : 0);
     glProgramUniform1i(m.program.get(), m.textured, b.texture >= 0 ? 1 : 0);
     glProgramUniform1f(m.program.get(), m.alpha_cutoff, b.alpha_cutoff);
-    const GLuint texture = b.texture >= 0 ? ctx.renderer.gpu.textures[static_cast<std::size_t>(b.texture)].get() : 0;
-    ctx.renderer.state->texture(kSceneTextureUnit, texture);
+    const GLuint texture = b.texture >= 0 ? ctx.scene.gpu.textures[static_cast<std::size_t>(b.texture)].get() : 0;
+    ctx.state.texture(kSceneTextureUnit, texture);
 }
 
 bool has_material(const scene::DrawBatch& b) { return b.texture >= 0 || b.alpha_cutoff >= 0.0f; }
 
 void draw_instance(const DrawContext& ctx, const LevelView& view, const Scissor& scissor, int i, int id_cell,
                    int inside) {
-    const RendererData& r = ctx.renderer;
+    const SceneData& r = ctx.scene;
     const walk::ObjectInstance& inst = ctx.scratch.objects.instances[static_cast<size_t>(i)];
     const scene::ObjectMesh& mesh =
         r.object_meshes[static_cast<size_t>(ctx.scratch.objects.mesh[static_cast<size_t>(i)])];
@@ -93,10 +93,10 @@ void draw_instance(const DrawContext& ctx, const LevelView& view, const Scissor&
         set_instance_uniforms(program, inst, model, extent);
         set_cell_id(program, static_cast<unsigned>(id_cell + 1), false);
         // Lit in the room it is placed in, from the mesh's coordinates.
-        if (r.lit) {
+        if (r.lighting.lit) {
             const math::dvec3 origin = r.cell_origins[static_cast<size_t>(id_cell)].origin;
             const glm::mat4 to_light(glm::translate(math::dmat4(1.0), -origin) * model);
-            set_light_uniforms(r.lights, program, id_cell, to_light);
+            set_light_uniforms(ctx.lights, program, id_cell, to_light);
         }
         set_volume_uniforms(ctx, view, program, model, inside);
         if (has_material(b)) set_material(ctx, program, b);
@@ -107,11 +107,11 @@ void draw_instance(const DrawContext& ctx, const LevelView& view, const Scissor&
 // Room `t`'s own batches in a level of another cell (a volume's target, in
 // the same coordinates), shown inside volume `inside` only.
 void draw_volume_room(const DrawContext& ctx, const LevelView& view, const Scissor& scissor, int t, int inside) {
-    const RendererData& r = ctx.renderer;
+    const SceneData& r = ctx.scene;
     const scene::CellOrigin& origin = r.cell_origins[static_cast<size_t>(t)];
     const math::dmat4 model = glm::translate(math::dmat4(1.0), origin.origin);
     // Lit by its own room's ambient and lights (layout-format.md, "Lights").
-    if (r.lit) ctx.scratch.stats.light_images += r.lights.count[static_cast<size_t>(t)];
+    if (r.lighting.lit) ctx.scratch.stats.light_images += ctx.lights.count[static_cast<size_t>(t)];
     for (const scene::DrawBatch& b : r.cells[static_cast<size_t>(t)]) {
         const SceneProgram& program =
             cell_program(ctx, view.cell, light_flags(ctx) | (has_material(b) ? kMaterials : 0u));
@@ -127,14 +127,14 @@ void draw_volume_room(const DrawContext& ctx, const LevelView& view, const Sciss
 }  // namespace
 
 const SceneProgram& cell_program(const DrawContext& ctx, int cell, unsigned flags) {
-    const RendererData& r = ctx.renderer;
+    const SceneData& r = ctx.scene;
     if (!r.volumes[static_cast<size_t>(cell)].empty()) flags |= kVolumes;
     if (flags == 0u) return ctx.scene_program;
     if (flags == kMaterials) {
         assert(ctx.material_program != nullptr);
         return *ctx.material_program;
     }
-    const std::optional<SceneProgram>& variant = r.programs.variants[static_cast<int>(ctx.frame.stereo)][flags];
+    const std::optional<SceneProgram>& variant = ctx.programs.variants[static_cast<int>(ctx.frame.stereo)][flags];
     assert(variant);  // prepare_frame built it
     return *variant;
 }
@@ -181,7 +181,7 @@ LevelView narrowed_to(const DrawContext& ctx, const LevelView& view, const Volum
 }  // namespace
 
 void draw_volume_rooms(const DrawContext& ctx, const LevelView& view, const Scissor& scissor) {
-    const std::vector<VolumeBox>& volumes = ctx.renderer.volumes[static_cast<size_t>(view.cell)];
+    const std::vector<VolumeBox>& volumes = ctx.scene.volumes[static_cast<size_t>(view.cell)];
     for (size_t k = 0; k < volumes.size(); ++k) {
         // With culling, the target room is drawn only where the volume may
         // be seen (the rest of it would be discarded fragment by fragment).

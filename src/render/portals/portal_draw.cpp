@@ -15,7 +15,7 @@ namespace impossible::render {
 
 void clear_depth_in_portal(const DrawContext& ctx, const LevelView& view, int stencil_ref,
                            const std::array<NdcRect, 2>& rects, Pass pass) {
-    const ClearDepthProgram& clear = ctx.renderer.programs.clear_depth;
+    const ClearDepthProgram& clear = ctx.programs.clear_depth;
     const GLuint program = clear.program.get();
     const TargetDraw draw{pass, stencil_ref, program, portal_scissor(ctx, view, rects)};
     glProgramUniform1f(program, clear.far_depth, far_depth(ctx.frame));
@@ -84,7 +84,7 @@ namespace {
 // eye may see from the front, as ranges of the face stream, uploaded here.
 // Returns where this level's indices start in the stream.
 std::uint32_t level_draws(const DrawContext& ctx, const LevelView& view) {
-    const RendererData& r = ctx.renderer;
+    const SceneData& r = ctx.scene;
     FrameScratch& s = ctx.scratch;
     const auto cell = static_cast<std::size_t>(view.cell);
     const bool culled = ctx.frame.cull_portals && ctx.frame.cull_objects && !r.objects[cell].objects.empty();
@@ -108,7 +108,7 @@ std::uint32_t level_draws(const DrawContext& ctx, const LevelView& view) {
 }  // namespace
 
 void draw_cell(const DrawContext& ctx, const LevelView& view, const SceneDraw& draw) {
-    const RendererData& r = ctx.renderer;
+    const SceneData& r = ctx.scene;
     FrameScratch& s = ctx.scratch;
     const std::uint32_t face_base = level_draws(ctx, view);
     // Plain batches queued and submitted together (FrameDesc::multi_draw)
@@ -146,7 +146,7 @@ void draw_cell(const DrawContext& ctx, const LevelView& view, const SceneDraw& d
         glProgramUniform1i(m.program.get(), m.textured, b.texture >= 0 ? 1 : 0);
         glProgramUniform1f(m.program.get(), m.alpha_cutoff, b.alpha_cutoff);
         const GLuint texture = b.texture >= 0 ? r.gpu.textures[static_cast<std::size_t>(b.texture)].get() : 0;
-        r.state->texture(kSceneTextureUnit, texture);
+        ctx.state.texture(kSceneTextureUnit, texture);
         draw_range(ctx, view, with_materials, b.range);
     }
     submit_queued(ctx, view, draw);
@@ -154,8 +154,8 @@ void draw_cell(const DrawContext& ctx, const LevelView& view, const SceneDraw& d
 
 void draw_portal_box(const DrawContext& ctx, const LevelView& view, const SceneDraw& draw, int portal,
                      const std::array<NdcRect, 2>& rects) {
-    const scene::PortalInfo& info = ctx.renderer.portals[portal];
-    const scene::PortalMesh& mesh = ctx.renderer.portal_meshes[portal];
+    const scene::PortalInfo& info = ctx.scene.portals[portal];
+    const scene::PortalMesh& mesh = ctx.scene.portal_meshes[portal];
     assert(info.room == view.cell);  // its box is relative to the cell's origin
     std::array<NdcRect, 2> front = rects, inner = rects;
     bool any_inner = false;
@@ -189,7 +189,7 @@ namespace {
 // front of it; behind it, exit's plane clips.
 LevelView moved_view(const DrawContext& ctx, const LevelView& view, const math::dmat4& m, int cell, int exit,
                      const std::array<NdcRect, 2>& rects) {
-    const scene::PortalInfo& b = ctx.renderer.portals[exit];
+    const scene::PortalInfo& b = ctx.scene.portals[exit];
     LevelView child;
     child.cell = cell;
     child.level = view.level + 1;
@@ -227,9 +227,9 @@ LevelView child_view(const DrawContext& ctx, const LevelView& view, int portal, 
     // A virtual eye behind B sees B's room only in front of B's plane; one
     // already in front of B (the real eye crossed A before the head) stands
     // in B's room and needs no plane.
-    const scene::PortalInfo& a = ctx.renderer.portals[portal];
-    LevelView child = moved_view(ctx, view, ctx.renderer.links.transfer[portal], ctx.renderer.portals[a.target].room,
-                                 a.target, rects);
+    const scene::PortalInfo& a = ctx.scene.portals[portal];
+    LevelView child =
+        moved_view(ctx, view, ctx.scene.links.transfer[portal], ctx.scene.portals[a.target].room, a.target, rects);
     child.weight *= weight_factor;
     return child;
 }
@@ -238,7 +238,7 @@ LevelView reflected_view(const DrawContext& ctx, const LevelView& view, int port
                          double weight_factor) {
     // The mirrored eye is behind the plane (the real one is in front, or the
     // mirror would not be visible); the plane clips what lies behind it.
-    LevelView child = moved_view(ctx, view, ctx.renderer.links.reflection[portal], view.cell, portal, rects);
+    LevelView child = moved_view(ctx, view, ctx.scene.links.reflection[portal], view.cell, portal, rects);
     child.mirrored = !view.mirrored;
     child.weight *= weight_factor;
     return child;

@@ -36,7 +36,7 @@ bool is_white(const glm::dvec3& c) { return c.x == 1.0 && c.y == 1.0 && c.z == 1
 // the portal's marked pixels, with a blend colour (Tint's: the tint).
 void draw_region(const DrawContext& ctx, const LevelView& view, Pass pass, const std::array<NdcRect, 2>& rects,
                  const glm::dvec3& blend_color = glm::dvec3(1.0)) {
-    const ClearDepthProgram& clear = ctx.renderer.programs.clear_depth;
+    const ClearDepthProgram& clear = ctx.programs.clear_depth;
     const GLuint program = clear.program.get();
     glProgramUniform1f(program, clear.far_depth, far_depth(ctx.frame));
     const glm::dvec3 bg = shading::kBackgroundColor;
@@ -69,7 +69,7 @@ GLuint save_colour(const DrawContext& ctx, const gl::ScissorRect& region) {
     if (s.texture.get() == 0 || s.width != t.width || s.height != t.height || s.samples != t.samples) {
         // A render-to-texture portal's windows are of its texture's size:
         // the old copy may be bound still.
-        if (s.texture) ctx.renderer.state->deleting_texture(s.texture.get());
+        if (s.texture) ctx.state.deleting_texture(s.texture.get());
         s.texture = gl::create_texture(kind);
         if (t.samples > 1)
             glTextureStorage2DMultisample(s.texture.get(), t.samples, GL_RGBA8, t.width, t.height, GL_TRUE);
@@ -91,7 +91,7 @@ GLuint save_colour(const DrawContext& ctx, const gl::ScissorRect& region) {
 // colour ← r · (the copy, or the fill colour without one) + colour · (1 - r) · tint.
 void blend_window(const DrawContext& ctx, const LevelView& view, const std::array<NdcRect, 2>& rects,
                   const scene::PortalInfo& w, GLuint saved) {
-    const std::optional<WindowBlendProgram>& slot = ctx.renderer.programs.window_blend[ctx.target.samples > 1 ? 1 : 0];
+    const std::optional<WindowBlendProgram>& slot = ctx.programs.window_blend[ctx.target.samples > 1 ? 1 : 0];
     assert(slot);  // prepare_window_blend made it with the frame
     const WindowBlendProgram& blend = *slot;
     const double r = w.reflectance;
@@ -101,7 +101,7 @@ void blend_window(const DrawContext& ctx, const LevelView& view, const std::arra
     glProgramUniform3f(program, blend.scale, float(r), float(r), float(r));
     const glm::dvec3 fill = r * shading::kPortalFillColor;
     glProgramUniform3f(program, blend.constant, float(fill.r), float(fill.g), float(fill.b));
-    ctx.renderer.state->texture(0, saved);  // the copy, or none
+    ctx.state.texture(0, saved);  // the copy, or none
     const Scissor scissor = portal_scissor(ctx, view, rects);
     draw_full_target(ctx, view, {Pass::WindowBlend, view.level + 1, program, scissor, glm::vec3(through)});
 }
@@ -119,7 +119,7 @@ Result<void> prepare_window_blend(Programs& programs, bool multisample) {
 
 void draw_mirror_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects,
                         const PortalSteps& steps) {
-    const scene::PortalInfo& m = ctx.renderer.portals[p];
+    const scene::PortalInfo& m = ctx.scene.portals[p];
     mark_portal(ctx, view, p, rects, steps);
     ctx.scratch.stats.portal_passes_drawn += 1;
     draw_level(ctx, reflected_view(ctx, view, p, rects, shading::max_channel(m.tint)));
@@ -129,7 +129,7 @@ void draw_mirror_portal(const DrawContext& ctx, const LevelView& view, int p, co
 
 void draw_window_portal(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects,
                         const PortalSteps& steps) {
-    const scene::PortalInfo& w = ctx.renderer.portals[p];
+    const scene::PortalInfo& w = ctx.scene.portals[p];
     const double r = w.reflectance;
     const double through_factor = (1.0 - r) * shading::max_channel(w.tint);
     const bool reflect = view.weight * r >= shading::kMinBranchWeight;

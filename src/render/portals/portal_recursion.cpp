@@ -42,7 +42,7 @@ void draw_portal(const DrawContext& ctx, const LevelView& view, int p, const std
         if (over_budget && level < ctx.frame.max_depth) stats.budget_fills += 1;
         return;
     }
-    switch (ctx.renderer.portals[p].kind) {
+    switch (ctx.scene.portals[p].kind) {
         case layout::PortalKind::Mirror: draw_mirror_portal(ctx, view, p, rects, steps); return;
         case layout::PortalKind::Window: draw_window_portal(ctx, view, p, rects, steps); return;
         case layout::PortalKind::Door: break;
@@ -95,7 +95,7 @@ void draw_top_portal_profiled(const DrawContext& ctx, const LevelView& view, int
 // alone hides portal k from an eye.
 std::vector<std::array<NdcRect, 2>> visible_portals(const DrawContext& ctx, const LevelView& view,
                                                     const std::vector<int>& portals, std::vector<char>& masked) {
-    const RendererData& r = ctx.renderer;
+    const SceneData& r = ctx.scene;
     const FrameDesc& f = ctx.frame;
     const bool occluders = f.cull_portals && f.cull_objects;
     std::vector<std::array<NdcRect, 2>> visible(portals.size());
@@ -148,7 +148,7 @@ void draw_level_surfaces(const DrawContext& ctx, const LevelView& view, const st
 }
 
 void draw_level(const DrawContext& ctx, const LevelView& view) {
-    const RendererData& r = ctx.renderer;
+    const SceneData& r = ctx.scene;
     FrameScratch& s = ctx.scratch;
     assert(view.cell >= 0 && static_cast<size_t>(view.cell) < r.cells.size());
     const int level = view.level;

@@ -58,7 +58,7 @@ bool steps_meet(const StepsBox& a, const StepsBox& b) {
     return !a.empty && !b.empty && a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
 }
 
-bool steps_has_glass(const RendererData& r) {
+bool steps_has_glass(const SceneData& r) {
     return std::any_of(r.portals.begin(), r.portals.end(),
                        [](const scene::PortalInfo& p) { return p.kind != layout::PortalKind::Door; });
 }
@@ -73,7 +73,7 @@ std::vector<PortalSteps> portal_steps(const DrawContext& ctx, const LevelView& v
     const size_t n = visible.size();
     std::vector<std::array<StepsBox, 2>> eyes(n);
     std::vector<StepsBox> reach(n);  // what a later portal's draws may touch
-    const bool glass = steps_has_glass(ctx.renderer);
+    const bool glass = steps_has_glass(ctx.scene);
     for (size_t k = 0; k < n; ++k)
         for (int e = 0; e < 2; ++e) {
             eyes[k][e] = view.eyes[e].active ? steps_box(f, visible[k][e], e) : StepsBox{};

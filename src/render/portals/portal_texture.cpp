@@ -26,7 +26,7 @@ FrameDesc inner_frame(const FrameDesc& f) {
 
 }  // namespace
 
-Result<void> ensure_portal_textures(const RendererData& r, FrameTargets& targets, const FrameDesc& frame) {
+Result<void> ensure_portal_textures(const SceneData& r, FrameTargets& targets, const FrameDesc& frame) {
     assert(frame.room >= 0 && static_cast<size_t>(frame.room) < r.links.room_portals.size());
     const FrameDesc inner = inner_frame(frame);
     // One slot per portal of a cell whose doors may take a texture (a slot
@@ -50,7 +50,7 @@ Result<void> ensure_portal_textures(const RendererData& r, FrameTargets& targets
 
 void draw_portal_via_texture(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects,
                              size_t slot) {
-    const RendererData& r = ctx.renderer;
+    const SceneData& r = ctx.scene;
     const FrameDesc inner = inner_frame(ctx.frame);
     assert(slot < ctx.targets.portal_textures.size());  // ensure_portal_textures made them
     const Target& texture = ctx.targets.portal_textures[slot];
@@ -58,8 +58,11 @@ void draw_portal_via_texture(const DrawContext& ctx, const LevelView& view, int 
     // The view through the portal, at level + 1 everywhere in the texture,
     // which is its own target: the view is not limited to the portal's
     // pixels there.
-    clear_target(*r.state, texture, stencil_level(ctx.frame.max_depth, view.level + 1));
-    const DrawContext inside{.renderer = r,
+    clear_target(ctx.state, texture, stencil_level(ctx.frame.max_depth, view.level + 1));
+    const DrawContext inside{.state = ctx.state,
+                             .scene = r,
+                             .programs = ctx.programs,
+                             .lights = ctx.lights,
                              .frame = inner,
                              .scene_program = ctx.scene_program,
                              .material_program = ctx.material_program,
@@ -76,11 +79,11 @@ void draw_portal_via_texture(const DrawContext& ctx, const LevelView& view, int 
 
     // The box shows the texture where it is the visible surface.
     const bool volumes = !r.volumes[static_cast<size_t>(view.cell)].empty();
-    const SceneProgram& shows = volumes ? *r.programs.portal_texture_volumes : *r.programs.portal_texture;
+    const SceneProgram& shows = volumes ? *ctx.programs.portal_texture_volumes : *ctx.programs.portal_texture;
     glProgramUniform2f(shows.program.get(), shows.target_size, float(2 * ctx.frame.eye_width),
                        float(ctx.frame.eye_height));
-    r.state->texture(0, texture.color_texture.get());
-    r.state->texture(1, texture.ids_texture.get());
+    ctx.state.texture(0, texture.color_texture.get());
+    ctx.state.texture(1, texture.ids_texture.get());
     const ColourQueryScope colour(ctx.profiler);
     draw_portal_box(ctx, view, {Pass::PortalTexture, view.level, &shows, portal_scissor(ctx, view, rects)}, p, rects);
 }

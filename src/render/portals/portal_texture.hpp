@@ -13,7 +13,7 @@ namespace impossible::render {
 // Makes sure there is one sampled target per portal of the frame's room, of
 // FrameDesc::portal_texture_scale × the eye size; an incomplete one is an
 // error.
-Result<void> ensure_portal_textures(const RendererData& r, FrameTargets& targets, const FrameDesc& frame);
+Result<void> ensure_portal_textures(const SceneData& r, FrameTargets& targets, const FrameDesc& frame);
 
 // The view through portal `p` of the head's cell drawn into portal texture
 // `slot`, which the box then shows where it is the visible surface.

@@ -25,7 +25,7 @@ namespace {
 // portal_recursion.cpp's visible_portals for a level-0 view (no exit).
 std::vector<std::array<NdcRect, 2>> zclear_visible_doors(const DrawContext& ctx, const LevelView& view,
                                                          const std::vector<int>& portals) {
-    const RendererData& r = ctx.renderer;
+    const SceneData& r = ctx.scene;
     const FrameDesc& f = ctx.frame;
     std::vector<std::array<NdcRect, 2>> visible(portals.size());
     for (size_t k = 0; k < portals.size(); ++k) {
@@ -45,7 +45,7 @@ std::vector<std::array<NdcRect, 2>> zclear_visible_doors(const DrawContext& ctx,
 
 // Depth back to far within `scissor` (everywhere without one).
 void zclear_depth(const DrawContext& ctx, const Scissor& scissor) {
-    gl::StateCache& state = *ctx.renderer.state;
+    gl::StateCache& state = ctx.state;
     state.draw_framebuffer(ctx.target.framebuffer.get());
     state.apply(kClearState, 0);
     if (scissor)
@@ -68,7 +68,10 @@ void zclear_draw_target(const DrawContext& ctx, const LevelView& view, int p, co
     }
     FrameDesc shallower = ctx.frame;
     shallower.max_depth = ctx.frame.max_depth - 1;
-    const DrawContext target_ctx{.renderer = ctx.renderer,
+    const DrawContext target_ctx{.state = ctx.state,
+                                 .scene = ctx.scene,
+                                 .programs = ctx.programs,
+                                 .lights = ctx.lights,
                                  .frame = shallower,
                                  .scene_program = ctx.scene_program,
                                  .material_program = ctx.material_program,
@@ -89,7 +92,7 @@ void zclear_draw_target(const DrawContext& ctx, const LevelView& view, int p, co
 
 }  // namespace
 
-Result<void> check_zclear(const RendererData& r, const FrameDesc& frame) {
+Result<void> check_zclear(const SceneData& r, const FrameDesc& frame) {
     const std::string refused = "--technique z-clear ";
     if (frame.max_depth > 1)
         return Error{refused + "draws one level of doors: --max-depth " + std::to_string(frame.max_depth) +
@@ -110,7 +113,7 @@ void draw_zclear(const DrawContext& ctx, const LevelView& view) {
         return;
     }
     FrameStats& stats = ctx.scratch.stats;
-    const std::vector<int>& portals = ctx.renderer.links.room_portals[view.cell];
+    const std::vector<int>& portals = ctx.scene.links.room_portals[view.cell];
     const std::vector<std::array<NdcRect, 2>> visible = zclear_visible_doors(ctx, view, portals);
     std::vector<size_t> fills;
     for (size_t k = 0; k < portals.size(); ++k) {

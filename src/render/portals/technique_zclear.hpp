@@ -10,7 +10,7 @@ namespace impossible::render {
 // Whether the frame's z-clear portals can be drawn (FrameDesc::z_clear):
 // depth <= 1, doors only, no volumes, with culling, no portal textures; the
 // error names the option and what breaks the rule.
-Result<void> check_zclear(const RendererData& r, const FrameDesc& frame);
+Result<void> check_zclear(const SceneData& r, const FrameDesc& frame);
 
 // The head's view (level 0) by the z-clear scheme: each visible door's target
 // room first, within its rectangle, then depth cleared, the doors into depth

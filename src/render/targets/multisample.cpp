@@ -5,8 +5,9 @@
 #include <cassert>
 #include <string>
 
+#include "render/programs/programs.hpp"
 #include "render/programs/scene_program.hpp"
-#include "render/renderer_data.hpp"
+#include "render/targets/frame_targets.hpp"
 
 namespace impossible::render {
 namespace {
@@ -105,11 +106,11 @@ const Target& drawing_target(const FrameTargets& targets, const FrameDesc& frame
     return *t;
 }
 
-void resolve_multisampled(const RendererData& r, const FrameTargets& targets, const FrameDesc& frame) {
+void resolve_multisampled(gl::StateCache& state, const Programs& programs, const FrameTargets& targets,
+                          const FrameDesc& frame) {
     if (frame.samples <= 1) return;
     const Multisampling& m = targets.multisampling;
     const Target& from = drawing_target(targets, frame);
-    gl::StateCache& state = *r.state;
     // Blits obey the scissor; the id pass writes its one attachment everywhere.
     state.apply(gl::plain_2d_state(false), 0);
     state.no_scissor();
@@ -120,9 +121,9 @@ void resolve_multisampled(const RendererData& r, const FrameTargets& targets, co
 
     state.draw_framebuffer(m.ids_out.get());
     state.viewport({0, 0, w, h});
-    state.program(r.programs.id_resolve[static_cast<size_t>(from.samples)].get());
+    state.program(programs.id_resolve[static_cast<size_t>(from.samples)].get());
     state.texture(0, from.ids_texture.get());
-    state.vertex_array(r.empty_vao.get());
+    state.vertex_array(programs.empty_vao.get());
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 

@@ -18,6 +18,7 @@
 
 #include "base/result.hpp"
 #include "gl/handles.hpp"
+#include "gl/state.hpp"
 #include "render/frame.hpp"
 #include "render/target.hpp"
 
@@ -32,7 +33,7 @@ std::vector<int> offered_sample_counts(DepthMode depth);
 Result<void> check_sample_count(int samples, DepthMode depth);
 
 // What a renderer keeps for multisampled frames (the id resolve's programs
-// are with its others, render/renderer_data.hpp).
+// are with its others, render/programs/programs.hpp).
 struct Multisampling {
     // A few multisampled targets, by size, depth mode and count, so that a
     // benchmark alternating sample counts frame by frame does not re-create
@@ -43,5 +44,22 @@ struct Multisampling {
     gl::Framebuffer colour_out;
     gl::Framebuffer ids_out;
 };
+
+struct FrameTargets;
+struct Programs;
+
+// For FrameDesc::samples > 1: checks the count, makes the multisampled
+// target of the frame's size, the framebuffers the resolve writes through
+// and the id resolve's program; nothing for 1 sample. Call after
+// `targets.target` is made.
+Result<void> ensure_multisampled(Programs& programs, FrameTargets& targets, const FrameDesc& frame);
+
+// The target the frame's passes draw into: `target`, or the multisampled one.
+const Target& drawing_target(const FrameTargets& targets, const FrameDesc& frame);
+
+// Resolves the frame's multisampled target into `target` (colour averaged,
+// ids by majority) through the context's cache; nothing for 1 sample.
+void resolve_multisampled(gl::StateCache& state, const Programs& programs, const FrameTargets& targets,
+                          const FrameDesc& frame);
 
 }  // namespace impossible::render
