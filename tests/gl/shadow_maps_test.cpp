@@ -1,4 +1,4 @@
-// Cube shadow maps (render/shadow_maps.hpp): what the maps hold, read back
+// Cube shadow maps (render/lights/shadow_maps.hpp): what the maps hold, read back
 // through shaders/shadow_lookup.frag.glsl's light_visible in a compute
 // shader, for light images made by hand (so that these tests depend on the
 // maps alone, not on the images' enumeration).

@@ -30,7 +30,7 @@ void visible_batches(const scene::CellObjects& cell, const LevelView& view, int 
                      double margin_px, CullScratch& scratch, std::vector<scene::DrawBatch>& out);
 
 // A level's draw of part of a cell: a batch of the scene's index buffer, or
-// (`faces`) a range of the frame's face stream (render/box_faces.hpp).
+// (`faces`) a range of the frame's face stream (render/objects/box_faces.hpp).
 struct VisibleDraw {
     scene::DrawBatch batch;
     bool faces = false;

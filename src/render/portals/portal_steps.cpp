@@ -1,4 +1,4 @@
-// Which of a door's passes a level may leave out (portal_recursion.hpp,
+// Which of a door's passes a level may leave out (portal_steps.hpp,
 // PortalSteps), decided from the level's visible portals on screen.
 //
 // Every draw of a portal's subtree lies within its rectangle in each eye,

@@ -18,7 +18,7 @@ struct GpuScene {
     gl::Buffer indices;
     gl::VertexArray vao;
     // The same vertices with the frame's face stream as element buffer
-    // (render/box_faces.hpp): a buffer of no size until a frame writes it.
+    // (render/objects/box_faces.hpp): a buffer of no size until a frame writes it.
     gl::Buffer face_indices;
     gl::VertexArray face_vao;
     std::vector<gl::Texture> textures;  // per scene::Scene::textures, with their mipmaps

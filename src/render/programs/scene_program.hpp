@@ -51,7 +51,7 @@ struct SceneProgram {
 // The shader storage buffer binding of every room's volume boxes.
 inline constexpr GLuint kVolumeBinding = 3;
 // The shader storage buffer bindings of every room's light images and of
-// their paths' rectangles (render/light_buffers.hpp).
+// their paths' rectangles (render/lights/light_buffers.hpp).
 inline constexpr GLuint kLightImagesBinding = 4;
 inline constexpr GLuint kLightRectsBinding = 5;
 
@@ -106,7 +106,7 @@ struct WindowBlendProgram {
 Result<WindowBlendProgram> build_window_blend_program(bool multisample);
 
 // The id resolve of a multisampled target (shaders/id_resolve.frag.glsl,
-// render/multisample.hpp) for `samples` samples, reading texture unit 0.
+// render/targets/multisample.hpp) for `samples` samples, reading texture unit 0.
 Result<gl::Program> build_id_resolve_program(int samples);
 
 }  // namespace impossible::render
