@@ -1,4 +1,4 @@
-// The hidden-area mask (src/render/hidden_mask.hpp): trapezoids that cover
+// The hidden-area mask (src/render/targets/hidden_mask.hpp): trapezoids that cover
 // exactly the hidden pixels' centres (or, multisampled, every sample of each
 // hidden pixel), in the side-by-side target's normalised device coordinates.
 layout(location = 0) in vec2 a_position;

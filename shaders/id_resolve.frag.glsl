@@ -1,4 +1,4 @@
-// The id resolve of a multisampled target (src/render/multisample.hpp). Cell
+// The id resolve of a multisampled target (src/render/targets/multisample.hpp). Cell
 // ids are integers and cannot be averaged: each pixel takes the id that most
 // of its samples hold. A tie (an edge through the pixel splitting its samples
 // evenly, which happens when the edge passes close to the centre) goes to the

@@ -1,6 +1,6 @@
 // The lit colour of layout-format.md, "Lights" (src/shading/lighting.hpp's
 // formulas in float), for the LIGHTS variants of scene.frag.glsl:
-// render/scene_program.cpp puts it before the fragment shader, after the
+// render/programs/scene_program.cpp puts it before the fragment shader, after the
 // volume test. Only the LIGHTS variants compile it; every other variant's
 // text is as before.
 #if defined(LIGHTS)
@@ -8,7 +8,7 @@
 // lights it), less that room's cell origin.
 in vec3 v_light_position;
 
-// Every room's light images (render/light_buffers.hpp), room after room, five
+// Every room's light images (render/lights/light_buffers.hpp), room after room, five
 // vec4s each, positions relative to the room's cell origin:
 //   [0] xyz: the image L', w: range (0: none)
 //   [1] rgb: color · intensity · factor, w: cos outer (2: a point light)

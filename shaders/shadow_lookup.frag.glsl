@@ -1,4 +1,4 @@
-// The props' shadows for the lit fragment shader (render/shadow_maps.hpp):
+// The props' shadows for the lit fragment shader (render/lights/shadow_maps.hpp):
 // light_visible(g, p - L', d) is 1 when no prop lies between light image g's
 // position L' and the point p at distance d = |p - L'| (in the lit room's
 // coordinates; only the difference is needed, so any origin will do), 0 when
@@ -13,7 +13,7 @@
 // Only the LIGHTS variants compile it (it goes before lighting.frag.glsl,
 // which then uses this light_visible instead of its own, always 1); the
 // renderer binds the maps for every frame of a lit layout
-// (render/shadow_maps.hpp, prepare_shadow_maps), with shadows off too.
+// (render/lights/shadow_maps.hpp, prepare_shadow_maps), with shadows off too.
 #if defined(LIGHTS)
 #define SHADOWS
 // Texels of bias per unit of tan(incidence): a nearest texel's direction is

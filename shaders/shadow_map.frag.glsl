@@ -1,5 +1,5 @@
 // The distance from the light's image to the nearest prop surface, per texel
-// of a cube shadow map's face (render/shadow_maps.hpp). Cut-outs drop the
+// of a cube shadow map's face (render/lights/shadow_maps.hpp). Cut-outs drop the
 // fragments whose alpha is below the cutoff, read at mip level 0 as the
 // tracer reads it.
 in vec3 v_relative;

@@ -1,5 +1,5 @@
 // A prop drawn into one face of a light image's cube shadow map
-// (render/shadow_maps.hpp): positions relative to the image's position L',
+// (render/lights/shadow_maps.hpp): positions relative to the image's position L',
 // in the lit room's coordinates, clipped to the leg's slab and the object's
 // door cuts.
 layout(location = 0) in vec3 a_position;

@@ -1,5 +1,5 @@
 // The volume test both scene fragment shaders share (scene.frag.glsl,
-// portal_texture.frag.glsl): render/scene_program.cpp puts it before each
+// portal_texture.frag.glsl): render/programs/scene_program.cpp puts it before each
 // of them. Only the VOLUMES variants compile it.
 #if defined(VOLUMES)
 // The cell's volume portals: four vec4s each in one buffer of every room's

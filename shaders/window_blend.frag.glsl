@@ -1,6 +1,6 @@
 // A window's reflected view, copied aside before the view through it was
 // drawn, scaled by the reflectance r; the blend adds it to (1 - r) · tint ·
-// the colour there (render/portal_glass.cpp). A reflected view cut by the
+// the colour there (render/portals/portal_glass.cpp). A reflected view cut by the
 // branch-weight rule is a constant (the fill colour) instead of the copy.
 #if defined(SAVED_MULTISAMPLE)
 uniform sampler2DMS u_saved;

@@ -5,7 +5,7 @@
 // The fragment shader then lights a point p by an image only if the segment
 // from p to the image passes its apertures in order (and meets no blocker):
 // exact for convex rooms and portals. Props' shadows are the shadow maps'
-// (render/shadow_maps.hpp). The tracer follows shadow rays on its own and
+// (render/lights/shadow_maps.hpp). The tracer follows shadow rays on its own and
 // does not use this (it is the oracle this is checked against).
 #pragma once
 

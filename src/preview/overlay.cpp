@@ -2,7 +2,7 @@
 
 #include <cstddef>
 
-#include "render/scene_program.hpp"
+#include "render/programs/scene_program.hpp"
 
 namespace impossible::preview {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "render/scene_program.hpp"
+#include "render/programs/scene_program.hpp"
 
 namespace impossible::preview {
 

@@ -79,7 +79,7 @@ struct Technique {
     // draws no texture (byte for byte the stencil frame).
     int portal_texture_level = 0;
     // z-clear portals (--technique z-clear, the PowerVR scheme;
-    // render/technique_zclear.cpp): each visible door's target room drawn
+    // render/portals/technique_zclear.cpp): each visible door's target room drawn
     // first within its rectangle, depth cleared, the doors into depth, then
     // the head's room. Depth 1 (max_depth <= 1), doors only, with culling,
     // no portal textures; anything else is an error.
@@ -93,7 +93,7 @@ struct Technique {
     bool occlusion_test = false;
     // Under "lighting": "lights" (layout-format.md, "Lights"): the shadows
     // props cast, from cube shadow maps of shadow_map_size² texels per face
-    // and light image (render/shadow_maps.hpp); off (or a size of 0): light
+    // and light image (render/lights/shadow_maps.hpp); off (or a size of 0): light
     // passes props as if they were not there. No effect on "fixed" layouts.
     bool shadows = true;
     int shadow_map_size = kDefaultShadowMapSize;
@@ -109,21 +109,21 @@ struct Diagnostics {
     // With culling: props are drawn only where an eye's frustum, narrowed
     // through the portals, may see their bounds, and a portal hidden behind
     // one of its room's large box props is skipped with its subtree
-    // (render/object_culling.hpp).
+    // (render/objects/object_culling.hpp).
     bool cull_objects = true;
     // The plain batches of a cell a level draws (with per-object culling,
     // runs of the index buffer between culled props) submitted as one
-    // glMultiDrawElementsIndirect instead of one draw each (render/multi_draw.hpp);
+    // glMultiDrawElementsIndirect instead of one draw each (render/objects/multi_draw.hpp);
     // off only to compare the two (bench).
     bool multi_draw = true;
     // With culling: a portal that no other visible portal of its level comes
     // near on screen is marked with its depth reset in one draw, and one that
-    // no later one comes near is not unmarked (render/portal_steps.cpp,
+    // no later one comes near is not unmarked (render/portals/portal_steps.cpp,
     // PortalSteps); the image is the same. Off only to compare (tests, bench).
     bool portal_steps = true;
     // With per-object culling: of each visible box prop, only the faces an
     // eye of the level may see from the front, from a stream written per
-    // frame (render/box_faces.hpp); the image is the same. Off only to
+    // frame (render/objects/box_faces.hpp); the image is the same. Off only to
     // compare (bench's N/all-faces, tests).
     bool cull_box_faces = true;
     // Textures read at mip level 0 with the magnification filter, as the

@@ -5,7 +5,9 @@
 // cache, which every user of the context shares (gl/state.hpp). Talks to the
 // rest of the program through plain data: a FrameDesc in, an Image and
 // FrameStats out. Everything it draws comes from the scene (scene::Scene,
-// portals included); it reads nothing of the layout. The scene's vertex
+// portals included); of the layout it keeps only a lit layout's lights, for
+// light images at another light depth (render/scene_data.hpp, SceneLights).
+// The scene's vertex
 // arrays are uploaded once and not kept; the renderer keeps index ranges, the
 // portal links and the portals' plain data.
 #pragma once

@@ -34,7 +34,7 @@ Result<Target> create_sampled_target(int width, int height, DepthMode depth);
 
 // A target of `samples` (> 1) samples per pixel: colour and depth-stencil in
 // multisample renderbuffers, ids in a multisample texture. The caller checks
-// first that the driver offers the count (render/multisample.hpp).
+// first that the driver offers the count (render/targets/multisample.hpp).
 Result<Target> create_multisampled_target(int width, int height, DepthMode depth, int samples);
 
 // Reads colour and ids back, rows from the top, binding the target as the

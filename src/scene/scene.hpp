@@ -96,7 +96,7 @@ struct CellObject {
     std::uint32_t batch_count = 0;
     // A box prop: its first vertex (append_box_prop's 24, four per face,
     // faces -x, +x, -y, +y, -z, +z); -1 for a model. A level may then draw
-    // only the faces its eyes can see (render/box_faces.hpp).
+    // only the faces its eyes can see (render/objects/box_faces.hpp).
     std::int64_t box_vertex = -1;
     glm::dvec3 box_min{0.0}, box_max{0.0};  // a box prop's corners as the layout writes them
 };

@@ -45,7 +45,8 @@ WalkedFrame WalkDriver::step(const math::HeadPose& physical, const walk::HandPos
         const layout::Layout& layout = session_->layout();
         for (const int m : moving_) {
             const walk::DynamicProp& p = set.props[static_cast<std::size_t>(m)];
-            const layout::Prop& prop = layout.rooms[static_cast<std::size_t>(p.room)].props[static_cast<std::size_t>(p.index)];
+            const layout::Prop& prop =
+                layout.rooms[static_cast<std::size_t>(p.room)].props[static_cast<std::size_t>(p.index)];
             f.props.push_back({&layout::prop_id(prop), prop_walks_->at(m, *time).room});
         }
     }

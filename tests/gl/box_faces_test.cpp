@@ -1,4 +1,4 @@
-// Back faces of box props left out on the CPU (render/box_faces.hpp): fewer
+// Back faces of box props left out on the CPU (render/objects/box_faces.hpp): fewer
 // triangles, the same image, pixel for pixel, for every eye a level can have
 // (both eyes, virtual eyes behind doors, mirrored views) and every way of
 // drawing it.
@@ -11,7 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gl_fixture.hpp"
-#include "render/box_faces.hpp"
+#include "render/objects/box_faces.hpp"
 
 namespace impossible {
 namespace {

@@ -4,7 +4,7 @@
 // through a trapdoor under it. The tracer clips its bottom face; the
 // rasteriser's clip distance there is 0 give or take float rounding, so it
 // drew the face (dark, facing down) where the room's ceiling shows
-// (render/box_faces.hpp, faces_in_clip_planes, leaves such faces out).
+// (render/objects/box_faces.hpp, faces_in_clip_planes, leaves such faces out).
 #include "cli/view_options.hpp"
 #include "gl_fixture.hpp"
 #include "image/compare.hpp"

@@ -12,7 +12,7 @@
 #include "gl_fixture.hpp"
 #include "image/compare.hpp"
 #include "pose_cases.hpp"
-#include "render/multisample.hpp"
+#include "render/targets/multisample.hpp"
 #include "trace/sample_pattern.hpp"
 #include "trace/tracer.hpp"
 

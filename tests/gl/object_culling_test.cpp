@@ -1,4 +1,4 @@
-// Per-object culling (render/object_culling.hpp): props outside every eye's
+// Per-object culling (render/objects/object_culling.hpp): props outside every eye's
 // frustum, narrowed through portals, are not drawn, and the image is the one
 // drawn without culling, pixel for pixel.
 #include <cmath>

@@ -7,7 +7,7 @@
 #include "gl/handles.hpp"
 
 #include "gl_fixture.hpp"
-#include "render/view.hpp"
+#include "render/portals/view.hpp"
 
 namespace impossible {
 namespace {

@@ -1,4 +1,4 @@
-// Cheaper door passes (render/portal_steps.cpp, PortalSteps): a portal that
+// Cheaper door passes (render/portals/portal_steps.cpp, PortalSteps): a portal that
 // no other of its level comes near on screen is marked with its depth reset
 // in one draw (the stencil's box bit), and one that no later portal comes
 // near is not unmarked. The image is the one drawn with every step, byte for
@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "gl_fixture.hpp"
-#include "render/passes.hpp"
+#include "render/portals/passes.hpp"
 
 namespace impossible {
 namespace {

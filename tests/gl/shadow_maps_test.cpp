@@ -1,4 +1,4 @@
-// Cube shadow maps (render/shadow_maps.hpp): what the maps hold, read back
+// Cube shadow maps (render/lights/shadow_maps.hpp): what the maps hold, read back
 // through shaders/shadow_lookup.frag.glsl's light_visible in a compute
 // shader, for light images made by hand (so that these tests depend on the
 // maps alone, not on the images' enumeration).
@@ -13,9 +13,9 @@
 #include "base/embedded.hpp"
 #include "gl/context.hpp"
 #include "gl/shader.hpp"
-#include "render/gpu_scene.hpp"
-#include "render/scene_program.hpp"
-#include "render/shadow_maps.hpp"
+#include "render/lights/shadow_maps.hpp"
+#include "render/programs/gpu_scene.hpp"
+#include "render/programs/scene_program.hpp"
 #include "scene/scene.hpp"
 #include "walk/objects.hpp"
 

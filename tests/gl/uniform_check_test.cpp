@@ -6,7 +6,7 @@
 
 #include "gl/context.hpp"
 #include "gl/shader.hpp"
-#include "render/scene_program.hpp"
+#include "render/programs/scene_program.hpp"
 
 namespace impossible {
 namespace {

@@ -116,7 +116,7 @@ TEST(VolumeRender, TheTargetRoomShowsInsideTheVolumeWithItsId) {
 }
 
 // A large box inside a volume is hidden there, so it must not hide the door
-// behind it (the occluder test of render/object_culling.hpp skips portals
+// behind it (the occluder test of render/objects/object_culling.hpp skips portals
 // hidden by a room's large boxes).
 TEST(VolumeRender, APropInsideAVolumeHidesNoDoor) {
     CrossingRig rig(R"({

@@ -1,0 +1,124 @@
+#include "render/lights/light_buffers.hpp"
+
+#include <cassert>
+#include <cmath>
+
+#include "math/portal.hpp"
+#include "render/programs/scene_program.hpp"
+
+namespace impossible::render {
+namespace {
+
+void push4(std::vector<float>& out, const glm::dvec3& v, double w) {
+    out.insert(out.end(),
+               {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), static_cast<float>(w)});
+}
+
+// A portal rectangle in the lit room's coordinates less its origin: centre
+// (w: `w`), normal, and right and up over the half extents.
+void push_rect(std::vector<float>& out, const math::PortalRect& rect, const glm::dvec3& origin, double w) {
+    push4(out, rect.center - origin, w);
+    push4(out, rect.normal, 0.0);
+    push4(out, glm::cross(rect.up, rect.normal) / (0.5 * rect.width), 0.0);
+    push4(out, rect.up / (0.5 * rect.height), 0.0);
+}
+
+void push_image(PackedLights& out, const lights::LightImage& image, const layout::Light& light,
+                const glm::dvec3& origin) {
+    const auto rect_index = [&out] { return static_cast<double>(out.rects.size() / (4 * kLightRectVec4s)); };
+    push4(out.images, image.position - origin, light.range > 0.0 ? light.range : 0.0);
+    const glm::dvec3 radiance = light.color * light.intensity * image.factor;
+    const double pi = 3.14159265358979323846;
+    double cos_outer = 2.0, inverse_band = 0.0;
+    if (light.spot) {
+        cos_outer = std::cos(light.spot->outer_deg * pi / 180.0);
+        inverse_band = 1.0 / (std::cos(light.spot->inner_deg * pi / 180.0) - cos_outer);
+    }
+    push4(out.images, radiance, cos_outer);
+    push4(out.images, image.spot_direction, inverse_band);
+    // The path's rectangles leg by leg: leg j's blockers, then aperture j.
+    const double first = rect_index();
+    for (size_t leg = 0; leg <= image.apertures.size(); ++leg) {
+        for (const lights::Blocker& b : image.blockers)
+            if (static_cast<size_t>(b.leg) == leg) push_rect(out.rects, b.rect, origin, 1.0);
+        if (leg < image.apertures.size()) push_rect(out.rects, image.apertures[leg].rect, origin, 0.0);
+    }
+    const double count = rect_index() - first;
+    out.images.insert(out.images.end(), {static_cast<float>(first), static_cast<float>(count), 0.0f, 0.0f});
+    out.images.insert(out.images.end(), {0.0f, 0.0f, 0.0f, 0.0f});
+}
+
+// A buffer of `data`, at least one vec4 (a buffer's storage cannot be
+// empty); for a uniform block, all of the block's kLightUboVec4s.
+gl::Buffer upload_floats(std::vector<float> data, bool ubo) {
+    if (data.empty()) data.assign(4, 0.0f);
+    if (ubo) data.resize(4 * static_cast<size_t>(kLightUboVec4s), 0.0f);
+    gl::Buffer buffer = gl::create_buffer();
+    glNamedBufferStorage(buffer.get(), static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(), 0);
+    return buffer;
+}
+
+}  // namespace
+
+PackedLights pack_light_images(const std::vector<lights::RoomLights>& rooms, const layout::Layout& layout,
+                               const std::vector<scene::CellOrigin>& origins) {
+    PackedLights out;
+    for (size_t c = 0; c < rooms.size(); ++c) {
+        const glm::dvec3 origin = origins[c].origin;
+        for (const lights::LightImage& image : rooms[c].images) {
+            const layout::Room& room = layout.rooms[static_cast<size_t>(image.light_room)];
+            push_image(out, image, room.lights[static_cast<size_t>(image.light)], origin);
+        }
+    }
+    return out;
+}
+
+LightBuffers upload_light_images(const std::vector<lights::RoomLights>& rooms, const layout::Layout& layout,
+                                 const std::vector<scene::CellOrigin>& origins, int depth) {
+    LightBuffers out;
+    out.depth = depth;
+    for (size_t c = 0; c < rooms.size(); ++c) {
+        out.first.push_back(out.total);
+        out.count.push_back(static_cast<int>(rooms[c].images.size()));
+        out.ambient.emplace_back(rooms[c].ambient);
+        out.origins.push_back(origins[c].origin);
+        out.total += out.count.back();
+    }
+    out.rooms = rooms;
+    PackedLights packed = pack_light_images(rooms, layout, origins);
+    const auto fits = [](const std::vector<float>& v) { return v.size() <= 4 * static_cast<size_t>(kLightUboVec4s); };
+    GLint block_bytes = 0;
+    glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &block_bytes);
+    out.ubo = fits(packed.images) && fits(packed.rects) && block_bytes >= 16 * kLightUboVec4s;
+    out.images = upload_floats(std::move(packed.images), out.ubo);
+    out.rects = upload_floats(std::move(packed.rects), out.ubo);
+    return out;
+}
+
+void bind_light_buffers(const LightBuffers* buffers) {
+    const GLenum target = buffers && buffers->ubo ? GL_UNIFORM_BUFFER : GL_SHADER_STORAGE_BUFFER;
+    if (!buffers)
+        for (const GLenum t : {GL_UNIFORM_BUFFER, GL_SHADER_STORAGE_BUFFER}) {
+            glBindBufferBase(t, kLightImagesBinding, 0);
+            glBindBufferBase(t, kLightRectsBinding, 0);
+        }
+    else {
+        glBindBufferBase(target, kLightImagesBinding, buffers->images.get());
+        glBindBufferBase(target, kLightRectsBinding, buffers->rects.get());
+    }
+}
+
+void set_light_uniforms(const LightBuffers& buffers, const SceneProgram& program, int room,
+                        const glm::mat4& to_light_space) {
+    if (program.light_count < 0) return;
+    const auto c = static_cast<size_t>(room);
+    const GLuint p = program.program.get();
+    const glm::vec3 origin(buffers.origins[c]);
+    glProgramUniformMatrix4fv(p, program.to_light_space, 1, GL_FALSE, &to_light_space[0][0]);
+    glProgramUniform1i(p, program.light_first, buffers.first[c]);
+    glProgramUniform1i(p, program.light_count, buffers.count[c]);
+    glProgramUniform3fv(p, program.light_ambient, 1, &buffers.ambient[c][0]);
+    glProgramUniform3fv(p, program.light_origin, 1, &origin[0]);
+}
+
+}  // namespace impossible::render

@@ -1,0 +1,63 @@
+// Internal to src/render: the light images of a lit layout (layout-format.md,
+// "Lights"; lights::light_images) as the LIGHTS shaders read them
+// (shaders/lighting.frag.glsl): every room's images in one shader storage
+// buffer, their paths' portal rectangles in another, positions relative to
+// each room's cell origin (scene::CellOrigin) so that float keeps its
+// precision far from the layout's origin.
+#pragma once
+
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "gl/handles.hpp"
+#include "lights/light_images.hpp"
+#include "render/programs/scene_program.hpp"
+#include "scene/scene.hpp"
+
+namespace impossible::render {
+
+// One light depth's images on the GPU. The global index of image i of room C
+// is first[C] + i (the images of the rooms before C, then i).
+struct LightBuffers {
+    int depth = -1;  // the light depth they were made for; -1: none
+    gl::Buffer images;
+    gl::Buffer rects;
+    std::vector<int> first;           // per room
+    std::vector<int> count;           // per room
+    std::vector<glm::vec3> ambient;   // per room
+    std::vector<glm::dvec3> origins;  // per room: its cell origin
+    int total = 0;                    // images of every room
+    std::vector<lights::RoomLights> rooms;
+    bool ubo =
+        false;  // both fit kLightUboVec4s: bound as uniform blocks (kLightsUbo variants)  // the images themselves (the shadow maps')
+};
+
+// The GPU layout of the images: kLightImageVec4s vec4s per image, 4 per rectangle.
+inline constexpr int kLightImageVec4s = 5;
+inline constexpr int kLightRectVec4s = 4;
+
+// The images and rectangles packed as shaders/lighting.frag.glsl reads them.
+struct PackedLights {
+    std::vector<float> images;
+    std::vector<float> rects;
+};
+PackedLights pack_light_images(const std::vector<lights::RoomLights>& rooms, const layout::Layout& layout,
+                               const std::vector<scene::CellOrigin>& origins);
+
+// Packs and uploads `rooms` (one per room, in room order) for `depth`; the
+// lights themselves (colour, intensity, range, cone) are the layout's.
+LightBuffers upload_light_images(const std::vector<lights::RoomLights>& rooms, const layout::Layout& layout,
+                                 const std::vector<scene::CellOrigin>& origins, int depth);
+
+// Binds the buffers at kLightImagesBinding and kLightRectsBinding (null: unbinds).
+void bind_light_buffers(const LightBuffers* buffers);
+
+// A kLights program's uniforms for a draw of surfaces of `room` whose
+// vertices `to_light_space` maps into room's coordinates less its cell origin
+// (the identity for the room's own cell). Nothing for a program without them.
+void set_light_uniforms(const LightBuffers& buffers, const SceneProgram& program, int room,
+                        const glm::mat4& to_light_space);
+
+}  // namespace impossible::render

@@ -1,0 +1,16 @@
+// A colour pass's lights (light_draw.hpp).
+#include "render/lights/light_draw.hpp"
+
+namespace impossible::render {
+
+unsigned light_flags(const DrawContext& ctx) {
+    return ctx.scene.lighting.lit ? kLights | (ctx.lights.ubo ? kLightsUbo : 0u) : 0u;
+}
+
+void set_room_lights(const DrawContext& ctx, const SceneProgram& program, int room, bool count) {
+    if (!ctx.scene.lighting.lit) return;
+    set_light_uniforms(ctx.lights, program, room, glm::mat4(1.0f));
+    if (count) ctx.scratch.stats.light_images += ctx.lights.count[static_cast<size_t>(room)];
+}
+
+}  // namespace impossible::render

@@ -1,0 +1,19 @@
+// Internal to src/render: what a colour pass sets for a lit layout's lights
+// (light_draw.cpp): the program flags and the light uniforms of a room.
+#pragma once
+
+#include "render/draw/draw_state.hpp"
+
+namespace impossible::render {
+
+// kLights under "lighting": "lights", else 0: what the colour passes add to
+// their program's flags.
+unsigned light_flags(const DrawContext& ctx);
+
+// A colour pass's light uniforms for surfaces of `room` (the identity into
+// the room's coordinates: the room's own vertices), counting the room's
+// images in FrameStats::light_images when `count` is set. Nothing for a
+// fixed layout.
+void set_room_lights(const DrawContext& ctx, const SceneProgram& program, int room, bool count);
+
+}  // namespace impossible::render

@@ -1,0 +1,23 @@
+// Internal to src/render: dynamic objects (moving props, hands, crossing
+// objects) and volume portals drawn in the stencil recursion
+// (object_draw.cpp; the frame's objects are placed by frame_objects.hpp).
+#pragma once
+
+#include "render/draw/draw_state.hpp"
+
+namespace impossible::render {
+
+// The program a draw of `cell` uses: the plain or material one, or the
+// variant with `flags` (and kVolumes where the cell has volumes).
+const SceneProgram& cell_program(const DrawContext& ctx, int cell, unsigned flags = 0u);
+
+// The instances placed in `cell` that the level's eyes may see, drawn in
+// `view` (whose cell is `cell`, or holds a volume whose target is `cell`)
+// with id cell + 1; `inside` as set_volume_uniforms's.
+void draw_cell_instances(const DrawContext& ctx, const LevelView& view, const Scissor& scissor, int cell, int inside);
+
+// Each volume of view.cell: its target room's batches and instances, shown
+// only inside the volume, tinted.
+void draw_volume_rooms(const DrawContext& ctx, const LevelView& view, const Scissor& scissor);
+
+}  // namespace impossible::render

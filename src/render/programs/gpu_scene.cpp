@@ -1,0 +1,80 @@
+#include "render/programs/gpu_scene.hpp"
+
+#include <algorithm>
+#include <cstddef>
+
+namespace impossible::render {
+
+namespace {
+
+bool has_mipmaps(int min_filter) {
+    namespace code = assets::sampler_code;
+    return min_filter == code::kNearestMipmapNearest || min_filter == code::kLinearMipmapNearest ||
+           min_filter == code::kNearestMipmapLinear || min_filter == code::kLinearMipmapLinear;
+}
+
+gl::Texture upload_texture(const scene::SceneTexture& t) {
+    const image::Pixels& image = *t.image;
+    int mip_levels = 1;
+    if (has_mipmaps(t.sampler.min_filter))
+        while ((std::max(image.width, image.height) >> mip_levels) > 0) ++mip_levels;
+    gl::Texture texture = gl::create_texture(GL_TEXTURE_2D);
+    const GLuint name = texture.get();
+    glTextureStorage2D(name, mip_levels, GL_RGBA8, image.width, image.height);
+    // Rows top first: row 0 is t = 0, as texture coordinates put the image's top there.
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTextureSubImage2D(name, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.data.data());
+    if (mip_levels > 1) glGenerateTextureMipmap(name);
+    // The sampler codes are glTF's, which are OpenGL's enums.
+    glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, t.sampler.mag_filter);
+    glTextureParameteri(name, GL_TEXTURE_MIN_FILTER, t.sampler.min_filter);
+    glTextureParameteri(name, GL_TEXTURE_WRAP_S, t.sampler.wrap_s);
+    glTextureParameteri(name, GL_TEXTURE_WRAP_T, t.sampler.wrap_t);
+    return texture;
+}
+
+// scene::Vertex from `vertices`, indices from `indices`.
+void describe_vertices(GLuint vao, GLuint vertices, GLuint indices) {
+    glVertexArrayVertexBuffer(vao, 0, vertices, 0, sizeof(scene::Vertex));
+    glVertexArrayElementBuffer(vao, indices);
+    auto attribute = [vao](GLuint index, GLint size, std::size_t offset) {
+        glEnableVertexArrayAttrib(vao, index);
+        glVertexArrayAttribFormat(vao, index, size, GL_FLOAT, GL_FALSE, static_cast<GLuint>(offset));
+        glVertexArrayAttribBinding(vao, index, 0);
+    };
+    attribute(0, 3, offsetof(scene::Vertex, position));
+    attribute(1, 3, offsetof(scene::Vertex, normal));
+    attribute(2, 3, offsetof(scene::Vertex, color));
+    attribute(3, 1, offsetof(scene::Vertex, checker));
+    attribute(4, 2, offsetof(scene::Vertex, uv));
+    attribute(5, 1, offsetof(scene::Vertex, alpha));
+}
+
+}  // namespace
+
+GpuScene upload_scene(const scene::Scene& scene) {
+    GpuScene gpu;
+    gpu.vertices = gl::create_buffer();
+    gpu.indices = gl::create_buffer();
+    gpu.vao = gl::create_vertex_array();
+    // Zero-size buffers are valid GL but glNamedBufferStorage rejects size 0.
+    glNamedBufferStorage(gpu.vertices.get(), static_cast<GLsizeiptr>(scene.vertices.size() * sizeof(scene::Vertex) + 1),
+                         nullptr, GL_DYNAMIC_STORAGE_BIT);
+    glNamedBufferSubData(gpu.vertices.get(), 0, static_cast<GLsizeiptr>(scene.vertices.size() * sizeof(scene::Vertex)),
+                         scene.vertices.data());
+    glNamedBufferStorage(gpu.indices.get(), static_cast<GLsizeiptr>(scene.indices.size() * sizeof(std::uint32_t) + 4),
+                         nullptr, GL_DYNAMIC_STORAGE_BIT);
+    glNamedBufferSubData(gpu.indices.get(), 0, static_cast<GLsizeiptr>(scene.indices.size() * sizeof(std::uint32_t)),
+                         scene.indices.data());
+
+    gpu.face_indices = gl::create_buffer();
+    gpu.face_vao = gl::create_vertex_array();
+    describe_vertices(gpu.vao.get(), gpu.vertices.get(), gpu.indices.get());
+    describe_vertices(gpu.face_vao.get(), gpu.vertices.get(), gpu.face_indices.get());
+
+    gpu.textures.reserve(scene.textures.size());
+    for (const scene::SceneTexture& t : scene.textures) gpu.textures.push_back(upload_texture(t));
+    return gpu;
+}
+
+}  // namespace impossible::render

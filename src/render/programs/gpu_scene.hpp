@@ -1,0 +1,32 @@
+// The scene's shared vertex and index arrays on the GPU, with one vertex array
+// object describing scene::Vertex, and the scene's textures.
+#pragma once
+
+#include <vector>
+
+#include "gl/handles.hpp"
+#include "scene/scene.hpp"
+
+namespace impossible::render {
+
+// The texture unit the scene shader reads a batch's texture from (0 and 1 are
+// the render-to-texture portals').
+inline constexpr GLuint kSceneTextureUnit = 2;
+
+struct GpuScene {
+    gl::Buffer vertices;
+    gl::Buffer indices;
+    gl::VertexArray vao;
+    // The same vertices with the frame's face stream as element buffer
+    // (render/objects/box_faces.hpp): a buffer of no size until a frame writes it.
+    gl::Buffer face_indices;
+    gl::VertexArray face_vao;
+    std::vector<gl::Texture> textures;  // per scene::Scene::textures, with their mipmaps
+};
+
+// Uploads the vertices, indices and textures. Textures keep the sampler's
+// filters and wrap modes; a minification filter with mipmaps gets a full
+// chain made by glGenerateTextureMipmap.
+GpuScene upload_scene(const scene::Scene& scene);
+
+}  // namespace impossible::render

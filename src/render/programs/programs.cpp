@@ -1,0 +1,37 @@
+// The programs a renderer builds as frames need them (programs.hpp).
+#include "render/programs/programs.hpp"
+
+namespace impossible::render {
+
+Result<void> ensure_scene_program(Programs& programs, StereoMode mode, bool materials) {
+    std::optional<SceneProgram>& slot = (materials ? programs.material : programs.scene)[mode_index(mode)];
+    if (slot) return {};
+    Result<SceneProgram> built = build_scene_program(mode, materials);
+    if (!built) {
+        if (mode == StereoMode::ViewportIndex)
+            return Error{"stereo mode 'viewport-index' needs GL_ARB_shader_viewport_layer_array: " + built.error()};
+        return built;
+    }
+    slot = std::move(*built);
+    return {};
+}
+
+Result<void> ensure_variants(Programs& programs, StereoMode mode, const VariantNeeds& needs) {
+    for (unsigned flags = 0; flags < kSceneVariantCount; ++flags) {
+        if ((flags & (kObjectCuts | kVolumes | kLights)) == 0u) continue;
+        if (((flags & kObjectCuts) && !needs.objects) || ((flags & kVolumes) && !needs.volumes)) continue;
+        if ((flags & kLights) && !needs.lit) continue;
+        // The light buffers' kind for the frame's light depth (ensure_lights).
+        if ((flags & kLightsUbo) && (!(flags & kLights) || !needs.lights_ubo)) continue;
+        if ((flags & kLights) && !(flags & kLightsUbo) && needs.lights_ubo) continue;
+        if ((flags & kMaterials) && !needs.materials) continue;
+        std::optional<SceneProgram>& slot = programs.variants[mode_index(mode)][flags];
+        if (slot) continue;
+        Result<SceneProgram> built = build_scene_variant(mode, flags);
+        if (!built) return built;
+        slot = std::move(*built);
+    }
+    return {};
+}
+
+}  // namespace impossible::render
