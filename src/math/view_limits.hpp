@@ -45,6 +45,13 @@ inline constexpr Range<int> kShadowMapSize{0, 4096};
 // Render-to-texture portals: the scale of their textures, in (0, 4].
 inline constexpr double kMaxPortalTextureScale = 4.0;
 
+// The rasteriser's samples of one frame, 2 W × H × samples: at most those of
+// the largest single-sample frame, 2 × 8192². Its buffers (colour, ids,
+// depth-stencil: 13 bytes a sample, and llvmpipe's own copies) then stay
+// within about 2 GB; past it, 8192 × 4096 at 4 samples peaked at 4.95 GB and
+// 8192² at 4 samples failed after 4.4 GB (docs/bounded-work.md).
+inline constexpr long long kMaxFrameSamples = 2LL * 8192 * 8192;
+
 constexpr bool is_sample_count(int n) {
     for (int c : kSampleCounts)
         if (n == c) return true;

@@ -4,6 +4,7 @@
 #include <cassert>
 
 #include "math/projection.hpp"
+#include "math/view_limits.hpp"
 #include "render/objects/frame_objects.hpp"
 #include "render/portals/passes.hpp"
 #include "render/portals/portal_glass.hpp"
@@ -19,6 +20,13 @@ namespace {
 // mode's programs, the light images of its light depth and, for
 // render-to-texture portals, their program and targets.
 Result<void> prepare_frame(RendererParts& parts, const FrameDesc& frame) {
+    // Refused before any buffer is made (math/view_limits.hpp).
+    const long long samples = 2LL * frame.eye_width * frame.eye_height * frame.samples;
+    if (samples > math::limits::kMaxFrameSamples)
+        return Error{"{size} " + std::to_string(frame.eye_width) + "x" + std::to_string(frame.eye_height) +
+                     " with {samples} " + std::to_string(frame.samples) + " makes " + std::to_string(samples) +
+                     " samples a frame, more than the renderer's bound of " +
+                     std::to_string(math::limits::kMaxFrameSamples) + " (2 x 8192 x 8192; docs/bounded-work.md)"};
     const SceneData& r = parts.scene;
     Programs& programs = parts.programs;
     FrameTargets& targets = parts.targets;

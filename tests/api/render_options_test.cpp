@@ -109,6 +109,12 @@ TEST(ApiRenderOptions, ErrorsNameTheField) {
     bad = {};
     bad.texture_from_level = 251;
     EXPECT_EQ(renderer->render(small_view(), bad).error().message, "texture_from_level 251 is not in 0..250");
+    View big = small_view(8, 4);
+    big.width = 8192;
+    big.height = 4096;
+    EXPECT_EQ(renderer->render(big).error().message,
+              "size 8192x4096 with samples 4 makes 268435456 samples a frame, more than the renderer's bound of "
+              "134217728 (2 x 8192 x 8192; docs/bounded-work.md)");
     bad = {};
     bad.stereo = Stereo::TwoPass;
     bad.technique = Technique::Hybrid;

@@ -3,6 +3,8 @@
 // Before, 200 doors at 64x48 and depth 250 took 21 s and 1000 doors 304 s;
 // a portal that covers no pixel centre is now drawn no further
 // (docs/bounded-work.md has the figures).
+#include <chrono>
+
 #include "hostile/hostile_util.hpp"
 
 namespace impossible::hostile {
@@ -46,6 +48,20 @@ TEST_F(Hostile, ACorridorOf200DoorsMatchesTheTracer) {
                           120);
     EXPECT_EQ(r.status, 0) << r.err << r.out;
     EXPECT_NE(r.out.find("id_mismatches=0"), std::string::npos) << r.out;
+}
+
+// A multisampled frame past 2 x 8192 x 8192 samples is refused in one line
+// naming --size and --samples, before any buffer is made (it peaked at
+// 4.95 GB, or failed after 4.4 GB with an incomplete framebuffer).
+TEST_F(Hostile, AFramePastTheSampleBoundIsRefusedBeforeAnyBuffer) {
+    const auto start = std::chrono::steady_clock::now();
+    const Outcome r = run("$BIN render --size 8192x4096 --samples 4 --out big.png");
+    expect_refused(r, 1,
+                   "--size 8192x4096 with --samples 4 makes 268435456 samples a frame, more than the "
+                   "renderer's bound of 134217728 (2 x 8192 x 8192; docs/bounded-work.md)");
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
+    EXPECT_FALSE(fs::exists(dir_ / "big.png"));
+    expect_refused(run("$BIN render --size 8192x8192 --samples 2 --out big.png"), 1, "with --samples 2 makes");
 }
 
 TEST_F(Hostile, ThePortalPassBudgetShowsTheFillAndSaysSo) {
