@@ -2,11 +2,15 @@
 #include "design/generate.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <vector>
 
+#include "base/format.hpp"
 #include "design/pack_search.hpp"
 #include "design/splitmix.hpp"
+#include "layout/layout.hpp"
+#include "layout/limits.hpp"
 
 namespace impossible::design {
 namespace {
@@ -33,6 +37,33 @@ std::optional<std::string> too_narrow(const GenerateOptions& o, bool packed) {
     return "no room " + metres(kRoomMinWidth) + " m wide fits in this play area (" + size + " across)";
 }
 
+// The loader's limits on a play area (layout/limits.hpp): what a layout's
+// play_area may hold, so that the layout written loads.
+std::optional<std::string> play_area_problem(const math::Polygon2& area) {
+    namespace lim = layout::limits;
+    if (area.size() > lim::kMaxPlayAreaCorners)
+        return "the play area has " + std::to_string(area.size()) + " corners; a layout's may have at most " +
+               std::to_string(lim::kMaxPlayAreaCorners);
+    for (std::size_t i = 0; i < area.size(); ++i)
+        for (double v : {area[i].x, area[i].y})
+            if (!std::isfinite(v) || std::abs(v) > lim::kMaxCoordinate)
+                return "the play area's corner " + std::to_string(i) + " (" + format_number(area[i].x) + ", " +
+                       format_number(area[i].y) + ") is not a coordinate within +-" +
+                       format_number(lim::kMaxCoordinate) + " m";
+    if (const auto problem = math::simple_polygon_problem(area))
+        return "the play area must be a simple polygon: " + problem->message;
+    return std::nullopt;
+}
+
+// The layout written must pass the loader's own checks: a generator defect
+// is an error here, never a file that `validate` refuses.
+std::optional<std::string> load_problem(const std::string& text) {
+    const layout::LoadResult loaded = layout::load_layout_text(text, "<generated layout>", ".");
+    if (loaded.errors.empty()) return std::nullopt;
+    return "the generated layout does not pass the loader's checks (a defect of generate; please report it): " +
+           loaded.errors.front().str();
+}
+
 }  // namespace
 
 // In generate_json.cpp: the packing as layout JSON text.
@@ -42,7 +73,7 @@ std::string layout_text(const GenerateOptions& o, const Packing& p, const std::v
 Result<Generated> generate(const GenerateOptions& o) {
     if (o.rooms < 1 || o.rooms > kMaxGeneratedRooms)
         return Error{"--rooms must be 1.." + std::to_string(kMaxGeneratedRooms)};
-    if (math::simple_polygon_problem(o.play_area)) return Error{"the play area is not a simple polygon"};
+    if (const auto problem = play_area_problem(o.play_area)) return Error{*problem};
     if (const auto why = too_narrow(o, false)) return Error{*why};
     std::optional<Packing> p = pack_rooms({o.play_area, o.rooms, o.seed, o.max_overlap});
     if (!p) p = grow_boxes(o);
@@ -61,6 +92,7 @@ Result<Generated> generate(const GenerateOptions& o) {
     g.play_area = math::area(o.play_area);
     g.expansion_ratio = g.floor_area / g.play_area;
     g.text = layout_text(o, *p, heights, rng.next());
+    if (const auto problem = load_problem(g.text)) return Error{*problem};
     return g;
 }
 

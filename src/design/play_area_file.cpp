@@ -3,6 +3,7 @@
 
 #include "layout/checker.hpp"
 #include "layout/json_doc.hpp"
+#include "layout/limits.hpp"
 
 namespace impossible::design {
 
@@ -24,14 +25,24 @@ Result<math::Polygon2> parse_play_area_file(std::string_view text, const std::st
         check.check_fields(Path{}, j, {"polygon"}, {});
     }
     if (check.has_errors()) return Error{check.take_errors().front().str()};
-    if (list->is_object() && list->contains("polygon")) list = &(*list)["polygon"];
-    if (!list->is_array()) return Error{file + ": expected a polygon, [[x, z], ...]"};
-    math::Polygon2 poly;
-    for (const nlohmann::json& p : *list) {
-        if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
-            return Error{file + ": every corner must be [x, z]"};
-        poly.push_back({p[0].get<double>(), p[1].get<double>()});
+    Path at = j.is_object() && j.contains("play_area") ? Path{} / "play_area" : Path{};
+    if (list->is_object() && list->contains("polygon")) {
+        list = &(*list)["polygon"];
+        at = at / "polygon";
     }
+    if (!list->is_array()) return Error{file + ": expected a polygon, [[x, z], ...]"};
+    // The loader's limits on a play area: its corners' count and coordinates
+    // (a generated layout must load).
+    math::Polygon2 poly;
+    if (check.expect_array(at, *list, layout::limits::kMaxPlayAreaCorners))
+        for (std::size_t i = 0; i < list->size(); ++i) {
+            const nlohmann::json& p = (*list)[i];
+            if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
+                return Error{file + ": every corner must be [x, z]"};
+            if (const std::optional<glm::dvec2> c = check.read_vec2(at / i, p, layout::detail::NumberKind::Coordinate))
+                poly.push_back(*c);
+        }
+    if (check.has_errors()) return Error{check.take_errors().front().str()};
     if (const auto problem = math::simple_polygon_problem(poly))
         return Error{file + ": the play area must be a simple polygon: " + problem->message};
     return poly;

@@ -3,6 +3,8 @@
 // 1.5 m"); now they are packed, the expansion ratio is reported, the same
 // seed writes the same bytes, the layout validates and its tour visits every
 // room, and a floor too narrow for any room is refused by name.
+#include <cmath>
+
 #include "hostile/hostile_util.hpp"
 
 namespace impossible::hostile {
@@ -35,6 +37,26 @@ TEST_F(Hostile, GenerateOnAFloorNarrowerThanARoomSaysSo) {
     spit(dir_ / "thin.json", "[[0, 0], [6, 0], [6, 1.4], [0, 1.4]]");
     expect_refused(run("$BIN generate --play-area-file thin.json --rooms 1 --seed 1"), 1,
                    "a room cannot be 1.5 m wide on a 6 x 1.4 m floor");
+}
+
+// A play area past the loader's limits (10,001 corners, a corner at
+// 200,000 m) made generate exit 0 with a layout validate refused; it is now
+// refused by those limits, FILE:LINE:COLUMN as the loader says it, with no
+// file written (issue 36, item 5).
+TEST_F(Hostile, GenerateRefusesAPlayAreaTheLoaderWouldRefuse) {
+    std::string many = "[";
+    for (int i = 0; i < 10'001; ++i) {
+        const double a = 6.283185307179586 * i / 10'001;
+        many += (i ? "," : "") + std::string("[") + std::to_string(5 * std::cos(a)) + "," +
+                std::to_string(5 * std::sin(a)) + "]";
+    }
+    spit(dir_ / "many.json", many + "]");
+    expect_refused(run("$BIN generate --play-area-file many.json --rooms 2 --seed 1 --out g.json"), 1,
+                   "many.json:1:1: has 10001 entries; at most 10000 are allowed");
+    spit(dir_ / "far.json", "{\"polygon\": [[0, 0], [6, 0], [200000, 4], [0, 4]]}");
+    expect_refused(run("$BIN generate --play-area-file far.json --rooms 2 --seed 1 --out g.json"), 1,
+                   "far.json:1:31: polygon[2][0]: 200000 is out of range (|value| must be at most 100000 m)");
+    EXPECT_FALSE(fs::exists(dir_ / "g.json"));
 }
 
 TEST_F(Hostile, GenerateOnAnLShapedFloorWritesPrismRoomsThatValidate) {

@@ -111,3 +111,14 @@ def test_bad_tool_arguments(tmp_path):
         impossible.read_path(tmp_path / "empty.txt")
     with pytest.raises(impossible.Error, match=r"README\.md:3: expected 6 or 18 numbers"):
         impossible.read_path(SOURCE_DIR / "README.md")
+
+
+def test_generate_refuses_play_areas_the_loader_would_refuse():
+    """A corner that is no coordinate (NaN, 200 km out) is named; a layout
+    generate writes always loads."""
+    with pytest.raises(impossible.Error, match=r"corner 2 \(nan, 4\) is not a coordinate within \+-100000 m"):
+        impossible.generate([(0, 0), (6, 0), (float("nan"), 4), (0, 4)], 2, 1)
+    with pytest.raises(impossible.Error, match=r"corner 2 \(200000, 4\)"):
+        impossible.generate([(0, 0), (6, 0), (200000, 4), (0, 4)], 2, 1)
+    text = impossible.generate((4, 4), 3, 5)
+    assert impossible.parse(text).rooms
