@@ -71,6 +71,11 @@ random star-shaped visible area; hidden pixels are black with id 0 in both.
     tools/diff_fuzz.py --binary build/impossible --seed 1 --cases 300
     tools/diff_fuzz.py --binary build/impossible --seed 1 --case 17 --keep /tmp/case17
     tools/diff_fuzz.py --binary build/impossible --seed 1 --cases 100 --kinds glass
+    tools/diff_fuzz.py --binary build/impossible --seed 1 --cases 12 --every 3 --kinds prism
+
+scripts/test.sh runs a smoke of each ctest below (a few cases of every kind,
+tests/CMakeLists.txt); the full case sets are ctests labelled "long", which
+.ci/run runs after it (tests/README.md).
 
 A case whose every mismatching pixel lies on a feature one pixel thin (a door
 seen nearly edge-on, a sub-pixel prop edge) is counted as a "sliver": the
@@ -1106,6 +1111,9 @@ def main():
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--cases", type=int, default=100, help="cases 0..N-1")
     ap.add_argument("--first", type=int, default=0, help="first case number")
+    ap.add_argument("--every", type=int, default=1,
+                    help="every Nth case from --first (--cases counts the cases run): a short run that still"
+                         " reaches sub-kinds chosen by the case number, as the prism kind's are")
     ap.add_argument("--case", type=int, help="run this one case only")
     ap.add_argument("--size", default="96x64", help="eye size WxH")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
@@ -1128,7 +1136,9 @@ def main():
     # The kinds select each case's layout: a case is reproduced with the same list.
     kinds_arg = ("" if kinds == DEFAULT_KINDS else " --kinds " + ",".join(kinds)) + (" --lit" if a.lit else "") + (
         " --headset" if a.headset else "")
-    numbers = [a.case] if a.case is not None else list(range(a.first, a.first + a.cases))
+    if a.every < 1:
+        ap.error("--every: %d: must be 1 or more" % a.every)
+    numbers = [a.case] if a.case is not None else list(range(a.first, a.first + a.cases * a.every, a.every))
     results = []
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, a.jobs)) as pool:
         futures = [pool.submit(run_case, a.binary, a.seed, n, a.size, a.keep, a.extra, kinds, a.lit, a.headset)

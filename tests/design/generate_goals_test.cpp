@@ -126,7 +126,7 @@ TEST(GenerateGoals, TheSameSeedWritesTheSameBytesWithPrismRooms) {
     EXPECT_NE(design::generate(goals_square(6, 10, 6))->text, a->text);
 }
 
-TEST(GenerateGoals, TheIssuesCrossingStripsShare2Point56SquareMetres) {
+TEST(GenerateGoals, TwoCrossingStripsShare2Point56SquareMetres) {
     design::Shape along_x, along_z;
     along_x.u0 = -2, along_x.u1 = 2, along_x.v0 = -0.8, along_x.v1 = 0.8;
     along_z.u0 = -0.8, along_z.u1 = 0.8, along_z.v0 = -2, along_z.v1 = 2;

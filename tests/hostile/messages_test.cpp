@@ -1,7 +1,8 @@
 // The smaller defects of issue 15: a field of view too narrow to render
 // right, PNG faults in words, the walker's teleport cap, follow-on errors,
-// a broken GALLIUM_DRIVER, messages that span lines or megabytes, glTF
-// buffers outside the model's folder.
+// a broken GALLIUM_DRIVER, messages that span lines or megabytes (a name or
+// field of megabytes is cut at about 100 characters), glTF buffers outside
+// the model's folder.
 #include "hostile/hostile_util.hpp"
 #include "hostile/png_bytes.hpp"
 
@@ -119,6 +120,31 @@ TEST_F(Hostile, MessagesAreOneLineWithEscapedPathsAndCutNames) {
     EXPECT_EQ(r.status, 0) << r.err.substr(0, 300);
     EXPECT_LT(r.out.size(), 2000u);
     EXPECT_NE(r.out.find("more bytes)"), std::string::npos) << r.out.substr(0, 400);
+}
+
+// The longest line a refusal of a megabyte name may print.
+constexpr std::size_t kShortLine = 400;
+
+TEST_F(Hostile, LongNamesAreCutInMessages) {
+    const std::string key(3 << 20, 'k');
+    const std::string room_id(1 << 20, 'r');
+    spit(dir_ / "key.json", R"({"format": "impossible-layout", "version": 1, ")" + key + R"(": 1, "rooms": []})");
+    spit(dir_ / "format.json", R"({"format": ")" + key + R"(", "version": 1, "rooms": []})");
+    std::string start = slurp(dir_ / "lay.json");
+    start.replace(start.find("\"room\": \"hall\""), 14, "\"room\": \"" + room_id + "\"");
+    spit(dir_ / "start.json", start);
+    for (const char* file : {"key.json", "format.json", "start.json"}) {
+        const Outcome r = run(std::string("$BIN validate ") + file);
+        EXPECT_EQ(r.status, 1) << file;
+        EXPECT_LT(r.err.size(), 2 * kShortLine) << file << ": " << r.err.substr(0, 300);
+        EXPECT_NE(r.err.find("... ("), std::string::npos) << file << ": " << r.err.substr(0, 300);
+        EXPECT_NE(r.err.find(" more bytes)"), std::string::npos) << file << ": " << r.err.substr(0, 300);
+    }
+    // A 3 MB field of a path file.
+    spit(dir_ / "p.txt", "0 1.6 " + std::string(3 << 20, '1') + "x 0 0 0\n");
+    const Outcome path = run("$BIN walk lay.json --path p.txt");
+    EXPECT_EQ(path.status, 1);
+    EXPECT_LT(path.err.size(), kShortLine) << path.err.substr(0, 300);
 }
 
 TEST_F(Hostile, GltfBuffersMustStayInTheModelsFolder) {

@@ -121,17 +121,18 @@ std::vector<assets::ModelTriangle> bumpy_sphere(int triangles, double radius) {
 }
 
 TEST(Bvh, LargeModelTracesTheSameWithAndWithoutTheTree) {
-    // A room with a 200k-triangle model, a prop box in front of part of it
+    // A room with a 50k-triangle model, a prop box in front of part of it
     // and a mirror behind it (whose reflected rays meet the model's back,
-    // clipped by the mirror's plane).
+    // clipped by the mirror's plane). The scan without the tree is most of
+    // the time: 200k triangles took 8 s, 50k take under 1 s.
     layout::Layout l;
     l.source = "<test>";
     l.rooms.push_back(test::make_room("room", {-3, 0, -4}, {3, 3, 3}));
     layout::GltfProp model;
     model.position = {0.0, 1.5, -2.0};
     model.yaw_deg = 20.0;
-    model.triangles = bumpy_sphere(200'000, 1.0);
-    ASSERT_GT(model.triangles.size(), 190'000u);
+    model.triangles = bumpy_sphere(50'000, 1.0);
+    ASSERT_GT(model.triangles.size(), 45'000u);
     l.rooms[0].props.push_back(model);
     layout::BoxProp box;
     box.min = {0.3, 0.0, -1.2};
