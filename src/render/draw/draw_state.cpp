@@ -141,64 +141,68 @@ NdcRect draw_rect(const DrawContext& ctx, const EyeView& ev, const NdcRect& rect
                                   : NdcRect{};
 }
 
+// Both eyes' view-projections, draw rectangles and clip planes, as the
+// shaders take them.
+struct EyeUniforms {
+    float vp[2][16];
+    float rect[2][4];
+    float plane[2][4];
+};
+
+// Eye e's view-projection of `model`'s coordinates and its draw rectangle.
+void set_eye_matrix_and_rect(const DrawContext& ctx, const EyeView& ev, const math::dmat4& model, const NdcRect& in,
+                             EyeUniforms& u, int e) {
+    const math::dmat4 view_proj = ev.view_proj * model;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) u.vp[e][c * 4 + r] = static_cast<float>(view_proj[c][r]);
+    const NdcRect nr = draw_rect(ctx, ev, in);
+    u.rect[e][0] = static_cast<float>(nr.x0);
+    u.rect[e][1] = static_cast<float>(nr.y0);
+    u.rect[e][2] = static_cast<float>(nr.x1);
+    u.rect[e][3] = static_cast<float>(nr.y1);
+}
+
+void upload_eye_uniforms(const SceneProgram& program, const EyeUniforms& u) {
+    const GLuint p = program.program.get();
+    glProgramUniformMatrix4fv(p, program.view_proj, 2, GL_FALSE, &u.vp[0][0]);
+    glProgramUniform4fv(p, program.eye_rect, 2, &u.rect[0][0]);
+    glProgramUniform4fv(p, program.clip_plane, 2, &u.plane[0][0]);
+}
+
 }  // namespace
 
 void set_model_uniforms(const DrawContext& ctx, const LevelView& view, const SceneProgram& program,
                         const std::array<NdcRect, 2>& rects, const math::dmat4& model,
                         const glm::vec3& checker_offset) {
-    float vp[2][16];
-    float rect[2][4];
-    float plane[2][4];
+    EyeUniforms u;
     for (int e = 0; e < 2; ++e) {
         const EyeView& ev = view.eyes[e];
-        const math::dmat4 view_proj = ev.view_proj * model;
-        for (int c = 0; c < 4; ++c)
-            for (int r = 0; r < 4; ++r) vp[e][c * 4 + r] = static_cast<float>(view_proj[c][r]);
-        const NdcRect nr = draw_rect(ctx, ev, rects[e]);
-        rect[e][0] = static_cast<float>(nr.x0);
-        rect[e][1] = static_cast<float>(nr.y0);
-        rect[e][2] = static_cast<float>(nr.x1);
-        rect[e][3] = static_cast<float>(nr.y1);
+        set_eye_matrix_and_rect(ctx, ev, model, rects[e], u, e);
         // The plane in the model's coordinates: dot(plane, model · p).
         const math::dvec4 model_plane = glm::transpose(model) * ev.clip_plane;
-        for (int c = 0; c < 4; ++c) plane[e][c] = static_cast<float>(model_plane[c]);
+        for (int c = 0; c < 4; ++c) u.plane[e][c] = static_cast<float>(model_plane[c]);
     }
-    const GLuint p = program.program.get();
-    glProgramUniformMatrix4fv(p, program.view_proj, 2, GL_FALSE, &vp[0][0]);
-    glProgramUniform4fv(p, program.eye_rect, 2, &rect[0][0]);
-    glProgramUniform4fv(p, program.clip_plane, 2, &plane[0][0]);
-    glProgramUniform3fv(p, program.checker_offset, 1, &checker_offset[0]);
+    upload_eye_uniforms(program, u);
+    glProgramUniform3fv(program.program.get(), program.checker_offset, 1, &checker_offset[0]);
 }
 
 void set_eye_uniforms(const DrawContext& ctx, const LevelView& view, const SceneProgram& program,
                       const std::array<NdcRect, 2>& rects) {
-    float vp[2][16];
-    float rect[2][4];
-    float plane[2][4];
     // The cell's vertices are relative to its origin: the move to layout
     // coordinates is folded into the matrices and planes here, in double.
     const scene::CellOrigin& cell_origin = ctx.scene.cell_origins[static_cast<size_t>(view.cell)];
     const math::dvec3 origin = cell_origin.origin;
     const math::dmat4 from_cell = glm::translate(math::dmat4(1.0), origin);
+    EyeUniforms u;
     for (int e = 0; e < 2; ++e) {
         const EyeView& ev = view.eyes[e];
-        const math::dmat4 view_proj = ev.view_proj * from_cell;
-        for (int c = 0; c < 4; ++c)
-            for (int r = 0; r < 4; ++r) vp[e][c * 4 + r] = static_cast<float>(view_proj[c][r]);
-        const NdcRect nr = draw_rect(ctx, ev, rects[e]);
-        rect[e][0] = static_cast<float>(nr.x0);
-        rect[e][1] = static_cast<float>(nr.y0);
-        rect[e][2] = static_cast<float>(nr.x1);
-        rect[e][3] = static_cast<float>(nr.y1);
+        set_eye_matrix_and_rect(ctx, ev, from_cell, rects[e], u, e);
         const math::dvec4 cell_plane(math::dvec3(ev.clip_plane),
                                      ev.clip_plane.w + glm::dot(math::dvec3(ev.clip_plane), origin));
-        for (int c = 0; c < 4; ++c) plane[e][c] = static_cast<float>(cell_plane[c]);
+        for (int c = 0; c < 4; ++c) u.plane[e][c] = static_cast<float>(cell_plane[c]);
     }
-    const GLuint p = program.program.get();
-    glProgramUniformMatrix4fv(p, program.view_proj, 2, GL_FALSE, &vp[0][0]);
-    glProgramUniform4fv(p, program.eye_rect, 2, &rect[0][0]);
-    glProgramUniform4fv(p, program.clip_plane, 2, &plane[0][0]);
-    glProgramUniform3fv(p, program.checker_offset, 1, &cell_origin.checker_offset[0]);
+    upload_eye_uniforms(program, u);
+    glProgramUniform3fv(program.program.get(), program.checker_offset, 1, &cell_origin.checker_offset[0]);
     // The cell's own geometry hides the inside of its volumes.
     if (program.volume_count >= 0) set_volume_uniforms(ctx, view, program, from_cell, -1);
 }
