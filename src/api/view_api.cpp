@@ -34,11 +34,13 @@ math::View view_of(const View& view) {
 
 std::optional<std::string> options_problem(const RenderOptions& o) {
     if (!(o.texture_scale > 0.0 && o.texture_scale <= lim::kMaxPortalTextureScale))
-        return "texture_scale " + format_number(o.texture_scale) + " is not in (0, 4]";
+        return "texture_scale " + format_number(o.texture_scale) + " is not in (0, " +
+               format_number(lim::kMaxPortalTextureScale) + "]";
     if (!lim::kMaxDepth.contains(o.texture_from_level))
-        return "texture_from_level " + std::to_string(o.texture_from_level) + " is not in 0..250";
+        return "texture_from_level " + std::to_string(o.texture_from_level) + " is not in " +
+               lim::range_text(lim::kMaxDepth);
     if (!lim::kShadowMapSize.contains(o.shadow_size))
-        return "shadow_size " + std::to_string(o.shadow_size) + " is not in 0..4096";
+        return "shadow_size " + std::to_string(o.shadow_size) + " is not in " + lim::range_text(lim::kShadowMapSize);
     return {};
 }
 

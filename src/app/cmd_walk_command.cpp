@@ -4,6 +4,7 @@
 #include "app/cmd_walk.hpp"
 #include "app/commands.hpp"
 #include "cli/errors.hpp"
+#include "cli/frame_options.hpp"
 #include "cli/layout_source.hpp"
 #include "cli/option_table.hpp"
 #include "layout/path_file.hpp"
@@ -17,18 +18,10 @@ struct WalkOptions {
     double fps = layout::kDefaultPathFps;
 };
 
-// --fps N: frames a second, 0.001..1e6 (cli.md, "walk"; as render's and
-// bench's --fps): a path's last line (at most ~100,000) is at most 1e8 s.
-double walk_fps(const OptionValue& v) {
-    const double fps = parse_number(v.name, v.text);
-    if (!(fps >= 1e-3 && fps <= 1e6)) throw InputError(v.name + ": " + v.text + " is not in 0.001..1000000");
-    return fps;
-}
-
 // Described in the usage text.
 constexpr Option<WalkOptions> kWalkOptions[] = {
     {"--path", "FILE", nullptr, [](WalkOptions& o, const OptionValue& v) { o.path = v.text; }},
-    {"--fps", "N", nullptr, [](WalkOptions& o, const OptionValue& v) { o.fps = walk_fps(v); }},
+    {"--fps", "N", nullptr, [](WalkOptions& o, const OptionValue& v) { o.fps = parse_fps(v); }},
 };
 
 }  // namespace

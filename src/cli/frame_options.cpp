@@ -38,7 +38,8 @@ std::array<math::HeadPose, 2> parse_hands(const OptionValue& v) {
 
 double parse_ipd(const OptionValue& v) {
     const double ipd = parse_number(v.name, v.text);
-    if (!lim::kIpd.contains(ipd)) throw InputError(v.name + ": " + v.text + " is not in 0..10 m");
+    if (!lim::kIpd.contains(ipd))
+        throw InputError(v.name + ": " + v.text + " is not in " + lim::range_text(lim::kIpd) + " m");
     return ipd;
 }
 
@@ -46,7 +47,9 @@ double parse_fov(const OptionValue& v) {
     const double fov = parse_number(v.name, v.text);
     // math/view_limits.hpp says why narrower views are refused.
     if (!(fov >= lim::kMinFovDeg && fov < lim::kMaxFovDeg))
-        throw InputError(v.name + ": " + v.text + " is not in 1..179 degrees (at least 1, less than 179)");
+        throw InputError(v.name + ": " + v.text + " is not in " + format_number(lim::kMinFovDeg) + ".." +
+                         format_number(lim::kMaxFovDeg) + " degrees (at least " + format_number(lim::kMinFovDeg) +
+                         ", less than " + format_number(lim::kMaxFovDeg) + ")");
     return fov;
 }
 
@@ -182,7 +185,7 @@ math::HeadPose parse_pose(const OptionValue& v) { return pose_at(parse_pose_numb
 
 double parse_fps(const OptionValue& v) {
     const double fps = parse_number(v.name, v.text);
-    if (!lim::kFps.contains(fps)) throw InputError(v.name + ": " + v.text + " is not in 0.001..1000000");
+    if (!lim::kFps.contains(fps)) throw InputError(v.name + ": " + v.text + " is not in " + lim::range_text(lim::kFps));
     return fps;
 }
 

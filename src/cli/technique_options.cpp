@@ -2,12 +2,15 @@
 
 #include "cli/args.hpp"
 #include "cli/errors.hpp"
+#include "math/view_limits.hpp"
 
 namespace impossible::cli {
 
 double parse_portal_texture(const std::string& name, const std::string& text) {
     const double scale = parse_number(name, text);
-    if (!(scale > 0.0 && scale <= 4.0)) throw InputError(name + ": " + text + " is not in (0, 4]");
+    const double most = math::limits::kMaxPortalTextureScale;
+    if (!(scale > 0.0 && scale <= most))
+        throw InputError(name + ": " + text + " is not in (0, " + format_number(most) + "]");
     return scale;
 }
 

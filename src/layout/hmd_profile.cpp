@@ -7,6 +7,7 @@
 #include "layout/checker.hpp"
 #include "layout/json_doc.hpp"
 #include "math/polygon.hpp"
+#include "math/view_limits.hpp"
 
 namespace impossible::layout {
 
@@ -119,7 +120,8 @@ Result<HmdProfile> read_profile(Checker& check, const json& j) {
     const std::optional<std::string> source = check.read_string(root / "source", j["source"]);
     if (j.contains("ipd")) {
         const std::optional<double> ipd = check.read_number(root / "ipd", j["ipd"], NumberKind::Coordinate);
-        if (ipd && !(*ipd >= 0.0 && *ipd <= 10.0)) check.error(root / "ipd", "is not in 0..10 m");
+        if (ipd && !math::limits::kIpd.contains(*ipd))
+            check.error(root / "ipd", "is not in " + math::limits::range_text(math::limits::kIpd) + " m");
         if (ipd) out.ipd = *ipd;
     }
     const std::optional<EyeRead> left = read_eye(check, root / "left", j["left"]);

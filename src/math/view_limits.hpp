@@ -4,6 +4,10 @@
 // users (keep the two in step).
 #pragma once
 
+#include <string>
+
+#include "base/format.hpp"
+
 namespace impossible::math::limits {
 
 // A closed range [min, max].
@@ -51,6 +55,12 @@ inline constexpr double kMaxPortalTextureScale = 4.0;
 // within about 2 GB; past it, 8192 × 4096 at 4 samples peaked at 4.95 GB and
 // 8192² at 4 samples failed after 4.4 GB (docs/bounded-work.md).
 inline constexpr long long kMaxFrameSamples = 2LL * 8192 * 8192;
+
+// "MIN..MAX", as messages give a range.
+template <class T>
+std::string range_text(const Range<T>& r) {
+    return format_number(r.min) + ".." + format_number(r.max);
+}
 
 constexpr bool is_sample_count(int n) {
     for (int c : kSampleCounts)

@@ -78,11 +78,6 @@ std::string optics_problem(const math::EyeOptics& eye, const char* name) {
     return {};
 }
 
-template <class T>
-std::string range_text(const lim::Range<T>& r) {
-    return format_number(r.min) + ".." + format_number(r.max);
-}
-
 std::optional<FieldError> value_error(const std::string& field, const std::string& message) {
     return FieldError{FieldError::Kind::Value, field, message};
 }
@@ -90,18 +85,20 @@ std::optional<FieldError> value_error(const std::string& field, const std::strin
 std::optional<FieldError> number_problem(const math::View& v) {
     if (!lim::kEyeSide.contains(v.eye_width) || !lim::kEyeSide.contains(v.eye_height))
         return value_error("size", std::to_string(v.eye_width) + "x" + std::to_string(v.eye_height) +
-                                       " is not within " + range_text(lim::kEyeSide) + " pixels");
-    if (!lim::kIpd.contains(v.ipd)) return value_error("ipd", format_number(v.ipd) + " is not in 0..10 m");
+                                       " is not within " + lim::range_text(lim::kEyeSide) + " pixels");
+    if (!lim::kIpd.contains(v.ipd))
+        return value_error("ipd", format_number(v.ipd) + " is not in " + lim::range_text(lim::kIpd) + " m");
     if (!(v.fov_y_deg >= lim::kMinFovDeg && v.fov_y_deg < lim::kMaxFovDeg))
-        return value_error("fov", format_number(v.fov_y_deg) + " is not in 1..179 degrees");
+        return value_error("fov", format_number(v.fov_y_deg) + " is not in " + format_number(lim::kMinFovDeg) + ".." +
+                                      format_number(lim::kMaxFovDeg) + " degrees");
     if (!lim::kMaxDepth.contains(v.max_depth))
-        return value_error("max_depth", std::to_string(v.max_depth) + " is not in " + range_text(lim::kMaxDepth));
+        return value_error("max_depth", std::to_string(v.max_depth) + " is not in " + lim::range_text(lim::kMaxDepth));
     if (!lim::kPortalPasses.contains(v.max_portal_passes))
         return value_error("max_portal_passes",
-                           std::to_string(v.max_portal_passes) + " is not in " + range_text(lim::kPortalPasses));
+                           std::to_string(v.max_portal_passes) + " is not in " + lim::range_text(lim::kPortalPasses));
     if (v.light_depth && !lim::kLightDepth.contains(*v.light_depth))
         return value_error("light_depth",
-                           std::to_string(*v.light_depth) + " is not in " + range_text(lim::kLightDepth));
+                           std::to_string(*v.light_depth) + " is not in " + lim::range_text(lim::kLightDepth));
     if (!std::isfinite(v.time)) return value_error("time", "is not a finite number");
     return {};
 }
