@@ -100,11 +100,12 @@ import zlib
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from diff_fuzz_objects import ObjectCases  # noqa: E402  (the kinds "crossing" and "volume")
 from diff_fuzz_prisms import PrismCases, boundary_distance, inside_polygon  # noqa: E402  (the kind "prism")
+from diff_fuzz_doors import DoorCases  # noqa: E402  (the kind "floor_door")
 
 # The kinds a run cycles through by default (docs/accuracy.md's figures are
 # for these); --kinds picks others. "glass" is mirrors and windows.
 DEFAULT_KINDS = ["coincident", "wall_pair", "free_pair", "corridor"]
-KINDS = DEFAULT_KINDS + ["glass", "crossing", "volume", "prism"]
+KINDS = DEFAULT_KINDS + ["glass", "crossing", "volume", "prism", "floor_door"]
 # The layouts of the glass kind, one chosen per case (Case.make_glass).
 GLASS_SUBKINDS = ["mirrors", "facing_mirrors", "window_pair", "window_loop", "door_glass"]
 
@@ -117,7 +118,7 @@ def log_uniform(r, lo, hi):
     return math.exp(r.uniform(math.log(lo), math.log(hi)))
 
 
-class Case(ObjectCases, PrismCases):
+class Case(ObjectCases, PrismCases, DoorCases):
     """One layout and one pose, made from (seed, number) and the kinds alone."""
 
     def __init__(self, seed, number, kinds=DEFAULT_KINDS):
@@ -131,7 +132,8 @@ class Case(ObjectCases, PrismCases):
         self.rooms, self.portals = [], []
         getattr(self, "make_" + self.kind)()
         make_pose = {"glass": self.make_glass_pose, "crossing": self.crossing_pose,
-                     "volume": self.volume_pose, "prism": self.prism_pose}.get(self.kind, self.make_pose)
+                     "volume": self.volume_pose, "prism": self.prism_pose,
+                     "floor_door": self.floor_door_pose}.get(self.kind, self.make_pose)
         self.pose, self.room, self.max_depth, self.fov, self.what = make_pose()
 
     # --- rooms and portals ---------------------------------------------
@@ -621,7 +623,7 @@ class Case(ObjectCases, PrismCases):
         kind = self.kind if self.sub is None else "%s, %s" % (self.kind, self.sub)
         out = {"format": "impossible-layout", "version": 1,
                "name": "diff_fuzz seed %d case %d (%s)" % (self.seed, self.number, kind),
-               "start": {"room": self.room if self.kind == "prism" else "a", "position": self.pose[:3]},
+               "start": {"room": self.room if self.kind in ("prism", "floor_door") else "a", "position": self.pose[:3]},
                "rooms": self.rooms, "portals": self.portals}
         if lit:
             self.add_lights(out)
@@ -671,6 +673,9 @@ class Case(ObjectCases, PrismCases):
                 box = prop.get("box")
                 if box and all(box["min"][i] - 1e-3 <= pos[i] <= box["max"][i] + 1e-3 for i in range(3)):
                     inside = True
+                elif prop.get("gltf", "").startswith("quad-"):  # diff_fuzz_doors.py's 1 m quads, 0.2-1.2 m high
+                    at = prop["position"]
+                    inside = inside or (all(abs(pos[i] - at[i]) <= 0.8 for i in (0, 2)) and pos[1] <= 1.5)
                 elif not box:
                     inside = True  # a model's bounds are not known here: keep lights out of layouts with models
             if not inside:
@@ -1041,6 +1046,9 @@ def run_case(binary, seed, number, size, keep, extra, kinds=DEFAULT_KINDS, lit=F
     layout_path = os.path.join(work, "case-%d-%d.json" % (seed, number))
     with open(layout_path, "w") as f:
         json.dump(case.layout(lit), f, indent=1)
+    for name, text in getattr(case, "files", {}).items():  # models the layout names, beside it
+        with open(os.path.join(work, name), "w") as f:
+            f.write(text)
     base = os.path.join(work, "case-%d-%d" % (seed, number))
     view = case.view_args(size) + extra
     if headset:
@@ -1101,6 +1109,8 @@ def run_case(binary, seed, number, size, keep, extra, kinds=DEFAULT_KINDS, lit=F
                 pass
         if result["status"] not in ("fail", "error", "colour"):
             os.remove(layout_path)
+            for name in getattr(case, "files", {}):
+                os.remove(os.path.join(work, name))
             os.rmdir(work)
     return result
 

@@ -60,6 +60,11 @@ void StateCache::apply(const PassState& s, GLint stencil_ref) {
     if (all || (s.blend == Blend::Replace) != (state_.blend == Blend::Replace))
         enable(GL_BLEND, s.blend != Blend::Replace);
     if (s.blend != Blend::Replace && (all || s.blend != state_.blend)) blend_func(s.blend);
+    const bool offset = s.offset_factor != 0.0f || s.offset_units != 0.0f;
+    const bool had_offset = state_.offset_factor != 0.0f || state_.offset_units != 0.0f;
+    if (all || offset != had_offset) enable(GL_POLYGON_OFFSET_FILL, offset);
+    if (offset && (all || s.offset_factor != state_.offset_factor || s.offset_units != state_.offset_units))
+        glPolygonOffset(s.offset_factor, s.offset_units);
     state_ = s;
     stencil_ref_ = stencil_ref;
     known_ = true;

@@ -70,6 +70,9 @@ struct PassState {
     StencilState stencil;
     int clip_distances = 0;  // GL_CLIP_DISTANCE0 .. n - 1 enabled
     Blend blend = Blend::Replace;
+    // glPolygonOffset(factor, units) on filled polygons; off while both are 0.
+    float offset_factor = 0.0f;
+    float offset_units = 0.0f;
     bool operator==(const PassState&) const = default;
 };
 

@@ -25,4 +25,9 @@ std::optional<SegmentCrossing> segment_crossing(const PortalRect& p, const dvec3
     return SegmentCrossing{t, point};
 }
 
+bool has_inner_faces(const PortalRect& p, const dvec3& eye, const dvec3& head) {
+    if (!in_column(p, eye)) return false;
+    return signed_distance(p, eye) >= 0.0 || segment_crossing(p, head, eye).has_value();
+}
+
 }  // namespace impossible::math

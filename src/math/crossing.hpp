@@ -27,4 +27,12 @@ std::optional<SegmentCrossing> segment_crossing(const PortalRect& p, const dvec3
 // A point (assumed on the plane) lies within the rectangle, edges included.
 bool within_rectangle(const PortalRect& p, const dvec3& point);
 
+// Whether an eye has door P's inner box faces (layout-format.md, "The portal
+// box"): it lies in the box's column (in_column) and the head reaches it
+// through the door: the eye is in front of the plane (d ≥ 0), or the segment
+// from the head centre to the eye crosses the plane within the rectangle
+// (segment_crossing). An eye and head behind a door the head walked round
+// have no inner faces: from behind, the door is not there.
+bool has_inner_faces(const PortalRect& p, const dvec3& eye, const dvec3& head);
+
 }  // namespace impossible::math

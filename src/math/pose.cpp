@@ -71,7 +71,7 @@ HeadPose head_pose_from(const dvec3& position, const dmat3& r) {
 std::array<Eye, 2> eyes_of(const HeadPose& pose, double ipd) {
     const dmat3 r = head_rotation(pose);
     const dvec3 half = (0.5 * ipd) * r[0];
-    return {Eye{pose.position - half, r}, Eye{pose.position + half, r}};
+    return {Eye{pose.position - half, r, pose.position}, Eye{pose.position + half, r, pose.position}};
 }
 
 dmat4 view_matrix(const Eye& eye) {
@@ -89,7 +89,7 @@ dmat4 eye_to_world(const Eye& eye) {
 }
 
 Eye transform_eye(const dmat4& m, const Eye& eye) {
-    return Eye{dvec3(m * dvec4(eye.position, 1.0)), dmat3(m) * eye.rotation};
+    return Eye{dvec3(m * dvec4(eye.position, 1.0)), dmat3(m) * eye.rotation, dvec3(m * dvec4(eye.head, 1.0))};
 }
 
 dvec3 forward_of(const dmat3& rotation) { return -rotation[2]; }

@@ -27,9 +27,13 @@ struct HeadPose {
 
 // A camera: position and orientation whose columns are right, up, back
 // (forward = -column 2).
+// `head` is the head centre the eye belongs to, in the same coordinates:
+// carried with the eye through portals and mirrors, it decides whether the
+// eye has a door box's inner faces (math/crossing.hpp, has_inner_faces).
 struct Eye {
     dvec3 position{0.0};
     dmat3 rotation{1.0};
+    dvec3 head{0.0};
 };
 
 // (sin, cos) of an angle in degrees: reduced to [-180°, 180°] first, exact at
@@ -60,7 +64,7 @@ dmat4 view_matrix(const Eye& eye);
 dmat4 eye_to_world(const Eye& eye);
 
 // The same eye seen through a rigid transform M (e.g. a portal's transfer
-// matrix): position and axes mapped by M.
+// matrix): position, axes and head centre mapped by M.
 Eye transform_eye(const dmat4& m, const Eye& eye);
 
 // Forward view direction of a rotation (-column 2).

@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "math/crossing.hpp"
 #include "shading/shading.hpp"
 #include "trace/texture_sample.hpp"
 
@@ -115,14 +116,15 @@ dvec3 room_face_color(const RoomFace& face, const dvec3& p) {
 }
 
 std::optional<SurfaceHit> hit_portal_box(const ScenePortal& portal, const dvec3& origin, const dvec3& dir,
-                                         const ClipPlane& clip) {
+                                         const dvec3& head, const ClipPlane& clip, bool& inner_hit) {
     // Work in the portal's frame, where the box is [-w/2, w/2] × [-h/2, h/2] × [-depth, 0]
     // and the frame's axes are (right, up, normal). t is the same in both frames.
     const math::PortalRect& r = portal.rect;
     // A portal in a hole leaves its front to hit_room_face, and only a door
     // has inner faces: such a portal has nothing more to show unless the eye
-    // is in the door's column. Most rays stop here.
-    const bool inner = portal.kind == layout::PortalKind::Door && math::in_column(r, origin);
+    // has them. Most rays stop here.
+    inner_hit = false;
+    const bool inner = portal.kind == layout::PortalKind::Door && math::has_inner_faces(r, origin, head);
     if (portal.in_hole && !inner) return std::nullopt;
     const dvec3 lo = dvec3(portal.to_local * dvec4(origin, 1.0));
     const dvec3 ld = dmat3(portal.to_local) * dir;
@@ -130,19 +132,25 @@ std::optional<SurfaceHit> hit_portal_box(const ScenePortal& portal, const dvec3&
     const dvec3 frame[3] = {portal.right, r.up, r.normal};
 
     std::optional<SurfaceHit> best;
-    auto try_face = [&](int axis, double coord, double sign, const dvec3& min, const dvec3& max) {
+    auto try_face = [&](int axis, double coord, double sign, const dvec3& min, const dvec3& max, bool is_inner) {
         const std::optional<double> t = hit_axis_rect(AxisRect{axis, coord, sign, min, max}, lo, ld);
-        if (t && clip.keeps(origin + *t * dir)) keep_nearest(best, *t, sign * frame[axis]);
+        if (t && clip.keeps(origin + *t * dir) && (!best || *t < best->t)) {
+            keep_nearest(best, *t, sign * frame[axis]);
+            inner_hit = is_inner;
+        }
     };
     const dvec3 box_min(-hw, -hh, -r.depth), box_max(hw, hh, 0.0);
-    if (!portal.in_hole) try_face(2, 0.0, 1.0, box_min, box_max);  // the front rectangle, facing +n
+    if (!portal.in_hole) try_face(2, 0.0, 1.0, box_min, box_max, false);  // the front rectangle, facing +n
     if (inner) {
-        // Inner faces, facing into the box.
-        try_face(0, hw, -1.0, box_min, box_max);
-        try_face(0, -hw, 1.0, box_min, box_max);
-        try_face(1, hh, -1.0, box_min, box_max);
-        try_face(1, -hh, 1.0, box_min, box_max);
-        try_face(2, -r.depth, 1.0, box_min, box_max);
+        // Inner faces, facing into the box. From an eye in front of the
+        // plane they lie behind the front face (a ray meets one only through
+        // the front, or through its edge): they tie as the front does.
+        const bool behind = math::signed_distance(r, origin) < 0.0;
+        try_face(0, hw, -1.0, box_min, box_max, behind);
+        try_face(0, -hw, 1.0, box_min, box_max, behind);
+        try_face(1, hh, -1.0, box_min, box_max, behind);
+        try_face(1, -hh, 1.0, box_min, box_max, behind);
+        try_face(2, -r.depth, 1.0, box_min, box_max, behind);
     }
     return best;
 }

@@ -153,14 +153,16 @@ dvec4 triangle_color(const PropTriangle& tri, std::span<const PropMaterial> mate
 dvec3 room_face_color(const RoomFace& face, const dvec3& p);
 
 // A portal's box for a ray from `origin`, which is the (possibly virtual)
-// eye: the front rectangle (facing +n) always, unless the portal fills a
-// room face's hole (then hit_room_face meets it); for a door, the four side
-// faces and the back face (facing inwards) only when the eye is in the box's
-// column. A mirror or a window has no box: only its front rectangle, which
-// lies in a hole in any valid layout, so this finds nothing for it there.
-// The nearest such face that the clip plane keeps.
+// eye of the (possibly virtual) head centre `head`: the front rectangle
+// (facing +n) always, unless the portal fills a room face's hole (then
+// hit_room_face meets it); for a door, the four side faces and the back face
+// (facing inwards) only when the eye has them (math::has_inner_faces: in the
+// box's column, reached by the head through the door). A mirror or a window
+// has no box: only its front rectangle, which lies in a hole in any valid
+// layout, so this finds nothing for it there. The nearest such face that the
+// clip plane keeps; `inner` says whether it is an inner face.
 std::optional<SurfaceHit> hit_portal_box(const ScenePortal& portal, const dvec3& origin, const dvec3& dir,
-                                         const ClipPlane& clip);
+                                         const dvec3& head, const ClipPlane& clip, bool& inner);
 
 // The front rectangle of a portal that fills no hole (facing +n), as
 // hit_portal_box meets it, and never the box's inner faces: what a shadow

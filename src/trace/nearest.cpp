@@ -11,14 +11,12 @@ namespace impossible::trace {
 
 namespace {
 
-// Runs `search`; where it kept a nearer hit (an offer is kept only when
-// strictly nearer, so t changes), marks the hit as `source`'s.
+// Runs `search`; where it kept a hit, marks the hit as `source`'s.
 template <class Search>
 void search_from(Nearest& nearest, const SurfaceSource& source, Search&& search) {
-    const bool found = nearest.found;
-    const double t = nearest.t;
+    const long kept = nearest.kept;
     search();
-    if (nearest.found != found || nearest.t != t) nearest.source = source;
+    if (nearest.kept != kept) nearest.source = source;
 }
 
 // The objects placed in a cell, each in its own coordinates (the ray moved
@@ -45,14 +43,15 @@ void nearest_placed(const Scene& scene, std::span<const PlacedObject> placed, co
 // faces and props, and the objects placed in it, taking its id and the
 // volume's tint. It has no portals (layout-format.md, "Volume portals").
 void nearest_through_volumes(const Scene& scene, const FrameObjects* objects, const SceneRoom& room,
-                             const dvec3& origin, const dvec3& dir, const ClipPlane& clip, Nearest& nearest) {
+                             const dvec3& origin, const dvec3& dir, const dvec3& head, const ClipPlane& clip,
+                             Nearest& nearest) {
     for (const SceneVolume& v : room.volumes) {
         RayFilter inside;
         inside.inside = &v;
         ClipPlane within = clip;
         within.filter = &inside;
         search_from(nearest, SurfaceSource{v.target, nullptr, nullptr, &v.tint},
-                    [&] { nearest_static(scene, scene.rooms[v.target], origin, dir, within, nearest); });
+                    [&] { nearest_static(scene, scene.rooms[v.target], origin, dir, head, within, nearest); });
         if (objects)
             nearest_placed(scene, objects->in_room(v.target), inside, v.target, &v.tint, origin, dir, clip, nearest);
     }
@@ -61,7 +60,7 @@ void nearest_through_volumes(const Scene& scene, const FrameObjects* objects, co
 }  // namespace
 
 void nearest_in_mixed_room(const Scene& scene, const FrameObjects* objects, int room_index, const dvec3& origin,
-                           const dvec3& dir, const ClipPlane& clip, Nearest& nearest) {
+                           const dvec3& dir, const dvec3& head, const ClipPlane& clip, Nearest& nearest) {
     const SceneRoom& room = scene.rooms[room_index];
     nearest.found = false;
     nearest.source = SurfaceSource{};
@@ -69,7 +68,7 @@ void nearest_in_mixed_room(const Scene& scene, const FrameObjects* objects, int 
         objects ? objects->in_room(room_index) : std::span<const PlacedObject>{};
     if (room.volumes.empty()) {
         // Exactly as in a room without objects, then the objects.
-        nearest_static(scene, room, origin, dir, clip, nearest);
+        nearest_static(scene, room, origin, dir, head, clip, nearest);
         nearest_placed(scene, placed, RayFilter{}, room_index, nullptr, origin, dir, clip, nearest);
         return;
     }
@@ -78,22 +77,23 @@ void nearest_in_mixed_room(const Scene& scene, const FrameObjects* objects, int 
     outside.outside = std::span<const SceneVolume>(room.volumes);
     ClipPlane hidden = clip;
     hidden.filter = &outside;
-    nearest_static(scene, room, origin, dir, hidden, nearest);
+    nearest_static(scene, room, origin, dir, head, hidden, nearest);
     nearest_placed(scene, placed, outside, room_index, nullptr, origin, dir, clip, nearest);
-    nearest_through_volumes(scene, objects, room, origin, dir, clip, nearest);
+    nearest_through_volumes(scene, objects, room, origin, dir, head, clip, nearest);
 }
 
 void nearest_prism_static(const Scene& scene, const SceneRoom& room, const dvec3& origin, const dvec3& dir,
-                          const ClipPlane& clip, Nearest& nearest) {
+                          const dvec3& head, const ClipPlane& clip, Nearest& nearest) {
     const PrismHit hit = hit_prism_faces(scene, room.prism, origin, dir, clip, limit_of(nearest));
     if (hit.face >= 0) {
         const PrismFace& f = room.prism.faces[static_cast<std::size_t>(hit.face)];
-        nearest.offer(SurfaceHit{hit.t, f.normal}, hit.portal, f.surface.color, room.checker);
-        if (f.surface.texture) nearest.textured_face = &f.surface;
+        if (nearest.offer(SurfaceHit{hit.t, f.normal}, hit.portal, f.surface.color, room.checker,
+                          face_tie(scene, hit.portal, dir)) &&
+            f.surface.texture)
+            nearest.textured_face = &f.surface;
     }
     nearest_prop(room, origin, dir, clip, nearest);
-    for (int p : room.box_portals)
-        nearest.offer(hit_portal_box(scene.portals[p], origin, dir, clip), p, dvec3(0.0), 0.0);
+    nearest_boxes(scene, room, origin, dir, head, clip, nearest);
 }
 
 void nearest_for_light(const Scene& scene, const FrameObjects* objects, int room_index, const dvec3& origin,

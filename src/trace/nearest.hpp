@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "trace/bvh.hpp"
+#include "trace/coplanar.hpp"
 #include "trace/intersect.hpp"
 #include "trace/trace_scene.hpp"
 
@@ -43,11 +44,17 @@ struct Nearest {
     // Whose surface; room -1: the ray's own room's (every hit in a cell
     // without volumes and dynamic objects). Set after a search, not by offer.
     SurfaceSource source;
+    Tie tie;        // the kept hit's part in a coplanar tie
+    long kept = 0;  // hits kept so far (a tie may keep a hit at the same t)
 
-    // Whether the hit is nearer than the one kept, and so now kept.
-    bool offer(const std::optional<SurfaceHit>& hit, int portal_index, const dvec3& color, double side) {
-        if (!hit || (found && hit->t >= t)) return false;
+    // Whether the hit replaces the one kept (nearer, or winning a coplanar
+    // tie), and so is now kept.
+    bool offer(const std::optional<SurfaceHit>& hit, int portal_index, const dvec3& color, double side,
+               const Tie& hit_tie = Tie{}) {
+        if (!hit || (found && !replaces(hit->t, hit_tie, t, tie))) return false;
         found = true;
+        ++kept;
+        tie = hit_tie;
         t = hit->t;
         normal = hit->normal;
         portal = portal_index;
@@ -64,7 +71,7 @@ struct Nearest {
 // before they existed.
 inline constexpr double kNoLimit = std::numeric_limits<double>::infinity();
 
-inline double limit_of(const Nearest& n) { return n.found ? n.t : kNoLimit; }
+inline double limit_of(const Nearest& n) { return n.found ? search_limit(n.t, n.tie) : kNoLimit; }
 
 // Boxes and triangles (a room's props or an object's), after whatever was
 // offered before, which wins a tie: the first box of those at the smallest t,
@@ -92,54 +99,72 @@ inline void nearest_prop(const PropSurfaces& s, const dvec3& origin, const dvec3
 // nearest_static in a prism room (nearest.cpp): its faces (prism_faces.hpp),
 // then as in a box room.
 void nearest_prism_static(const Scene& scene, const SceneRoom& room, const dvec3& origin, const dvec3& dir,
-                          const ClipPlane& clip, Nearest& nearest);
+                          const dvec3& head, const ClipPlane& clip, Nearest& nearest);
+
+// The portals' boxes of a room (hit_portal_box), each offered with its tie.
+inline void nearest_boxes(const Scene& scene, const SceneRoom& room, const dvec3& origin, const dvec3& dir,
+                          const dvec3& head, const ClipPlane& clip, Nearest& nearest) {
+    for (int p : room.box_portals) {
+        const ScenePortal& portal = scene.portals[p];
+        bool inner = false;
+        const std::optional<SurfaceHit> hit = hit_portal_box(portal, origin, dir, head, clip, inner);
+        if (hit) nearest.offer(hit, p, dvec3(0.0), 0.0, box_tie(portal, inner, hit->normal, dir));
+    }
+}
 
 // A room's static surfaces: the faces first, the first in order at the
 // smallest t (a face no nearer than the nearest so far would lose to it),
-// then the props, then the portals' boxes, each losing a tie to those before.
+// then the props, then the portals' boxes, each losing a tie to those before
+// except as the coplanar rules say (Tie). `head` is the (virtual) head
+// centre of the eye at `origin`.
 inline void nearest_static(const Scene& scene, const SceneRoom& room, const dvec3& origin, const dvec3& dir,
-                           const ClipPlane& clip, Nearest& nearest) {
+                           const dvec3& head, const ClipPlane& clip, Nearest& nearest) {
     if (!room.prism.faces.empty()) [[unlikely]] {
-        nearest_prism_static(scene, room, origin, dir, clip, nearest);
+        nearest_prism_static(scene, room, origin, dir, head, clip, nearest);
         return;
     }
     int face = -1;
     FaceHit face_hit{limit_of(nearest), -1};
+    Tie tie;
     for (int f = 0; f < layout::kFaceCount; ++f) {
-        if (const std::optional<FaceHit> hit = hit_room_face(room.faces[f], scene, origin, dir, clip, face_hit.t)) {
+        const double limit = face < 0 ? face_hit.t : search_limit(face_hit.t, tie);
+        if (const std::optional<FaceHit> hit = hit_room_face(room.faces[f], scene, origin, dir, clip, limit)) {
+            const Tie hit_tie = face_tie(scene, hit->portal, dir);
+            if (face >= 0 && !replaces(hit->t, hit_tie, face_hit.t, tie)) continue;
             face = f;
             face_hit = *hit;
+            tie = hit_tie;
         }
     }
     if (face >= 0) {
         const RoomFace& f = room.faces[face];
-        nearest.offer(SurfaceHit{face_hit.t, axis_normal(f.rect.axis, f.rect.sign)}, face_hit.portal, f.color,
-                      room.checker);
-        if (f.texture) nearest.textured_face = &f;
+        if (nearest.offer(SurfaceHit{face_hit.t, axis_normal(f.rect.axis, f.rect.sign)}, face_hit.portal, f.color,
+                          room.checker, tie) &&
+            f.texture)
+            nearest.textured_face = &f;
     }
     nearest_prop(room, origin, dir, clip, nearest);
-    for (int p : room.box_portals)
-        nearest.offer(hit_portal_box(scene.portals[p], origin, dir, clip), p, dvec3(0.0), 0.0);
+    nearest_boxes(scene, room, origin, dir, head, clip, nearest);
 }
 
 // nearest_in_room in a room with volumes or placed objects (nearest.cpp).
 void nearest_in_mixed_room(const Scene& scene, const FrameObjects* objects, int room_index, const dvec3& origin,
-                           const dvec3& dir, const ClipPlane& clip, Nearest& nearest);
+                           const dvec3& dir, const dvec3& head, const ClipPlane& clip, Nearest& nearest);
 
 // The frame's dynamic objects (FrameObjects), or null for none.
 // Finds the nearest surface into `nearest`, reused from ray to ray: each
 // field a hit sets is read only where that hit was kept (offer), so only
 // `found` is reset.
 inline void nearest_in_room(const Scene& scene, const FrameObjects* objects, int room_index, const dvec3& origin,
-                            const dvec3& dir, const ClipPlane& clip, Nearest& nearest) {
+                            const dvec3& dir, const dvec3& head, const ClipPlane& clip, Nearest& nearest) {
     const SceneRoom& room = scene.rooms[room_index];
     if (room.volumes.empty() && (!objects || objects->in_room(room_index).empty())) {
         nearest.found = false;
         nearest.source = SurfaceSource{};
-        nearest_static(scene, room, origin, dir, clip, nearest);
+        nearest_static(scene, room, origin, dir, head, clip, nearest);
         return;
     }
-    nearest_in_mixed_room(scene, objects, room_index, origin, dir, clip, nearest);
+    nearest_in_mixed_room(scene, objects, room_index, origin, dir, head, clip, nearest);
 }
 
 // What a shadow ray meets in room `room_index` before `t_limit`

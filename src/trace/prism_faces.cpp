@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "math/polygon.hpp"
+#include "trace/coplanar.hpp"
 
 namespace impossible::trace {
 
@@ -98,7 +99,7 @@ namespace {
 
 // The floor and the ceiling: as a box room's, over the polygon.
 void hit_floor_and_ceiling(const Scene& scene, const PrismShape& prism, const dvec3& origin, const dvec3& dir,
-                           const ClipPlane& clip, PrismHit& best) {
+                           const ClipPlane& clip, PrismHit& best, Tie& best_tie) {
     for (int f = 0; f < 2; ++f) {
         const PrismFace& face = prism.faces[static_cast<std::size_t>(f)];
         const double along = dir.y;
@@ -108,6 +109,7 @@ void hit_floor_and_ceiling(const Scene& scene, const PrismShape& prism, const dv
         const dvec3 p = origin + t * dir;
         if (!in_prism_floor(prism, p.x, p.z) || !clip.keeps(p)) continue;
         best = PrismHit{f, t, hole_at(face.surface, scene, p)};
+        best_tie = face_tie(scene, best.portal, dir);
     }
 }
 
@@ -121,7 +123,8 @@ double corner_side(const glm::dvec2& corner, const dvec3& origin, const dvec3& d
 PrismHit hit_prism_faces(const Scene& scene, const PrismShape& prism, const dvec3& origin, const dvec3& dir,
                          const ClipPlane& clip, double t_limit) {
     PrismHit best{-1, t_limit, -1};
-    hit_floor_and_ceiling(scene, prism, origin, dir, clip, best);
+    Tie best_tie;  // a wall's hit in a door's hole loses a tie to the floor (coplanar.hpp)
+    hit_floor_and_ceiling(scene, prism, origin, dir, clip, best, best_tie);
     // Wall i meets the ray's line where the line separates its corners (or
     // passes through one): the sides are computed once per corner and shared
     // by the two walls that meet there, so a ray past a corner meets one of
@@ -141,11 +144,15 @@ PrismHit hit_prism_faces(const Scene& scene, const PrismShape& prism, const dvec
         const double across = dir.x * e.y - dir.z * e.x;
         if (!(prism.winding * across > 0.0)) continue;  // seen from behind, or edge-on
         const double t = ((a.x - origin.x) * e.y - (a.y - origin.z) * e.x) / across;
-        if (!(t > 0.0 && t < best.t)) continue;
+        if (!(t > 0.0 && t < search_limit(best.t, best_tie))) continue;
         const dvec3 p = origin + t * dir;
         if (!(p.y >= prism.y0 && p.y <= prism.y1) || !clip.keeps(p)) continue;
         const int face = 2 + static_cast<int>(i);
-        best = PrismHit{face, t, hole_at(prism.faces[static_cast<std::size_t>(face)].surface, scene, p)};
+        const int portal = hole_at(prism.faces[static_cast<std::size_t>(face)].surface, scene, p);
+        const Tie tie = face_tie(scene, portal, dir);
+        if (best.face >= 0 && !replaces(t, tie, best.t, best_tie)) continue;
+        best = PrismHit{face, t, portal};
+        best_tie = tie;
     }
     if (best.face < 0) best.t = 0.0;
     return best;

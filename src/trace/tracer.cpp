@@ -17,12 +17,14 @@ namespace impossible::trace {
 namespace {
 
 // One line of sight being followed (the eye's, or a window's branch): the
-// (possibly virtual) eye and direction, the room, the clipping plane, the
+// (possibly virtual) eye, its head centre (carried with it: it decides
+// which door boxes have inner faces) and direction, the room, the clipping plane, the
 // portals passed since the real eye and the view's weight (the product of
 // the largest channel of every factor multiplied into its colour since the
 // eye; scene/shading.hpp, kMinBranchWeight).
 struct Ray {
     dvec3 origin{0.0};
+    dvec3 head{0.0};
     dvec3 dir{0.0};
     int room = -1;
     ClipPlane clip;  // none for the real eye
@@ -35,6 +37,7 @@ struct Ray {
 void pass_through(const Scene& scene, const ScenePortal& a, Ray& ray) {
     const ScenePortal& b = scene.portals[a.target];
     ray.origin = dvec3(a.transfer * dvec4(ray.origin, 1.0));
+    ray.head = dvec3(a.transfer * dvec4(ray.head, 1.0));
     ray.dir = dmat3(a.transfer) * ray.dir;
     ray.room = b.room;
     ++ray.portals_passed;
@@ -50,6 +53,7 @@ void pass_through(const Scene& scene, const ScenePortal& a, Ray& ray) {
 Ray reflected(const ScenePortal& p, const Ray& ray) {
     Ray r = ray;
     r.origin = dvec3(p.reflection * dvec4(ray.origin, 1.0));
+    r.head = dvec3(p.reflection * dvec4(ray.head, 1.0));
     r.dir = dmat3(p.reflection) * ray.dir;
     ++r.portals_passed;
     r.clip.active = true;
@@ -178,7 +182,7 @@ dvec3 follow(const Scene& scene, Ray ray, Tree& tree, TraceHit* main) {
     Nearest n;
     for (;;) {
         const Ray& now = path.ray;
-        nearest_in_room(scene, tree.objects, now.room, now.origin, now.dir, now.clip, n);
+        nearest_in_room(scene, tree.objects, now.room, now.origin, now.dir, now.head, now.clip, n);
         if (!n.found) {
             path.end_main(kIdNothing, -1, dvec3(0.0), dvec3(0.0));
             return path.done + path.factor * shading::kBackgroundColor;
@@ -216,12 +220,13 @@ dvec3 follow(const Scene& scene, Ray ray, Tree& tree, TraceHit* main) {
 
 }  // namespace
 
-TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, int room, const RayLimits& limits,
+TraceHit trace_ray(const Scene& scene, const PixelRay& start, int room, const RayLimits& limits,
                    const FrameObjects& objects) {
     TraceHit hit;
     Ray ray;
-    ray.origin = origin;
-    ray.dir = dir;
+    ray.origin = start.origin;
+    ray.head = start.head;
+    ray.dir = start.dir;
     ray.room = room;
     Tree tree{limits.max_depth, limits.max_passes};
     tree.objects = objects.placed.empty() ? nullptr : &objects;
@@ -231,6 +236,11 @@ TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, in
     hit.passes = tree.passes;
     hit.budget_fills = tree.budget_fills;
     return hit;
+}
+
+TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, int room, const RayLimits& limits,
+                   const FrameObjects& objects) {
+    return trace_ray(scene, PixelRay{origin, dir, origin}, room, limits, objects);
 }
 
 TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, int room, const RayLimits& limits) {

@@ -57,10 +57,23 @@ struct RayLimits {
     int light_depth = -1;
 };
 
-// Follows the ray from `origin` (an eye in room `room`) along `dir` (any
-// length but not zero) within `limits`, among the frame's dynamic objects
-// (place_frame_objects: moving props at the frame's time, hands, props
-// crossing doors). `room` must be a valid room index.
+// A ray from an eye: where it starts, its direction (any length but not
+// zero) and the head centre the eye belongs to, which decides whether the
+// eye has a door box's inner faces (layout-format.md, "The portal box").
+struct PixelRay {
+    dvec3 origin{0.0};
+    dvec3 dir{0.0};
+    dvec3 head{0.0};
+};
+
+// Follows the ray from `start.origin` (an eye in room `room`) within
+// `limits`, among the frame's dynamic objects (place_frame_objects: moving
+// props at the frame's time, hands, props crossing doors). `room` must be a
+// valid room index.
+TraceHit trace_ray(const Scene& scene, const PixelRay& start, int room, const RayLimits& limits,
+                   const FrameObjects& objects);
+// The same from an eye at the head centre (origin), for tests and tools:
+// such an eye has the inner faces of a door box only in front of its plane.
 TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, int room, const RayLimits& limits,
                    const FrameObjects& objects);
 // The same among the objects at time 0 without hands (Scene::rest).
@@ -83,12 +96,8 @@ struct TraceDesc : math::View {
 // 0..1 → 0..255 as round(clamp(c, 0, 1) · 255).
 std::uint8_t to_byte(double c);
 
-// The direction (in the layout's coordinates, unit length) of pixel (i, j)
-// of an eye image, and the eye it starts from: eye 0 is the left eye.
-struct PixelRay {
-    dvec3 origin{0.0};
-    dvec3 dir{0.0};
-};
+// The ray of pixel (i, j) of an eye image (direction in the layout's
+// coordinates, unit length): eye 0 is the left eye.
 PixelRay pixel_ray(const TraceDesc& desc, int eye, int i, int j);
 
 // What the budget of portal passes cut in a frame, summed over its ray trees

@@ -40,13 +40,13 @@ std::array<std::vector<std::uint8_t>, 2> hidden_masks(const TraceDesc& desc) {
 
 PixelRay eye_pixel_ray(const TraceDesc& desc, const math::Frustum& frustum, const math::Eye& eye, int i, int j) {
     const dvec3 dir_eye = math::pixel_ray_eye(frustum, desc.eye_width, desc.eye_height, i, j);
-    return {eye.position, glm::normalize(eye.rotation * dir_eye)};
+    return {eye.position, glm::normalize(eye.rotation * dir_eye), eye.head};
 }
 
 // The ray through a point of an eye's image (pixel units, rows from the top).
 PixelRay eye_point_ray(const TraceDesc& desc, const math::Frustum& frustum, const math::Eye& eye, double x, double y) {
     const dvec3 dir_eye = math::image_point_ray_eye(frustum, desc.eye_width, desc.eye_height, x, y);
-    return {eye.position, glm::normalize(eye.rotation * dir_eye)};
+    return {eye.position, glm::normalize(eye.rotation * dir_eye), eye.head};
 }
 
 // What every ray of a frame shares: the scene, the view, and the view's
@@ -61,7 +61,7 @@ struct FrameRays {
 TraceHit trace_counted(const FrameRays& frame, const PixelRay& ray, TraceStats& stats) {
     const TraceDesc& desc = frame.desc;
     const RayLimits limits{desc.max_depth, desc.max_portal_passes, desc.light_depth.value_or(-1)};
-    const TraceHit hit = trace_ray(frame.scene, ray.origin, ray.dir, desc.room, limits, frame.objects);
+    const TraceHit hit = trace_ray(frame.scene, ray, desc.room, limits, frame.objects);
     stats.budget_rays += hit.budget_fills > 0 ? 1 : 0;
     stats.budget_fills += hit.budget_fills;
     return hit;

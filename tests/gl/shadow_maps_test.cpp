@@ -139,7 +139,9 @@ lights::LightImage shadow_direct_image(int room, const glm::dvec3& position) {
     return image;
 }
 
-// The distance along the unit direction `w` from `o` to the box, or +inf.
+// The distance along the unit direction `w` from `o` (outside the box) to
+// where the ray leaves the box, or +inf: a map holds the faces turned away
+// from the light (those a shadow ray from beyond meets from their front).
 double shadow_box_distance(const glm::dvec3& o, const glm::dvec3& w, const glm::dvec3& lo, const glm::dvec3& hi) {
     double t0 = 0.0, t1 = std::numeric_limits<double>::infinity();
     for (int a = 0; a < 3; ++a) {
@@ -147,7 +149,7 @@ double shadow_box_distance(const glm::dvec3& o, const glm::dvec3& w, const glm::
         t0 = std::max(t0, std::min(ta, tb));
         t1 = std::min(t1, std::max(ta, tb));
     }
-    return t0 <= t1 ? t0 : std::numeric_limits<double>::infinity();
+    return t0 <= t1 ? t1 : std::numeric_limits<double>::infinity();
 }
 
 const char* const kShadowBoxRoom = R"({
@@ -179,7 +181,7 @@ TEST(ShadowMaps, ABoxsDistanceInTheMapMatchesTheCpusWithinATexel) {
             continue;
         }
         // The texel's direction is within half a texel (1 / size at a face's
-        // centre) of the query's; the top face is within 45° of head-on.
+        // centre) of the query's; the bottom face is within 45° of head-on.
         EXPECT_NEAR(r[k].stored, cpu, 2.0 * cpu / size) << k;
         EXPECT_EQ(r[k].visible, 0.0f) << k;  // the floor point under the box
         ++under;
@@ -325,9 +327,10 @@ TEST(ShadowMaps, AFaceLitAtGrazingIncidenceIsNotShadowedByItself) {
     }
 }
 
-// A glTF quad (x -1.5..1.5, y 0.5..2.5 at z = -1.5, facing +z) textured 2×2
-// with alpha 1, 0 (top right), 1, 0.5 (bottom right) and cutoff 0.6: light
-// passes its cut-out quadrants.
+// A glTF quad (x -1.5..1.5, y 0.5..2.5 at z = -1.5, facing +z, double-sided
+// so that it blocks the light in front of it) textured 2×2 with alpha 1, 0
+// (top right), 1, 0.5 (bottom right) and cutoff 0.6: light passes its cut-out
+// quadrants.
 TEST(ShadowMaps, AlphaCutOutsLetLightThrough) {
     layout::Layout l = testing::layout_from_text(kShadowBoxRoom);
     l.rooms[0].props.clear();
@@ -357,6 +360,7 @@ TEST(ShadowMaps, AlphaCutOutsLetLightThrough) {
     m.texture = 0;
     m.alpha_mode = assets::AlphaMode::Mask;
     m.alpha_cutoff = 0.6;
+    m.double_sided = true;
     prop.materials.push_back(m);
     l.rooms[0].props.push_back(prop);
     ShadowRig rig(l);

@@ -121,5 +121,26 @@ TEST(SegmentCrossing, NotANumberNeverCrosses) {
     EXPECT_FALSE(segment_crossing(door(), {nan, 0, 1}, {0, 0, -1}));
 }
 
+// layout-format.md, "The portal box": an eye has the inner faces when it is
+// in the column and the head reaches it through the door.
+TEST(InnerFaces, AnEyeInFrontOfThePlaneInTheColumnHasThem) {
+    const PortalRect p;  // centre 0, normal +z, 1 × 2 m, 0.25 m deep
+    EXPECT_TRUE(has_inner_faces(p, dvec3(0.1, 0.5, 0.3), dvec3(0.1, 0.5, 0.3)));
+    EXPECT_TRUE(has_inner_faces(p, dvec3(0.0, 0.0, 0.0), dvec3(5.0, 0.0, 0.0)));   // on the plane: in front
+    EXPECT_FALSE(has_inner_faces(p, dvec3(0.6, 0.0, 0.3), dvec3(0.6, 0.0, 0.3)));  // beside the column
+}
+
+TEST(InnerFaces, AnEyeBehindThePlaneNeedsTheHeadToReachItThroughTheDoor) {
+    const PortalRect p;
+    const dvec3 eye(0.0, 0.5, -0.01);
+    EXPECT_TRUE(has_inner_faces(p, eye, dvec3(0.03, 0.5, 0.02)));  // the head in front, through the rectangle
+    EXPECT_TRUE(has_inner_faces(p, eye, dvec3(0.0, 1.0, 0.0)));    // the head on the plane, at the top edge
+    EXPECT_FALSE(has_inner_faces(p, eye, dvec3(0.0, 0.5, -0.1)));  // the head walked round: behind too
+    EXPECT_FALSE(has_inner_faces(p, eye, eye));                    // the head at the eye, behind
+    EXPECT_FALSE(has_inner_faces(p, eye, dvec3(0.0, 3.5, 0.02)));  // in front, above the door: the segment
+                                                                   // meets the plane above the rectangle
+    EXPECT_FALSE(has_inner_faces(p, dvec3(0.0, 0.5, -0.3), dvec3(0.0, 0.5, 0.02)));  // behind the back face
+}
+
 }  // namespace
 }  // namespace impossible::math

@@ -10,6 +10,18 @@
 namespace impossible::render {
 namespace {
 
+// The polygon offsets of a door box's faces in a coplanar tie
+// (docs/choices.md, "Coplanar ties"). A front face meets the surface it ties
+// with only along an edge, where both depths are one value interpolated
+// over two triangles: two of the depth buffer's least steps cover that, and
+// a slope term would move the face behind surfaces a fraction of a pixel
+// behind it. An inner face lies in the surface's plane over its whole area,
+// where interpolation over a large triangle (a room's floor) differs by up
+// to a fraction of the face's depth step per pixel: one step is added.
+constexpr float kLosesOffsetFactor = 0.0f;
+constexpr float kWinsOffsetFactor = 1.0f;
+constexpr float kCoplanarOffsetUnits = 2.0f;
+
 gl::WindowRect whole_target(const FrameDesc& frame) { return {0, 0, 2 * frame.eye_width, frame.eye_height}; }
 
 gl::WindowRect eye_viewport(const FrameDesc& frame, int eye) {
@@ -20,7 +32,7 @@ gl::WindowRect eye_viewport(const FrameDesc& frame, int eye) {
 // What every draw names: its target, depth convention, pass state (for the
 // view's winding), level (the stencil reference), program and scissor.
 void bind_common(const DrawContext& ctx, const LevelView& view, Pass pass, int stencil_ref, GLuint program,
-                 const Scissor& scissor, int clip_distances = -1) {
+                 const Scissor& scissor, int clip_distances = -1, CoplanarTie tie = CoplanarTie::None) {
     gl::StateCache& state = ctx.state;
     const bool reversed_z = ctx.frame.depth == DepthMode::ReversedZ;
     state.draw_framebuffer(ctx.target.framebuffer.get());
@@ -28,6 +40,13 @@ void bind_common(const DrawContext& ctx, const LevelView& view, Pass pass, int s
     state.clip_control(reversed_z ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
     gl::PassState pass_gl = pass_state(pass, reversed_z, view.mirrored);
     if (clip_distances >= 0) pass_gl.clip_distances = clip_distances;
+    if (tie != CoplanarTie::None) {
+        // Towards the eye is greater depth with reversed-Z, smaller with
+        // standard depth (docs/choices.md, "Coplanar ties").
+        const float towards = (tie == CoplanarTie::Wins) == reversed_z ? 1.0f : -1.0f;
+        pass_gl.offset_factor = towards * (tie == CoplanarTie::Wins ? kWinsOffsetFactor : kLosesOffsetFactor);
+        pass_gl.offset_units = towards * kCoplanarOffsetUnits;
+    }
     // The draw names a level; the stencil holds it encoded (passes.hpp).
     const GLint reference = stencil_reference(pass, stencil_ref, ctx.frame.max_depth, view.box_bits, pass_gl.stencil);
     state.apply(pass_gl, reference);
@@ -42,7 +61,8 @@ void bind_common(const DrawContext& ctx, const LevelView& view, Pass pass, int s
 
 void bind_draw(const DrawContext& ctx, const LevelView& view, const SceneDraw& draw) {
     assert(draw.program != nullptr);
-    bind_common(ctx, view, draw.pass, draw.stencil_ref, draw.program->program.get(), draw.scissor, draw.clip_distances);
+    bind_common(ctx, view, draw.pass, draw.stencil_ref, draw.program->program.get(), draw.scissor, draw.clip_distances,
+                draw.tie);
     gl::StateCache& state = ctx.state;
     switch (ctx.frame.stereo) {
         case StereoMode::ClipShift: state.viewport(whole_target(ctx.frame)); break;

@@ -51,6 +51,13 @@ struct DrawContext {
 // Where a draw may write: a rectangle of the target, or all of it.
 using Scissor = std::optional<gl::ScissorRect>;
 
+// How a door box's faces are drawn against a room's or prop's face in the
+// same place (layout-format.md, "What a pixel shows", coplanar surfaces;
+// docs/choices.md): a front face loses (its depth is moved away from the
+// eye by a polygon offset), an inner face seen by an eye behind the plane
+// wins (moved towards it).
+enum class CoplanarTie { None, Loses, Wins };
+
 // A draw of the scene's geometry (a cell's batches, a portal's box) for the
 // eyes of a level, through the scene's vertex array and the stereo mode's
 // viewports.
@@ -62,6 +69,7 @@ struct SceneDraw {
     // GL_CLIP_DISTANCE0 .. n - 1 enabled: the pass's (kSceneClipDistances),
     // or kObjectClipDistances for an object's instance (its door cuts).
     int clip_distances = kSceneClipDistances;
+    CoplanarTie tie = CoplanarTie::None;  // a door box's faces (draw_portal_box)
 };
 
 // A full-target triangle (or the eyes' quads of a depth reset) through a

@@ -163,10 +163,29 @@ void draw_shadow_batches(const ShadowMaps& m, gl::StateCache& state, const Shado
     }
 }
 
+gl::PassState shadow_pass_state(bool mirrored) {
+    gl::PassState p;
+    p.depth_test = true;
+    p.depth_write = true;
+    p.depth_func = GL_GREATER;  // reversed-Z
+    p.write_ids = false;
+    // A shadow ray meets only the front faces of surfaces, seen from the
+    // point it starts at (layout-format.md, "Lights"): the faces turned away
+    // from the light. Seen from L' those wind clockwise, or anticlockwise in
+    // a leg mirrored an odd number of times; the faces that face the light
+    // are culled. A double-sided material's back is a triangle of its own
+    // (scene/box_mesh.cpp), so it blocks from either side.
+    p.cull_back_faces = true;
+    p.front_clockwise = !mirrored;
+    p.clip_distances = 4;
+    return p;
+}
+
 // A leg's props: the room's static ones, then the instances placed in it.
 void draw_shadow_leg(const ShadowMaps& m, gl::StateCache& state, const ShadowSources& s,
                      const std::vector<int>& instances, const ShadowLeg& leg) {
     const auto room = static_cast<size_t>(leg.room);
+    state.apply(shadow_pass_state(glm::determinant(math::dmat3(leg.from_room)) < 0.0), 0);
     set_shadow_planes(m, leg, nullptr);
     draw_shadow_batches(m, state, s, (*s.objects)[room].batches,
                         leg.from_room * glm::translate(math::dmat4(1.0), (*s.origins)[room].origin));
@@ -178,17 +197,6 @@ void draw_shadow_leg(const ShadowMaps& m, gl::StateCache& state, const ShadowSou
         draw_shadow_batches(m, state, s, mesh.batches,
                             leg.from_room * inst.to_cell * glm::translate(math::dmat4(1.0), mesh.origin));
     }
-}
-
-gl::PassState shadow_pass_state() {
-    gl::PassState p;
-    p.depth_test = true;
-    p.depth_write = true;
-    p.depth_func = GL_GREATER;  // reversed-Z
-    p.write_ids = false;
-    p.cull_back_faces = false;  // mirrored legs turn the winding, and a prop's inside is not drawn anyway
-    p.clip_distances = 4;
-    return p;
 }
 
 void draw_shadow_map(const ShadowMaps& m, gl::StateCache& state, const ShadowSources& s,
@@ -255,7 +263,7 @@ Result<int> update_shadow_maps(ShadowMaps& m, gl::StateCache& state, const Shado
         if (Result<void> made = ensure_shadow_program(m); !made) return Error{made.error()};
         const int size = shadow_map_size_for(frame.shadow_map_size, static_cast<std::size_t>(count));
         ensure_shadow_storage(m, state, size, count);
-        state.apply(shadow_pass_state(), 0);
+        state.apply(shadow_pass_state(false), 0);  // the clears obey its write masks; each leg sets its winding
         state.no_scissor();
         state.viewport({0, 0, size, size});
         state.clip_control(GL_ZERO_TO_ONE);

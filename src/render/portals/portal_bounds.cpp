@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "math/crossing.hpp"
 #include "render/portals/view.hpp"
 
 namespace impossible::render {
@@ -63,13 +64,14 @@ NdcRect bound_corners(const math::dvec3 corners[8], int count, const EyeView& vi
 
 NdcRect portal_rect(const math::PortalRect& portal, const EyeView& view) {
     if (!view.active || view.rect.empty()) return NdcRect::none();
-    // An eye in the box's column may see the inner faces (all eight
-    // corners); any other eye sees only the front face, and only from in front.
-    const bool column = math::in_column(portal, view.eye.position);
-    if (!column && math::signed_distance(portal, view.eye.position) <= 0.0) return NdcRect::none();
+    // An eye with the inner faces (in the box's column, reached through the
+    // door) may see all eight corners; any other eye sees only the front
+    // face, and only from in front.
+    const bool inner = math::has_inner_faces(portal, view.eye.position, view.eye.head);
+    if (!inner && math::signed_distance(portal, view.eye.position) <= 0.0) return NdcRect::none();
     math::dvec3 corners[8];
     math::box_corners(portal, corners);
-    return bound_corners(corners, column ? 8 : 4, view);
+    return bound_corners(corners, inner ? 8 : 4, view);
 }
 
 NdcRect box_rect(const math::dvec3 corners[8], const EyeView& view) {

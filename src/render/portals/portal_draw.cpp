@@ -5,6 +5,7 @@
 #include <cassert>
 #include <cmath>
 
+#include "math/crossing.hpp"
 #include "math/oblique_projection.hpp"
 #include "render/lights/light_draw.hpp"
 #include "render/objects/object_draw.hpp"
@@ -157,19 +158,36 @@ void draw_portal_box(const DrawContext& ctx, const LevelView& view, const SceneD
     const scene::PortalInfo& info = ctx.scene.portals[portal];
     const scene::PortalMesh& mesh = ctx.scene.portal_meshes[portal];
     assert(info.room == view.cell);  // its box is relative to the cell's origin
-    std::array<NdcRect, 2> front = rects, inner = rects;
-    bool any_inner = false;
+    // The inner faces for the eyes that have them: behind the plane they
+    // win a coplanar tie, in front (where they lie behind the front face)
+    // they lose it as the front face does (docs/choices.md, "Coplanar ties").
+    std::array<NdcRect, 2> inner_behind = rects, inner_in_front = rects;
+    bool any_behind = false, any_in_front = false;
     for (int e = 0; e < 2; ++e) {
-        if (!math::in_column(info.rect, view.eyes[e].eye.position))
-            inner[e] = NdcRect::none();
-        else
-            any_inner = true;
+        const math::Eye& eye = view.eyes[e].eye;
+        if (!math::has_inner_faces(info.rect, eye.position, eye.head)) {
+            inner_behind[e] = inner_in_front[e] = NdcRect::none();
+        } else if (math::signed_distance(info.rect, eye.position) < 0.0) {
+            inner_in_front[e] = NdcRect::none();
+            any_behind = true;
+        } else {
+            inner_behind[e] = NdcRect::none();
+            any_in_front = true;
+        }
     }
-    set_eye_uniforms(ctx, view, *draw.program, front);
-    draw_range(ctx, view, draw, mesh.front);
-    if (any_inner) {
-        set_eye_uniforms(ctx, view, *draw.program, inner);
-        draw_range(ctx, view, draw, mesh.inner);
+    const bool door = info.kind == layout::PortalKind::Door;
+    SceneDraw d = draw;
+    d.tie = door ? CoplanarTie::Loses : CoplanarTie::None;
+    set_eye_uniforms(ctx, view, *draw.program, rects);
+    draw_range(ctx, view, d, mesh.front);
+    if (any_in_front) {
+        set_eye_uniforms(ctx, view, *draw.program, inner_in_front);
+        draw_range(ctx, view, d, mesh.inner);
+    }
+    if (any_behind) {
+        d.tie = CoplanarTie::Wins;
+        set_eye_uniforms(ctx, view, *draw.program, inner_behind);
+        draw_range(ctx, view, d, mesh.inner);
     }
 }
 
