@@ -49,6 +49,7 @@ void append_object_meshes(Scene& scene, MeshWriter& out, const layout::Layout& l
         const glm::dvec3 origin = scene.origins[static_cast<std::size_t>(d.room)].origin;
         scene.object_meshes.push_back(
             object_mesh(scene, out, origin, [&](std::vector<DrawBatch>& b) { append_prop_to(out, prop, b); }));
+        scene.object_meshes.back().box = std::holds_alternative<layout::BoxProp>(prop);
     }
     const layout::HandShape& hand = layout.hands;
     scene.object_meshes.push_back(object_mesh(scene, out, glm::dvec3(0.0), [&](std::vector<DrawBatch>& b) {
@@ -65,6 +66,7 @@ void append_object_meshes(Scene& scene, MeshWriter& out, const layout::Layout& l
         box.color = hand.color;
         append_prop_to(out, box, b);
     }));
+    scene.object_meshes.back().box = !hand.model;
 }
 
 }  // namespace impossible::scene

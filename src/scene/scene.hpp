@@ -130,6 +130,7 @@ struct CellObjects {
 // its frame) less `origin`.
 struct ObjectMesh {
     std::vector<DrawBatch> batches;
+    bool box = false;    // a box prop's (or box hand's): closed, wound outwards
     glm::dvec3 lo{0.0};  // bounds in its own coordinates, padded as CellObject's
     glm::dvec3 hi{0.0};
     glm::dvec3 origin{0.0};  // vertex position = own coordinates - origin

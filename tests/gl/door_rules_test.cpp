@@ -25,7 +25,8 @@ Frames both(const layout::Layout& l, const math::HeadPose& head, int width, int 
     f.room = layout::find_room(l, "hall");
     f.eye_width = width;
     f.eye_height = height;
-    if (angles) f.eye_optics = std::array<math::EyeOptics, 2>{math::EyeOptics{*angles, {}}, math::EyeOptics{*angles, {}}};
+    if (angles)
+        f.eye_optics = std::array<math::EyeOptics, 2>{math::EyeOptics{*angles, {}}, math::EyeOptics{*angles, {}}};
     return {testing::render_once(gl::Backend::Egl, l, f), trace::trace_frame(l, cli::trace_desc_for(f)).value()};
 }
 
@@ -38,8 +39,10 @@ layout::Layout default_layout() { return testing::example_layout("default.json")
 // (Before the rule, 10 cm behind it both programs showed the annex at every pixel.)
 TEST(DoorRules, AHeadThatWalkedRoundTheDoorSeesItsOwnRoom) {
     const layout::Layout l = default_layout();
-    const math::HeadPose poses[] = {{{0, 1.6, -0.1}, 0, 0, 0},   {{0, 1.6, -0.01}, 0, 0, 0},
-                                    {{0.2, 1.5, -0.05}, 180, 0, 0}, {{0, 1.6, -0.1}, 90, -60, 0},
+    const math::HeadPose poses[] = {{{0, 1.6, -0.1}, 0, 0, 0},
+                                    {{0, 1.6, -0.01}, 0, 0, 0},
+                                    {{0.2, 1.5, -0.05}, 180, 0, 0},
+                                    {{0, 1.6, -0.1}, 90, -60, 0},
                                     {{0.45, 1.7, -0.2}, 0, -30, 0}};
     for (const math::HeadPose& head : poses) {
         const Frames f = both(l, head, 160, 120);
@@ -67,7 +70,8 @@ TEST(DoorRules, TheFloorRunsUpToTheDoorsBottomEdge) {
     long differ = 0;
     for (int y = f.raster.height / 2; y < f.raster.height; ++y)
         for (int x = 0; x < width; ++x)
-            differ += f.raster.ids[static_cast<size_t>(y) * width + x] != f.traced.ids[static_cast<size_t>(y) * width + x];
+            differ +=
+                f.raster.ids[static_cast<size_t>(y) * width + x] != f.traced.ids[static_cast<size_t>(y) * width + x];
     EXPECT_EQ(differ, 0);
     EXPECT_EQ(image::compare_pictures(f.raster, f.traced).id_mismatches, 0);
 }

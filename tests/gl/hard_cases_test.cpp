@@ -116,7 +116,14 @@ TEST(HardCases, TenKilometresFromTheOriginPortalAKilometreAway) {
     }
     EXPECT_LE(mismatch[0], 0.01) << "reversed-Z resolves bars 2 cm in front of a portal 1205 m away";
     EXPECT_LE(mismatch[1], 0.01);
-    EXPECT_GT(mismatch[2], 1.0) << "24-bit standard depth cannot (it is the worse mode, so not the default)";
+    // 24-bit standard depth cannot tell the bars from the door by depth (2 cm
+    // at 1205 m is a hundredth of its least step); it showed the door over
+    // them (over 1 % of the pixels) until a door's front face lost coplanar
+    // ties by two least steps (docs/choices.md, "Coplanar ties"). It is still
+    // the worse mode: at such distances its steps are wider than the whole
+    // scene, so the same two steps may let a surface behind the door show
+    // through it, where reversed-Z's steps are microns.
+    std::printf("  standard 24-bit depth, clip plane: %.4f %% mismatches\n", mismatch[2]);
 
     // What the oblique near plane does to depth precision: the resolvable
     // separation at the vault's poster, 1230 m along the view axis from the

@@ -139,9 +139,8 @@ lights::LightImage shadow_direct_image(int room, const glm::dvec3& position) {
     return image;
 }
 
-// The distance along the unit direction `w` from `o` (outside the box) to
-// where the ray leaves the box, or +inf: a map holds the faces turned away
-// from the light (those a shadow ray from beyond meets from their front).
+// The distance along the unit direction `w` from `o` to the box, or +inf (a
+// map holds a box prop's side facing the light: render/lights/shadow_maps.cpp).
 double shadow_box_distance(const glm::dvec3& o, const glm::dvec3& w, const glm::dvec3& lo, const glm::dvec3& hi) {
     double t0 = 0.0, t1 = std::numeric_limits<double>::infinity();
     for (int a = 0; a < 3; ++a) {
@@ -149,7 +148,7 @@ double shadow_box_distance(const glm::dvec3& o, const glm::dvec3& w, const glm::
         t0 = std::max(t0, std::min(ta, tb));
         t1 = std::min(t1, std::max(ta, tb));
     }
-    return t0 <= t1 ? t1 : std::numeric_limits<double>::infinity();
+    return t0 <= t1 ? t0 : std::numeric_limits<double>::infinity();
 }
 
 const char* const kShadowBoxRoom = R"({
@@ -181,7 +180,7 @@ TEST(ShadowMaps, ABoxsDistanceInTheMapMatchesTheCpusWithinATexel) {
             continue;
         }
         // The texel's direction is within half a texel (1 / size at a face's
-        // centre) of the query's; the bottom face is within 45° of head-on.
+        // centre) of the query's; the top face is within 45° of head-on.
         EXPECT_NEAR(r[k].stored, cpu, 2.0 * cpu / size) << k;
         EXPECT_EQ(r[k].visible, 0.0f) << k;  // the floor point under the box
         ++under;

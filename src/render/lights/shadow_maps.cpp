@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <span>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -148,7 +149,7 @@ void set_shadow_planes(const ShadowMaps& m, const ShadowLeg& leg, const walk::Ob
 }
 
 void draw_shadow_batches(const ShadowMaps& m, gl::StateCache& state, const ShadowSources& s,
-                         const std::vector<scene::DrawBatch>& batches, const math::dmat4& model) {
+                         std::span<const scene::DrawBatch> batches, const math::dmat4& model) {
     const glm::mat4 model_f(model);
     const GLuint p = m.program.get();
     glProgramUniformMatrix4fv(p, m.model, 1, GL_FALSE, &model_f[0][0]);
@@ -163,19 +164,24 @@ void draw_shadow_batches(const ShadowMaps& m, gl::StateCache& state, const Shado
     }
 }
 
-gl::PassState shadow_pass_state(bool mirrored) {
+// Which sides of a prop a map holds. A shadow ray meets only the front faces
+// of surfaces, seen from the point it starts at (layout-format.md,
+// "Lights"): of a model's triangles, those turned away from the light. Seen
+// from L' they wind clockwise (anticlockwise in a leg mirrored an odd number
+// of times), and the others are culled; a double-sided material's back is a
+// triangle of its own (scene/box_mesh.cpp), so it blocks from either side. A
+// box prop is closed, so any ray through it meets one face of each side: it
+// is drawn whole, and the map holds its side facing the light, whose
+// distance leaves no gap where the box stands on the floor (its far side
+// would: a floor point just past the far side's foot is within the lookup's
+// bias of it, and was lit in mirror_lamp's stool shadow).
+gl::PassState shadow_pass_state(bool box, bool mirrored) {
     gl::PassState p;
     p.depth_test = true;
     p.depth_write = true;
     p.depth_func = GL_GREATER;  // reversed-Z
     p.write_ids = false;
-    // A shadow ray meets only the front faces of surfaces, seen from the
-    // point it starts at (layout-format.md, "Lights"): the faces turned away
-    // from the light. Seen from L' those wind clockwise, or anticlockwise in
-    // a leg mirrored an odd number of times; the faces that face the light
-    // are culled. A double-sided material's back is a triangle of its own
-    // (scene/box_mesh.cpp), so it blocks from either side.
-    p.cull_back_faces = true;
+    p.cull_back_faces = !box;
     p.front_clockwise = !mirrored;
     p.clip_distances = 4;
     return p;
@@ -185,15 +191,23 @@ gl::PassState shadow_pass_state(bool mirrored) {
 void draw_shadow_leg(const ShadowMaps& m, gl::StateCache& state, const ShadowSources& s,
                      const std::vector<int>& instances, const ShadowLeg& leg) {
     const auto room = static_cast<size_t>(leg.room);
-    state.apply(shadow_pass_state(glm::determinant(math::dmat3(leg.from_room)) < 0.0), 0);
+    const bool mirrored = glm::determinant(math::dmat3(leg.from_room)) < 0.0;
     set_shadow_planes(m, leg, nullptr);
-    draw_shadow_batches(m, state, s, (*s.objects)[room].batches,
-                        leg.from_room * glm::translate(math::dmat4(1.0), (*s.origins)[room].origin));
+    const scene::CellObjects& objects = (*s.objects)[room];
+    const math::dmat4 room_model = leg.from_room * glm::translate(math::dmat4(1.0), (*s.origins)[room].origin);
+    for (const scene::CellObject& object : objects.objects) {
+        state.apply(shadow_pass_state(object.box_vertex >= 0, mirrored), 0);
+        draw_shadow_batches(
+            m, state, s,
+            std::span<const scene::DrawBatch>(objects.batches).subspan(object.first_batch, object.batch_count),
+            room_model);
+    }
     for (const int k : instances) {
         const walk::ObjectInstance& inst = (*s.instances)[static_cast<size_t>(k)];
         const scene::ObjectMesh& mesh =
             (*s.object_meshes)[static_cast<size_t>((*s.instance_mesh)[static_cast<size_t>(k)])];
         set_shadow_planes(m, leg, &inst);
+        state.apply(shadow_pass_state(mesh.box, mirrored), 0);
         draw_shadow_batches(m, state, s, mesh.batches,
                             leg.from_room * inst.to_cell * glm::translate(math::dmat4(1.0), mesh.origin));
     }
@@ -263,7 +277,7 @@ Result<int> update_shadow_maps(ShadowMaps& m, gl::StateCache& state, const Shado
         if (Result<void> made = ensure_shadow_program(m); !made) return Error{made.error()};
         const int size = shadow_map_size_for(frame.shadow_map_size, static_cast<std::size_t>(count));
         ensure_shadow_storage(m, state, size, count);
-        state.apply(shadow_pass_state(false), 0);  // the clears obey its write masks; each leg sets its winding
+        state.apply(shadow_pass_state(true, false), 0);  // the clears obey its write masks; each prop sets its sides
         state.no_scissor();
         state.viewport({0, 0, size, size});
         state.clip_control(GL_ZERO_TO_ONE);
