@@ -210,3 +210,17 @@ def test_gil_is_released(method):
     # Held, it is 0 every time; released, the other thread may still not be
     # scheduled on a busy machine during some short frame.
     assert max(during) > 10, during
+
+
+def test_the_door_rules_of_issue_36():
+    """layout-format.md, "The portal box" and the coplanar ties, through the
+    module: a head that walked round the built-in default's door sees the
+    hall; an eye across the plane looking down sees the annex's floor in the
+    box, as the tracer does."""
+    renderer = impossible.Renderer(impossible.builtin(), size=(80, 60))
+    for method in (renderer.render, renderer.trace):
+        behind = method(pose=(0, 1.6, -0.1, 0, 0, 0), room="hall")
+        assert (behind["ids"] == 1).all()
+    across = [method(pose=(0, 1.6, 0.02, -90, -60, 0), room="hall")["ids"] for method in (renderer.render, renderer.trace)]
+    assert (across[0] == 2).sum() > 1000 and (across[1] == 2).sum() > 1000
+    assert (across[0] != across[1]).sum() <= 2
