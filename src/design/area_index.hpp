@@ -30,9 +30,17 @@ public:
 
     bool box_inside(const glm::dvec2& lo, const glm::dvec2& hi) const;
 
+    // The distance from `p` to the play area's boundary, positive inside and
+    // negative outside (for design/widest_spot.hpp). Through the grid, the
+    // edges of the cells in rings around p's until no edge farther out can
+    // be nearer; the side from the nearest edge, or at a corner from both of
+    // its edges.
+    double signed_distance(const glm::dvec2& p) const;
+
 private:
     enum : std::uint8_t { kOutside, kInside, kCrossed };
     math::Polygon2 area_;
+    double turn_ = 1.0;  // 1 for corners anticlockwise, -1 clockwise
     bool indexed_ = false;
     glm::dvec2 origin_{0.0};
     double cell_ = 1.0;
@@ -43,6 +51,8 @@ private:
 
     void build();
     bool indexed_box_inside(const glm::dvec2& lo, const glm::dvec2& hi) const;
+    // The edge nearest to p (and its parameter there, 0..1).
+    void nearest_edge(const glm::dvec2& p, std::uint32_t& edge, double& t) const;
 };
 
 }  // namespace impossible::design
