@@ -132,6 +132,7 @@ bool AreaIndex::indexed_box_inside(const glm::dvec2& lo, const glm::dvec2& hi) c
             const std::size_t c = static_cast<std::size_t>(cz) * nx_ + cx;
             if (state_[c] == kCrossed) {
                 for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
+                    ++edges_tested_;
                     const std::uint32_t e = edges_[k];
                     if (segment_meets_box(area_[e], area_[(e + 1) % area_.size()], s_lo, s_hi)) return false;
                 }

@@ -30,6 +30,10 @@ public:
 
     bool box_inside(const glm::dvec2& lo, const glm::dvec2& hi) const;
 
+    // The edges box_inside has tested against a box so far, through the
+    // grid: the work its callers bound (generate_boxes.cpp, kMaxBoxWork).
+    std::uint64_t edges_tested() const { return edges_tested_; }
+
     // The distance from `p` to the play area's boundary, positive inside and
     // negative outside (for design/widest_spot.hpp). Through the grid, the
     // edges of the cells in rings around p's until no edge farther out can
@@ -48,6 +52,7 @@ private:
     std::vector<std::uint8_t> state_;   // per cell
     std::vector<std::uint32_t> start_;  // per cell + 1: where its edges begin in edges_
     std::vector<std::uint32_t> edges_;  // edge i runs from corner i to corner i + 1
+    mutable std::uint64_t edges_tested_ = 0;
 
     void build();
     bool indexed_box_inside(const glm::dvec2& lo, const glm::dvec2& hi) const;
