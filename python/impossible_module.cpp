@@ -293,13 +293,16 @@ py::dict trace_frame(const api::Layout& layout, const api::View& view, int threa
     return frame_dict(value_or_raise(std::move(frame)), false);
 }
 
-// A headless rasteriser with its own GL context, used on the thread that
-// made it (the context is current there).
+// A headless rasteriser, drawing in the GL context that the renderers of
+// its thread share (the context is current there), until closed: close()
+// (or leaving a `with` block) frees its GL objects at once, as deleting the
+// last reference does.
 class PyRenderer {
 public:
     PyRenderer(const api::Layout& layout, ViewBase base, const std::string& backend, const api::RenderOptions& options)
         : layout_(layout),
           renderer_(value_or_raise(api::Renderer::headless(layout, backend_of(backend)))),
+          gl_renderer_(renderer_->gl_renderer()),
           base_(base),
           options_(options),
           thread_(std::this_thread::get_id()) {}
@@ -307,11 +310,11 @@ public:
     py::dict render(py::handle pose, py::handle room, py::handle hands, double time, int max_depth,
                     py::handle light_depth) {
         const api::View view = view_of(base_, pose, room, hands, time, max_depth, light_depth);
-        if (std::this_thread::get_id() != thread_)
-            raise(PyExc_RuntimeError, "a Renderer draws only on the thread that made it");
+        on_its_thread("draws");
+        if (!renderer_) raise(PyExc_ValueError, "render: the renderer is closed");
         api::Expected<api::Frame> frame = [&] {
             py::gil_scoped_release unlocked;
-            return renderer_.render(view, options_);
+            return renderer_->render(view, options_);
         }();
         return frame_dict(value_or_raise(std::move(frame)), true);
     }
@@ -321,16 +324,31 @@ public:
         return trace_frame(layout_, view_of(base_, pose, room, hands, time, max_depth, light_depth), threads);
     }
 
+    // Frees the GL objects now, in the context they were made in; again:
+    // nothing.
+    void close() {
+        if (!renderer_) return;
+        on_its_thread("is closed");
+        renderer_.reset();
+    }
+
     const api::Layout& layout() const { return layout_; }
     ViewBase base() const { return base_; }
-    std::string gl_renderer() const { return renderer_.gl_renderer(); }
+    const std::string& gl_renderer() const { return gl_renderer_; }
+    bool closed() const { return !renderer_; }
 
 private:
     api::Layout layout_;
-    api::Renderer renderer_;
+    std::optional<api::Renderer> renderer_;
+    std::string gl_renderer_;
     ViewBase base_;
     api::RenderOptions options_;
     std::thread::id thread_;
+
+    void on_its_thread(const char* what) const {
+        if (std::this_thread::get_id() != thread_)
+            raise(PyExc_RuntimeError, std::string("a Renderer ") + what + " only on the thread that made it");
+    }
 };
 
 py::dict step_dict(std::size_t frame, const api::WalkStep& s) {
@@ -477,7 +495,7 @@ void bind_layout(py::module_& m) {
 }
 
 void bind_renderer(py::module_& m) {
-    py::class_<PyRenderer>(m, "Renderer", "The OpenGL rasteriser for one layout, in a headless context of its own")
+    py::class_<PyRenderer>(m, "Renderer", "The OpenGL rasteriser for one layout, in its thread's headless context")
         .def(py::init([](const api::Layout& layout, py::handle size, int samples, const std::string& backend,
                          py::handle ipd, py::handle fov, py::handle fov_angles, py::handle visible_area, py::handle hmd,
                          int max_portal_passes, const std::string& stereo, const std::string& clip,
@@ -502,6 +520,10 @@ void bind_renderer(py::module_& m) {
         .def("trace", &PyRenderer::trace, py::arg("pose") = py::none(), py::arg("room") = py::none(),
              py::arg("hands") = py::none(), py::arg("time") = 0.0, py::arg("max_depth") = 8, py::arg("threads") = 0,
              py::arg("light_depth") = py::none())
+        .def("close", &PyRenderer::close, "Frees its GL objects now; render() raises ValueError after")
+        .def("__enter__", [](py::object self) { return self; })
+        .def("__exit__", [](PyRenderer& r, const py::args&) { r.close(); })
+        .def_property_readonly("closed", &PyRenderer::closed)
         .def_property_readonly("layout", &PyRenderer::layout)
         .def_property_readonly("size", [](const PyRenderer& r) { return r.base().size; })
         .def_property_readonly("gl_renderer", &PyRenderer::gl_renderer);

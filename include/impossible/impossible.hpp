@@ -219,7 +219,10 @@ struct RenderOptions {
 // The OpenGL 4.5 rasteriser for one layout.
 class Renderer {
 public:
-    // Creates its own headless context (EGL surfaceless or OSMesa).
+    // Draws in a headless context (EGL surfaceless or OSMesa) that the
+    // headless renderers made on this thread share, one per backend; they
+    // keep no more frame buffers between frames together than one frame may
+    // use (docs/bounded-work.md, "Other bounds").
     static Expected<Renderer> headless(const Layout& layout, Backend backend = Backend::Any);
     // Draws in the caller's context, current on this thread now and at every
     // call; the caller's GL state is saved nowhere: the renderer sets what it

@@ -1,8 +1,10 @@
 // impossible::api::Renderer: the OpenGL rasteriser behind the public API, in
-// a headless context of its own or in the caller's.
+// the headless context its thread's renderers share or in the caller's.
+#include <algorithm>
 #include <optional>
 
 #include "api/api_data.hpp"
+#include "api/headless_share.hpp"
 #include "gl/context.hpp"
 #include "gl/gl.hpp"
 #include "gl/state.hpp"
@@ -13,30 +15,55 @@ namespace impossible::api {
 
 struct RendererParts {
     explicit RendererParts(const Layout& l) : layout(l) {}
-    // The renderer frees its GL objects in its own context, made current
-    // again (another renderer's may be).
+    // The renderer frees its GL objects in its context, made current again
+    // (another renderer's may be), and leaves the thread's share first.
     ~RendererParts() {
-        if (context) (void)gl::make_current(*context);
+        if (share) {
+            (void)gl::make_current(share->context());
+            if (renderer) share->leave(*renderer);
+        }
         renderer.reset();
+        if (!share) return;
+        share.reset();  // the context too, with the thread's last renderer
+        return_free_memory();
     }
     RendererParts(const RendererParts&) = delete;
     RendererParts& operator=(const RendererParts&) = delete;
     Layout layout;                                 // for resolving each view's room
-    std::optional<gl::Context> context;            // headless: the renderer's own
+    std::shared_ptr<HeadlessShare> share;          // headless: the thread's context and renderers
     std::unique_ptr<gl::StateCache> caller_state;  // in the caller's context
     std::optional<render::Renderer> renderer;
     GetProcAddress callers_loader = nullptr;  // in the caller's context: its loader
 
-    gl::StateCache& state() { return context ? context->state() : *caller_state; }
+    gl::StateCache& state() { return share ? share->context().state() : *caller_state; }
 
-    // Before each frame: the renderer's own context current on this thread
-    // (another renderer's may be), or the caller's state forgotten (the
-    // caller may have changed any of it since the last frame).
+    // Before each frame: the shared context current on this thread (another
+    // may be), or the caller's state forgotten (the caller may have changed
+    // any of it since the last frame).
     Result<void> prepare() {
-        if (context) return gl::make_current(*context);
+        if (share) return gl::make_current(share->context());
         state().invalidate();
         return gl::load_functions(callers_loader);
     }
+};
+
+// Around a frame of a headless renderer: the bound on what the thread's
+// renderers keep together (headless_share.hpp).
+class FrameInShare {
+public:
+    FrameInShare(RendererParts& parts, const render::FrameDesc& frame) : parts_(parts) {
+        if (parts_.share)
+            parts_.share->before_frame(*parts_.renderer,
+                                       2LL * frame.eye_width * frame.eye_height * std::max(1, frame.samples));
+    }
+    ~FrameInShare() {
+        if (parts_.share) parts_.share->after_frame(*parts_.renderer);
+    }
+    FrameInShare(const FrameInShare&) = delete;
+    FrameInShare& operator=(const FrameInShare&) = delete;
+
+private:
+    RendererParts& parts_;
 };
 
 namespace {
@@ -71,10 +98,12 @@ Expected<Renderer> Renderer::headless(const Layout& layout, Backend backend) {
         const std::optional<gl::Backend> requested =
             backend == Backend::Any ? std::nullopt
                                     : std::optional(backend == Backend::Egl ? gl::Backend::Egl : gl::Backend::OSMesa);
-        Result<gl::Context> context = gl::create_context_with_fallback(requested);
-        if (!context) return Error{"no OpenGL 4.5 context: " + context.error()};
-        parts->context.emplace(std::move(*context));
+        Result<std::shared_ptr<HeadlessShare>> share = HeadlessShare::of_this_thread(requested);
+        if (!share) return Error{"no OpenGL 4.5 context: " + share.error()};
+        parts->share = std::move(*share);
+        if (Result<void> current = gl::make_current(parts->share->context()); !current) return Error{current.error()};
         if (Expected<void> built = build(*parts, layout); !built) return built.error();
+        parts->share->join(*parts->renderer);
         return Renderer(std::move(parts));
     });
 }
@@ -95,6 +124,7 @@ Expected<Frame> Renderer::render(const View& view, const RenderOptions& options)
         Result<render::FrameDesc> frame = frame_desc(parts_->layout.data().layout, view, options);
         if (!frame) return Error{frame.error()};
         if (Result<void> ready = parts_->prepare(); !ready) return Error{ready.error()};
+        const FrameInShare in_share(*parts_, *frame);
         Result<render::RenderedFrame> drawn = parts_->renderer->render(*frame);
         if (!drawn) return library_error(drawn.error());
         Frame out;
@@ -112,6 +142,7 @@ Expected<FrameStats> Renderer::draw_to(const View& view, unsigned framebuffer, c
         Result<render::FrameDesc> frame = frame_desc(parts_->layout.data().layout, view, options);
         if (!frame) return Error{frame.error()};
         if (Result<void> ready = parts_->prepare(); !ready) return Error{ready.error()};
+        const FrameInShare in_share(*parts_, *frame);
         render::FrameStats stats;
         if (Result<void> drawn = parts_->renderer->draw(*frame, &stats); !drawn) return library_error(drawn.error());
         const render::Target& target = parts_->renderer->target();
@@ -125,7 +156,7 @@ Expected<FrameStats> Renderer::draw_to(const View& view, unsigned framebuffer, c
 }
 
 std::string Renderer::gl_renderer() const {
-    if (parts_->context) return parts_->context->renderer;
+    if (parts_->share) return parts_->share->context().renderer;
     const GLubyte* name = glGetString(GL_RENDERER);
     return name != nullptr ? reinterpret_cast<const char*>(name) : "";
 }

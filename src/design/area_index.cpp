@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "design/scanline.hpp"
@@ -28,6 +29,15 @@ bool segment_meets_box(glm::dvec2 a, glm::dvec2 b, glm::dvec2 lo, glm::dvec2 hi)
     return true;
 }
 
+// Where on segment ab the point nearest to p lies (0 at a, 1 at b).
+double nearest_on_segment(glm::dvec2 a, glm::dvec2 b, glm::dvec2 p) {
+    const glm::dvec2 d = b - a;
+    const double length2 = glm::dot(d, d);
+    return length2 > 0.0 ? std::clamp(glm::dot(p - a, d) / length2, 0.0, 1.0) : 0.0;
+}
+
+double cross(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
+
 // Even-odd crossings of a ray from p towards +x.
 bool inside_by_crossings(const math::Polygon2& poly, glm::dvec2 p) {
     bool inside = false;
@@ -41,6 +51,7 @@ bool inside_by_crossings(const math::Polygon2& poly, glm::dvec2 p) {
 }  // namespace
 
 AreaIndex::AreaIndex(math::Polygon2 area, bool force_index) : area_(std::move(area)) {
+    turn_ = math::signed_area(area_) < 0.0 ? -1.0 : 1.0;
     indexed_ = area_.size() >= 3 && (force_index || area_.size() > kPlainCorners);
     if (indexed_) build();
 }
@@ -121,6 +132,7 @@ bool AreaIndex::indexed_box_inside(const glm::dvec2& lo, const glm::dvec2& hi) c
             const std::size_t c = static_cast<std::size_t>(cz) * nx_ + cx;
             if (state_[c] == kCrossed) {
                 for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
+                    ++edges_tested_;
                     const std::uint32_t e = edges_[k];
                     if (segment_meets_box(area_[e], area_[(e + 1) % area_.size()], s_lo, s_hi)) return false;
                 }
@@ -133,6 +145,62 @@ bool AreaIndex::indexed_box_inside(const glm::dvec2& lo, const glm::dvec2& hi) c
         }
     // No edge meets the shrunk box: it lies wholly inside or wholly outside.
     return seen_inside || inside_by_crossings(area_, 0.5 * (lo + hi));
+}
+
+void AreaIndex::nearest_edge(const glm::dvec2& p, std::uint32_t& edge, double& t) const {
+    const std::size_t n = area_.size();
+    double best = std::numeric_limits<double>::infinity();
+    auto consider = [&](std::uint32_t e) {
+        const glm::dvec2 a = area_[e], b = area_[(e + 1) % n];
+        const double u = nearest_on_segment(a, b, p);
+        const glm::dvec2 q = a + u * (b - a);
+        const double d2 = glm::dot(p - q, p - q);
+        if (d2 < best) best = d2, edge = e, t = u;
+    };
+    if (!indexed_) {
+        for (std::uint32_t e = 0; e < n; ++e) consider(e);
+        return;
+    }
+    const int cx = std::clamp(static_cast<int>(std::floor((p.x - origin_.x) / cell_)), 0, nx_ - 1);
+    const int cz = std::clamp(static_cast<int>(std::floor((p.y - origin_.y) / cell_)), 0, nz_ - 1);
+    for (int k = 0; k <= std::max(nx_, nz_); ++k) {
+        for (int z = cz - k; z <= cz + k; ++z)
+            for (int x = cx - k; x <= cx + k; ++x) {
+                if (z < 0 || z >= nz_ || x < 0 || x >= nx_ || (std::abs(z - cz) != k && std::abs(x - cx) != k))
+                    continue;
+                const std::size_t c = static_cast<std::size_t>(z) * nx_ + x;
+                for (std::uint32_t i = start_[c]; i < start_[c + 1]; ++i) consider(edges_[i]);
+            }
+        // An edge not met yet passes only through cells outside the block
+        // of rings 0..k, which p lies in (or, outside the grid, beyond).
+        const glm::dvec2 block_lo = origin_ + glm::dvec2(cx - k, cz - k) * cell_,
+                         block_hi = origin_ + glm::dvec2(cx + k + 1, cz + k + 1) * cell_;
+        const double out =
+            std::max(0.0, std::min({p.x - block_lo.x, p.y - block_lo.y, block_hi.x - p.x, block_hi.y - p.y}));
+        if (best <= out * out) return;
+    }
+}
+
+double AreaIndex::signed_distance(const glm::dvec2& p) const {
+    const std::size_t n = area_.size();
+    std::uint32_t e = 0;
+    double t = 0.0;
+    nearest_edge(p, e, t);
+    const glm::dvec2 a = area_[e], b = area_[(e + 1) % n];
+    const glm::dvec2 q = a + t * (b - a);
+    const double d = glm::length(p - q);
+    bool inside = false;
+    if (t > 0.0 && t < 1.0) {
+        inside = turn_ * cross(b - a, p - a) > 0.0;  // the interior is on the edge's left (anticlockwise)
+    } else {
+        // Nearest to a corner: inside a convex corner means on the inner
+        // side of both its edges, inside a reflex one of either.
+        const std::size_t v = t <= 0.0 ? e : (e + 1) % n;
+        const glm::dvec2 u = area_[(v + n - 1) % n], c = area_[v], w = area_[(v + 1) % n];
+        const bool left_in = turn_ * cross(c - u, p - u) > 0.0, left_out = turn_ * cross(w - c, p - c) > 0.0;
+        inside = turn_ * cross(c - u, w - c) > 0.0 ? left_in && left_out : left_in || left_out;
+    }
+    return inside ? d : -d;
 }
 
 }  // namespace impossible::design

@@ -30,9 +30,21 @@ public:
 
     bool box_inside(const glm::dvec2& lo, const glm::dvec2& hi) const;
 
+    // The edges box_inside has tested against a box so far, through the
+    // grid: the work its callers bound (generate_boxes.cpp, kMaxBoxWork).
+    std::uint64_t edges_tested() const { return edges_tested_; }
+
+    // The distance from `p` to the play area's boundary, positive inside and
+    // negative outside (for design/widest_spot.hpp). Through the grid, the
+    // edges of the cells in rings around p's until no edge farther out can
+    // be nearer; the side from the nearest edge, or at a corner from both of
+    // its edges.
+    double signed_distance(const glm::dvec2& p) const;
+
 private:
     enum : std::uint8_t { kOutside, kInside, kCrossed };
     math::Polygon2 area_;
+    double turn_ = 1.0;  // 1 for corners anticlockwise, -1 clockwise
     bool indexed_ = false;
     glm::dvec2 origin_{0.0};
     double cell_ = 1.0;
@@ -40,9 +52,12 @@ private:
     std::vector<std::uint8_t> state_;   // per cell
     std::vector<std::uint32_t> start_;  // per cell + 1: where its edges begin in edges_
     std::vector<std::uint32_t> edges_;  // edge i runs from corner i to corner i + 1
+    mutable std::uint64_t edges_tested_ = 0;
 
     void build();
     bool indexed_box_inside(const glm::dvec2& lo, const glm::dvec2& hi) const;
+    // The edge nearest to p (and its parameter there, 0..1).
+    void nearest_edge(const glm::dvec2& p, std::uint32_t& edge, double& t) const;
 };
 
 }  // namespace impossible::design

@@ -9,6 +9,7 @@
 #include "base/format.hpp"
 #include "design/pack_search.hpp"
 #include "design/splitmix.hpp"
+#include "design/widest_spot.hpp"
 #include "layout/layout.hpp"
 #include "layout/limits.hpp"
 
@@ -21,9 +22,19 @@ std::string metres(double v) {
     return text;
 }
 
+// Where the play area is widest, for the messages of a play area where the
+// rooms do not fit: what is the obstacle there, however large the floor
+// (a star 1000 m across whose core is 1.4 m wide).
+std::string widest_spot_text(const math::Polygon2& area, std::optional<WidestSpot>& spot) {
+    if (!spot) spot = widest_spot(area, AreaIndex(area));
+    auto cm = [](double v) { return format_number(std::round(v * 100) / 100); };  // to the precision
+    return std::string(spot->complete ? "its widest spot is" : "the widest spot found is") + " a circle " +
+           cm(2 * spot->radius) + " m across at (" + cm(spot->centre.x) + ", " + cm(spot->centre.y) + ")";
+}
+
 // Why no room fits, when none does: the play area is narrower than a room
 // (`packed`: whether N rooms were tried and did not fit).
-std::optional<std::string> too_narrow(const GenerateOptions& o, bool packed) {
+std::optional<std::string> too_narrow(const GenerateOptions& o, bool packed, std::optional<WidestSpot>& spot) {
     glm::dvec2 lo = o.play_area[0], hi = lo;
     for (const glm::dvec2& p : o.play_area) lo = glm::min(lo, p), hi = glm::max(hi, p);
     const std::string size = metres(hi.x - lo.x) + " x " + metres(hi.y - lo.y) + " m";
@@ -33,8 +44,10 @@ std::optional<std::string> too_narrow(const GenerateOptions& o, bool packed) {
     if (!packed) return std::nullopt;
     GenerateOptions one = o;
     one.rooms = 1;
-    if (o.rooms > 1 && (pack_rooms({o.play_area, 1, o.seed, std::nullopt}) || grow_boxes(one))) return std::nullopt;
-    return "no room " + metres(kRoomMinWidth) + " m wide fits in this play area (" + size + " across)";
+    if (o.rooms > 1 && (pack_rooms({o.play_area, 1, o.seed, std::nullopt}) || grow_boxes(one, spot)))
+        return std::nullopt;
+    return "no room " + metres(kRoomMinWidth) + " m wide fits in this play area (" + size + " across; " +
+           widest_spot_text(o.play_area, spot) + ")";
 }
 
 // The loader's limits on a play area (layout/limits.hpp): what a layout's
@@ -74,15 +87,17 @@ Result<Generated> generate(const GenerateOptions& o) {
     if (o.rooms < 1 || o.rooms > kMaxGeneratedRooms)
         return Error{"--rooms must be 1.." + std::to_string(kMaxGeneratedRooms)};
     if (const auto problem = play_area_problem(o.play_area)) return Error{*problem};
-    if (const auto why = too_narrow(o, false)) return Error{*why};
+    std::optional<WidestSpot> spot;
+    if (const auto why = too_narrow(o, false, spot)) return Error{*why};
     std::optional<Packing> p = pack_rooms({o.play_area, o.rooms, o.seed, o.max_overlap});
-    if (!p) p = grow_boxes(o);
+    if (!p) p = grow_boxes(o, spot);
     if (!p)
-        if (const auto why = too_narrow(o, true)) return Error{*why};
+        if (const auto why = too_narrow(o, true, spot)) return Error{*why};
     if (!p)
         return Error{"could not fit " + std::to_string(o.rooms) + " rooms of at least " + metres(kRoomMinWidth) +
-                     " m, joined by doors, in this play area within the overlap limit (try fewer rooms, a larger "
-                     "floor or a higher --max-overlap)"};
+                     " m, joined by doors, in this play area within the overlap limit (" +
+                     widest_spot_text(o.play_area, spot) +
+                     "; try fewer rooms, a larger floor or a higher --max-overlap)"};
     SplitMix rng{o.seed * 0xD1B54A32D192ED03ull + 7};
     std::vector<int> heights;
     for (std::size_t i = 0; i < p->rooms.size(); ++i) heights.push_back(rng.uniform(26, 32));

@@ -15,7 +15,9 @@
 // in the other (or in its wall where the two only touch), with room to walk
 // past it. Where the packer finds nothing (a play area of more than
 // kPackMaxCorners corners, or rooms that do not fit its lattices), rooms are
-// grown out of each other as boxes on a 0.1 m grid (generate_boxes.cpp).
+// grown out of each other as boxes on a 0.1 m grid (generate_boxes.cpp), the
+// first placed at random or, where none fits so, on the play area's widest
+// spot (widest_spot.hpp), which the messages name when the rooms do not fit.
 // Each room gets its own hue, a checker on every other room, and one or two
 // props of its own shape in corners away from its doors.
 //
@@ -28,6 +30,7 @@
 #include <string>
 
 #include "base/result.hpp"
+#include "design/widest_spot.hpp"
 #include "math/polygon.hpp"
 
 namespace impossible::design {
@@ -62,7 +65,14 @@ Result<Generated> generate(const GenerateOptions& options);
 Result<std::string> generate_layout(const GenerateOptions& options);
 
 struct Packing;
-// In generate_boxes.cpp: rooms grown out of each other as boxes.
-std::optional<Packing> grow_boxes(const GenerateOptions& options);
+// In generate_boxes.cpp: rooms grown out of each other as boxes, up to 200
+// restarts, and no restart once the boxes' tests against a play area of
+// many corners have tested kMaxBoxWork edges (AreaIndex::edges_tested): a
+// 10,000-corner star roomy only in its 4 m core tests about 10^7 edges a
+// restart, and took 23 s for 200. `spot` is the play area's widest spot,
+// found here when it is needed and not given (a search of up to 0.5 s, done
+// once for all the calls of one generate).
+inline constexpr std::uint64_t kMaxBoxWork = 200'000'000;
+std::optional<Packing> grow_boxes(const GenerateOptions& options, std::optional<WidestSpot>& spot);
 
 }  // namespace impossible::design

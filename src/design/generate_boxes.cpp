@@ -6,7 +6,9 @@
 // The first room is placed at random; each further room B grows out of a
 // wall of an existing room A: a door in A's wall, and a coincident door in B
 // facing the other way. B reaches at least kMinReach beyond A's wall and may
-// reach back into A: that part is the overlap.
+// reach back into A: that part is the overlap. Where no first room placed at
+// random fits (a play area roomy only in one narrow part), rooms centred on
+// the play area's widest spot are tried (widest_spot.hpp).
 #include <algorithm>
 #include <cmath>
 
@@ -15,6 +17,7 @@
 #include "design/overlap.hpp"
 #include "design/pack_search.hpp"
 #include "design/splitmix.hpp"
+#include "design/widest_spot.hpp"
 
 namespace impossible::design {
 namespace {
@@ -41,6 +44,7 @@ struct Draft {
 struct Floor {
     const GenerateOptions& o;
     AreaIndex area;
+    std::optional<WidestSpot>& spot;  // found when first needed
 };
 
 bool fits(const Floor& f, const Draft& d, const Box& b) {
@@ -86,13 +90,33 @@ bool grow(const Floor& f, Draft& d, SplitMix& rng, int max_side) {
     return true;
 }
 
+// The first room centred on the widest spot, each side 1.5 m up to the
+// circle's width (the circle holds the room when its diagonal is shorter,
+// and the play area may hold more): for a first room that the tries at
+// random across the bounding box did not place. Returns the longest side
+// the rooms grown from it are tried at: that width, as the play area is
+// roomy only around the spot.
+int place_at_widest_spot(const Floor& f, Draft& d, SplitMix& rng, int max_side) {
+    if (!f.spot) f.spot = widest_spot(f.o.play_area, f.area);
+    const int most = std::min(max_side, static_cast<int>(std::floor(f.spot->radius * 20)));
+    if (most < kMinRoomSide) return max_side;
+    const int cx = static_cast<int>(std::lround(f.spot->centre.x * 10)),
+              cz = static_cast<int>(std::lround(f.spot->centre.y * 10));
+    for (int tries = 0; tries < 200 && d.rooms.empty(); ++tries) {
+        const int w = rng.uniform(kMinRoomSide, most), depth = rng.uniform(kMinRoomSide, most);
+        const Box b{cx - w / 2, cz - depth / 2, cx - w / 2 + w, cz - depth / 2 + depth};
+        if (fits(f, d, b)) d.rooms.push_back(b);
+    }
+    return most;
+}
+
 std::optional<Draft> attempt(const Floor& f, SplitMix& rng) {
     glm::dvec2 lo = f.o.play_area[0], hi = lo;
     for (const glm::dvec2& p : f.o.play_area) lo = glm::min(lo, p), hi = glm::max(hi, p);
     const int bx0 = static_cast<int>(std::ceil(lo.x * 10 - 1e-9)), bz0 = static_cast<int>(std::ceil(lo.y * 10 - 1e-9));
     const int bx1 = static_cast<int>(std::floor(hi.x * 10 + 1e-9)),
               bz1 = static_cast<int>(std::floor(hi.y * 10 + 1e-9));
-    const int max_side = std::min(kMaxRoomSide, std::max(bx1 - bx0, bz1 - bz0));
+    int max_side = std::min(kMaxRoomSide, std::max(bx1 - bx0, bz1 - bz0));
     Draft d;
     for (int tries = 0; tries < 2000 && d.rooms.empty(); ++tries) {
         Box b;
@@ -102,6 +126,7 @@ std::optional<Draft> attempt(const Floor& f, SplitMix& rng) {
         b.x1 = b.x0 + w, b.z1 = b.z0 + depth;
         if (w <= bx1 - bx0 && depth <= bz1 - bz0 && fits(f, d, b)) d.rooms.push_back(b);
     }
+    if (d.rooms.empty()) max_side = place_at_widest_spot(f, d, rng, max_side);
     if (d.rooms.empty()) return std::nullopt;
     for (int tries = 0; tries < 4000 && static_cast<int>(d.rooms.size()) < f.o.rooms; ++tries)
         grow(f, d, rng, max_side);
@@ -128,10 +153,10 @@ Packing packing_of(const Draft& d) {
 
 }  // namespace
 
-std::optional<Packing> grow_boxes(const GenerateOptions& o) {
+std::optional<Packing> grow_boxes(const GenerateOptions& o, std::optional<WidestSpot>& spot) {
     SplitMix rng{o.seed * 0x2545F4914F6CDD1Dull + 1};
-    const Floor floor{o, AreaIndex(o.play_area)};
-    for (int restart = 0; restart < 200; ++restart)
+    const Floor floor{o, AreaIndex(o.play_area), spot};
+    for (int restart = 0; restart < 200 && floor.area.edges_tested() < kMaxBoxWork; ++restart)
         if (const std::optional<Draft> d = attempt(floor, rng)) return packing_of(*d);
     return std::nullopt;
 }

@@ -12,6 +12,7 @@
 // portal links and the portals' plain data.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 
 #include "base/result.hpp"
@@ -52,6 +53,21 @@ public:
     // into when multisampled (e.g. for a window to show or read back); empty
     // before the first frame.
     const Target& target() const;
+
+    // The frame buffers it keeps between frames, remade by a frame that
+    // finds them gone (kept_buffers.cpp): the samples of its targets (the
+    // frame's, the multisampled ones, the portal textures) and the bytes of
+    // its shadow maps.
+    struct Kept {
+        std::int64_t target_samples = 0;
+        std::int64_t shadow_map_bytes = 0;
+    };
+    Kept kept() const;
+    // Free them, between frames, in the renderer's context (current): the
+    // next frame makes them again and draws the same pixels; the shadow
+    // maps are drawn again.
+    void release_targets();
+    void release_shadow_maps();
 
 private:
     explicit Renderer(std::unique_ptr<RendererParts> parts);

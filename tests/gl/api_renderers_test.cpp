@@ -1,6 +1,8 @@
 // Several renderers of the public API in one program, as the Python module
-// makes one for each of its Renderer objects: each draws in its own context,
-// whichever was made or used last, and dropping one leaves the others working.
+// makes one for each of its Renderer objects: the headless renderers of a
+// thread share one context per backend (api/headless_share.hpp), each draws
+// its own frame whichever drew last, and dropping one leaves the others
+// working.
 #include <gtest/gtest.h>
 
 #include <optional>
@@ -33,7 +35,7 @@ void api_renderers_expect_same(const api::Frame& got, const api::Frame& want, co
     EXPECT_TRUE(got.ids == want.ids) << which;
 }
 
-TEST(ApiRenderers, EachDrawsInItsOwnContext) {
+TEST(ApiRenderers, EachDrawsItsOwnFrameInTheSharedContexts) {
     const api::Layout first_layout = api::Layout::builtin();
     api::Expected<api::Layout> loaded = api::Layout::load(IMPOSSIBLE_SOURCE_DIR "/layouts/mirror_hall.json");
     ASSERT_TRUE(loaded) << loaded.error().message;

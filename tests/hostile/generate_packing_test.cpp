@@ -4,11 +4,25 @@
 // seed writes the same bytes, the layout validates and its tour visits every
 // room, and a floor too narrow for any room is refused by name.
 #include <cmath>
+#include <cstdio>
 
 #include "hostile/hostile_util.hpp"
 
 namespace impossible::hostile {
 namespace {
+
+// A star of `n` corners around the origin, alternately `outer` and `inner`
+// metres from it, as a play-area file's polygon.
+std::string packing_star(int n, double outer, double inner) {
+    std::string out = "[";
+    char corner[64];
+    for (int k = 0; k < n; ++k) {
+        const double a = 2.0 * 3.14159265358979323846 * k / n, r = k % 2 ? inner : outer;
+        std::snprintf(corner, sizeof corner, "%s[%.6f,%.6f]", k ? "," : "", r * std::cos(a), r * std::sin(a));
+        out += corner;
+    }
+    return out + "]";
+}
 
 TEST_F(Hostile, GenerateSixRoomsOnFourByFourReportsTheRatio) {
     const Outcome g = run("$BIN generate --play-area 4x4 --rooms 6 --seed 7 --out g.json");
@@ -70,6 +84,42 @@ TEST_F(Hostile, GenerateOnAnLShapedFloorWritesPrismRoomsThatValidate) {
     EXPECT_NE(v.out.find("findings: 0"), std::string::npos) << v.out;
     const Outcome t = run("$BIN tour g.json --out t.txt");
     EXPECT_NE(t.out.find("rooms visited: 8 of 8"), std::string::npos) << t.out << t.err;
+}
+
+// A 10,000-corner star of spikes 500 m long around a core 4 m across gave
+// "no room 1.5 m wide fits in this play area", though the core holds a
+// 1.5 x 2.5 m room: the first room was tried at random across the 1000 m
+// bounding box, where the spikes are under 0.4 m wide (issue 36). Now rooms
+// are tried on the play area's widest spot too: one room and two fit and
+// validate; three do not, and the message says where the floor is widest;
+// a core 1.4 m across holds none, and the message says that. Each run
+// within seconds (the box tests' work is bounded, design::kMaxBoxWork).
+TEST_F(Hostile, GenerateFitsRoomsInTheCoreOfAStarOfLongSpikes) {
+    spit(dir_ / "star.json", packing_star(10'000, 500, 2));
+    for (const int rooms : {1, 2}) {
+        const std::string n = std::to_string(rooms);
+        const Outcome g = run("$BIN generate --play-area-file star.json --rooms " + n + " --seed 1 --out g.json", 120);
+        ASSERT_EQ(g.status, 0) << g.err;
+        EXPECT_LT(g.seconds, 20.0);
+        const Outcome v = run("$BIN validate g.json");
+        EXPECT_EQ(v.status, 0) << v.err;
+        EXPECT_NE(v.out.find("reachable rooms: " + n + " of " + n), std::string::npos) << v.out;
+        EXPECT_NE(v.out.find("rooms outside the play area: none"), std::string::npos) << v.out;
+        EXPECT_NE(v.out.find("findings: 0"), std::string::npos) << v.out;
+    }
+    const Outcome three = run("$BIN generate --play-area-file star.json --rooms 3 --seed 1 --out three.json", 120);
+    expect_refused(three, 1,
+                   "could not fit 3 rooms of at least 1.5 m, joined by doors, in this play area within the overlap "
+                   "limit (its widest spot is a circle 4 m across at (0, 0); try fewer rooms, a larger floor or a "
+                   "higher --max-overlap)");
+    EXPECT_LT(three.seconds, 20.0);  // 23 s without the bound on the box tests
+    EXPECT_FALSE(fs::exists(dir_ / "three.json"));
+    spit(dir_ / "thin.json", packing_star(10'000, 500, 0.7));
+    const Outcome thin = run("$BIN generate --play-area-file thin.json --rooms 1 --seed 1", 120);
+    expect_refused(thin, 1,
+                   "no room 1.5 m wide fits in this play area (1000 x 1000 m across; the widest spot found is a "
+                   "circle 1.4 m across at (0, 0))");
+    EXPECT_LT(thin.seconds, 20.0);
 }
 
 }  // namespace

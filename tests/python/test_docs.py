@@ -19,7 +19,7 @@ def test_example_runs(monkeypatch, capsys):
     monkeypatch.setenv("MPLBACKEND", "Agg")
     found = cells()
     plotting = [c for c in found if "matplotlib" in c]
-    assert len(found) == 5 and len(plotting) == 1
+    assert len(found) == 6 and len(plotting) == 1
     namespace = {}
     for cell in found:
         if cell in plotting and importlib.util.find_spec("matplotlib") is None:
@@ -36,4 +36,5 @@ def test_example_runs(monkeypatch, capsys):
     assert namespace["masked"]["ids"].shape == (103, 186)
     assert 0.17 < (namespace["masked"]["ids"] == 0).mean() < 0.21  # the Vive's hidden area, 19 % of each eye
     assert "% of the pixels hidden" in out
+    assert namespace["lit"].closed and namespace["frame"]["color"].shape == (90, 320, 3)
     assert os.getcwd() == str(SOURCE_DIR)

@@ -1,5 +1,6 @@
 """walk, Walker, read_path, tour, plan and generate against their commands."""
 import json
+import math
 
 import pytest
 
@@ -122,3 +123,17 @@ def test_generate_refuses_play_areas_the_loader_would_refuse():
         impossible.generate([(0, 0), (6, 0), (200000, 4), (0, 4)], 2, 1)
     text = impossible.generate((4, 4), 3, 5)
     assert impossible.parse(text).rooms
+
+
+def test_generate_fits_rooms_in_the_core_of_a_star():
+    """A 10,000-corner star of 500 m spikes around a core 4 m across: its core
+    holds two rooms, as `generate` now finds (it said no room fits); a third
+    is refused naming the widest spot (issue 36)."""
+    radii = [500 if k % 2 == 0 else 2 for k in range(10_000)]
+    star = [(r * math.cos(2 * math.pi * k / 10_000), r * math.sin(2 * math.pi * k / 10_000)) for k, r in enumerate(radii)]
+    layout = impossible.parse(impossible.generate(star, rooms=2, seed=1))
+    report = layout.validate()
+    assert report["valid"] and len(layout.rooms) == 2
+    with pytest.raises(impossible.Error, match=r"could not fit 3 rooms .*\(its widest spot is a circle 4 m across at "
+                                               r"\(0, 0\); try fewer rooms"):
+        impossible.generate(star, rooms=3, seed=1)
