@@ -37,6 +37,9 @@ struct Aperture {
 // A wall of a non-convex prism room that the leg may cross
 // (layout::crossable_walls) blocks it too, and so does the plane of a face
 // the leg would leave its room by where a door on it reaches outside.
+// Those that no shadow ray of the image can meet from the front (the image
+// lies in front of their plane) or within the light's range are left out
+// (light_blockers.hpp).
 struct Blocker {
     math::PortalRect rect;  // in the lit room's coordinates, depth 0
     int portal = -1;        // -1 for a wall or a face's plane
@@ -93,8 +96,8 @@ struct RoomLights {
 std::vector<RoomLights> light_images(const layout::Layout& layout, const links::PortalLinks& links, int light_depth);
 
 // For tests: `cull = false` keeps every path the factor rule keeps (no
-// aperture, order or range test), to check that culling only drops paths
-// no shadow ray passes.
+// aperture, order or range test) and every blocker, to check that culling
+// only drops paths no shadow ray passes and blockers none meets.
 struct LightImageOptions {
     bool cull = true;
 };
