@@ -72,6 +72,9 @@ struct LiWalk {
     bool count_only = false;
     std::size_t budget = 0;
     std::size_t count = 0;
+    // light_work: each node's image is made to count its rectangles, then
+    // dropped.
+    LightWork* work = nullptr;
 };
 
 std::vector<std::vector<int>> li_crossable(const layout::Layout& layout) {
@@ -210,8 +213,18 @@ bool li_outside_spot(const LiWalk& walk, const Polygon3& window) {
     return max_cos_to_polygon(light.position, light.spot->direction, window) < cos_outer - 1e-9;
 }
 
+void li_count_work(LiWalk& walk, const dvec3& factor) {
+    const std::size_t rects = path_rect_count(li_make_image(walk, factor).image);
+    const std::size_t k = walk.steps.size();
+    ++walk.work->images[k];
+    walk.work->rects[k] += rects;
+    if (k == 0)
+        walk.work->own_rects[static_cast<std::size_t>(walk.light_room)][static_cast<std::size_t>(walk.light)] = rects;
+}
+
 void li_visit(LiWalk& walk, const Polygon3& window, const dvec3& factor) {
     ++walk.count;
+    if (walk.work) li_count_work(walk, factor);
     if (!walk.count_only) walk.out.push_back(li_make_image(walk, factor));
     if (static_cast<int>(walk.steps.size()) >= walk.depth) return;
     const int room = walk.steps.empty() ? walk.light_room : walk.steps.back().room;
@@ -289,6 +302,22 @@ int light_depth_within(const layout::Layout& layout, const links::PortalLinks& l
         if (li_over_budget(walk)) return d - 1;
     }
     return depth;
+}
+
+LightWork light_work(const layout::Layout& layout, const links::PortalLinks& links, int light_depth) {
+    LightWork work;
+    if (layout.lighting != layout::Lighting::Lights) return work;
+    for (const layout::Room& room : layout.rooms) work.own_rects.emplace_back(room.lights.size(), 0);
+    LiWalk walk{layout,
+                links,
+                std::clamp(light_depth, 0, layout::kMaxLightDepth),
+                true,
+                li_arrivals(layout, links),
+                li_crossable(layout)};
+    walk.count_only = true;
+    walk.work = &work;
+    li_walk_lights(walk);
+    return work;
 }
 
 }  // namespace impossible::lights
