@@ -10,6 +10,7 @@
 #include "image/png.hpp"
 #include "layout/hmd_profile.hpp"
 #include "layout/path_file.hpp"
+#include "lights/light_bound.hpp"
 #include "lights/light_images.hpp"
 #include "math/view_limits.hpp"
 #include "session/view_request.hpp"
@@ -85,14 +86,21 @@ std::string light_options_warning(const session::Session& session, const std::op
                                   bool shadow_options) {
     const layout::Layout& layout = session.layout();
     if (layout.lighting == layout::Lighting::Lights) {
-        // The light paths' bound (docs/bounded-work.md): both renderers light
-        // at most lights::kMaxLightPaths paths, at a lower depth if need be.
+        // The light work's bound (docs/bounded-work.md): both renderers light
+        // at most lights::kMaxLightPaths paths with lights::kMaxLightRects
+        // path rectangles, at a lower depth, or with fewer lights, if need be.
         const int asked = light_depth.value_or(layout.light_depth);
-        const int most = session.max_light_depth();
-        if (asked <= most) return "";
-        return "warning: light depth " + std::to_string(asked) + " gives more than " +
-               std::to_string(lights::kMaxLightPaths) + " light paths in " + one_line(layout.source, 1000) +
-               ": lit at light depth " + std::to_string(most) + "\n";
+        const lights::LightBound bound = session.light_bound();
+        const lights::LightCut cut = lights::light_cut(bound, asked);
+        if (cut == lights::LightCut::None) return "";
+        const std::string what = cut == lights::LightCut::Paths
+                                     ? std::to_string(lights::kMaxLightPaths) + " light paths"
+                                     : std::to_string(lights::kMaxLightRects) + " path rectangles";
+        std::string lit = "lit at light depth " + std::to_string(std::min(asked, bound.depth));
+        if (bound.lit_lights < bound.lights)
+            lit += " by " + std::to_string(bound.lit_lights) + " of its " + std::to_string(bound.lights) + " lights";
+        return "warning: light depth " + std::to_string(asked) + " gives more than " + what + " in " +
+               one_line(layout.source, 1000) + ": " + lit + "\n";
     }
     if (!light_depth && !shadow_options) return "";
     const std::string what = light_depth && shadow_options ? "--light-depth and the shadow options have"

@@ -1,9 +1,11 @@
 // The designer's report: findings about a valid layout; see report.hpp.
 #include "design/report.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "base/user_text.hpp"
+#include "lights/light_bound.hpp"
 #include "lights/light_images.hpp"
 
 namespace impossible::design {
@@ -28,8 +30,14 @@ const char* const kSearchStopped = "the search stopped at its limit of pairs tes
 void count_lights(const layout::Layout& layout, Report& r) {
     if (layout.lighting != layout::Lighting::Lights) return;
     const links::PortalLinks& links = r.placement.links;  // linked once, by place_rooms
-    r.light_paths_depth = lights::light_depth_within(layout, links, layout.light_depth, kMaxReportedLightPaths);
-    const std::vector<lights::RoomLights> images = lights::light_images(layout, links, r.light_paths_depth);
+    // The paths frames are lit by: within the bound of both renderers.
+    const lights::LightBound bound = lights::light_bound(layout, links);
+    r.light_paths_depth = std::min(layout.light_depth, bound.depth);
+    r.light_cut = lights::light_cut(bound, layout.light_depth);
+    r.lit_lights = bound.lit_lights;
+    r.lights = bound.lights;
+    const std::vector<lights::RoomLights> images =
+        lights::light_images(lights::with_lit_lights(layout, bound), links, r.light_paths_depth);
     for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
         r.room_lights.push_back(static_cast<int>(layout.rooms[i].lights.size()));
         r.room_light_paths.push_back(i < images.size() ? static_cast<int>(images[i].images.size()) : 0);
@@ -41,8 +49,16 @@ void count_lights(const layout::Layout& layout, Report& r) {
 std::string lights_text(const layout::Layout& layout, const Report& r) {
     if (layout.lighting != layout::Lighting::Lights) return "";
     std::string out = "lighting: lights, light depth " + std::to_string(layout.light_depth) + "\n";
-    if (r.light_paths_depth < layout.light_depth) {
+    if (r.light_cut == lights::LightCut::Paths) {
         out += "  light paths: more than " + std::to_string(kMaxReportedLightPaths) +
+               " in all rooms together; frames are lit at light depth " + std::to_string(r.light_paths_depth) +
+               ", the deepest within that\n";
+    } else if (r.light_cut == lights::LightCut::Rects && r.lit_lights < r.lights) {
+        out += "  path rectangles: more than " + std::to_string(lights::kMaxLightRects) +
+               " in all rooms together, even at light depth 0; frames are lit at light depth 0 by " +
+               std::to_string(r.lit_lights) + " of the " + std::to_string(r.lights) + " lights\n";
+    } else if (r.light_cut == lights::LightCut::Rects) {
+        out += "  path rectangles: more than " + std::to_string(lights::kMaxLightRects) +
                " in all rooms together; frames are lit at light depth " + std::to_string(r.light_paths_depth) +
                ", the deepest within that\n";
     }

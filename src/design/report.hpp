@@ -14,6 +14,7 @@
 #include "design/overlap.hpp"
 #include "design/placement.hpp"
 #include "layout/layout.hpp"
+#include "lights/light_bound.hpp"
 #include "lights/light_images.hpp"
 
 namespace impossible::design {
@@ -40,9 +41,15 @@ struct Report {
     std::vector<int> room_lights;
     std::vector<int> room_light_paths;
     // The light depth the paths were counted at: the layout's, or where the
-    // rooms together would have more than kMaxReportedLightPaths, the
-    // deepest that stays within (lights::light_depth_within).
+    // rooms together would have more than kMaxReportedLightPaths paths or
+    // lights::kMaxLightRects path rectangles, the deepest that stays within
+    // (lights::light_bound), and what lowered it. Where even depth 0 has
+    // more rectangles, frames are lit by only `lit_lights` of the `lights`
+    // and the paths counted are theirs.
     int light_paths_depth = 0;
+    lights::LightCut light_cut = lights::LightCut::None;
+    std::size_t lit_lights = 0;
+    std::size_t lights = 0;
 };
 
 // validate counts the light paths frames are lit by: at most this many, all

@@ -91,6 +91,33 @@ ordered_json rooms_json(const layout::Layout& layout, const Report& r) {
     return rooms;
 }
 
+// "lighting": the light depth, where frames are lit otherwise and why
+// (the light paths' or the path rectangles' bound), and each room's lights
+// and light paths.
+ordered_json lighting_json(const layout::Layout& layout, const Report& r) {
+    ordered_json lighting;
+    lighting["light_depth"] = layout.light_depth;
+    if (r.light_cut == lights::LightCut::Paths) {  // only then
+        lighting["light_paths_truncated"] = true;
+        lighting["light_paths_depth"] = r.light_paths_depth;
+    }
+    if (r.light_cut == lights::LightCut::Rects) {  // only then
+        lighting["light_rects_truncated"] = true;
+        lighting["light_paths_depth"] = r.light_paths_depth;
+        if (r.lit_lights < r.lights) lighting["lit_lights"] = r.lit_lights;
+    }
+    ordered_json rooms = ordered_json::array();
+    for (std::size_t i = 0; i < r.room_lights.size(); ++i) {
+        ordered_json room;
+        room["id"] = layout.rooms[i].id;
+        room["lights"] = r.room_lights[i];
+        room["light_paths"] = r.room_light_paths[i];
+        rooms.push_back(room);
+    }
+    lighting["rooms"] = rooms;
+    return lighting;
+}
+
 }  // namespace
 
 ordered_json report_json(const layout::Layout& layout, const Report& r,
@@ -127,24 +154,8 @@ ordered_json report_json(const layout::Layout& layout, const Report& r,
     ordered_json doors_outside = ordered_json::array();
     for (const int p : r.doors_outside) doors_outside.push_back(layout.portals[p].id);
     j["doors_outside_play_area"] = doors_outside;
-    if (layout.lighting == layout::Lighting::Lights) {  // only then: fixed layouts' documents stay as they were
-        ordered_json lighting;
-        lighting["light_depth"] = layout.light_depth;
-        if (r.light_paths_depth < layout.light_depth) {  // only then
-            lighting["light_paths_truncated"] = true;
-            lighting["light_paths_depth"] = r.light_paths_depth;
-        }
-        ordered_json rooms = ordered_json::array();
-        for (std::size_t i = 0; i < r.room_lights.size(); ++i) {
-            ordered_json room;
-            room["id"] = layout.rooms[i].id;
-            room["lights"] = r.room_lights[i];
-            room["light_paths"] = r.room_light_paths[i];
-            rooms.push_back(room);
-        }
-        lighting["rooms"] = rooms;
-        j["lighting"] = lighting;
-    }
+    // Only then: fixed layouts' documents stay as they were.
+    if (layout.lighting == layout::Lighting::Lights) j["lighting"] = lighting_json(layout, r);
     ordered_json lines = ordered_json::array();
     for (const layout::Diagnostic& d : warnings) lines.push_back(d.str());
     for (const std::string& f : r.findings) lines.push_back(layout.source + ": " + f);

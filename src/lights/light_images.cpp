@@ -20,6 +20,7 @@
 
 #include "layout/room_shape.hpp"
 #include "lights/aperture_clip.hpp"
+#include "lights/light_blockers.hpp"
 #include "math/rigid.hpp"
 #include "shading/lighting.hpp"
 
@@ -71,6 +72,9 @@ struct LiWalk {
     bool count_only = false;
     std::size_t budget = 0;
     std::size_t count = 0;
+    // light_work: each node's image is made to count its rectangles, then
+    // dropped.
+    LightWork* work = nullptr;
 };
 
 std::vector<std::vector<int>> li_crossable(const layout::Layout& layout) {
@@ -109,101 +113,6 @@ dvec3 li_portal_factor(const layout::Portal& portal, bool reflect) {
 
 const layout::Light& li_light(const LiWalk& walk) {
     return walk.layout.rooms[static_cast<std::size_t>(walk.light_room)].lights[static_cast<std::size_t>(walk.light)];
-}
-
-// Wall i of a prism room as a rectangle (normal into the room, up +y).
-math::PortalRect li_wall_rect(const layout::Room& room, int i) {
-    const layout::Wall w = layout::wall(room, i);
-    const glm::dvec2 mid = 0.5 * (w.a + w.b);
-    math::PortalRect rect;
-    rect.center = dvec3(mid.x, 0.5 * (room.min.y + room.max.y), mid.y);
-    rect.normal = dvec3(w.inward.x, 0.0, w.inward.y);
-    rect.up = dvec3(0.0, 1.0, 0.0);
-    rect.width = glm::length(w.b - w.a);
-    rect.height = room.max.y - room.min.y;
-    rect.depth = 0.0;
-    return rect;
-}
-
-// The face of its room a portal is a hole in, or -1 (also for no portal).
-int li_hole_face(const LiWalk& walk, int portal) {
-    return portal < 0 ? -1 : walk.layout.portals[static_cast<std::size_t>(portal)].hole_face;
-}
-
-// Where a door the leg enters or leaves its room by reaches outside that
-// room (a portal's rectangle may, layout-format.md, "The portal box"), the
-// segment to a point of it there leaves the room first, through a face the
-// tracer meets. A face plane that such a corner lies behind (by more than
-// the hole rule's 1e-4 m) blocks the leg: in a convex room, or for a convex
-// hull face of a prism (a floor, a ceiling, a wall that is not crossable),
-// crossing the plane from inside is leaving the room. The face's rectangle
-// is the whole plane for this (1e6 m), centred at the foot of the door's
-// centre. Rooms whose doors stay inside them get none.
-void li_add_face_planes(const LiWalk& walk, LightImage& image, int leg, int entry, int exit) {
-    const int entry_face = li_hole_face(walk, entry), exit_face = li_hole_face(walk, exit);
-    const int room_index = image.rooms[static_cast<std::size_t>(leg)];
-    const layout::Room& room = walk.layout.rooms[static_cast<std::size_t>(room_index)];
-    constexpr double kOutside = 1e-4;
-    std::vector<dvec3> corners;
-    dvec3 centre(0.0);
-    for (const int p : {entry, exit}) {
-        if (p < 0) continue;
-        const math::PortalRect& rect = walk.layout.portals[static_cast<std::size_t>(p)].rect;
-        const Polygon3 c = rect_polygon(rect, 0.0);
-        corners.insert(corners.end(), c.begin(), c.end());
-        centre = rect.center;
-    }
-    if (std::all_of(corners.begin(), corners.end(),
-                    [&](const dvec3& c) { return layout::room_contains(room, c, kOutside); }))
-        return;
-    const std::vector<int>& crossable = walk.crossable[static_cast<std::size_t>(room_index)];
-    const dmat4 to_c = math::rigid_inverse(image.to_room[static_cast<std::size_t>(leg)]);
-    for (int f = 0; f < layout::face_count(room); ++f) {
-        const int wall = layout::wall_of_face(room, f);
-        if (wall >= 0 && std::find(crossable.begin(), crossable.end(), wall) != crossable.end()) continue;
-        if (f == entry_face || f == exit_face) continue;
-        const layout::FaceFrame frame = layout::face_frame(room, f);
-        const bool behind = std::any_of(corners.begin(), corners.end(), [&](const dvec3& c) {
-            return glm::dot(c - frame.origin, frame.normal) < -kOutside;
-        });
-        if (!behind) continue;
-        math::PortalRect plane;
-        plane.normal = frame.normal;
-        plane.up = frame.t_axis;
-        plane.center = centre - glm::dot(centre - frame.origin, frame.normal) * frame.normal;
-        plane.width = plane.height = 1e6;
-        plane.depth = 0.0;
-        image.blockers.push_back({transform_rect(to_c, plane), -1, leg, wall, f});
-    }
-}
-
-// The free-standing portals of leg `leg`'s room, but for the portals the
-// shadow ray enters and leaves that room by, and the walls of that room it
-// may cross (a non-convex prism's), but for the walls those two portals are
-// holes in (the leg only ends on them), mapped into C's coordinates.
-void li_add_blockers(const LiWalk& walk, LightImage& image, int leg) {
-    const int k = static_cast<int>(image.apertures.size());
-    int entry = -1;
-    if (leg > 0) {
-        const Aperture& in = image.apertures[static_cast<std::size_t>(leg - 1)];
-        entry = in.reflect ? in.portal : walk.layout.portals[static_cast<std::size_t>(in.portal)].target;
-    }
-    const int exit = leg < k ? image.apertures[static_cast<std::size_t>(leg)].portal : -1;
-    const int room = image.rooms[static_cast<std::size_t>(leg)];
-    const dmat4 to_c = math::rigid_inverse(image.to_room[static_cast<std::size_t>(leg)]);
-    for (const int p : walk.links.room_portals[static_cast<std::size_t>(room)]) {
-        const layout::Portal& portal = walk.layout.portals[static_cast<std::size_t>(p)];
-        if (portal.hole_face != -1 || p == entry || p == exit) continue;
-        image.blockers.push_back({transform_rect(to_c, portal.rect), p, leg});
-    }
-    const layout::Room& leg_room = walk.layout.rooms[static_cast<std::size_t>(room)];
-    const int entry_wall = layout::wall_of_face(leg_room, li_hole_face(walk, entry));
-    const int exit_wall = layout::wall_of_face(leg_room, li_hole_face(walk, exit));
-    for (const int w : walk.crossable[static_cast<std::size_t>(room)]) {
-        if (w == entry_wall || w == exit_wall) continue;
-        image.blockers.push_back({transform_rect(to_c, li_wall_rect(leg_room, w)), -1, leg, w});
-    }
-    li_add_face_planes(walk, image, leg, entry, exit);
 }
 
 // Where a depth-first walk from the step's room meets the step: the
@@ -246,7 +155,7 @@ LiPending li_make_image(const LiWalk& walk, const dvec3& factor) {
         image.apertures.push_back(
             {transform_rect(math::rigid_inverse(image.to_room[i]), rect), step.portal, step.reflect});
     }
-    for (std::size_t leg = 0; leg <= k; ++leg) li_add_blockers(walk, image, static_cast<int>(leg));
+    add_blockers({walk.layout, walk.links, walk.crossable, walk.cull}, image);
     return pending;
 }
 
@@ -304,8 +213,18 @@ bool li_outside_spot(const LiWalk& walk, const Polygon3& window) {
     return max_cos_to_polygon(light.position, light.spot->direction, window) < cos_outer - 1e-9;
 }
 
+void li_count_work(LiWalk& walk, const dvec3& factor) {
+    const std::size_t rects = path_rect_count(li_make_image(walk, factor).image);
+    const std::size_t k = walk.steps.size();
+    ++walk.work->images[k];
+    walk.work->rects[k] += rects;
+    if (k == 0)
+        walk.work->own_rects[static_cast<std::size_t>(walk.light_room)][static_cast<std::size_t>(walk.light)] = rects;
+}
+
 void li_visit(LiWalk& walk, const Polygon3& window, const dvec3& factor) {
     ++walk.count;
+    if (walk.work) li_count_work(walk, factor);
     if (!walk.count_only) walk.out.push_back(li_make_image(walk, factor));
     if (static_cast<int>(walk.steps.size()) >= walk.depth) return;
     const int room = walk.steps.empty() ? walk.light_room : walk.steps.back().room;
@@ -383,6 +302,22 @@ int light_depth_within(const layout::Layout& layout, const links::PortalLinks& l
         if (li_over_budget(walk)) return d - 1;
     }
     return depth;
+}
+
+LightWork light_work(const layout::Layout& layout, const links::PortalLinks& links, int light_depth) {
+    LightWork work;
+    if (layout.lighting != layout::Lighting::Lights) return work;
+    for (const layout::Room& room : layout.rooms) work.own_rects.emplace_back(room.lights.size(), 0);
+    LiWalk walk{layout,
+                links,
+                std::clamp(light_depth, 0, layout::kMaxLightDepth),
+                true,
+                li_arrivals(layout, links),
+                li_crossable(layout)};
+    walk.count_only = true;
+    walk.work = &work;
+    li_walk_lights(walk);
+    return work;
 }
 
 }  // namespace impossible::lights

@@ -9,6 +9,7 @@
 // does not use this (it is the oracle this is checked against).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -37,6 +38,9 @@ struct Aperture {
 // A wall of a non-convex prism room that the leg may cross
 // (layout::crossable_walls) blocks it too, and so does the plane of a face
 // the leg would leave its room by where a door on it reaches outside.
+// Those that no shadow ray of the image can meet from the front (the image
+// lies in front of their plane) or within the light's range are left out
+// (light_blockers.hpp).
 struct Blocker {
     math::PortalRect rect;  // in the lit room's coordinates, depth 0
     int portal = -1;        // -1 for a wall or a face's plane
@@ -93,8 +97,8 @@ struct RoomLights {
 std::vector<RoomLights> light_images(const layout::Layout& layout, const links::PortalLinks& links, int light_depth);
 
 // For tests: `cull = false` keeps every path the factor rule keeps (no
-// aperture, order or range test), to check that culling only drops paths
-// no shadow ray passes.
+// aperture, order or range test) and every blocker, to check that culling
+// only drops paths no shadow ray passes and blockers none meets.
 struct LightImageOptions {
     bool cull = true;
 };
@@ -118,16 +122,27 @@ int light_depth_within(const layout::Layout& layout, const links::PortalLinks& l
 // The most light paths a frame is lit by, all rooms together
 // (docs/bounded-work.md): a layout whose light depth would give more is
 // lit at the largest light depth that gives at most this many, by the
-// rasteriser and the tracer alike, and the commands warn. A 2 m cube of six
-// paired windows has 133 paths at light depth 2 and over 1,300 at 3.
+// rasteriser and the tracer alike (lights::light_bound, light_bound.hpp),
+// and the commands warn. A 2 m cube of six paired windows has 133 paths at
+// light depth 2 and over 1,300 at 3.
 inline constexpr std::size_t kMaxLightPaths = 1024;
 
-// The deepest light depth within kMaxLightPaths (kMaxLightDepth when every
-// depth is): a frame asking for depth d is lit at min(d, this). Paths only
-// grow with the depth, so one count serves every request.
-inline int max_light_depth(const layout::Layout& layout, const links::PortalLinks& links) {
-    return light_depth_within(layout, links, layout::kMaxLightDepth, kMaxLightPaths);
-}
+// The rectangles a fragment tests for an image: its apertures and its
+// blockers (shaders/lighting.frag.glsl, light_path_open).
+inline std::size_t path_rect_count(const LightImage& image) { return image.apertures.size() + image.blockers.size(); }
+
+// What lighting at a light depth costs (light_bound.cpp): the number of
+// images light_images(layout, links, light_depth) gives and of their path
+// rectangles, by path length (index k: paths of k portals), and each
+// light's own image's rectangles (its path of no portal), per room, per
+// light. It makes every image (less the lists' memory), so its time is
+// light_images's: call it at a depth within kMaxLightPaths.
+struct LightWork {
+    std::array<std::size_t, layout::kMaxLightDepth + 1> images{};
+    std::array<std::size_t, layout::kMaxLightDepth + 1> rects{};
+    std::vector<std::vector<std::size_t>> own_rects;
+};
+LightWork light_work(const layout::Layout& layout, const links::PortalLinks& links, int light_depth);
 
 // The exact aperture test of the lit shader, in double precision (its
 // reference): the segment from p (in C's coordinates) to the image's

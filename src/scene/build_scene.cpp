@@ -9,6 +9,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "lights/light_bound.hpp"
 #include "scene/box_mesh.hpp"
 #include "scene/cell_objects.hpp"
 #include "scene/mesh_writer.hpp"
@@ -136,14 +137,17 @@ Scene build_scene(const layout::Layout& layout, const links::PortalLinks& links)
     }
     append_object_meshes(scene, out, layout);
     if (layout.lighting == layout::Lighting::Lights) {
-        // The light images at the layout's depth, lowered to stay within
-        // lights::kMaxLightPaths as the tracer lowers it; the layout is kept
-        // for a renderer asked for another depth (View::light_depth).
+        // The light images at the layout's depth, of the lights that light
+        // frames, within the light paths' and rectangles' bound as the
+        // tracer cuts them (lights::light_bound); the layout, with those
+        // lights, is kept for a renderer asked for another depth
+        // (View::light_depth).
         scene.lighting = layout::Lighting::Lights;
-        scene.max_light_depth = lights::max_light_depth(layout, scene.links);
+        const lights::LightBound bound = lights::light_bound(layout, scene.links);
+        scene.max_light_depth = bound.depth;
         scene.light_depth = std::min(layout.light_depth, scene.max_light_depth);
-        scene.room_lights = lights::light_images(layout, scene.links, scene.light_depth);
-        scene.lit_layout = std::make_shared<const layout::Layout>(layout);
+        scene.lit_layout = std::make_shared<const layout::Layout>(lights::with_lit_lights(layout, bound));
+        scene.room_lights = lights::light_images(*scene.lit_layout, scene.links, scene.light_depth);
     }
     return scene;
 }

@@ -154,12 +154,14 @@ struct Scene {
     std::vector<std::vector<layout::Volume>> volumes;  // per room: its volume portals, in file order
     // Under "lighting": "lights" (layout-format.md, "Lights"): every room's
     // light images at the layout's light_depth (lights::light_images), and
-    // the layout, for a renderer asked for another depth (View::light_depth).
+    // the layout with the lights that light frames (lights::light_bound),
+    // for a renderer asked for another depth (View::light_depth).
     // "fixed": Lighting::Fixed, nothing else.
     layout::Lighting lighting = layout::Lighting::Fixed;
     int light_depth = layout::kDefaultLightDepth;  // the layout's, at most max_light_depth
-    // The deepest light depth within lights::kMaxLightPaths: a frame asking
-    // for more (View::light_depth) is lit at this depth.
+    // The deepest light depth within lights::kMaxLightPaths paths and
+    // lights::kMaxLightRects path rectangles (lights::LightBound::depth): a
+    // frame asking for more (View::light_depth) is lit at this depth.
     int max_light_depth = layout::kMaxLightDepth;
     std::vector<lights::RoomLights> room_lights;
     std::shared_ptr<const layout::Layout> lit_layout;

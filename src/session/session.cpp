@@ -1,6 +1,6 @@
 #include "session/session.hpp"
 
-#include "lights/light_images.hpp"
+#include "lights/light_bound.hpp"
 #include "walk/replay.hpp"
 
 namespace impossible::session {
@@ -21,7 +21,7 @@ walk::Walker Session::make_walker(int room) const {
     return walk::Walker(*layout_, room >= 0 ? room : layout_->start.room, links_);
 }
 
-int Session::max_light_depth() const { return lights::max_light_depth(*layout_, *links_); }
+lights::LightBound Session::light_bound() const { return lights::light_bound(*layout_, *links_); }
 
 void Session::set_replayed_view(math::View& view, const std::vector<layout::PathFrame>& frames, std::size_t line,
                                 double fps) const {

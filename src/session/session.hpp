@@ -13,6 +13,7 @@
 #include "gl/state.hpp"
 #include "layout/layout.hpp"
 #include "layout/path_file.hpp"
+#include "lights/light_bound.hpp"
 #include "links/portal_links.hpp"
 #include "math/view.hpp"
 #include "render/renderer.hpp"
@@ -42,9 +43,11 @@ public:
     // A walker from the layout's start pose in `room` (the start room when
     // -1). It reads the session's layout: the session must outlive it.
     walk::Walker make_walker(int room = -1) const;
-    // The light depth past which a lit layout has more than
-    // lights::kMaxLightPaths light paths (docs/bounded-work.md).
-    int max_light_depth() const;
+    // Where a lit layout's lighting is cut (docs/bounded-work.md): the
+    // light depth past which it has more than lights::kMaxLightPaths light
+    // paths or lights::kMaxLightRects path rectangles, and the lights that
+    // light frames. The renderer's and the tracer's scenes are cut so.
+    lights::LightBound light_bound() const;
     // `view`'s head, room, hands and time at line `line` of a walk, after
     // walking lines 0..line from the start (walk/replay.hpp).
     void set_replayed_view(math::View& view, const std::vector<layout::PathFrame>& frames, std::size_t line,

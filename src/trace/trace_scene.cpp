@@ -8,7 +8,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "lights/light_images.hpp"
+#include "lights/light_bound.hpp"
 #include "links/portal_links.hpp"
 #include "trace/bvh.hpp"
 #include "trace/prism_faces.hpp"
@@ -242,12 +242,15 @@ Result<Scene> prepare_scene(const layout::Layout& layout, const links::PortalLin
     if (const std::optional<Error> error = check_portals(layout)) return *error;
     Scene scene;
     scene.lit = layout.lighting == layout::Lighting::Lights;
-    scene.max_light_depth = scene.lit ? lights::max_light_depth(layout, links) : layout::kMaxLightDepth;
+    // The rasteriser's bound (build_scene.cpp): the same depth and lights.
+    const lights::LightBound bound = lights::light_bound(layout, links);
+    scene.max_light_depth = bound.depth;
     scene.light_depth = std::min(layout.light_depth, scene.max_light_depth);
     scene.objects = walk::build_object_set(layout, links);
     for (std::size_t r = 0; r < layout.rooms.size(); ++r) {
         const layout::Room& room = layout.rooms[r];
         SceneRoom sr = scene_room(room);
+        sr.lights = lights::lit_lights(layout, bound, static_cast<int>(r));
         // A dynamic prop is no part of its room: it is placed each frame.
         for (std::size_t k = 0; k < room.props.size(); ++k) {
             if (r < scene.objects.dynamic.size() && k < scene.objects.dynamic[r].size() && scene.objects.dynamic[r][k])

@@ -193,7 +193,8 @@ struct SceneRoom : PropSurfaces {
     double checker = 0.0;              // checker side for the faces, 0: plain
     std::vector<SceneVolume> volumes;  // its volume portals, in file order
     // Under "lighting": "lights" (Scene::lit): the room's ambient light and
-    // its lights, in its own coordinates (layout-format.md, "Lights").
+    // its lights that light frames (lights::lit_lights), in its own
+    // coordinates (layout-format.md, "Lights").
     dvec3 ambient{0.0};
     std::vector<layout::Light> lights;
 };
@@ -248,8 +249,10 @@ struct Scene {
     // light paths of light_paths.hpp, at most `light_depth` portals long
     // (the layout's; RayLimits::light_depth may replace it). Otherwise the
     // fixed model of shading/shading.hpp. Either depth is lowered to
-    // max_light_depth, the deepest within lights::kMaxLightPaths paths, as
-    // the rasteriser lowers it.
+    // max_light_depth, the deepest within lights::kMaxLightPaths paths and
+    // lights::kMaxLightRects path rectangles, and the rooms keep only the
+    // lights that light frames, as the rasteriser cuts them
+    // (lights::light_bound).
     bool lit = false;
     int light_depth = layout::kDefaultLightDepth;
     int max_light_depth = layout::kMaxLightDepth;

@@ -228,7 +228,9 @@ TEST(LightImages, ADoorReachingOutsideItsRoomAddsThatFacesPlane) {
 
 // A non-convex prism's walls that a shadow ray can cross (the two walls of
 // an L's reflex corner) block it on the legs in that room, but for the
-// wall the leg enters or leaves the room by (it only ends there).
+// wall the leg enters or leaves the room by (it only ends there), and but
+// for a wall whose plane the light's image lies in front of: a segment
+// towards the image crosses it only from behind (light_blockers.hpp).
 TEST(LightImages, AnLsReflexWallsBlockItsLegsButTheDoorsOwnWall) {
     const layout::Layout l = l_flat();
     const auto rooms = light_images(l, links::link_portals(l), 1);
@@ -238,34 +240,37 @@ TEST(LightImages, AnLsReflexWallsBlockItsLegsButTheDoorsOwnWall) {
             if (b.leg == leg && b.portal == -1) walls.push_back(b.wall);
         return walls;
     };
+    // The east arm's lamp (light 0) lies behind wall 3 (x = 3) only, the
+    // north arm's (light 1) behind wall 2 (z = 3) only.
+    const std::vector<int> behind[] = {{3}, {2}};
     int through_a = 0, through_b = 0;
     for (const LightImage& image : rooms[0].images) {
         if (image.apertures.empty()) {
-            EXPECT_EQ(walls_of(image, 0), (std::vector<int>{2, 3}));  // the L's own lamps
+            EXPECT_EQ(walls_of(image, 0), behind[image.light]);  // the L's own lamps
             continue;
         }
         ASSERT_EQ(image.apertures.size(), 1u);
         const int door = image.apertures[0].portal;
         if (door == 0) ++through_a;
         if (door == 2) ++through_b;
-        // Leg 0 runs in the L to the door: the other reflex wall blocks it.
-        // Leg 1 runs in a box room: no walls; both legs of the mirror's
-        // paths run in the L.
-        const std::vector<int> leg0 = door == 0   ? std::vector<int>{3}
-                                      : door == 2 ? std::vector<int>{2}
-                                                  : std::vector<int>{2, 3};
-        const std::vector<int> leg1 = door == 4 ? std::vector<int>{2, 3} : std::vector<int>{};
+        // Leg 0 runs in the L to the door: the other reflex wall could block
+        // it, but the boxes' lamps lie in front of it. Leg 1 runs in a box
+        // room: no walls. Both legs of the mirror's paths run in the L:
+        // leg 1 towards the lamp, leg 0 towards its image across x = 0,
+        // which lies in front of wall 3 (x = 3) too.
+        const std::vector<int> leg0 = door == 4 && image.light == 1 ? std::vector<int>{2} : std::vector<int>{};
+        const std::vector<int> leg1 = door == 4 ? behind[image.light] : std::vector<int>{};
         EXPECT_EQ(walls_of(image, 0), leg0) << "door " << door;
         EXPECT_EQ(walls_of(image, 1), leg1) << "door " << door;
     }
     EXPECT_EQ(through_a, 1);
     EXPECT_EQ(through_b, 1);
     // A wall blocker is the wall's rectangle, facing into the room.
-    const Blocker& w2 = rooms[0].images[0].blockers[0];
-    expect_near(w2.rect.center, dvec3(4.5, 1.5, 3));
-    expect_near(w2.rect.normal, dvec3(0, 0, -1));
-    EXPECT_DOUBLE_EQ(w2.rect.width, 3.0);
-    EXPECT_DOUBLE_EQ(w2.rect.height, 3.0);
+    const Blocker& w3 = rooms[0].images[0].blockers[0];
+    expect_near(w3.rect.center, dvec3(3, 1.5, 4.5));
+    expect_near(w3.rect.normal, dvec3(-1, 0, 0));
+    EXPECT_DOUBLE_EQ(w3.rect.width, 3.0);
+    EXPECT_DOUBLE_EQ(w3.rect.height, 3.0);
     // The boxes see the L's lamps through their doors: on leg 1, in the L,
     // the reflex wall that does not hold that door.
     int l_walls_seen = 0;

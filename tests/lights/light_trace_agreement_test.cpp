@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "layout/room_shape.hpp"
+#include "lights/light_bound.hpp"
 #include "lights/light_images.hpp"
 #include "lights/lights_test_layouts.hpp"
 #include "shading/lighting.hpp"
@@ -43,7 +44,11 @@ int expect_agreement(const layout::Layout& l, int depth, std::mt19937_64& rng, i
     const auto scene = trace::prepare_scene(l);
     EXPECT_TRUE(scene.has_value());
     if (!scene) return 0;
-    const auto rooms = light_images(l, links::link_portals(l), depth);
+    // Both cut as the programs cut them (light_bound.hpp): the tracer's
+    // scene keeps the lights that light frames, the images are theirs.
+    const links::PortalLinks links = links::link_portals(l);
+    const layout::Layout lit = with_lit_lights(l, light_bound(l, links));
+    const auto rooms = light_images(lit, links, depth);
     int lit_through = 0;
     std::uniform_real_distribution<double> unit(0.0, 1.0), sym(-1.0, 1.0);
     for (std::size_t c = 0; c < l.rooms.size(); ++c) {
@@ -53,7 +58,7 @@ int expect_agreement(const layout::Layout& l, int depth, std::mt19937_64& rng, i
                                                                      0.005 + 0.99 * unit(rng));
             const dvec3 n = glm::normalize(dvec3(sym(rng), sym(rng), sym(rng)));
             if (!layout::room_contains(room, p)) continue;  // in a prism's bounding box, outside its floor
-            const dvec3 mine = image_sum(l, rooms[c], p, n);
+            const dvec3 mine = image_sum(lit, rooms[c], p, n);
             const dvec3 oracle = trace::light_sum(*scene, nullptr, trace::LitPoint{static_cast<int>(c), p, n}, depth);
             const double scale = 1e-12 + glm::length(mine) + glm::length(oracle);
             EXPECT_LT(glm::length(mine - oracle) / scale, 1e-9)
@@ -63,7 +68,7 @@ int expect_agreement(const layout::Layout& l, int depth, std::mt19937_64& rng, i
             for (const LightImage& image : rooms[c].images) {
                 if (image.apertures.empty()) direct.images.push_back(image);
             }
-            if (glm::length(mine - image_sum(l, direct, p, n)) > 1e-9) ++lit_through;
+            if (glm::length(mine - image_sum(lit, direct, p, n)) > 1e-9) ++lit_through;
         }
     }
     return lit_through;
@@ -93,6 +98,19 @@ TEST(LightTraceAgreement, ATurnedDoorAndAMirror) {
 TEST(LightTraceAgreement, ADoorReachingAboveTheCeiling) {
     std::mt19937_64 rng(912);
     EXPECT_GT(expect_agreement(low_ceiling(), 2, rng, 2000), 150);
+}
+
+// A star-shaped room whose lamps' walls pass the path rectangles' bound
+// (light_bound.hpp): the tracer is lit by the same two of its ten lamps
+// that the images are made for, and agrees with them.
+TEST(LightTraceAgreement, AStarRoomCutByThePathRectangles) {
+    const layout::Layout l = star_room(1000, 10);
+    const auto scene = trace::prepare_scene(l);
+    ASSERT_TRUE(scene.has_value());
+    EXPECT_EQ(scene->max_light_depth, 0);
+    EXPECT_EQ(scene->rooms[0].lights.size(), 2u);
+    std::mt19937_64 rng(36);
+    expect_agreement(l, 0, rng, 400);
 }
 
 // A non-convex room's own walls cast shadows: lamps in both arms of an L,

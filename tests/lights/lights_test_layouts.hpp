@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <random>
 #include <string>
 #include <utility>
@@ -99,6 +100,28 @@ inline layout::Layout low_ceiling() {
              make_rect({0, 1.25, 0}, {0, 0, -1}, 1.5, 2.5), -1);
     add_light(l, high, {0.3, 2.6, 1.2});
     l.start = {high, {0, 1.6, 1}, 0.0};
+    return l;
+}
+
+// "star": a prism room on a star of `corners` corners, at radii 5 and 4 m in
+// turn (corner i at angle 2πi / corners), y 0..3, lit by `lights` lamps on a
+// ring of radius 2 m at y = 2 (lamp i at angle 2π(i + 0.5) / lights). Every
+// wall can be crossed (corners lie behind its line), and a lamp lies behind
+// the planes of about half of them (478 of 1,000).
+inline layout::Layout star_room(int corners, int lights) {
+    layout::Layout l = lit_layout("star");
+    const double pi = 3.14159265358979323846;
+    std::vector<glm::dvec2> floor;
+    for (int i = 0; i < corners; ++i) {
+        const double a = 2.0 * pi * i / corners, r = i % 2 == 0 ? 5.0 : 4.0;
+        floor.emplace_back(r * std::cos(a), r * std::sin(a));
+    }
+    l.rooms.push_back(test::prism_room("star", std::move(floor), 0.0, 3.0));
+    for (int i = 0; i < lights; ++i) {
+        const double a = 2.0 * pi * (i + 0.5) / lights;
+        add_light(l, 0, {2.0 * std::cos(a), 2.0, 2.0 * std::sin(a)});
+    }
+    l.start = {0, {0, 1.6, 0}, 0.0};
     return l;
 }
 
