@@ -11,19 +11,6 @@
 namespace impossible::hostile {
 namespace {
 
-// A star of `n` corners around the origin, alternately `outer` and `inner`
-// metres from it, as a play-area file's polygon.
-std::string packing_star(int n, double outer, double inner) {
-    std::string out = "[";
-    char corner[64];
-    for (int k = 0; k < n; ++k) {
-        const double a = 2.0 * 3.14159265358979323846 * k / n, r = k % 2 ? inner : outer;
-        std::snprintf(corner, sizeof corner, "%s[%.6f,%.6f]", k ? "," : "", r * std::cos(a), r * std::sin(a));
-        out += corner;
-    }
-    return out + "]";
-}
-
 TEST_F(Hostile, GenerateSixRoomsOnFourByFourReportsTheRatio) {
     const Outcome g = run("$BIN generate --play-area 4x4 --rooms 6 --seed 7 --out g.json");
     ASSERT_EQ(g.status, 0) << g.err;
@@ -95,7 +82,7 @@ TEST_F(Hostile, GenerateOnAnLShapedFloorWritesPrismRoomsThatValidate) {
 // a core 1.4 m across holds none, and the message says that. Each run
 // within seconds (the box tests' work is bounded, design::kMaxBoxWork).
 TEST_F(Hostile, GenerateFitsRoomsInTheCoreOfAStarOfLongSpikes) {
-    spit(dir_ / "star.json", packing_star(10'000, 500, 2));
+    spit(dir_ / "star.json", star_polygon(10'000, 500, 2));
     for (const int rooms : {1, 2}) {
         const std::string n = std::to_string(rooms);
         const Outcome g = run("$BIN generate --play-area-file star.json --rooms " + n + " --seed 1 --out g.json", 120);
@@ -114,7 +101,7 @@ TEST_F(Hostile, GenerateFitsRoomsInTheCoreOfAStarOfLongSpikes) {
                    "higher --max-overlap)");
     EXPECT_LT(three.seconds, 20.0);  // 23 s without the bound on the box tests
     EXPECT_FALSE(fs::exists(dir_ / "three.json"));
-    spit(dir_ / "thin.json", packing_star(10'000, 500, 0.7));
+    spit(dir_ / "thin.json", star_polygon(10'000, 500, 0.7));
     const Outcome thin = run("$BIN generate --play-area-file thin.json --rooms 1 --seed 1", 120);
     expect_refused(thin, 1,
                    "no room 1.5 m wide fits in this play area (1000 x 1000 m across; the widest spot found is a "

@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -44,6 +45,19 @@ inline std::string slurp(const fs::path& p) {
 }
 
 inline void spit(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
+
+// A star of `n` corners around the origin, alternately `outer` and `inner`
+// metres from it, as a JSON polygon ([[x, z], ...]).
+inline std::string star_polygon(int n, double outer, double inner) {
+    std::string out = "[";
+    char corner[64];
+    for (int k = 0; k < n; ++k) {
+        const double a = 2.0 * 3.14159265358979323846 * k / n, r = k % 2 ? inner : outer;
+        std::snprintf(corner, sizeof corner, "%s[%.6f,%.6f]", k ? "," : "", r * std::cos(a), r * std::sin(a));
+        out += corner;
+    }
+    return out + "]";
+}
 
 // Single-quotes a word for bash.
 inline std::string q(const std::string& s) {

@@ -68,18 +68,6 @@ std::string identical_rooms(int n, int side = 4) {
            "],\"portals\":[]}";
 }
 
-// A star of n corners, alternately `outer` and `inner` m from the origin.
-std::string star(int n, double outer, double inner) {
-    std::string out = "[";
-    char corner[64];
-    for (int k = 0; k < n; ++k) {
-        const double a = 2.0 * 3.14159265358979323846 * k / n, r = k % 2 ? inner : outer;
-        std::snprintf(corner, sizeof corner, "%s[%.6f,%.6f]", k ? "," : "", r * std::cos(a), r * std::sin(a));
-        out += corner;
-    }
-    return out + "]";
-}
-
 std::size_t count(const std::string& text, const std::string& what) {
     std::size_t n = 0;
     for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
@@ -178,7 +166,7 @@ TEST_F(Hostile, AStarOf10000CornersPlotsAt4096PixelsWithinLimits) {
     // image, so at 4096, a quarter of the pixels, the bounds are a quarter:
     // 159 MB and 3 to 4 s now, about 1.8 GB and 10 s before.
     spit(dir_ / "star.json",
-         "{\"format\":\"impossible-layout\",\"version\":1,\"play_area\":{\"polygon\":" + star(10000, 50, 40) +
+         "{\"format\":\"impossible-layout\",\"version\":1,\"play_area\":{\"polygon\":" + star_polygon(10000, 50, 40) +
              "},\"start\":{\"room\":\"a\",\"position\":[0,1.6,0],\"yaw_deg\":0},"
              "\"rooms\":[{\"id\":\"a\",\"min\":[-2,0,-2],\"max\":[2,2.5,2]}],\"portals\":[]}");
     const Measured m = measured("$BIN plan star.json --out p.png --max-size 4096 >out.txt 2>err.txt", dir_, 120);
@@ -199,11 +187,11 @@ TEST_F(Hostile, AStarOf10000CornersPlotsAt4096PixelsWithinLimits) {
 TEST_F(Hostile, GenerateOnAStarOf10000CornersTakesSeconds) {
     // Spikes from 0.7 m to 50 m: no room of 1.5 m fits, so every try fails.
     // (From 2 m, the core holds two rooms: generate_packing_test.cpp.)
-    spit(dir_ / "spiky.json", star(10000, 50, 0.7));
+    spit(dir_ / "spiky.json", star_polygon(10000, 50, 0.7));
     const Outcome spiky = run("$BIN generate --play-area-file spiky.json --rooms 2 --seed 1", 120);
     expect_refused(spiky, 1, "no room 1.5 m wide fits in this play area");
     EXPECT_LT(spiky.seconds, kSeconds);  // over 60 s before
-    spit(dir_ / "star.json", "{\"polygon\": " + star(10000, 50, 40) + "}");
+    spit(dir_ / "star.json", "{\"polygon\": " + star_polygon(10000, 50, 40) + "}");
     const Outcome fits = run("$BIN generate --play-area-file star.json --rooms 8 --seed 3 --out g.json", 120);
     ASSERT_EQ(fits.status, 0) << fits.err;
     EXPECT_LT(fits.seconds, kSeconds);
