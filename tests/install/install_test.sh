@@ -106,6 +106,10 @@ has "$tmp/headless.log" '^render 640x240: [1-9][0-9]* draw calls, [1-9][0-9]* po
 # The tracer and the rasteriser agree but for edge pixels (docs/accuracy.md).
 differ=$(sed -n 's/.*trace: \([0-9]*\) of.*/\1/p' "$tmp/headless.log")
 [ "$differ" -lt 1536 ] || fail "render and trace differ in $differ cell ids (1 % or more)"
+# docs/api.md shows the line the program prints (on llvmpipe), counts and all.
+shown=$(grep -m1 '^render 640x240:' "$src/docs/api.md")
+printed=$(grep -m1 '^render 640x240:' "$tmp/headless.log")
+[ "$printed" = "$shown" ] || fail "docs/api.md shows '$shown', examples/headless printed '$printed'"
 "$tmp/headless" "$tmp/no-such.json" >"$tmp/headless-bad.log" 2>&1 && fail "examples/headless loaded a missing file"
 has "$tmp/headless-bad.log" "no-such\.json"
 cat "$tmp/headless.log"
