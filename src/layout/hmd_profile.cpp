@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "base/file_io.hpp"
+#include "base/format.hpp"
 #include "layout/checker.hpp"
 #include "layout/json_doc.hpp"
 #include "math/polygon.hpp"
@@ -18,12 +19,8 @@ using detail::json;
 using detail::NumberKind;
 using detail::Path;
 
-std::string degrees(double v) {
-    std::string s = std::to_string(v);
-    while (s.size() > 1 && s.back() == '0') s.pop_back();
-    if (!s.empty() && s.back() == '.') s.pop_back();
-    return s;
-}
+// The shortest decimal that reads back to v: -89.50000001 is not "-89.5".
+std::string degrees(double v) { return format_number(v); }
 
 std::optional<math::FovAngles> read_fov(Checker& check, const Path& at, const json& j) {
     if (!check.expect_object(at, j) ||

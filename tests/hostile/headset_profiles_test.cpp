@@ -91,6 +91,9 @@ TEST_F(Hostile, FovAnglesAreChecked) {
                    "--fov-angles: expected 4 comma-separated numbers, got 7");
     expect_refused(run("$BIN render lay.json --size 8x8 --fov-angles -90,40,40,-45"), 1,
                    "--fov-angles: left eye: -90 is not an angle within ±89.5 degrees");
+    // The value as given, not rounded to six places into the bound itself (issue 38).
+    expect_refused(run("$BIN render lay.json --size 8x8 --fov-angles -89.50000001,40,40,-45"), 1,
+                   "--fov-angles: left eye: -89.50000001 is not an angle within ±89.5 degrees");
     expect_refused(run("$BIN trace lay.json --size 8x8 --fov-angles -50,40,40,-45,-40,50,nan,-45"), 1,
                    "--fov-angles: 'nan' is not a finite number");
     expect_refused(run("$BIN render lay.json --size 8x8 --fov-angles -50,40,40,-45,10,5,40,-45"), 1,
