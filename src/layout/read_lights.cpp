@@ -190,7 +190,11 @@ void read_lighting(Checker& check, const json& root, std::vector<RoomDraft>& roo
         if (!lit) {
             only_with_lights(check, top / "light_depth");
         } else if (!v->is_number_integer() || v->get<std::int64_t>() < 0 || v->get<std::int64_t>() > kMaxLightDepth) {
-            const std::string got = v->is_number() ? format_number(v->get<double>()) : json_type_name(*v);
+            std::string got = v->is_number() ? format_number(v->get<double>()) : json_type_name(*v);
+            // 2.0 or 1e1: a JSON decimal, which "(got 2)" would hide.
+            const double d = v->is_number_float() ? v->get<double>() : 0.5;
+            if (d == std::floor(d))
+                got = "a decimal number equal to " + got + (d >= 0 && d <= kMaxLightDepth ? "; write " + got : "");
             check.error(top / "light_depth",
                         "must be an integer from 0 to " + std::to_string(kMaxLightDepth) + " (got " + got + ")");
         } else {

@@ -96,6 +96,11 @@ TEST(LayoutLights, LightDepthIsAJsonIntegerFrom0To16) {
         const std::string text = lit("", lights + "\"light_depth\": " + bad + ",");
         expect_one_error(text, bad + ",", "light_depth: must be an integer from 0 to 16");
     }
+    // Not "(got 2)" for 2.0 (issue 38): the number was written as a decimal.
+    expect_one_error(lit("", lights + "\"light_depth\": 2.0,"), "2.0,",
+                     "light_depth: must be an integer from 0 to 16 (got a decimal number equal to 2; write 2)");
+    expect_one_error(lit("", lights + "\"light_depth\": 2.5,"), "2.5,",
+                     "light_depth: must be an integer from 0 to 16 (got 2.5)");
 }
 
 TEST(LayoutLights, AmbientIsThreeNumbersAtLeast0) {
