@@ -135,7 +135,7 @@ std::optional<SurfaceHit> hit_portal_box(const ScenePortal& portal, const dvec3&
     auto try_face = [&](int axis, double coord, double sign, const dvec3& min, const dvec3& max, bool is_inner) {
         const std::optional<double> t = hit_axis_rect(AxisRect{axis, coord, sign, min, max}, lo, ld);
         if (t && clip.keeps(origin + *t * dir) && (!best || *t < best->t)) {
-            keep_nearest(best, *t, sign * frame[axis]);
+            best = SurfaceHit{*t, sign * frame[axis]};
             inner_hit = is_inner;
         }
     };
