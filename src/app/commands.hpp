@@ -41,6 +41,11 @@ std::span<const Command> commands();
 // `impossible --help`: the usage line and a line for each command.
 std::string overview();
 
+// Runs one command on its arguments (those after its name): UsageError and
+// InputError become the exit status and one line on `err` (run_command.cpp;
+// the web build's dispatcher shares it).
+int run_command(const Command& command, const Args& rest, std::ostream& out, std::ostream& err);
+
 // Dispatches args[0] to a command; prints the overview for --help or nothing.
 int run_main(const Args& args, std::ostream& out, std::ostream& err);
 

@@ -1,4 +1,3 @@
-#include <exception>
 #include <iostream>
 #include <string_view>
 
@@ -56,21 +55,7 @@ int run_main(const Args& args, std::ostream& out, std::ostream& err) {
         err << "impossible: unknown command '" << one_line(name, 100) << "'\n" << overview();
         return kExitUsage;
     }
-    const Args rest(args.begin() + 1, args.end());
-    try {
-        return command->run(rest, out, err);
-    } catch (const UsageError& e) {
-        // Messages name paths and values the user gave, which may hold
-        // newlines or megabytes: each is printed as one line, cut.
-        err << "impossible " << name << ": " << one_line(e.what()) << " (see impossible " << name << " --help)\n";
-        return kExitUsage;
-    } catch (const InputError& e) {
-        err << "impossible " << name << ": " << one_line(e.what()) << "\n";
-        return kExitBadInput;
-    } catch (const std::exception& e) {
-        err << "impossible " << name << ": " << one_line(e.what()) << "\n";
-        return kExitBadInput;
-    }
+    return run_command(*command, Args(args.begin() + 1, args.end()), out, err);
 }
 
 }  // namespace impossible::app

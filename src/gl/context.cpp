@@ -34,14 +34,21 @@ Result<void> make_current(const Context& context) {
     if (!impl->backend.make_current(impl->backend.state.get()))
         return Error{std::string(backend_name(context.backend)) + ": cannot make the context current again"};
     current_context = impl;
+#if !defined(__EMSCRIPTEN__)
     if (functions_from != reinterpret_cast<const void*>(impl->backend.load)) {
         gladLoadGL(reinterpret_cast<GLADloadfunc>(impl->backend.load));
         functions_from = reinterpret_cast<const void*>(impl->backend.load);
     }
+#endif
     return {};
 }
 
-const char* backend_name(Backend backend) { return backend == Backend::Egl ? "egl" : "osmesa"; }
+const char* backend_name(Backend backend) {
+#if defined(__EMSCRIPTEN__)
+    if (backend == Backend::Egl) return "webgl";
+#endif
+    return backend == Backend::Egl ? "egl" : "osmesa";
+}
 
 std::optional<Backend> parse_backend(const std::string& name) {
     if (name == "egl") return Backend::Egl;
@@ -53,10 +60,12 @@ Result<Context> create_context(Backend backend) {
     current_context = nullptr;  // whatever happens, the new context or none is current
     BackendContext made = backend == Backend::Egl ? create_egl_context() : create_osmesa_context();
     if (!made.error.empty()) return Error{made.error};
+#if !defined(__EMSCRIPTEN__)
     const int version = gladLoadGL(reinterpret_cast<GLADloadfunc>(made.load));
     functions_from = reinterpret_cast<const void*>(made.load);
     if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < 45)
         return Error{std::string(backend_name(backend)) + ": OpenGL 4.5 core functions could not be loaded"};
+#endif
     Context context;
     context.backend = backend;
     context.renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
@@ -69,6 +78,9 @@ Result<Context> create_context(Backend backend) {
 Result<void> load_functions(void* (*get_proc_address)(const char* name)) {
     if (get_proc_address == nullptr) return Error{"no GL function loader was given"};
     current_context = nullptr;
+#if defined(__EMSCRIPTEN__)
+    return Error{"the web build loads no GL functions: it calls WebGL 2"};
+#else
     if (functions_from == reinterpret_cast<const void*>(get_proc_address)) return {};
     const int version = gladLoadGL(reinterpret_cast<GLADloadfunc>(get_proc_address));
     if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < 45) {
@@ -77,6 +89,7 @@ Result<void> load_functions(void* (*get_proc_address)(const char* name)) {
     }
     functions_from = reinterpret_cast<const void*>(get_proc_address);
     return {};
+#endif
 }
 
 Result<Context> create_context_with_fallback(std::optional<Backend> requested, std::string* fallback_note) {

@@ -1,5 +1,7 @@
 #include "gl/shader.hpp"
 
+#include "gl/shader_profile.hpp"
+
 namespace impossible::gl {
 namespace {
 
@@ -25,9 +27,9 @@ std::string info_log(GLuint object, bool is_program) {
 Result<Program> build_program(const std::vector<ShaderSource>& stages, const std::string& defines) {
     Program program(glCreateProgram());
     std::vector<Shader> shaders;
+    std::vector<NamedBinding> bindings;  // the web profile's (gl/shader_profile.hpp)
     for (const ShaderSource& stage : stages) {
-        // "#line 1" keeps the driver's line numbers those of the file.
-        const std::string text = "#version 450 core\n" + defines + "\n#line 1\n" + stage.text;
+        const std::string text = profile_source(defines, stage.text, bindings);
         Shader shader(glCreateShader(stage.stage));
         const char* ptr = text.c_str();
         glShaderSource(shader.get(), 1, &ptr, nullptr);
@@ -43,6 +45,15 @@ Result<Program> build_program(const std::vector<ShaderSource>& stages, const std
     glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
     if (ok != GL_TRUE) return Error{program_name(stages) + ": link error: " + info_log(program.get(), true)};
     for (const Shader& s : shaders) glDetachShader(program.get(), s.get());
+    for (const NamedBinding& b : bindings) {
+        if (b.block) {
+            const GLuint index = glGetUniformBlockIndex(program.get(), b.name.c_str());
+            if (index != GL_INVALID_INDEX) glUniformBlockBinding(program.get(), index, static_cast<GLuint>(b.binding));
+        } else {
+            const GLint location = glGetUniformLocation(program.get(), b.name.c_str());
+            if (location >= 0) glProgramUniform1i(program.get(), location, b.binding);
+        }
+    }
     return program;
 }
 

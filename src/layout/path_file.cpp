@@ -2,6 +2,8 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
+#include <cctype>
 #include <sstream>
 #include <string_view>
 
@@ -44,8 +46,19 @@ bool parse_field(const std::string& field, double& value) {
         ++first;
         if (first == last || *first == '-' || *first == '+') return false;
     }
+#if defined(__EMSCRIPTEN__)
+    // Emscripten's libc++ has no floating-point from_chars: strtod, less
+    // what from_chars refuses (leading space, hexadecimal).
+    const std::string text(first, last);
+    if (text.empty() || std::isspace(static_cast<unsigned char>(text[0])) || text.find_first_of("xX") != std::string::npos)
+        return false;
+    char* end = nullptr;
+    value = std::strtod(text.c_str(), &end);
+    return end == text.c_str() + text.size() && std::isfinite(value);
+#else
     const auto [ptr, ec] = std::from_chars(first, last, value);
     return ec == std::errc() && ptr == last && std::isfinite(value);
+#endif
 }
 
 // One pose's six fields from f[first..first + 6): an empty string, or the

@@ -57,6 +57,13 @@ GpuScene upload_scene(const scene::Scene& scene) {
     gpu.vertices = gl::create_buffer();
     gpu.indices = gl::create_buffer();
     gpu.vao = gl::create_vertex_array();
+    gpu.face_indices = gl::create_buffer();
+    gpu.face_vao = gl::create_vertex_array();
+    // The vertex arrays first: WebGL types a buffer by its first binding, and
+    // an index buffer must be bound as one before its data comes
+    // (gl/webgl.hpp).
+    describe_vertices(gpu.vao.get(), gpu.vertices.get(), gpu.indices.get());
+    describe_vertices(gpu.face_vao.get(), gpu.vertices.get(), gpu.face_indices.get());
     // Zero-size buffers are valid GL but glNamedBufferStorage rejects size 0.
     glNamedBufferStorage(gpu.vertices.get(), static_cast<GLsizeiptr>(scene.vertices.size() * sizeof(scene::Vertex) + 1),
                          nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -67,10 +74,6 @@ GpuScene upload_scene(const scene::Scene& scene) {
     glNamedBufferSubData(gpu.indices.get(), 0, static_cast<GLsizeiptr>(scene.indices.size() * sizeof(std::uint32_t)),
                          scene.indices.data());
 
-    gpu.face_indices = gl::create_buffer();
-    gpu.face_vao = gl::create_vertex_array();
-    describe_vertices(gpu.vao.get(), gpu.vertices.get(), gpu.indices.get());
-    describe_vertices(gpu.face_vao.get(), gpu.vertices.get(), gpu.face_indices.get());
 
     gpu.textures.reserve(scene.textures.size());
     for (const scene::SceneTexture& t : scene.textures) gpu.textures.push_back(upload_texture(t));
