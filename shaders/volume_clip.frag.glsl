@@ -7,9 +7,16 @@
 // and its three axes divided by its half extents, so that a point is inside
 // when |dot(p - centre, axis)| <= 1 for all three.
 in vec3 v_volume_position;
+#if defined(WEBGL)
+// WebGL 2 has no storage buffers: a uniform block (gl/webgl.hpp's size).
+layout(std140, binding = 3) uniform VolumeBoxes {
+    vec4 volume_boxes[1024];
+};
+#else
 layout(std430, binding = 3) readonly buffer VolumeBoxes {
     vec4 volume_boxes[];
 };
+#endif
 uniform int u_volume_first;
 uniform int u_volume_count;
 // -1: the cell's own surfaces, hidden inside every volume; k >= 0: a volume's

@@ -21,6 +21,7 @@
 #undef glDeleteBuffers
 #undef glDeleteTextures
 #undef glDeleteVertexArrays
+#undef glBindBufferBase
 
 // WebGL's extensions, called on the context emscripten made current (GLctx).
 EM_JS(void, impossible_clip_control, (int origin, int depth), {
@@ -197,6 +198,9 @@ void create_buffers(GLsizei n, GLuint* names) { glGenBuffers(n, names); }
 void create_vertex_arrays(GLsizei n, GLuint* names) { glGenVertexArrays(n, names); }
 void create_textures(GLenum target, GLsizei n, GLuint* names) {
     glGenTextures(n, names);
+    // Cube map arrays (the shadow maps) are 2D arrays of six layers a cube:
+    // shadow_lookup.frag.glsl's WEBGL branch picks the face itself.
+    if (target == GL_TEXTURE_CUBE_MAP_ARRAY) target = GL_TEXTURE_2D_ARRAY;
     for (GLsizei i = 0; i < n; ++i) texture_targets[names[i]] = target;
 }
 void create_renderbuffers(GLsizei n, GLuint* names) { glGenRenderbuffers(n, names); }
@@ -215,11 +219,44 @@ void delete_vertex_arrays(GLsizei n, const GLuint* names) {
     glDeleteVertexArrays(n, names);
 }
 
-void named_buffer_storage(GLuint buffer, GLsizeiptr size, const void* data, GLbitfield) {
-    with_any_buffer(buffer, [&](GLenum t) { glBufferData(t, size, data, GL_STATIC_DRAW); });
-}
 void named_buffer_data(GLuint buffer, GLsizeiptr size, const void* data, GLenum usage) {
-    with_any_buffer(buffer, [&](GLenum t) { glBufferData(t, size, data, usage); });
+    with_any_buffer(buffer, [&](GLenum t) {
+        if (size >= kUniformBufferBytes || index_buffers[buffer]) {
+            glBufferData(t, size, data, usage);
+            return;
+        }
+        glBufferData(t, kUniformBufferBytes, nullptr, usage);
+        if (data && size > 0) glBufferSubData(t, 0, size, data);
+    });
+}
+void named_buffer_storage(GLuint buffer, GLsizeiptr size, const void* data, GLbitfield) {
+    named_buffer_data(buffer, size, data, GL_STATIC_DRAW);
+}
+void bind_buffer_base(GLenum target, GLuint index, GLuint buffer) {
+    glBindBufferBase(target == GL_SHADER_STORAGE_BUFFER ? GL_UNIFORM_BUFFER : target, index, buffer);
+    bound.buffers[GL_UNIFORM_BUFFER] = buffer;
+}
+void copy_image_sub_data(GLuint from, GLenum from_target, GLint from_level, GLint x, GLint y, GLint, GLuint to,
+                         GLenum to_target, GLint to_level, GLint u, GLint v, GLint, GLsizei width, GLsizei height,
+                         GLsizei) {
+    static GLuint read = 0, draw = 0;
+    if (!read) {
+        glGenFramebuffers(1, &read);
+        glGenFramebuffers(1, &draw);
+    }
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, read);
+    if (from_target == GL_RENDERBUFFER)
+        glFramebufferRenderbuffer(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, from);
+    else
+        glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, from_target, from, from_level);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, draw);
+    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, to_target, to, to_level);
+    const bool scissor = glIsEnabled(GL_SCISSOR_TEST);
+    if (scissor) glDisable(GL_SCISSOR_TEST);
+    glBlitFramebuffer(x, y, x + width, y + height, u, v, u + width, v + height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    if (scissor) glEnable(GL_SCISSOR_TEST);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, bound.read_framebuffer);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, bound.draw_framebuffer);
 }
 void named_buffer_sub_data(GLuint buffer, GLintptr offset, GLsizeiptr size, const void* data) {
     with_any_buffer(buffer, [&](GLenum t) { glBufferSubData(t, offset, size, data); });

@@ -106,6 +106,17 @@ void vertex_array_attrib_format(GLuint vao, GLuint index, GLint size, GLenum typ
                                 GLuint offset);
 void vertex_array_attrib_binding(GLuint vao, GLuint index, GLuint binding);
 
+// Storage buffers become uniform buffers of at most kUniformBufferBytes
+// (the shaders' WEBGL branches declare them so); every buffer store is at
+// least that big, since WebGL refuses a draw whose bound block is larger
+// than its buffer.
+inline constexpr GLsizeiptr kUniformBufferBytes = 16384;
+void bind_buffer_base(GLenum target, GLuint index, GLuint buffer);
+// glCopyImageSubData of one 2D level, as a blit (scissor off).
+void copy_image_sub_data(GLuint from, GLenum from_target, GLint from_level, GLint x, GLint y, GLint z, GLuint to,
+                         GLenum to_target, GLint to_level, GLint u, GLint v, GLint w, GLsizei width, GLsizei height,
+                         GLsizei depth);
+
 void clip_control(GLenum origin, GLenum depth);
 void color_mask_i(GLuint index, GLboolean r, GLboolean g, GLboolean b, GLboolean a);
 void get_query_object_ui64v(GLuint query, GLenum name, GLuint64* value);
@@ -187,6 +198,7 @@ void program_uniform(GLuint program, T&& set) {
 #define glViewportIndexedf(...) ::impossible::gl::webgl::unsupported("glViewportIndexedf")
 #define glBeginConditionalRender(...) ::impossible::gl::webgl::unsupported("glBeginConditionalRender")
 #define glEndConditionalRender(...) ::impossible::gl::webgl::unsupported("glEndConditionalRender")
-#define glCopyImageSubData(...) ::impossible::gl::webgl::unsupported("glCopyImageSubData")
+#define glCopyImageSubData ::impossible::gl::webgl::copy_image_sub_data
+#define glBindBufferBase ::impossible::gl::webgl::bind_buffer_base
 #define glGetMultisamplefv(...) ::impossible::gl::webgl::unsupported("glGetMultisamplefv")
 #define glMultiDrawElementsIndirect(...) ::impossible::gl::webgl::unsupported("glMultiDrawElementsIndirect")
