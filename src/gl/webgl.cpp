@@ -162,10 +162,14 @@ void read_extensions() {
     found.clip_control = impossible_has_extension("EXT_clip_control") != 0;
     found.draw_buffers_indexed = impossible_has_extension("OES_draw_buffers_indexed") != 0;
     found.float_blend = impossible_has_extension("EXT_float_blend") != 0;
+    // The page has one WebGL context, which every gl::Context made on it
+    // shares (gl/context_web.cpp): what is known of its objects stays, and
+    // the bindings are put back to none, as each new state cache assumes.
+    glUseProgram(0);
+    glBindVertexArray(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glActiveTexture(GL_TEXTURE0);
     bound = Bindings{};
-    texture_targets.clear();
-    index_buffers.clear();
-    vertex_arrays.clear();
 }
 
 GLuint current_program() { return bound.program; }

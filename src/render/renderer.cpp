@@ -1,4 +1,5 @@
 #include "render/renderer.hpp"
+#include "render/web_profile.hpp"
 
 #include <algorithm>
 #include <cassert>
@@ -20,6 +21,7 @@ namespace {
 // mode's programs, the light images of its light depth and, for
 // render-to-texture portals, their program and targets.
 Result<void> prepare_frame(RendererParts& parts, const FrameDesc& frame) {
+    if (Result<void> possible = web_profile_check(frame); !possible) return possible;
     // Refused before any buffer is made (math/view_limits.hpp).
     const long long samples = 2LL * frame.eye_width * frame.eye_height * frame.samples;
     if (samples > math::limits::kMaxFrameSamples)
