@@ -110,5 +110,22 @@ TEST(ApiEyePoses, RenderAndTraceEqualTheCommands) {
     }
 }
 
+// docs/api.md's example (Headsets, eye poses), as it is there.
+TEST(ApiEyePoses, TheDocsExample) {
+    namespace api = impossible::api;
+    api::View canted;  // each eye turned 5° outwards, as canted displays are
+    canted.eye_poses = std::array<api::EyePose, 2>{api::eye_pose({-0.032, 0, 0, 5, 0, 0}),
+                                                   api::eye_pose({0.032, 0, 0, -5, 0, 0})};
+
+    api::View index_like;
+    api::use_hmd_profile(index_like, *api::load_hmd_profile(source_file("profiles/canted-5deg.json")));
+
+    const Result<math::View> a = resolve_view(Layout::builtin().data().layout, canted);
+    const Result<math::View> b = resolve_view(Layout::builtin().data().layout, index_like);
+    ASSERT_TRUE(a && b);
+    EXPECT_EQ((*a->eye_offsets)[0].rotation, (*b->eye_offsets)[0].rotation);  // the same 5° turn
+    EXPECT_EQ((*b->eye_offsets)[1].position, math::dvec3(0.03175, 0, 0));
+}
+
 }  // namespace
 }  // namespace impossible::api::eye_poses_test
