@@ -218,8 +218,8 @@ void visible_areas_of(py::handle areas, std::array<api::EyeOptics, 2>& eyes) {
 // --eye-poses (pitch within ±89.5), or (position, orientation) as a profile
 // gives it (3 numbers, and a unit quaternion x, y, z, w).
 api::EyePose eye_pose_of(py::handle value, const char* what) {
-    const std::string expected = std::string(what) +
-                                 ": expected 6 numbers (x, y, z, yaw, pitch, roll) or (position, orientation)";
+    const std::string expected =
+        std::string(what) + ": expected 6 numbers (x, y, z, yaw, pitch, roll) or (position, orientation)";
     if (py::isinstance<py::str>(value) || !py::isinstance<py::sequence>(value)) raise(PyExc_TypeError, expected);
     const auto seq = py::reinterpret_borrow<py::sequence>(value);
     if (seq.size() == 2) {
@@ -298,9 +298,9 @@ py::dict profile_dict(const api::HmdProfile& p) {
     if (p.eye_poses) {
         py::list both;
         for (const api::EyePose& e : *p.eye_poses)
-            both.append(py::make_tuple(py::make_tuple(e.position[0], e.position[1], e.position[2]),
-                                       py::make_tuple(e.orientation[0], e.orientation[1], e.orientation[2],
-                                                      e.orientation[3])));
+            both.append(
+                py::make_tuple(py::make_tuple(e.position[0], e.position[1], e.position[2]),
+                               py::make_tuple(e.orientation[0], e.orientation[1], e.orientation[2], e.orientation[3])));
         poses = py::tuple(both);
     }
     d["eye_poses"] = poses;

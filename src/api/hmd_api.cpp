@@ -30,7 +30,8 @@ Expected<HmdProfile> load_hmd_profile(const std::string& path) {
         out.eye_height = read->eye_height;
         out.eyes = {public_optics(read->eyes[0]), public_optics(read->eyes[1])};
         if (read->eye_poses)
-            out.eye_poses = std::array<EyePose, 2>{to_eye_pose((*read->eye_poses)[0]), to_eye_pose((*read->eye_poses)[1])};
+            out.eye_poses =
+                std::array<EyePose, 2>{to_eye_pose((*read->eye_poses)[0]), to_eye_pose((*read->eye_poses)[1])};
         return out;
     });
 }

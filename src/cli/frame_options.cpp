@@ -266,7 +266,8 @@ void check_headset_combinations(const ParsedArgs& args) {
     if (angles && hmd)
         throw UsageError("--fov-angles and --hmd exclude each other (the profile gives each eye's angles)");
     if (args.value("--eye-poses") && args.value("--ipd"))
-        throw UsageError("--eye-poses and --ipd exclude each other (the eyes' positions give the distance between them)");
+        throw UsageError(
+            "--eye-poses and --ipd exclude each other (the eyes' positions give the distance between them)");
 }
 
 void finish_frame_options(const ParsedArgs& args, FrameOptions& o) {

@@ -137,8 +137,8 @@ bool read_eye_pose(Checker& check, const Path& at, const json& j, EyeRead& eye) 
         return false;
     }
     const std::optional<math::dvec3> p = read_eye_position(check, at / "position", j["position"]);
-    const std::optional<math::dvec4> q = p ? read_orientation(check, at / "orientation", j["orientation"])
-                                           : std::nullopt;
+    const std::optional<math::dvec4> q =
+        p ? read_orientation(check, at / "orientation", j["orientation"]) : std::nullopt;
     if (!p || !q) return false;
     eye.pose = math::QuaternionPose{*p, *q};
     return true;

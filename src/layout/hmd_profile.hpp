@@ -20,7 +20,7 @@ namespace impossible::layout {
 
 struct HmdProfile {
     std::string name;
-    std::string source;  // where the numbers come from
+    std::string source;                   // where the numbers come from
     double ipd = 0.064;                   // not read with eye_poses
     int eye_width = 0, eye_height = 0;    // the same for both eyes
     std::array<math::EyeOptics, 2> eyes;  // left, right

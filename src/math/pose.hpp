@@ -39,9 +39,9 @@ struct Eye {
 // An eye's pose relative to the head, as a headset gives it (WebXR's
 // XRView.transform relative to the viewer, OpenXR's XrView.pose relative to
 // the view space; math/eyes.hpp places eyes by it).
-struct EyeOffset {            // an eye's pose in the head's coordinates (x right, y up, z back)
-    dvec3 position{0.0};      // metres from the head centre
-    dmat3 rotation{1.0};      // the eye's axes (columns right, up, back) in head coordinates
+struct EyeOffset {        // an eye's pose in the head's coordinates (x right, y up, z back)
+    dvec3 position{0.0};  // metres from the head centre
+    dmat3 rotation{1.0};  // the eye's axes (columns right, up, back) in head coordinates
     bool operator==(const EyeOffset&) const = default;
 };
 

@@ -95,8 +95,8 @@ TEST(ApiEyePoses, RenderAndTraceEqualTheCommands) {
         const View& view;
         std::string options;
     };
-    for (const Case& c : {Case{by_angles, "--eye-poses -0.032,0,0,5,0,0,0.032,0,0,-5,0,0"},
-                          Case{by_profile, "--hmd '" + hmd + "'"}}) {
+    for (const Case& c :
+         {Case{by_angles, "--eye-poses -0.032,0,0,5,0,0,0.032,0,0,-5,0,0"}, Case{by_profile, "--hmd '" + hmd + "'"}}) {
         for (const std::string command : {"render", "trace"}) {
             const std::string colour = (dir / "c.png").string(), ids = (dir / "i.png").string();
             const std::string line = std::string(IMPOSSIBLE_BINARY) + " " + command + " '" + layout_path + "' " +
@@ -114,8 +114,8 @@ TEST(ApiEyePoses, RenderAndTraceEqualTheCommands) {
 TEST(ApiEyePoses, TheDocsExample) {
     namespace api = impossible::api;
     api::View canted;  // each eye turned 5° outwards, as canted displays are
-    canted.eye_poses = std::array<api::EyePose, 2>{api::eye_pose({-0.032, 0, 0, 5, 0, 0}),
-                                                   api::eye_pose({0.032, 0, 0, -5, 0, 0})};
+    canted.eye_poses =
+        std::array<api::EyePose, 2>{api::eye_pose({-0.032, 0, 0, 5, 0, 0}), api::eye_pose({0.032, 0, 0, -5, 0, 0})};
 
     api::View index_like;
     api::use_hmd_profile(index_like, *api::load_hmd_profile(source_file("profiles/canted-5deg.json")));

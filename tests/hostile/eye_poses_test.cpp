@@ -23,11 +23,13 @@ std::string posed_profile(const std::string& left_pose, const std::string& right
            left_pose +
            "\"fov\": {\"left\": -50, \"right\": 45, \"up\": 45, \"down\": -45}, \"resolution\": [16, 12]},\n"
            "  \"right\": {" +
-           right_pose + "\"fov\": {\"left\": -45, \"right\": 50, \"up\": 45, \"down\": -45}, \"resolution\": [16, 12]}\n}\n";
+           right_pose +
+           "\"fov\": {\"left\": -45, \"right\": 50, \"up\": 45, \"down\": -45}, \"resolution\": [16, 12]}\n}\n";
 }
 
 // Each eye turned 5° outwards: quaternions (0, ±sin 2.5°, 0, cos 2.5°).
-const std::string kLeft = R"("position": [-0.032, 0, 0], "orientation": [0, 0.043619387365336, 0, 0.9990482215818578], )";
+const std::string kLeft =
+    R"("position": [-0.032, 0, 0], "orientation": [0, 0.043619387365336, 0, 0.9990482215818578], )";
 const std::string kRight =
     R"("position": [0.032, 0, 0], "orientation": [0, -0.043619387365336, 0, 0.9990482215818578], )";
 const std::string kCanted = "-0.032,0,0,5,0,0,0.032,0,0,-5,0,0";
@@ -45,8 +47,8 @@ TEST_F(Hostile, EyePosesRenderAndTrace) {
         EXPECT_EQ(a.status, 0) << a.err;
         EXPECT_EQ(slurp(dir_ / "a.png"), slurp(dir_ / "p.png")) << command;
         // --eye-poses replaces the profile's poses, as --size its size.
-        const Outcome r = run("$BIN " + command + " lay.json --hmd hmd.json --eye-poses " +
-                              "0,0,0,0,0,0,0.03,0,0,0,0,0 --out r.png");
+        const Outcome r =
+            run("$BIN " + command + " lay.json --hmd hmd.json --eye-poses " + "0,0,0,0,0,0,0.03,0,0,0,0,0 --out r.png");
         EXPECT_EQ(r.status, 0) << r.err;
         EXPECT_NE(slurp(dir_ / "r.png"), slurp(dir_ / "p.png")) << command;
     }

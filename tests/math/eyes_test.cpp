@@ -102,8 +102,9 @@ TEST(Quaternions, IdentityAndHalfTurnsAreExact) {
 }
 
 TEST(Quaternions, AnglesFollowHeadRotation) {
-    for (const HeadPose& p : {HeadPose{{}, 5.0, 0.0, 0.0}, HeadPose{{}, -5.0, 0.0, 0.0}, HeadPose{{}, 37.0, -21.5, 12.25},
-                              HeadPose{{}, 90.0, 90.0, 90.0}, HeadPose{{}, -170.0, 89.5, -45.0}}) {
+    for (const HeadPose& p :
+         {HeadPose{{}, 5.0, 0.0, 0.0}, HeadPose{{}, -5.0, 0.0, 0.0}, HeadPose{{}, 37.0, -21.5, 12.25},
+          HeadPose{{}, 90.0, 90.0, 90.0}, HeadPose{{}, -170.0, 89.5, -45.0}}) {
         const dmat3 r = quaternion_rotation(angles_quaternion(p));
         EXPECT_TRUE(near_rotation(r, head_rotation(p), 2e-15)) << p.yaw_deg << " " << p.pitch_deg << " " << p.roll_deg;
         EXPECT_NEAR(glm::determinant(r), 1.0, 2e-15);

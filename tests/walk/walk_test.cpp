@@ -120,9 +120,8 @@ TEST(Walker, OffsetEyePastADoorPlaneTheHeadHasNotCrossed) {
     // has the box's inner faces (math::has_inner_faces with Eye::head).
     const layout::Layout l = turned_door();
     Walker w(l);
-    const std::array<math::EyeOffset, 2> offsets = {
-        math::eye_offset(HeadPose{{-0.032, 0.0, -0.05}, 5.0, 0.0, 0.0}),
-        math::eye_offset(HeadPose{{0.032, 0.0, 0.0}, -5.0, 0.0, 0.0})};
+    const std::array<math::EyeOffset, 2> offsets = {math::eye_offset(HeadPose{{-0.032, 0.0, -0.05}, 5.0, 0.0, 0.0}),
+                                                    math::eye_offset(HeadPose{{0.032, 0.0, 0.0}, -5.0, 0.0, 0.0})};
     w.step(at({1.5, 1.6, 0}, -90.0));
     EXPECT_EQ(w.step(at({1.98, 1.6, 0}, -90.0)), none());
     EXPECT_EQ(w.room(), 0);
