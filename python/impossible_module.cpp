@@ -164,6 +164,7 @@ struct ViewBase {
     int max_portal_passes = 10'000;
     double ipd = 0.064, fov = 90;
     std::optional<std::array<api::EyeOptics, 2>> eye_optics;  // fov_angles=, hmd=
+    std::optional<std::array<api::EyePose, 2>> eye_poses;     // eye_poses=, hmd=
 };
 
 std::vector<double> numbers_of(py::handle value, const char* what, const std::string& expected) {
@@ -213,10 +214,43 @@ void visible_areas_of(py::handle areas, std::array<api::EyeOptics, 2>& eyes) {
     }
 }
 
+// One eye of eye_poses: six numbers (x, y, z, yaw, pitch, roll) as
+// --eye-poses (pitch within ±89.5), or (position, orientation) as a profile
+// gives it (3 numbers, and a unit quaternion x, y, z, w).
+api::EyePose eye_pose_of(py::handle value, const char* what) {
+    const std::string expected =
+        std::string(what) + ": expected 6 numbers (x, y, z, yaw, pitch, roll) or (position, orientation)";
+    if (py::isinstance<py::str>(value) || !py::isinstance<py::sequence>(value)) raise(PyExc_TypeError, expected);
+    const auto seq = py::reinterpret_borrow<py::sequence>(value);
+    if (seq.size() == 2) {
+        const std::vector<double> p = numbers_of(seq[0], what, "a position of 3 numbers");
+        const std::vector<double> q = numbers_of(seq[1], what, "an orientation of 4 numbers (x, y, z, w)");
+        if (p.size() != 3 || q.size() != 4)
+            raise(PyExc_ValueError, std::string(what) + ": expected a position of 3 numbers and an orientation of 4");
+        return {{p[0], p[1], p[2]}, {q[0], q[1], q[2], q[3]}};
+    }
+    const api::Pose pose = pose_of(value, 1e7, what);
+    if (!(std::abs(pose.pitch) <= 89.5))
+        raise(PyExc_ValueError, std::string(what) + ": pitch " + py::str(py::float_(pose.pitch)).cast<std::string>() +
+                                    " is not within ±89.5 degrees");
+    return api::eye_pose(pose);
+}
+
+// eye_poses: the left and the right eye's pose relative to the head.
+std::array<api::EyePose, 2> eye_poses_of(py::handle value) {
+    const char* expected = "eye_poses: expected two poses, the left and the right eye's";
+    if (py::isinstance<py::str>(value) || !py::isinstance<py::sequence>(value)) raise(PyExc_TypeError, expected);
+    const auto seq = py::reinterpret_borrow<py::sequence>(value);
+    if (seq.size() != 2) raise(PyExc_ValueError, std::string(expected) + ", got " + std::to_string(seq.size()));
+    return {eye_pose_of(seq[0], "eye_poses[0]"), eye_pose_of(seq[1], "eye_poses[1]")};
+}
+
 // The eyes of a renderer or a trace, with the CLI's rules: fov, fov_angles
-// and hmd exclude each other; hmd's size and IPD unless size or ipd is given.
+// and hmd exclude each other, as eye_poses and ipd do; hmd's size and IPD or
+// eye poses unless size, ipd or eye_poses is given.
 ViewBase base_of(py::handle size, int samples, py::handle ipd, py::handle fov, py::handle fov_angles,
-                 py::handle visible_area, py::handle hmd) {
+                 py::handle visible_area, py::handle hmd, py::handle eye_poses) {
+    if (!eye_poses.is_none() && !ipd.is_none()) raise(PyExc_ValueError, "eye_poses and ipd exclude each other");
     if (!fov.is_none() && !fov_angles.is_none()) raise(PyExc_ValueError, "fov and fov_angles exclude each other");
     if (!hmd.is_none() && !(fov.is_none() && fov_angles.is_none()))
         raise(PyExc_ValueError, std::string(fov.is_none() ? "fov_angles" : "fov") +
@@ -230,7 +264,13 @@ ViewBase base_of(py::handle size, int samples, py::handle ipd, py::handle fov, p
         base.size = {profile.eye_width, profile.eye_height};
         base.ipd = profile.ipd;
         base.eye_optics = profile.eyes;
+        base.eye_poses = profile.eye_poses;
+        if (profile.eye_poses && !ipd.is_none())
+            raise(PyExc_ValueError, "ipd: " + path_string(hmd) +
+                                        " gives each eye's position and orientation, which ipd cannot replace; give "
+                                        "eye_poses instead");
     }
+    if (!eye_poses.is_none()) base.eye_poses = eye_poses_of(eye_poses);
     if (!fov_angles.is_none()) base.eye_optics = optics_of(fov_angles);
     if (!visible_area.is_none()) visible_areas_of(visible_area, *base.eye_optics);
     if (!size.is_none()) base.size = size.cast<std::pair<int, int>>();
@@ -254,6 +294,16 @@ py::dict profile_dict(const api::HmdProfile& p) {
     }
     d["fov_angles"] = py::tuple(angles);
     d["visible_area"] = py::tuple(areas);
+    py::object poses = py::none();
+    if (p.eye_poses) {
+        py::list both;
+        for (const api::EyePose& e : *p.eye_poses)
+            both.append(
+                py::make_tuple(py::make_tuple(e.position[0], e.position[1], e.position[2]),
+                               py::make_tuple(e.orientation[0], e.orientation[1], e.orientation[2], e.orientation[3])));
+        poses = py::tuple(both);
+    }
+    d["eye_poses"] = poses;
     return d;
 }
 
@@ -280,6 +330,7 @@ api::View view_of(const ViewBase& base, py::handle pose, py::handle room, py::ha
     v.ipd = base.ipd;
     v.fov_deg = base.fov;
     v.eye_optics = base.eye_optics;
+    v.eye_poses = base.eye_poses;
     v.time = time;
     v.max_depth = max_depth;
     return v;
@@ -500,8 +551,9 @@ void bind_renderer(py::module_& m) {
                          py::handle ipd, py::handle fov, py::handle fov_angles, py::handle visible_area, py::handle hmd,
                          int max_portal_passes, const std::string& stereo, const std::string& clip,
                          const std::string& depth, const std::string& technique, int texture_from_level,
-                         double texture_scale, bool shadows, int shadow_size, bool occlusion_test, bool cull) {
-                 ViewBase base = base_of(size, samples, ipd, fov, fov_angles, visible_area, hmd);
+                         double texture_scale, bool shadows, int shadow_size, bool occlusion_test, bool cull,
+                         py::handle eye_poses) {
+                 ViewBase base = base_of(size, samples, ipd, fov, fov_angles, visible_area, hmd, eye_poses);
                  base.max_portal_passes = max_portal_passes;
                  return new PyRenderer(layout, base, backend,
                                        render_options_of(stereo, clip, depth, technique, texture_from_level,
@@ -513,7 +565,7 @@ void bind_renderer(py::module_& m) {
              py::arg("stereo") = "clip-shift", py::arg("clip") = "clip-distance", py::arg("depth") = "reversed-z",
              py::arg("technique") = "stencil", py::arg("texture_from_level") = 0, py::arg("texture_scale") = 1.0,
              py::arg("shadows") = true, py::arg("shadow_size") = 512, py::arg("occlusion_test") = false,
-             py::arg("cull") = true)
+             py::arg("cull") = true, py::arg("eye_poses") = py::none())
         .def("render", &PyRenderer::render, py::arg("pose") = py::none(), py::arg("room") = py::none(),
              py::arg("hands") = py::none(), py::arg("time") = 0.0, py::arg("max_depth") = 8,
              py::arg("light_depth") = py::none())
@@ -531,20 +583,22 @@ void bind_renderer(py::module_& m) {
         "trace",
         [](const api::Layout& layout, py::handle size, int samples, py::handle pose, py::handle room, py::handle hands,
            double time, int max_depth, int threads, py::handle light_depth, py::handle ipd, py::handle fov,
-           py::handle fov_angles, py::handle visible_area, py::handle hmd) {
-            const ViewBase base = base_of(size, samples, ipd, fov, fov_angles, visible_area, hmd);
+           py::handle fov_angles, py::handle visible_area, py::handle hmd, py::handle eye_poses) {
+            const ViewBase base = base_of(size, samples, ipd, fov, fov_angles, visible_area, hmd, eye_poses);
             return trace_frame(layout, view_of(base, pose, room, hands, time, max_depth, light_depth), threads);
         },
         py::arg("layout"), py::arg("size") = py::none(), py::arg("samples") = 1, py::arg("pose") = py::none(),
         py::arg("room") = py::none(), py::arg("hands") = py::none(), py::arg("time") = 0.0, py::arg("max_depth") = 8,
         py::arg("threads") = 0, py::arg("light_depth") = py::none(), py::arg("ipd") = py::none(),
         py::arg("fov") = py::none(), py::arg("fov_angles") = py::none(), py::arg("visible_area") = py::none(),
-        py::arg("hmd") = py::none(), "The reference ray tracer (`impossible trace`); no GL context needed");
+        py::arg("hmd") = py::none(), py::arg("eye_poses") = py::none(),
+        "The reference ray tracer (`impossible trace`); no GL context needed");
     m.def(
         "load_hmd_profile",
         [](py::handle path) { return profile_dict(value_or_raise(api::load_hmd_profile(path_string(path)))); },
         py::arg("path"),
-        "A headset profile (`--hmd`) as a dict: name, source, ipd, size, fov_angles (8), visible_area (left, right)");
+        "A headset profile (`--hmd`) as a dict: name, source, ipd, size, fov_angles (8), visible_area (left, right),\n"
+        "eye_poses (None, or each eye's (position, orientation))");
 }
 
 void bind_tools(py::module_& m) {

@@ -120,13 +120,31 @@ struct EyeOptics {
     std::vector<std::array<double, 2>> visible_area;
 };
 
+// One eye's pose relative to the head (docs/headsets.md), as OpenXR's
+// XrView.pose relative to the view space and WebXR's XRView.transform
+// relative to the viewer pose give it: the position in metres in the head's
+// coordinates (x right, y up, z back), at most 1 m from the head centre, and
+// the orientation, a unit quaternion (x, y, z, w) whose length is 1 within
+// 1e-6 (the Valve Index's eyes are turned about ±5° about y, "canted").
+struct EyePose {
+    std::array<double, 3> position{0, 0, 0};
+    std::array<double, 4> orientation{0, 0, 0, 1};
+};
+
+// An eye's pose as `--eye-poses` gives it: position and yaw, pitch and roll
+// in degrees (as `--pose`), in the head's coordinates.
+EyePose eye_pose(const Pose& pose);
+
 // A headset profile (`--hmd FILE.json`, docs/headsets.md).
 struct HmdProfile {
     std::string name;
     std::string source;  // where its numbers come from
-    double ipd = 0.064;
+    double ipd = 0.064;  // none with eye_poses
     int eye_width = 0, eye_height = 0;  // each eye's image
     std::array<EyeOptics, 2> eyes;      // left, right
+    // Each eye's "position" and "orientation", left then right; none: the
+    // eyes at ±ipd/2 along the head's x axis, looking the head's way.
+    std::optional<std::array<EyePose, 2>> eye_poses;
 };
 
 // Reads and checks a profile; a bad one is an Error "FILE:LINE:COLUMN:
@@ -140,7 +158,7 @@ struct View {
     std::string room;          // empty: with a pose, the one room holding the head; else start.room
     int width = 1280;          // each eye; the image is 2 × width
     int height = 720;
-    double ipd = 0.064;
+    double ipd = 0.064;   // not read with eye_poses
     double fov_deg = 90;  // vertical, each eye
     int max_depth = 8;
     int samples = 1;                 // 1, 2, 4, 8 or 16
@@ -159,10 +177,16 @@ struct View {
     // eyes' frusta are these angles (fov_deg is not read) and each eye's
     // hidden area is masked; none: symmetric frusta of fov_deg.
     std::optional<std::array<EyeOptics, 2>> eye_optics;
+    // Each eye's pose relative to the head, left then right (as
+    // `--eye-poses` or a profile's poses): the eyes stand and look so, and
+    // ipd is not read; none: at ±ipd/2 along the head's x axis, looking the
+    // head's way.
+    std::optional<std::array<EyePose, 2>> eye_poses;
 };
 
-// The view through a headset, as `render --hmd FILE` without --size and
-// --ipd: the profile's optics, eye size and IPD.
+// The view through a headset, as `render --hmd FILE` without --size,
+// --ipd and --eye-poses: the profile's optics, eye size, and IPD or eye
+// poses.
 void use_hmd_profile(View& view, const HmdProfile& profile);
 
 // Counters of a rasterised frame (render --stats).

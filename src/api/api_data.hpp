@@ -8,6 +8,7 @@
 #include "base/result.hpp"
 #include "impossible/impossible.hpp"
 #include "layout/layout.hpp"
+#include "math/eyes.hpp"
 #include "math/pose.hpp"
 #include "math/view.hpp"
 #include "render/frame.hpp"
@@ -28,6 +29,15 @@ struct LayoutData {
 inline math::HeadPose to_head_pose(const Pose& p) { return {{p.x, p.y, p.z}, p.yaw, p.pitch, p.roll}; }
 inline Pose to_pose(const math::HeadPose& h) {
     return {h.position.x, h.position.y, h.position.z, h.yaw_deg, h.pitch_deg, h.roll_deg};
+}
+
+inline math::QuaternionPose to_quaternion_pose(const EyePose& e) {
+    return {{e.position[0], e.position[1], e.position[2]},
+            {e.orientation[0], e.orientation[1], e.orientation[2], e.orientation[3]}};
+}
+inline EyePose to_eye_pose(const math::QuaternionPose& q) {
+    return {{q.position.x, q.position.y, q.position.z},
+            {q.orientation.x, q.orientation.y, q.orientation.z, q.orientation.w}};
 }
 
 inline math::FovAngles to_fov(const FovAngles& f) { return {f.left, f.right, f.up, f.down}; }

@@ -1,5 +1,7 @@
 // A public View (and RenderOptions) checked and resolved into the library's
 // own, through the session's one rule and named limits.
+#include <cmath>
+
 #include "api/api_data.hpp"
 #include "base/format.hpp"
 #include "math/view_limits.hpp"
@@ -27,9 +29,27 @@ math::View view_of(const View& view) {
             eyes[e] = {to_fov((*view.eye_optics)[e].fov), to_polygon((*view.eye_optics)[e].visible_area)};
         v.eye_optics = eyes;
     }
+    if (view.eye_poses)
+        v.eye_offsets = std::array<math::EyeOffset, 2>{math::eye_offset(to_quaternion_pose((*view.eye_poses)[0])),
+                                                       math::eye_offset(to_quaternion_pose((*view.eye_poses)[1]))};
     if (view.hands)
         v.hands = std::array<math::HeadPose, 2>{to_head_pose((*view.hands)[0]), to_head_pose((*view.hands)[1])};
     return v;
+}
+
+// An orientation that is not a unit quaternion (within
+// math::kUnitQuaternionTolerance), as a profile's is refused.
+std::optional<std::string> eye_poses_problem(const View& view) {
+    if (!view.eye_poses) return {};
+    for (std::size_t e = 0; e < 2; ++e) {
+        const std::array<double, 4>& q = (*view.eye_poses)[e].orientation;
+        const double length = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+        if (!(std::abs(length - 1.0) <= math::kUnitQuaternionTolerance))
+            return std::string("eye_poses: ") + (e == 0 ? "left" : "right") +
+                   " eye: the orientation is not a unit quaternion (x, y, z, w): its length is " +
+                   format_number(length) + ", not 1 within 1e-6";
+    }
+    return {};
 }
 
 std::optional<std::string> options_problem(const RenderOptions& o) {
@@ -68,6 +88,7 @@ render::Technique technique_of(const View& view, const RenderOptions& o) {
 }  // namespace
 
 Result<math::View> resolve_view(const layout::Layout& layout, const View& view) {
+    if (const std::optional<std::string> problem = eye_poses_problem(view)) return impossible::Error{*problem};
     math::View v = view_of(view);
     session::HeadRequest request;
     if (view.pose) request.pose = to_head_pose(*view.pose);

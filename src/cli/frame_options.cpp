@@ -4,7 +4,10 @@
 #include <cmath>
 #include <tuple>
 
+#include <glm/geometric.hpp>
+
 #include "layout/hmd_profile.hpp"
+#include "math/eyes.hpp"
 #include "math/view_limits.hpp"
 
 namespace impossible::cli {
@@ -34,6 +37,27 @@ math::HeadPose pose_at(const std::vector<double>& n, std::size_t first) {
 std::array<math::HeadPose, 2> parse_hands(const OptionValue& v) {
     const std::vector<double> n = parse_pose_numbers(v.name, v.text, 12);
     return {pose_at(n, 0), pose_at(n, 6)};
+}
+
+// --eye-poses: twelve numbers, the left then the right eye's position and
+// yaw, pitch and roll in the head's coordinates (as --pose): each at most
+// kMaxEyeDistance from the head centre, its pitch within ±kMaxEyePitchDeg.
+std::array<math::EyeOffset, 2> parse_eye_poses(const OptionValue& v) {
+    const std::vector<double> n = parse_pose_numbers(v.name, v.text, 12);
+    std::array<math::EyeOffset, 2> eyes;
+    for (std::size_t e = 0; e < 2; ++e) {
+        const math::HeadPose pose = pose_at(n, 6 * e);
+        const std::string at = v.name + ": " + (e == 0 ? "left" : "right") + " eye: ";
+        const double distance = glm::length(pose.position);
+        if (!(distance <= lim::kMaxEyeDistance))
+            throw InputError(at + "the position is " + format_number(distance) + " m from the head centre, more than " +
+                             format_number(lim::kMaxEyeDistance) + " m");
+        if (!(std::abs(pose.pitch_deg) <= lim::kMaxEyePitchDeg))
+            throw InputError(at + "pitch " + format_number(pose.pitch_deg) + " is not within ±" +
+                             format_number(lim::kMaxEyePitchDeg) + " degrees");
+        eyes[e] = math::eye_offset(pose);
+    }
+    return eyes;
 }
 
 double parse_ipd(const OptionValue& v) {
@@ -82,6 +106,11 @@ constexpr Option<FrameOptions> kViewRows[] = {
      [](FrameOptions& o, const OptionValue& v) { o.frame.hands = parse_hands(v); }},
     {"--ipd", "M", "distance between the eyes (default 0.064)",
      [](FrameOptions& o, const OptionValue& v) { o.frame.ipd = parse_ipd(v); }},
+    {"--eye-poses", "LX,LY,LZ,LYAW,LPITCH,LROLL,RX,RY,RZ,RYAW,RPITCH,RROLL",
+     "\neach eye's position (m) and yaw, pitch and roll (degrees) in the\n"
+     "head's coordinates, left then right, instead of --ipd (canted\n"
+     "displays; default: at -+ipd/2 along x, looking the head's way)",
+     [](FrameOptions& o, const OptionValue& v) { o.frame.eye_offsets = parse_eye_poses(v); }},
     {"--fov", "DEG", "vertical field of view of each eye (default 90)",
      [](FrameOptions& o, const OptionValue& v) { o.frame.fov_y_deg = parse_fov(v); }},
     {"--fov-angles", "L,R,U,D",
@@ -91,8 +120,8 @@ constexpr Option<FrameOptions> kViewRows[] = {
      [](FrameOptions& o, const OptionValue& v) { o.frame.eye_optics = parse_fov_angles(v.text); }},
     {"--hmd", "FILE.json",
      "a headset profile (docs/headsets.md): each eye's angles, size and\n"
-     "hidden area (masked: black, id 0), and the IPD; --size and --ipd\n"
-     "replace its size and IPD",
+     "hidden area (masked: black, id 0), and the IPD or each eye's pose;\n"
+     "--size, --ipd and --eye-poses replace its size, IPD and eye poses",
      [](FrameOptions& o, const OptionValue& v) { o.hmd = v.text; }},
     {"--size", "WxH", "size of each eye's image (default 1280x720); the image is 2W x H",
      [](FrameOptions& o, const OptionValue& v) {
@@ -163,16 +192,25 @@ constexpr Option<FrameOptions> kDiagnosticRows[] = {
 };
 
 // --hmd FILE: the profile's optics into `frame`, and its eye size and IPD
-// unless --size (`size_given`) or --ipd (`ipd_given`) replace them; throws
-// InputError FILE:LINE:COLUMN: field: message for a bad profile.
-void apply_hmd_profile(const std::string& path, math::View& frame, bool size_given, bool ipd_given) {
+// or eye poses unless --size, --ipd or --eye-poses replace them; throws
+// InputError FILE:LINE:COLUMN: field: message for a bad profile, and for
+// --ipd with a profile that gives each eye's pose.
+void apply_hmd_profile(const std::string& path, math::View& frame, const ParsedArgs& args) {
     const layout::HmdProfile profile = value_or_throw(layout::read_hmd_profile_file(path));
     frame.eye_optics = profile.eyes;
-    if (!size_given) {
+    if (!args.value("--size")) {
         frame.eye_width = profile.eye_width;
         frame.eye_height = profile.eye_height;
     }
-    if (!ipd_given) frame.ipd = profile.ipd;
+    if (args.value("--eye-poses")) return;  // the eyes as given, not the profile's
+    if (profile.eye_poses && args.value("--ipd"))
+        throw InputError("--ipd: " + path +
+                         " gives each eye's position and orientation, which --ipd cannot replace; give "
+                         "--eye-poses instead");
+    if (profile.eye_poses)
+        frame.eye_offsets = {math::eye_offset((*profile.eye_poses)[0]), math::eye_offset((*profile.eye_poses)[1])};
+    else if (!args.value("--ipd"))
+        frame.ipd = profile.ipd;
 }
 
 }  // namespace
@@ -227,10 +265,13 @@ void check_headset_combinations(const ParsedArgs& args) {
     if (fov && hmd) throw UsageError("--fov and --hmd exclude each other (the profile gives each eye's angles)");
     if (angles && hmd)
         throw UsageError("--fov-angles and --hmd exclude each other (the profile gives each eye's angles)");
+    if (args.value("--eye-poses") && args.value("--ipd"))
+        throw UsageError(
+            "--eye-poses and --ipd exclude each other (the eyes' positions give the distance between them)");
 }
 
 void finish_frame_options(const ParsedArgs& args, FrameOptions& o) {
-    if (o.hmd) apply_hmd_profile(*o.hmd, o.frame, args.value("--size").has_value(), args.value("--ipd").has_value());
+    if (o.hmd) apply_hmd_profile(*o.hmd, o.frame, args);
     resolve_technique(o.technique, o.texture_from_level, o.frame);
 }
 

@@ -29,7 +29,7 @@ struct FrameOptions {
     std::optional<std::string> hmd;  // --hmd FILE.json (its optics are in frame after finish_frame_options)
 };
 
-// math::View's: --time --hands --ipd --fov --fov-angles --hmd --size
+// math::View's: --time --hands --ipd --eye-poses --fov --fov-angles --hmd --size
 // --max-depth --max-portal-passes --light-depth.
 OptionTable<FrameOptions> view_rows();
 // render::Technique's: --stereo --clip --depth --technique --portal-texture
@@ -41,10 +41,11 @@ OptionTable<FrameOptions> diagnostic_rows();
 inline constexpr std::size_t kViewHelpColumn = 29;
 
 // After the rows ran: the headset profile (--hmd: its optics, and its size
-// and IPD unless --size or --ipd) and the technique into `o.frame`; usage
-// errors for options that exclude each other.
+// and IPD or eye poses unless --size, --ipd or --eye-poses) and the
+// technique into `o.frame`.
 void finish_frame_options(const ParsedArgs& args, FrameOptions& o);
-// The usage errors of --fov, --fov-angles and --hmd (each excludes the others).
+// The usage errors of --fov, --fov-angles and --hmd (each excludes the
+// others) and of --eye-poses with --ipd.
 void check_headset_combinations(const ParsedArgs& args);
 
 // The parsers of single values, each naming `name` in its InputError

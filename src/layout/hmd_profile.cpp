@@ -83,14 +83,71 @@ std::optional<math::Polygon2> read_visible_area(Checker& check, const Path& at, 
     return poly;
 }
 
+// An eye's "orientation": [x, y, z, w], of length 1 within
+// math::kUnitQuaternionTolerance.
+std::optional<math::dvec4> read_orientation(Checker& check, const Path& at, const json& j) {
+    if (!check.expect_array(at, j, 4)) return std::nullopt;
+    if (j.size() != 4) {
+        check.error(at, "expected a unit quaternion [x, y, z, w]");
+        return std::nullopt;
+    }
+    math::dvec4 q(0.0);
+    for (std::size_t k = 0; k < 4; ++k) {
+        const std::optional<double> n = check.read_number(at / k, j[k], NumberKind::Direction);
+        if (!n) return std::nullopt;
+        q[static_cast<int>(k)] = *n;
+    }
+    const double length = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+    if (!(std::abs(length - 1.0) <= math::kUnitQuaternionTolerance)) {
+        check.error(at, "is not a unit quaternion [x, y, z, w]: its length is " + format_number(length) +
+                            ", not 1 within 1e-6");
+        return std::nullopt;
+    }
+    return q;
+}
+
+// An eye's "position": [x, y, z] metres from the head centre, at most
+// math::limits::kMaxEyeDistance away.
+std::optional<math::dvec3> read_eye_position(Checker& check, const Path& at, const json& j) {
+    const std::optional<math::dvec3> p = check.read_vec3(at, j, NumberKind::Coordinate);
+    if (!p) return std::nullopt;
+    const double distance = std::sqrt(p->x * p->x + p->y * p->y + p->z * p->z);
+    if (!(distance <= math::limits::kMaxEyeDistance)) {
+        check.error(at, "is " + format_number(distance) + " m from the head centre, more than " +
+                            format_number(math::limits::kMaxEyeDistance) + " m");
+        return std::nullopt;
+    }
+    return p;
+}
+
 struct EyeRead {
     math::EyeOptics optics;
     std::array<int, 2> resolution{};
+    std::optional<math::QuaternionPose> pose;  // "position" and "orientation"
 };
+
+// "position" and "orientation", both or neither.
+bool read_eye_pose(Checker& check, const Path& at, const json& j, EyeRead& eye) {
+    const bool position = j.contains("position"), orientation = j.contains("orientation");
+    if (!position && !orientation) return true;
+    if (position != orientation) {
+        check.error_at_key(at / (position ? "position" : "orientation"),
+                           std::string("an eye's pose needs both position and orientation (") +
+                               (position ? "orientation" : "position") + " is missing)");
+        return false;
+    }
+    const std::optional<math::dvec3> p = read_eye_position(check, at / "position", j["position"]);
+    const std::optional<math::dvec4> q =
+        p ? read_orientation(check, at / "orientation", j["orientation"]) : std::nullopt;
+    if (!p || !q) return false;
+    eye.pose = math::QuaternionPose{*p, *q};
+    return true;
+}
 
 std::optional<EyeRead> read_eye(Checker& check, const Path& at, const json& j) {
     if (!check.expect_object(at, j) ||
-        !check.check_fields(at, j, {"fov", "resolution", "visible_area"}, {"fov", "resolution"}))
+        !check.check_fields(at, j, {"fov", "resolution", "visible_area", "position", "orientation"},
+                            {"fov", "resolution"}))
         return std::nullopt;
     EyeRead eye;
     const std::optional<math::FovAngles> fov = read_fov(check, at / "fov", j["fov"]);
@@ -103,6 +160,7 @@ std::optional<EyeRead> read_eye(Checker& check, const Path& at, const json& j) {
         if (!area) return std::nullopt;
         eye.optics.visible_area = *area;
     }
+    if (!read_eye_pose(check, at, j, eye)) return std::nullopt;
     return eye;
 }
 
@@ -130,7 +188,16 @@ Result<HmdProfile> read_profile(Checker& check, const json& j) {
                         std::to_string(left->resolution[1]) + " and " + std::to_string(right->resolution[0]) + "x" +
                         std::to_string(right->resolution[1]) +
                         "): both eyes share one side-by-side target, so they must be the same");
+    if (left->pose.has_value() != right->pose.has_value()) {
+        const char* without = left->pose ? "right" : "left";
+        check.error(root / without, std::string("the ") + (left->pose ? "left" : "right") +
+                                        " eye has a position and an orientation, so the " + without +
+                                        " eye needs them too");
+    } else if (left->pose && j.contains("ipd")) {
+        check.error_at_key(root / "ipd", "the eyes' positions give the distance between them: leave ipd out");
+    }
     if (check.has_errors()) return first_error();
+    if (left->pose) out.eye_poses = std::array<math::QuaternionPose, 2>{*left->pose, *right->pose};
     out.name = *name;
     out.source = *source;
     out.eye_width = left->resolution[0];

@@ -1,7 +1,7 @@
 // Headset profiles (`--hmd FILE.json`, docs/headsets.md): each eye's field
 // of view (OpenXR's XrFovf angles, degrees), its image size and the visible
 // area of its image (the rest is the hidden area the lenses never show), and
-// the IPD. Errors are one line, FILE:LINE:COLUMN: field: message, as the
+// the IPD, or each eye's pose relative to the head. Errors are one line, FILE:LINE:COLUMN: field: message, as the
 // layout loader's (unknown fields refused, names starting with _ are
 // comments).
 #pragma once
@@ -13,16 +13,20 @@
 #include <string_view>
 
 #include "base/result.hpp"
+#include "math/eyes.hpp"
 #include "math/view.hpp"
 
 namespace impossible::layout {
 
 struct HmdProfile {
     std::string name;
-    std::string source;  // where the numbers come from
-    double ipd = 0.064;
+    std::string source;                   // where the numbers come from
+    double ipd = 0.064;                   // not read with eye_poses
     int eye_width = 0, eye_height = 0;    // the same for both eyes
     std::array<math::EyeOptics, 2> eyes;  // left, right
+    // Each eye's "position" and "orientation" (a unit quaternion x, y, z, w)
+    // relative to the head, left then right, as given; none: the IPD rule.
+    std::optional<std::array<math::QuaternionPose, 2>> eye_poses;
 };
 
 // Angles of one eye's field of view: each within ±kMaxFovAngleDeg, right at

@@ -36,6 +36,15 @@ struct Eye {
     dvec3 head{0.0};
 };
 
+// An eye's pose relative to the head, as a headset gives it (WebXR's
+// XRView.transform relative to the viewer, OpenXR's XrView.pose relative to
+// the view space; math/eyes.hpp places eyes by it).
+struct EyeOffset {        // an eye's pose in the head's coordinates (x right, y up, z back)
+    dvec3 position{0.0};  // metres from the head centre
+    dmat3 rotation{1.0};  // the eye's axes (columns right, up, back) in head coordinates
+    bool operator==(const EyeOffset&) const = default;
+};
+
 // (sin, cos) of an angle in degrees: reduced to [-180°, 180°] first, exact at
 // multiples of 90°.
 glm::dvec2 sin_cos_deg(double deg);
@@ -54,7 +63,8 @@ dmat3 head_rotation(const HeadPose& pose);
 // same way; all of it is given to yaw (roll 0).
 HeadPose head_pose_from(const dvec3& position, const dmat3& rotation);
 
-// The left eye first, at head - ipd/2 · right; the right at head + ipd/2 · right.
+// The left eye first, at head - ipd/2 · right; the right at head + ipd/2 · right,
+// both looking the head's way (a View's eyes: math/eyes.hpp).
 std::array<Eye, 2> eyes_of(const HeadPose& pose, double ipd);
 
 // World → eye space (inverse of the eye's rigid transform).

@@ -30,7 +30,7 @@ struct EyeOptics {
 struct View {
     math::HeadPose head;
     int room = 0;             // index of the room the head is in
-    double ipd = 0.064;       // metres between the eyes
+    double ipd = 0.064;       // metres between the eyes (not read with eye_offsets)
     double fov_y_deg = 90.0;  // vertical field of view of each eye
     int eye_width = 1280;     // each eye's image; the side-by-side image is 2 × width
     int eye_height = 720;
@@ -53,6 +53,11 @@ struct View {
     // Per-eye optics, left then right: the eyes' frusta are then these
     // angles (fov_y_deg is not read) and the hidden areas are masked.
     std::optional<std::array<EyeOptics, 2>> eye_optics;
+    // Each eye's pose relative to the head, left then right (--eye-poses, a
+    // profile's per-eye poses; docs/headsets.md): the eyes stand and look as
+    // these say (ipd is not read); none: at ±ipd/2 along the head's x axis,
+    // looking the head's way. math/eyes.hpp places the eyes either way.
+    std::optional<std::array<EyeOffset, 2>> eye_offsets;
 };
 
 // The frustum of eye `eye` (0 left, 1 right) of `view` for an image of its

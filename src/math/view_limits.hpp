@@ -22,6 +22,11 @@ inline constexpr Range<int> kEyeSide{1, 8192};
 // The preview's window: each eye at most 4096 a side.
 inline constexpr Range<int> kWindowEyeSide{1, 4096};
 inline constexpr Range<double> kIpd{0.0, 10.0};  // metres
+// Each eye's pose relative to the head (--eye-poses, a profile's per-eye
+// poses): at most kMaxEyeDistance metres from the head centre, and as
+// angles, a pitch within ±kMaxEyePitchDeg (as a headset's fov angles).
+inline constexpr double kMaxEyeDistance = 1.0;
+inline constexpr double kMaxEyePitchDeg = 89.5;
 // The vertical field of view, degrees: at least kMinFovDeg, less than
 // kMaxFovDeg. Below 1 degree a pixel's angle nears single precision's
 // resolution at 8192 pixels (the rasteriser drew 1e-6 degrees as background

@@ -1,5 +1,6 @@
 #include "preview/hud_text.hpp"
 
+#include <cmath>
 #include <cstdio>
 
 namespace impossible::preview {
@@ -12,6 +13,14 @@ std::string fixed(double v, int decimals) {
 
 namespace {
 
+// "IPD 64 mm", or with each eye's pose (--eye-poses, a profile's) how far
+// apart the eyes are: "eye poses 64 mm apart".
+std::string eyes_text(const render::FrameDesc& s) {
+    if (!s.eye_offsets) return "IPD " + fixed(s.ipd * 1000.0, 0) + " mm";
+    const math::dvec3 d = (*s.eye_offsets)[1].position - (*s.eye_offsets)[0].position;
+    return "eye poses " + fixed(std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z) * 1000.0, 0) + " mm apart";
+}
+
 std::vector<std::string> status_lines(const PreviewOptions& o, const HudFacts& f) {
     using std::to_string;
     const render::FrameDesc& s = o.frame;
@@ -22,8 +31,8 @@ std::vector<std::string> status_lines(const PreviewOptions& o, const HudFacts& f
             to_string(f.eye_width) + "x" + to_string(f.eye_height) + "   time " + fixed(f.time, 1) + " s",
         "room " + f.room + "   portal passes " + to_string(f.portal_passes_drawn) + " drawn, " +
             to_string(f.portal_passes_culled) + " culled",
-        "recursion depth " + to_string(s.max_depth) + " (reached " + to_string(f.max_level_reached) + ")   IPD " +
-            fixed(s.ipd * 1000.0, 0) + " mm",
+        "recursion depth " + to_string(s.max_depth) + " (reached " + to_string(f.max_level_reached) + ")   " +
+            eyes_text(s),
         std::string("clip ") + (s.clip == render::ClipMode::ClipDistance ? "clip-distance" : "oblique") +
             "   culling " + (s.cull_portals ? "on" : "off"),
         "physical head " + fixed(h.x, 2) + " " + fixed(h.y, 2) + " " + fixed(h.z, 2) + "  yaw " +

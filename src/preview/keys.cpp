@@ -22,8 +22,14 @@ KeyEffects apply_actions(const std::vector<Action>& actions, bool cursor_capture
             case Action::NextView: o.view = next_view(o.view); break;
             case Action::DepthDown: f.max_depth = std::max(0, f.max_depth - 1); break;
             case Action::DepthUp: f.max_depth = std::min(kMaxPreviewDepth, f.max_depth + 1); break;
-            case Action::IpdDown: f.ipd = std::max(0.0, f.ipd - kIpdStep); break;
-            case Action::IpdUp: f.ipd = std::min(kMaxIpd, f.ipd + kIpdStep); break;
+            // With each eye's pose (--eye-poses, a profile's) there is no
+            // IPD to change: the keys do nothing.
+            case Action::IpdDown:
+                if (!f.eye_offsets) f.ipd = std::max(0.0, f.ipd - kIpdStep);
+                break;
+            case Action::IpdUp:
+                if (!f.eye_offsets) f.ipd = std::min(kMaxIpd, f.ipd + kIpdStep);
+                break;
             case Action::NextClip:
                 f.clip = f.clip == render::ClipMode::ClipDistance ? render::ClipMode::Oblique
                                                                   : render::ClipMode::ClipDistance;

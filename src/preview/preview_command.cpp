@@ -18,6 +18,7 @@
 #include "cli/field_flags.hpp"
 #include "cli/view_options.hpp"
 #include "gl/gl.hpp"
+#include "math/eyes.hpp"
 #include "math/projection.hpp"
 #include "preview/grid.hpp"
 #include "preview/hud.hpp"
@@ -121,7 +122,7 @@ void draw_boundary_grids(PreviewSession& s, const WindowLayout& places, int fb_w
     math::Frustum frustum;
     frustum.fov_y_deg = s.options.frame.fov_y_deg;
     frustum.aspect = eye_aspect(s.options);
-    const std::array<math::Eye, 2> eyes = math::eyes_of(s.physical, s.options.frame.ipd);
+    const std::array<math::Eye, 2> eyes = math::eyes_of(s.options.frame, s.physical);
     for (int e = 0; e < 2; ++e) {
         // Each eye's own angles with a headset profile (--fov-angles, --hmd).
         if (s.options.frame.eye_optics)

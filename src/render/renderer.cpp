@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cassert>
 
+#include "math/eyes.hpp"
 #include "math/projection.hpp"
 #include "math/view_limits.hpp"
 #include "render/objects/frame_objects.hpp"
@@ -72,7 +73,7 @@ Result<void> prepare_frame(RendererParts& parts, const FrameDesc& frame) {
 LevelView root_view(const FrameDesc& frame, const std::array<math::dmat4, 2>& projections, unsigned eye_mask) {
     LevelView view;
     view.cell = frame.room;
-    const std::array<math::Eye, 2> eyes = math::eyes_of(frame.head, frame.ipd);
+    const std::array<math::Eye, 2> eyes = math::eyes_of(frame);
     for (int e = 0; e < 2; ++e) {
         view.eyes[e].active = (eye_mask >> e) & 1u;
         view.eyes[e].eye = eyes[e];

@@ -1,6 +1,10 @@
 #include "session/view_request.hpp"
 
+#include <algorithm>
 #include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 
 #include "base/format.hpp"
 #include "layout/hmd_profile.hpp"
@@ -78,6 +82,24 @@ std::string optics_problem(const math::EyeOptics& eye, const char* name) {
     return {};
 }
 
+// What is wrong with one eye's pose relative to the head, or "": a finite
+// position at most kMaxEyeDistance from the head centre, and a rotation
+// (orthonormal within 1e-9, determinant +1).
+std::string eye_offset_problem(const math::EyeOffset& eye, const char* name) {
+    const std::string at = "{eye_poses}: " + std::string(name) + " eye: ";
+    const double distance = glm::length(eye.position);
+    if (!std::isfinite(distance)) return at + "the position holds a number that is not finite";
+    if (!(distance <= lim::kMaxEyeDistance))
+        return at + "the position is " + format_number(distance) + " m from the head centre, more than " +
+               format_number(lim::kMaxEyeDistance) + " m";
+    const math::dmat3 gram = glm::transpose(eye.rotation) * eye.rotation;
+    double error = std::abs(glm::determinant(eye.rotation) - 1.0);
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) error = std::max(error, std::abs(gram[c][r] - (c == r ? 1.0 : 0.0)));
+    if (!(error <= 1e-9)) return at + "the orientation is not a rotation";
+    return {};
+}
+
 std::optional<FieldError> value_error(const std::string& field, const std::string& message) {
     return FieldError{FieldError::Kind::Value, field, message};
 }
@@ -115,6 +137,11 @@ std::optional<FieldError> view_problem(const math::View& v) {
         for (std::size_t e = 0; e < 2; ++e)
             if (std::string problem = optics_problem((*v.eye_optics)[e], e == 0 ? "left" : "right"); !problem.empty())
                 return FieldError{Kind::Problem, "eye_optics", problem};
+    if (v.eye_offsets)
+        for (std::size_t e = 0; e < 2; ++e)
+            if (std::string problem = eye_offset_problem((*v.eye_offsets)[e], e == 0 ? "left" : "right");
+                !problem.empty())
+                return FieldError{Kind::Problem, "eye_poses", problem};
     return {};
 }
 

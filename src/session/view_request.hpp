@@ -33,7 +33,8 @@ std::optional<FieldError> place_head(const layout::Layout& layout, const HeadReq
 
 // The first setting of `view` outside its limits (math/view_limits.hpp):
 // sizes, IPD, field of view, depths, the budget, light depth, finite time
-// and poses, each eye's optics (docs/headsets.md's rules).
+// and poses, each eye's optics and pose relative to the head
+// (docs/headsets.md's rules).
 std::optional<FieldError> view_problem(const math::View& view);
 
 // What the library and Python do with a view: the head as asked, its limits

@@ -11,6 +11,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "math/eyes.hpp"
 #include "math/hidden_area.hpp"
 #include "math/projection.hpp"
 #include "shading/shading.hpp"
@@ -105,7 +106,7 @@ std::optional<Error> check_desc(const Scene& scene, const TraceDesc& desc) {
 }  // namespace
 
 PixelRay pixel_ray(const TraceDesc& desc, int eye, int i, int j) {
-    return eye_pixel_ray(desc, frustum_of(desc, eye), math::eyes_of(desc.head, desc.ipd)[eye], i, j);
+    return eye_pixel_ray(desc, frustum_of(desc, eye), math::eyes_of(desc)[eye], i, j);
 }
 
 Result<image::Image> trace_frame(const Scene& scene, const TraceDesc& desc, TraceStats* stats) {
@@ -118,7 +119,7 @@ Result<image::Image> trace_frame(const Scene& scene, const TraceDesc& desc, Trac
     image.rgb.assign(3 * pixels, 0);
     image.ids.assign(pixels, 0);
 
-    const std::array<math::Eye, 2> eyes = math::eyes_of(desc.head, desc.ipd);
+    const std::array<math::Eye, 2> eyes = math::eyes_of(desc);
     const std::array<math::Frustum, 2> frusta = {frustum_of(desc, 0), frustum_of(desc, 1)};
     // A hidden pixel keeps the background: black, id 0 (docs/headsets.md).
     const std::array<std::vector<std::uint8_t>, 2> hidden = hidden_masks(desc);

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "math/crossing.hpp"
+#include "math/eyes.hpp"
 #include "math/portal.hpp"
 #include "math/rigid.hpp"
 
@@ -108,6 +109,11 @@ math::dvec3 Walker::forward() const { return math::forward_of(rotation()); }
 
 std::array<math::Eye, 2> Walker::eyes(double ipd) const {
     const auto e = math::eyes_of(physical_pose_, ipd);
+    return {math::transform_eye(w_, e[0]), math::transform_eye(w_, e[1])};
+}
+
+std::array<math::Eye, 2> Walker::eyes(const std::array<math::EyeOffset, 2>& offsets) const {
+    const auto e = math::eyes_of(physical_pose_, offsets);
     return {math::transform_eye(w_, e[0]), math::transform_eye(w_, e[1])};
 }
 

@@ -77,8 +77,14 @@ public:
     math::dvec3 position() const { return head_; }
     math::dmat3 rotation() const;
     math::dvec3 forward() const;
-    // Both eyes in virtual coordinates, left first (math::eyes_of mapped by W).
+    // Both eyes in virtual coordinates, left first (math::eyes_of of the
+    // physical head mapped by W): at ±ipd/2 along the head's x axis, or
+    // placed by each eye's pose relative to the head (View::eye_offsets).
+    // Eye::head is the virtual head centre: an eye past a door plane the
+    // head has not crossed stays in the head's room and, reached through
+    // the door, has its box's inner faces (math::has_inner_faces).
     std::array<math::Eye, 2> eyes(double ipd) const;
+    std::array<math::Eye, 2> eyes(const std::array<math::EyeOffset, 2>& offsets) const;
 
 private:
     struct Passed {

@@ -1,12 +1,14 @@
 // The view options of render, trace and bench through their table: each
 // option reaches its field, the first bad value in table order is reported,
 // and bench's table lacks the image files.
+#include <cmath>
 #include <set>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "cli/view_options.hpp"
+#include "math/eyes.hpp"
 
 namespace impossible::cli {
 namespace {
@@ -103,6 +105,29 @@ TEST(ViewOptions, BadValuesNameTheirOption) {
     EXPECT_EQ(input_error({"--portal-texture", "5"}), "--portal-texture: 5 is not in (0, 4]");
     // The first in table order, whatever the order on the command line.
     EXPECT_EQ(input_error({"--samples", "3", "--ipd", "-1"}), "--ipd: -1 is not in 0..10 m");
+}
+
+TEST(ViewOptions, EyePosesReachTheirField) {
+    const ViewOptions o = parse({"--eye-poses", "-0.03,0.01,-0.02,5,0,0,0.035,0,0,-5,2,1"});
+    ASSERT_TRUE(o.frame.eye_offsets);
+    const std::array<math::EyeOffset, 2>& eyes = *o.frame.eye_offsets;
+    EXPECT_EQ(eyes[0].position, math::dvec3(-0.03, 0.01, -0.02));
+    EXPECT_EQ(eyes[1].position, math::dvec3(0.035, 0.0, 0.0));
+    // The angles as --pose reads them (math::head_rotation's convention),
+    // through the quaternion every front end uses.
+    EXPECT_EQ(eyes[0], math::eye_offset(math::HeadPose{{-0.03, 0.01, -0.02}, 5.0, 0.0, 0.0}));
+    EXPECT_EQ(eyes[1].rotation, math::eye_offset(math::HeadPose{{}, -5.0, 2.0, 1.0}).rotation);
+    EXPECT_NEAR(math::forward_of(eyes[0].rotation).x, -std::sin(math::radians(5.0)), 1e-15);
+    EXPECT_FALSE(parse({}).frame.eye_offsets);
+}
+
+TEST(ViewOptions, EyePosesExcludeIpd) {
+    const Args both = {"--ipd", "0.07", "--eye-poses", "0,0,0,0,0,0,0,0,0,0,0,0"};
+    EXPECT_THROW(parse(both), UsageError);
+    EXPECT_EQ(input_error({"--eye-poses", "0,0,0,0,0,0,0,0,0,0,-90,0"}),
+              "--eye-poses: right eye: pitch -90 is not within ±89.5 degrees");
+    EXPECT_EQ(input_error({"--eye-poses", "0,0,1.5,0,0,0,0,0,0,0,0,0"}),
+              "--eye-poses: left eye: the position is 1.5 m from the head centre, more than 1 m");
 }
 
 TEST(ViewOptions, TheHelpHasEveryOptionAtColumn29) {

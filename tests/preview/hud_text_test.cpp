@@ -35,6 +35,10 @@ TEST(PreviewHudText, ReportsTheFrameAndTheSettings) {
     // G's hand: how far it is held out.
     o.hand = true;
     EXPECT_EQ(hud_text(o, f, {}).lines[5], "physical head 1.00 1.60 -0.50  yaw 12  pitch -3   hand 0.40 m");
+    // Each eye's pose: how far apart the eyes are.
+    o.frame.eye_offsets = std::array<math::EyeOffset, 2>{math::EyeOffset{{-0.03, 0.0, -0.01}, math::dmat3(1.0)},
+                                                         math::EyeOffset{{0.03, 0.0, 0.0}, math::dmat3(1.0)}};
+    EXPECT_EQ(hud_text(o, f, {}).lines[3], "recursion depth 8 (reached 2)   eye poses 61 mm apart");
     EXPECT_TRUE(hud.errors.empty());
     o.hud = false;
     EXPECT_TRUE(hud_text(o, f, {}).lines.empty());

@@ -41,6 +41,16 @@ TEST(PreviewKeys, StepsStopAtTheirLimits) {
     EXPECT_EQ(o.frame.ipd, kMaxIpd);
 }
 
+TEST(PreviewKeys, IpdKeysLeaveEyePoses) {
+    PreviewOptions o;
+    const std::array<math::EyeOffset, 2> eyes = {math::EyeOffset{{-0.03, 0.0, 0.0}, math::dmat3(1.0)},
+                                                 math::EyeOffset{{0.03, 0.0, 0.0}, math::dmat3(1.0)}};
+    o.frame.eye_offsets = eyes;
+    apply_actions({Action::IpdDown, Action::IpdUp, Action::IpdUp}, false, o);
+    EXPECT_EQ(o.frame.ipd, 0.064);
+    EXPECT_EQ(o.frame.eye_offsets, eyes);
+}
+
 TEST(PreviewKeys, EscapeReleasesTheCursorThenQuits) {
     PreviewOptions o;
     KeyEffects e = apply_actions({Action::Escape}, true, o);

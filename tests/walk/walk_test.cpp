@@ -3,6 +3,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "math/crossing.hpp"
+#include "math/eyes.hpp"
 #include "math/rigid.hpp"
 #include "walk/walk_test_layouts.hpp"
 #include "walk/walker.hpp"
@@ -108,6 +110,41 @@ TEST(Walker, RotatedPairMapsPositionAndForward) {
     // Turning physically: yaw 90 looks along physical -X, virtual -Z.
     w.step(at({0.2, 0.5, -0.5}, 90.0));
     EXPECT_EQ(w.forward(), dvec3(0, 0, -1));
+}
+
+TEST(Walker, OffsetEyePastADoorPlaneTheHeadHasNotCrossed) {
+    // The head 2 cm in front of the turned door's plane (x = 2), facing it
+    // (+x); the left eye 5 cm ahead of the head centre and canted 5°
+    // outwards stands 3 cm past the plane. The head, not the eye, walks:
+    // no teleport, and the eye, reached from the head through the door,
+    // has the box's inner faces (math::has_inner_faces with Eye::head).
+    const layout::Layout l = turned_door();
+    Walker w(l);
+    const std::array<math::EyeOffset, 2> offsets = {math::eye_offset(HeadPose{{-0.032, 0.0, -0.05}, 5.0, 0.0, 0.0}),
+                                                    math::eye_offset(HeadPose{{0.032, 0.0, 0.0}, -5.0, 0.0, 0.0})};
+    w.step(at({1.5, 1.6, 0}, -90.0));
+    EXPECT_EQ(w.step(at({1.98, 1.6, 0}, -90.0)), none());
+    EXPECT_EQ(w.room(), 0);
+    const math::PortalRect& door = l.portals[0].rect;
+    std::array<math::Eye, 2> eyes = w.eyes(offsets);
+    EXPECT_NEAR(eyes[0].position.x, 2.03, 1e-12);
+    EXPECT_NEAR(eyes[0].position.z, -0.032, 1e-12);
+    EXPECT_EQ(eyes[0].head, w.position());
+    EXPECT_LT(math::signed_distance(door, eyes[0].position), 0.0);
+    EXPECT_GT(math::signed_distance(door, eyes[0].head), 0.0);
+    EXPECT_TRUE(math::has_inner_faces(door, eyes[0].position, eyes[0].head));
+    // Canted: the left eye looks 5° left of the head, towards -z.
+    EXPECT_NEAR(math::forward_of(eyes[0].rotation).z, -std::sin(math::radians(5.0)), 1e-15);
+    EXPECT_NEAR(math::forward_of(eyes[1].rotation).z, std::sin(math::radians(5.0)), 1e-15);
+    // With the IPD rule the same head's eyes stay in front of the plane.
+    for (const math::Eye& eye : w.eyes(0.064)) EXPECT_GT(math::signed_distance(door, eye.position), 0.0);
+    // Once the head crosses, the eyes are mapped into the annex with it: the
+    // door turns the hall's +x into the annex's +z.
+    EXPECT_EQ(w.step(at({2.1, 1.6, 0}, -90.0)), std::vector<int>{0});
+    eyes = w.eyes(offsets);
+    EXPECT_EQ(eyes[0].head, w.position());
+    EXPECT_NEAR(math::forward_of(eyes[0].rotation).x, std::sin(math::radians(5.0)), 1e-12);
+    EXPECT_NEAR(glm::distance(eyes[0].position, eyes[0].head), glm::length(offsets[0].position), 1e-12);
 }
 
 TEST(Walker, FastStepThroughASmallPortal) {
