@@ -70,7 +70,7 @@ export function startPreview({ api, canvas, showMessage }) {
     hud.textContent = `room ${status.room}   teleports ${state.teleports}   ` +
       `head ${h.x.toFixed(2)} ${h.y.toFixed(2)} ${h.z.toFixed(2)}  yaw ${h.yaw.toFixed(0)}°   ` +
       `depth ${state.maxDepth}   ipd ${(state.ipd * 1000).toFixed(0)} mm   ` +
-      `${status.ms.toFixed(1)} ms a frame, ${state.fps.toFixed(0)} fps`;
+      `${status.ms.toFixed(1)} ms (CPU) a frame, ${state.fps.toFixed(0)} fps`;
   }
 
   // One frame of the preview (the headset session draws its own instead).

@@ -169,7 +169,8 @@ EMSCRIPTEN_KEEPALIVE const char* impossible_page_layout_info() {
     const auto& l = impossible::web::page.session->layout();
     nlohmann::json j{{"name", l.name},
                      {"source", l.source},
-                     {"start", {l.start.position.x, l.start.position.y, l.start.position.z, l.start.yaw_deg}}};
+                     {"start", {l.start.position.x, l.start.position.y, l.start.position.z, l.start.yaw_deg}},
+                     {"start_room", l.rooms[static_cast<std::size_t>(l.start.room)].id}};
     info = j.dump();
     return info.c_str();
 }

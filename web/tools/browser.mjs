@@ -61,6 +61,7 @@ export async function openPage({ xr = false, query = '', width = 1280, height = 
     await page.addInitScript(() => {
       const device = new IWER.XRDevice(IWER.metaQuest3);
       device.installRuntime({ forceInstall: true });
+      device.stereoEnabled = true;
       window.emulatedHeadset = device;
     });
   }

@@ -6,7 +6,7 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { openPage } from './browser.mjs';
-import { xrRender } from './xr-frame.mjs';
+import { xrRender, xrWindow } from './xr-frame.mjs';
 
 const skipDirs = new Set(['.git', 'node_modules', 'build', 'build-web', 'build-asan']);
 const maxBytes = 256 << 20;
@@ -65,7 +65,7 @@ async function main() {
     process.exit(rest.length === 0 ? 2 : 0);
   }
   const { inputs, outputs } = filesOf(rest);
-  const session = await openPage({ xr });
+  const session = await openPage({ xr, ...(xr ? xrWindow(rest) : {}) });
   try {
     const result = xr ? await xrRender(session.page, rest, { inputs, outputs, cwd: process.cwd() })
                       : await session.page.evaluate(([a, o]) => window.impossible.run(a, o),
