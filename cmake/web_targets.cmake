@@ -34,3 +34,6 @@ add_custom_command(TARGET impossible_web POST_BUILD
 add_custom_target(web_site ALL DEPENDS impossible_web SOURCES ${web_page_files})
 add_custom_command(TARGET web_site POST_BUILD
   COMMAND ${CMAKE_COMMAND} -E copy_if_different ${web_page_files} ${site} VERBATIM)
+# Emscripten's optimiser (run at link time) finds its node modules (acorn)
+# in Debian's folder.
+set_property(TARGET impossible_web PROPERTY RULE_LAUNCH_LINK "${CMAKE_COMMAND} -E env NODE_PATH=/usr/share/nodejs")

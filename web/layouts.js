@@ -77,5 +77,15 @@ export async function openDropped(module, files, openLayout, showMessage) {
     showMessage('no layout among the dropped files (a .json file with "rooms")');
     return false;
   }
+  // Files picked one by one lose their folders: a file the layout names as
+  // "gallery/brick.png" is found by its name among the dropped ones.
+  const byName = new Map(files.map((f) => [f.name, f]));
+  const layoutDir = layout.slice(0, layout.lastIndexOf('/') + 1);
+  for (const name of namedFiles(new TextDecoder().decode(module.FS.readFile(layout)))) {
+    const wanted = layoutDir + name;
+    if (module.FS.analyzePath(wanted).exists) continue;
+    const file = byName.get(name.split('/').pop());
+    if (file) writeFile(module.FS, wanted, new Uint8Array(await file.arrayBuffer()));
+  }
   return openLayout(layout);
 }

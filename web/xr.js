@@ -21,6 +21,21 @@ function rotate(q, v) {
 const vec = (p) => [p.x, p.y, p.z];
 const quat = (o) => [o.x, o.y, o.z, o.w];
 
+// A head pose in the layout's coordinates (x, y, z, yaw, pitch, roll; as
+// --pose and path files give it) in local-floor space, where the layout's
+// start stands on the floor at the origin facing -z (src/web/web_view.cpp):
+// {position, orientation}. For putting an emulated headset somewhere.
+export function layoutToFloor(start, p) {
+  const [sx, , sz, syaw] = start;
+  const rad = (d) => (d * Math.PI) / 180;
+  const q = (axis, deg) => { const h = rad(deg) / 2; const v = [0, 0, 0, Math.cos(h)]; v[axis] = Math.sin(h); return v; };
+  const c = Math.cos(rad(syaw)), s = Math.sin(rad(syaw));
+  const dx = p[0] - sx, dz = p[2] - sz;
+  // R_y(-yaw_start) · (p - the start on the floor); R_y(yaw) · R_x(pitch) · R_z(-roll)
+  return { position: [c * dx - s * dz, p[1], s * dx + c * dz],
+           orientation: quatMultiply(q(1, -syaw), quatMultiply(q(1, p[3]), quatMultiply(q(0, p[4]), q(2, -p[5])))) };
+}
+
 // OpenXR's angles (degrees: left, right, up, down) of a WebGL projection
 // matrix (column-major): the image plane at z = -1 spans the tangents.
 export function fovAngles(m) {
@@ -53,7 +68,7 @@ export function xrFrameRequest(pose, layer, space, framebuffer, hands) {
 
 export async function setUpXr({ module, api, canvas, preview, showMessage }) {
   const button = document.getElementById('enter-vr');
-  const xr = { session: null, frames: 0, lastStatus: null, lastRequest: null, teleports: [], onFrame: null };
+  const xr = { session: null, hold: false, layoutToFloor, frames: 0, lastStatus: null, lastRequest: null, teleports: [], onFrame: null };
   const supported = !!navigator.xr && (await navigator.xr.isSessionSupported('immersive-vr').catch(() => false));
   button.disabled = !supported;
   if (!supported) button.title = 'This browser offers no immersive-vr WebXR session';
@@ -83,6 +98,7 @@ export async function setUpXr({ module, api, canvas, preview, showMessage }) {
   function onFrame(time, frame) {
     const session = frame.session;
     session.requestAnimationFrame(onFrame);
+    if (xr.hold) return;  // a test putting the headset somewhere first
     const pose = frame.getViewerPose(xr.space);
     if (!pose) return;
     const layer = session.renderState.baseLayer;

@@ -106,6 +106,10 @@ bool draw_frame(const std::string& request_text) {
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
         json status = walked_json(walked);
         status["ms"] = ms;
+        // The physical head as walked (WebXR's poses are single precision),
+        // for a path file that `walk` replays exactly.
+        const math::HeadPose& p = request.physical_head;
+        status["physical"] = {p.position.x, p.position.y, p.position.z, p.yaw_deg, p.pitch_deg, p.roll_deg};
         page.status = status.dump();
         page.message.clear();
         return true;

@@ -16,12 +16,16 @@ const { chromium } = require('playwright-core');
 const types = { '.html': 'text/html', '.js': 'text/javascript', '.mjs': 'text/javascript', '.css': 'text/css',
                 '.wasm': 'application/wasm', '.json': 'application/json', '.png': 'image/png' };
 
-// Serves `root` on 127.0.0.1 at a free port; resolves to {server, url}.
-export function serve(root) {
+// Serves `root` on 127.0.0.1 at a free port (and, for files not there,
+// `fallback`: the tests' layouts); resolves to {server, url}.
+export function serve(root, fallback = null) {
   const server = http.createServer((req, res) => {
     const rel = decodeURIComponent(new URL(req.url, 'http://x').pathname);
-    const file = path.join(root, path.normalize(rel === '/' ? '/index.html' : rel));
-    if (!file.startsWith(root) || !fs.existsSync(file) || !fs.statSync(file).isFile()) {
+    const inside = (dir) => path.join(dir, path.normalize(rel === '/' ? '/index.html' : rel));
+    let file = inside(root);
+    if (fallback && !fs.existsSync(file)) file = inside(fallback);
+    if (!(file.startsWith(root) || (fallback && file.startsWith(fallback))) || !fs.existsSync(file) ||
+        !fs.statSync(file).isFile()) {
       res.writeHead(404);
       res.end('not found');
       return;
@@ -48,8 +52,8 @@ const chromiumArgs = ['--headless=new', '--no-sandbox', '--enable-unsafe-swiftsh
 
 // Opens the page; with `xr`, iwer's emulated headset is installed first.
 // Resolves to {browser, page, server, close()}.
-export async function openPage({ xr = false, query = '', width = 1280, height = 800 } = {}) {
-  const { server, url } = await serve(siteDir());
+export async function openPage({ xr = false, query = '', width = 1280, height = 800, serveRepo = false } = {}) {
+  const { server, url } = await serve(siteDir(), serveRepo ? repoRoot : null);
   const browser = await chromium.launch({ executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
                                           args: chromiumArgs, headless: true });
   const page = await browser.newPage({ viewport: { width, height } });

@@ -43,25 +43,12 @@ export async function xrRender(page, args, { inputs, outputs, cwd }) {
     if (api.open(layout || '') !== 0)
       return { status: 1, out: '', err: `impossible ${command}: ${api.message()}\n`, files: {} };
     const info = JSON.parse(api.layoutInfo());
-    const [sx, , sz, syaw] = info.start;
-    const p = pose ? pose.split(',').map(Number) : [info.start[0], info.start[1], info.start[2], syaw, 0, 0];
+    const p = pose ? pose.split(',').map(Number) : [...info.start, 0, 0];
     if (p.length !== 6 || p.some((v) => !Number.isFinite(v)))
       return { status: 2, out: '', err: `impossible ${command}: --pose: expected X,Y,Z,YAW,PITCH,ROLL\n`, files: {} };
-    // The head in local-floor space: the layout's start on the floor at the
-    // origin, facing -z (src/web/web_view.cpp).
-    const rad = (d) => (d * Math.PI) / 180;
-    const c = Math.cos(rad(syaw)), s = Math.sin(rad(syaw));
-    const dx = p[0] - sx, dz = p[2] - sz;
-    const q = (axis, deg) => { const h = rad(deg) / 2; const v = [0, 0, 0, Math.cos(h)]; v[axis] = Math.sin(h); return v; };
-    const mul = (a, b) => [a[3] * b[0] + a[0] * b[3] + a[1] * b[2] - a[2] * b[1],
-                           a[3] * b[1] - a[0] * b[2] + a[1] * b[3] + a[2] * b[0],
-                           a[3] * b[2] + a[0] * b[1] - a[1] * b[0] + a[2] * b[3],
-                           a[3] * b[3] - a[0] * b[0] - a[1] * b[1] - a[2] * b[2]];
-    const o = mul(q(1, -syaw), mul(q(1, p[3]), mul(q(0, p[4]), q(2, -p[5]))));
-    const device = window.emulatedHeadset;
-    // R_y(-yaw_start) · (p - start on the floor)
-    device.position.set(c * dx - s * dz, p[1], s * dx + c * dz);
-    device.quaternion.set(o[0], o[1], o[2], o[3]);
+    const placed = xr.layoutToFloor(info.start, p);
+    window.emulatedHeadset.position.set(...placed.position);
+    window.emulatedHeadset.quaternion.set(...placed.orientation);
     await xr.enter();
     const started = performance.now();
     while (xr.frames < 2 && performance.now() - started < 20000) await new Promise((r) => setTimeout(r, 20));
