@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Install, build and run the tests. Usage: scripts/test.sh [BUILD_DIR] [cmake args...]
-# Every test but those labelled "long" (the differential fuzzer's full case
+# Every test but those labelled "long" (the browser tests' smokes included) (the differential fuzzer's full case
 # sets; their smokes run here): .ci/run runs those next, by hand
 # `cd build && ctest -L long` (tests/README.md).
 # The build is the main job's (scripts/build.sh, the same configuration and
@@ -13,5 +13,10 @@ shift || true
 # valgrind runs the image decoders' test (image_decode_valgrind).
 "$root/scripts/setup.sh" valgrind
 "$root/scripts/build.sh" "$build" "$@"
+# The web build and its browser tests' packages (docs/web.md), but for the
+# sanitizer build, which has no browser tests.
+if [[ " $* " != *"IMPOSSIBLE_SANITIZE=ON"* ]]; then
+  "$root/scripts/web-build.sh"
+fi
 cd "$build"
 ctest --output-on-failure -j"$(nproc)" --timeout 600 -LE long

@@ -12,6 +12,7 @@
 
 #include "cli/layout_source.hpp"
 #include "gl/context.hpp"
+#include "gl/gl.hpp"
 #include "gl/state.hpp"
 #include "image/png.hpp"
 #include "math/pose.hpp"
@@ -90,6 +91,7 @@ bool draw_frame(const std::string& request_text) {
         const FrameRequest request = parse_frame_request(json::parse(request_text), page.session->layout());
         const auto started = std::chrono::steady_clock::now();
         const session::WalkedFrame walked = page.driver->step(request.physical_head, request.hands, request.time);
+        const auto walked_at = std::chrono::steady_clock::now();
         render::FrameDesc frame = request.frame;
         frame.head = walked.virtual_pose;
         frame.room = walked.room;
@@ -102,10 +104,17 @@ bool draw_frame(const std::string& request_text) {
         present(page.renderer->target(), request);
         page.frame = frame;
         page.drawn = true;
-        const double ms =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+        // The CPU's part: the walk, the portal recursion and culling, and
+        // the WebGL calls made (not what the GPU does with them).
+        const auto drawn_at = std::chrono::steady_clock::now();
+        // With "finish": until the GPU is done too (web/tools/web-bench.mjs).
+        if (request.finish) glFinish();
+        const auto finished_at = std::chrono::steady_clock::now();
+        using ms = std::chrono::duration<double, std::milli>;
         json status = walked_json(walked);
-        status["ms"] = ms;
+        status["ms"] = ms(drawn_at - started).count();
+        status["walk_ms"] = ms(walked_at - started).count();
+        status["frame_ms"] = ms(finished_at - started).count();
         // The physical head as walked (WebXR's poses are single precision),
         // for a path file that `walk` replays exactly.
         const math::HeadPose& p = request.physical_head;

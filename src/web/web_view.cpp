@@ -70,6 +70,7 @@ FrameRequest parse_frame_request(const json& request, const layout::Layout& layo
         r.hands = std::array<math::HeadPose, 2>{pose_in(frame, rigid_of(request["hands"][0], "hands[0]")),
                                                 pose_in(frame, rigid_of(request["hands"][1], "hands[1]"))};
     r.time = request.value("time", 0.0);
+    r.finish = request.value("finish", false);
     render::FrameDesc& f = r.frame;
     f.time = r.time;
     const json& size = request.at("size");

@@ -6,7 +6,8 @@
 //    "eyes": [{"position": [...], "orientation": [...], "fov": [l, r, u, d]}, {...}],
 //    "ipd": 0.064, "fov_y": 90,      // without "eyes"
 //    "size": [w, h], "hands": [{pose}, {pose}], "time": t,
-//    "depth": "reversed-z" | "standard", "max_depth": n,
+//    "depth": "reversed-z" | "standard", "max_depth": n, "clip": "oblique", "cull": false,
+//    "finish": true,                 // wait for the GPU before returning
 //    "target": {"framebuffer": id, "viewports": [[x, y, w, h], [x, y, w, h]]}}
 //
 // Poses are WebXR's: positions in metres, orientations unit quaternions;
@@ -32,6 +33,7 @@ struct FrameRequest {
     render::FrameDesc frame;  // the eyes, size and technique; head and room come from the walk
     unsigned framebuffer = 0;
     std::array<std::array<int, 4>, 2> viewports{};  // per eye; w = 0: the frame's own size side by side
+    bool finish = false;                            // wait for the GPU (the web bench's frame times)
 };
 
 // Throws std::runtime_error naming the field for a malformed request.
