@@ -108,7 +108,12 @@ bool draw_frame(const std::string& request_text) {
         // the WebGL calls made (not what the GPU does with them).
         const auto drawn_at = std::chrono::steady_clock::now();
         // With "finish": until the GPU is done too (web/tools/web-bench.mjs).
-        if (request.finish) glFinish();
+        // A pixel read back, since Chromium's glFinish does not wait.
+        if (request.finish) {
+            std::uint8_t pixel[4];
+            glBindFramebuffer(GL_READ_FRAMEBUFFER, page.renderer->target().framebuffer.get());
+            glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
+        }
         const auto finished_at = std::chrono::steady_clock::now();
         using ms = std::chrono::duration<double, std::milli>;
         json status = walked_json(walked);
