@@ -13,6 +13,8 @@
 
 // The real ES entry points, which the header's macros hide.
 #undef glUseProgram
+#undef glEnable
+#undef glDisable
 #undef glBindVertexArray
 #undef glBindFramebuffer
 #undef glBindBuffer
@@ -46,6 +48,7 @@ struct Bindings {
     GLuint draw_framebuffer = 0;
     GLuint read_framebuffer = 0;
     GLenum active_unit = GL_TEXTURE0;
+    bool scissor = false;  // glIsEnabled waits for the GPU process: known here instead
     std::unordered_map<GLenum, GLuint> buffers;  // target -> buffer
 };
 Bindings bound;
@@ -169,6 +172,7 @@ void read_extensions() {
     glBindVertexArray(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glActiveTexture(GL_TEXTURE0);
+    glDisable(GL_SCISSOR_TEST);
     bound = Bindings{};
 }
 
@@ -177,6 +181,14 @@ GLuint current_program() { return bound.program; }
 void use_program(GLuint program) {
     glUseProgram(program);
     bound.program = program;
+}
+void enable(GLenum cap) {
+    glEnable(cap);
+    if (cap == GL_SCISSOR_TEST) bound.scissor = true;
+}
+void disable(GLenum cap) {
+    glDisable(cap);
+    if (cap == GL_SCISSOR_TEST) bound.scissor = false;
 }
 void bind_vertex_array(GLuint vao) {
     glBindVertexArray(vao);
@@ -255,7 +267,7 @@ void copy_image_sub_data(GLuint from, GLenum from_target, GLint from_level, GLin
         glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, from_target, from, from_level);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, draw);
     glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, to_target, to, to_level);
-    const bool scissor = glIsEnabled(GL_SCISSOR_TEST);
+    const bool scissor = bound.scissor;
     if (scissor) glDisable(GL_SCISSOR_TEST);
     glBlitFramebuffer(x, y, x + width, y + height, u, v, u + width, v + height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     if (scissor) glEnable(GL_SCISSOR_TEST);

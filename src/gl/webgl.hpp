@@ -49,6 +49,8 @@ void read_extensions();
 // Binding trackers: the compatibility calls bind objects to act on them and
 // put back what was bound, which they know from these.
 void use_program(GLuint program);
+void enable(GLenum cap);
+void disable(GLenum cap);
 void bind_vertex_array(GLuint vao);
 void bind_framebuffer(GLenum target, GLuint framebuffer);
 void bind_buffer(GLenum target, GLuint buffer);
@@ -149,6 +151,8 @@ void program_uniform(GLuint program, T&& set) {
 #define glProgramUniformMatrix4fv(p, l, n, t, v) IMPOSSIBLE_WEBGL_UNIFORM(p, glUniformMatrix4fv(l, n, t, v))
 
 #define glUseProgram ::impossible::gl::webgl::use_program
+#define glEnable ::impossible::gl::webgl::enable
+#define glDisable ::impossible::gl::webgl::disable
 #define glBindVertexArray ::impossible::gl::webgl::bind_vertex_array
 #define glBindFramebuffer ::impossible::gl::webgl::bind_framebuffer
 #define glBindBuffer ::impossible::gl::webgl::bind_buffer
