@@ -37,3 +37,30 @@ add_custom_command(TARGET web_site POST_BUILD
 # Emscripten's optimiser (run at link time) finds its node modules (acorn)
 # in Debian's folder.
 set_property(TARGET impossible_web PROPERTY RULE_LAUNCH_LINK "${CMAKE_COMMAND} -E env NODE_PATH=/usr/share/nodejs")
+
+# The core's unit tests under node (docs/web.md, "Tests"): the same test
+# files as the native programs (tests/), compiled by emscripten against
+# Debian's GoogleTest sources, reading the repository's files through node
+# (NODERAWFS). tests/web.cmake runs them.
+set(gtest_source /usr/src/googletest/googletest)
+add_library(web_gtest STATIC ${gtest_source}/src/gtest-all.cc ${gtest_source}/src/gtest_main.cc)
+target_include_directories(web_gtest SYSTEM PUBLIC ${gtest_source}/include PRIVATE ${gtest_source})
+set_target_properties(web_gtest PROPERTIES UNITY_BUILD OFF)
+function(web_unit_tests name dir)
+  file(GLOB srcs CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/tests/${dir}/*.cpp)
+  # Not the tests that run other programs (node cannot start processes).
+  list(FILTER srcs EXCLUDE REGEX ".*/(chair_glb|gallery_assets)_test\\.cpp$")
+  add_executable(${name} ${srcs})
+  set_target_properties(${name} PROPERTIES UNITY_BUILD_BATCH_SIZE 12 SUFFIX .js)
+  target_link_libraries(${name} PRIVATE ${ARGN} web_gtest)
+  target_include_directories(${name} PRIVATE ${CMAKE_SOURCE_DIR}/tests)
+  target_compile_options(${name} PRIVATE -O1)  # build time: nothing timed runs here
+  target_compile_definitions(${name} PRIVATE IMPOSSIBLE_SOURCE_DIR="${CMAKE_SOURCE_DIR}"
+    IMPOSSIBLE_TEST_DATA="${CMAKE_SOURCE_DIR}/tests/data" IMPOSSIBLE_BINARY="" IMPOSSIBLE_SANITIZED=0)
+  target_link_options(${name} PRIVATE -sNODERAWFS=1 -sENVIRONMENT=node -sALLOW_MEMORY_GROWTH=1 -sEXIT_RUNTIME=1)
+  set_property(TARGET ${name} PROPERTY RULE_LAUNCH_LINK "${CMAKE_COMMAND} -E env NODE_PATH=/usr/share/nodejs")
+endfunction()
+web_unit_tests(web_unit_base base impossible_base nlohmann_json::nlohmann_json)
+web_unit_tests(web_unit_math math impossible_math)
+web_unit_tests(web_unit_layout layout impossible_layout)
+web_unit_tests(web_unit_walk walk impossible_walk)

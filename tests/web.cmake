@@ -20,5 +20,14 @@ if(NODE_EXECUTABLE AND NOT IMPOSSIBLE_SANITIZE)
   impossible_web_test(web_xr_smoke xr.test.mjs web "IMPOSSIBLE_WEB_SMOKE=1")
   impossible_web_test(web_xr xr.test.mjs "web;long")
   impossible_web_test(web_page page.test.mjs web)
+  # The core's unit tests compiled by emscripten, run under node: the same
+  # files as unit_base, unit_math, unit_layout and unit_walk. Node cannot make
+  # FIFOs or devices, so the test of a glTF buffer that is one stays native.
+  foreach(module base math layout walk)
+    add_test(NAME web_unit_${module}
+             COMMAND ${NODE_EXECUTABLE} --no-experimental-fetch ${CMAKE_SOURCE_DIR}/build-web/web_unit_${module}.js
+                     --gtest_filter=-GltfHardening.ABufferFileThatIsNotARegularFileSaysWhatItIs)
+    set_tests_properties(web_unit_${module} PROPERTIES LABELS web TIMEOUT 300)
+  endforeach()
   impossible_web_test(web_cli cli.test.mjs web)
 endif()
