@@ -15,7 +15,7 @@ import sys
 
 LAYERS = [
     "base", "math", "image", "assets", "layout", "shading", "links", "lights", "walk",
-    "scene", "gl", "render", "trace", "design", "session", "api", "cli", "preview", "bench", "app",
+    "scene", "gl", "render", "trace", "design", "session", "api", "cli", "preview", "bench", "app", "web",
 ]
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([a-z_]+)/')

@@ -38,7 +38,8 @@ BackendContext create_egl_context() {
         attributes.powerPreference = EM_WEBGL_POWER_PREFERENCE_HIGH_PERFORMANCE;
         context = emscripten_webgl_create_context("#impossible-gl", &attributes);
         if (context <= 0) {
-            made.error = "webgl: no WebGL 2 context on the canvas #impossible-gl (code " + std::to_string(context) + ")";
+            made.error =
+                "webgl: no WebGL 2 context on the canvas #impossible-gl (code " + std::to_string(context) + ")";
             context = 0;
             return made;
         }
@@ -49,7 +50,7 @@ BackendContext create_egl_context() {
     }
     webgl::read_extensions();
     made.state = std::unique_ptr<void, void (*)(void*)>(reinterpret_cast<void*>(static_cast<std::intptr_t>(context)),
-                                                         [](void*) {});
+                                                        [](void*) {});
     made.make_current = make_current;
     return made;
 }

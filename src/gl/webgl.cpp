@@ -3,6 +3,7 @@
 #if defined(__EMSCRIPTEN__)
 
 #include "gl/webgl.hpp"
+#include "gl/webgl_bindings.hpp"
 
 #include <emscripten.h>
 
@@ -11,21 +12,9 @@
 #include <unordered_map>
 #include <vector>
 
-// The real ES entry points, which the header's macros hide.
-#undef glUseProgram
-#undef glEnable
-#undef glDisable
-#undef glBindVertexArray
-#undef glBindFramebuffer
-#undef glBindBuffer
-#undef glActiveTexture
-#undef glBindTexture
-#undef glDeleteBuffers
-#undef glDeleteTextures
-#undef glDeleteVertexArrays
-#undef glBindBufferBase
-
 // WebGL's extensions, called on the context emscripten made current (GLctx).
+// JavaScript, which clang-format would break:
+// clang-format off
 EM_JS(void, impossible_clip_control, (int origin, int depth), {
     const e = GLctx.getExtension('EXT_clip_control');
     e.clipControlEXT(origin === 0x8CA1 ? e.LOWER_LEFT_EXT : e.UPPER_LEFT_EXT,
@@ -37,21 +26,10 @@ EM_JS(void, impossible_color_mask_i, (int index, int r, int g, int b, int a), {
 EM_JS(int, impossible_has_extension, (const char* name), {
     return GLctx.getExtension(UTF8ToString(name)) ? 1 : 0;
 });
+// clang-format on
 
 namespace impossible::gl::webgl {
 namespace {
-
-// What is bound, as the trackers saw it.
-struct Bindings {
-    GLuint program = 0;
-    GLuint vertex_array = 0;
-    GLuint draw_framebuffer = 0;
-    GLuint read_framebuffer = 0;
-    GLenum active_unit = GL_TEXTURE0;
-    bool scissor = false;  // glIsEnabled waits for the GPU process: known here instead
-    std::unordered_map<GLenum, GLuint> buffers;  // target -> buffer
-};
-Bindings bound;
 
 // Per texture, its target; per buffer, whether it is an index buffer (WebGL
 // types a buffer by its first binding, and an index buffer can be bound
@@ -83,12 +61,23 @@ Extensions found;
 // the last one, which no program samples.
 constexpr GLenum kEditUnit = GL_TEXTURE0 + 15;
 
+}  // namespace
+
+Bindings& bound_now() {
+    static Bindings bound;
+    return bound;
+}
+
 GLenum target_of(GLuint texture) {
     const auto it = texture_targets.find(texture);
     return it == texture_targets.end() ? GL_TEXTURE_2D : it->second;
 }
 
 // Binds `texture` on the edit unit for the duration of `act`.
+namespace {
+
+Bindings& bound = bound_now();
+
 template <typename F>
 void with_texture(GLuint texture, F&& act) {
     glActiveTexture(kEditUnit);
@@ -126,13 +115,6 @@ void with_any_buffer(GLuint buffer, F&& act) {
         with_index_buffer(buffer, act);
     else
         with_buffer(buffer, act);
-}
-
-template <typename F>
-void with_draw_framebuffer(GLuint framebuffer, F&& act) {
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
-    act();
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, bound.draw_framebuffer);
 }
 
 template <typename F>
@@ -252,28 +234,6 @@ void bind_buffer_base(GLenum target, GLuint index, GLuint buffer) {
     glBindBufferBase(target == GL_SHADER_STORAGE_BUFFER ? GL_UNIFORM_BUFFER : target, index, buffer);
     bound.buffers[GL_UNIFORM_BUFFER] = buffer;
 }
-void copy_image_sub_data(GLuint from, GLenum from_target, GLint from_level, GLint x, GLint y, GLint, GLuint to,
-                         GLenum to_target, GLint to_level, GLint u, GLint v, GLint, GLsizei width, GLsizei height,
-                         GLsizei) {
-    static GLuint read = 0, draw = 0;
-    if (!read) {
-        glGenFramebuffers(1, &read);
-        glGenFramebuffers(1, &draw);
-    }
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, read);
-    if (from_target == GL_RENDERBUFFER)
-        glFramebufferRenderbuffer(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, from);
-    else
-        glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, from_target, from, from_level);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, draw);
-    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, to_target, to, to_level);
-    const bool scissor = bound.scissor;
-    if (scissor) glDisable(GL_SCISSOR_TEST);
-    glBlitFramebuffer(x, y, x + width, y + height, u, v, u + width, v + height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    if (scissor) glEnable(GL_SCISSOR_TEST);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, bound.read_framebuffer);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, bound.draw_framebuffer);
-}
 void named_buffer_sub_data(GLuint buffer, GLintptr offset, GLsizeiptr size, const void* data) {
     with_any_buffer(buffer, [&](GLenum t) { glBufferSubData(t, offset, size, data); });
 }
@@ -281,15 +241,14 @@ void named_buffer_sub_data(GLuint buffer, GLintptr offset, GLsizeiptr size, cons
 void texture_storage_2d(GLuint texture, GLsizei levels, GLenum format, GLsizei width, GLsizei height) {
     with_texture(texture, [&](GLenum t) { glTexStorage2D(t, levels, format, width, height); });
 }
-void texture_storage_3d(GLuint texture, GLsizei levels, GLenum format, GLsizei width, GLsizei height,
-                        GLsizei depth) {
+void texture_storage_3d(GLuint texture, GLsizei levels, GLenum format, GLsizei width, GLsizei height, GLsizei depth) {
     with_texture(texture, [&](GLenum t) { glTexStorage3D(t, levels, format, width, height, depth); });
 }
 void texture_storage_2d_multisample(GLuint, GLsizei, GLenum, GLsizei, GLsizei, GLboolean) {
     unsupported("glTextureStorage2DMultisample");
 }
-void texture_sub_image_2d(GLuint texture, GLint level, GLint x, GLint y, GLsizei width, GLsizei height,
-                          GLenum format, GLenum type, const void* pixels) {
+void texture_sub_image_2d(GLuint texture, GLint level, GLint x, GLint y, GLsizei width, GLsizei height, GLenum format,
+                          GLenum type, const void* pixels) {
     with_texture(texture, [&](GLenum t) { glTexSubImage2D(t, level, x, y, width, height, format, type, pixels); });
 }
 void texture_parameter_i(GLuint texture, GLenum name, GLint value) {
@@ -309,75 +268,6 @@ void bind_texture_unit(GLuint unit, GLuint texture) {
         glBindTexture(target_of(texture), texture);
     }
     glActiveTexture(bound.active_unit);
-}
-
-void named_renderbuffer_storage(GLuint renderbuffer, GLenum format, GLsizei width, GLsizei height) {
-    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer);
-    glRenderbufferStorage(GL_RENDERBUFFER, format, width, height);
-    glBindRenderbuffer(GL_RENDERBUFFER, 0);
-}
-void named_renderbuffer_storage_multisample(GLuint renderbuffer, GLsizei samples, GLenum format, GLsizei width,
-                                            GLsizei height) {
-    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, width, height);
-    glBindRenderbuffer(GL_RENDERBUFFER, 0);
-}
-
-void named_framebuffer_texture(GLuint framebuffer, GLenum attachment, GLuint texture, GLint level) {
-    with_draw_framebuffer(framebuffer, [&] {
-        glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, attachment, target_of(texture), texture, level);
-    });
-}
-void named_framebuffer_texture_layer(GLuint framebuffer, GLenum attachment, GLuint texture, GLint level,
-                                     GLint layer) {
-    with_draw_framebuffer(framebuffer,
-                          [&] { glFramebufferTextureLayer(GL_DRAW_FRAMEBUFFER, attachment, texture, level, layer); });
-}
-void named_framebuffer_renderbuffer(GLuint framebuffer, GLenum attachment, GLenum target, GLuint renderbuffer) {
-    with_draw_framebuffer(framebuffer,
-                          [&] { glFramebufferRenderbuffer(GL_DRAW_FRAMEBUFFER, attachment, target, renderbuffer); });
-}
-void named_framebuffer_draw_buffers(GLuint framebuffer, GLsizei n, const GLenum* buffers) {
-    with_draw_framebuffer(framebuffer, [&] { glDrawBuffers(n, buffers); });
-}
-void named_framebuffer_draw_buffer(GLuint framebuffer, GLenum buffer) {
-    // ES: the i-th entry names attachment i or nothing.
-    std::vector<GLenum> list;
-    if (buffer >= GL_COLOR_ATTACHMENT0 && buffer < GL_COLOR_ATTACHMENT0 + 8) {
-        list.assign(buffer - GL_COLOR_ATTACHMENT0 + 1, GL_NONE);
-        list.back() = buffer;
-    } else {
-        list.push_back(buffer);
-    }
-    named_framebuffer_draw_buffers(framebuffer, static_cast<GLsizei>(list.size()), list.data());
-}
-void named_framebuffer_read_buffer(GLuint framebuffer, GLenum buffer) {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
-    glReadBuffer(buffer);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, bound.read_framebuffer);
-}
-GLenum check_named_framebuffer_status(GLuint framebuffer, GLenum target) {
-    GLenum status = 0;
-    with_draw_framebuffer(framebuffer, [&] { status = glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER); });
-    (void)target;
-    return status;
-}
-void clear_named_framebuffer_fv(GLuint framebuffer, GLenum buffer, GLint drawbuffer, const GLfloat* value) {
-    with_draw_framebuffer(framebuffer, [&] { glClearBufferfv(buffer, drawbuffer, value); });
-}
-void clear_named_framebuffer_uiv(GLuint framebuffer, GLenum buffer, GLint drawbuffer, const GLuint* value) {
-    with_draw_framebuffer(framebuffer, [&] { glClearBufferuiv(buffer, drawbuffer, value); });
-}
-void clear_named_framebuffer_fi(GLuint framebuffer, GLenum buffer, GLint drawbuffer, GLfloat depth, GLint stencil) {
-    with_draw_framebuffer(framebuffer, [&] { glClearBufferfi(buffer, drawbuffer, depth, stencil); });
-}
-void blit_named_framebuffer(GLuint from, GLuint to, GLint x0, GLint y0, GLint x1, GLint y1, GLint u0, GLint v0,
-                            GLint u1, GLint v1, GLbitfield mask, GLenum filter) {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, from);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, to);
-    glBlitFramebuffer(x0, y0, x1, y1, u0, v0, u1, v1, mask, filter);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, bound.read_framebuffer);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, bound.draw_framebuffer);
 }
 
 void vertex_array_vertex_buffer(GLuint vao, GLuint binding, GLuint buffer, GLintptr offset, GLsizei stride) {

@@ -38,8 +38,8 @@ namespace impossible::gl::webgl {
 
 // Which of WebGL's extensions the context has (read once it is made).
 struct Extensions {
-    bool clip_distance = false;     // WEBGL_clip_cull_distance
-    bool clip_control = false;      // EXT_clip_control
+    bool clip_distance = false;         // WEBGL_clip_cull_distance
+    bool clip_control = false;          // EXT_clip_control
     bool draw_buffers_indexed = false;  // OES_draw_buffers_indexed
     bool float_blend = false;
 };
@@ -72,12 +72,11 @@ void named_buffer_data(GLuint buffer, GLsizeiptr size, const void* data, GLenum 
 void named_buffer_sub_data(GLuint buffer, GLintptr offset, GLsizeiptr size, const void* data);
 
 void texture_storage_2d(GLuint texture, GLsizei levels, GLenum format, GLsizei width, GLsizei height);
-void texture_storage_3d(GLuint texture, GLsizei levels, GLenum format, GLsizei width, GLsizei height,
-                        GLsizei depth);
+void texture_storage_3d(GLuint texture, GLsizei levels, GLenum format, GLsizei width, GLsizei height, GLsizei depth);
 void texture_storage_2d_multisample(GLuint texture, GLsizei samples, GLenum format, GLsizei width, GLsizei height,
                                     GLboolean fixed);
-void texture_sub_image_2d(GLuint texture, GLint level, GLint x, GLint y, GLsizei width, GLsizei height,
-                          GLenum format, GLenum type, const void* pixels);
+void texture_sub_image_2d(GLuint texture, GLint level, GLint x, GLint y, GLsizei width, GLsizei height, GLenum format,
+                          GLenum type, const void* pixels);
 void texture_parameter_i(GLuint texture, GLenum name, GLint value);
 void texture_parameter_fv(GLuint texture, GLenum name, const GLfloat* value);
 void generate_texture_mipmap(GLuint texture);
@@ -88,8 +87,7 @@ void named_renderbuffer_storage_multisample(GLuint renderbuffer, GLsizei samples
                                             GLsizei height);
 
 void named_framebuffer_texture(GLuint framebuffer, GLenum attachment, GLuint texture, GLint level);
-void named_framebuffer_texture_layer(GLuint framebuffer, GLenum attachment, GLuint texture, GLint level,
-                                     GLint layer);
+void named_framebuffer_texture_layer(GLuint framebuffer, GLenum attachment, GLuint texture, GLint level, GLint layer);
 void named_framebuffer_renderbuffer(GLuint framebuffer, GLenum attachment, GLenum target, GLuint renderbuffer);
 void named_framebuffer_draw_buffer(GLuint framebuffer, GLenum buffer);
 void named_framebuffer_draw_buffers(GLuint framebuffer, GLsizei n, const GLenum* buffers);
@@ -104,8 +102,7 @@ void blit_named_framebuffer(GLuint from, GLuint to, GLint x0, GLint y0, GLint x1
 void vertex_array_vertex_buffer(GLuint vao, GLuint binding, GLuint buffer, GLintptr offset, GLsizei stride);
 void vertex_array_element_buffer(GLuint vao, GLuint buffer);
 void enable_vertex_array_attrib(GLuint vao, GLuint index);
-void vertex_array_attrib_format(GLuint vao, GLuint index, GLint size, GLenum type, GLboolean normalized,
-                                GLuint offset);
+void vertex_array_attrib_format(GLuint vao, GLuint index, GLint size, GLenum type, GLboolean normalized, GLuint offset);
 void vertex_array_attrib_binding(GLuint vao, GLuint index, GLuint binding);
 
 // Storage buffers become uniform buffers of at most kUniformBufferBytes

@@ -1,9 +1,9 @@
 #include "layout/path_file.hpp"
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
-#include <cctype>
 #include <sstream>
 #include <string_view>
 
@@ -50,7 +50,8 @@ bool parse_field(const std::string& field, double& value) {
     // Emscripten's libc++ has no floating-point from_chars: strtod, less
     // what from_chars refuses (leading space, hexadecimal).
     const std::string text(first, last);
-    if (text.empty() || std::isspace(static_cast<unsigned char>(text[0])) || text.find_first_of("xX") != std::string::npos)
+    if (text.empty() || std::isspace(static_cast<unsigned char>(text[0])) ||
+        text.find_first_of("xX") != std::string::npos)
         return false;
     char* end = nullptr;
     value = std::strtod(text.c_str(), &end);

@@ -17,12 +17,11 @@ Result<void> web_profile_check([[maybe_unused]] const FrameDesc& frame) {
                      "resolve the id map from); use --samples 1"};
     if (frame.stereo == StereoMode::ViewportIndex)
         return Error{"{stereo} viewport-index: WebGL 2 has no viewport arrays; use clip-shift or two-pass"};
-    if (frame.occlusion_test)
-        return Error{"{occlusion-test}: WebGL 2 has no conditional rendering"};
-    if (frame.profile)
-        return Error{"the per-portal profile needs GL_SAMPLES_PASSED queries, which WebGL 2 lacks"};
+    if (frame.occlusion_test) return Error{"{occlusion-test}: WebGL 2 has no conditional rendering"};
+    if (frame.profile) return Error{"the per-portal profile needs GL_SAMPLES_PASSED queries, which WebGL 2 lacks"};
     if (frame.depth == DepthMode::ReversedZ && !e.clip_control)
-        return Error{"{depth} reversed-z needs EXT_clip_control, which this browser's WebGL 2 lacks; use --depth standard"};
+        return Error{
+            "{depth} reversed-z needs EXT_clip_control, which this browser's WebGL 2 lacks; use --depth standard"};
     if (!e.draw_buffers_indexed)
         return Error{"this browser's WebGL 2 lacks OES_draw_buffers_indexed, which the id map's passes need"};
 #endif

@@ -26,27 +26,28 @@ bool inside_triangle(dvec2 p, dvec2 a, dvec2 b, dvec2 c) {
     return cross(a, b, p) >= 0 && cross(b, c, p) >= 0 && cross(c, a, p) >= 0;
 }
 
-}  // namespace
-
-Tessellation tessellate(const std::vector<std::vector<dvec2>>& contours) {
-    Tessellation out;
-    std::vector<std::vector<int>> loops;  // indices into out.points, outline CCW, holes CW
+// The contours' points into out.points, as loops of indices: the outline
+// counter-clockwise, the holes clockwise.
+std::vector<std::vector<int>> loops_of(const std::vector<std::vector<dvec2>>& contours, Tessellation& out) {
+    std::vector<std::vector<int>> loops;
     for (std::size_t c = 0; c < contours.size(); ++c) {
-        const int first = static_cast<int>(out.points.size());
         std::vector<int> loop;
         for (const dvec2& p : contours[c]) {
             loop.push_back(static_cast<int>(out.points.size()));
             out.points.push_back(p);
         }
         if ((math::signed_area(contours[c]) > 0.0) != (c == 0)) std::reverse(loop.begin(), loop.end());
-        (void)first;
         loops.push_back(loop);
     }
-    if (loops.empty()) return out;
-    const auto P = [&](int i) { return out.points[static_cast<std::size_t>(i)]; };
-    std::vector<int> poly = loops[0];
-    // Holes, rightmost first, each bridged to the nearest outline corner that
-    // the bridge reaches without crossing an edge.
+    return loops;
+}
+
+// Joins each hole to the outline, rightmost hole first, by a bridge from its
+// rightmost corner to the nearest corner it reaches without crossing an
+// edge; false when some hole has no such corner.
+bool bridge_holes(const std::vector<std::vector<int>>& loops, const std::vector<dvec2>& points,
+                  std::vector<int>& poly) {
+    const auto P = [&](int i) { return points[static_cast<std::size_t>(i)]; };
     std::vector<std::size_t> holes;
     for (std::size_t h = 1; h < loops.size(); ++h) holes.push_back(h);
     const auto max_x = [&](std::size_t h) {
@@ -77,45 +78,56 @@ Tessellation tessellate(const std::vector<std::vector<dvec2>>& contours) {
                 best_d = d;
             }
         }
-        if (best < 0) return {};
+        if (best < 0) return false;
         std::vector<int> joined(poly.begin(), poly.begin() + best + 1);
         for (std::size_t i = 0; i <= hole.size(); ++i) joined.push_back(hole[(k + i) % hole.size()]);
         joined.insert(joined.end(), poly.begin() + best, poly.end());
         poly = joined;
     }
-    // Ear clipping.
-    std::size_t guard = 0;
-    while (poly.size() > 3 && guard < 4 * poly.size() * poly.size()) {
-        bool clipped = false;
-        for (std::size_t i = 0; i < poly.size() && !clipped; ++i) {
-            const std::size_t n = poly.size();
-            const int a = poly[(i + n - 1) % n], b = poly[i], c = poly[(i + 1) % n];
-            if (cross(P(a), P(b), P(c)) <= 0) continue;
-            bool empty = true;
-            for (std::size_t j = 0; j < n && empty; ++j) {
-                const int q = poly[j];
-                if (q == a || q == b || q == c || P(q) == P(a) || P(q) == P(b) || P(q) == P(c)) continue;
-                empty = !inside_triangle(P(q), P(a), P(b), P(c));
-            }
-            if (!empty) continue;
-            out.triangles.push_back({a, b, c});
-            poly.erase(poly.begin() + static_cast<std::ptrdiff_t>(i));
-            clipped = true;
+    return true;
+}
+
+// Clips one ear of `poly` into `triangles`, or drops a corner between
+// collinear neighbours; false when neither is left.
+bool clip_one(std::vector<int>& poly, const std::vector<dvec2>& points, std::vector<std::array<int, 3>>& triangles) {
+    const auto P = [&](int i) { return points[static_cast<std::size_t>(i)]; };
+    const std::size_t n = poly.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const int a = poly[(i + n - 1) % n], b = poly[i], c = poly[(i + 1) % n];
+        if (cross(P(a), P(b), P(c)) <= 0) continue;
+        bool empty = true;
+        for (std::size_t j = 0; j < n && empty; ++j) {
+            const int q = poly[j];
+            if (q == a || q == b || q == c || P(q) == P(a) || P(q) == P(b) || P(q) == P(c)) continue;
+            empty = !inside_triangle(P(q), P(a), P(b), P(c));
         }
-        if (!clipped) {
-            // Only collinear corners left between ears: drop one.
-            for (std::size_t i = 0; i < poly.size() && !clipped; ++i) {
-                const std::size_t n = poly.size();
-                if (cross(P(poly[(i + n - 1) % n]), P(poly[i]), P(poly[(i + 1) % n])) == 0) {
-                    poly.erase(poly.begin() + static_cast<std::ptrdiff_t>(i));
-                    clipped = true;
-                }
-            }
-        }
-        if (!clipped) return {};
-        ++guard;
+        if (!empty) continue;
+        triangles.push_back({a, b, c});
+        poly.erase(poly.begin() + static_cast<std::ptrdiff_t>(i));
+        return true;
     }
-    if (poly.size() == 3 && cross(P(poly[0]), P(poly[1]), P(poly[2])) > 0) out.triangles.push_back({poly[0], poly[1], poly[2]});
+    for (std::size_t i = 0; i < n; ++i) {
+        if (cross(P(poly[(i + n - 1) % n]), P(poly[i]), P(poly[(i + 1) % n])) == 0) {
+            poly.erase(poly.begin() + static_cast<std::ptrdiff_t>(i));
+            return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace
+
+Tessellation tessellate(const std::vector<std::vector<dvec2>>& contours) {
+    Tessellation out;
+    const std::vector<std::vector<int>> loops = loops_of(contours, out);
+    if (loops.empty()) return out;
+    std::vector<int> poly = loops[0];
+    if (!bridge_holes(loops, out.points, poly)) return {};
+    while (poly.size() > 3)
+        if (!clip_one(poly, out.points, out.triangles)) return {};
+    const auto P = [&](int i) { return out.points[static_cast<std::size_t>(i)]; };
+    if (poly.size() == 3 && cross(P(poly[0]), P(poly[1]), P(poly[2])) > 0)
+        out.triangles.push_back({poly[0], poly[1], poly[2]});
     return out;
 }
 

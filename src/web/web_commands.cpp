@@ -58,9 +58,7 @@ const std::string& last_command_errors() { return last_err; }
 }  // namespace impossible::web
 
 extern "C" {
-EMSCRIPTEN_KEEPALIVE int impossible_run(const char* args_json) {
-    return impossible::web::run_web_command(args_json);
-}
+EMSCRIPTEN_KEEPALIVE int impossible_run(const char* args_json) { return impossible::web::run_web_command(args_json); }
 EMSCRIPTEN_KEEPALIVE const char* impossible_run_output() { return impossible::web::last_command_output().c_str(); }
 EMSCRIPTEN_KEEPALIVE const char* impossible_run_errors() { return impossible::web::last_command_errors().c_str(); }
 }

@@ -177,7 +177,8 @@ EMSCRIPTEN_KEEPALIVE const char* impossible_page_view_options(const char* reques
 }
 EMSCRIPTEN_KEEPALIVE void impossible_page_reset() {
     if (impossible::web::page.session)
-        impossible::web::page.driver = std::make_unique<impossible::session::WalkDriver>(*impossible::web::page.session);
+        impossible::web::page.driver =
+            std::make_unique<impossible::session::WalkDriver>(*impossible::web::page.session);
 }
 EMSCRIPTEN_KEEPALIVE const char* impossible_page_message() { return impossible::web::page.message.c_str(); }
 EMSCRIPTEN_KEEPALIVE const char* impossible_page_status() { return impossible::web::page.status.c_str(); }

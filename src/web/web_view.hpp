@@ -16,8 +16,8 @@
 #pragma once
 
 #include <array>
-#include <string>
 #include <nlohmann/json_fwd.hpp>
+#include <string>
 
 #include "layout/layout.hpp"
 #include "render/frame.hpp"

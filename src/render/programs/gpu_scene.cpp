@@ -74,7 +74,6 @@ GpuScene upload_scene(const scene::Scene& scene) {
     glNamedBufferSubData(gpu.indices.get(), 0, static_cast<GLsizeiptr>(scene.indices.size() * sizeof(std::uint32_t)),
                          scene.indices.data());
 
-
     gpu.textures.reserve(scene.textures.size());
     for (const scene::SceneTexture& t : scene.textures) gpu.textures.push_back(upload_texture(t));
     return gpu;
