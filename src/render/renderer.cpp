@@ -200,12 +200,16 @@ Renderer::~Renderer() = default;
 const Target& Renderer::target() const { return parts_->targets.target; }
 
 Result<void> Renderer::draw(const FrameDesc& frame, FrameStats* stats_out) {
-    return draw_frame(*parts_, frame, stats_out, nullptr);
+    FrameDesc adjusted;
+    return draw_frame(*parts_, web_profile_fallbacks(frame, adjusted), stats_out, nullptr);
 }
 
 Result<RenderedFrame> Renderer::render(const FrameDesc& frame) {
     RenderedFrame out;
-    if (Result<void> drawn = draw_frame(*parts_, frame, &out.stats, &out.image); !drawn) return drawn;
+    FrameDesc adjusted;
+    if (Result<void> drawn = draw_frame(*parts_, web_profile_fallbacks(frame, adjusted), &out.stats, &out.image);
+        !drawn)
+        return drawn;
     return out;
 }
 

@@ -28,4 +28,15 @@ Result<void> web_profile_check([[maybe_unused]] const FrameDesc& frame) {
     return {};
 }
 
+const FrameDesc& web_profile_fallbacks(const FrameDesc& frame, [[maybe_unused]] FrameDesc& adjusted) {
+#if defined(__EMSCRIPTEN__)
+    if (frame.depth == DepthMode::ReversedZ && !gl::webgl::extensions().clip_control) {
+        adjusted = frame;
+        adjusted.depth = DepthMode::Standard;
+        return adjusted;
+    }
+#endif
+    return frame;
+}
+
 }  // namespace impossible::render

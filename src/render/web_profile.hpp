@@ -10,4 +10,9 @@ namespace impossible::render {
 
 Result<void> web_profile_check(const FrameDesc& frame);
 
+// What the web build falls back on (docs/web.md): reversed-Z depth becomes
+// standard depth where the browser lacks EXT_clip_control. Returns `frame`,
+// or `adjusted` holding its changed copy.
+const FrameDesc& web_profile_fallbacks(const FrameDesc& frame, FrameDesc& adjusted);
+
 }  // namespace impossible::render
