@@ -119,6 +119,14 @@ bool draw_frame(const std::string& request_text) {
         json status = walked_json(walked);
         status["ms"] = ms(drawn_at - started).count();
         status["walk_ms"] = ms(walked_at - started).count();
+        // The hands' rooms, walked from the head centre (the controllers).
+        if (walked.hands) {
+            const layout::Layout& l = page.session->layout();
+            json hands = json::array();
+            for (const session::WalkedHand& h : *walked.hands)
+                hands.push_back(h.room < 0 ? json(nullptr) : json(l.rooms[static_cast<std::size_t>(h.room)].id));
+            status["hands"] = hands;
+        }
         status["frame_ms"] = ms(finished_at - started).count();
         // The physical head as walked (WebXR's poses are single precision),
         // for a path file that `walk` replays exactly.

@@ -102,3 +102,34 @@ for (const [layoutName, pathName] of smoke ? walks.slice(0, 2) : walks) {
     }
   });
 }
+
+test('the controllers are the layout\'s hands: one reached through the door is in the room beyond', async () => {
+  const session = await openPage({ xr: true, width: 320, height: 100 });
+  try {
+    const rooms = await session.page.evaluate(async () => {
+      const { api, xr } = window.impossible;
+      const info = JSON.parse(api.layoutInfo());
+      const device = window.emulatedHeadset;
+      // The head in the hall 0.3 m in front of the door (z = 0), facing it.
+      const head = xr.layoutToFloor(info.start, [0, 1.6, 0.3, 0, 0, 0]);
+      device.position.set(...head.position);
+      device.quaternion.set(...head.orientation);
+      const place = (hand, p) => {
+        const at = xr.layoutToFloor(info.start, p);
+        device.controllers[hand].position.set(...at.position);
+        device.controllers[hand].quaternion.set(...at.orientation);
+      };
+      place('left', [-0.2, 1.2, 0.3, 0, 0, 0]);
+      place('right', [0.05, 1.4, -0.2, 0, 0, 0]);  // through the door, 0.2 m beyond it
+      xr.hold = true;
+      await xr.enter();
+      api.reset();
+      const status = await new Promise((resolve) => { xr.onFrame = resolve; xr.hold = false; });
+      await xr.exit();
+      return { head: status.room, hands: status.hands };
+    });
+    assert.deepEqual(rooms, { head: 'hall', hands: ['hall', 'annex'] });
+  } finally {
+    await session.close();
+  }
+});
