@@ -1,6 +1,8 @@
 # The web build's targets (included by CMakeLists.txt under emscripten): the
 # page's WebAssembly module, impossible.js + impossible.wasm, with the
 # commands that need no window (src/web, and the native commands' files).
+# The public API and its Python module are native only.
+set_target_properties(impossible_api PROPERTIES EXCLUDE_FROM_ALL ON)
 file(GLOB web_sources CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/src/web/*.cpp)
 add_executable(impossible_web ${web_sources}
   ${CMAKE_SOURCE_DIR}/src/app/run_command.cpp
@@ -57,7 +59,8 @@ function(web_unit_tests name dir)
   target_compile_options(${name} PRIVATE -O1)  # build time: nothing timed runs here
   target_compile_definitions(${name} PRIVATE IMPOSSIBLE_SOURCE_DIR="${CMAKE_SOURCE_DIR}"
     IMPOSSIBLE_TEST_DATA="${CMAKE_SOURCE_DIR}/tests/data" IMPOSSIBLE_BINARY="" IMPOSSIBLE_SANITIZED=0)
-  target_link_options(${name} PRIVATE -sNODERAWFS=1 -sENVIRONMENT=node -sALLOW_MEMORY_GROWTH=1 -sEXIT_RUNTIME=1)
+  # -O0 at link: no wasm-opt pass (build time; the tests take a second).
+  target_link_options(${name} PRIVATE -O0 -sNODERAWFS=1 -sENVIRONMENT=node -sALLOW_MEMORY_GROWTH=1 -sEXIT_RUNTIME=1)
   set_property(TARGET ${name} PROPERTY RULE_LAUNCH_LINK "${CMAKE_COMMAND} -E env NODE_PATH=/usr/share/nodejs")
 endfunction()
 web_unit_tests(web_unit_base base impossible_base nlohmann_json::nlohmann_json)
