@@ -3,6 +3,8 @@
 // space become the visible area in the normalised image, clipped to it; a
 // visible_area reaching past the image is clipped too.
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 
 #include "layout/hmd_profile.hpp"
 #include "layout_test_util.hpp"
@@ -86,6 +88,33 @@ TEST(VisibilityMaskProfile, AVisibleAreaPastTheImageIsClipped) {
     const Result<HmdProfile> q = parse(R"("visible_area": [[0.1, 0.5], [0.5, 0], [1, 0.5], [0.5, 1]])");
     ASSERT_TRUE(q) << q.error();
     EXPECT_EQ(q->eyes[0].visible_area, (math::Polygon2{{0.1, 0.5}, {0.5, 0}, {1, 0.5}, {0.5, 1}}));
+}
+
+// The Valve Index's own masks (profiles/valve-index*.json, docs/headsets.md):
+// the line loop reaches past the image and is clipped; the triangles hide
+// the published 24.88 % of each eye's area, at pixel centres too.
+TEST(VisibilityMaskProfile, TheIndexsMasksHideItsPublishedShare) {
+    const struct {
+        const char* file;
+        double left, right;  // hidden share at 1440x1600, counted when this test was written
+    } profiles[] = {{"valve-index.json", 0.2503, 0.2515}, {"valve-index-mesh.json", 0.2489, 0.2489}};
+    for (const auto& p : profiles) {
+        const Result<HmdProfile> profile =
+            read_hmd_profile_file(std::string(IMPOSSIBLE_SOURCE_DIR) + "/profiles/" + p.file);
+        ASSERT_TRUE(profile) << profile.error();
+        ASSERT_EQ(profile->eye_width, 1440);
+        ASSERT_EQ(profile->eye_height, 1600);
+        for (int e = 0; e < 2; ++e) {
+            const math::Polygon2& area = profile->eyes[static_cast<size_t>(e)].visible_area;
+            for (const glm::dvec2& c : area) ASSERT_TRUE(c.x >= 0 && c.x <= 1 && c.y >= 0 && c.y <= 1);
+            long hidden = 0;
+            for (std::uint8_t h : math::hidden_pixels(area, 1440, 1600)) hidden += h;
+            const double share = static_cast<double>(hidden) / (1440.0 * 1600.0);
+            std::printf("  %s %s eye: %zu corners, hidden %.4f %%\n", p.file, e == 0 ? "left" : "right", area.size(),
+                        100.0 * share);
+            EXPECT_NEAR(share, e == 0 ? p.left : p.right, 0.0002) << p.file << " " << e;
+        }
+    }
 }
 
 TEST(VisibilityMaskProfile, BadMasksAreRefusedWithTheirPlace) {
