@@ -211,7 +211,8 @@ write_mask_profile("valve-index.json", "Valve Index (its OpenXR line loop)",
                    INDEX_SOURCE % "The mask is the runtime's line loop (XR_VISIBILITY_MASK_TYPE_LINE_LOOP_KHR); "
                    "2 of its 27 corners per eye lie above the image, so the program clips it", 0.064, INDEX_MASK,
                    "line_loop", [1440, 1600])
-write_mask_profile("valve-index-mesh.json", "Valve Index (its OpenXR visible triangles)",
-                   INDEX_SOURCE % "The mask is the runtime's visible triangles "
-                   "(XR_VISIBILITY_MASK_TYPE_VISIBLE_TRIANGLE_MESH_KHR), a fan of 27 triangles, its repeated "
-                   "vertices merged into an index buffer", 0.064, INDEX_MASK, "triangles", [1440, 1600])
+if "triangles" in INDEX_MASK["left"] and "triangles" in INDEX_MASK["right"]:  # a mask file may give the loop only
+    write_mask_profile("valve-index-mesh.json", "Valve Index (its OpenXR visible triangles)",
+                       INDEX_SOURCE % "The mask is the runtime's visible triangles "
+                       "(XR_VISIBILITY_MASK_TYPE_VISIBLE_TRIANGLE_MESH_KHR), a fan of 27 triangles, its repeated "
+                       "vertices merged into an index buffer", 0.064, INDEX_MASK, "triangles", [1440, 1600])
