@@ -2,6 +2,8 @@
 #include "layout/hmd_profile.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 #include "base/file_io.hpp"
 #include "base/format.hpp"
@@ -9,6 +11,7 @@
 #include "layout/json_doc.hpp"
 #include "math/polygon.hpp"
 #include "math/view_limits.hpp"
+#include "math/visibility_mask.hpp"
 
 namespace impossible::layout {
 
@@ -63,24 +66,112 @@ std::optional<std::array<int, 2>> read_resolution(Checker& check, const Path& at
     return out;
 }
 
-std::optional<math::Polygon2> read_visible_area(Checker& check, const Path& at, const json& j) {
-    if (!check.expect_array(at, j, kMaxVisibleAreaCorners)) return std::nullopt;
+// Corners [a, b], finite (|v| at most 1e5), 3..max of them.
+std::optional<math::Polygon2> read_corners(Checker& check, const Path& at, const json& j, std::size_t max) {
+    if (!check.expect_array(at, j, max)) return std::nullopt;
     if (j.size() < 3) {
-        check.error(at, "a polygon needs at least 3 corners [u, v]");
+        check.error(at, "a polygon needs at least 3 corners");
         return std::nullopt;
     }
     math::Polygon2 poly;
     for (std::size_t k = 0; k < j.size(); ++k) {
-        const std::optional<glm::dvec2> p = check.read_vec2(at / k, j[k], NumberKind::Fraction);
+        const std::optional<glm::dvec2> p = check.read_vec2(at / k, j[k], NumberKind::Direction);
         if (!p) return std::nullopt;
         poly.push_back(*p);
     }
-    if (const std::optional<math::PolygonProblem> problem = math::simple_polygon_problem(poly)) {
-        check.error(at / static_cast<std::size_t>(problem->corner),
-                    "the visible area must be a simple polygon: " + problem->message);
+    return poly;
+}
+
+bool simple_or_error(Checker& check, const Path& at, const math::Polygon2& poly, const char* what) {
+    const std::optional<math::PolygonProblem> problem = math::simple_polygon_problem(poly);
+    if (problem) check.error(at / static_cast<std::size_t>(problem->corner), std::string(what) + problem->message);
+    return !problem;
+}
+
+// The visible area in the normalised image: `area` ∩ the image.
+std::optional<math::Polygon2> inside_image(Checker& check, const Path& at, const math::Polygon2& area) {
+    const math::Polygon2 clipped = math::clip_to_image(area);
+    if (clipped.size() < 3 || !(math::area(clipped) > 0.0)) {
+        check.error(at, "no part of the visible area lies inside the image");
         return std::nullopt;
     }
-    return poly;
+    if (const std::optional<math::PolygonProblem> problem =
+            clipped == area ? std::nullopt : math::simple_polygon_problem(clipped)) {
+        check.error(at, "the visible area's part inside the image is not one simple polygon (" + problem->message +
+                            "): it falls apart where it crosses the image's edge");
+        return std::nullopt;
+    }
+    if (clipped.size() > kMaxVisibleAreaCorners) {
+        check.error(at, "the visible area has " + std::to_string(clipped.size()) +
+                            " corners inside the image, more than " + std::to_string(kMaxVisibleAreaCorners));
+        return std::nullopt;
+    }
+    return clipped;
+}
+
+// "visible_area": corners [u, v] in the normalised image; the part inside
+// the image is kept.
+std::optional<math::Polygon2> read_visible_area(Checker& check, const Path& at, const json& j) {
+    const std::optional<math::Polygon2> poly = read_corners(check, at, j, kMaxVisibleAreaCorners);
+    if (!poly || !simple_or_error(check, at, *poly, "the visible area must be a simple polygon: ")) return std::nullopt;
+    return inside_image(check, at, *poly);
+}
+
+std::optional<std::vector<std::uint32_t>> read_indices(Checker& check, const Path& at, const json& j) {
+    if (!check.expect_array(at, j, kMaxVisibilityMaskIndices)) return std::nullopt;
+    if (j.size() < 3 || j.size() % 3 != 0) {
+        check.error(at, "expected whole triangles, three indices each (got " + std::to_string(j.size()) + ")");
+        return std::nullopt;
+    }
+    std::vector<std::uint32_t> out;
+    for (std::size_t k = 0; k < j.size(); ++k) {
+        if (!j[k].is_number_integer() || j[k].get<long long>() < 0 || j[k].get<long long>() > 0xffffffffLL) {
+            check.error(at / k, "expected an index into vertices, a whole number from 0");
+            return std::nullopt;
+        }
+        out.push_back(static_cast<std::uint32_t>(j[k].get<long long>()));
+    }
+    return out;
+}
+
+// "visibility_mask": OpenXR's line loop or visible triangles in the eye's
+// tangent space (math/visibility_mask.hpp), in the image through `fov`.
+std::optional<math::Polygon2> read_visibility_mask(Checker& check, const Path& at, const json& j,
+                                                   const math::FovAngles& fov) {
+    if (!check.expect_object(at, j) || !check.check_fields(at, j, {"line_loop", "vertices", "indices"}, {}))
+        return std::nullopt;
+    const bool loop = j.contains("line_loop"), mesh = j.contains("vertices") || j.contains("indices");
+    if (loop == mesh) {
+        check.error(at, loop ? "give either line_loop or vertices and indices, not both"
+                             : "expected line_loop, or vertices and indices");
+        return std::nullopt;
+    }
+    math::Polygon2 outline;
+    if (loop) {
+        const std::optional<math::Polygon2> poly =
+            read_corners(check, at / "line_loop", j["line_loop"], kMaxVisibleAreaCorners);
+        if (!poly || !simple_or_error(check, at / "line_loop", *poly, "the line loop must be a simple polygon: "))
+            return std::nullopt;
+        outline = *poly;
+    } else {
+        if (!check.check_fields(at, j, {"vertices", "indices"}, {"vertices", "indices"})) return std::nullopt;
+        const std::optional<math::Polygon2> vertices =
+            read_corners(check, at / "vertices", j["vertices"], kMaxVisibilityMaskIndices);
+        const std::optional<std::vector<std::uint32_t>> indices =
+            vertices ? read_indices(check, at / "indices", j["indices"]) : std::nullopt;
+        if (!indices) return std::nullopt;
+        const math::MeshOutline mesh_outline = math::triangles_outline(*vertices, *indices);
+        if (mesh_outline.problem) {
+            check.error(
+                at / "indices" / (3 * mesh_outline.problem->triangle),
+                "triangle " + std::to_string(mesh_outline.problem->triangle) + ": " + mesh_outline.problem->message);
+            return std::nullopt;
+        }
+        outline = mesh_outline.outline;
+    }
+    const math::FovTangents tangents = math::fov_tangents(fov);
+    for (glm::dvec2& p : outline) p = math::tangent_to_image(tangents, p);
+    return inside_image(check, at, outline);
 }
 
 // An eye's "orientation": [x, y, z, w], of length 1 within
@@ -146,7 +237,7 @@ bool read_eye_pose(Checker& check, const Path& at, const json& j, EyeRead& eye) 
 
 std::optional<EyeRead> read_eye(Checker& check, const Path& at, const json& j) {
     if (!check.expect_object(at, j) ||
-        !check.check_fields(at, j, {"fov", "resolution", "visible_area", "position", "orientation"},
+        !check.check_fields(at, j, {"fov", "resolution", "visible_area", "visibility_mask", "position", "orientation"},
                             {"fov", "resolution"}))
         return std::nullopt;
     EyeRead eye;
@@ -157,6 +248,16 @@ std::optional<EyeRead> read_eye(Checker& check, const Path& at, const json& j) {
     eye.resolution = *size;
     if (j.contains("visible_area")) {
         const std::optional<math::Polygon2> area = read_visible_area(check, at / "visible_area", j["visible_area"]);
+        if (!area) return std::nullopt;
+        eye.optics.visible_area = *area;
+    }
+    if (j.contains("visibility_mask")) {
+        if (j.contains("visible_area")) {
+            check.error_at_key(at / "visibility_mask", "give either visible_area or visibility_mask, not both");
+            return std::nullopt;
+        }
+        const std::optional<math::Polygon2> area =
+            read_visibility_mask(check, at / "visibility_mask", j["visibility_mask"], *fov);
         if (!area) return std::nullopt;
         eye.optics.visible_area = *area;
     }

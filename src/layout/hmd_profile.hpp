@@ -33,8 +33,11 @@ struct HmdProfile {
 // least kMinFovExtentDeg right of left and up as far above down.
 inline constexpr double kMaxFovAngleDeg = 89.5;
 inline constexpr double kMinFovExtentDeg = 1.0;
-// A visible area has 3..kMaxVisibleAreaCorners corners.
+// A visible area or a visibility mask's line loop has 3..kMaxVisibleAreaCorners
+// corners (the visible area also once clipped to the image); a mask's
+// triangles at most kMaxVisibilityMaskIndices vertices and indices.
 inline constexpr std::size_t kMaxVisibleAreaCorners = 4096;
+inline constexpr std::size_t kMaxVisibilityMaskIndices = 3 * 4096;
 inline constexpr std::size_t kMaxHmdProfileBytes = 1u << 20;
 
 // What is wrong with the angles, or nothing.
