@@ -29,7 +29,7 @@ struct Bindings {
     GLuint draw_framebuffer = 0;
     GLuint read_framebuffer = 0;
     GLenum active_unit = GL_TEXTURE0;
-    bool scissor = false;  // glIsEnabled waits for the GPU process: known here instead
+    bool scissor = false;                        // glIsEnabled waits for the GPU process: known here instead
     std::unordered_map<GLenum, GLuint> buffers;  // target -> buffer
 };
 

@@ -24,8 +24,7 @@ void named_framebuffer_texture(GLuint framebuffer, GLenum attachment, GLuint tex
         glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, attachment, target_of(texture), texture, level);
     });
 }
-void named_framebuffer_texture_layer(GLuint framebuffer, GLenum attachment, GLuint texture, GLint level,
-                                     GLint layer) {
+void named_framebuffer_texture_layer(GLuint framebuffer, GLenum attachment, GLuint texture, GLint level, GLint layer) {
     with_draw_framebuffer(framebuffer,
                           [&] { glFramebufferTextureLayer(GL_DRAW_FRAMEBUFFER, attachment, texture, level, layer); });
 }
