@@ -35,5 +35,19 @@ TEST_F(Hostile, HexadecimalIsRefusedEverywhereInWords) {
     expect_refused(run("$BIN render lay.json --size 8x8 --fov ' 64'"), 1, "--fov: ' 64' is not a finite number");
 }
 
+TEST_F(Hostile, ASweepItemTheDriverLacksNamesTheSweep) {
+    // llvmpipe offers 1 and 4 samples; a driver with 16 measures it.
+    const Outcome r = run("$BIN bench lay.json --size 8x8 --frames 1 --sweep samples:16");
+    EXPECT_EQ(r.status, 0) << r.err;
+    if (r.out.find("not measured") != std::string::npos) {
+        EXPECT_NE(r.out.find("samples=16: not measured: --sweep samples 16: the OpenGL driver"), std::string::npos)
+            << r.out;
+        EXPECT_EQ(r.out.find("--samples 16"), std::string::npos) << r.out;
+    }
+    // The base configuration's own --samples is still --samples.
+    const Outcome base = run("$BIN bench lay.json --size 8x8 --frames 1 --samples 16");
+    if (base.status != 0) expect_refused(base, 1, "--samples 16: the OpenGL driver");
+}
+
 }  // namespace
 }  // namespace impossible::hostile
