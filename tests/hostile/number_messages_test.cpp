@@ -49,5 +49,22 @@ TEST_F(Hostile, ASweepItemTheDriverLacksNamesTheSweep) {
     if (base.status != 0) expect_refused(base, 1, "--samples 16: the OpenGL driver");
 }
 
+TEST_F(Hostile, CompareShowsACorrectDefaultFrameAsCorrect) {
+    const Outcome r = run(
+        "$BIN render lay.json --size 320x180 --out r.png --ids ri.png && "
+        "$BIN trace lay.json --size 320x180 --out t.png --ids ti.png && "
+        "$BIN compare r.png t.png --ids-a ri.png --ids-b ti.png");
+    ASSERT_EQ(r.status, 0) << r.err;
+    // The keys scripts read stay, in their order; flat_* come after them.
+    const std::size_t interior = r.out.find(" interior_max_error=");
+    const std::size_t flat = r.out.find(" flat_pixels=");
+    ASSERT_NE(interior, std::string::npos) << r.out;
+    ASSERT_NE(flat, std::string::npos) << r.out;
+    EXPECT_LT(interior, flat);
+    const std::size_t at = r.out.find("flat_max_error=");
+    ASSERT_NE(at, std::string::npos) << r.out;
+    EXPECT_LE(std::stoi(r.out.substr(at + 15)), 8) << r.out;
+}
+
 }  // namespace
 }  // namespace impossible::hostile
