@@ -71,7 +71,7 @@ std::optional<math::Polygon2> read_visible_area(Checker& check, const Path& at, 
     }
     math::Polygon2 poly;
     for (std::size_t k = 0; k < j.size(); ++k) {
-        const std::optional<glm::dvec2> p = check.read_vec2(at / k, j[k], NumberKind::Fraction);
+        const std::optional<glm::dvec2> p = check.read_vec2(at / k, j[k], NumberKind::Fraction, "[u, v]");
         if (!p) return std::nullopt;
         poly.push_back(*p);
     }
@@ -176,7 +176,8 @@ Result<HmdProfile> read_profile(Checker& check, const json& j) {
     if (j.contains("ipd")) {
         const std::optional<double> ipd = check.read_number(root / "ipd", j["ipd"], NumberKind::Coordinate);
         if (ipd && !math::limits::kIpd.contains(*ipd))
-            check.error(root / "ipd", "is not in " + math::limits::range_text(math::limits::kIpd) + " m");
+            check.error(root / "ipd",
+                        format_number(*ipd) + " is not in " + math::limits::range_text(math::limits::kIpd) + " m");
         if (ipd) out.ipd = *ipd;
     }
     const std::optional<EyeRead> left = read_eye(check, root / "left", j["left"]);
