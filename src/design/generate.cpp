@@ -61,9 +61,8 @@ std::optional<std::string> play_area_problem(const math::Polygon2& area) {
         for (double v : {area[i].x, area[i].y})
             if (!std::isfinite(v) || std::abs(v) > lim::kMaxCoordinate)
                 return "the play area's corner " + std::to_string(i) + " (" + format_number(area[i].x) + ", " +
-                       format_number(area[i].y) + ") " +
-                       (std::isfinite(v) ? "is not a coordinate within +-" + format_number(lim::kMaxCoordinate) + " m"
-                                         : "holds " + format_number(v) + ", which is not a finite number");
+                       format_number(area[i].y) + ") is not a coordinate within +-" +
+                       format_number(lim::kMaxCoordinate) + " m";
     if (const auto problem = math::simple_polygon_problem(area))
         return "the play area must be a simple polygon: " + problem->message;
     return std::nullopt;

@@ -13,7 +13,9 @@ namespace {
 TEST_F(Hostile, SubnormalNumbersReadAsZero) {
     // 1e-320 is a number (subnormal), not "not a finite number": it reads as
     // 0, in every option and in path files alike.
-    EXPECT_EQ(run("$BIN render lay.json --size 8x8 --out a.png --room hall --pose 0,1.6,1e-320,0,0,0 --time 1e-320").status, 0);
+    EXPECT_EQ(
+        run("$BIN render lay.json --size 8x8 --out a.png --room hall --pose 0,1.6,1e-320,0,0,0 --time 1e-320").status,
+        0);
     EXPECT_EQ(run("$BIN render lay.json --size 8x8 --out b.png --room hall --pose 0,1.6,0,0,0,0 --time 0").status, 0);
     EXPECT_EQ(slurp(dir_ / "a.png"), slurp(dir_ / "b.png"));
     EXPECT_EQ(run("$BIN render lay.json --size 8x8 --out c.png --fov-angles -50,40,40,-1e-320").status, 0);
@@ -50,10 +52,10 @@ TEST_F(Hostile, ASweepItemTheDriverLacksNamesTheSweep) {
 }
 
 TEST_F(Hostile, CompareShowsACorrectDefaultFrameAsCorrect) {
-    const Outcome r = run(
-        "$BIN render lay.json --size 320x180 --out r.png --ids ri.png && "
-        "$BIN trace lay.json --size 320x180 --out t.png --ids ti.png && "
-        "$BIN compare r.png t.png --ids-a ri.png --ids-b ti.png");
+    const Outcome r =
+        run("$BIN render lay.json --size 320x180 --out r.png --ids ri.png && "
+            "$BIN trace lay.json --size 320x180 --out t.png --ids ti.png && "
+            "$BIN compare r.png t.png --ids-a ri.png --ids-b ti.png");
     ASSERT_EQ(r.status, 0) << r.err;
     // The keys scripts read stay, in their order; flat_* come after them.
     const std::size_t interior = r.out.find(" interior_max_error=");
