@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -42,6 +43,69 @@ T value_or_raise(api::Expected<T>&& e) {
     throw py::error_already_set();
 }
 
+// A number in a message as Python writes it: the shortest that reads back
+// ("1e+300", not 301 digits).
+std::string short_number(double v) { return py::str(py::float_(v)).cast<std::string>(); }
+
+// The Python type's name of `value` ("str", "float").
+std::string type_name(py::handle value) {
+    return py::str(py::type::handle_of(value).attr("__name__")).cast<std::string>();
+}
+
+// A scalar argument of the wrong type: TypeError naming the argument.
+[[noreturn]] void wrong_type(const char* what, const char* expected, py::handle value) {
+    raise(PyExc_TypeError, std::string(what) + ": expected " + expected + ", got " + type_name(value));
+}
+
+// An integer argument (an int or anything with __index__, not a float) that
+// fits an int; the library checks its range.
+int integer_of(py::handle value, const char* what) {
+    if (py::isinstance<py::float_>(value) || py::isinstance<py::str>(value)) wrong_type(what, "an integer", value);
+    long long n = 0;
+    try {
+        n = value.cast<long long>();
+    } catch (const py::cast_error&) {
+        if (PyErr_Occurred()) PyErr_Clear();
+        if (!PyIndex_Check(value.ptr())) wrong_type(what, "an integer", value);
+        n = std::numeric_limits<long long>::max();
+    }
+    if (n < std::numeric_limits<int>::min() || n > std::numeric_limits<int>::max())
+        raise(PyExc_ValueError, std::string(what) + ": " + py::str(value).cast<std::string>() + " is too large");
+    return static_cast<int>(n);
+}
+
+// A number argument (int or float).
+double real_of(py::handle value, const char* what) {
+    if (py::isinstance<py::str>(value)) wrong_type(what, "a number", value);
+    try {
+        return value.cast<double>();
+    } catch (const py::cast_error&) {
+        wrong_type(what, "a number", value);
+    }
+}
+
+// A string argument.
+std::string text_of(py::handle value, const char* what, const char* expected) {
+    if (!py::isinstance<py::str>(value)) wrong_type(what, expected, value);
+    return value.cast<std::string>();
+}
+
+// size: (width, height), two integers.
+std::pair<int, int> size_of(py::handle value) {
+    const char* expected = "size: expected (width, height), two integers";
+    if (py::isinstance<py::str>(value) || !py::isinstance<py::sequence>(value))
+        raise(PyExc_TypeError, std::string(expected) + ", got " + type_name(value));
+    const auto seq = py::reinterpret_borrow<py::sequence>(value);
+    if (seq.size() != 2)
+        raise(PyExc_ValueError, std::string(expected) + ", got " + std::to_string(seq.size()) + " items");
+    int out[2];
+    for (int k = 0; k < 2; ++k) {
+        const py::object item = seq[k];
+        out[k] = integer_of(item, k == 0 ? "size: width" : "size: height");
+    }
+    return {out[0], out[1]};
+}
+
 // Six numbers (x, y, z, yaw, pitch, roll), each finite and within ±limit:
 // 1e7 as `--pose`, 1e6 as a path file's lines.
 api::Pose pose_of(py::handle value, double limit, const char* what) {
@@ -57,8 +121,8 @@ api::Pose pose_of(py::handle value, double limit, const char* what) {
             raise(PyExc_TypeError, expected);
         }
         if (!(std::abs(v[k]) <= limit))
-            raise(PyExc_ValueError, std::string(what) + ": " + std::to_string(v[k]) +
-                                        " is not a finite number within ±" + std::to_string(static_cast<long>(limit)));
+            raise(PyExc_ValueError, std::string(what) + ": " + short_number(v[k]) + " is not a finite number within ±" +
+                                        std::to_string(static_cast<long>(limit)));
     }
     return {v[0], v[1], v[2], v[3], v[4], v[5]};
 }
@@ -273,9 +337,9 @@ ViewBase base_of(py::handle size, int samples, py::handle ipd, py::handle fov, p
     if (!eye_poses.is_none()) base.eye_poses = eye_poses_of(eye_poses);
     if (!fov_angles.is_none()) base.eye_optics = optics_of(fov_angles);
     if (!visible_area.is_none()) visible_areas_of(visible_area, *base.eye_optics);
-    if (!size.is_none()) base.size = size.cast<std::pair<int, int>>();
-    if (!ipd.is_none()) base.ipd = ipd.cast<double>();
-    if (!fov.is_none()) base.fov = fov.cast<double>();
+    if (!size.is_none()) base.size = size_of(size);
+    if (!ipd.is_none()) base.ipd = real_of(ipd, "ipd");
+    if (!fov.is_none()) base.fov = real_of(fov, "fov");
     return base;
 }
 
@@ -320,10 +384,10 @@ std::array<api::Pose, 2> hands_of(py::handle value, double limit = 1e7) {
 api::View view_of(const ViewBase& base, py::handle pose, py::handle room, py::handle hands, double time, int max_depth,
                   py::handle light_depth) {
     api::View v;
-    if (!light_depth.is_none()) v.light_depth = light_depth.cast<int>();
+    if (!light_depth.is_none()) v.light_depth = integer_of(light_depth, "light_depth");
     if (!hands.is_none()) v.hands = hands_of(hands);
     if (!pose.is_none()) v.pose = pose_of(pose, 1e7, "pose");
-    if (!room.is_none()) v.room = room.cast<std::string>();
+    if (!room.is_none()) v.room = text_of(room, "room", "a room id (str)");
     std::tie(v.width, v.height) = base.size;
     v.samples = base.samples;
     v.max_portal_passes = base.max_portal_passes;
@@ -506,12 +570,19 @@ py::list read_path(py::handle path, bool hands) {
 std::string generate(py::handle play_area, int rooms, long long seed, std::optional<double> max_overlap) {
     if (seed < 0 || seed > 2'000'000'000) raise(PyExc_ValueError, "seed must be 0..2000000000");
     api::GenerateRequest request;
+    const char* expected = "play_area: expected (width, depth) or a polygon [(x, z), ...]";
+    if (py::isinstance<py::str>(play_area) || !py::isinstance<py::sequence>(play_area))
+        raise(PyExc_TypeError, std::string(expected) + ", got " + type_name(play_area));
     const auto area = play_area.cast<std::vector<py::object>>();
     if (area.size() == 2 && !py::isinstance<py::sequence>(area[0])) {
-        request.width = area[0].cast<double>();
-        request.depth = area[1].cast<double>();
+        request.width = real_of(area[0], "play_area: width");
+        request.depth = real_of(area[1], "play_area: depth");
     } else {
-        request.play_area = play_area.cast<std::vector<std::pair<double, double>>>();
+        for (const py::object& corner : area) {
+            const std::vector<double> c = numbers_of(corner, "play_area", "corners of 2 numbers (x, z)");
+            if (c.size() != 2) raise(PyExc_ValueError, "play_area: expected corners of 2 numbers (x, z)");
+            request.play_area.push_back({c[0], c[1]});
+        }
     }
     request.rooms = rooms;
     request.seed = static_cast<std::uint64_t>(seed);

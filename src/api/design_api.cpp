@@ -1,5 +1,6 @@
 // The designer's tools behind the public API: generate, plan, tour.
 #include "api/api_data.hpp"
+#include "base/format.hpp"
 #include "design/generate.hpp"
 #include "design/plan.hpp"
 #include "design/report.hpp"
@@ -14,7 +15,8 @@ Expected<std::string> generate(const GenerateRequest& request) {
         if (request.play_area.empty()) {
             const double w = request.width, d = request.depth;
             if (!(w >= 1.0 && w <= 1000.0 && d >= 1.0 && d <= 1000.0))
-                return Error{"each side of the play area must be 1..1000 m"};
+                return Error{"each side of the play area must be 1..1000 m (got " + format_number(w) + " by " +
+                             format_number(d) + ")"};
             options.rectangle = true;
             options.play_area = math::rectangle({-w / 2, -d / 2}, {w / 2, d / 2});
         } else {

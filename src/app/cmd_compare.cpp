@@ -28,7 +28,10 @@ const char* kCompareUsage =
     "  (a pixel is a mismatch unless each map's id there occurs in the other map within one\n"
     "  pixel, its 3x3 neighbourhood, so edges one pixel apart count nothing), interior_pixels,\n"
     "  interior_psnr_db and interior_max_error (colour over pixels at least one pixel away from\n"
-    "  any id edge in both maps).\n";
+    "  any id edge in both maps), flat_pixels, flat_psnr_db and flat_max_error (the interior less\n"
+    "  the pixels on a checker's or texture's edge, where a neighbour differs by more than 8\n"
+    "  levels: there a sub-pixel shift flips a pixel to the other tile, so interior_max_error\n"
+    "  is large on a correct render against its trace, e.g. 139, and flat_max_error small).\n";
 
 const char* kCompareNotes =
     "The PNGs are checked (CRCs, truncation, at most 2 x 8192 x 8192 pixels); id maps must be 8-bit\n"

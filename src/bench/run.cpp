@@ -13,6 +13,7 @@
 #include "gl/gl.hpp"
 #include "image/compare.hpp"
 #include "render/renderer.hpp"
+#include "session/field_error.hpp"
 #include "trace/tracer.hpp"
 
 namespace impossible::bench {
@@ -37,9 +38,19 @@ render::FrameDesc frame_at(const BenchConfig& config, const BenchPose& pose) {
     return f;
 }
 
-// A configuration's error text: empty when the frame was drawn.
-// The renderer's message with its settings spelled as flags (--samples).
-std::string error_of(const Result<void>& drawn) { return drawn ? std::string() : cli::with_flags(drawn.error()); }
+// A configuration's error text: empty when the frame was drawn. The
+// renderer's message with its settings spelled as flags (--samples), but
+// the setting a sweep varies in this configuration spelled as the sweep
+// ("samples=8: not measured: --sweep samples 8: ...": no --samples was given).
+std::string error_of(const Result<void>& drawn, const std::string& swept) {
+    if (drawn) return {};
+    if (swept.empty()) return cli::with_flags(drawn.error());
+    const std::string swept_flag = swept == "depth" ? "--max-depth" : "--" + swept;
+    return session::spell_fields(drawn.error(), [&](const std::string& field) {
+        const std::string flag = cli::flag_of(field);
+        return flag == swept_flag ? "--sweep " + swept : flag;
+    });
+}
 
 // Passed samples per pixel sample: with multisampling, a query counts samples.
 double pixels_of(const render::FrameDesc& f) { return 2.0 * f.eye_width * f.eye_height * f.samples; }
@@ -53,13 +64,19 @@ struct Measurer {
 
     render::Renderer& renderer_of(const BenchConfig& c) { return *renderers[c.layout_variant]; }
 
+    // The sweep's kind ("samples") for a configuration of the sweep, else "".
+    std::string swept(const BenchConfig& c) const {
+        const bool of_sweep = !options.sweep_items.empty() && c.group == options.sweep_items[0].kind;
+        return of_sweep ? options.sweep_items[0].kind : std::string();
+    }
+
     // Draws every configuration once, marking those the driver cannot do.
     // (Without culling a frame makes the passes it makes with culling: the
     // pixel rule and the budget bound both; docs/bounded-work.md.)
     void probe() {
         for (ConfigResult& r : results) {
             render::FrameStats stats;
-            r.error = error_of(renderer_of(r.config).draw(frame_at(r.config, poses[0]), &stats));
+            r.error = error_of(renderer_of(r.config).draw(frame_at(r.config, poses[0]), &stats), swept(r.config));
         }
         if (!results[0].error.empty()) throw InputError(results[0].error);
     }
@@ -82,7 +99,8 @@ struct Measurer {
                     render::FrameStats stats;
                     glFinish();
                     const Clock::time_point t0 = Clock::now();
-                    r.error = error_of(renderer_of(r.config).draw(frame_at(r.config, poses[p]), &stats));
+                    r.error =
+                        error_of(renderer_of(r.config).draw(frame_at(r.config, poses[p]), &stats), swept(r.config));
                     const Clock::time_point t1 = Clock::now();
                     glFinish();
                     const Clock::time_point t2 = Clock::now();
@@ -116,7 +134,7 @@ struct Measurer {
                     render::FrameStats stats;
                     glFinish();
                     const Clock::time_point t0 = Clock::now();
-                    r.error = error_of(renderer_of(r.config).draw(f, &stats));
+                    r.error = error_of(renderer_of(r.config).draw(f, &stats), swept(r.config));
                     glFinish();
                     frame_ms[c].push_back(ms_between(t0, Clock::now()));
                     for (const render::FrameStats::PortalCost& cost : stats.portal_costs) {
@@ -167,7 +185,7 @@ struct Measurer {
                 const image::Image& t = traced[key];
                 Result<render::RenderedFrame> raster = renderer_of(r.config).render(f);
                 if (!raster) {
-                    r.error = cli::with_flags(raster.error());
+                    r.error = error_of(Result<void>(Error{raster.error()}), swept(r.config));
                     continue;
                 }
                 const image::Comparison cmp = image::compare_pictures(raster->image, t);

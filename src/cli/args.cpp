@@ -1,9 +1,9 @@
 #include "cli/args.hpp"
 
 #include <cerrno>
-#include <cmath>
 #include <cstdlib>
 
+#include "base/number_text.hpp"
 #include "math/view_limits.hpp"
 
 namespace impossible::cli {
@@ -48,13 +48,9 @@ ParsedArgs parse_args(const Args& args, const ArgNames& names, size_t max_positi
 }
 
 double parse_number(const std::string& option, const std::string& text) {
-    const char* begin = text.c_str();
-    char* end = nullptr;
-    errno = 0;
-    const double v = std::strtod(begin, &end);
-    if (text.empty() || end != begin + text.size() || errno == ERANGE || !std::isfinite(v))
-        throw InputError(option + ": '" + text + "' is not a finite number");
-    return v;
+    const NumberText n = read_number_text(text);
+    if (!n.problem.empty()) throw InputError(option + ": '" + text + "' " + n.problem);
+    return n.value;
 }
 
 int parse_int(const std::string& option, const std::string& text, int min, int max) {

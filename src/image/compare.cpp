@@ -28,6 +28,19 @@ bool all_id(const std::vector<std::uint8_t>& ids, int width, int height, int x, 
     return true;
 }
 
+// Whether no pixel within one pixel of (x, y) differs from it by more than
+// 8 levels in any channel: (x, y) is on no colour edge (a checker's or a
+// texture's), where a sub-pixel shift flips the pixel to the other colour.
+bool flat(const Image& p, int x, int y) {
+    const std::uint8_t* centre = &p.rgb[3 * (static_cast<size_t>(y) * p.width + x)];
+    for (int yy = std::max(0, y - 1); yy <= std::min(p.height - 1, y + 1); ++yy)
+        for (int xx = std::max(0, x - 1); xx <= std::min(p.width - 1, x + 1); ++xx)
+            for (size_t c = 0; c < 3; ++c)
+                if (std::abs(int(p.rgb[3 * (static_cast<size_t>(yy) * p.width + xx) + c]) - int(centre[c])) > 8)
+                    return false;
+    return true;
+}
+
 int channel_error(const Image& a, const Image& b, size_t pixel, int& worst) {
     int sum_sq = 0;
     for (size_t c = 0; c < 3; ++c) {
@@ -76,7 +89,7 @@ Comparison compare_pictures(const Image& a, const Image& b) {
     Comparison c;
     const size_t n = pixel_count(a);
     c.pixels = static_cast<long>(n);
-    double sum_sq = 0.0, interior_sq = 0.0;
+    double sum_sq = 0.0, interior_sq = 0.0, flat_sq = 0.0;
     for (size_t i = 0; i < n; ++i) sum_sq += channel_error(a, b, i, c.max_error);
     c.psnr_db = psnr(sum_sq, 3.0 * static_cast<double>(n));
     c.has_ids = !a.ids.empty();
@@ -94,9 +107,13 @@ Comparison compare_pictures(const Image& a, const Image& b) {
                 continue;
             ++c.interior_pixels;
             interior_sq += channel_error(a, b, i, c.interior_max_error);
+            if (!flat(a, x, y) || !flat(b, x, y)) continue;
+            ++c.flat_pixels;
+            flat_sq += channel_error(a, b, i, c.flat_max_error);
         }
     }
     c.interior_psnr_db = psnr(interior_sq, 3.0 * static_cast<double>(c.interior_pixels));
+    c.flat_psnr_db = psnr(flat_sq, 3.0 * static_cast<double>(c.flat_pixels));
     return c;
 }
 
@@ -142,7 +159,9 @@ std::string summary_line(const Comparison& c) {
         s.precision(2);
         s << " interior_pixels=" << c.interior_pixels << " interior_psnr_db=";
         db(c.interior_psnr_db);
-        s << " interior_max_error=" << c.interior_max_error;
+        s << " interior_max_error=" << c.interior_max_error << " flat_pixels=" << c.flat_pixels << " flat_psnr_db=";
+        db(c.flat_psnr_db);
+        s << " flat_max_error=" << c.flat_max_error;
     }
     return s.str();
 }

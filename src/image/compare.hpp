@@ -41,6 +41,14 @@ struct Comparison {
     long interior_pixels = 0;
     double interior_psnr_db = 0.0;
     int interior_max_error = 0;
+    // The interior less the pixels on a colour edge (a checker's or a
+    // texture's: a neighbour differs by more than 8 levels in A or in B),
+    // where a sub-pixel difference between two correct frames flips a pixel
+    // to the other tile: on a correct frame its max error is small while
+    // interior_max_error can reach the tiles' contrast.
+    long flat_pixels = 0;
+    double flat_psnr_db = 0.0;
+    int flat_max_error = 0;
 };
 
 // The pictures must be comparable (see incomparable()).
@@ -53,7 +61,8 @@ std::vector<std::uint8_t> diff_picture(const Image& a, const Image& b);
 
 // "key=value" pairs on one line (no newline): pixels, psnr_db, max_error and,
 // with ids, id_mismatches, id_mismatch_pct, interior_pixels,
-// interior_psnr_db, interior_max_error. PSNR of identical images is "inf".
+// interior_psnr_db, interior_max_error, flat_pixels, flat_psnr_db,
+// flat_max_error (new keys only ever added at the end). PSNR of identical images is "inf".
 std::string summary_line(const Comparison& c);
 
 }  // namespace impossible::image

@@ -298,11 +298,11 @@ std::optional<double> Checker::read_number(const Path& at, const json& value, Nu
     return std::nullopt;
 }
 
-std::optional<glm::dvec2> Checker::read_vec2(const Path& at, const json& value, NumberKind kind) {
+std::optional<glm::dvec2> Checker::read_vec2(const Path& at, const json& value, NumberKind kind, const char* shape) {
     if (!value.is_array() || value.size() != 2) {
         const std::string got =
             value.is_array() ? "an array of " + std::to_string(value.size()) : json_type_name(value);
-        error(at, "must be an array of 2 numbers [x, z] (got " + got + ")");
+        error(at, std::string("must be an array of 2 numbers ") + shape + " (got " + got + ")");
         return std::nullopt;
     }
     const auto x = read_number(at / 0, value[0], kind);

@@ -64,7 +64,10 @@ public:
     std::optional<std::string> read_string(const Path& at, const json& value);
     std::optional<std::string> read_id(const Path& at, const json& value);  // [A-Za-z0-9_-]+
     std::optional<double> read_number(const Path& at, const json& value, NumberKind kind);
-    std::optional<glm::dvec2> read_vec2(const Path& at, const json& value, NumberKind kind);
+    // `shape` names the coordinates in the error: "[x, z]" on the floor,
+    // "[u, v]" in an eye's image (a headset's visible area).
+    std::optional<glm::dvec2> read_vec2(const Path& at, const json& value, NumberKind kind,
+                                        const char* shape = "[x, z]");
     std::optional<glm::dvec3> read_vec3(const Path& at, const json& value, NumberKind kind);
     std::optional<glm::dvec3> read_colour(const Path& at, const json& value);
 

@@ -66,8 +66,11 @@ std::optional<std::array<int, 2>> read_resolution(Checker& check, const Path& at
     return out;
 }
 
-// Corners [a, b], finite (|v| at most 1e5), 3..max of them.
-std::optional<math::Polygon2> read_corners(Checker& check, const Path& at, const json& j, std::size_t max) {
+// Corners [a, b], finite (|v| at most 1e5), 3..max of them; `names` names
+// the coordinates in messages ("[u, v]" in the image, "[x, y]" in tangent
+// space).
+std::optional<math::Polygon2> read_corners(Checker& check, const Path& at, const json& j, std::size_t max,
+                                           const char* names) {
     if (!check.expect_array(at, j, max)) return std::nullopt;
     if (j.size() < 3) {
         check.error(at, "a polygon needs at least 3 corners");
@@ -75,7 +78,7 @@ std::optional<math::Polygon2> read_corners(Checker& check, const Path& at, const
     }
     math::Polygon2 poly;
     for (std::size_t k = 0; k < j.size(); ++k) {
-        const std::optional<glm::dvec2> p = check.read_vec2(at / k, j[k], NumberKind::Direction);
+        const std::optional<glm::dvec2> p = check.read_vec2(at / k, j[k], NumberKind::Direction, names);
         if (!p) return std::nullopt;
         poly.push_back(*p);
     }
@@ -112,7 +115,7 @@ std::optional<math::Polygon2> inside_image(Checker& check, const Path& at, const
 // "visible_area": corners [u, v] in the normalised image; the part inside
 // the image is kept.
 std::optional<math::Polygon2> read_visible_area(Checker& check, const Path& at, const json& j) {
-    const std::optional<math::Polygon2> poly = read_corners(check, at, j, kMaxVisibleAreaCorners);
+    const std::optional<math::Polygon2> poly = read_corners(check, at, j, kMaxVisibleAreaCorners, "[u, v]");
     if (!poly || !simple_or_error(check, at, *poly, "the visible area must be a simple polygon: ")) return std::nullopt;
     return inside_image(check, at, *poly);
 }
@@ -149,14 +152,14 @@ std::optional<math::Polygon2> read_visibility_mask(Checker& check, const Path& a
     math::Polygon2 outline;
     if (loop) {
         const std::optional<math::Polygon2> poly =
-            read_corners(check, at / "line_loop", j["line_loop"], kMaxVisibleAreaCorners);
+            read_corners(check, at / "line_loop", j["line_loop"], kMaxVisibleAreaCorners, "[x, y]");
         if (!poly || !simple_or_error(check, at / "line_loop", *poly, "the line loop must be a simple polygon: "))
             return std::nullopt;
         outline = *poly;
     } else {
         if (!check.check_fields(at, j, {"vertices", "indices"}, {"vertices", "indices"})) return std::nullopt;
         const std::optional<math::Polygon2> vertices =
-            read_corners(check, at / "vertices", j["vertices"], kMaxVisibilityMaskIndices);
+            read_corners(check, at / "vertices", j["vertices"], kMaxVisibilityMaskIndices, "[x, y]");
         const std::optional<std::vector<std::uint32_t>> indices =
             vertices ? read_indices(check, at / "indices", j["indices"]) : std::nullopt;
         if (!indices) return std::nullopt;
@@ -277,7 +280,8 @@ Result<HmdProfile> read_profile(Checker& check, const json& j) {
     if (j.contains("ipd")) {
         const std::optional<double> ipd = check.read_number(root / "ipd", j["ipd"], NumberKind::Coordinate);
         if (ipd && !math::limits::kIpd.contains(*ipd))
-            check.error(root / "ipd", "is not in " + math::limits::range_text(math::limits::kIpd) + " m");
+            check.error(root / "ipd",
+                        format_number(*ipd) + " is not in " + math::limits::range_text(math::limits::kIpd) + " m");
         if (ipd) out.ipd = *ipd;
     }
     const std::optional<EyeRead> left = read_eye(check, root / "left", j["left"]);

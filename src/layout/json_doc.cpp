@@ -1,5 +1,6 @@
 #include "layout/json_doc.hpp"
 
+#include <algorithm>
 #include <utility>
 
 #include "base/file_io.hpp"
@@ -145,6 +146,17 @@ std::size_t token_start(std::string_view text, std::size_t noticed, const std::s
         return open == std::string_view::npos ? noticed : open;
     }
     return noticed;
+}
+
+// A bad literal that is NaN or an infinity as JavaScript and Python's json
+// write them: named, since JSON has no such numbers (issue 38).
+std::string non_finite_note(std::string_view text, std::size_t start) {
+    for (std::string_view word : {"NaN", "Infinity", "-Infinity", "nan", "inf", "-inf"}) {
+        const std::string_view at = text.substr(std::min(start, text.size()), word.size() + 1);
+        if (at.substr(0, word.size()) == word && (at.size() == word.size() || !is_literal_char(at.back())))
+            return " (" + std::string(word) + ": JSON has no NaN or infinity; every number must be finite)";
+    }
+    return {};
 }
 
 // Walks JSON text and records where every value and key starts. It is exact
@@ -333,6 +345,7 @@ JsonParse parse_json(std::string_view text) {
         if (builder.error) {
             JsonError error = *builder.error;
             error.offset = token_start(text, error.offset, error.message);
+            error.message += non_finite_note(text, error.offset);
             result.error = std::move(error);
         } else {
             PositionScanner scanner(text, nullptr, nullptr);

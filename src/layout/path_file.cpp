@@ -1,13 +1,13 @@
 #include "layout/path_file.hpp"
 
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
 #include <string_view>
 
 #include "base/file_io.hpp"
+#include "base/number_text.hpp"
 #include "base/user_text.hpp"
 
 namespace impossible::layout {
@@ -38,30 +38,6 @@ const char* wide_encoding(const std::string& first_line) {
     return nullptr;
 }
 
-// One field as a number: from_chars plus an optional leading '+' (not "+-").
-bool parse_field(const std::string& field, double& value) {
-    const char* first = field.data();
-    const char* last = first + field.size();
-    if (*first == '+') {
-        ++first;
-        if (first == last || *first == '-' || *first == '+') return false;
-    }
-#if defined(__EMSCRIPTEN__)
-    // Emscripten's libc++ has no floating-point from_chars: strtod, less
-    // what from_chars refuses (leading space, hexadecimal).
-    const std::string text(first, last);
-    if (text.empty() || std::isspace(static_cast<unsigned char>(text[0])) ||
-        text.find_first_of("xX") != std::string::npos)
-        return false;
-    char* end = nullptr;
-    value = std::strtod(text.c_str(), &end);
-    return end == text.c_str() + text.size() && std::isfinite(value);
-#else
-    const auto [ptr, ec] = std::from_chars(first, last, value);
-    return ec == std::errc() && ptr == last && std::isfinite(value);
-#endif
-}
-
 // One pose's six fields from f[first..first + 6): an empty string, or the
 // message naming the field ("left hand YAW: ...").
 std::string parse_pose(const std::vector<std::string>& f, std::size_t first, const char* prefix, math::HeadPose& pose) {
@@ -70,8 +46,9 @@ std::string parse_pose(const std::vector<std::string>& f, std::size_t first, con
     for (int k = 0; k < 6; ++k) {
         const std::string& field = f[first + static_cast<std::size_t>(k)];
         const std::string name = std::string(prefix) + kNames[k];
-        if (!parse_field(field, v[k]))
-            return name + ": '" + printable(field, kQuotedCharacters) + "' is not a finite number";
+        const NumberText n = read_number_text(field);
+        if (!n.problem.empty()) return name + ": '" + printable(field, kQuotedCharacters) + "' " + n.problem;
+        v[k] = n.value;
         if (std::abs(v[k]) > 1e6)
             return name + ": " + printable(field, kQuotedCharacters) + " is out of range (|" + kNames[k] +
                    "| <= " + (k < 3 ? "1e6 m" : "1e6 degrees") + ")";

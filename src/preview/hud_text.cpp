@@ -1,5 +1,6 @@
 #include "preview/hud_text.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -64,6 +65,21 @@ HudText hud_text(const PreviewOptions& o, const HudFacts& f, const std::vector<s
     HudText hud;
     if (o.hud) hud.lines = status_lines(o, f);
     hud.errors = reload_error_lines(reload_errors);
+    return hud;
+}
+
+float hud_scale(int fb_h) { return fb_h < 400 ? 1.0f : fb_h < 800 ? 1.5f : 2.0f; }
+
+HudText fit_hud(HudText hud, int fb_w, int fb_h, float scale) {
+    const float line_h = 12.0f * scale, pad = 3.0f * scale;
+    const auto rows = static_cast<std::size_t>(std::max(1.0f, std::floor((0.4f * float(fb_h) - 2.0f * pad) / line_h)));
+    const auto chars =
+        static_cast<std::size_t>(std::max(4.0f, std::floor((float(fb_w) - 2.0f * pad) / (6.0f * scale))));
+    if (hud.errors.size() > rows) hud.errors.resize(rows);
+    if (hud.lines.size() > rows - hud.errors.size()) hud.lines.resize(rows - hud.errors.size());
+    for (auto* list : {&hud.lines, &hud.errors})
+        for (std::string& line : *list)
+            if (line.size() > chars) line = line.substr(0, chars - 3) + "...";
     return hud;
 }
 

@@ -42,6 +42,18 @@ HudText hud_text(const PreviewOptions& options, const HudFacts& facts, const std
 // The red lines for the errors of a failed reload (none without errors).
 std::vector<std::string> reload_error_lines(const std::vector<std::string>& errors);
 
+// The HUD's text scale in a window fb_h pixels high: 1 below 400, 1.5
+// below 800, else 2.
+float hud_scale(int fb_h);
+
+// `hud` cut to fit a window of fb_w × fb_h pixels at `scale` (about 6 × 12
+// pixels a character at scale 1), so that a small window (--size 160x90)
+// keeps most of its view: at most 40 % of the height in rows (at least one;
+// the errors of a failed reload first, then the first status lines) and its
+// width in characters, a longer line ending in "...". A window of the default
+// size (640x480 an eye, 1280x480) keeps every line whole.
+HudText fit_hud(HudText hud, int fb_w, int fb_h, float scale);
+
 // printf's %.*f.
 std::string fixed(double value, int decimals);
 

@@ -169,8 +169,8 @@ void draw_window(PreviewSession& s, const WindowLayout& places, const render::Fr
     OverlayBatch batch;
     batch.width = fb_w;
     batch.height = fb_h;
-    const float scale = fb_h < 400 ? 1.0f : fb_h < 800 ? 1.5f : 2.0f;
-    add_hud(batch, hud_text(s.options, hud_facts(s, desc), s.reload_errors), scale);
+    const float scale = hud_scale(fb_h);
+    add_hud(batch, fit_hud(hud_text(s.options, hud_facts(s, desc), s.reload_errors), fb_w, fb_h, scale), scale);
     if (s.options.minimap) {
         const float side = std::min(0.42f * float(fb_h), 0.3f * float(fb_w));
         const walk::Walker& walker = *s.shown.walker;

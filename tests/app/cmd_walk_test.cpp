@@ -126,7 +126,7 @@ TEST(RunWalk, MalformedLinesGiveOneErrorAndNoOutput) {
         {"0 1.6 1 nan 0 0\n", "walk.txt:1: YAW: 'nan' is not a finite number"},
         {"0 1.6 1 0 inf 0\n", "walk.txt:1: PITCH: 'inf' is not a finite number"},
         {"0 1.6 1e400 0 0 0\n", "walk.txt:1: Z: '1e400' is not a finite number"},
-        {"0 1.6 1 0 0 0x10\n", "walk.txt:1: ROLL: '0x10' is not a finite number"},
+        {"0 1.6 1 0 0 0x10\n", "walk.txt:1: ROLL: '0x10' is hexadecimal: write numbers in decimal"},
         {"1e7 1.6 1 0 0 0\n", "walk.txt:1: X: 1e7 is out of range"},
         {"0 1.6 1 0 0 -2e6\n", "walk.txt:1: ROLL: -2e6 is out of range"},
         {"0 1.6 1 0 0 0 # trailing comment\n", "walk.txt:1: expected 6 or 18 numbers"},

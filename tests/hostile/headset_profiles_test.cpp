@@ -85,6 +85,19 @@ TEST_F(Hostile, BadHmdProfilesAreRefusedWithTheirPlace) {
     EXPECT_EQ(listing(dir_), "hmd.json\nlay.json\n");
 }
 
+// Issue 38: a visible area's corners are [u, v] (a play area's are [x, z]),
+// and a bad ipd is named with its value.
+TEST_F(Hostile, HmdProfileMessagesNameCoordinatesAndValues) {
+    spit(dir_ / "hmd.json", hmd_profile(kGoodFov, "[16, 12]", "[[0, 0], [1, 0, 0], [1, 1]]"));
+    expect_refused(run("$BIN render lay.json --hmd hmd.json --out o.png"), 1,
+                   "left.visible_area[1]: must be an array of 2 numbers [u, v] (got an array of 3)");
+    std::string ipd = hmd_profile(kGoodFov);
+    ipd.replace(ipd.find("0.063"), 5, "12.5");
+    spit(dir_ / "hmd.json", ipd);
+    expect_refused(run("$BIN render lay.json --hmd hmd.json --out o.png"), 1, "ipd: 12.5 is not in 0..10 m");
+    // (A room's floor corners stay [x, z]: tests/layout/prism_rooms_test.cpp.)
+}
+
 TEST_F(Hostile, FovAnglesAreChecked) {
     expect_refused(run("$BIN render lay.json --size 8x8 --fov-angles -50,40,40"), 1,
                    "--fov-angles: expected 4 comma-separated numbers, got 3");

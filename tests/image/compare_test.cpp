@@ -128,3 +128,31 @@ TEST(ImageCompare, DiffPictureMarksIdMismatchesRedAndAmplifiesColourErrors) {
 
 }  // namespace
 }  // namespace impossible::image
+
+namespace impossible::image {
+namespace {
+
+// Issue 38: a checker's edge inside one id, one pixel apart in the two
+// pictures (as render and trace put it): the interior sees the tiles'
+// contrast, the flat pixels leave the edge out and see a correct frame.
+TEST(ImageCompare, FlatStatisticsLeaveOutColourEdges) {
+    Image a = split(12, 8, 12);  // one id, grey 100
+    Image b = a;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 12; ++x) {
+            if (x >= 6) red(a, x, y) = 239;
+            if (x >= 7) red(b, x, y) = 239;
+        }
+    red(b, 1, 1) += 2;  // a shading difference away from the edge
+    const Comparison c = compare_pictures(a, b);
+    EXPECT_EQ(c.interior_max_error, 139);
+    EXPECT_EQ(c.flat_max_error, 2);
+    // Columns 5..7 lie within one pixel of an edge in a or in b.
+    EXPECT_EQ(c.flat_pixels, 9 * 8);
+    const std::string line = summary_line(c);
+    EXPECT_NE(line.find(" interior_max_error=139 flat_pixels=72 flat_psnr_db="), std::string::npos) << line;
+    EXPECT_EQ(line.substr(line.size() - 17), " flat_max_error=2") << line;
+}
+
+}  // namespace
+}  // namespace impossible::image

@@ -77,3 +77,36 @@ TEST(PreviewHudText, ListsTheFirstReloadErrors) {
 
 }  // namespace
 }  // namespace impossible::preview
+
+namespace impossible::preview {
+namespace {
+
+// A small window keeps most of its view: --size 160x90 makes a 320x90
+// window, where the whole HUD (8 lines of 12 pixels and more) covered all of
+// it; the default 640x480 an eye keeps every line whole.
+TEST(PreviewHudText, SmallWindowsGetAShorterHud) {
+    PreviewOptions o;
+    HudFacts f;
+    f.title = "impossible preview - t";
+    f.room = "hall";
+    const HudText full = hud_text(o, f, {});
+    EXPECT_EQ(hud_scale(90), 1.0f);
+    EXPECT_EQ(hud_scale(480), 1.5f);
+    const HudText small = fit_hud(full, 320, 90, hud_scale(90));
+    ASSERT_EQ(small.lines.size(), 2u);  // 2 rows of 12 px in 40 % of 90 px
+    EXPECT_EQ(small.lines[0], full.lines[0]);
+    for (const std::string& line : small.lines) EXPECT_LE(line.size() * 6 + 6, 320u) << line;
+    EXPECT_EQ(fit_hud(full, 160, 90, 1.0f).lines[0], "impossible preview - t...");
+    // The errors of a failed reload come first.
+    const HudText failed = fit_hud(hud_text(o, f, {"a.json:1:1: bad"}), 320, 90, 1.0f);
+    ASSERT_EQ(failed.errors.size(), 2u);
+    EXPECT_TRUE(failed.lines.empty());
+    // The default window: nothing cut.
+    const HudText big = fit_hud(full, 1280, 480, hud_scale(480));
+    EXPECT_EQ(big.lines, full.lines);
+    o.hud = false;
+    EXPECT_TRUE(fit_hud(hud_text(o, f, {}), 320, 90, 1.0f).lines.empty());
+}
+
+}  // namespace
+}  // namespace impossible::preview
