@@ -382,9 +382,10 @@ std::array<api::Pose, 2> hands_of(py::handle value, double limit = 1e7) {
 
 // One frame's view.
 api::View view_of(const ViewBase& base, py::handle pose, py::handle room, py::handle hands, double time, int max_depth,
-                  py::handle light_depth) {
+                  py::handle light_depth, py::handle exposure = py::none()) {
     api::View v;
     if (!light_depth.is_none()) v.light_depth = integer_of(light_depth, "light_depth");
+    if (!exposure.is_none()) v.exposure = real_of(exposure, "exposure");
     if (!hands.is_none()) v.hands = hands_of(hands);
     if (!pose.is_none()) v.pose = pose_of(pose, 1e7, "pose");
     if (!room.is_none()) v.room = text_of(room, "room", "a room id (str)");
@@ -423,8 +424,8 @@ public:
           thread_(std::this_thread::get_id()) {}
 
     py::dict render(py::handle pose, py::handle room, py::handle hands, double time, int max_depth,
-                    py::handle light_depth) {
-        const api::View view = view_of(base_, pose, room, hands, time, max_depth, light_depth);
+                    py::handle light_depth, py::handle exposure) {
+        const api::View view = view_of(base_, pose, room, hands, time, max_depth, light_depth, exposure);
         on_its_thread("draws");
         if (!renderer_) raise(PyExc_ValueError, "render: the renderer is closed");
         api::Expected<api::Frame> frame = [&] {
@@ -435,8 +436,8 @@ public:
     }
 
     py::dict trace(py::handle pose, py::handle room, py::handle hands, double time, int max_depth, int threads,
-                   py::handle light_depth) {
-        return trace_frame(layout_, view_of(base_, pose, room, hands, time, max_depth, light_depth), threads);
+                   py::handle light_depth, py::handle exposure) {
+        return trace_frame(layout_, view_of(base_, pose, room, hands, time, max_depth, light_depth, exposure), threads);
     }
 
     // Frees the GL objects now, in the context they were made in; again:
@@ -639,10 +640,10 @@ void bind_renderer(py::module_& m) {
              py::arg("cull") = true, py::arg("eye_poses") = py::none())
         .def("render", &PyRenderer::render, py::arg("pose") = py::none(), py::arg("room") = py::none(),
              py::arg("hands") = py::none(), py::arg("time") = 0.0, py::arg("max_depth") = 8,
-             py::arg("light_depth") = py::none())
+             py::arg("light_depth") = py::none(), py::arg("exposure") = py::none())
         .def("trace", &PyRenderer::trace, py::arg("pose") = py::none(), py::arg("room") = py::none(),
              py::arg("hands") = py::none(), py::arg("time") = 0.0, py::arg("max_depth") = 8, py::arg("threads") = 0,
-             py::arg("light_depth") = py::none())
+             py::arg("light_depth") = py::none(), py::arg("exposure") = py::none())
         .def("close", &PyRenderer::close, "Frees its GL objects now; render() raises ValueError after")
         .def("__enter__", [](py::object self) { return self; })
         .def("__exit__", [](PyRenderer& r, const py::args&) { r.close(); })
@@ -654,15 +655,16 @@ void bind_renderer(py::module_& m) {
         "trace",
         [](const api::Layout& layout, py::handle size, int samples, py::handle pose, py::handle room, py::handle hands,
            double time, int max_depth, int threads, py::handle light_depth, py::handle ipd, py::handle fov,
-           py::handle fov_angles, py::handle visible_area, py::handle hmd, py::handle eye_poses) {
+           py::handle fov_angles, py::handle visible_area, py::handle hmd, py::handle eye_poses, py::handle exposure) {
             const ViewBase base = base_of(size, samples, ipd, fov, fov_angles, visible_area, hmd, eye_poses);
-            return trace_frame(layout, view_of(base, pose, room, hands, time, max_depth, light_depth), threads);
+            return trace_frame(layout, view_of(base, pose, room, hands, time, max_depth, light_depth, exposure),
+                               threads);
         },
         py::arg("layout"), py::arg("size") = py::none(), py::arg("samples") = 1, py::arg("pose") = py::none(),
         py::arg("room") = py::none(), py::arg("hands") = py::none(), py::arg("time") = 0.0, py::arg("max_depth") = 8,
         py::arg("threads") = 0, py::arg("light_depth") = py::none(), py::arg("ipd") = py::none(),
         py::arg("fov") = py::none(), py::arg("fov_angles") = py::none(), py::arg("visible_area") = py::none(),
-        py::arg("hmd") = py::none(), py::arg("eye_poses") = py::none(),
+        py::arg("hmd") = py::none(), py::arg("eye_poses") = py::none(), py::arg("exposure") = py::none(),
         "The reference ray tracer (`impossible trace`); no GL context needed");
     m.def(
         "load_hmd_profile",

@@ -19,6 +19,7 @@ uniform bool u_mip_level0;    // colour from mip level 0 too (render::FrameDesc:
 
 uniform uint u_cell_id;
 uniform bool u_unshaded;  // portal fill at the recursion limit: flat colour
+uniform float u_exposure; // 2^EV: a surface's colour times it before its clamp (docs/lighting.md, "Exposure")
 
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out uint o_id;
@@ -61,11 +62,12 @@ void main() {
     // (lighting.frag.glsl) instead of the built-in light.
     float dark = checker_dark(v_checker_position, n, v_checker) ? CHECKER_DARK : 1.0;
     vec3 lit = u_light_ambient + light_sum(v_light_position, n, length(v_light_position + u_light_origin));
-    o_color = vec4(clamp(base * dark * lit, 0.0, 1.0), 1.0);
+    o_color = vec4(clamp(base * dark * lit * u_exposure, 0.0, 1.0), 1.0);
 #else
     float lambert = max(0.0, dot(n, LIGHT_DIR));
     float dark = checker_dark(v_checker_position, n, v_checker) ? CHECKER_DARK : 1.0;
     o_color = vec4(base * ((AMBIENT + DIFFUSE * lambert) * dark), 1.0);
+    if (u_exposure != 1.0) o_color.rgb = clamp(o_color.rgb * u_exposure, 0.0, 1.0);
 #endif
 #if defined(VOLUMES)
     o_color.rgb *= u_volume_tint;

@@ -173,6 +173,10 @@ struct View {
     // the layout's light_depth (as `render --light-depth`); none: the
     // layout's. No effect on a "fixed" layout.
     std::optional<int> light_depth;
+    // Exposure in EV (-20..20, as `render --exposure`): each surface's colour
+    // times 2^EV before its clamp to 0..1, in render and trace alike; none:
+    // the layout's "exposure" (0 unless it says).
+    std::optional<double> exposure;
     // Each eye's optics, left then right (as `--fov-angles` or `--hmd`): the
     // eyes' frusta are these angles (fov_deg is not read) and each eye's
     // hidden area is masked; none: symmetric frusta of fov_deg.

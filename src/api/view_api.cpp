@@ -23,6 +23,7 @@ math::View view_of(const View& view) {
     v.max_portal_passes = view.max_portal_passes;
     v.time = view.time;
     v.light_depth = view.light_depth;
+    v.exposure = view.exposure;
     if (view.eye_optics) {
         std::array<math::EyeOptics, 2> eyes;
         for (std::size_t e = 0; e < 2; ++e)

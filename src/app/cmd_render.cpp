@@ -34,7 +34,8 @@ int run_render_command(const Args& args, std::ostream& out, std::ostream& err) {
     CommandOutputs outputs = frame_outputs(options);
     const session::Session session(load_layout_or_default(options.layout_path, outputs));
     const render::FrameDesc frame = frame_for(session, options);
-    err << light_options_warning(session, options.frame.light_depth, options.shadow_options);
+    err << model_warnings_text(session)
+        << light_options_warning(session, options.frame.light_depth, options.shadow_options);
 
     std::string fallback_note;
     const gl::Context context =

@@ -51,7 +51,7 @@ int run_trace_command(const Args& args, std::ostream& out, std::ostream& err) {
     const int threads = own.threads;
     const session::Session session(load_layout_or_default(options.layout_path, outputs));
     const render::FrameDesc frame = frame_for(session, options);
-    err << light_options_warning(session, options.frame.light_depth, false);
+    err << model_warnings_text(session) << light_options_warning(session, options.frame.light_depth, false);
 
     const trace::TraceDesc desc = trace_desc_for(frame, threads);
 

@@ -66,11 +66,13 @@ Result<std::vector<MeshInstance>> collect_instances(const tinygltf::Model& model
 
 // The point and spot lights of the nodes `lights` (layout-format.md,
 // "Lights"), in the model's coordinates: position the node's origin, a
-// spot's axis its -Z. Directional lights are skipped (a layout has none).
+// spot's axis its -Z. Directional lights are skipped (a layout has none):
+// their names (as ModelLight::name) go to `directional`.
 // Errors name the node or the light: an index that does not exist, an
 // unknown type, a colour outside 0..1, an intensity not > 0, a range not
 // > 0, a cone not 0 <= inner < outer <= pi/2, or more than kMaxModelLights.
-Result<std::vector<ModelLight>> read_lights(const tinygltf::Model& model, const std::vector<LightInstance>& lights);
+Result<std::vector<ModelLight>> read_lights(const tinygltf::Model& model, const std::vector<LightInstance>& lights,
+                                            std::vector<std::string>& directional);
 
 // --- gltf_primitives.cpp
 

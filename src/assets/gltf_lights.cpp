@@ -55,9 +55,23 @@ Result<std::optional<ModelLight>> read_light(const tinygltf::Light& light, const
     return std::optional<ModelLight>{out};
 }
 
+// "light \"Point.002\" (light 1, node 4 \"Bulb\")": the glTF names, cut to
+// 60 bytes, where the file gives them.
+std::string light_name(const tinygltf::Model& model, std::size_t light, int node) {
+    const std::string& own = model.lights[light].name;
+    std::string out = own.empty() ? "light " + std::to_string(light) : "light " + quote(own.substr(0, 60));
+    out += " (";
+    if (!own.empty()) out += "light " + std::to_string(light) + ", ";
+    out += "node " + std::to_string(node);
+    const std::string& node_name = model.nodes[static_cast<std::size_t>(node)].name;
+    if (!node_name.empty()) out += " " + quote(node_name.substr(0, 60));
+    return out + ")";
+}
+
 }  // namespace
 
-Result<std::vector<ModelLight>> read_lights(const tinygltf::Model& model, const std::vector<LightInstance>& lights) {
+Result<std::vector<ModelLight>> read_lights(const tinygltf::Model& model, const std::vector<LightInstance>& lights,
+                                            std::vector<std::string>& directional) {
     std::vector<ModelLight> out;
     for (const LightInstance& instance : lights) {
         const std::string node = "has node " + std::to_string(instance.node);
@@ -69,8 +83,12 @@ Result<std::vector<ModelLight>> read_lights(const tinygltf::Model& model, const 
         const auto n = static_cast<std::size_t>(index.GetNumberAsInt());
         Result<std::optional<ModelLight>> light = read_light(model.lights[n], "has light " + std::to_string(n));
         if (!light) return light;
-        if (!light->has_value()) continue;
+        if (!light->has_value()) {
+            directional.push_back(light_name(model, n, instance.node));
+            continue;
+        }
         ModelLight placed = **light;
+        placed.name = light_name(model, n, instance.node);
         const glm::dvec4 origin = instance.world * glm::dvec4(0.0, 0.0, 0.0, 1.0);
         const glm::dvec3 axis = glm::dvec3(instance.world * glm::dvec4(0.0, 0.0, -1.0, 0.0));
         const double length = glm::length(axis);

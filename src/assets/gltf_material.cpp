@@ -107,6 +107,21 @@ Result<std::pair<const unsigned char*, std::size_t>> image_bytes(const tinygltf:
     return Error{who + " whose file " + file + " could not be read"};
 }
 
+// Material `index` (checked by check_material) without its texture.
+Material read_material(const tinygltf::Material& m, int index) {
+    Material material;
+    const std::vector<double>& f = m.pbrMetallicRoughness.baseColorFactor;  // checked: 4 finite numbers
+    material.base_color = glm::clamp(glm::dvec4(f[0], f[1], f[2], f[3]), 0.0, 1.0);
+    material.double_sided = m.doubleSided;
+    // BLEND is drawn alpha-tested at 0.5 (layout-format.md, "glTF props";
+    // the prop's "blend" may make it opaque).
+    material.blend = m.alphaMode == "BLEND";
+    material.alpha_mode = m.alphaMode == "OPAQUE" ? AlphaMode::Opaque : AlphaMode::Mask;
+    material.alpha_cutoff = material.blend ? 0.5 : m.alphaCutoff;
+    material.name = named("material", index, m.name);
+    return material;
+}
+
 }  // namespace
 
 bool keep_image_bytes(tinygltf::Image* image, int index, std::string* err, std::string*, int, int,
@@ -139,12 +154,7 @@ Result<int> check_material(const tinygltf::Model& model, int material) {
     if (factor.size() != 4 || !std::all_of(factor.begin(), factor.end(), [](double v) { return std::isfinite(v); })) {
         return Error{who + " whose baseColorFactor is not 4 finite numbers"};
     }
-    if (m.alphaMode == "BLEND") {
-        return Error{who +
-                     " with alphaMode \"BLEND\", which is not supported (the renderers do not blend "
-                     "surfaces); use \"MASK\" with an alphaCutoff, or \"OPAQUE\""};
-    }
-    if (m.alphaMode != "OPAQUE" && m.alphaMode != "MASK") {
+    if (m.alphaMode != "OPAQUE" && m.alphaMode != "MASK" && m.alphaMode != "BLEND") {
         return Error{who + " with alphaMode " + quote(m.alphaMode.substr(0, 60)) +
                      "; glTF allows \"OPAQUE\", \"MASK\" and \"BLEND\""};
     }
@@ -201,12 +211,7 @@ Result<void> build_materials(const tinygltf::Model& model, const KeptImages& kep
         }
         const int gltf_index = triangle.material;
         const tinygltf::Material& m = model.materials[static_cast<std::size_t>(gltf_index)];
-        Material material;
-        const std::vector<double>& f = m.pbrMetallicRoughness.baseColorFactor;  // checked: 4 finite numbers
-        material.base_color = glm::clamp(glm::dvec4(f[0], f[1], f[2], f[3]), 0.0, 1.0);
-        material.double_sided = m.doubleSided;
-        material.alpha_mode = m.alphaMode == "MASK" ? AlphaMode::Mask : AlphaMode::Opaque;
-        material.alpha_cutoff = m.alphaCutoff;
+        Material material = read_material(m, gltf_index);
         const int t = m.pbrMetallicRoughness.baseColorTexture.index;
         if (t >= 0) {
             const auto known = texture_of.find(t);

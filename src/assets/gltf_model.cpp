@@ -116,7 +116,8 @@ Result<GltfModel> load_model(const std::string& path, std::size_t max_triangles)
     std::vector<LightInstance> light_nodes;
     const Result<std::vector<MeshInstance>> instances = collect_instances(model, light_nodes);
     if (!instances) return instances;
-    Result<std::vector<ModelLight>> lights = read_lights(model, light_nodes);
+    std::vector<std::string> directional;
+    Result<std::vector<ModelLight>> lights = read_lights(model, light_nodes, directional);
     if (!lights) return lights;
 
     std::size_t triangles = 0;
@@ -125,6 +126,7 @@ Result<GltfModel> load_model(const std::string& path, std::size_t max_triangles)
     GltfModel out;
     out.files = std::move(files);
     out.lights = std::move(*lights);
+    out.directional_lights = std::move(directional);
     out.triangles.reserve(triangles);
     for (const auto& [data, instance] : *work) {
         if (Result<void> emitted = emit_triangles(data, instance, out.triangles); !emitted) return emitted;

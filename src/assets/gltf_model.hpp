@@ -26,7 +26,7 @@ namespace impossible::assets {
 //
 // Returns an error (a sentence, without the file name) for a
 // file that is missing, unreadable, not glTF, uses what is not supported
-// (alphaMode BLEND, images that are not PNG or JPEG), or has more than
+// (images that are not PNG or JPEG), or has more than
 // `max_triangles` triangles. Never throws for bad input.
 struct GltfModel {
     std::vector<ModelTriangle> triangles;
@@ -36,6 +36,9 @@ struct GltfModel {
     // KHR_lights_punctual point and spot lights of the default scene's nodes,
     // in the model's coordinates (layout-format.md, "Lights").
     std::vector<ModelLight> lights;
+    // The directional lights of those nodes, which are not kept (a layout
+    // has none), each named as ModelLight::name; the loader warns of them.
+    std::vector<std::string> directional_lights;
     // Every file read: the model's own path first, then its buffers and
     // images as tinygltf opened them (in the model's folder).
     std::vector<std::string> files;

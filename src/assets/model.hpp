@@ -5,6 +5,7 @@
 
 #include <array>
 #include <memory>
+#include <string>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -40,7 +41,9 @@ struct Texture {
     Sampler sampler;
 };
 
-// glTF alphaMode. BLEND is refused by the loader (docs/layouts.md says why).
+// glTF alphaMode as the renderers draw it. The loader reads BLEND as Mask
+// with the cutoff 0.5 and marks the material `blend` (layout-format.md,
+// "glTF props": a prop's "blend" may make it Opaque instead).
 enum class AlphaMode { Opaque, Mask };
 
 // A glTF material as the renderers use it: the colour at a point of a
@@ -52,6 +55,8 @@ struct Material {
     bool double_sided = false;                  // both sides visible, the back's normal reversed
     AlphaMode alpha_mode = AlphaMode::Opaque;
     double alpha_cutoff = 0.5;  // Mask: alpha below this is not drawn
+    bool blend = false;         // the file says alphaMode BLEND (read as Mask at 0.5)
+    std::string name;           // "material 2 (\"Glass\")", for warnings
 };
 
 // A triangle of a glTF model, in the model's own coordinates (before the
@@ -77,6 +82,8 @@ struct ModelLight {
     bool spot = false;
     double inner_cone_rad = 0.0;                 // glTF's innerConeAngle, radians
     double outer_cone_rad = 0.7853981633974483;  // glTF's outerConeAngle (default pi/4)
+    // Names it in warnings: "light \"Point.002\" (light 1, node 4 \"Bulb\")".
+    std::string name;
 };
 
 }  // namespace impossible::assets

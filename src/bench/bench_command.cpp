@@ -49,7 +49,8 @@ int run_bench_command(const cli::Args& args, std::ostream& out, std::ostream& er
     if (options.json) outputs.output("--json", *options.json);
     if (options.csv) outputs.output("--csv", *options.csv);
     const session::Session session(load_layout_or_default(options.view.layout_path, outputs));
-    err << cli::light_options_warning(session, options.view.frame.light_depth, options.view.shadow_options);
+    err << cli::model_warnings_text(session)
+        << cli::light_options_warning(session, options.view.frame.light_depth, options.view.shadow_options);
     const std::vector<BenchPose> poses = bench_poses(session, options);
     const BenchPlan plan = plan_bench(session, options);
 

@@ -140,6 +140,10 @@ constexpr Option<FrameOptions> kViewRows[] = {
      "portals light may pass on its way to a surface (0..16), instead of\n"
      "the layout's light_depth; only with \"lighting\": \"lights\"",
      [](FrameOptions& o, const OptionValue& v) { o.frame.light_depth = parse_light_depth(v); }},
+    {"--exposure", "EV",
+     "each surface's colour times 2^EV before its clamp to 0..1 (-20..20;\n"
+     "default the layout's \"exposure\", else 0: the image as without it)",
+     [](FrameOptions& o, const OptionValue& v) { o.frame.exposure = parse_exposure(v); }},
 };
 
 constexpr Option<FrameOptions> kTechniqueRows[] = {
@@ -238,6 +242,13 @@ int parse_samples(const OptionValue& v) {
 
 int parse_light_depth(const OptionValue& v) {
     return parse_int(v.name, v.text, lim::kLightDepth.min, lim::kLightDepth.max);
+}
+
+double parse_exposure(const OptionValue& v) {
+    const double ev = parse_number(v.name, v.text);
+    if (!lim::kExposure.contains(ev))
+        throw InputError(v.name + ": " + v.text + " is out of range " + lim::range_text(lim::kExposure));
+    return ev;
 }
 
 int parse_shadow_size(const OptionValue& v) {

@@ -55,6 +55,7 @@ double parse_fps(const OptionValue& value);                    // math::limits::
 int parse_max_depth(const OptionValue& value);                 // 0..250
 int parse_samples(const OptionValue& value);                   // 1, 2, 4, 8 or 16
 int parse_light_depth(const OptionValue& value);               // 0..16
+double parse_exposure(const OptionValue& value);               // EV, -20..20
 int parse_shadow_size(const OptionValue& value);               // 0..4096
 std::pair<int, int> parse_eye_size(const OptionValue& value);  // WxH, each 1..8192
 // --fov-angles: LEFT,RIGHT,UP,DOWN in degrees (OpenXR's XrFovf) for the

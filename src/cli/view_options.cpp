@@ -82,6 +82,12 @@ std::string view_help(const ViewTables& tables) {
     return options_help(tables.own, kViewHelpColumn) + options_help(tables.frame, kViewHelpColumn);
 }
 
+std::string model_warnings_text(const session::Session& session) {
+    std::string out;
+    for (const std::string& w : session.layout().model_warnings) out += "warning: " + w + "\n";
+    return out;
+}
+
 std::string light_options_warning(const session::Session& session, const std::optional<int>& light_depth,
                                   bool shadow_options) {
     const layout::Layout& layout = session.layout();

@@ -70,6 +70,11 @@ ViewOptions parse_view_options(const ParsedArgs& args, const ViewTables& tables 
 std::string light_options_warning(const session::Session& session, const std::optional<int>& light_depth,
                                   bool shadow_options);
 
+// The layout's warnings about its glTF models (layout::Layout::model_warnings:
+// alphaMode BLEND, dropped lights), "warning: " and '\n' around each, as
+// validate prints them; "" without any.
+std::string model_warnings_text(const session::Session& session);
+
 // The head pose and room of the frame: the layout's start without --pose;
 // with --pose, --room or else the one room whose box or prism holds the
 // head; with --path, line K's after walking lines 0..K (walk/replay.hpp),

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "base/file_io.hpp"
 #include "base/format.hpp"
@@ -138,6 +139,10 @@ void Checker::warning(const Path& at, std::string_view message) {
     warnings_.push_back({offset_of(at), with_name(at, message)});
 }
 
+void Checker::model_warning(const Path& at, std::string_view message) {
+    warnings_.push_back({offset_of(at), with_name(at, message), true});
+}
+
 void Checker::error_at_offset(std::size_t offset, std::string_view message) {
     errors_.push_back({offset, std::string(message)});
 }
@@ -172,6 +177,12 @@ std::vector<Diagnostic> Checker::finish(std::vector<Pending> pending) const {
 
 std::vector<Diagnostic> Checker::take_errors() const { return finish(errors_); }
 std::vector<Diagnostic> Checker::take_warnings() const { return finish(warnings_); }
+std::vector<Diagnostic> Checker::take_model_warnings() const {
+    std::vector<Pending> model;
+    std::copy_if(warnings_.begin(), warnings_.end(), std::back_inserter(model),
+                 [](const Pending& p) { return p.model; });
+    return finish(model);
+}
 
 bool Checker::check_fields(const Path& at, const json& object, std::initializer_list<const char*> known,
                            std::initializer_list<const char*> required) {

@@ -50,6 +50,8 @@ public:
     void error(const Path& at, std::string_view message);         // at the value
     void error_at_key(const Path& at, std::string_view message);  // at its key
     void warning(const Path& at, std::string_view message);
+    // A warning that render and trace print too (Layout::model_warnings).
+    void model_warning(const Path& at, std::string_view message);
     void error_at_offset(std::size_t offset, std::string_view message);
 
     // Unknown fields (other than "_comments") are errors at their key;
@@ -76,6 +78,7 @@ public:
     // The diagnostics with line and column, each list sorted in file order.
     std::vector<Diagnostic> take_errors() const;
     std::vector<Diagnostic> take_warnings() const;
+    std::vector<Diagnostic> take_model_warnings() const;  // those of model_warning only
 
     std::size_t offset_of(const Path& at) const;  // of the value, or its nearest ancestor
 
@@ -83,6 +86,7 @@ private:
     struct Pending {
         std::size_t offset = kNoOffset;
         std::string message;
+        bool model = false;  // model_warning's
     };
 
     std::string_view text_;

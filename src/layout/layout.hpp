@@ -67,7 +67,8 @@ struct GltfProp {
     std::vector<assets::Texture> textures;         // those the materials use, by Material::texture
     std::string id;                                // optional ("" none); unique among the layout's props
     Motion motion;
-    std::vector<assets::ModelLight> lights;  // read by the loader; kept only under "lighting": "lights"
+    std::vector<assets::ModelLight> lights;       // read by the loader; kept only under "lighting": "lights"
+    std::vector<std::string> directional_lights;  // the model's, dropped with a warning (add_prop_lights)
 };
 
 // The prop's model → layout transform: scale, then yaw about +Y, then move.
@@ -209,6 +210,13 @@ struct Layout {
     HandShape hands;
     Lighting lighting = Lighting::Fixed;
     int light_depth = kDefaultLightDepth;  // 0..kMaxLightDepth; read only under Lighting::Lights
+    // "exposure" (EV, math::limits::kExposure): each surface's colour times
+    // 2^exposure before its clamp; View::exposure replaces it.
+    double exposure = 0.0;
+    // The warnings about what a glTF model holds that is drawn otherwise than
+    // the file says (alphaMode BLEND, a dropped light), "FILE:LINE:COLUMN:
+    // message" each; render and trace print them as validate does.
+    std::vector<std::string> model_warnings;
     // Every file the loader read besides the layout itself, in order: room
     // textures, glTF models and their buffers and images.
     std::vector<assets::FileRead> files_read;

@@ -211,10 +211,10 @@ void read_layout(Checker& check, const json& root, const std::string& base_dir, 
         check.error(top, "a layout must be a JSON object (got " + detail::json_type_name(root) + ")");
         return;
     }
-    check.check_fields(
-        top, root,
-        {"format", "version", "name", "play_area", "start", "rooms", "portals", "hands", "lighting", "light_depth"},
-        {"format", "version", "start", "rooms"});
+    check.check_fields(top, root,
+                       {"format", "version", "name", "play_area", "start", "rooms", "portals", "hands", "lighting",
+                        "light_depth", "exposure"},
+                       {"format", "version", "start", "rooms"});
     read_header(check, root, layout);
 
     assets::AssetCache models(base_dir);
@@ -288,6 +288,7 @@ LoadResult load(std::string_view text, const std::string& source, const std::str
     read_layout(check, document.root, base_dir, layout, document.duplicates.empty());
     result.errors = check.take_errors();
     result.warnings = check.take_warnings();
+    for (const Diagnostic& d : check.take_model_warnings()) layout.model_warnings.push_back(d.str());
     if (result.errors.empty()) result.layout = std::move(layout);
     return result;
 }

@@ -81,18 +81,24 @@ void add_prop_lights(Checker& check, std::vector<RoomDraft>& rooms, bool lit, st
         Room& room = draft.room;
         for (std::size_t i = 0; i < room.props.size(); ++i) {
             auto* prop = std::get_if<GltfProp>(&room.props[i]);
-            if (prop == nullptr || prop->lights.empty()) continue;
+            if (prop == nullptr) continue;
             if (!lit) {
                 prop->lights.clear();
                 continue;
             }
             const Path prop_at = draft.path / "props" / i;
+            const std::string model = "the model " + quote(prop->path, kQuotedPathCharacters) + "'s ";
+            for (const std::string& name : prop->directional_lights) {
+                check.model_warning(prop_at, model + "directional " + name +
+                                                 " is dropped (a layout's lights are point and spot lights; the "
+                                                 "prop's \"lights\": false drops all of its lights)");
+            }
             for (std::size_t k = 0; k < prop->lights.size(); ++k) {
                 const Light light = pose_model_light(*prop, prop->lights[k], static_cast<int>(i));
                 if (!strictly_inside(room, light.position)) {
-                    check.error(prop_at, "the model's light " + std::to_string(k) + " stands at " +
-                                             prop_light_point(light.position) + ", not strictly inside the room " +
-                                             quote(room.id));
+                    check.model_warning(
+                        prop_at, model + prop->lights[k].name + " stands at " + prop_light_point(light.position) +
+                                     ", not strictly inside the room " + quote(room.id) + ": it is dropped");
                     continue;
                 }
                 if (room.lights.size() >= limits::kMaxLightsPerRoom) {

@@ -171,8 +171,25 @@ bool strictly_inside(const Room& room, const glm::dvec3& p) {
     return true;
 }
 
+// The top-level "exposure" (docs/lighting.md, "Exposure"): a number of EV
+// in math::limits::kExposure, for either lighting.
+static void read_exposure(Checker& check, const json& root, Layout& layout) {
+    const json* v = field(root, "exposure");
+    if (v == nullptr) return;
+    const Path at = Path() / "exposure";
+    constexpr auto range = math::limits::kExposure;
+    if (!v->is_number() || !std::isfinite(v->get<double>()) || !range.contains(v->get<double>())) {
+        const std::string got = v->is_number() ? format_number(v->get<double>()) : json_type_name(*v);
+        check.error(at, "must be a number of EV from " + format_number(range.min) + " to " + format_number(range.max) +
+                            " (got " + got + ")");
+        return;
+    }
+    layout.exposure = v->get<double>();
+}
+
 void read_lighting(Checker& check, const json& root, std::vector<RoomDraft>& rooms, Layout& layout) {
     const Path top;
+    read_exposure(check, root, layout);
     if (const json* v = field(root, "lighting")) {
         // A bad value leaves the light fields unchecked (they would only
         // repeat it as "only with lights" or as their own problems).

@@ -54,10 +54,50 @@ std::optional<BoxProp> read_box_prop(Checker& check, const Path& at, const json&
     return prop;
 }
 
+// A model prop's "blend" ("mask" or "opaque"; nothing when absent or bad,
+// `ok` false when bad) and "lights" (true or false; `ok` false when bad).
+std::optional<std::string> read_model_options(Checker& check, const Path& at, const json& value, bool& lights,
+                                              bool& ok) {
+    if (const json* v = field(value, "lights")) {
+        if (v->is_boolean()) {
+            lights = v->get<bool>();
+        } else {
+            check.error(at / "lights", "must be true or false (got " + json_type_name(*v) + ")");
+            ok = false;
+        }
+    }
+    const json* v = field(value, "blend");
+    if (v == nullptr) return std::nullopt;
+    const auto mode = check.read_string(at / "blend", *v);
+    if (mode && (*mode == "mask" || *mode == "opaque")) return mode;
+    if (mode) check.error(at / "blend", "must be \"mask\" or \"opaque\" (got " + quote(*mode) + ")");
+    ok = false;
+    return std::nullopt;
+}
+
+// What the model's alphaMode BLEND materials become (layout-format.md, "glTF
+// props"): alpha-tested at 0.5, with a warning naming each, unless "blend"
+// chose; opaque under "blend": "opaque".
+void apply_blend(Checker& check, const Path& at, const std::optional<std::string>& blend, GltfProp& prop) {
+    for (assets::Material& m : prop.materials) {
+        if (!m.blend) continue;
+        if (blend == "opaque") {
+            m.alpha_mode = assets::AlphaMode::Opaque;
+        } else if (!blend) {
+            check.model_warning(at, "the model " + quote(prop.path, kQuotedPathCharacters) + " has " + m.name +
+                                        " with alphaMode \"BLEND\", drawn alpha-tested at 0.5 (set the prop's "
+                                        "\"blend\" to \"mask\" or \"opaque\" to choose)");
+        }
+    }
+}
+
 std::optional<GltfProp> read_gltf_prop(Checker& check, const Path& at, const json& value, assets::AssetCache& models) {
-    check.check_fields(at, value, {"gltf", "position", "yaw_deg", "scale", "id", "motion"}, {"gltf"});
+    check.check_fields(at, value, {"gltf", "position", "yaw_deg", "scale", "id", "motion", "blend", "lights"},
+                       {"gltf"});
     GltfProp prop;
     bool ok = true;
+    bool lights = true;
+    const std::optional<std::string> blend = read_model_options(check, at, value, lights, ok);
     if (const json* v = field(value, "position")) {
         if (const auto p = check.read_vec3(at / "position", *v, NumberKind::Coordinate)) {
             prop.position = *p;
@@ -82,6 +122,11 @@ std::optional<GltfProp> read_gltf_prop(Checker& check, const Path& at, const jso
     const json* gltf = field(value, "gltf");
     if (gltf == nullptr || !load_gltf_model(check, at / "gltf", *gltf, models, 1, prop)) return std::nullopt;
     if (!ok) return std::nullopt;
+    apply_blend(check, at, blend, prop);
+    if (!lights) {
+        prop.lights.clear();
+        prop.directional_lights.clear();
+    }
     return prop;
 }
 
@@ -224,6 +269,7 @@ bool load_gltf_model(Checker& check, const Path& gltf_at, const json& gltf, asse
     prop.materials = model->materials;
     prop.textures = model->textures;  // the images are shared, not copied
     prop.lights = model->lights;      // kept under "lighting": "lights" only (add_prop_lights)
+    prop.directional_lights = model->directional_lights;
     return true;
 }
 

@@ -50,6 +50,10 @@ struct View {
     // --light-depth: replaces the layout's light_depth under "lighting":
     // "lights" (cli.md); none: the layout's. No effect on "fixed" layouts.
     std::optional<int> light_depth;
+    // --exposure, EV: each surface's colour times 2^exposure before its clamp
+    // to 0..1 (docs/lighting.md, "Exposure"), in both renderers; none: the
+    // layout's "exposure" (0 unless it says).
+    std::optional<double> exposure;
     // Per-eye optics, left then right: the eyes' frusta are then these
     // angles (fov_y_deg is not read) and the hidden areas are masked.
     std::optional<std::array<EyeOptics, 2>> eye_optics;

@@ -49,6 +49,9 @@ inline constexpr Range<int> kPathFrame{0, 100'000'000};
 // Portals light may pass (layout-format.md, "Lights").
 inline constexpr int kMaxLightDepth = 16;
 inline constexpr Range<int> kLightDepth{0, kMaxLightDepth};
+// Exposure, EV (--exposure, a layout's "exposure"): each surface's colour
+// times 2^EV before its clamp (docs/lighting.md, "Exposure").
+inline constexpr Range<double> kExposure{-20.0, 20.0};
 // Cube shadow maps' texels per face side (0: no shadows).
 inline constexpr Range<int> kShadowMapSize{0, 4096};
 // Render-to-texture portals: the scale of their textures, in (0, 4].

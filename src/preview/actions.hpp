@@ -23,6 +23,8 @@ enum class Action {
     HandCloser,     // , : the hand nearer the head
     HandFurther,    // . : the hand further out
     ToggleShadows,  // L: the shadows props cast in lit layouts, on or off
+    ExposureDown,   // 9: exposure 0.5 EV lower
+    ExposureUp,     // 0: exposure 0.5 EV higher
 };
 
 // The movement keys held down now: -1, 0 or +1 on each axis.

@@ -35,13 +35,14 @@ std::vector<std::string> status_lines(const PreviewOptions& o, const HudFacts& f
         "recursion depth " + to_string(s.max_depth) + " (reached " + to_string(f.max_level_reached) + ")   " +
             eyes_text(s),
         std::string("clip ") + (s.clip == render::ClipMode::ClipDistance ? "clip-distance" : "oblique") +
-            "   culling " + (s.cull_portals ? "on" : "off"),
+            "   culling " + (s.cull_portals ? "on" : "off") + "   exposure " + (f.exposure > 0 ? "+" : "") +
+            fixed(f.exposure, 1) + " EV",
         "physical head " + fixed(h.x, 2) + " " + fixed(h.y, 2) + " " + fixed(h.z, 2) + "  yaw " +
             fixed(f.physical.yaw_deg, 0) + "  pitch " + fixed(f.physical.pitch_deg, 0) +
             (o.hand ? "   hand " + fixed(o.hand_distance, 2) + " m" : ""),
         f.cursor_captured ? "Esc releases the mouse" : "click to look around, Esc quits",
         "WASD/arrows Q/E move  H hud  M map  V view  [ ] depth  - = IPD  C clip  X cull  P shot  R reset"
-        "  G , . hand  L shadows",
+        "  G , . hand  L shadows  9 0 exposure",
     };
     if (f.lit)
         lines.insert(lines.begin() + 3, "lights " + to_string(f.room_lights) + " in this room   light images " +

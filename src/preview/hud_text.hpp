@@ -31,6 +31,7 @@ struct HudFacts {
     int room_lights = 0;
     int light_images = 0;
     int light_depth = 0;
+    double exposure = 0.0;  // EV, the frame's (--exposure, the keys 9 and 0, or the layout's)
 };
 
 inline constexpr std::size_t kMaxReloadErrors = 8;

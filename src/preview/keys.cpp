@@ -4,7 +4,8 @@
 
 namespace impossible::preview {
 
-KeyEffects apply_actions(const std::vector<Action>& actions, bool cursor_captured, PreviewOptions& o) {
+KeyEffects apply_actions(const std::vector<Action>& actions, bool cursor_captured, PreviewOptions& o,
+                         double layout_exposure) {
     KeyEffects e;
     render::FrameDesc& f = o.frame;
     for (Action a : actions) {
@@ -40,6 +41,13 @@ KeyEffects apply_actions(const std::vector<Action>& actions, bool cursor_capture
             case Action::ToggleHand: o.hand = !o.hand; break;
             case Action::ToggleShadows: f.shadows = !f.shadows; break;
             case Action::HandCloser: o.hand_distance = std::max(kMinHandDistance, o.hand_distance - kHandStep); break;
+            case Action::ExposureDown:
+            case Action::ExposureUp: {
+                const double step = a == Action::ExposureUp ? kExposureStep : -kExposureStep;
+                const auto range = math::limits::kExposure;
+                f.exposure = std::clamp(f.exposure.value_or(layout_exposure) + step, range.min, range.max);
+                break;
+            }
             case Action::HandFurther: o.hand_distance = std::min(kMaxHandDistance, o.hand_distance + kHandStep); break;
         }
     }

@@ -21,10 +21,14 @@ struct KeyEffects {
 
 inline constexpr int kMaxPreviewDepth = math::limits::kMaxDepth.max;
 inline constexpr double kIpdStep = 0.002, kMaxIpd = 10.0;
+inline constexpr double kExposureStep = 0.5;  // EV a press of 9 or 0
 
 // Applies the actions in order to `options`. Esc releases a captured cursor;
 // with the cursor free (or released by an earlier Esc of the frame) it quits.
-KeyEffects apply_actions(const std::vector<Action>& actions, bool cursor_captured, PreviewOptions& options);
+// The exposure keys start from --exposure, else `layout_exposure` (the
+// layout's "exposure"), and stay within math::limits::kExposure.
+KeyEffects apply_actions(const std::vector<Action>& actions, bool cursor_captured, PreviewOptions& options,
+                         double layout_exposure = 0.0);
 
 // The head's movement for one frame: the held keys, and the mouse only while
 // it is captured. dt is capped at 0.1 s (a stalled frame does not jump).

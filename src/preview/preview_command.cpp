@@ -42,7 +42,8 @@ double eye_aspect(const PreviewOptions& o) { return double(o.frame.eye_width) / 
 // released. What is left to do is returned.
 KeyEffects apply_keys(PreviewSession& s) {
     PreviewWindow& window = *s.window;
-    const KeyEffects keys = apply_actions(window.input.actions, cursor_captured(window), s.options);
+    const KeyEffects keys =
+        apply_actions(window.input.actions, cursor_captured(window), s.options, s.shown.session->layout().exposure);
     if (keys.release_cursor) capture_cursor(window, false);
     if (!keys.quit && window.input.clicked && !cursor_captured(window)) capture_cursor(window, true);
     return keys;
@@ -158,6 +159,7 @@ HudFacts hud_facts(const PreviewSession& s, const render::FrameDesc& desc) {
     f.room_lights = static_cast<int>(layout.rooms[desc.room].lights.size());
     f.light_images = s.stats.light_images;
     f.light_depth = desc.light_depth.value_or(layout.light_depth);
+    f.exposure = desc.exposure.value_or(layout.exposure);
     return f;
 }
 
@@ -232,7 +234,8 @@ int run_preview_command(const cli::Args& args, std::ostream& out, std::ostream& 
     }
     PreviewSession session;
     open_session(session, std::move(options));
-    err << cli::light_options_warning(*session.shown.session, session.options.frame.light_depth,
+    err << cli::model_warnings_text(*session.shown.session)
+        << cli::light_options_warning(*session.shown.session, session.options.frame.light_depth,
                                       session.options.shadow_options);
     for (long frame = 0; !session.options.frames || frame < *session.options.frames; ++frame)
         if (!run_frame(session, frame, err)) break;

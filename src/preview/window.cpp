@@ -38,6 +38,8 @@ std::optional<Action> action_of_key(int key) {
         case GLFW_KEY_R: return Action::Reset;
         case GLFW_KEY_G: return Action::ToggleHand;
         case GLFW_KEY_L: return Action::ToggleShadows;
+        case GLFW_KEY_9: return Action::ExposureDown;
+        case GLFW_KEY_0: return Action::ExposureUp;
         case GLFW_KEY_COMMA: return Action::HandCloser;
         case GLFW_KEY_PERIOD: return Action::HandFurther;
         default: return std::nullopt;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 
 #include "math/eyes.hpp"
 #include "math/projection.hpp"
@@ -17,6 +18,19 @@
 
 namespace impossible::render {
 namespace {
+
+// Every scene program of `mode` draws with the frame's exposure: 2^EV, the
+// view's or the layout's (docs/lighting.md, "Exposure").
+void set_exposure(const Programs& programs, StereoMode mode, double ev) {
+    const float scale = static_cast<float>(std::exp2(ev));
+    const auto set = [scale](const std::optional<SceneProgram>& p) {
+        if (p && p->exposure >= 0) glProgramUniform1f(p->program.get(), p->exposure, scale);
+    };
+    const int m = mode_index(mode);
+    set(programs.scene[m]);
+    set(programs.material[m]);
+    for (const std::optional<SceneProgram>& variant : programs.variants[m]) set(variant);
+}
 
 // What a frame needs beyond the default program: its target, its stereo
 // mode's programs, the light images of its light depth and, for
@@ -45,6 +59,7 @@ Result<void> prepare_frame(RendererParts& parts, const FrameDesc& frame) {
                              .lights_ubo = parts.lights.buffers.ubo,
                              .materials = r.has_materials};
     if (Result<void> made = ensure_variants(programs, frame.stereo, needs); !made) return made;
+    set_exposure(programs, frame.stereo, frame.exposure.value_or(r.exposure));
     if (Result<void> made = ensure_multisampled(programs, targets, frame); !made) return made;
     if (Result<void> made = prepare_hidden_mask(targets.hidden_mask, frame, frame.samples); !made) return made;
     if (r.has_windows) {

@@ -67,6 +67,7 @@ void copy_scene(SceneData& r, const scene::Scene& scene) {
             r.has_materials = r.has_materials || b.texture >= 0 || b.alpha_cutoff >= 0.0f;
     copy_objects(r, scene);
     r.cell_origins = scene.origins;
+    r.exposure = scene.exposure;
     SceneLights& lighting = r.lighting;
     lighting.lit = scene.lighting == layout::Lighting::Lights && scene.lit_layout != nullptr;
     if (lighting.lit) {

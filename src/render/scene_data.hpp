@@ -54,6 +54,7 @@ struct SceneData {
     links::PortalLinks links;                          // M_AB per portal, the portals of each room
     bool has_windows = false;                          // the window blend's programs are needed
     bool has_materials = false;                        // some batch has a texture or an alpha cutoff
+    double exposure = 0.0;                             // the layout's "exposure" (scene::Scene::exposure)
     walk::ObjectSet object_set;                        // the dynamic props and the hand (scene.hpp)
     std::vector<scene::ObjectMesh> object_meshes;      // per object_set.props, then the hand
     std::vector<std::vector<int>> prop_mesh;           // per room, per prop: its object mesh, or -1 (static)

@@ -136,6 +136,7 @@ Scene build_scene(const layout::Layout& layout, const links::PortalLinks& links)
         scene.portal_info.push_back({lp.rect, lp.room, lp.target, lp.kind, lp.tint, lp.reflectance});
     }
     append_object_meshes(scene, out, layout);
+    scene.exposure = layout.exposure;
     if (layout.lighting == layout::Lighting::Lights) {
         // The light images at the layout's depth, of the lights that light
         // frames, within the light paths' and rectangles' bound as the

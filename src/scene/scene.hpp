@@ -165,6 +165,7 @@ struct Scene {
     int max_light_depth = layout::kMaxLightDepth;
     std::vector<lights::RoomLights> room_lights;
     std::shared_ptr<const layout::Layout> lit_layout;
+    double exposure = 0.0;  // the layout's "exposure", EV (View::exposure replaces it)
 };
 
 // Builds the meshes of every room and portal box, and links the portals. The

@@ -121,6 +121,8 @@ std::optional<FieldError> number_problem(const math::View& v) {
     if (v.light_depth && !lim::kLightDepth.contains(*v.light_depth))
         return value_error("light_depth",
                            std::to_string(*v.light_depth) + " is not in " + lim::range_text(lim::kLightDepth));
+    if (v.exposure && !lim::kExposure.contains(*v.exposure))
+        return value_error("exposure", format_number(*v.exposure) + " is not in " + lim::range_text(lim::kExposure));
     if (!std::isfinite(v.time)) return value_error("time", "is not a finite number");
     return {};
 }

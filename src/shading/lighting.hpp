@@ -61,9 +61,11 @@ inline glm::dvec3 light_contribution(const layout::Light& light, const glm::dvec
            (light.intensity * lambert * light_attenuation(d, light.range) * spot_factor(light, to_light)) * factor;
 }
 
-// The final colour: base · dark · (ambient + sum), clamped per channel.
-inline glm::dvec3 lit_color(const glm::dvec3& base, double dark, const glm::dvec3& ambient, const glm::dvec3& sum) {
-    return glm::clamp(base * dark * (ambient + sum), 0.0, 1.0);
+// The final colour: base · dark · (ambient + sum), times the exposure's
+// 2^EV (docs/lighting.md, "Exposure"), clamped per channel.
+inline glm::dvec3 lit_color(const glm::dvec3& base, double dark, const glm::dvec3& ambient, const glm::dvec3& sum,
+                            double exposure = 1.0) {
+    return glm::clamp(base * dark * (ambient + sum) * exposure, 0.0, 1.0);
 }
 
 }  // namespace impossible::shading

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -87,6 +88,12 @@ inline glm::dvec2 room_texture_uv(layout::Face face, const glm::dvec3& p, double
         case layout::Face::PosZ: return glm::dvec2(-p.x, -p.y) / size;
     }
     return glm::dvec2(0.0);
+}
+
+// A surface's colour under the exposure `scale` = 2^EV (docs/lighting.md,
+// "Exposure"): times it, clamped to 0..1; unchanged at 1.
+inline glm::dvec3 exposed(const glm::dvec3& color, double scale) {
+    return scale == 1.0 ? color : glm::clamp(color * scale, 0.0, 1.0);
 }
 
 inline glm::dvec3 shade(const glm::dvec3& base, const glm::dvec3& normal, const glm::dvec3& position, double checker) {

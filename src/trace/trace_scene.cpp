@@ -242,6 +242,7 @@ Result<Scene> prepare_scene(const layout::Layout& layout, const links::PortalLin
     if (const std::optional<Error> error = check_portals(layout)) return *error;
     Scene scene;
     scene.lit = layout.lighting == layout::Lighting::Lights;
+    scene.exposure = layout.exposure;
     // The rasteriser's bound (build_scene.cpp): the same depth and lights.
     const lights::LightBound bound = lights::light_bound(layout, links);
     scene.max_light_depth = bound.depth;

@@ -256,6 +256,7 @@ struct Scene {
     bool lit = false;
     int light_depth = layout::kDefaultLightDepth;
     int max_light_depth = layout::kMaxLightDepth;
+    double exposure = 0.0;  // the layout's "exposure", EV (View::exposure replaces it)
 };
 
 // The dynamic objects of a view: its props at view.time and its hands

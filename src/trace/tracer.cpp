@@ -3,6 +3,7 @@
 #include "trace/tracer.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <glm/geometric.hpp>
 
@@ -75,6 +76,7 @@ struct Tree {
     int budget_fills = 0;                   // portals shown as the fill because the passes were spent
     const FrameObjects* objects = nullptr;  // the frame's dynamic objects
     int light_depth = 0;                    // under Scene::lit: portals a light path may pass
+    double exposure = 1.0;                  // 2^EV: each surface's colour times it before its clamp
 };
 
 // The state of follow's loop along one path: the ray, the colour of the
@@ -118,9 +120,9 @@ dvec3 surface_color(const Scene& scene, const Nearest& n, const dvec3& point, co
     if (scene.lit) {
         const double dark = shading::checker_dark(point, normal, n.checker) ? shading::kCheckerDark : 1.0;
         const dvec3 sum = light_sum(scene, tree.objects, LitPoint{room, point, normal}, tree.light_depth);
-        color = shading::lit_color(base, dark, scene.rooms[room].ambient, sum);
+        color = shading::lit_color(base, dark, scene.rooms[room].ambient, sum, tree.exposure);
     } else {
-        color = shading::shade(base, normal, point, n.checker);
+        color = shading::exposed(shading::shade(base, normal, point, n.checker), tree.exposure);
     }
     return n.source.tint ? color * *n.source.tint : color;
 }
@@ -232,6 +234,7 @@ TraceHit trace_ray(const Scene& scene, const PixelRay& start, int room, const Ra
     tree.objects = objects.placed.empty() ? nullptr : &objects;
     tree.light_depth =
         limits.light_depth >= 0 ? std::min(limits.light_depth, scene.max_light_depth) : scene.light_depth;
+    tree.exposure = std::exp2(limits.exposure.value_or(scene.exposure));
     hit.color = follow(scene, ray, tree, &hit);
     hit.passes = tree.passes;
     hit.budget_fills = tree.budget_fills;

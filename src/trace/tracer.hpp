@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "base/result.hpp"
@@ -55,6 +56,9 @@ struct RayLimits {
     // Under "lighting": "lights": portals a light path may pass
     // (View::light_depth, --light-depth); -1: the layout's light_depth.
     int light_depth = -1;
+    // View::exposure, EV: each surface's colour times 2^EV before its clamp
+    // (docs/lighting.md, "Exposure"); none: the scene's (the layout's).
+    std::optional<double> exposure;
 };
 
 // A ray from an eye: where it starts, its direction (any length but not

@@ -11,9 +11,11 @@
 
 #include <glm/geometric.hpp>
 
+#include "base/format.hpp"
 #include "math/eyes.hpp"
 #include "math/hidden_area.hpp"
 #include "math/projection.hpp"
+#include "math/view_limits.hpp"
 #include "shading/shading.hpp"
 #include "trace/sample_pattern.hpp"
 #include "trace/tracer.hpp"
@@ -61,7 +63,7 @@ struct FrameRays {
 // One ray tree of a frame, its budget's cuts added to `stats`.
 TraceHit trace_counted(const FrameRays& frame, const PixelRay& ray, TraceStats& stats) {
     const TraceDesc& desc = frame.desc;
-    const RayLimits limits{desc.max_depth, desc.max_portal_passes, desc.light_depth.value_or(-1)};
+    const RayLimits limits{desc.max_depth, desc.max_portal_passes, desc.light_depth.value_or(-1), desc.exposure};
     const TraceHit hit = trace_ray(frame.scene, ray, desc.room, limits, frame.objects);
     stats.budget_rays += hit.budget_fills > 0 ? 1 : 0;
     stats.budget_fills += hit.budget_fills;
@@ -98,6 +100,9 @@ std::optional<Error> check_desc(const Scene& scene, const TraceDesc& desc) {
     if (desc.light_depth && (*desc.light_depth < 0 || *desc.light_depth > layout::kMaxLightDepth))
         return Error{"trace: light_depth " + std::to_string(*desc.light_depth) + " is not in 0.." +
                      std::to_string(layout::kMaxLightDepth)};
+    if (desc.exposure && !math::limits::kExposure.contains(*desc.exposure))
+        return Error{"trace: exposure " + format_number(*desc.exposure) + " is not in " +
+                     math::limits::range_text(math::limits::kExposure)};
     if (sample_pattern(desc.samples).empty())
         return Error{"trace: no sample pattern for " + std::to_string(desc.samples) + " samples"};
     return std::nullopt;

@@ -1,6 +1,6 @@
 // glTF materials: base colour factors and textures, samplers, COLOR_0,
 // doubleSided and alphaMode, images in bufferViews, data: URIs and files,
-// and the messages for what is refused (BLEND, missing indices, images that
+// and the messages for what is refused (unknown alpha modes, missing indices, images that
 // do not decode or are too large).
 #include <filesystem>
 #include <fstream>
@@ -238,12 +238,15 @@ TEST_F(GltfMaterial, DoubleSidedAndMaskAreRead) {
     EXPECT_EQ(defaulted.materials[0].alpha_cutoff, 0.5);
 }
 
-TEST_F(GltfMaterial, BlendIsRefusedNamingTheMaterial) {
+TEST_F(GltfMaterial, BlendIsReadAsMaskAtOneHalfAndUnknownModesAreRefused) {
     GltfWriter w = textured(ImageIn::BufferView);
     w.doc["materials"][0]["alphaMode"] = "BLEND";
-    EXPECT_EQ(load_error(w),
-              "has material 0 (\"Tiles\") with alphaMode \"BLEND\", which is not supported (the renderers do not "
-              "blend surfaces); use \"MASK\" with an alphaCutoff, or \"OPAQUE\"");
+    w.doc["materials"][0]["alphaCutoff"] = 0.9;  // not read for BLEND
+    const GltfModel blend = load_ok(w);
+    ASSERT_EQ(blend.materials.size(), 1u);
+    EXPECT_TRUE(blend.materials[0].blend);
+    EXPECT_EQ(blend.materials[0].alpha_mode, impossible::assets::AlphaMode::Mask);
+    EXPECT_EQ(blend.materials[0].alpha_cutoff, 0.5);
     w.doc["materials"][0]["alphaMode"] = "SHINY";
     EXPECT_EQ(load_error(w),
               "has material 0 (\"Tiles\") with alphaMode \"SHINY\"; glTF allows \"OPAQUE\", \"MASK\" and \"BLEND\"");

@@ -256,11 +256,20 @@ TEST(LayoutLights, AGltfPropsLightsAreIgnoredUnderFixed) {
     EXPECT_TRUE(std::get<GltfProp>(l.rooms[0].props[1]).lights.empty());
 }
 
-TEST(LayoutLights, AGltfLightOutsideItsRoomIsAnErrorAtTheProp) {
+TEST(LayoutLights, AGltfLightOutsideItsRoomIsDroppedWithAWarningAtTheProp) {
     // 50 m up, scaled by 2: far above the hall's ceiling.
     const std::string path = lamp("lamp_high.gltf", {{"type", "point"}}, {{"translation", {0, 50, 0}}});
     const std::string text = lit_with_lamp(path);
-    expect_one_error(text, "{ \"gltf\"", "rooms[0].props[1]: the model's light 0 stands at [1, 100.5, 0]");
+    const LoadResult r = load(text);
+    ASSERT_TRUE(r.errors.empty()) << all_messages(r.errors);
+    ASSERT_EQ(r.warnings.size(), 1u) << all_messages(r.warnings);
+    const Pos want = position_of(text, "{ \"gltf\"");
+    EXPECT_EQ(r.warnings[0].line, want.line);
+    EXPECT_EQ(r.warnings[0].column, want.column);
+    EXPECT_EQ(r.warnings[0].message, "rooms[0].props[1]: the model \"" + path +
+                                         "\"'s light 0 (node 1) stands at [1, 100.5, 0], not strictly inside the "
+                                         "room \"hall\": it is dropped");
+    EXPECT_EQ(r.layout->rooms[0].lights.size(), 1u);  // the written one
 }
 
 TEST(LayoutLights, AGltfLightInsideAnotherPropIsAWarningAtItsProp) {

@@ -372,7 +372,7 @@ TEST(LayoutPrismRooms, LightsMustBeStrictlyInsideTheConvexPrism) {
                      "rooms[0].lights[0].position: the light at [2, 2, 2] is not strictly inside its room \"r\"");
 }
 
-TEST(LayoutPrismRooms, AGltfPropsLightMustBeInsideThePrism) {
+TEST(LayoutPrismRooms, AGltfPropsLightOutsideThePrismIsDropped) {
     // A model whose point light sits 0.5 m above its origin.
     GltfWriter w;
     w.node({{"mesh", w.mesh({{"attributes", {{"POSITION", w.vec3(kTriangle)}}}})}});
@@ -389,10 +389,14 @@ TEST(LayoutPrismRooms, AGltfPropsLightMustBeInsideThePrism) {
     const Layout l = expect_valid(prism_layout({room("[1, 0, 1]")}, {}, "[1, 1.6, 1]", lit));
     ASSERT_EQ(l.rooms[0].lights.size(), 1u);
     EXPECT_EQ(l.rooms[0].lights[0].position, glm::dvec3(1, 0.5, 1));
-    // Beyond the slanted wall, inside the bounding box.
-    expect_one_error(prism_layout({room("[2.5, 0, 2.5]")}, {}, "[1, 1.6, 1]", lit), "{ \"gltf\"",
-                     "rooms[0].props[0]: the model's light 0 stands at [2.5, 0.5, 2.5], not strictly inside the room "
-                     "\"r\"");
+    // Beyond the slanted wall, inside the bounding box: dropped, with a warning.
+    const LoadResult beyond = load(prism_layout({room("[2.5, 0, 2.5]")}, {}, "[1, 1.6, 1]", lit));
+    ASSERT_TRUE(beyond.errors.empty()) << all_messages(beyond.errors);
+    EXPECT_TRUE(beyond.layout->rooms[0].lights.empty());
+    ASSERT_EQ(beyond.warnings.size(), 1u) << all_messages(beyond.warnings);
+    EXPECT_EQ(beyond.warnings[0].message, "rooms[0].props[0]: the model \"" + path +
+                                              "\"'s light 0 (node 1) stands at [2.5, 0.5, 2.5], not strictly inside "
+                                              "the room \"r\": it is dropped");
 }
 
 TEST(LayoutPrismRooms, ANonConvexRoomTakesLightsInsideItsFloor) {

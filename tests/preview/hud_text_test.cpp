@@ -28,7 +28,7 @@ TEST(PreviewHudText, ReportsTheFrameAndTheSettings) {
     EXPECT_EQ(hud.lines[1], "frame 16.7 ms (median of 60)   eye 320x240   time 2.5 s");
     EXPECT_EQ(hud.lines[2], "room hall   portal passes 3 drawn, 1 culled");
     EXPECT_EQ(hud.lines[3], "recursion depth 8 (reached 2)   IPD 70 mm");
-    EXPECT_EQ(hud.lines[4], "clip oblique   culling on");
+    EXPECT_EQ(hud.lines[4], "clip oblique   culling on   exposure 0.0 EV");
     EXPECT_EQ(hud.lines[5], "physical head 1.00 1.60 -0.50  yaw 12  pitch -3");
     EXPECT_EQ(hud.lines[6], "click to look around, Esc quits");
     EXPECT_NE(hud.lines[7].find("G , . hand"), std::string::npos);

@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "preview/hud_text.hpp"
 #include "preview/keys.hpp"
 
 namespace impossible::preview {
@@ -85,6 +86,24 @@ TEST(PreviewKeys, LTogglesTheShadows) {
     EXPECT_FALSE(o.frame.shadows);
     apply_actions({Action::ToggleShadows}, false, o);
     EXPECT_TRUE(o.frame.shadows);
+}
+
+TEST(PreviewKeys, NineAndZeroStepTheExposureFromTheLayoutsWithinItsRange) {
+    PreviewOptions o;
+    EXPECT_FALSE(o.frame.exposure.has_value());
+    apply_actions({Action::ExposureUp}, false, o, 1.0);  // from the layout's 1 EV
+    EXPECT_EQ(o.frame.exposure, 1.5);
+    apply_actions({Action::ExposureDown, Action::ExposureDown, Action::ExposureDown}, false, o, 1.0);
+    EXPECT_EQ(o.frame.exposure, 0.0);
+    o.frame.exposure = 19.8;
+    apply_actions({Action::ExposureUp}, false, o);
+    EXPECT_EQ(o.frame.exposure, 20.0);
+    HudFacts f;
+    f.exposure = -1.5;
+    EXPECT_NE(hud_text(o, f, {}).lines[4].find("exposure -1.5 EV"), std::string::npos);
+    f.exposure = 2.0;
+    EXPECT_NE(hud_text(o, f, {}).lines[4].find("exposure +2.0 EV"), std::string::npos);
+    EXPECT_NE(hud_text(o, f, {}).lines.back().find("9 0 exposure"), std::string::npos);
 }
 
 TEST(PreviewKeys, TheHeldRightHandIsInFrontOfTheHeadTurnedAsIt) {

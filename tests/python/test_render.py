@@ -224,3 +224,20 @@ def test_the_door_rules_of_issue_36():
     across = [method(pose=(0, 1.6, 0.02, -90, -60, 0), room="hall")["ids"] for method in (renderer.render, renderer.trace)]
     assert (across[0] == 2).sum() > 1000 and (across[1] == 2).sum() > 1000
     assert (across[0] != across[1]).sum() <= 2
+
+
+@pytest.mark.parametrize("ev", [-2.0, 2.0])
+def test_exposure_as_the_cli(tmp_path, ev):
+    """exposure= exposes what --exposure exposes (rasteriser and tracer); a bad value raises ValueError."""
+    path = SOURCE_DIR / "layouts" / "lamp_hall.json"
+    options = ["--exposure", str(ev)]
+    color, ids, _ = cli_images(tmp_path, "render", path, *options)
+    renderer = impossible.Renderer(impossible.load(path), size=SIZE)
+    frame = renderer.render(exposure=ev)
+    assert_frame(frame, color, ids)
+    assert frame["color"].tobytes() != renderer.render()["color"].tobytes()
+    color, ids, _ = cli_images(tmp_path, "trace", path, *options)
+    assert_frame(renderer.trace(exposure=ev), color, ids)
+    assert_frame(impossible.trace(impossible.load(path), size=SIZE, exposure=ev), color, ids)
+    with pytest.raises(ValueError, match="exposure"):
+        renderer.render(exposure=21)

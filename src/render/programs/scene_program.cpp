@@ -105,6 +105,8 @@ Result<SceneProgram> link_scene_program(const SceneVariant& variant, const std::
     if (scene_fragment) {
         p.cell_id = u.required("u_cell_id");
         p.unshaded = u.required("u_unshaded");
+        p.exposure = u.required("u_exposure");
+        glProgramUniform1f(name, p.exposure, 1.0f);
     } else {
         p.target_size = u.required("u_target_size");
         glProgramUniform1i(name, u.required("u_color_texture"), 0);

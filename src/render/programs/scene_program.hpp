@@ -27,6 +27,7 @@ struct SceneProgram {
     GLint single_eye = -1;      // int, two-pass stereo only
     GLint cell_id = -1;         // uint, scene.frag.glsl only
     GLint unshaded = -1;        // bool, scene.frag.glsl only
+    GLint exposure = -1;        // float 2^EV, scene.frag.glsl only (set each frame; 1 when built)
     GLint textured = -1;        // bool: multiply by the texture on kSceneTextureUnit (materials only)
     GLint alpha_cutoff = -1;    // float: drop fragments whose alpha is below it; < 0: opaque (materials only)
     GLint mip_level0 = -1;      // bool: textures at mip level 0 only (materials only)
