@@ -138,6 +138,11 @@ void Checker::warning(const Path& at, std::string_view message) {
     warnings_.push_back({offset_of(at), with_name(at, message)});
 }
 
+void Checker::loud_warning(const Path& at, std::string_view message) {
+    warning(at, message);
+    loud_warnings_.push_back(warnings_.back());
+}
+
 void Checker::error_at_offset(std::size_t offset, std::string_view message) {
     errors_.push_back({offset, std::string(message)});
 }
@@ -172,6 +177,7 @@ std::vector<Diagnostic> Checker::finish(std::vector<Pending> pending) const {
 
 std::vector<Diagnostic> Checker::take_errors() const { return finish(errors_); }
 std::vector<Diagnostic> Checker::take_warnings() const { return finish(warnings_); }
+std::vector<Diagnostic> Checker::take_loud_warnings() const { return finish(loud_warnings_); }
 
 bool Checker::check_fields(const Path& at, const json& object, std::initializer_list<const char*> known,
                            std::initializer_list<const char*> required) {

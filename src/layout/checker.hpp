@@ -50,6 +50,9 @@ public:
     void error(const Path& at, std::string_view message);         // at the value
     void error_at_key(const Path& at, std::string_view message);  // at its key
     void warning(const Path& at, std::string_view message);
+    // A warning that every command loading the layout prints, not only
+    // validate (LoadResult::loud_warnings): one that changes what is drawn.
+    void loud_warning(const Path& at, std::string_view message);
     void error_at_offset(std::size_t offset, std::string_view message);
 
     // Unknown fields (other than "_comments") are errors at their key;
@@ -73,6 +76,7 @@ public:
     // The diagnostics with line and column, each list sorted in file order.
     std::vector<Diagnostic> take_errors() const;
     std::vector<Diagnostic> take_warnings() const;
+    std::vector<Diagnostic> take_loud_warnings() const;
 
     std::size_t offset_of(const Path& at) const;  // of the value, or its nearest ancestor
 
@@ -87,6 +91,7 @@ private:
     mutable std::optional<ValuePositions> positions_;  // made for the first problem (json_doc.hpp)
     std::vector<Pending> errors_;
     std::vector<Pending> warnings_;
+    std::vector<Pending> loud_warnings_;  // also in warnings_
 
     const ValuePositions& positions() const;
     std::size_t key_offset_of(const Path& at) const;
