@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <unordered_map>
 #include <variant>
 
@@ -87,20 +88,21 @@ void add_windows(Drawing& d, const layout::Layout& layout, const Report& r) {
 // Labels sit at their room's centre, moved down 0.3 m at a time until none
 // is closer than 0.25 m. Placed labels are that far apart, so a grid of
 // 0.25 m cells holds a few each and a test looks at nine cells; a label
-// still crowded after kMaxLabelMoves moves (rooms stacked on one spot)
-// stays at its centre and is not waited for by later ones.
+// still crowded after kMaxLabelMoves moves (rooms stacked on one spot) is
+// left out: it would be drawn over the names already there, unreadable,
+// and each name is dozens of rectangles in the PNG (10,000 rooms on one
+// spot took 320 MB instead of 140). The legend still names the first rooms.
 constexpr int kMaxLabelMoves = 32;
 
 class LabelSpots {
 public:
-    glm::dvec2 place(glm::dvec2 at) {
-        const glm::dvec2 centre = at;
+    std::optional<glm::dvec2> place(glm::dvec2 at) {
         for (int move = 0; move <= kMaxLabelMoves; ++move, at.y += 0.3) {
             if (crowded(at)) continue;
             cells_[key(cell(at.x), cell(at.y))].push_back(at);
             return at;
         }
-        return centre;
+        return std::nullopt;
     }
 
 private:
@@ -154,9 +156,9 @@ glm::dvec2 label_spot(const math::Polygon2& floor) {
 void add_labels(Drawing& d, const layout::Layout& layout, const Report& r) {
     LabelSpots spots;
     for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
-        const glm::dvec2 at = label_spot(r.floors[i]);
-        PlanShape s =
-            fill("labels", layout.rooms[i].id, {spots.place(at)}, room_colour(static_cast<int>(i), Tone::Dark));
+        const std::optional<glm::dvec2> at = spots.place(label_spot(r.floors[i]));
+        if (!at) continue;
+        PlanShape s = fill("labels", layout.rooms[i].id, {*at}, room_colour(static_cast<int>(i), Tone::Dark));
         s.kind = PlanShape::Kind::Text;
         s.text = layout.rooms[i].id + (r.placement.rooms[i].reachable ? "" : " (unreachable)");
         d.shapes.push_back(s);

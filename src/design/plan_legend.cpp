@@ -23,9 +23,7 @@ constexpr Rgba kInk{0.2, 0.2, 0.2, 1.0};
 // Text of `pixels` font size is this wide (the segment font, as the PNG draws it).
 double text_pixels(const std::string& text, double pixels) { return image::text_width(text) * pixels / 10.0; }
 
-double entry_width(const LegendEntry& e) {
-    return kSampleWidth + 6.0 + text_pixels(e.text, kLegendPixels) + 16.0;
-}
+double entry_width(const LegendEntry& e) { return kSampleWidth + 6.0 + text_pixels(e.text, kLegendPixels) + 16.0; }
 
 // Where each entry goes: its left edge and row, filling rows left to right.
 struct Placed {
@@ -120,22 +118,26 @@ void add_legend(Drawing& d, const layout::Layout& layout, const Report& r, bool 
                             layout.rooms[i].id + (r.placement.rooms[i].reachable ? "" : " (unreachable, dashed)")});
     }
     if (layout.rooms.size() > rooms)
-        d.legend.push_back({Sample::Swatch, {1, 1, 1, 1}, {0.6, 0.6, 0.6, 1}, -1.0,
+        d.legend.push_back({Sample::Swatch,
+                            {1, 1, 1, 1},
+                            {0.6, 0.6, 0.6, 1},
+                            -1.0,
                             "... and " + std::to_string(layout.rooms.size() - rooms) + " more rooms"});
     const auto has = [&](const char* group) {
         return std::any_of(d.shapes.begin(), d.shapes.end(), [&](const PlanShape& s) { return s.group == group; });
     };
-    if (layout.play_area)
-        d.legend.push_back({Sample::Line, {}, {0.15, 0.45, 0.2, 1.0}, -1.0, "play area"});
-    const bool noticed = std::any_of(r.overlaps.begin(), r.overlaps.end(), [](const Overlap& o) { return o.noticeable; });
+    if (layout.play_area) d.legend.push_back({Sample::Line, {}, {0.15, 0.45, 0.2, 1.0}, -1.0, "play area"});
+    const bool noticed =
+        std::any_of(r.overlaps.begin(), r.overlaps.end(), [](const Overlap& o) { return o.noticeable; });
     if (!r.overlaps.empty())
         d.legend.push_back({Sample::Swatch, {0.1, 0.1, 0.1, 0.2}, {0.5, 0.5, 0.5, 1.0}, -1.0, "shared floor"});
     if (noticed)
-        d.legend.push_back({Sample::Swatch, {0.85, 0.1, 0.1, 0.25}, {0.85, 0.1, 0.1, 1.0}, -1.0,
-                            "shared floor likely noticed"});
+        d.legend.push_back(
+            {Sample::Swatch, {0.85, 0.1, 0.1, 0.25}, {0.85, 0.1, 0.1, 1.0}, -1.0, "shared floor likely noticed"});
     if (has("props")) d.legend.push_back({Sample::Swatch, {0.4, 0.4, 0.4, 0.55}, {0.4, 0.4, 0.4, 0.55}, -1.0, "prop"});
     if (has("doors"))
-        d.legend.push_back({Sample::Line, {}, {0.3, 0.3, 0.3, 1.0}, -1.0, "door (arrow: the way through; dashed: to its partner)"});
+        d.legend.push_back(
+            {Sample::Line, {}, {0.3, 0.3, 0.3, 1.0}, -1.0, "door (arrow: the way through; dashed: to its partner)"});
     if (has("mirrors")) d.legend.push_back({Sample::Line, {}, {0.55, 0.62, 0.70, 1.0}, -1.0, "mirror"});
     if (has("windows")) d.legend.push_back({Sample::Line, {}, {0.20, 0.55, 0.90, 1.0}, -1.0, "window"});
     if (has("motion")) d.legend.push_back({Sample::Dashed, {}, kMotionColour, -1.0, "moving prop's path"});

@@ -137,7 +137,8 @@ void add_lights(Drawing& d, const layout::Layout& layout, const Report& r) {
             }
             if (!light.spot) continue;
             const glm::dvec2 dir = to_floor(m, light.position + light.spot->direction) - at;
-            if (glm::length(dir) > 1e-3) arrow(d, "lights", name, at, at + glm::normalize(dir) * 0.4, kLampEdge, 0.02, false);
+            if (glm::length(dir) > 1e-3)
+                arrow(d, "lights", name, at, at + glm::normalize(dir) * 0.4, kLampEdge, 0.02, false);
         }
 }
 

@@ -6,6 +6,7 @@
 // a character advances about 6 units.
 #pragma once
 
+#include <cstddef>
 #include <string_view>
 #include <vector>
 
@@ -15,7 +16,7 @@ struct TextRect {
     float x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // font units, from the line's top left
 };
 
-inline constexpr float kTextBaseline = 7.0f;  // font units below the line's top
+inline constexpr float kTextBaseline = 7.0f;       // font units below the line's top
 inline constexpr std::size_t kMaxTextChars = 400;  // longer text is cut
 
 std::vector<TextRect> text_rects(std::string_view text);

@@ -101,8 +101,7 @@ TEST(DesignerFindings, ADoorFacingOutOfItsRoomIsOneWarningLineInEveryCommand) {
     const Ran validate = run({"validate", file});
     EXPECT_EQ(validate.status, 0);
     EXPECT_EQ(validate.err.find(warning), 0u) << validate.err;
-    const Ran trace =
-        run({"trace", file, "--size", "32x18", "--out", (dir.path() / "t.png").string()});
+    const Ran trace = run({"trace", file, "--size", "32x18", "--out", (dir.path() / "t.png").string()});
     EXPECT_EQ(trace.status, 0) << trace.err;
     EXPECT_NE(trace.err.find(warning), std::string::npos) << trace.err;
     const Ran plan = run({"plan", file, "--out", (dir.path() / "p.svg").string()});

@@ -86,7 +86,8 @@ TEST(BlockedDoors, TheTourSaysWhyItMissedTheRoomsBehind) {
     ASSERT_EQ(tour->why.size(), 2u);
     EXPECT_EQ(l.rooms[tour->missed[0]].id, "annex");
     EXPECT_EQ(tour->why[0], "door \"hall_east\" is blocked by rooms[0].props[0] (table)");
-    EXPECT_EQ(tour->why[1], "it lies beyond room \"annex\": door \"hall_east\" is blocked by rooms[0].props[0] (table)");
+    EXPECT_EQ(tour->why[1],
+              "it lies beyond room \"annex\": door \"hall_east\" is blocked by rooms[0].props[0] (table)");
 }
 
 TEST(BlockedDoors, AMovingCrateParkedInFrontOfADoorBlocksItWhereItRests) {

@@ -76,14 +76,15 @@ TEST(PlanLegend, ThePngHasTheTitleTheNamesAndTheLegend) {
     const image::Pixels image = design::plan_raster(d, k);
     EXPECT_EQ(image.height, size.height);
     const int floor_bottom = static_cast<int>(size.legend_top);
-    EXPECT_GT(size.height, floor_bottom + 15);  // a legend band below the floor
-    EXPECT_GT(dark_pixels(image, 0, 28), 100);  // the title
+    EXPECT_GT(size.height, floor_bottom + 15);                      // a legend band below the floor
+    EXPECT_GT(dark_pixels(image, 0, 28), 100);                      // the title
     EXPECT_GT(dark_pixels(image, floor_bottom, size.height), 200);  // the legend's samples and text
     // The names: the same drawing without its text is lighter where they are.
     design::Drawing bare = d;
-    bare.shapes.erase(std::remove_if(bare.shapes.begin(), bare.shapes.end(),
-                                     [](const design::PlanShape& s) { return s.kind == design::PlanShape::Kind::Text; }),
-                      bare.shapes.end());
+    bare.shapes.erase(
+        std::remove_if(bare.shapes.begin(), bare.shapes.end(),
+                       [](const design::PlanShape& s) { return s.kind == design::PlanShape::Kind::Text; }),
+        bare.shapes.end());
     const image::Pixels without = design::plan_raster(bare, k);
     ASSERT_EQ(without.data.size(), image.data.size());
     int changed = 0;
@@ -91,7 +92,8 @@ TEST(PlanLegend, ThePngHasTheTitleTheNamesAndTheLegend) {
     EXPECT_GT(changed, 4 * 60);  // four names of 4 to 7 letters
     // The SVG has every legend line as text, as the PNG draws it.
     const std::string svg = design::plan_svg(d, k);
-    for (const design::LegendEntry& e : d.legend) EXPECT_NE(svg.find(">" + e.text + "</text>"), std::string::npos) << e.text;
+    for (const design::LegendEntry& e : d.legend)
+        EXPECT_NE(svg.find(">" + e.text + "</text>"), std::string::npos) << e.text;
     EXPECT_NE(svg.find("height=\"" + std::to_string(size.height) + ".00\""), std::string::npos);
 }
 

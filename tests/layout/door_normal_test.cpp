@@ -41,8 +41,8 @@ TEST(LayoutDoorNormal, ADoorInAWallFacingOutIsALoudWarningAtItsNormal) {
 }
 
 TEST(LayoutDoorNormal, ADoorFacingIntoItsRoomOrStandingFreeIsNoWarning) {
-    for (const auto& [center, normal] : {std::pair{"[2, 1.1, 0]", "[-1, 0, 0]"},
-                                         std::pair{"[0, 1.1, 0]", "[1, 0, 0]"}}) {
+    for (const auto& [center, normal] :
+         {std::pair{"[2, 1.1, 0]", "[-1, 0, 0]"}, std::pair{"[0, 1.1, 0]", "[1, 0, 0]"}}) {
         const LoadResult r = load(with_door(center, normal));
         ASSERT_TRUE(r.errors.empty()) << all_messages(r.errors);
         EXPECT_TRUE(r.warnings.empty()) << center << " " << normal << ": " << all_messages(r.warnings);
