@@ -71,7 +71,7 @@ int run_plan_command(const Args& args, std::ostream& out, std::ostream& err) {
     if (o.path) outputs.input("--path", *o.path);
     outputs.output("--out", o.out);
     if (o.png) outputs.output("--png", *o.png);
-    const layout::Layout layout = load_layout_or_default(parsed.positional[0], outputs);
+    const layout::Layout layout = load_layout_or_default(parsed.positional[0], outputs, err);
     std::vector<math::HeadPose> path;
     if (o.path) path = value_or_throw(layout::read_path_file(*o.path));
     const design::Report report = design::make_report(layout);

@@ -78,7 +78,7 @@ int run_tour_command(const Args& args, std::ostream& out, std::ostream& err) {
     CommandOutputs outputs;
     outputs.input("the layout", parsed.positional[0]);
     outputs.output("--out", o.out);
-    const layout::Layout layout = load_layout_or_default(parsed.positional[0], outputs);
+    const layout::Layout layout = load_layout_or_default(parsed.positional[0], outputs, err);
     const design::Tour tour = value_or_throw(design::plan_tour(layout, o.tour));
     const std::size_t reachable = tour.visited.size() + tour.missed.size();
     const std::string report = summary(layout, tour, reachable);
@@ -86,7 +86,9 @@ int run_tour_command(const Args& args, std::ostream& out, std::ostream& err) {
     outputs.set(o.out, design::path_text(tour.poses, header));
     outputs.commit();
     out << report;
-    for (const int r : tour.missed) err << "warning: the tour could not reach room \"" << layout.rooms[r].id << "\"\n";
+    for (std::size_t i = 0; i < tour.missed.size(); ++i)
+        err << "warning: the tour could not reach room \"" << layout.rooms[tour.missed[i]].id << "\": " << tour.why[i]
+            << "\n";
     return kExitOk;
 }
 

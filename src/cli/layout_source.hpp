@@ -1,6 +1,7 @@
 // Where a command's layout comes from: a file, or the built-in default.
 #pragma once
 
+#include <iosfwd>
 #include <optional>
 #include <string>
 
@@ -21,6 +22,12 @@ layout::Layout load_layout_or_default(const std::optional<std::string>& path);
 // (textures, glTF models and their buffers and images) as an input, which
 // throws UsageError, before any work, when an output names one of them.
 layout::Layout load_layout_or_default(const std::optional<std::string>& path, CommandOutputs& outputs);
+
+// The same, printing the loader's loud warnings (layout::LoadResult, e.g. a
+// door whose normal points out of its room) to `warnings` as
+// "warning: FILE:LINE:COLUMN: field: message" lines.
+layout::Layout load_layout_or_default(const std::optional<std::string>& path, CommandOutputs& outputs,
+                                      std::ostream& warnings);
 
 // Declares the files `layout` was read from, but the layout file itself, as
 // inputs of `outputs`.

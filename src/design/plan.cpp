@@ -1,63 +1,27 @@
 // The plan's shapes; see plan.hpp.
 #include "design/plan.hpp"
 
+#include "design/plan_parts.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <unordered_map>
 #include <variant>
 
 namespace impossible::design {
 namespace {
 
-Rgba hue(int index, double s, double v, double a) {
-    double h = 0.13 + 0.618034 * index;
-    h = (h - std::floor(h)) * 6.0;
-    const int k = static_cast<int>(h) % 6;
-    const double f = h - std::floor(h), p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
-    const double c[6][3] = {{v, t, p}, {q, v, p}, {p, v, t}, {p, q, v}, {t, p, v}, {v, p, q}};
-    return {c[k][0], c[k][1], c[k][2], a};
-}
-
-PlanShape fill(const std::string& group, const std::string& name, math::Polygon2 points, Rgba colour) {
-    PlanShape s;
-    s.group = group, s.name = name, s.points = std::move(points), s.colour = colour;
-    return s;
-}
-
-PlanShape stroke(const std::string& group, const std::string& name, math::Polygon2 points, Rgba colour, double width,
-                 bool closed = false, bool dashed = false) {
-    PlanShape s = fill(group, name, std::move(points), colour);
-    s.kind = PlanShape::Kind::Stroke, s.width = width, s.closed = closed, s.dashed = dashed;
-    return s;
-}
-
-// A line with a filled arrowhead at `to`.
-void arrow(Drawing& d, const std::string& group, const std::string& name, glm::dvec2 from, glm::dvec2 to, Rgba c,
-           double width, bool dashed) {
-    const double length = glm::distance(from, to);
-    if (length < 1e-6) return;
-    const glm::dvec2 dir = (to - from) / length, side{-dir.y, dir.x};
-    const double head = std::min(0.18, 0.6 * length);
-    d.shapes.push_back(stroke(group, name, {from, to - dir * head}, c, width, false, dashed));
-    d.shapes.push_back(
-        fill(group, name, {to, to - dir * head + side * (0.45 * head), to - dir * head - side * (0.45 * head)}, c));
-}
-
-math::Polygon2 circle(glm::dvec2 c, double r) {
-    math::Polygon2 out;
-    for (int i = 0; i < 24; ++i)
-        out.push_back(c + r * glm::dvec2(std::cos(i * math::kPi / 12), std::sin(i * math::kPi / 12)));
-    return out;
-}
+using namespace plan_parts;
 
 void add_doors(Drawing& d, const layout::Layout& layout, const Report& r) {
     for (std::size_t i = 0; i < layout.portals.size(); ++i) {
         const layout::Portal& p = layout.portals[i];
         if (p.kind != layout::PortalKind::Door) continue;
         const math::dmat4& m = r.placement.rooms[p.room].to_physical;
-        const Rgba c = hue(p.room, 0.8, 0.55, 1.0);
+        const Rgba c = room_colour(p.room, Tone::Line);
         const auto line = door_line(p, m);
         d.shapes.push_back(stroke("doors", p.id, {line[0], line[1]}, c, 0.07));
         const glm::dvec2 centre = 0.5 * (line[0] + line[1]);
@@ -124,20 +88,21 @@ void add_windows(Drawing& d, const layout::Layout& layout, const Report& r) {
 // Labels sit at their room's centre, moved down 0.3 m at a time until none
 // is closer than 0.25 m. Placed labels are that far apart, so a grid of
 // 0.25 m cells holds a few each and a test looks at nine cells; a label
-// still crowded after kMaxLabelMoves moves (rooms stacked on one spot)
-// stays at its centre and is not waited for by later ones.
+// still crowded after kMaxLabelMoves moves (rooms stacked on one spot) is
+// left out: it would be drawn over the names already there, unreadable,
+// and each name is dozens of rectangles in the PNG (10,000 rooms on one
+// spot took 320 MB instead of 140). The legend still names the first rooms.
 constexpr int kMaxLabelMoves = 32;
 
 class LabelSpots {
 public:
-    glm::dvec2 place(glm::dvec2 at) {
-        const glm::dvec2 centre = at;
+    std::optional<glm::dvec2> place(glm::dvec2 at) {
         for (int move = 0; move <= kMaxLabelMoves; ++move, at.y += 0.3) {
             if (crowded(at)) continue;
             cells_[key(cell(at.x), cell(at.y))].push_back(at);
             return at;
         }
-        return centre;
+        return std::nullopt;
     }
 
 private:
@@ -191,8 +156,9 @@ glm::dvec2 label_spot(const math::Polygon2& floor) {
 void add_labels(Drawing& d, const layout::Layout& layout, const Report& r) {
     LabelSpots spots;
     for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
-        const glm::dvec2 at = label_spot(r.floors[i]);
-        PlanShape s = fill("labels", layout.rooms[i].id, {spots.place(at)}, hue(static_cast<int>(i), 0.9, 0.35, 1.0));
+        const std::optional<glm::dvec2> at = spots.place(label_spot(r.floors[i]));
+        if (!at) continue;
+        PlanShape s = fill("labels", layout.rooms[i].id, {*at}, room_colour(static_cast<int>(i), Tone::Dark));
         s.kind = PlanShape::Kind::Text;
         s.text = layout.rooms[i].id + (r.placement.rooms[i].reachable ? "" : " (unreachable)");
         d.shapes.push_back(s);
@@ -208,10 +174,11 @@ void add_floor(Drawing& d, const layout::Layout& layout, const Report& r) {
     for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
         const bool reachable = r.placement.rooms[i].reachable;
         const int h = static_cast<int>(i);
-        d.shapes.push_back(fill("rooms", layout.rooms[i].id, r.floors[i], hue(h, 0.6, 0.9, 0.22)));
+        d.shapes.push_back(fill("rooms", layout.rooms[i].id, r.floors[i], room_colour(h, Tone::Fill)));
         d.shapes.push_back(
-            stroke("rooms", layout.rooms[i].id, r.floors[i], hue(h, 0.8, 0.6, 1.0), 0.03, true, !reachable));
+            stroke("rooms", layout.rooms[i].id, r.floors[i], room_colour(h, Tone::Line), 0.03, true, !reachable));
     }
+    add_hatching(d, layout, r);
     for (const Overlap& o : r.overlaps) {
         // Light, so that several pairs stacked on one spot still show the rooms under them.
         const Rgba c = o.noticeable ? Rgba{0.85, 0.1, 0.1, 0.08} : Rgba{0.1, 0.1, 0.1, 0.08};
@@ -226,7 +193,7 @@ void add_floor(Drawing& d, const layout::Layout& layout, const Report& r) {
                 footprint.max = box->max;
                 d.shapes.push_back(fill("props", layout.rooms[i].id,
                                         physical_floor(footprint, r.placement.rooms[i].to_physical),
-                                        hue(static_cast<int>(i), 0.7, 0.5, 0.55)));
+                                        room_colour(static_cast<int>(i), Tone::Prop)));
             }
 }
 
@@ -255,6 +222,8 @@ Drawing plan_drawing(const layout::Layout& layout, const Report& r, const std::v
     add_doors(d, layout, r);
     add_mirrors(d, layout, r);
     add_windows(d, layout, r);
+    add_motions(d, layout, r);
+    add_lights(d, layout, r);
     const glm::dvec2 s{layout.start.position.x, layout.start.position.z};
     const double yaw = math::radians(layout.start.yaw_deg);
     d.shapes.push_back(fill("start", "start", circle(s, 0.12), {0.85, 0.1, 0.1, 1.0}));
@@ -266,6 +235,7 @@ Drawing plan_drawing(const layout::Layout& layout, const Report& r, const std::v
         d.shapes.push_back(stroke("path", "walk", line, {0.1, 0.25, 0.85, 0.85}, 0.03));
     }
     add_labels(d, layout, r);
+    add_legend(d, layout, r, !path.empty());
     return d;
 }
 

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <utility>
 
+#include "image/text_rects.hpp"
+
 namespace impossible::design {
 namespace {
 
@@ -70,6 +72,18 @@ void add_stroke(Pieces& out, const PlanShape& s, double k, double dash_on, doubl
     }
 }
 
+// A line of text, its baseline at `at` (canvas pixels), `pixels` its font
+// size: the segment font's rectangles (image/text_rects.hpp).
+void add_text(Pieces& out, const PlanShape& s, glm::dvec2 at, double pixels, int height) {
+    const double scale = pixels / 10.0;  // a capital, 7 units, is 0.7 of the font size
+    const double width = std::max(0.0, static_cast<double>(image::text_width(s.text)) - 1.0) * scale;
+    const glm::dvec2 origin{s.centred ? at.x - 0.5 * width : at.x, at.y - image::kTextBaseline * scale};
+    for (const image::TextRect& r : image::text_rects(s.text)) {
+        const glm::dvec2 lo = origin + glm::dvec2(r.x0, r.y0) * scale, hi = origin + glm::dvec2(r.x1, r.y1) * scale;
+        add_polygon(out, {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}}, s.colour, height);
+    }
+}
+
 }  // namespace
 
 void DashRun::quad(std::size_t k, glm::dvec2* corners) const {
@@ -112,13 +126,25 @@ Pieces plan_pieces(const Drawing& d, double k, int height) {
         return glm::dvec2((p.x - d.min.x) * k, (p.y - d.min.y) * k + kPlanTitle * kPlanSuper);
     };
     for (const PlanShape& s : d.shapes) {
-        if (s.kind == PlanShape::Kind::Text) continue;
         PlanShape mapped = s;
         for (glm::dvec2& p : mapped.points) p = px(p);
-        if (s.kind == PlanShape::Kind::Fill) {
+        if (s.kind == PlanShape::Kind::Text) {
+            add_text(out, mapped, mapped.points.front(), label_pixels(s, k / kPlanSuper) * kPlanSuper, height);
+        } else if (s.kind == PlanShape::Kind::Fill) {
             add_polygon(out, mapped.points, s.colour, height);
         } else {
             add_stroke(out, mapped, k, 0.12 * k, 0.08 * k, height);
+        }
+    }
+    // The title and the legend, in the picture's pixels.
+    for (PlanShape s : plan_overlay(d, k / kPlanSuper)) {
+        for (glm::dvec2& p : s.points) p *= double(kPlanSuper);
+        if (s.kind == PlanShape::Kind::Text) {
+            add_text(out, s, s.points.front(), s.size * kPlanSuper, height);
+        } else if (s.kind == PlanShape::Kind::Fill) {
+            add_polygon(out, s.points, s.colour, height);
+        } else {
+            add_stroke(out, s, kPlanSuper, 5.0 * kPlanSuper, 3.0 * kPlanSuper, height);
         }
     }
     return out;

@@ -16,7 +16,7 @@
 namespace impossible::design {
 
 inline constexpr int kPlanSuper = 3;        // canvas pixels per image pixel, each way
-inline constexpr double kPlanTitle = 28.0;  // image pixels above the floor for the title, as plan_svg.cpp leaves
+inline constexpr double kPlanTitle = 28.0;  // image pixels above the floor for the title (plan_size)
 
 // The dashes of one dashed segment from `a` along `dir`.
 struct DashRun {

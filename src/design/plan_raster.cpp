@@ -2,8 +2,8 @@
 // filled polygons (design/plan_pieces.hpp: a stroke is a quad per segment
 // plus round joins, a dashed segment a run of dashes), drawn
 // with the even-odd rule (design/scanline.hpp) into an image 3 × 3 times
-// larger, blended with each shape's alpha, then averaged down. Text is left
-// out.
+// larger, blended with each shape's alpha, then averaged down. Text is
+// drawn as the rectangles of a segment font (image/text_rects.hpp).
 //
 // The larger image is never held whole: rows are drawn from the top, three
 // at a time (one row of the output), with the polygons that reach them in
@@ -182,8 +182,9 @@ private:
 image::Pixels plan_raster(const Drawing& d, double k_out) {
     image::Pixels image;
     image.channels = 3;
-    image.width = static_cast<int>(std::ceil((d.max.x - d.min.x) * k_out));
-    image.height = static_cast<int>(std::ceil((d.max.y - d.min.y) * k_out + kPlanTitle));
+    const PlanSize size = plan_size(d, k_out);
+    image.width = size.width;
+    image.height = size.height;
     const int w = image.width * kPlanSuper, h = image.height * kPlanSuper;
     const Pieces pieces = plan_pieces(d, k_out * kPlanSuper, h);
     RowSweep sweep(pieces, h);

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "base/user_text.hpp"
+#include "design/room_grid.hpp"
 #include "lights/light_bound.hpp"
 #include "lights/light_images.hpp"
 
@@ -89,6 +90,22 @@ void find_outside(const layout::Layout& layout, Report& r) {
     }
 }
 
+void find_blocked(const layout::Layout& layout, Report& r) {
+    const GridOptions grid;
+    r.blocked = blocked_doors(layout, room_obstacles(layout, r.placement.links, grid.head_height), grid.body_radius);
+    r.behind_blocked.assign(r.blocked.size(), {});
+    if (r.blocked.empty()) return;
+    for (const int room : r.placement.order)
+        if (const BlockedDoor* b = blocked_on_way(layout, r.placement, r.blocked, room))
+            r.behind_blocked[static_cast<std::size_t>(b - r.blocked.data())].push_back(room);
+}
+
+// "door "east" is blocked by rooms[0].props[2] (table)".
+std::string blocked_text(const layout::Layout& layout, const BlockedDoor& b) {
+    return "door \"" + layout.portals[static_cast<std::size_t>(b.portal)].id + "\" is blocked by " +
+           obstacle_name(layout, b.by);
+}
+
 void write_findings(const layout::Layout& layout, Report& r) {
     for (const int room : r.unreachable)
         r.findings.push_back("no door leads from the start to room \"" + layout.rooms[room].id + "\"");
@@ -108,6 +125,14 @@ void write_findings(const layout::Layout& layout, Report& r) {
                              " m2 outside the play area");
     for (const int p : r.doors_outside)
         r.findings.push_back("door \"" + layout.portals[p].id + "\" is not inside the play area");
+    for (std::size_t i = 0; i < r.blocked.size(); ++i) {
+        std::string line = blocked_text(layout, r.blocked[i]) + ": nobody walks through it";
+        if (!r.behind_blocked[i].empty())
+            line += ", so no tour reaches room" + std::string(r.behind_blocked[i].size() > 1 ? "s" : "");
+        for (std::size_t k = 0; k < r.behind_blocked[i].size(); ++k)
+            line += (k ? ", \"" : " \"") + layout.rooms[static_cast<std::size_t>(r.behind_blocked[i][k])].id + "\"";
+        r.findings.push_back(line);
+    }
     for (std::size_t i = 0; i < r.placement.rooms.size(); ++i)
         if (r.placement.rooms[i].inconsistent)
             r.findings.push_back("room \"" + layout.rooms[i].id +
@@ -139,6 +164,7 @@ Report make_report(const layout::Layout& layout) {
     r.overlap_pairs = overlaps.pairs;
     r.overlaps_exact = overlaps.exact;
     find_outside(layout, r);
+    find_blocked(layout, r);
     write_findings(layout, r);
     count_lights(layout, r);
     return r;
@@ -150,6 +176,14 @@ std::string report_text(const layout::Layout& layout, const Report& r) {
     out += "reachable rooms: " + std::to_string(r.placement.order.size()) + " of " +
            std::to_string(layout.rooms.size()) + "\n";
     out += "unreachable rooms:" + ids(layout, r.unreachable) + "\n";
+    if (!r.blocked.empty()) {  // only then, so that other layouts' reports stay as they were
+        std::vector<int> behind;
+        for (std::size_t i = 0; i < r.blocked.size(); ++i) {
+            out += "  " + blocked_text(layout, r.blocked[i]) + "\n";
+            behind.insert(behind.end(), r.behind_blocked[i].begin(), r.behind_blocked[i].end());
+        }
+        out += "rooms behind blocked doors:" + ids(layout, behind) + "\n";
+    }
     out += "overlaps (% of the smaller floor; unnoticed up to " + fixed(kSmallRoomLimit, 0) + " % for rooms up to " +
            fixed(kSmallRoomArea, 0) + " m2, " + fixed(kLargeRoomLimit, 0) + " % for larger, Suma et al. 2012):";
     if (r.overlaps.empty() && !overlaps_truncated(r)) out += " none";

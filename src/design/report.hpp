@@ -11,6 +11,7 @@
 
 #include <nlohmann/json_fwd.hpp>  // the report as JSON: include <nlohmann/json.hpp> to use it
 
+#include "design/obstacles.hpp"
 #include "design/overlap.hpp"
 #include "design/placement.hpp"
 #include "layout/layout.hpp"
@@ -34,7 +35,12 @@ struct Report {
     std::vector<int> unreachable;            // rooms, file order
     std::vector<RoomFinding> rooms_outside;  // with a play area: physical floors not inside it
     std::vector<int> doors_outside;          // portals whose floor line is not inside the play area
-    std::vector<std::string> findings;       // one line each, for people
+    // Doors a prop stands in the way of (design/obstacles.hpp), in portal
+    // order, and for each the reachable rooms whose way from the start
+    // passes it (or its partner) first: `tour` cannot walk to them.
+    std::vector<BlockedDoor> blocked;
+    std::vector<std::vector<int>> behind_blocked;
+    std::vector<std::string> findings;  // one line each, for people
     // Under "lighting": "lights" only (empty for "fixed"): each room's lights
     // (its glTF props' included) and light paths, the light images that may
     // light it at the layout's light_depth (lights/light_images.hpp).

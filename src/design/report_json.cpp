@@ -118,6 +118,32 @@ ordered_json lighting_json(const layout::Layout& layout, const Report& r) {
     return lighting;
 }
 
+// Each door a prop blocks: the door, the prop (its room, index and id, and
+// whether it is a moving prop where its motion leaves it) and the rooms
+// behind it.
+ordered_json blocked_json(const layout::Layout& layout, const Report& r) {
+    ordered_json list = ordered_json::array();
+    for (std::size_t i = 0; i < r.blocked.size(); ++i) {
+        const BlockedDoor& b = r.blocked[i];
+        ordered_json e;
+        e["door"] = layout.portals[static_cast<std::size_t>(b.portal)].id;
+        ordered_json prop;
+        prop["room"] = layout.rooms[static_cast<std::size_t>(b.by.listed_room)].id;
+        prop["index"] = b.by.prop;
+        const std::string& id =
+            layout::prop_id(layout.rooms[static_cast<std::size_t>(b.by.listed_room)].props[b.by.prop]);
+        prop["id"] = id.empty() ? ordered_json(nullptr) : ordered_json(id);
+        prop["resting"] = b.by.resting;
+        prop["name"] = obstacle_name(layout, b.by);
+        e["blocked_by"] = prop;
+        ordered_json behind = ordered_json::array();
+        for (const int room : r.behind_blocked[i]) behind.push_back(layout.rooms[static_cast<std::size_t>(room)].id);
+        e["rooms_behind"] = behind;
+        list.push_back(e);
+    }
+    return list;
+}
+
 }  // namespace
 
 ordered_json report_json(const layout::Layout& layout, const Report& r,
@@ -154,6 +180,7 @@ ordered_json report_json(const layout::Layout& layout, const Report& r,
     ordered_json doors_outside = ordered_json::array();
     for (const int p : r.doors_outside) doors_outside.push_back(layout.portals[p].id);
     j["doors_outside_play_area"] = doors_outside;
+    j["blocked_doors"] = blocked_json(layout, r);
     // Only then: fixed layouts' documents stay as they were.
     if (layout.lighting == layout::Lighting::Lights) j["lighting"] = lighting_json(layout, r);
     ordered_json lines = ordered_json::array();

@@ -4,47 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <queue>
-#include <variant>
 
 #include "design/placement.hpp"
 #include "layout/room_shape.hpp"
 
 namespace impossible::design {
 namespace {
-
-// Distance from p to the axis-aligned rectangle lo..hi (0 inside).
-double rect_distance(const glm::dvec2& p, const glm::dvec2& lo, const glm::dvec2& hi) {
-    const double dx = std::max({lo.x - p.x, 0.0, p.x - hi.x});
-    const double dz = std::max({lo.y - p.y, 0.0, p.y - hi.y});
-    return std::hypot(dx, dz);
-}
-
-struct Footprint {
-    glm::dvec2 lo, hi;
-};
-
-// The floor rectangles of the props that reach below the head.
-std::vector<Footprint> prop_footprints(const layout::Room& room, double head_height) {
-    std::vector<Footprint> out;
-    for (const layout::Prop& prop : room.props) {
-        glm::dvec3 lo(INFINITY), hi(-INFINITY);
-        if (const auto* box = std::get_if<layout::BoxProp>(&prop)) {
-            lo = box->min;
-            hi = box->max;
-        } else {
-            const auto& model = std::get<layout::GltfProp>(prop);
-            for (const assets::ModelTriangle& t : model.triangles)
-                for (const glm::dvec3& v : t.position) {
-                    const glm::dvec3 p = layout::place_model_point(model, v);
-                    lo = glm::min(lo, p);
-                    hi = glm::max(hi, p);
-                }
-        }
-        if (lo.x > hi.x || lo.y > head_height + 0.2) continue;
-        out.push_back({{lo.x, lo.z}, {hi.x, hi.z}});
-    }
-    return out;
-}
 
 // The x range of segment ab within the strip z0 <= z <= z1, or false.
 bool strip_span(const glm::dvec2& a, const glm::dvec2& b, double z0, double z1, double& lo, double& hi) {
@@ -112,14 +77,14 @@ std::vector<unsigned char> prism_cells(const math::Polygon2& poly, glm::dvec2 or
 }  // namespace
 
 RoomGrid::RoomGrid(const layout::Layout& layout, int room_index, const math::dmat4& to_physical,
-                   const math::Polygon2& play_area, const GridOptions& o) {
+                   const math::Polygon2& play_area, const GridOptions& o, const std::vector<Obstacle>* obstacles) {
+    const std::vector<Obstacle> props = obstacles ? *obstacles : listed_obstacles(layout, room_index, o.head_height);
     const layout::Room& room = layout.rooms[room_index];
     origin_ = {room.min.x, room.min.z};
     const glm::dvec2 extent{room.max.x - room.min.x, room.max.z - room.min.z};
     cell_ = std::max(o.cell, std::max(extent.x, extent.y) / kMaxCells);
     nx_ = std::max(1, static_cast<int>(std::ceil(extent.x / cell_)));
     nz_ = std::max(1, static_cast<int>(std::ceil(extent.y / cell_)));
-    const std::vector<Footprint> props = prop_footprints(room, o.head_height);
     // A prism room's floor polygon inset by the body radius; a box room
     // keeps its rectangle test.
     const bool prism = layout::is_prism(room);
@@ -136,8 +101,7 @@ RoomGrid::RoomGrid(const layout::Layout& layout, int room_index, const math::dma
             bool ok = prism ? inset[index(i, k)] != 0
                             : c.x >= room.min.x + o.body_radius && c.x <= room.max.x - o.body_radius &&
                                   c.y >= room.min.z + o.body_radius && c.y <= room.max.z - o.body_radius;
-            for (std::size_t n = 0; ok && n < props.size(); ++n)
-                ok = rect_distance(c, props[n].lo, props[n].hi) >= o.body_radius;
+            for (std::size_t n = 0; ok && n < props.size(); ++n) ok = obstacle_distance(c, props[n]) >= o.body_radius;
             for (std::size_t n = 0; ok && n < doors.size(); ++n)
                 ok = math::distance_to_segment(c, doors[n][0], doors[n][1]) >= o.body_radius;
             if (ok && !play_area.empty()) {

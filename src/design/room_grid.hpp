@@ -6,7 +6,7 @@
 // A cell is free when its centre is at least `body_radius` from the room's
 // walls (inside the floor polygon of a prism room, so a path goes round the
 // inner corner of an L and along a bent corridor), from every prop that reaches below the head (box props, and glTF
-// props by the bounding box of their triangles), and from the floor line of
+// props by the bounding box of their triangles; moving props where design/obstacles.hpp puts them), and from the floor line of
 // every door of the room (so a path never walks through a door it does not
 // mean to; mirrors and windows lie in the room's faces and are passed like
 // walls), and, with a play area, when the centre maps inside it, at least
@@ -16,6 +16,7 @@
 #include <optional>
 #include <vector>
 
+#include "design/obstacles.hpp"
 #include "layout/layout.hpp"
 #include "math/conventions.hpp"
 #include "math/polygon.hpp"
@@ -33,9 +34,11 @@ inline constexpr int kMaxCells = 400;
 
 class RoomGrid {
 public:
-    // `to_physical` places the room on the floor; `play_area` may be empty.
+    // `to_physical` places the room on the floor; `play_area` may be empty;
+    // `props` are the room's obstacles (design/obstacles.hpp); without them,
+    // its props where they are listed.
     RoomGrid(const layout::Layout& layout, int room, const math::dmat4& to_physical, const math::Polygon2& play_area,
-             const GridOptions& options);
+             const GridOptions& options, const std::vector<Obstacle>* props = nullptr);
 
     bool free(const glm::dvec2& p) const;  // the cell holding p is free
     // The free point nearest p (p itself if free), or nothing in a room with no free cell.

@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 
+#include "design/obstacles.hpp"
 #include "design/placement.hpp"
 #include "math/rigid.hpp"
 #include "walk/walker.hpp"
@@ -18,6 +19,8 @@ public:
     Planner(const layout::Layout& layout, const TourOptions& o) : layout_(layout), o_(o) {
         placement_ = place_rooms(layout);
         if (layout.play_area) area_ = layout::outline(*layout.play_area);
+        obstacles_ = room_obstacles(layout, placement_.links, o.grid.head_height);
+        blocked_ = blocked_doors(layout, obstacles_, o.grid.body_radius, o.door_clearance);
     }
 
     Result<Tour> run();
@@ -27,13 +30,18 @@ private:
     TourOptions o_;
     Placement placement_;
     math::Polygon2 area_;
+    std::vector<std::vector<Obstacle>> obstacles_;
+    std::vector<BlockedDoor> blocked_;
+    std::map<int, std::string> why_;  // why a room was left out, by room
     std::map<int, std::unique_ptr<RoomGrid>> grids_;
     std::vector<math::dvec3> physical_;  // the walk, as points on the physical floor at head height
     Tour result_;
 
     const RoomGrid& grid(int room) {
         auto& g = grids_[room];
-        if (!g) g = std::make_unique<RoomGrid>(layout_, room, placement_.rooms[room].to_physical, area_, o_.grid);
+        if (!g)
+            g = std::make_unique<RoomGrid>(layout_, room, placement_.rooms[room].to_physical, area_, o_.grid,
+                                           &obstacles_[static_cast<std::size_t>(room)]);
         return *g;
     }
     void emit(int room, const math::dvec3& virtual_point) {
@@ -42,9 +50,27 @@ private:
     }
     bool walk_to(int room, glm::dvec2& at, const glm::dvec2& to);
     std::optional<glm::dvec2> cross(int room, const glm::dvec2& at, int portal);
+    std::string last_why_;  // why the last cross() failed
     void visit(int room, glm::dvec2& at);
-    void miss(int room);
+    // Leaves `room` out, and the rooms beyond it with "it lies beyond ROOM: why".
+    void miss(int room, const std::string& why, bool beyond = false);
+    std::string door_reason(int portal, bool leaves_area) const;
 };
+
+// Why the tour could not take `portal` (or come back through its partner).
+std::string Planner::door_reason(int portal, bool leaves_area) const {
+    const layout::Portal& door = layout_.portals[static_cast<std::size_t>(portal)];
+    const std::string& id = door.id;
+    if (std::hypot(door.rect.normal.x, door.rect.normal.z) < 1e-6)
+        return "door \"" + id + "\" lies in a floor or ceiling, which a walk does not pass";
+    if (leaves_area) return "door \"" + id + "\" leads out of the play area";
+    const int partner = layout_.portals[static_cast<std::size_t>(portal)].target;
+    for (const BlockedDoor& b : blocked_)
+        if (b.portal == portal || b.portal == partner)
+            return "door \"" + layout_.portals[static_cast<std::size_t>(b.portal)].id + "\" is blocked by " +
+                   obstacle_name(layout_, b.by);
+    return "no free way to door \"" + id + "\" (walls, props, other doors or the play area's edge are in the way)";
+}
 
 bool Planner::walk_to(int room, glm::dvec2& at, const glm::dvec2& to) {
     if (!grid(room).free(at)) {  // e.g. just through a door with a prop behind it: step aside first
@@ -67,7 +93,10 @@ std::optional<glm::dvec2> Planner::cross(int room, const glm::dvec2& at_in, int 
     const glm::dvec2 n = glm::normalize(glm::dvec2(r.normal.x, r.normal.z));
     const glm::dvec2 c{r.center.x, r.center.z};
     glm::dvec2 at = at_in;
-    if (!walk_to(room, at, c + n * o_.door_clearance)) return std::nullopt;
+    if (!walk_to(room, at, c + n * o_.door_clearance)) {
+        last_why_ = door_reason(portal, false);
+        return std::nullopt;
+    }
     // Duck (or rise) to pass within the rectangle, then stand up again behind it.
     const double half = 0.5 * r.height * std::abs(r.up.y);
     const double h = o_.grid.head_height;
@@ -75,8 +104,10 @@ std::optional<glm::dvec2> Planner::cross(int room, const glm::dvec2& at_in, int 
     const glm::dvec2 front = c + n * o_.door_clearance, back = c - n * o_.door_clearance;
     if (!area_.empty() &&
         !math::segment_inside(area_, to_floor(placement_.rooms[room].to_physical, {front.x, 0, front.y}),
-                              to_floor(placement_.rooms[room].to_physical, {back.x, 0, back.y})))
+                              to_floor(placement_.rooms[room].to_physical, {back.x, 0, back.y}))) {
+        last_why_ = door_reason(portal, true);
         return std::nullopt;
+    }
     emit(room, {front.x, y, front.y});
     emit(room, {back.x, y, back.y});
     const int target = layout_.portals[portal].target;
@@ -85,10 +116,14 @@ std::optional<glm::dvec2> Planner::cross(int room, const glm::dvec2& at_in, int 
     return glm::dvec2(p.x, p.z);
 }
 
-void Planner::miss(int room) {
+void Planner::miss(int room, const std::string& why, bool beyond) {
     result_.missed.push_back(room);
+    why_.emplace(room, why);
+    const std::string further =
+        beyond ? why : "it lies beyond room \"" + layout_.rooms[static_cast<std::size_t>(room)].id + "\": " + why;
     for (std::size_t r = 0; r < placement_.rooms.size(); ++r)
-        if (placement_.rooms[r].parent == room && placement_.rooms[r].reachable) miss(static_cast<int>(r));
+        if (placement_.rooms[r].parent == room && placement_.rooms[r].reachable)
+            miss(static_cast<int>(r), further, true);
 }
 
 void Planner::visit(int room, glm::dvec2& at) {
@@ -103,7 +138,7 @@ void Planner::visit(int room, glm::dvec2& at) {
         const std::optional<glm::dvec2> inside = cross(room, here, p.via);
         if (!inside) {
             physical_.resize(mark);
-            miss(child);
+            miss(child, last_why_);
             continue;
         }
         glm::dvec2 there = *inside;
@@ -112,7 +147,7 @@ void Planner::visit(int room, glm::dvec2& at) {
         const std::optional<glm::dvec2> returned = cross(child, there, back);
         if (!returned) {  // no way back: leave the child out
             physical_.resize(mark);
-            miss(child);
+            miss(child, "no way back: " + last_why_);
             continue;
         }
         at = *returned;
@@ -146,8 +181,11 @@ Result<Tour> Planner::run() {
     replay(layout_, placement_.links, result_);
     result_.missed.clear();
     for (const int r : placement_.order)
-        if (std::find(result_.visited.begin(), result_.visited.end(), r) == result_.visited.end())
+        if (std::find(result_.visited.begin(), result_.visited.end(), r) == result_.visited.end()) {
             result_.missed.push_back(r);
+            const auto why = why_.find(r);
+            result_.why.push_back(why != why_.end() ? why->second : "the walker never entered it on the planned way");
+        }
     return result_;
 }
 

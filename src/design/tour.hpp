@@ -11,6 +11,7 @@
 #pragma once
 
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "base/result.hpp"
@@ -31,6 +32,7 @@ struct Tour {
     std::vector<math::HeadPose> poses;  // physical
     std::vector<int> visited;           // rooms the walker was in, in order of first visit
     std::vector<int> missed;            // rooms a door leads to that the tour could not reach
+    std::vector<std::string> why;       // for each of `missed`: why, e.g. "door \"east\" is blocked by ..."
     int teleports = 0;
     double physical_distance = 0.0;  // m walked on the floor
     double virtual_distance = 0.0;   // m between successive virtual heads, portal jumps included

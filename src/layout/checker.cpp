@@ -143,6 +143,11 @@ void Checker::model_warning(const Path& at, std::string_view message) {
     warnings_.push_back({offset_of(at), with_name(at, message), true});
 }
 
+void Checker::loud_warning(const Path& at, std::string_view message) {
+    warning(at, message);
+    loud_warnings_.push_back(warnings_.back());
+}
+
 void Checker::error_at_offset(std::size_t offset, std::string_view message) {
     errors_.push_back({offset, std::string(message)});
 }
@@ -183,6 +188,8 @@ std::vector<Diagnostic> Checker::take_model_warnings() const {
                  [](const Pending& p) { return p.model; });
     return finish(model);
 }
+
+std::vector<Diagnostic> Checker::take_loud_warnings() const { return finish(loud_warnings_); }
 
 bool Checker::check_fields(const Path& at, const json& object, std::initializer_list<const char*> known,
                            std::initializer_list<const char*> required) {

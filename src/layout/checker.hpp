@@ -52,6 +52,9 @@ public:
     void warning(const Path& at, std::string_view message);
     // A warning that render and trace print too (Layout::model_warnings).
     void model_warning(const Path& at, std::string_view message);
+    // A warning that every command loading the layout prints, not only
+    // validate (LoadResult::loud_warnings): one that changes what is drawn.
+    void loud_warning(const Path& at, std::string_view message);
     void error_at_offset(std::size_t offset, std::string_view message);
 
     // Unknown fields (other than "_comments") are errors at their key;
@@ -79,6 +82,7 @@ public:
     std::vector<Diagnostic> take_errors() const;
     std::vector<Diagnostic> take_warnings() const;
     std::vector<Diagnostic> take_model_warnings() const;  // those of model_warning only
+    std::vector<Diagnostic> take_loud_warnings() const;
 
     std::size_t offset_of(const Path& at) const;  // of the value, or its nearest ancestor
 
@@ -94,6 +98,7 @@ private:
     mutable std::optional<ValuePositions> positions_;  // made for the first problem (json_doc.hpp)
     std::vector<Pending> errors_;
     std::vector<Pending> warnings_;
+    std::vector<Pending> loud_warnings_;  // also in warnings_
 
     const ValuePositions& positions() const;
     std::size_t key_offset_of(const Path& at) const;

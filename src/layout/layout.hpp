@@ -237,6 +237,9 @@ struct LoadResult {
     std::optional<Layout> layout;      // set exactly when errors is empty
     std::vector<Diagnostic> errors;    // every problem found, in file order
     std::vector<Diagnostic> warnings;  // legal but suspicious, in file order
+    // Those of `warnings` that every command loading the layout prints (a
+    // door whose normal points out of its room), not only validate.
+    std::vector<Diagnostic> loud_warnings;
 };
 
 // Reads and validates a layout file. Never throws for bad input.

@@ -233,6 +233,7 @@ void read_layout(Checker& check, const json& root, const std::string& base_dir, 
     detail::pair_portals(check, portals, rooms, rooms_known);
     detail::link_volumes(check, portals, rooms, rooms_known);
     detail::check_holes(check, portals, rooms);
+    detail::warn_doors_facing_out(check, portals, rooms);
     link_start(check, start, rooms, rooms_known);
     std::optional<HandShape> hands;
     if (const json* v = field(root, "hands")) hands = detail::read_hands(check, top / "hands", *v, models);
@@ -289,6 +290,7 @@ LoadResult load(std::string_view text, const std::string& source, const std::str
     result.errors = check.take_errors();
     result.warnings = check.take_warnings();
     for (const Diagnostic& d : check.take_model_warnings()) layout.model_warnings.push_back(d.str());
+    result.loud_warnings = check.take_loud_warnings();
     if (result.errors.empty()) result.layout = std::move(layout);
     return result;
 }
@@ -299,20 +301,20 @@ LoadResult load_layout_text(const std::string& text, const std::string& source, 
     try {
         return load(text, source, base_dir);
     } catch (const std::bad_alloc&) {
-        return {std::nullopt, {{source, 0, 0, "out of memory while reading the layout"}}, {}};
+        return {std::nullopt, {{source, 0, 0, "out of memory while reading the layout"}}, {}, {}};
     } catch (const std::exception& e) {
-        return {std::nullopt, {{source, 0, 0, "internal error: " + printable(e.what())}}, {}};
+        return {std::nullopt, {{source, 0, 0, "internal error: " + printable(e.what())}}, {}, {}};
     }
 }
 
 LoadResult load_layout_file(const std::string& path) {
     try {
         const Result<std::vector<unsigned char>> bytes = read_file_bytes(path, limits::kMaxFileBytes, false);
-        if (!bytes) return {std::nullopt, {{path, 0, 0, "the file " + bytes.error()}}, {}};
+        if (!bytes) return {std::nullopt, {{path, 0, 0, "the file " + bytes.error()}}, {}, {}};
         const std::string base_dir = std::filesystem::path(path).parent_path().string();
         return load_layout_text(std::string(bytes->begin(), bytes->end()), path, base_dir);
     } catch (const std::exception& e) {
-        return {std::nullopt, {{path, 0, 0, "cannot read the file: " + printable(e.what())}}, {}};
+        return {std::nullopt, {{path, 0, 0, "cannot read the file: " + printable(e.what())}}, {}, {}};
     }
 }
 

@@ -118,6 +118,13 @@ void link_volumes(Checker& check, std::vector<PortalDraft>& portals, const std::
 // and windows that stand free (they must lie in a face of their room).
 void check_holes(Checker& check, std::vector<PortalDraft>& portals, const std::vector<RoomDraft>& rooms);
 
+// A door that lies in a face of its room (its plane, inside the face) with
+// its normal pointing out of the room makes no hole: it stands free, hidden
+// in the face, and is never walked through. A loud warning at its `normal`
+// with the normal to write instead (door_normal.cpp).
+void warn_doors_facing_out(Checker& check, const std::vector<PortalDraft>& portals,
+                           const std::vector<RoomDraft>& rooms);
+
 // Index of each id (the first, where ids repeat).
 template <class Draft>
 std::map<std::string, int> index_by_id(const std::vector<Draft>& drafts) {

@@ -251,7 +251,9 @@ TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, in
 }
 
 TraceHit trace_ray(const Scene& scene, const dvec3& origin, const dvec3& dir, int room, int max_depth) {
-    return trace_ray(scene, origin, dir, room, RayLimits{max_depth});
+    RayLimits limits;
+    limits.max_depth = max_depth;
+    return trace_ray(scene, origin, dir, room, limits);
 }
 
 }  // namespace impossible::trace

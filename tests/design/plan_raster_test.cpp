@@ -12,6 +12,7 @@
 #include "design/report.hpp"
 #include "design/scanline.hpp"
 #include "design/tour.hpp"
+#include "image/text_rects.hpp"
 
 namespace design_test {
 namespace {
@@ -82,29 +83,53 @@ std::vector<math::Polygon2> ref_stroke_polygons(const design::PlanShape& s, doub
     return out;
 }
 
-image::Pixels reference_raster(const design::Drawing& d, double k_out) {
-    const double k = k_out * kRefSuper;
-    constexpr double kTitle = 28.0;  // as plan_svg.cpp leaves for the title
-    image::Pixels image;
-    image.channels = 3;
-    image.width = static_cast<int>(std::ceil((d.max.x - d.min.x) * k_out));
-    image.height = static_cast<int>(std::ceil((d.max.y - d.min.y) * k_out + kTitle));
-    RefCanvas canvas{image.width * kRefSuper, image.height * kRefSuper, {}};
-    canvas.rgb.assign(static_cast<std::size_t>(canvas.w) * canvas.h * 3, 1.0f);
-    auto px = [&](glm::dvec2 p) { return glm::dvec2((p.x - d.min.x) * k, (p.y - d.min.y) * k + kTitle * kRefSuper); };
-    for (const design::PlanShape& s : d.shapes) {
-        if (s.kind == design::PlanShape::Kind::Text) continue;
+// A line of text as the segment font's rectangles, its baseline at `at`.
+void ref_text(RefCanvas& canvas, const design::PlanShape& s, glm::dvec2 at, double pixels) {
+    const double scale = pixels / 10.0;
+    const double width = std::max(0.0, static_cast<double>(image::text_width(s.text)) - 1.0) * scale;
+    const glm::dvec2 origin{s.centred ? at.x - 0.5 * width : at.x, at.y - 7.0 * scale};
+    for (const image::TextRect& r : image::text_rects(s.text)) {
+        const glm::dvec2 lo = origin + glm::dvec2(r.x0, r.y0) * scale, hi = origin + glm::dvec2(r.x1, r.y1) * scale;
+        canvas.fill({lo, {hi.x, lo.y}, hi, {lo.x, hi.y}}, s.colour);
+    }
+}
+
+// Every shape, `k` canvas pixels a unit, each point through `px`.
+template <class Px>
+void ref_shapes(RefCanvas& canvas, const std::vector<design::PlanShape>& shapes, Px px, double k, double text_k,
+                double dash_on, double dash_off, bool overlay) {
+    for (const design::PlanShape& s : shapes) {
         math::Polygon2 pts;
         for (const glm::dvec2& p : s.points) pts.push_back(px(p));
-        if (s.kind == design::PlanShape::Kind::Fill) {
+        if (s.kind == design::PlanShape::Kind::Text) {
+            ref_text(canvas, s, pts.front(), (overlay ? s.size : design::label_pixels(s, text_k)) * kRefSuper);
+        } else if (s.kind == design::PlanShape::Kind::Fill) {
             canvas.fill(pts, s.colour);
-            continue;
+        } else {
+            design::PlanShape mapped = s;
+            mapped.points = pts;
+            for (const math::Polygon2& poly : ref_stroke_polygons(mapped, k, dash_on, dash_off))
+                canvas.fill(poly, s.colour);
         }
-        design::PlanShape mapped = s;
-        mapped.points = pts;
-        for (const math::Polygon2& poly : ref_stroke_polygons(mapped, k, 0.12 * k, 0.08 * k))
-            canvas.fill(poly, s.colour);
     }
+}
+
+image::Pixels reference_raster(const design::Drawing& d, double k_out) {
+    const double k = k_out * kRefSuper;
+    const design::PlanSize size = design::plan_size(d, k_out);
+    image::Pixels image;
+    image.channels = 3;
+    image.width = size.width;
+    image.height = size.height;
+    RefCanvas canvas{image.width * kRefSuper, image.height * kRefSuper, {}};
+    canvas.rgb.assign(static_cast<std::size_t>(canvas.w) * canvas.h * 3, 1.0f);
+    auto px = [&](glm::dvec2 p) {
+        return glm::dvec2((p.x - d.min.x) * k, (p.y - d.min.y) * k + size.floor_top * kRefSuper);
+    };
+    ref_shapes(canvas, d.shapes, px, k, k_out, 0.12 * k, 0.08 * k, false);
+    ref_shapes(
+        canvas, design::plan_overlay(d, k_out), [](glm::dvec2 p) { return p * double(kRefSuper); }, kRefSuper, 1.0,
+        5.0 * kRefSuper, 3.0 * kRefSuper, true);
     image.data.resize(static_cast<std::size_t>(image.width) * image.height * 3);
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x)

@@ -99,7 +99,8 @@ TEST(Plan, FourRoomsIsWellFormedSvgWithEveryLayer) {
     for (const layout::Portal& p : l.portals) EXPECT_GE(count(elements, "polyline", "data-name", p.id), 1) << p.id;
     EXPECT_EQ(count(elements, "polygon", "data-name", "hall/library"), 1);  // an overlap
     EXPECT_EQ(count(elements, "polyline", "data-name", "walk"), 1);
-    EXPECT_EQ(count(elements, "text"), 5);  // the title and four room names
+    // The title, four room names and the legend's lines.
+    EXPECT_EQ(count(elements, "text"), 5 + static_cast<int>(d.legend.size()));
 }
 
 TEST(Plan, NamesAreEscaped) {
