@@ -23,7 +23,7 @@
 
 namespace impossible::test {
 
-inline void write_lamp_model(const std::string& path) {
+static inline void write_lamp_model(const std::string& path) {
     layout_test::GltfWriter w;
     using layout_test::json;
     const auto quad = [&](float x0, float x1, float y0, float y1, int material, const std::vector<float>& alpha) {

@@ -65,7 +65,7 @@ TEST(LayoutDoorNormal, APrismRoomsDoorFacingOutIsWarnedToo) {
 TEST(LayoutDoorNormal, NoShippedLayoutHasADoorFacingOut) {
     namespace fs = std::filesystem;
     int loaded = 0;
-    for (const std::string dir : {std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts", kLayoutDir}) {
+    for (const std::string& dir : {std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts", kLayoutDir}) {
         for (const auto& entry : fs::directory_iterator(dir)) {
             if (entry.path().extension() != ".json") continue;
             const LoadResult r = load_layout_file(entry.path().string());
