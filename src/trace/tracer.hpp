@@ -58,7 +58,7 @@ struct RayLimits {
     int light_depth = -1;
     // View::exposure, EV: each surface's colour times 2^EV before its clamp
     // (docs/lighting.md, "Exposure"); none: the scene's (the layout's).
-    std::optional<double> exposure;
+    std::optional<double> exposure{};
 };
 
 // A ray from an eye: where it starts, its direction (any length but not
