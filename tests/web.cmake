@@ -23,11 +23,12 @@ if(NODE_EXECUTABLE AND NOT IMPOSSIBLE_SANITIZE)
   # The core's unit tests compiled by emscripten, run under node: the same
   # files as unit_base, unit_math, unit_layout and unit_walk. Node cannot make
   # FIFOs or devices, so the test of a glTF buffer that is one stays native.
+  # In the long stage, which builds them first (.ci/run: web_unit_tests).
   foreach(module base math layout walk)
     add_test(NAME web_unit_${module}
              COMMAND ${NODE_EXECUTABLE} --no-experimental-fetch ${CMAKE_SOURCE_DIR}/build-web/web_unit_${module}.js
                      --gtest_filter=-GltfHardening.ABufferFileThatIsNotARegularFileSaysWhatItIs)
-    set_tests_properties(web_unit_${module} PROPERTIES LABELS web TIMEOUT 300)
+    set_tests_properties(web_unit_${module} PROPERTIES LABELS "web;long" TIMEOUT 300)
   endforeach()
   impossible_web_test(web_cli cli.test.mjs web)
 endif()
