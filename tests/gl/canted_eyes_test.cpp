@@ -12,6 +12,7 @@
 #include "image/compare.hpp"
 #include "layout/hmd_profile.hpp"
 #include "math/eyes.hpp"
+#include "technique_modes.hpp"
 #include "trace/tracer.hpp"
 
 namespace impossible::canted_eyes {
@@ -106,18 +107,7 @@ TEST_P(CantedVsTrace, TheDoorPlaneBetweenTheEyes) {
     EXPECT_EQ(compared(l, f, "straddling, turned").id_mismatches, 0);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Modes, CantedVsTrace,
-    ::testing::Combine(::testing::Values(render::ClipMode::ClipDistance, render::ClipMode::Oblique),
-                       ::testing::Values(render::StereoMode::ClipShift, render::StereoMode::ViewportIndex,
-                                         render::StereoMode::TwoPass)),
-    [](const auto& info) {
-        const render::StereoMode s = std::get<1>(info.param);
-        return std::string(std::get<0>(info.param) == render::ClipMode::Oblique ? "oblique_" : "clip_distance_") +
-               (s == render::StereoMode::ClipShift ? "clip_shift"
-                : s == render::StereoMode::TwoPass ? "two_pass"
-                                                   : "viewport_index");
-    });
+INSTANTIATE_TEST_SUITE_P(Modes, CantedVsTrace, testing::all_technique_modes(), testing::technique_modes_name);
 
 }  // namespace
 }  // namespace impossible::canted_eyes

@@ -11,6 +11,7 @@
 #include "image/compare.hpp"
 #include "layout/hmd_profile.hpp"
 #include "math/hidden_area.hpp"
+#include "technique_modes.hpp"
 #include "trace/tracer.hpp"
 
 namespace impossible {
@@ -83,18 +84,7 @@ TEST_P(HeadsetVsTrace, IdsAgreeAndTheHiddenAreaIsBlackWithIdZero) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Modes, HeadsetVsTrace,
-    ::testing::Combine(::testing::Values(render::ClipMode::ClipDistance, render::ClipMode::Oblique),
-                       ::testing::Values(render::StereoMode::ClipShift, render::StereoMode::ViewportIndex,
-                                         render::StereoMode::TwoPass)),
-    [](const auto& info) {
-        const render::StereoMode s = std::get<1>(info.param);
-        return std::string(std::get<0>(info.param) == render::ClipMode::Oblique ? "oblique_" : "clip_distance_") +
-               (s == render::StereoMode::ClipShift ? "clip_shift"
-                : s == render::StereoMode::TwoPass ? "two_pass"
-                                                   : "viewport_index");
-    });
+INSTANTIATE_TEST_SUITE_P(Modes, HeadsetVsTrace, testing::all_technique_modes(), testing::technique_modes_name);
 
 TEST(HeadsetMask, TheVisibleAreaIsByteIdenticalToTheUnmaskedFrame) {
     const layout::Layout l = testing::example_layout("gallery.json");
