@@ -199,6 +199,23 @@ struct Start {
     double yaw_deg = 0.0;
 };
 
+// layout-format.md, "Changes while walking": when a change is armed. Every
+// part is optional; the loader makes sure at least one is set.
+struct ChangeWhen {
+    int enter = -1;              // index into Layout::rooms: the head is in that room; -1: no condition
+    int after = -1;              // index of an earlier change in Layout::changes, made at an earlier frame; -1: none
+    std::optional<double> time;  // seconds: the frame's time is at least this
+};
+
+// A re-pairing of doors, made where neither eye sees any door it affects.
+struct Change {
+    std::string id;
+    ChangeWhen when;
+    // Indices into Layout::portals, doors only, each door at most once in a
+    // change; after the change the two doors of each pair target each other.
+    std::vector<std::array<int, 2>> pairs;
+};
+
 struct Layout {
     std::string source;  // file path, or a name such as "<default>"
     std::string name;
@@ -207,6 +224,7 @@ struct Layout {
     std::vector<Room> rooms;
     std::vector<Portal> portals;  // doors, mirrors and windows (volumes are in `volumes`)
     std::vector<Volume> volumes;  // in file order
+    std::vector<Change> changes;  // in file order (layout-format.md, "Changes while walking")
     HandShape hands;
     Lighting lighting = Lighting::Fixed;
     int light_depth = kDefaultLightDepth;  // 0..kMaxLightDepth; read only under Lighting::Lights
