@@ -14,7 +14,7 @@ import re
 import sys
 
 LAYERS = [
-    "base", "math", "image", "assets", "layout", "shading", "links", "lights", "walk",
+    "base", "math", "image", "assets", "layout", "shading", "links", "lights", "walk", "changes",
     "scene", "gl", "render", "trace", "design", "session", "api", "cli", "preview", "bench", "app", "web",
 ]
 

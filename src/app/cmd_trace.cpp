@@ -49,7 +49,8 @@ int run_trace_command(const Args& args, std::ostream& out, std::ostream& err) {
     TraceOptions own;
     apply_options(kTraceOptions, parsed, own);
     const int threads = own.threads;
-    const session::Session session(load_layout_or_default(options.layout_path, outputs, err));
+    // frame_for makes it the session of the pairing at --path's --frame.
+    session::Session session(load_layout_or_default(options.layout_path, outputs, err));
     const render::FrameDesc frame = frame_for(session, options);
     err << model_warnings_text(session) << light_options_warning(session, options.frame.light_depth, false);
 

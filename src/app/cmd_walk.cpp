@@ -79,20 +79,28 @@ std::string frame_line(const layout::Layout& layout, const session::WalkedFrame&
     write_vec(line, f.forward);
     if (f.hands) write_hands(line, layout, *f.hands);
     if (!f.props.empty()) write_props(line, layout, f.props);
+    if (!f.changes.empty()) {
+        line += ",\"changes\":[";
+        for (std::size_t k = 0; k < f.changes.size(); ++k) {
+            if (k) line += ',';
+            line += nlohmann::json(layout.changes[static_cast<std::size_t>(f.changes[k])].id).dump();
+        }
+        line += ']';
+    }
     return line + "}\n";
 }
 
 }  // namespace
 
 int run_walk_stream(const session::Session& session, std::istream& in, const std::string& name, std::ostream& out,
-                    std::ostream& err, double fps) {
+                    std::ostream& err, double fps, const math::View& view) {
     const layout::PathFrames path = layout::read_path_frames_stream(in, name);
     if (!path) {
         err << one_line(path.error()) << '\n';
         return 1;
     }
     const std::vector<layout::PathFrame>& frames = *path;
-    session::WalkDriver driver(session);
+    session::WalkDriver driver(session, view);
     for (std::size_t frame = 0; frame < frames.size(); ++frame) {
         const session::WalkedFrame f =
             driver.step(frames[frame].head, frames[frame].hands, static_cast<double>(frame) / fps);
@@ -110,14 +118,14 @@ int run_walk_stream(const session::Session& session, std::istream& in, const std
 }
 
 int run_walk(const session::Session& session, const std::string& path_file, std::ostream& out, std::ostream& err,
-             double fps) {
+             double fps, const math::View& view) {
     const Result<std::vector<unsigned char>> bytes = read_file_bytes(path_file, layout::kMaxPathFileBytes, false);
     if (!bytes) {
         err << one_line(path_file + ": " + bytes.error()) << '\n';
         return 1;
     }
     std::istringstream in(std::string(bytes->begin(), bytes->end()));
-    return run_walk_stream(session, in, path_file, out, err, fps);
+    return run_walk_stream(session, in, path_file, out, err, fps, view);
 }
 
 }  // namespace impossible::app

@@ -17,7 +17,9 @@
 // to the hand's virtual position, walk::place_hand), and, when the layout has
 // moving props, on every line "props":{"ID":"ROOM",...}: each prop with a
 // motion, in layout order, and its room at time frame / fps
-// (walk::walk_prop, through one walk::PropWalks for the whole path).
+// (walk::walk_prop, through one walk::PropWalks for the whole path), and,
+// last, on the line of a frame at which changes are made,
+// "changes":["ID",...] (layout-format.md, "Changes while walking").
 // Numbers are written by impossible::format_number (base/format.hpp): the
 // shortest decimal that reads back to the same double, integers without a
 // fraction ("1", not "1.0"), 1.6 as "1.6", 6.1e-17 as "6.1e-17"; -0 as 0.
@@ -36,11 +38,13 @@ namespace impossible::app {
 // Reads the path file and replays it. Returns 0, or 1 on a bad or unreadable
 // path file (one line on err).
 // `fps` (> 0, finite): line k is at time k / fps.
+// `view`: the view options that place the eyes of the seen test (a layout
+// with changes; layout-format.md, "Changes while walking").
 int run_walk(const session::Session& session, const std::string& path_file, std::ostream& out, std::ostream& err,
-             double fps = layout::kDefaultPathFps);
+             double fps = layout::kDefaultPathFps, const math::View& view = {});
 
 // The same on an already open stream; `name` is the FILE of error messages.
 int run_walk_stream(const session::Session& session, std::istream& in, const std::string& name, std::ostream& out,
-                    std::ostream& err, double fps = layout::kDefaultPathFps);
+                    std::ostream& err, double fps = layout::kDefaultPathFps, const math::View& view = {});
 
 }  // namespace impossible::app

@@ -213,7 +213,8 @@ BenchPlan plan_bench(const session::Session& session, const BenchOptions& o) {
 
 std::vector<BenchPose> bench_poses(const session::Session& session, const BenchOptions& o) {
     if (!o.path) {
-        const render::FrameDesc f = frame_for(session, o.view);
+        session::Session placed = session;  // without --path, frame_for keeps it
+        const render::FrameDesc f = frame_for(placed, o.view);
         return {{f.head, f.room, f.time, f.hands}};
     }
     const std::vector<layout::PathFrame> file = value_or_throw(layout::read_path_frames_file(*o.path));

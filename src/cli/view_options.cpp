@@ -14,6 +14,7 @@
 #include "lights/light_images.hpp"
 #include "math/view_limits.hpp"
 #include "session/view_request.hpp"
+#include "session/walk_driver.hpp"
 
 namespace impossible::cli {
 
@@ -181,23 +182,24 @@ void write_frame_pngs(CommandOutputs& outputs, const ViewOptions& options, int w
 
 namespace {
 
-// --path FILE --frame K [--fps N]: line K of the walk.
-void set_path_frame(render::FrameDesc& f, const session::Session& session, const ViewOptions& o) {
+// --path FILE --frame K [--fps N]: line K of the walk; the session with
+// the pairing in force there.
+session::Session set_path_frame(render::FrameDesc& f, const session::Session& session, const ViewOptions& o) {
     const std::vector<layout::PathFrame> frames = value_or_throw(layout::read_path_frames_file(*o.path));
     const std::size_t k = static_cast<std::size_t>(o.path_frame.value_or(0));
     if (k >= frames.size())
         throw UsageError(
             "--frame " + std::to_string(k) + ": " + *o.path + " holds " + std::to_string(frames.size()) +
             (frames.size() == 1 ? " pose (frame 0)" : " poses (frames 0.." + std::to_string(frames.size() - 1) + ")"));
-    session.set_replayed_view(f, frames, k, o.fps.value_or(layout::kDefaultPathFps));
+    return session::replay_to(session, f, frames, k, o.fps.value_or(layout::kDefaultPathFps));
 }
 
 }  // namespace
 
-render::FrameDesc frame_for(const session::Session& session, const ViewOptions& o) {
+render::FrameDesc frame_for(session::Session& session, const ViewOptions& o) {
     render::FrameDesc f = o.frame;
     if (o.path) {
-        set_path_frame(f, session, o);
+        session = set_path_frame(f, session, o);
         return f;
     }
     // The one rule of the head's room (session/view_request.hpp).

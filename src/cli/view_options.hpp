@@ -78,9 +78,10 @@ std::string model_warnings_text(const session::Session& session);
 // The head pose and room of the frame: the layout's start without --pose;
 // with --pose, --room or else the one room whose box or prism holds the
 // head; with --path, line K's after walking lines 0..K (walk/replay.hpp),
-// at time K / fps. Throws InputError for a bad path file, UsageError for a K past
-// its last line.
-render::FrameDesc frame_for(const session::Session& session, const ViewOptions& options);
+// at time K / fps, and `session` becomes the one with the pairing in force at
+// line K (layout-format.md, "Changes while walking"). Throws InputError for a
+// bad path file, UsageError for a K past its last line.
+render::FrameDesc frame_for(session::Session& session, const ViewOptions& options);
 
 // The same frame for the reference tracer (threads: 0 = all cores).
 trace::TraceDesc trace_desc_for(const render::FrameDesc& frame, int threads = 0);

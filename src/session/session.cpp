@@ -1,7 +1,6 @@
 #include "session/session.hpp"
 
 #include "lights/light_bound.hpp"
-#include "walk/replay.hpp"
 
 namespace impossible::session {
 
@@ -22,11 +21,5 @@ walk::Walker Session::make_walker(int room) const {
 }
 
 lights::LightBound Session::light_bound() const { return lights::light_bound(*layout_, *links_); }
-
-void Session::set_replayed_view(math::View& view, const std::vector<layout::PathFrame>& frames, std::size_t line,
-                                double fps) const {
-    walk::Walker walker = make_walker();
-    walk::replay_view(view, walker, frames, line, fps);
-}
 
 }  // namespace impossible::session

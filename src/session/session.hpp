@@ -48,10 +48,6 @@ public:
     // paths or lights::kMaxLightRects path rectangles, and the lights that
     // light frames. The renderer's and the tracer's scenes are cut so.
     lights::LightBound light_bound() const;
-    // `view`'s head, room, hands and time at line `line` of a walk, after
-    // walking lines 0..line from the start (walk/replay.hpp).
-    void set_replayed_view(math::View& view, const std::vector<layout::PathFrame>& frames, std::size_t line,
-                           double fps) const;
 
 private:
     // On the heap: walkers and renderers made from a session point into it,

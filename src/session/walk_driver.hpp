@@ -3,14 +3,21 @@
 // head is the walker's; the hands are mapped by its W and placed by walking
 // from the head centre; moving props are walked to the frame's time
 // (layout-format.md, "Head, eyes and walking"; cli.md, "Time, hands and
-// lights").
+// lights"). A layout with `changes` is walked with the pairing in force
+// (layout-format.md, "Changes while walking"): after each step the changes
+// are considered (changes/change_walk.hpp) with the seen test on the frame's
+// eyes, placed by the view options given (ipd, fov, size, headset, depth),
+// and a change made swaps in the session of the new pairing.
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "changes/change_walk.hpp"
+#include "layout/path_file.hpp"
 #include "session/session.hpp"
 #include "walk/objects.hpp"
 #include "walk/prop_walks.hpp"
@@ -30,7 +37,8 @@ struct WalkedProp {
 
 struct WalkedFrame {
     int room = -1;               // the head's room after the frame
-    std::vector<int> teleports;  // the portals passed during it, in order
+    std::vector<int> teleports;  // the portals passed during it, in order (indices in the loaded layout)
+    std::vector<int> changes;    // the changes made at this frame, in file order
     math::dvec3 position{0.0};   // the virtual head centre
     math::dvec3 forward{0.0};    // the virtual view direction
     math::HeadPose virtual_pose;
@@ -41,28 +49,57 @@ struct WalkedFrame {
 class WalkDriver {
 public:
     // From the layout's start; the session must outlive the driver.
-    explicit WalkDriver(const Session& session);
+    // `view` holds the view options the seen test places the eyes by (its
+    // head, room and time are the walk's); only read with changes.
+    explicit WalkDriver(const Session& session, const math::View& view = {});
     // It keeps walks that point into its own object set.
     WalkDriver(const WalkDriver&) = delete;
     WalkDriver& operator=(const WalkDriver&) = delete;
 
     // One frame: the head, the hands if any, and with `time` the moving
-    // props at that time (none when no prop moves).
+    // props at that time (none when no prop moves). The changes' `time`
+    // conditions read `time`, or frame / kDefaultPathFps without one.
     WalkedFrame step(const math::HeadPose& physical, const walk::HandPoses& hands = std::nullopt,
                      std::optional<double> time = std::nullopt);
 
     const walk::Walker& walker() const { return walker_; }
+    // The session with the pairing in force (the one given until a change
+    // is made): what a frame of the walk is drawn with.
+    const Session& session() const { return *current_; }
+    // The changes' state; none without changes.
+    const changes::ChangeWalk* changes() const { return changes_ ? &*changes_ : nullptr; }
+    // Portal passes the last frame's seen test made (0 when not asked).
+    int seen_passes() const { return seen_passes_; }
 
 private:
     const walk::ObjectSet& objects();  // built at the first frame that needs it
+    // The changes of frame `frame`, after its step; a change made swaps
+    // current_, walker_ and the objects.
+    std::vector<int> consider_changes(double time);
+    std::vector<char> seen_doors();
 
     const Session* session_;
+    std::shared_ptr<const Session> current_;  // session_ itself until a change is made
+    std::vector<int> base_index_;             // current_'s portal k is the loaded layout's base_index_[k]
+    math::View view_;
+    std::optional<changes::ChangeWalk> changes_;
+    int frame_ = 0;
+    int seen_passes_ = 0;
     bool moves_ = false;  // any_motion(layout)
     walk::Walker walker_;
     std::optional<walk::ObjectSet> objects_;
     std::vector<int> moving_;  // indices of objects_->props that move
     std::optional<walk::PropWalks> prop_walks_;
 };
+
+// Walks lines 0..line of a path (head, hands, time line / fps) from the
+// layout's start as `walk` does, with the changes and the seen test on the
+// eyes `view`'s options place, and sets view's head, room, hands and time
+// to line `line`'s. Returns the session with the pairing in force at that
+// line's picture: `session` itself without changes made. `line` must be
+// below frames.size().
+Session replay_to(const Session& session, math::View& view, const std::vector<layout::PathFrame>& frames,
+                  std::size_t line, double fps);
 
 // Whether any prop of the layout moves.
 bool any_motion(const layout::Layout& layout);

@@ -70,6 +70,7 @@ public:
     int room() const { return room_; }
     bool started() const { return started_; }
     const math::dmat4& physical_to_virtual() const { return w_; }
+    const math::HeadPose& physical_pose() const { return physical_pose_; }
     const links::PortalLinks& links() const { return *links_; }
 
     // The virtual head centre and orientation (columns right, up, back) after

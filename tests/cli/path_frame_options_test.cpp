@@ -15,6 +15,10 @@
 namespace impossible::cli {
 namespace {
 
+// frame_for on a session of its own (it may replace the session by the
+// pairing at --path's frame).
+render::FrameDesc frame_in(session::Session session, const ViewOptions& o) { return frame_for(session, o); }
+
 ViewOptions parse_path_options(const Args& args, const ViewTables& table = view_options()) {
     return parse_view_options(parse_args(args, 1, table), table);
 }
@@ -110,7 +114,7 @@ TEST_F(PathFrameFile, FrameKIsTheWalkersHeadRoomAndHandsAtKOverFps) {
     for (int k = 0; k < 4; ++k) {
         walker.step(lines[k].head);
         const ViewOptions o = parse_path_options({"--path", path, "--frame", std::to_string(k), "--fps", "30"});
-        const render::FrameDesc f = frame_for(session::Session(layout), o);
+        const render::FrameDesc f = frame_in(session::Session(layout), o);
         expect_pose(f.head, math::head_pose_from(walker.position(), walker.rotation()));
         EXPECT_EQ(f.room, walker.room()) << k;
         EXPECT_EQ(f.time, k / 30.0);
@@ -131,26 +135,26 @@ TEST_F(PathFrameFile, FrameKIsTheWalkersHeadRoomAndHandsAtKOverFps) {
     // The walk passed the door: the last frames are in the annex.
     EXPECT_EQ(layout.rooms[walker.room()].id, "annex");
     // Default fps: 90.
-    EXPECT_EQ(frame_for(session::Session(layout), parse_path_options({"--path", path, "--frame", "3"})).time, 3 / 90.0);
+    EXPECT_EQ(frame_in(session::Session(layout), parse_path_options({"--path", path, "--frame", "3"})).time, 3 / 90.0);
 }
 
 TEST_F(PathFrameFile, AFramePastTheLastLineIsAUsageErrorNamingTheCounts) {
     const layout::Layout layout = load_layout_or_default(std::nullopt);
     const std::string path = write(kDoorWalk);
     try {
-        frame_for(session::Session(layout), parse_path_options({"--path", path, "--frame", "4"}));
+        frame_in(session::Session(layout), parse_path_options({"--path", path, "--frame", "4"}));
         ADD_FAILURE() << "no UsageError";
     } catch (const UsageError& e) {
         EXPECT_EQ(std::string(e.what()), "--frame 4: " + path + " holds 4 poses (frames 0..3)");
     }
     const std::string one = write("0 1.6 1 0 0 0\n");
     try {
-        frame_for(session::Session(layout), parse_path_options({"--path", one, "--frame", "1"}));
+        frame_in(session::Session(layout), parse_path_options({"--path", one, "--frame", "1"}));
         ADD_FAILURE() << "no UsageError";
     } catch (const UsageError& e) {
         EXPECT_EQ(std::string(e.what()), "--frame 1: " + one + " holds 1 pose (frame 0)");
     }
-    EXPECT_THROW(frame_for(session::Session(layout),
+    EXPECT_THROW(frame_in(session::Session(layout),
                            parse_path_options({"--path", (dir_ / "none.txt").string(), "--frame", "0"})),
                  InputError);
 }

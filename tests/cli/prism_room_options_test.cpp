@@ -13,6 +13,10 @@
 namespace impossible::cli {
 namespace {
 
+// frame_for on a session of its own (it may replace the session by the
+// pairing at --path's frame).
+render::FrameDesc prism_frame_in(session::Session session, const ViewOptions& o) { return frame_for(session, o); }
+
 layout::Layout l_and_notch() {
     layout::Layout l;
     l.source = "ell.json";
@@ -24,7 +28,7 @@ layout::Layout l_and_notch() {
 
 int room_at(const layout::Layout& l, const std::string& pose) {
     const ViewTables& table = view_options();
-    return frame_for(session::Session(l), parse_view_options(parse_args({"--pose", pose}, 1, table), table)).room;
+    return prism_frame_in(session::Session(l), parse_view_options(parse_args({"--pose", pose}, 1, table), table)).room;
 }
 
 std::string room_error(const layout::Layout& l, const std::string& pose) {
