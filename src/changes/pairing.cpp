@@ -28,7 +28,8 @@ void make_change(const layout::Change& change, Pairing& pairing) {
     std::vector<int> former;
     for (const std::array<int, 2>& pair : change.pairs)
         for (const int d : pair)
-            if (pairing.target[static_cast<std::size_t>(d)] >= 0) former.push_back(pairing.target[static_cast<std::size_t>(d)]);
+            if (pairing.target[static_cast<std::size_t>(d)] >= 0)
+                former.push_back(pairing.target[static_cast<std::size_t>(d)]);
     for (const int f : former) pairing.target[static_cast<std::size_t>(f)] = -1;
     for (const std::array<int, 2>& pair : change.pairs) {
         pairing.target[static_cast<std::size_t>(pair[0])] = pair[1];

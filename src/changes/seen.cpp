@@ -125,7 +125,8 @@ void Search::eye(const math::Eye& eye, const math::Frustum& frustum, const math:
     for (const int q : links_.room_portals[static_cast<std::size_t>(cell)]) {
         const layout::Portal& p = layout_.portals[static_cast<std::size_t>(q)];
         if (p.kind != layout::PortalKind::Door || p.target < 0) continue;
-        if (math::signed_distance(p.rect, eye.position) >= 0.0 || !math::has_inner_faces(p.rect, eye.position, eye.head))
+        if (math::signed_distance(p.rect, eye.position) >= 0.0 ||
+            !math::has_inner_faces(p.rect, eye.position, eye.head))
             continue;
         out_.seen[static_cast<std::size_t>(q)] = 1;
         if (max_depth_ < 1) continue;

@@ -155,7 +155,7 @@ TEST_F(PathFrameFile, AFramePastTheLastLineIsAUsageErrorNamingTheCounts) {
         EXPECT_EQ(std::string(e.what()), "--frame 1: " + one + " holds 1 pose (frame 0)");
     }
     EXPECT_THROW(frame_in(session::Session(layout),
-                           parse_path_options({"--path", (dir_ / "none.txt").string(), "--frame", "0"})),
+                          parse_path_options({"--path", (dir_ / "none.txt").string(), "--frame", "0"})),
                  InputError);
 }
 
