@@ -79,7 +79,7 @@ double frame_time(const PreviewSession& s, long frame) {
 // otherwise the eyes are drawn at the size they have in the window.
 render::FrameDesc frame_desc(const PreviewSession& s, long frame, const PixelRect& eye) {
     render::FrameDesc desc = s.options.frame;
-    walk::set_walked_view(desc, *s.shown.walker, s.physical_hands);
+    walk::set_walked_view(desc, s.shown.driver->walker(), s.physical_hands);
     desc.time = frame_time(s, frame);
     if (!s.options.screenshots) {
         desc.eye_width = eye.width;
@@ -97,8 +97,8 @@ FrameRecord frame_record(const PreviewSession& s, long frame, const render::Fram
     for (int p : passed) r.teleports.push_back(lay.portals[p].id);
     r.pose = desc.head;
     r.physical = s.physical;
-    r.position = s.shown.walker->position();
-    r.forward = s.shown.walker->forward();
+    r.position = s.shown.driver->walker().position();
+    r.forward = s.shown.driver->walker().forward();
     r.eye_width = desc.eye_width;
     r.eye_height = desc.eye_height;
     return r;
@@ -160,6 +160,7 @@ HudFacts hud_facts(const PreviewSession& s, const render::FrameDesc& desc) {
     f.light_images = s.stats.light_images;
     f.light_depth = desc.light_depth.value_or(layout.light_depth);
     f.exposure = desc.exposure.value_or(layout.exposure);
+    if (const changes::ChangeWalk* walk = s.shown.driver->changes()) f.changes = changes_line(layout, *walk);
     return f;
 }
 
@@ -175,8 +176,9 @@ void draw_window(PreviewSession& s, const WindowLayout& places, const render::Fr
     add_hud(batch, fit_hud(hud_text(s.options, hud_facts(s, desc), s.reload_errors), fb_w, fb_h, scale), scale);
     if (s.options.minimap) {
         const float side = std::min(0.42f * float(fb_h), 0.3f * float(fb_w));
-        const walk::Walker& walker = *s.shown.walker;
-        const MinimapInput map{&s.shown.session->layout(), desc.room, walker.physical_to_virtual(),
+        // The layout with the pairing in force: its doors are the walker's.
+        const walk::Walker& walker = s.shown.driver->walker();
+        const MinimapInput map{&s.shown.driver->session().layout(), desc.room, walker.physical_to_virtual(),
                                &walker.links().transfer, s.physical};
         add_minimap(batch, map, {float(fb_w) - side - 8.0f, float(fb_h) - side - 8.0f}, side);
     }
@@ -204,7 +206,9 @@ bool run_frame(PreviewSession& s, long frame, std::ostream& err) {
     poll_reload(s, now);
     if (keys.reset) reset_walk(s);
     s.physical = next_physical_head(s, frame, dt);
-    const std::vector<int> passed = s.shown.walker->step(s.physical);
+    // The options' frame places the eyes of the changes' seen test.
+    const std::vector<int> passed =
+        walk_shown(s.shown, *s.state, s.physical, frame_time(s, frame), s.options.frame).teleports;
     s.physical_hands = physical_hands(s, frame);
 
     int fb_w = 0, fb_h = 0;
