@@ -89,12 +89,13 @@ render::FrameDesc frame_desc(const PreviewSession& s, long frame, const PixelRec
 }
 
 FrameRecord frame_record(const PreviewSession& s, long frame, const render::FrameDesc& desc,
-                         const std::vector<int>& passed) {
-    const layout::Layout& lay = s.shown.session->layout();
+                         const session::WalkedFrame& walked) {
+    const layout::Layout& lay = s.shown.session->layout();  // as loaded: the walked frame's indices are its
     FrameRecord r;
     r.frame = frame;
     r.room = lay.rooms[desc.room].id;
-    for (int p : passed) r.teleports.push_back(lay.portals[p].id);
+    for (int p : walked.teleports) r.teleports.push_back(lay.portals[p].id);
+    for (int c : walked.changes) r.changes.push_back(lay.changes[static_cast<std::size_t>(c)].id);
     r.pose = desc.head;
     r.physical = s.physical;
     r.position = s.shown.driver->walker().position();
@@ -107,12 +108,12 @@ FrameRecord frame_record(const PreviewSession& s, long frame, const render::Fram
 // With --screenshots: the renderer's image and the frame's line. Returns the
 // seconds spent saving (not part of the frame time; the drawing it waits for is).
 double save_rendered_frame(PreviewSession& s, long frame, const render::FrameDesc& desc,
-                           const std::vector<int>& passed) {
+                           const session::WalkedFrame& walked) {
     if (!s.files.every_frame) return 0.0;
     glFinish();
     const Clock::time_point start = Clock::now();
     save_frame(s.files, render::read_target(*s.state, s.shown.renderer->target()),
-               frame_record(s, frame, desc, passed));
+               frame_record(s, frame, desc, walked));
     return seconds_since(start);
 }
 
@@ -207,8 +208,8 @@ bool run_frame(PreviewSession& s, long frame, std::ostream& err) {
     if (keys.reset) reset_walk(s);
     s.physical = next_physical_head(s, frame, dt);
     // The options' frame places the eyes of the changes' seen test.
-    const std::vector<int> passed =
-        walk_shown(s.shown, *s.state, s.physical, frame_time(s, frame), s.options.frame).teleports;
+    const session::WalkedFrame walked =
+        walk_shown(s.shown, *s.state, s.physical, frame_time(s, frame), s.options.frame);
     s.physical_hands = physical_hands(s, frame);
 
     int fb_w = 0, fb_h = 0;
@@ -217,7 +218,7 @@ bool run_frame(PreviewSession& s, long frame, std::ostream& err) {
     const WindowLayout places = window_layout(fb_w, fb_h, eye_aspect(s.options), s.options.view);
     const render::FrameDesc desc = frame_desc(s, frame, places.eye_rects[0]);
     check(cli::with_flags(s.shown.renderer->draw(desc, &s.stats)));
-    s.clock.io_seconds = save_rendered_frame(s, frame, desc, passed);
+    s.clock.io_seconds = save_rendered_frame(s, frame, desc, walked);
     draw_window(s, places, desc, fb_w, fb_h);
     s.clock.io_seconds += save_window_files(s, frame, keys.screenshot, fb_w, fb_h, err);
     // As the renderer does: nothing stays bound between frames, so an object
