@@ -90,20 +90,41 @@ std::string frame_line(const layout::Layout& layout, const session::WalkedFrame&
     return line + "}\n";
 }
 
+// The seen test's cost over a walk (--stats).
+struct SeenCost {
+    std::vector<double> seconds;
+    int passes_max = 0;
+    void add(const session::WalkDriver& driver) {
+        if (!driver.seen_asked()) return;
+        seconds.push_back(driver.seen_seconds());
+        passes_max = std::max(passes_max, driver.seen_passes());
+    }
+    std::string line(std::size_t frames) {
+        std::sort(seconds.begin(), seconds.end());
+        const double median = seconds.empty() ? 0.0 : seconds[seconds.size() / 2];
+        const double most = seconds.empty() ? 0.0 : seconds.back();
+        return "stats: frames=" + std::to_string(frames) + " seen_tests=" + std::to_string(seconds.size()) +
+               " seen_passes_max=" + std::to_string(passes_max) + " seen_ms_median=" + format_number(median * 1e3) +
+               " seen_ms_max=" + format_number(most * 1e3) + "\n";
+    }
+};
+
 }  // namespace
 
 int run_walk_stream(const session::Session& session, std::istream& in, const std::string& name, std::ostream& out,
-                    std::ostream& err, double fps, const math::View& view) {
+                    std::ostream& err, const WalkSettings& settings) {
     const layout::PathFrames path = layout::read_path_frames_stream(in, name);
     if (!path) {
         err << one_line(path.error()) << '\n';
         return 1;
     }
     const std::vector<layout::PathFrame>& frames = *path;
-    session::WalkDriver driver(session, view);
+    session::WalkDriver driver(session, settings.view);
+    SeenCost cost;
     for (std::size_t frame = 0; frame < frames.size(); ++frame) {
         const session::WalkedFrame f =
-            driver.step(frames[frame].head, frames[frame].hands, static_cast<double>(frame) / fps);
+            driver.step(frames[frame].head, frames[frame].hands, static_cast<double>(frame) / settings.fps);
+        cost.add(driver);
         // The walker stops testing at the cap (a head moving absurdly far in
         // one frame, or doors that lead into each other): say so, once a frame.
         if (static_cast<int>(f.teleports.size()) >= walk::kMaxCrossingsPerFrame)
@@ -114,18 +135,19 @@ int run_walk_stream(const session::Session& session, std::istream& in, const std
         if (!out) break;  // standard output failed (a full disk): main reports it
     }
     out.flush();
+    if (settings.stats) err << cost.line(frames.size());
     return 0;
 }
 
 int run_walk(const session::Session& session, const std::string& path_file, std::ostream& out, std::ostream& err,
-             double fps, const math::View& view) {
+             const WalkSettings& settings) {
     const Result<std::vector<unsigned char>> bytes = read_file_bytes(path_file, layout::kMaxPathFileBytes, false);
     if (!bytes) {
         err << one_line(path_file + ": " + bytes.error()) << '\n';
         return 1;
     }
     std::istringstream in(std::string(bytes->begin(), bytes->end()));
-    return run_walk_stream(session, in, path_file, out, err, fps, view);
+    return run_walk_stream(session, in, path_file, out, err, settings);
 }
 
 }  // namespace impossible::app

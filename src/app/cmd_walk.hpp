@@ -37,14 +37,21 @@ namespace impossible::app {
 
 // Reads the path file and replays it. Returns 0, or 1 on a bad or unreadable
 // path file (one line on err).
-// `fps` (> 0, finite): line k is at time k / fps.
-// `view`: the view options that place the eyes of the seen test (a layout
-// with changes; layout-format.md, "Changes while walking").
+struct WalkSettings {
+    // Line k is at time k / fps (> 0, finite).
+    double fps = layout::kDefaultPathFps;
+    // The view options that place the eyes of the seen test (a layout with
+    // changes; layout-format.md, "Changes while walking").
+    math::View view;
+    // --stats: one line on err after the walk, "stats: frames=N
+    // seen_tests=K seen_passes_max=P seen_ms_median=X seen_ms_max=Y".
+    bool stats = false;
+};
 int run_walk(const session::Session& session, const std::string& path_file, std::ostream& out, std::ostream& err,
-             double fps = layout::kDefaultPathFps, const math::View& view = {});
+             const WalkSettings& settings = {});
 
 // The same on an already open stream; `name` is the FILE of error messages.
 int run_walk_stream(const session::Session& session, std::istream& in, const std::string& name, std::ostream& out,
-                    std::ostream& err, double fps = layout::kDefaultPathFps, const math::View& view = {});
+                    std::ostream& err, const WalkSettings& settings = {});
 
 }  // namespace impossible::app

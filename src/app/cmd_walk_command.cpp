@@ -17,12 +17,14 @@ namespace {
 struct WalkOptions {
     std::optional<std::string> path;  // required
     double fps = layout::kDefaultPathFps;
+    bool stats = false;
 };
 
 // Described in the usage text.
 constexpr Option<WalkOptions> kWalkOptions[] = {
     {"--path", "FILE", nullptr, [](WalkOptions& o, const OptionValue& v) { o.path = v.text; }},
     {"--fps", "N", nullptr, [](WalkOptions& o, const OptionValue& v) { o.fps = parse_fps(v); }},
+    {"--stats", nullptr, nullptr, [](WalkOptions& o, const OptionValue&) { o.stats = true; }},
 };
 
 // render's view options that place the eyes of the seen test (cli.md, walk).
@@ -37,7 +39,7 @@ OptionTable<FrameOptions> walk_view_rows() {
 int run_walk_command(const Args& args, std::ostream& out, std::ostream& err) {
     const ParsedArgs parsed = parse_args(args, 1, kWalkOptions, walk_view_rows());
     if (parsed.help) {
-        out << "usage: impossible walk LAYOUT --path FILE [--fps N]\n"
+        out << "usage: impossible walk LAYOUT --path FILE [--fps N] [--stats] [view options]\n"
                "Replays a walk: FILE holds one physical head pose a line, X Y Z YAW PITCH ROLL, or 18\n"
                "numbers: the head, then the left and the right hand (blank lines and lines starting\n"
                "with # are skipped). Prints one JSON object a line:\n"
@@ -49,7 +51,8 @@ int run_walk_command(const Args& args, std::ostream& out, std::ostream& err) {
                "that reaches the limit gets a warning on stderr.\n"
                "A layout with \"changes\" is walked with the pairing in force: a line has\n"
                "\"changes\":[\"ID\",...] at the frame a change is made, where neither eye sees a door it\n"
-               "affects; the eyes are placed by render's view options (docs/changes.md):\n\n"
+               "affects; the eyes are placed by render's view options (docs/changes.md). --stats prints\n"
+               "the seen test's cost to stderr: frames it ran, portal passes, median and largest time.\n\n"
             << options_help(walk_view_rows(), kViewHelpColumn);
         return kExitOk;
     }
@@ -62,7 +65,7 @@ int run_walk_command(const Args& args, std::ostream& out, std::ostream& err) {
     finish_frame_options(parsed, view);
     if (!options.path) throw UsageError("walk needs --path FILE");
     const session::Session session(load_layout_or_default(parsed.positional[0]));
-    return run_walk(session, *options.path, out, err, options.fps, view.frame);
+    return run_walk(session, *options.path, out, err, {options.fps, view.frame, options.stats});
 }
 
 }  // namespace impossible::app

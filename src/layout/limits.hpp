@@ -22,6 +22,9 @@ inline constexpr std::size_t kMaxValues = 200'000;
 
 inline constexpr std::size_t kMaxRooms = 10'000;
 inline constexpr std::size_t kMaxPortals = 20'000;
+// layout-format.md, "Changes while walking": entries of `changes`. The walker
+// considers each not yet made at every frame.
+inline constexpr std::size_t kMaxChanges = 10'000;
 inline constexpr std::size_t kMaxPropsPerRoom = 10'000;
 inline constexpr std::size_t kMaxPlayAreaCorners = 10'000;
 // Corners (so walls) of one prism room's `floor`. A curved corridor in 1°

@@ -187,11 +187,7 @@ void link_start(Checker& check, StartDraft& start, const std::vector<detail::Roo
 // renumbered without the volumes between them), the volumes into
 // layout.volumes.
 void add_portals(std::vector<detail::PortalDraft>& portals, Layout& layout) {
-    std::vector<int> index(portals.size(), -1);
-    int next = 0;
-    for (std::size_t i = 0; i < portals.size(); ++i) {
-        if (!portals[i].volume) index[i] = next++;
-    }
+    const std::vector<int> index = detail::paired_indices(portals);
     for (detail::PortalDraft& draft : portals) {
         Portal& p = draft.portal;
         if (draft.volume) {
@@ -213,7 +209,7 @@ void read_layout(Checker& check, const json& root, const std::string& base_dir, 
     }
     check.check_fields(top, root,
                        {"format", "version", "name", "play_area", "start", "rooms", "portals", "hands", "lighting",
-                        "light_depth", "exposure"},
+                        "light_depth", "exposure", "changes"},
                        {"format", "version", "start", "rooms"});
     read_header(check, root, layout);
 
@@ -235,6 +231,11 @@ void read_layout(Checker& check, const json& root, const std::string& base_dir, 
     detail::check_holes(check, portals, rooms);
     detail::warn_doors_facing_out(check, portals, rooms);
     link_start(check, start, rooms, rooms_known);
+    std::vector<Change> changes;
+    if (const json* v = field(root, "changes")) {
+        changes = detail::read_changes(check, top / "changes", *v, portals, rooms, start.start.room, rooms_known,
+                                       ids_reliable);
+    }
     std::optional<HandShape> hands;
     if (const json* v = field(root, "hands")) hands = detail::read_hands(check, top / "hands", *v, models);
     if (!check.has_errors()) {
@@ -246,6 +247,7 @@ void read_layout(Checker& check, const json& root, const std::string& base_dir, 
     layout.start = start.start;
     for (detail::RoomDraft& room : rooms) layout.rooms.push_back(std::move(room.room));
     add_portals(portals, layout);
+    layout.changes = std::move(changes);
     if (hands) layout.hands = std::move(*hands);
     layout.files_read = models.files_read();
 }

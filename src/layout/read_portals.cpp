@@ -345,6 +345,15 @@ std::vector<PortalDraft> read_portals(Checker& check, const Path& at, const json
     return drafts;
 }
 
+std::vector<int> paired_indices(const std::vector<PortalDraft>& portals) {
+    std::vector<int> index(portals.size(), -1);
+    int next = 0;
+    for (std::size_t i = 0; i < portals.size(); ++i) {
+        if (!portals[i].volume) index[i] = next++;
+    }
+    return index;
+}
+
 void pair_portals(Checker& check, std::vector<PortalDraft>& portals, const std::vector<RoomDraft>& rooms,
                   bool rooms_known) {
     const std::map<std::string, int> room_index = index_by_id(rooms);

@@ -106,6 +106,21 @@ std::vector<PortalDraft> read_portals(Checker& check, const Path& at, const json
 void pair_portals(Checker& check, std::vector<PortalDraft>& portals, const std::vector<RoomDraft>& rooms,
                   bool rooms_known);
 
+// The index in Layout::portals of each portal draft: the doors, mirrors and
+// windows in file order, the volumes left out (-1).
+std::vector<int> paired_indices(const std::vector<PortalDraft>& portals);
+
+// layout-format.md, "Changes while walking": the top-level `changes`, read
+// once pair_portals and link_start have run (read_changes.cpp), each pair's
+// doors as indices into Layout::portals (paired_indices). Without
+// `rooms_known` an unknown room id is not reported, nor an unknown change id
+// without `ids_reliable` (no object repeats a key). If no error has been
+// reported by then, warnings for a change that can never happen and for one
+// that changes nothing.
+std::vector<Change> read_changes(Checker& check, const Path& at, const json& changes,
+                                 const std::vector<PortalDraft>& portals, const std::vector<RoomDraft>& rooms,
+                                 int start_room, bool rooms_known, bool ids_reliable);
+
 // Volumes (layout-format.md, "Volume portals"): each target names a room
 // without portals of its own (of any kind, volumes included), and the
 // volumes of a room do not overlap; a volume wholly outside its room gets a

@@ -1,5 +1,7 @@
 #include "session/walk_driver.hpp"
 
+#include <chrono>
+
 #include "changes/seen.hpp"
 #include "layout/path_file.hpp"
 
@@ -39,6 +41,7 @@ void WalkDriver::resume(int room, const math::dmat4& physical_to_virtual, const 
 }
 
 std::vector<char> WalkDriver::seen_doors() {
+    const auto start = std::chrono::steady_clock::now();
     math::View view = view_;
     walk::set_walked_view(view, walker_, std::nullopt);
     const changes::SeenPortals seen = changes::seen_portals(current_->layout(), current_->links(), view);
@@ -46,11 +49,15 @@ std::vector<char> WalkDriver::seen_doors() {
     std::vector<char> base(session_->layout().portals.size(), 0);
     for (std::size_t k = 0; k < seen.seen.size(); ++k)
         if (seen.seen[k]) base[static_cast<std::size_t>(base_index_[k])] = 1;
+    seen_asked_ = true;
+    seen_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return base;
 }
 
 std::vector<int> WalkDriver::consider_changes(double time) {
+    seen_asked_ = false;
     seen_passes_ = 0;
+    seen_seconds_ = 0.0;
     if (!changes_ || !changes_->pending()) return {};
     const std::vector<int> made = changes_->consider(frame_, walker_.room(), time, [this] { return seen_doors(); });
     if (made.empty()) return made;

@@ -79,8 +79,11 @@ public:
     const Session& session() const { return *current_; }
     // The changes' state; none without changes.
     const changes::ChangeWalk* changes() const { return changes_ ? &*changes_ : nullptr; }
-    // Portal passes the last frame's seen test made (0 when not asked).
+    // The last frame's seen test: whether it was asked, its portal passes
+    // and its processor-independent cost in seconds (a monotonic clock).
+    bool seen_asked() const { return seen_asked_; }
     int seen_passes() const { return seen_passes_; }
+    double seen_seconds() const { return seen_seconds_; }
 
 private:
     const walk::ObjectSet& objects();  // built at the first frame that needs it
@@ -95,7 +98,9 @@ private:
     math::View view_;
     std::optional<changes::ChangeWalk> changes_;
     int frame_ = 0;
+    bool seen_asked_ = false;
     int seen_passes_ = 0;
+    double seen_seconds_ = 0.0;
     bool moves_ = false;  // any_motion(layout)
     walk::Walker walker_;
     std::optional<walk::ObjectSet> objects_;

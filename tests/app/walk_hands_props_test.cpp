@@ -32,7 +32,9 @@ HandsReplay hands_replay(const layout::Layout& l, const std::string& text, doubl
     std::istringstream in(text);
     std::ostringstream out, err;
     HandsReplay r;
-    r.status = run_walk_stream(session::Session(l), in, "walk.txt", out, err, fps);
+    WalkSettings settings;
+    settings.fps = fps;
+    r.status = run_walk_stream(session::Session(l), in, "walk.txt", out, err, settings);
     r.out = out.str();
     r.err = err.str();
     std::istringstream lines(r.out);

@@ -2,6 +2,7 @@
 // flips, deletions, inserted JSON tokens, odd numbers, repeated keys). Each
 // result must be either errors (well-formed, in file order) or a layout that
 // keeps every promise of layout.hpp; nothing may crash or take long.
+#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cmath>
@@ -76,6 +77,36 @@ void check_prism(const Room& room) {
     }
     EXPECT_EQ(lo, glm::dvec2(room.min.x, room.min.z));
     EXPECT_EQ(hi, glm::dvec2(room.max.x, room.max.z));
+}
+
+// The promises of a layout's changes (layout.hpp, Change): a condition,
+// an earlier `after`, and pairs of doors of one size, each door once.
+void check_changes(const Layout& layout) {
+    const int portal_count = int(layout.portals.size());
+    for (std::size_t i = 0; i < layout.changes.size(); ++i) {
+        const Change& change = layout.changes[i];
+        EXPECT_FALSE(change.id.empty());
+        const ChangeWhen& when = change.when;
+        EXPECT_TRUE(when.enter >= 0 || when.after >= 0 || when.time.has_value());
+        EXPECT_LT(when.enter, int(layout.rooms.size()));
+        EXPECT_LT(when.after, int(i));
+        EXPECT_TRUE(!when.time || (std::isfinite(*when.time) && *when.time >= 0.0));
+        EXPECT_FALSE(change.pairs.empty());
+        std::vector<int> doors;
+        for (const auto& pair : change.pairs) {
+            for (const int door : pair) {
+                ASSERT_GE(door, 0);
+                ASSERT_LT(door, portal_count);
+                EXPECT_EQ(layout.portals[std::size_t(door)].kind, PortalKind::Door);
+                EXPECT_EQ(std::count(doors.begin(), doors.end(), door), 0) << "each door once in a change";
+                doors.push_back(door);
+            }
+            const Portal& a = layout.portals[std::size_t(pair[0])];
+            const Portal& b = layout.portals[std::size_t(pair[1])];
+            EXPECT_NEAR(a.rect.width, b.rect.width, 1e-6);
+            EXPECT_NEAR(a.rect.height, b.rect.height, 1e-6);
+        }
+    }
 }
 
 // The promises of a loaded layout (layout.hpp).
@@ -155,6 +186,7 @@ void check_invariants(const Layout& layout) {
         EXPECT_NEAR(p.rect.width, target.rect.width, 1e-6);
         EXPECT_NEAR(p.rect.height, target.rect.height, 1e-6);
     }
+    check_changes(layout);
 }
 
 void check_diagnostics(const std::vector<Diagnostic>& list, const std::string& text) {
@@ -306,7 +338,8 @@ TEST(LayoutFuzzLoop, MutatedLayoutsGiveErrorsOrValidLayouts) {
         read_text(kLayoutDir + "/props.json"),
         read_text(kLayoutDir + "/mirrors_windows.json"),
         read_text(kLayoutDir + "/lit_rooms.json"),
-        read_text(std::string(IMPOSSIBLE_SOURCE_DIR) + "/tests/fuzz/layout_corpus/prism_rooms.json")};
+        read_text(std::string(IMPOSSIBLE_SOURCE_DIR) + "/tests/fuzz/layout_corpus/prism_rooms.json"),
+        read_text(std::string(IMPOSSIBLE_SOURCE_DIR) + "/tests/fuzz/layout_corpus/changes.json")};
     for (const std::string& seed : seeds) {
         const LoadResult r = load_layout_text(seed, "fuzz.json", kLayoutDir);
         ASSERT_TRUE(r.layout.has_value()) << all_messages(r.errors);
