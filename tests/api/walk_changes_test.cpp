@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
@@ -12,6 +13,8 @@
 #include "api/api_data.hpp"
 #include "changes/change_layouts.hpp"
 #include "impossible/impossible.hpp"
+
+#include <nlohmann/json.hpp>
 
 namespace impossible::api {
 namespace {
@@ -127,6 +130,51 @@ TEST(ApiWalkChanges, TheTracerAndTheRendererDrawTheClosedDoorAsItsWall) {
     const Expected<Frame> drawn = renderer->render(view);
     ASSERT_TRUE(drawn) << drawn.error().message;
     EXPECT_EQ(drawn->ids, closed->ids);
+}
+
+// The lines `impossible walk LAYOUT --path PATH OPTIONS` prints, parsed.
+std::vector<nlohmann::json> cli_walk(const std::string& layout, const std::string& path, const std::string& options) {
+    const std::string command =
+        std::string(IMPOSSIBLE_BINARY) + " walk '" + layout + "' --path '" + path + "' " + options;
+    std::vector<nlohmann::json> lines;
+    FILE* out = popen(command.c_str(), "r");
+    if (out == nullptr) return lines;
+    std::string text;
+    char buffer[4096];
+    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, out)) > 0;) text.append(buffer, n);
+    pclose(out);
+    for (std::size_t at = 0, end; (end = text.find('\n', at)) != std::string::npos; at = end + 1)
+        lines.push_back(nlohmann::json::parse(text.substr(at, end - at)));
+    return lines;
+}
+
+TEST(ApiWalkChanges, TheExampleWalksMakeTheirChangesAtWalksFrames) {
+    for (const char* name : {"door_swap", "rerouted_corridor"}) {
+        SCOPED_TRACE(name);
+        const std::string base = std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/" + name;
+        const Expected<Layout> layout = Layout::load(base + ".json");
+        ASSERT_TRUE(layout) << layout.error().message;
+        const Expected<std::vector<PathLine>> lines = read_path_lines(base + "_walk.txt");
+        ASSERT_TRUE(lines) << lines.error().message;
+        View view;  // the eyes of walk --size 320x180 --fov 60
+        view.width = 320;
+        view.height = 180;
+        view.fov_deg = 60;
+        const Expected<std::vector<WalkStep>> steps = walk(*layout, *lines, 90.0, view);
+        ASSERT_TRUE(steps) << steps.error().message;
+        const std::vector<nlohmann::json> cli = cli_walk(base + ".json", base + "_walk.txt", "--size 320x180 --fov 60");
+        ASSERT_EQ(cli.size(), steps->size());
+        int made = 0;
+        for (std::size_t k = 0; k < cli.size(); ++k) {
+            EXPECT_EQ((*steps)[k].room, cli[k]["room"]) << k;
+            const std::vector<std::string> expected = cli[k].contains("changes")
+                                                          ? cli[k]["changes"].get<std::vector<std::string>>()
+                                                          : std::vector<std::string>{};
+            EXPECT_EQ((*steps)[k].changes, expected) << k;
+            made += static_cast<int>(expected.size());
+        }
+        EXPECT_EQ(made, 1);
+    }
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include "bench/plan.hpp"
 #include "changes/change_layouts.hpp"
+#include "cli/layout_source.hpp"
 #include "common/temp_dir.hpp"
 #include "session/walk_driver.hpp"
 
@@ -63,6 +64,28 @@ TEST_F(BenchWalkChanges, TheBenchsViewOptionsPlaceTheEyesOfTheSeenTest) {
     o.view.frame.fov_y_deg = 10.0;
     EXPECT_EQ(bench_poses(session, o, &stages)[1].stage, 1);
     EXPECT_EQ(stages.size(), 1u);
+}
+
+TEST_F(BenchWalkChanges, TheDoorSwapWalkChangesItsStageWhereWalkMakesTheSwap) {
+    const std::string base = std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/door_swap";
+    const session::Session session(cli::load_layout_or_default(base + ".json"));
+    BenchOptions o;
+    o.path = base + "_walk.txt";
+    std::vector<session::Session> stages;
+    const std::vector<BenchPose> poses = bench_poses(session, o, &stages);
+    ASSERT_EQ(stages.size(), 1u);
+    const layout::PathFrames frames = layout::read_path_frames_file(*o.path);
+    ASSERT_TRUE(frames) << frames.error();
+    session::WalkDriver driver(session);
+    for (std::size_t k = 0; k < poses.size(); ++k) {
+        const bool made = !driver.step((*frames)[k].head, std::nullopt, k / 90.0).changes.empty();
+        if (made) {
+            EXPECT_EQ(poses[k].stage, 1) << k;
+            EXPECT_EQ(poses[k - 1].stage, 0) << k;
+        }
+        EXPECT_EQ(poses[k].room, driver.walker().room()) << k;
+    }
+    EXPECT_EQ(poses.back().stage, 1);
 }
 
 }  // namespace
