@@ -21,6 +21,7 @@ using cli::value_or_throw;
 layout::Layout keep_first_portals(const layout::Layout& layout, int n) {
     layout::Layout out = layout;
     out.portals.clear();
+    out.changes.clear();  // they name the given layout's portals; bench walks that layout, and draws this one
     std::vector<int> renumbered(layout.portals.size(), -1);
     for (size_t i = 0; i < layout.portals.size(); ++i) {
         const int target = layout.portals[i].target;  // -1 for a mirror, which needs no partner

@@ -15,7 +15,8 @@ namespace impossible::bench {
 
 // The layout with only portals[0..n) kept whose targets are also among them
 // (a mirror, which has no target, is kept when it is among them); the others
-// are closed (removed). Targets are renumbered.
+// are closed (removed). Targets are renumbered; the result has no changes
+// (the walk makes them on the layout given, bench_poses).
 layout::Layout keep_first_portals(const layout::Layout& layout, int n);
 
 // One configuration measured: a layout variant (index into the bench's

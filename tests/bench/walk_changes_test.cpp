@@ -47,6 +47,15 @@ TEST_F(BenchWalkChanges, EachLineIsDrawnWithThePairingInForceAtIt) {
     ASSERT_EQ(plan.stages[0].size(), plan.sessions.size());
     EXPECT_EQ(plan.session_of(0, 0).layout().portals.size(), 4u);
     EXPECT_EQ(plan.session_of(0, 1).layout().portals.size(), 2u);
+    // --portals N: the first N portals of each stage's layout, without changes
+    // (their indices are the loaded layout's).
+    o.portals = 2;
+    BenchPlan kept = plan_bench(session, o);
+    add_stages(kept, stages, o);
+    EXPECT_TRUE(kept.session_of(0, 0).layout().changes.empty());
+    EXPECT_EQ(kept.session_of(0, 0).layout().portals.size(), 2u);  // hall_east and study_west
+    EXPECT_EQ(kept.session_of(0, 1).layout().portals.size(), 2u);  // hall_east and garden_west
+    EXPECT_EQ(kept.session_of(0, 1).layout().portals[1].id, "garden_west");
 }
 
 TEST_F(BenchWalkChanges, TheBenchsViewOptionsPlaceTheEyesOfTheSeenTest) {
