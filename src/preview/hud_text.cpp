@@ -54,7 +54,7 @@ std::vector<std::string> status_lines(const PreviewOptions& o, const HudFacts& f
 
 }  // namespace
 
-std::string changes_line(const layout::Layout& layout, const changes::ChangeWalk& walk) {
+std::string changes_line(const layout::Layout& layout, const changes::ChangeWalk& walk, int seen_passes) {
     std::string armed, made;
     int waiting = 0;
     for (std::size_t c = 0; c < layout.changes.size(); ++c) {
@@ -68,7 +68,8 @@ std::string changes_line(const layout::Layout& layout, const changes::ChangeWalk
             ++waiting;
     }
     return "changes armed: " + (armed.empty() ? "none" : armed) + "   made: " + (made.empty() ? "none" : made) +
-           "   not armed: " + std::to_string(waiting);
+           "   not armed: " + std::to_string(waiting) +
+           (seen_passes > 0 ? "   seen test " + std::to_string(seen_passes) + " passes" : "");
 }
 
 std::vector<std::string> reload_error_lines(const std::vector<std::string>& errors) {

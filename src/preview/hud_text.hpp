@@ -39,8 +39,10 @@ struct HudFacts {
 
 // The HUD's line on a layout's changes (layout-format.md, "Changes while
 // walking"): those armed and waiting for their doors to be out of sight,
-// those made (with the walk's frame), and how many are not armed yet.
-std::string changes_line(const layout::Layout& layout, const changes::ChangeWalk& walk);
+// those made (with the walk's frame), how many are not armed yet, and the
+// portal passes of the frame's seen test (session::WalkDriver::seen_passes;
+// none when it did not run: no armed change waited).
+std::string changes_line(const layout::Layout& layout, const changes::ChangeWalk& walk, int seen_passes);
 
 inline constexpr std::size_t kMaxReloadErrors = 8;
 

@@ -161,7 +161,8 @@ HudFacts hud_facts(const PreviewSession& s, const render::FrameDesc& desc) {
     f.light_images = s.stats.light_images;
     f.light_depth = desc.light_depth.value_or(layout.light_depth);
     f.exposure = desc.exposure.value_or(layout.exposure);
-    if (const changes::ChangeWalk* walk = s.shown.driver->changes()) f.changes = changes_line(layout, *walk);
+    if (const changes::ChangeWalk* walk = s.shown.driver->changes())
+        f.changes = changes_line(layout, *walk, s.shown.driver->seen_passes());
     return f;
 }
 

@@ -24,14 +24,18 @@ TEST(PreviewChanges, TheHudLineNamesTheArmedAndTheMadeChanges) {
     session::WalkDriver driver(s);
     driver.step(at(0.0, -90));
     ASSERT_NE(driver.changes(), nullptr);
-    EXPECT_EQ(changes_line(l, *driver.changes()), "changes armed: none   made: none   not armed: 2");
+    EXPECT_EQ(driver.seen_passes(), 0);  // nothing armed: no seen test
+    EXPECT_EQ(changes_line(l, *driver.changes(), 0), "changes armed: none   made: none   not armed: 2");
     driver.step(at(3.0, 90));  // in the study, study_west in view
-    EXPECT_EQ(changes_line(l, *driver.changes()), "changes armed: swap   made: none   not armed: 1");
+    EXPECT_EQ(changes_line(l, *driver.changes(), 0), "changes armed: swap   made: none   not armed: 1");
+    EXPECT_GT(driver.seen_passes(), 0);  // through study_west into the hall
+    EXPECT_EQ(changes_line(l, *driver.changes(), 3),
+              "changes armed: swap   made: none   not armed: 1   seen test 3 passes");
     driver.step(at(3.0, -90));  // turned away: made
-    EXPECT_EQ(changes_line(l, *driver.changes()), "changes armed: none   made: swap (frame 2)   not armed: 1");
+    EXPECT_EQ(changes_line(l, *driver.changes(), 0), "changes armed: none   made: swap (frame 2)   not armed: 1");
     // The HUD shows it under the room's line.
     HudFacts f;
-    f.changes = changes_line(l, *driver.changes());
+    f.changes = changes_line(l, *driver.changes(), 0);
     const HudText hud = hud_text(PreviewOptions{}, f, {});
     ASSERT_EQ(hud.lines.size(), 9u);
     EXPECT_EQ(hud.lines[3], f.changes);
