@@ -73,12 +73,14 @@ TEST_P(ExampleWalks, MakeTheirChangeWhereNoPixelShowsItsDoors) {
     EXPECT_NE(traced(turned, late).ids, traced(session, late).ids);
 }
 
-INSTANTIATE_TEST_SUITE_P(Layouts, ExampleWalks,
-                         ::testing::Values(Example{"door_swap.json", "door_swap_walk.txt", {"hall", "study", "garden"}, 100},
-                                           Example{"rerouted_corridor.json", "rerouted_corridor_walk.txt",
-                                                   {"lobby", "blue_corridor", "gallery", "red_corridor", "library"},
-                                                   219}),
-                         [](const auto& info) { return std::string(info.index == 0 ? "DoorSwap" : "ReroutedCorridor"); });
+INSTANTIATE_TEST_SUITE_P(
+    Layouts, ExampleWalks,
+    ::testing::Values(Example{"door_swap.json", "door_swap_walk.txt", {"hall", "study", "garden"}, 100},
+                      Example{"rerouted_corridor.json",
+                              "rerouted_corridor_walk.txt",
+                              {"lobby", "blue_corridor", "gallery", "red_corridor", "library"},
+                              219}),
+    [](const auto& info) { return std::string(info.index == 0 ? "DoorSwap" : "ReroutedCorridor"); });
 
 }  // namespace
 }  // namespace impossible::changes
