@@ -196,6 +196,14 @@ session::Session set_path_frame(render::FrameDesc& f, const session::Session& se
 
 }  // namespace
 
+session::Session session_frame_started_with(const session::Session& session, const ViewOptions& o) {
+    if (!o.path || o.path_frame.value_or(0) == 0) return session;
+    ViewOptions before = o;
+    before.path_frame = *o.path_frame - 1;
+    render::FrameDesc f = o.frame;
+    return set_path_frame(f, session, before);
+}
+
 render::FrameDesc frame_for(session::Session& session, const ViewOptions& o) {
     render::FrameDesc f = o.frame;
     if (o.path) {

@@ -83,6 +83,14 @@ std::string model_warnings_text(const session::Session& session);
 // bad path file, UsageError for a K past its last line.
 render::FrameDesc frame_for(session::Session& session, const ViewOptions& options);
 
+// With --path FILE --frame K (K > 0): the session with the pairing frame K
+// started with, the one `walk`'s seen test reads at line K (after the
+// changes made at lines 0..K-1, walked with the same view options); it
+// differs from frame_for's only where a change is made at line K.
+// `session` itself without --path or for K = 0. `session` is the loaded
+// one (before frame_for replaces it). Throws as frame_for does.
+session::Session session_frame_started_with(const session::Session& session, const ViewOptions& options);
+
 // The same frame for the reference tracer (threads: 0 = all cores).
 trace::TraceDesc trace_desc_for(const render::FrameDesc& frame, int threads = 0);
 

@@ -178,3 +178,38 @@ TEST(PathFrameOptions, VirtualPoseRoundTripsTheRotation) {
 
 }  // namespace
 }  // namespace impossible::cli
+
+namespace impossible::cli {
+namespace {
+
+// The target's id of door `id` in a session's layout ("" for none; a closed
+// door is not in it at all).
+std::string target_of(const session::Session& s, const std::string& id) {
+    for (const layout::Portal& p : s.layout().portals)
+        if (p.id == id) return p.target < 0 ? "" : s.layout().portals[static_cast<std::size_t>(p.target)].id;
+    return "(closed)";
+}
+
+// trace --portal-rays: the pairing frame K started with is the drawn one of
+// frame K - 1; at the line where walk makes a change (door_swap's "swap",
+// line 34 with the default view options) it is the pairing before it.
+TEST(PathFrameOptions, ThePairingAFrameStartedWithIsTheOneBeforeItsChange) {
+    const std::string dir = IMPOSSIBLE_SOURCE_DIR "/layouts/";
+    const session::Session loaded(load_layout_or_default(dir + "door_swap.json"));
+    for (const int k : {0, 33, 34, 35, 60}) {
+        const ViewOptions o = parse_path_options({"--path", dir + "door_swap_walk.txt", "--frame", std::to_string(k)});
+        session::Session drawn = loaded;
+        frame_for(drawn, o);
+        const session::Session started = session_frame_started_with(loaded, o);
+        // "swap" pairs study_left with garden_door: hall_door and study_right close.
+        EXPECT_EQ(target_of(drawn, "study_left"), k >= 34 ? "garden_door" : "hall_door") << k;
+        EXPECT_EQ(target_of(drawn, "hall_door"), k >= 34 ? "(closed)" : "study_left") << k;
+        EXPECT_EQ(target_of(started, "study_left"), k >= 35 ? "garden_door" : "hall_door") << k;
+        EXPECT_EQ(target_of(started, "study_right"), k >= 35 ? "(closed)" : "garden_door") << k;
+    }
+    // Without --path: the layout's own pairing.
+    EXPECT_EQ(target_of(session_frame_started_with(loaded, parse_path_options({})), "study_left"), "hall_door");
+}
+
+}  // namespace
+}  // namespace impossible::cli
