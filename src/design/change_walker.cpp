@@ -57,8 +57,7 @@ ChangeWalkResult walk_with_changes(const layout::Layout& layout, const std::vect
             r.changes.push_back(c);
             r.change_frames.push_back(walker.frame() - 1);
         }
-        if (std::find(r.rooms.begin(), r.rooms.end(), walker.room()) == r.rooms.end())
-            r.rooms.push_back(walker.room());
+        if (std::find(r.rooms.begin(), r.rooms.end(), walker.room()) == r.rooms.end()) r.rooms.push_back(walker.room());
     }
     return r;
 }

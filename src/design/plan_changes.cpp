@@ -38,7 +38,8 @@ void add_changes(Drawing& d, const layout::Layout& layout, const Report& r) {
                 label.y -= 0.38;
             } else {
                 d.shapes.push_back(stroke("changes", name, {a, b}, kChangeColour, 0.035, false, true));
-                for (const glm::dvec2& end : {a, b}) d.shapes.push_back(fill("changes", name, circle(end, 0.06), kChangeColour));
+                for (const glm::dvec2& end : {a, b})
+                    d.shapes.push_back(fill("changes", name, circle(end, 0.06), kChangeColour));
                 label.y -= 0.12;
             }
             PlanShape text = fill("changes", name, {label}, kChangeColour);

@@ -25,8 +25,8 @@ namespace impossible::design {
 
 struct ChangeReach {
     bool can_happen = true;
-    std::vector<int> affected;          // changes::affected_doors under the pairing before it
-    std::vector<int> makes_reachable;   // rooms, file order
+    std::vector<int> affected;         // changes::affected_doors under the pairing before it
+    std::vector<int> makes_reachable;  // rooms, file order
 };
 
 struct ChangesReach {

@@ -61,7 +61,9 @@ const RoomGrid& ChangePlanner::grid(int room) {
 // One pose, as the path file will hold it, walked with the changes.
 Went ChangePlanner::pose(const math::HeadPose& raw) {
     const math::HeadPose p{{path_rounded(raw.position.x), path_rounded(raw.position.y), path_rounded(raw.position.z)},
-                           path_rounded(raw.yaw_deg), path_rounded(raw.pitch_deg), 0.0};
+                           path_rounded(raw.yaw_deg),
+                           path_rounded(raw.pitch_deg),
+                           0.0};
     const math::dvec3 before = sim_.walker().position();
     const bool first = t_.poses.empty();
     t_.poses.push_back(p);
@@ -81,8 +83,8 @@ Went ChangePlanner::pose(const math::HeadPose& raw) {
     for (const int c : s.changes) {
         t_.changes.push_back(c);
         t_.notes.push_back({t_.poses.size() - 1, "change " + base_.changes[static_cast<std::size_t>(c)].id +
-                                                     " is made here, in " + base_.rooms[sim_.room()].id +
-                                                     " (frame " + std::to_string(t_.poses.size() - 1) + ")"});
+                                                     " is made here, in " + base_.rooms[sim_.room()].id + " (frame " +
+                                                     std::to_string(t_.poses.size() - 1) + ")"});
     }
     restage();
     return Went::Changed;
@@ -170,7 +172,8 @@ Went ChangePlanner::leg(int target, std::string& why) {
     }
     const layout::Room& box = sim_.current().rooms[target];
     const glm::dvec2 centre{0.5 * (box.min.x + box.max.x), 0.5 * (box.min.z + box.max.z)};
-    if (const auto c = grid(target).nearest_free(centre)) return walk_to(target, at, *c) == Went::Changed ? Went::Changed : Went::Ok;
+    if (const auto c = grid(target).nearest_free(centre))
+        return walk_to(target, at, *c) == Went::Changed ? Went::Changed : Went::Ok;
     return Went::Ok;
 }
 

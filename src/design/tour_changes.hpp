@@ -58,9 +58,7 @@ private:
 
     void restage();
     const RoomGrid& grid(int room);
-    bool visited(int room) const {
-        return std::find(t_.visited.begin(), t_.visited.end(), room) != t_.visited.end();
-    }
+    bool visited(int room) const { return std::find(t_.visited.begin(), t_.visited.end(), room) != t_.visited.end(); }
     glm::dvec2 here() const { return {sim_.walker().position().x, sim_.walker().position().z}; }
     Went pose(const math::HeadPose& p);
     Went go(int room, const math::dvec3& point, bool face = true);

@@ -56,17 +56,20 @@ Went ChangePlanner::wait_for(int c) {
         if (w == Went::Changed) return w;
         if (w == Went::Failed) {
             failed_[room] = why;
-            given_up_[static_cast<std::size_t>(c)] = "the tour cannot walk to its room \"" + base_.rooms[room].id + "\": " + why;
+            given_up_[static_cast<std::size_t>(c)] =
+                "the tour cannot walk to its room \"" + base_.rooms[room].id + "\": " + why;
             return w;
         }
     }
     const double now = static_cast<double>(sim_.frame()) / layout::kDefaultPathFps;
     const double until = change.when.time.value_or(0.0);
     std::string note = "waits in " + base_.rooms[room].id + " for change " + change.id + ": ";
-    if (until > now) note += "stands still until " + std::to_string(static_cast<long long>(std::ceil(until))) + " s, then ";
+    if (until > now)
+        note += "stands still until " + std::to_string(static_cast<long long>(std::ceil(until))) + " s, then ";
     t_.notes.push_back({t_.poses.size(), note + "turns away from its doors"});
     if (until > now + kMaxTourWait) {
-        given_up_[static_cast<std::size_t>(c)] = "its time, " + std::to_string(static_cast<long long>(std::ceil(until))) +
+        given_up_[static_cast<std::size_t>(c)] = "its time, " +
+                                                 std::to_string(static_cast<long long>(std::ceil(until))) +
                                                  " s, is more than " + std::to_string(static_cast<int>(kMaxTourWait)) +
                                                  " s after the tour comes to room \"" + base_.rooms[room].id + "\"";
         return Went::Failed;
@@ -126,7 +129,8 @@ std::string ChangePlanner::never_why(int c) const {
                "\", which the tour never makes";
     if (when.enter >= 0) {
         const auto why = why_.find(when.enter);
-        if (why != why_.end()) return "the tour cannot walk to its room \"" + base_.rooms[when.enter].id + "\": " + why->second;
+        if (why != why_.end())
+            return "the tour cannot walk to its room \"" + base_.rooms[when.enter].id + "\": " + why->second;
         return "no door leads to its room \"" + base_.rooms[when.enter].id + "\" on the tour's route";
     }
     return "the tour never waited for it";
@@ -154,13 +158,14 @@ Result<Tour> ChangePlanner::finish() {
                             room = base_.portals[static_cast<std::size_t>(d)].room;
             if (room < 0) continue;
             return Error{"the tour cannot visit room \"" + base_.rooms[room].id + "\": it needs change \"" +
-                         base_.changes[c].id + "\", which can never happen on its route: " +
-                         never_why(static_cast<int>(c))};
+                         base_.changes[c].id +
+                         "\", which can never happen on its route: " + never_why(static_cast<int>(c))};
         }
     t_.missed = missing;
     for (const int r : missing) {
         const auto why = why_.find(r);
-        t_.why.push_back(why != why_.end() ? why->second : "no door leads to it with the pairing the changes made left");
+        t_.why.push_back(why != why_.end() ? why->second
+                                           : "no door leads to it with the pairing the changes made left");
     }
     return t_;
 }
