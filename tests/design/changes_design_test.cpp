@@ -4,8 +4,8 @@
 // rooms its poses visit are checked by walking them again with
 // design::ChangeWalker (the seen test on render's default eyes) and after
 // a round trip through the path file's text.
-#include <nlohmann/json.hpp>
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "design/change_walker.hpp"
@@ -33,20 +33,18 @@ std::string door(const std::string& id, const std::string& room, double x, doubl
 // door with the vault's: the vault is reachable only after it, the attic
 // never (its door is closed by it).
 layout::Layout vault_layout(const std::string& when) {
-    const std::string text = R"({ "format": "impossible-layout", "version": 1,
+    const std::string text =
+        R"({ "format": "impossible-layout", "version": 1,
   "play_area": { "min": [-2.5, -2.5], "max": [5.5, 2.5] },
   "start": { "room": "hall", "position": [-1, 1.6, 1.5] },
-  "rooms": [)" + room("hall", -2, 0, 2, 2) + ",\n" +
-                             room("study", -2, -2, 2, 0) + ",\n" + room("vault", 3, 0, 5, 2) + ",\n" +
-                             room("attic", 3, -2, 5, 0) + "],\n\"portals\": [" +
-                             door("hall_west", "hall", -1, 0, 1, "study_west") + ",\n" +
-                             door("study_west", "study", -1, 0, -1, "hall_west") + ",\n" +
-                             door("hall_east", "hall", 1, 0, 1, "study_east") + ",\n" +
-                             door("study_east", "study", 1, 0, -1, "hall_east") + ",\n" +
-                             door("vault_door", "vault", 4, 0, 1, "attic_door") + ",\n" +
-                             door("attic_door", "attic", 4, 0, -1, "vault_door") + "],\n" +
-                             R"("changes": [ { "id": "open", "when": )" + when +
-                             R"(, "pairs": [["study_east", "vault_door"]] } ] })";
+  "rooms": [)" +
+        room("hall", -2, 0, 2, 2) + ",\n" + room("study", -2, -2, 2, 0) + ",\n" + room("vault", 3, 0, 5, 2) + ",\n" +
+        room("attic", 3, -2, 5, 0) + "],\n\"portals\": [" + door("hall_west", "hall", -1, 0, 1, "study_west") + ",\n" +
+        door("study_west", "study", -1, 0, -1, "hall_west") + ",\n" + door("hall_east", "hall", 1, 0, 1, "study_east") +
+        ",\n" + door("study_east", "study", 1, 0, -1, "hall_east") + ",\n" +
+        door("vault_door", "vault", 4, 0, 1, "attic_door") + ",\n" +
+        door("attic_door", "attic", 4, 0, -1, "vault_door") + "],\n" + R"("changes": [ { "id": "open", "when": )" +
+        when + R"(, "pairs": [["study_east", "vault_door"]] } ] })";
     const layout::LoadResult r = layout::load_layout_text(text, "vault.json", ".");
     std::string errors;
     for (const auto& d : r.errors) errors += d.str() + "\n";
@@ -193,7 +191,8 @@ TEST(ChangesTour, DoorSwapVisitsHallStudyAndGardenAndMakesTheSwap) {
     EXPECT_EQ(room_ids(l, w.rooms), (std::vector<std::string>{"garden", "hall", "study"}));
     EXPECT_EQ(w.changes, std::vector<int>{0});
     ASSERT_FALSE(t->notes.empty());
-    EXPECT_EQ(t->notes[0].text, "change swap is made here, in study (frame " + std::to_string(w.change_frames[0]) + ")");
+    EXPECT_EQ(t->notes[0].text,
+              "change swap is made here, in study (frame " + std::to_string(w.change_frames[0]) + ")");
     EXPECT_EQ(t->notes[0].pose, static_cast<std::size_t>(w.change_frames[0]));
 }
 
@@ -230,9 +229,9 @@ layout::Layout north_door_layout() {
     const std::string text = R"({ "format": "impossible-layout", "version": 1,
   "play_area": { "min": [-2.5, -2.5], "max": [5.5, 2.5] },
   "start": { "room": "hall", "position": [-1, 1.6, 1.5] },
-  "rooms": [)" + room("hall", -2, 0, 2, 2) + ",\n" +
-                             room("study", -2, -2, 2, 0) + ",\n" + room("attic", 3, -2, 5, 0) + "],\n\"portals\": [" +
-                             door("hall_west", "hall", -1, 0, 1, "study_west") + ",\n" +
+  "rooms": [)" + room("hall", -2, 0, 2, 2) +
+                             ",\n" + room("study", -2, -2, 2, 0) + ",\n" + room("attic", 3, -2, 5, 0) +
+                             "],\n\"portals\": [" + door("hall_west", "hall", -1, 0, 1, "study_west") + ",\n" +
                              door("study_west", "study", -1, 0, -1, "hall_west") + ",\n" +
                              door("study_north", "study", 0, -2, 1, "hall_back") + ",\n" +
                              door("hall_back", "hall", 0, 2, -1, "study_north") + ",\n" +
@@ -270,9 +269,10 @@ TEST(ChangesTour, FailsNamingTheChangeAndTheRoomWhenTheChangeCanNeverHappen) {
     const layout::Layout l = vault_layout(R"({ "enter": "study", "time": 100000 })");
     const auto t = design::plan_tour(l);
     ASSERT_FALSE(t.has_value());
-    EXPECT_EQ(t.error(),
-              "the tour cannot visit room \"vault\": it needs change \"open\", which can never happen on its route: its "
-              "time, 100000 s, is more than 600 s after the tour comes to room \"study\"");
+    EXPECT_EQ(
+        t.error(),
+        "the tour cannot visit room \"vault\": it needs change \"open\", which can never happen on its route: its "
+        "time, 100000 s, is more than 600 s after the tour comes to room \"study\"");
 }
 
 }  // namespace
