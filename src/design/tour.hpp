@@ -58,7 +58,8 @@ Result<Tour> plan_tour(const layout::Layout& layout, const TourOptions& options 
 // second), so the changes are armed and made as `walk` makes them. From
 // where the head is, it walks to the nearest room not yet visited that
 // doors lead to under the pairing in force (to the door, through it, on to
-// the room's free point nearest its centre), and plans again whenever a
+// the room's free point nearest its centre; rooms whose way passes the
+// room of a change it would arm come last), and plans again whenever a
 // change is made. With no such room left and rooms still to visit, it
 // walks to the room of the first change that can be armed, stands still
 // until its `time`, and turns on the spot (then on other spots, then

@@ -16,7 +16,7 @@ double path_rounded(double v) { return std::round(v * 1e4) / 1e4 + 0.0; }  // as
 
 }  // namespace
 
-void ChangePlanner::restage() {
+void ChangePlanner::restage(bool changed) {
     const layout::Layout& l = sim_.current();
     const links::PortalLinks& links = sim_.links();
     const std::size_t n = l.rooms.size();
@@ -26,6 +26,7 @@ void ChangePlanner::restage() {
     stage_.parent.assign(n, -1), stage_.via.assign(n, -1), stage_.doors.assign(n, 0);
     std::vector<math::dmat4> w(n, math::dmat4(1.0));
     const int start = sim_.room();
+    stage_.root = start;
     w[start] = sim_.walker().physical_to_virtual();
     stage_.to_physical[start] = math::rigid_inverse(w[start]);
     stage_.reachable[start] = 1;
@@ -47,7 +48,7 @@ void ChangePlanner::restage() {
     }
     obstacles_ = room_obstacles(l, links, o_.grid.head_height);
     grids_.clear();
-    failed_.clear();
+    if (changed) failed_.clear();
 }
 
 const RoomGrid& ChangePlanner::grid(int room) {
@@ -178,9 +179,25 @@ Went ChangePlanner::leg(int target, std::string& why) {
 }
 
 // The nearest room to visit that doors lead to with the pairing in force.
+// Rooms whose way there passes the `enter` room of a change that entering
+// would arm (not made, not armed, its `after` made) come last: arming a
+// change may re-pair doors on the way, and cut off rooms not yet visited.
 int ChangePlanner::next_room() const {
-    for (const int r : stage_.order)
-        if (goal_[r] && !visited(r) && !failed_.count(r)) return r;
+    const std::vector<changes::ChangeStatus>& status = sim_.changes().status();
+    std::vector<char> arms(base_.rooms.size(), 0);
+    for (std::size_t c = 0; c < base_.changes.size(); ++c) {
+        const layout::ChangeWhen& when = base_.changes[c].when;
+        if (status[c].made_frame >= 0 || status[c].armed || when.enter < 0) continue;
+        if (when.after < 0 || status[static_cast<std::size_t>(when.after)].made_frame >= 0) arms[when.enter] = 1;
+    }
+    const auto arming = [&](int room) {
+        for (int r = room; r >= 0 && r != sim_.room(); r = stage_.parent[r])
+            if (arms[r]) return true;
+        return false;
+    };
+    for (const bool late : {false, true})
+        for (const int r : stage_.order)
+            if (goal_[r] && !visited(r) && !failed_.count(r) && arming(r) == late) return r;
     return -1;
 }
 

@@ -29,6 +29,7 @@ struct Stage {
     std::vector<math::dmat4> to_physical;
     std::vector<int> parent, via, doors;  // via: a door of the current layout
     std::vector<int> order;
+    int root = -1;  // the head's room it was made from
 };
 
 class ChangePlanner {
@@ -56,7 +57,9 @@ private:
     double yaw_ = 0.0;
     Tour t_;
 
-    void restage();
+    // The stage from the head's room; a new pairing (`changed`) also forgets
+    // the rooms the tour could not walk to.
+    void restage(bool changed = true);
     const RoomGrid& grid(int room);
     bool visited(int room) const { return std::find(t_.visited.begin(), t_.visited.end(), room) != t_.visited.end(); }
     glm::dvec2 here() const { return {sim_.walker().position().x, sim_.walker().position().z}; }
@@ -69,6 +72,7 @@ private:
     int next_change();
     Went wait_for(int change);
     Went turn_round(double pitch);
+    void settle();
     std::string door_ids(int change) const;
     std::string never_why(int change) const;
     Result<Tour> finish();

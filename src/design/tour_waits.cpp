@@ -108,6 +108,7 @@ Result<Tour> ChangePlanner::run() {
         bool done = true;
         for (std::size_t r = 0; r < goal_.size(); ++r) done = done && (!goal_[r] || visited(static_cast<int>(r)));
         if (done) break;
+        if (stage_.root != sim_.room()) restage(false);  // the ways start where the head is
         if (const int target = next_room(); target >= 0) {
             std::string why;
             if (leg(target, why) == Went::Failed) why_[target] = failed_[target] = why;
@@ -117,7 +118,22 @@ Result<Tour> ChangePlanner::run() {
         if (c < 0) break;
         wait_for(c);
     }
+    settle();
     return finish();
+}
+
+// Every room visited: a change armed but not yet made is waited for where
+// the head stands (turning, level and looking down), so that the walk ends
+// with it made; one that is not made there is left (no room needs it).
+void ChangePlanner::settle() {
+    const std::vector<changes::ChangeStatus>& status = sim_.changes().status();
+    for (std::size_t c = 0; c < base_.changes.size() && t_.poses.size() <= kMaxPoses; ++c) {
+        if (!status[c].armed || status[c].made_frame >= 0) continue;
+        t_.notes.push_back({t_.poses.size(), "waits in " + base_.rooms[sim_.room()].id + " for change " +
+                                                 base_.changes[c].id + ": turns away from its doors"});
+        for (const double pitch : {0.0, -75.0})
+            if (turn_round(pitch) == Went::Changed) break;
+    }
 }
 
 // Why change c, not made, did not happen on the route.

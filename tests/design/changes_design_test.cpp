@@ -265,6 +265,41 @@ TEST(ChangesTour, TurnsInTheStudyUntilItsNorthDoorIsOutOfSight) {
     EXPECT_GT(std::abs(std::remainder(t->poses[made].yaw_deg - t->poses[wait->pose - 1].yaw_deg, 360.0)), 10.0);
 }
 
+// As north_door_layout, but the attic is also reached through the hall's
+// east door: the tour visits it first (the study, whose entry arms the
+// change, comes last), and then, every room visited, turns in the study
+// until the armed change is made.
+TEST(ChangesTour, EndsByTurningUntilAnArmedChangeIsMade) {
+    const std::string text = R"({ "format": "impossible-layout", "version": 1,
+  "play_area": { "min": [-2.5, -2.5], "max": [5.5, 2.5] },
+  "start": { "room": "hall", "position": [-1, 1.6, 1.5] },
+  "rooms": [)" + room("hall", -2, 0, 2, 2) +
+                             ",\n" + room("study", -2, -2, 2, 0) + ",\n" + room("attic", 3, -2, 5, 0) +
+                             "],\n\"portals\": [" + door("hall_west", "hall", -1, 0, 1, "study_west") + ",\n" +
+                             door("study_west", "study", -1, 0, -1, "hall_west") + ",\n" +
+                             door("study_north", "study", 0, -2, 1, "hall_back") + ",\n" +
+                             door("hall_back", "hall", 0, 2, -1, "study_north") + ",\n" +
+                             door("hall_east", "hall", 1, 0, 1, "attic_back") + ",\n" +
+                             door("attic_back", "attic", 4, 0, -1, "hall_east") + ",\n" +
+                             door("attic_door", "attic", 4, -2, 1, "attic_side") + ",\n" +
+                             R"({ "id": "attic_side", "room": "attic", "center": [3, 1.05, -1], "normal": [1, 0, 0],)" +
+                             R"( "width": 0.9, "height": 2.1, "target": "attic_door" }],)" +
+                             R"("changes": [ { "id": "open", "when": { "enter": "study" },)" +
+                             R"( "pairs": [["study_north", "attic_door"]] } ] })";
+    const layout::LoadResult loaded = layout::load_layout_text(text, "settle.json", ".");
+    ASSERT_TRUE(loaded.layout.has_value()) << (loaded.errors.empty() ? "" : loaded.errors[0].str());
+    const layout::Layout& l = *loaded.layout;
+    const auto t = design::plan_tour(l);
+    ASSERT_TRUE(t.has_value()) << t.error();
+    ASSERT_EQ(t->visited.size(), 3u);
+    EXPECT_EQ(l.rooms[static_cast<std::size_t>(t->visited.back())].id, "study");  // the arming room last
+    ASSERT_FALSE(t->notes.empty());
+    EXPECT_EQ(t->notes[0].text, "waits in study for change open: turns away from its doors");
+    const design::ChangeWalkResult w = rewalk(l, *t);
+    ASSERT_EQ(w.changes, std::vector<int>{0});
+    EXPECT_GT(static_cast<std::size_t>(w.change_frames[0]), t->notes[0].pose);
+}
+
 TEST(ChangesTour, FailsNamingTheChangeAndTheRoomWhenTheChangeCanNeverHappen) {
     const layout::Layout l = vault_layout(R"({ "enter": "study", "time": 100000 })");
     const auto t = design::plan_tour(l);
