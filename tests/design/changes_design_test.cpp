@@ -202,6 +202,13 @@ TEST(ChangesTour, ReroutedCorridorVisitsAllFiveRooms) {
     ASSERT_TRUE(t.has_value()) << t.error();
     const std::vector<std::string> all{"blue_corridor", "gallery", "library", "lobby", "red_corridor"};
     EXPECT_EQ(room_ids(l, t->visited), all);
+    // In order: the gallery, whose entry arms the change, last; each room by
+    // the way planned from where the head is (none by a door passed by accident).
+    std::vector<std::string> order;
+    for (const int r : t->visited) order.push_back(l.rooms[static_cast<std::size_t>(r)].id);
+    EXPECT_EQ(order, (std::vector<std::string>{"lobby", "blue_corridor", "red_corridor", "library", "gallery"}));
+    // blue and back, red, library and back, back to the lobby, blue again, gallery
+    EXPECT_EQ(t->teleports, 8);
     const design::ChangeWalkResult w = rewalk(l, *t);
     EXPECT_EQ(room_ids(l, w.rooms), all);
     EXPECT_EQ(w.changes, std::vector<int>{0});
