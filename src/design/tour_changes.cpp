@@ -20,6 +20,7 @@ void ChangePlanner::restage(bool changed) {
     const layout::Layout& l = sim_.current();
     const links::PortalLinks& links = sim_.links();
     const std::size_t n = l.rooms.size();
+    const Stage before = std::move(stage_);
     stage_ = Stage{};
     stage_.reachable.assign(n, 0);
     stage_.to_physical.assign(n, math::dmat4(1.0));
@@ -46,9 +47,19 @@ void ChangePlanner::restage(bool changed) {
             queue.push_back(next);
         }
     }
-    obstacles_ = room_obstacles(l, links, o_.grid.head_height);
-    grids_.clear();
-    if (changed) failed_.clear();
+    if (changed) {
+        obstacles_ = room_obstacles(l, links, o_.grid.head_height);
+        grids_.clear();
+        failed_.clear();
+        return;
+    }
+    // The same pairing from another room: a room's grid stays where its
+    // place on the floor does (always, unless doors place it differently).
+    for (auto it = grids_.begin(); it != grids_.end();)
+        if (math::max_abs_difference(before.to_physical[it->first], stage_.to_physical[it->first]) > 1e-9)
+            it = grids_.erase(it);
+        else
+            ++it;
 }
 
 const RoomGrid& ChangePlanner::grid(int room) {

@@ -3,6 +3,7 @@
 // ways to rooms), tour_waits.cpp waits for changes and ends the tour.
 #pragma once
 
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <string>
