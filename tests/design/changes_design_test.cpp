@@ -151,6 +151,27 @@ TEST(ChangesPlan, DrawsEachPairDashedWithTheChangesId) {
     EXPECT_NE(svg.find("a change's new pair"), std::string::npos);
 }
 
+// The PNG draws the pair too: the change's purple where the SVG has its
+// dashes, and not without the "changes" shapes.
+TEST(ChangesPlan, ThePngDrawsThePairInTheChangesColour) {
+    const layout::Layout l = load_file("door_swap.json");
+    design::Drawing d = design::plan_drawing(l, design::make_report(l), {});
+    const double k = design::plan_scale(d, 600);
+    const auto purple = [](const image::Pixels& p) {
+        std::size_t n = 0;
+        for (std::size_t i = 0; i + 2 < p.data.size(); i += static_cast<std::size_t>(p.channels))
+            n += std::abs(p.data[i] - 107) < 12 && std::abs(p.data[i + 1] - 31) < 12 &&
+                 std::abs(p.data[i + 2] - 173) < 12;
+        return n;
+    };
+    const std::size_t with = purple(design::plan_raster(d, k));
+    std::erase_if(d.shapes, [](const design::PlanShape& s) { return s.group == "changes"; });
+    std::erase_if(d.legend, [](const design::LegendEntry& e) { return e.text.find("change") != std::string::npos; });
+    const std::size_t without = purple(design::plan_raster(d, k));
+    EXPECT_GT(with, 200u);  // the dashes, the dots and the label: hundreds of pixels
+    EXPECT_LT(without, with / 10);
+}
+
 TEST(ChangesPlan, CoincidentDoorsGetADashedRingAndLaterRoomsAreNotCalledUnreachable) {
     const layout::Layout l = load_file("rerouted_corridor.json");
     const design::Report r = design::make_report(l);
