@@ -32,7 +32,7 @@ std::string door(const std::string& id, const std::string& room, double x, doubl
 // each other. The change "open", `when` as given, pairs the study's east
 // door with the vault's: the vault is reachable only after it, the attic
 // never (its door is closed by it).
-layout::Layout vault_layout(const std::string& when) {
+layout::Layout vault_layout(const std::string& when, const std::string& earlier = "") {
     const std::string text =
         R"({ "format": "impossible-layout", "version": 1,
   "play_area": { "min": [-2.5, -2.5], "max": [5.5, 2.5] },
@@ -43,8 +43,8 @@ layout::Layout vault_layout(const std::string& when) {
         door("study_west", "study", -1, 0, -1, "hall_west") + ",\n" + door("hall_east", "hall", 1, 0, 1, "study_east") +
         ",\n" + door("study_east", "study", 1, 0, -1, "hall_east") + ",\n" +
         door("vault_door", "vault", 4, 0, 1, "attic_door") + ",\n" +
-        door("attic_door", "attic", 4, 0, -1, "vault_door") + "],\n" + R"("changes": [ { "id": "open", "when": )" +
-        when + R"(, "pairs": [["study_east", "vault_door"]] } ] })";
+        door("attic_door", "attic", 4, 0, -1, "vault_door") + "],\n" + R"("changes": [ )" + earlier +
+        R"( { "id": "open", "when": )" + when + R"(, "pairs": [["study_east", "vault_door"]] } ] })";
     const layout::LoadResult r = layout::load_layout_text(text, "vault.json", ".");
     std::string errors;
     for (const auto& d : r.errors) errors += d.str() + "\n";
@@ -326,6 +326,20 @@ TEST(ChangesTour, EndsByTurningUntilAnArmedChangeIsMade) {
     const design::ChangeWalkResult w = rewalk(l, *t);
     ASSERT_EQ(w.changes, std::vector<int>{0});
     EXPECT_GT(static_cast<std::size_t>(w.change_frames[0]), t->notes[0].pose);
+}
+
+TEST(ChangesTour, AChangeAfterOneThatCanNeverHappenCannotHappenEither) {
+    // "late" swaps the two west doors (hall's with the study's east door and
+    // back again) after more time than a tour waits; "open" waits for it.
+    const layout::Layout l = vault_layout(R"({ "after": "late", "enter": "study" })",
+                                          R"({ "id": "late", "when": { "enter": "study", "time": 100000 },)"
+                                          R"( "pairs": [["hall_west", "study_east"], ["hall_east", "study_west"]] },)");
+    EXPECT_TRUE(design::make_report(l).changes.changes[1].can_happen);  // as far as validate can tell
+    const auto t = design::plan_tour(l);
+    ASSERT_FALSE(t.has_value());
+    EXPECT_EQ(t.error(),
+              "the tour cannot visit room \"vault\": it needs change \"open\", which can never happen on its route: it "
+              "waits for change \"late\", which cannot happen on the tour's route");
 }
 
 TEST(ChangesTour, FailsNamingTheChangeAndTheRoomWhenTheChangeCanNeverHappen) {
