@@ -481,7 +481,29 @@ py::dict step_dict(std::size_t frame, const api::WalkStep& s) {
         for (const auto& [id, room] : s.props) props[py::str(id)] = room;
         d["props"] = props;
     }
+    if (!s.changes.empty()) d["changes"] = py::cast(s.changes);  // as `walk` prints it: only where made
     return d;
+}
+
+// The view options of the changes' seen test (layout-format.md, "Changes
+// while walking"): render's view options that place the eyes, with their
+// defaults; the head is the walk's.
+api::View seen_view_of(py::handle size, py::handle ipd, py::handle fov, py::handle fov_angles, py::handle visible_area,
+                       py::handle hmd, py::handle eye_poses, int max_depth) {
+    const ViewBase base = base_of(size, 1, ipd, fov, fov_angles, visible_area, hmd, eye_poses);
+    return view_of(base, py::none(), py::none(), py::none(), 0.0, max_depth, py::none());
+}
+
+py::list change_states(const std::vector<api::ChangeState>& states) {
+    py::list out;
+    for (const api::ChangeState& c : states) {
+        py::dict d;
+        d["id"] = c.id;
+        d["armed"] = c.armed;
+        d["made_frame"] = c.made_frame < 0 ? py::object(py::none()) : py::object(py::int_(c.made_frame));
+        out.append(d);
+    }
+    return out;
 }
 
 // A path file's line: 6 numbers (the head) or 18 (the head, then the left
@@ -507,7 +529,8 @@ api::PathLine line_of(py::handle value, const char* what) {
 // render that frame.
 class PyWalker {
 public:
-    explicit PyWalker(const api::Layout& layout) : walker_(layout), pose_(layout.start()), room_(layout.start_room()) {}
+    PyWalker(const api::Layout& layout, const api::View& seen)
+        : walker_(value_or_raise(api::Walker::make(layout, seen))), pose_(layout.start()), room_(layout.start_room()) {}
 
     py::dict step(py::handle physical, py::handle hands) {
         api::PathLine line = line_of(physical, "pose");
@@ -531,6 +554,8 @@ public:
         if (!hands_) return py::none();
         return py::make_tuple((*hands_)[0].room, (*hands_)[1].room);
     }
+    api::Layout layout() const { return walker_.layout(); }
+    py::list changes() const { return change_states(walker_.changes()); }
 
 private:
     api::Walker walker_;
@@ -540,16 +565,29 @@ private:
     std::size_t frames_ = 0;
 };
 
-py::list walk(const api::Layout& layout, py::handle poses, double fps) {
+std::vector<api::PathLine> lines_of(py::handle poses, double fps) {
     if (!(fps > 0 && std::isfinite(fps))) raise(PyExc_ValueError, "fps must be a finite number above 0");
     if (py::isinstance<py::str>(poses) || !py::isinstance<py::iterable>(poses))
         raise(PyExc_TypeError, "poses: expected a list of poses");
     std::vector<api::PathLine> lines;
     for (py::handle p : py::reinterpret_borrow<py::iterable>(poses)) lines.push_back(line_of(p, "poses"));
-    const std::vector<api::WalkStep> steps = api::walk(layout, lines, fps);
+    return lines;
+}
+
+py::list walk(const api::Layout& layout, py::handle poses, double fps, const api::View& seen) {
+    const std::vector<api::WalkStep> steps = value_or_raise(api::walk(layout, lines_of(poses, fps), fps, seen));
     py::list out;
     for (std::size_t k = 0; k < steps.size(); ++k) out.append(step_dict(k, steps[k]));
     return out;
+}
+
+api::Layout paired_at(const api::Layout& layout, py::handle poses, long long frame, double fps, const api::View& seen) {
+    const std::vector<api::PathLine> lines = lines_of(poses, fps);
+    if (frame < 0 || static_cast<unsigned long long>(frame) >= lines.size())
+        raise(PyExc_IndexError, "frame " + std::to_string(frame) + ": the walk has " + std::to_string(lines.size()) +
+                                    " poses (frames 0.." + std::to_string(static_cast<long long>(lines.size()) - 1) +
+                                    ")");
+    return value_or_raise(api::paired_at(layout, lines, static_cast<std::size_t>(frame), fps, seen));
 }
 
 // A path file's lines: 6-tuples, or with hands=True, each line as written
@@ -676,14 +714,48 @@ void bind_renderer(py::module_& m) {
 
 void bind_tools(py::module_& m) {
     py::class_<PyWalker>(m, "Walker", "Physical head poses to the virtual head, one at a time")
-        .def(py::init<const api::Layout&>(), py::arg("layout"))
+        .def(py::init([](const api::Layout& layout, py::handle size, py::handle ipd, py::handle fov,
+                         py::handle fov_angles, py::handle visible_area, py::handle hmd, py::handle eye_poses,
+                         int max_depth) {
+                 return new PyWalker(layout,
+                                     seen_view_of(size, ipd, fov, fov_angles, visible_area, hmd, eye_poses, max_depth));
+             }),
+             py::arg("layout"), py::kw_only(), py::arg("size") = py::none(), py::arg("ipd") = py::none(),
+             py::arg("fov") = py::none(), py::arg("fov_angles") = py::none(), py::arg("visible_area") = py::none(),
+             py::arg("hmd") = py::none(), py::arg("eye_poses") = py::none(), py::arg("max_depth") = 8)
         .def("step", &PyWalker::step, py::arg("pose"), py::arg("hands") = py::none())
         .def_property_readonly("pose", &PyWalker::pose)
         .def_property_readonly("room", &PyWalker::room)
         .def_property_readonly("hands", &PyWalker::hands)
-        .def_property_readonly("hand_rooms", &PyWalker::hand_rooms);
-    m.def("walk", &walk, py::arg("layout"), py::arg("poses"), py::arg("fps") = 90.0,
-          "Every frame of a walk as `impossible walk` prints it");
+        .def_property_readonly("hand_rooms", &PyWalker::hand_rooms)
+        .def_property_readonly("layout", &PyWalker::layout,
+                               "The layout with the pairing in force after the last step (the changes made)")
+        .def_property_readonly("changes", &PyWalker::changes,
+                               "Each of the layout's changes: {'id', 'armed', 'made_frame' (None: not yet)}");
+    m.def(
+        "walk",
+        [](const api::Layout& layout, py::handle poses, double fps, py::handle size, py::handle ipd, py::handle fov,
+           py::handle fov_angles, py::handle visible_area, py::handle hmd, py::handle eye_poses, int max_depth) {
+            return walk(layout, poses, fps,
+                        seen_view_of(size, ipd, fov, fov_angles, visible_area, hmd, eye_poses, max_depth));
+        },
+        py::arg("layout"), py::arg("poses"), py::arg("fps") = 90.0, py::kw_only(), py::arg("size") = py::none(),
+        py::arg("ipd") = py::none(), py::arg("fov") = py::none(), py::arg("fov_angles") = py::none(),
+        py::arg("visible_area") = py::none(), py::arg("hmd") = py::none(), py::arg("eye_poses") = py::none(),
+        py::arg("max_depth") = 8, "Every frame of a walk as `impossible walk` prints it");
+    m.def(
+        "paired_at",
+        [](const api::Layout& layout, py::handle poses, long long frame, double fps, py::handle size, py::handle ipd,
+           py::handle fov, py::handle fov_angles, py::handle visible_area, py::handle hmd, py::handle eye_poses,
+           int max_depth) {
+            return paired_at(layout, poses, frame, fps,
+                             seen_view_of(size, ipd, fov, fov_angles, visible_area, hmd, eye_poses, max_depth));
+        },
+        py::arg("layout"), py::arg("poses"), py::arg("frame"), py::arg("fps") = 90.0, py::kw_only(),
+        py::arg("size") = py::none(), py::arg("ipd") = py::none(), py::arg("fov") = py::none(),
+        py::arg("fov_angles") = py::none(), py::arg("visible_area") = py::none(), py::arg("hmd") = py::none(),
+        py::arg("eye_poses") = py::none(), py::arg("max_depth") = 8,
+        "The layout with the pairing in force at line `frame` of a walk (`render --path FILE --frame K`)");
     m.def("read_path", &read_path, py::arg("path"), py::arg("hands") = false,
           "The poses of a path file; with hands=True each line as written, 6 or 18 numbers");
     m.def("generate", &generate, py::arg("play_area"), py::arg("rooms"), py::arg("seed"),

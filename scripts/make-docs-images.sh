@@ -61,6 +61,12 @@ render curved_corridor curved_corridor.json
 render curved_corridor-inside curved_corridor.json --room corridor --pose 2.0,1.5,0,180,0,0
 render trapdoor trapdoor.json --room tower --pose 0.4,1.6,0.9,0,-55,0
 render trapdoor-below trapdoor.json --room cellar --pose 0.4,-1.4,0.6,0,65,0
+# Changes while walking (issue 40): the same place before and after the
+# change, the "after" drawn at a frame of the walk (docs/changes.md).
+render door_swap-before door_swap.json --room study --pose=-1,1.6,-1.2,180,0,0
+render door_swap-after door_swap.json --path "$root/layouts/door_swap_walk.txt" --frame 100
+render rerouted_corridor-before rerouted_corridor.json --room gallery --pose 1,1.6,1.4,0,0,0
+render rerouted_corridor-after rerouted_corridor.json --path "$root/layouts/rerouted_corridor_walk.txt" --frame 220
 # A headset profile (issue 24): the HTC Vive's asymmetric frusta and its
 # hidden area, black, at a size of the Vive's aspect.
 "$bin" render "$root/layouts/four_rooms.json" --hmd "$root/profiles/htc-vive.json" --size 360x400 \

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -96,6 +97,7 @@ public:
     std::string report_json() const;
 
     const LayoutData& data() const { return *data_; }  // for the library itself
+    static Layout of(std::shared_ptr<const LayoutData> data) { return Layout(std::move(data)); }  // the same
 
 private:
     explicit Layout(std::shared_ptr<const LayoutData> data) : data_(std::move(data)) {}
@@ -297,6 +299,17 @@ struct WalkStep {
     // fps; `impossible walk`'s "props" key), in layout order; empty from a
     // Walker's step, which has no time.
     std::vector<std::pair<std::string, std::string>> props;
+    // The ids of the changes made at this frame, in file order (`impossible
+    // walk`'s "changes" key; layout-format.md, "Changes while walking"):
+    // the frame's picture and the steps after it have their pairing.
+    std::vector<std::string> changes;
+};
+
+// What a walk knows of one of the layout's changes.
+struct ChangeState {
+    std::string id;
+    bool armed = false;   // its condition has held at some frame
+    int made_frame = -1;  // the frame it was made at (numbered from 0); -1: not yet
 };
 
 // One line of a path file: the physical head, and the two physical hands on
@@ -309,10 +322,18 @@ struct PathLine {
 struct WalkerData;
 
 // Physical head poses to the virtual head, teleporting at doors exactly as
-// `impossible walk` does (layout-format.md, "Walking").
+// `impossible walk` does (layout-format.md, "Walking"). A layout with
+// `changes` is walked with the pairing in force ("Changes while walking"):
+// whether a door is seen, which decides when a change is made, is asked of
+// the eyes the view options place (ipd, fov_deg, width × height,
+// eye_optics, eye_poses, max_depth; its pose, room, time and hands are not
+// read), render's defaults unless given.
 class Walker {
 public:
     explicit Walker(const Layout& layout);
+    // With the view options of the seen test; a bad one is an Error naming
+    // its field, as Renderer::render's.
+    static Expected<Walker> make(const Layout& layout, const View& view);
     Walker(Walker&&) noexcept;
     Walker& operator=(Walker&&) noexcept;
     ~Walker();
@@ -321,7 +342,17 @@ public:
     // step's `hands` hold their virtual poses and rooms.
     WalkStep step(const Pose& physical, const std::array<Pose, 2>& hands);
 
+    // The layout with the pairing in force after the last step: what that
+    // frame is drawn with (a Renderer or trace() made for it). The layout
+    // given until a change is made; after one, the same rooms and data (shared,
+    // not copied) with the doors re-paired and the closed ones left out of
+    // portal_ids(), and no changes of its own.
+    Layout layout() const;
+    // Each of the loaded layout's changes, in file order.
+    std::vector<ChangeState> changes() const;
+
 private:
+    explicit Walker(std::unique_ptr<WalkerData> data);
     std::unique_ptr<WalkerData> data_;
 };
 
@@ -336,6 +367,17 @@ std::vector<WalkStep> walk(const Layout& layout, const std::vector<PathLine>& ph
 // The same with line k at time k / fps (fps > 0, finite; else every step's
 // props are those at time 0): each step also lists the moving props' rooms.
 std::vector<WalkStep> walk(const Layout& layout, const std::vector<PathLine>& physical, double fps);
+// The same with the view options of the seen test (as Walker::make): a bad
+// view is an Error.
+Expected<std::vector<WalkStep>> walk(const Layout& layout, const std::vector<PathLine>& physical, double fps,
+                                     const View& view);
+// The layout with the pairing in force at line `frame` of a walk (lines 0..
+// frame walked as walk() does, line k at k / fps, the seen test on `view`'s
+// eyes): what `render --path FILE --frame K` draws. The layout itself when
+// no change was made by then. An Error for a frame past the path's end, an
+// fps not > 0 and finite, or a bad view.
+Expected<Layout> paired_at(const Layout& layout, const std::vector<PathLine>& physical, std::size_t frame, double fps,
+                           const View& view = {});
 
 // The designer's tools, as their commands.
 struct GenerateRequest {

@@ -2,6 +2,7 @@
 // the conversions between its plain types and the library's own.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -20,11 +21,24 @@ namespace impossible::api {
 // tracer and walker made from one api::Layout shares.
 struct LayoutData {
     explicit LayoutData(layout::Layout l) : session(std::move(l)) {}
+    explicit LayoutData(session::Session s) : session(std::move(s)) {}
     session::Session session;
     const layout::Layout& layout = session.layout();
     std::vector<layout::Diagnostic> warnings;  // the loader's
     std::vector<std::string> warning_lines;    // the same as "FILE:LINE:COLUMN: message"
 };
+
+// The layout of `paired`, a session of `loaded`'s layout with another
+// pairing (session::WalkDriver::session, session::replay_to): `loaded`
+// itself when it is that session, else a Layout sharing its data, with
+// `loaded`'s warnings.
+inline Layout paired_layout_of(const Layout& loaded, const session::Session& paired) {
+    if (&paired.layout() == &loaded.data().layout) return loaded;
+    auto data = std::make_shared<LayoutData>(paired);
+    data->warnings = loaded.data().warnings;
+    data->warning_lines = loaded.data().warning_lines;
+    return Layout::of(std::move(data));
+}
 
 inline math::HeadPose to_head_pose(const Pose& p) { return {{p.x, p.y, p.z}, p.yaw, p.pitch, p.roll}; }
 inline Pose to_pose(const math::HeadPose& h) {

@@ -5,6 +5,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -103,9 +104,10 @@ struct SeenCost {
         std::sort(seconds.begin(), seconds.end());
         const double median = seconds.empty() ? 0.0 : seconds[seconds.size() / 2];
         const double most = seconds.empty() ? 0.0 : seconds.back();
+        char times[96];
+        std::snprintf(times, sizeof times, " seen_us_median=%.1f seen_us_max=%.1f\n", median * 1e6, most * 1e6);
         return "stats: frames=" + std::to_string(frames) + " seen_tests=" + std::to_string(seconds.size()) +
-               " seen_passes_max=" + std::to_string(passes_max) + " seen_ms_median=" + format_number(median * 1e3) +
-               " seen_ms_max=" + format_number(most * 1e3) + "\n";
+               " seen_passes_max=" + std::to_string(passes_max) + times;
     }
 };
 

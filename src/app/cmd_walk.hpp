@@ -44,7 +44,8 @@ struct WalkSettings {
     // changes; layout-format.md, "Changes while walking").
     math::View view;
     // --stats: one line on err after the walk, "stats: frames=N
-    // seen_tests=K seen_passes_max=P seen_ms_median=X seen_ms_max=Y".
+    // seen_tests=K seen_passes_max=P seen_us_median=X seen_us_max=Y"
+    // (microseconds on a monotonic clock, of the frames that ran it).
     bool stats = false;
 };
 int run_walk(const session::Session& session, const std::string& path_file, std::ostream& out, std::ostream& err,

@@ -51,8 +51,10 @@ int run_bench_command(const cli::Args& args, std::ostream& out, std::ostream& er
     const session::Session session(load_layout_or_default(options.view.layout_path, outputs));
     err << cli::model_warnings_text(session)
         << cli::light_options_warning(session, options.view.frame.light_depth, options.view.shadow_options);
-    const std::vector<BenchPose> poses = bench_poses(session, options);
-    const BenchPlan plan = plan_bench(session, options);
+    std::vector<session::Session> stages;  // the pairings a walk through changes puts in force
+    const std::vector<BenchPose> poses = bench_poses(session, options, &stages);
+    BenchPlan plan = plan_bench(session, options);
+    add_stages(plan, stages, options);
 
     std::string fallback_note;
     const gl::Context context =

@@ -8,6 +8,7 @@
 #include "bench/light_sweep.hpp"
 #include "layout/path_file.hpp"
 #include "layout/room_shape.hpp"
+#include "session/walk_driver.hpp"
 #include "walk/walker.hpp"
 
 namespace impossible::bench {
@@ -20,6 +21,7 @@ using cli::value_or_throw;
 layout::Layout keep_first_portals(const layout::Layout& layout, int n) {
     layout::Layout out = layout;
     out.portals.clear();
+    out.changes.clear();  // they name the given layout's portals; bench walks that layout, and draws this one
     std::vector<int> renumbered(layout.portals.size(), -1);
     for (size_t i = 0; i < layout.portals.size(); ++i) {
         const int target = layout.portals[i].target;  // -1 for a mirror, which needs no partner
@@ -211,21 +213,37 @@ BenchPlan plan_bench(const session::Session& session, const BenchOptions& o) {
     return plan;
 }
 
-std::vector<BenchPose> bench_poses(const session::Session& session, const BenchOptions& o) {
+void add_stages(BenchPlan& plan, const std::vector<session::Session>& stages, const BenchOptions& o) {
+    for (const session::Session& stage : stages) plan.stages.push_back(plan_bench(stage, o).sessions);
+}
+
+std::vector<BenchPose> bench_poses(const session::Session& session, const BenchOptions& o,
+                                   std::vector<session::Session>* stages) {
     if (!o.path) {
         session::Session placed = session;  // without --path, frame_for keeps it
         const render::FrameDesc f = frame_for(placed, o.view);
-        return {{f.head, f.room, f.time, f.hands}};
+        return {{f.head, f.room, f.time, f.hands, 0}};
     }
     const std::vector<layout::PathFrame> file = value_or_throw(layout::read_path_frames_file(*o.path));
     const double fps = o.fps.value_or(layout::kDefaultPathFps);
-    walk::Walker walker = session.make_walker();
+    // The eyes of the seen test: the bench's view options (the head is the walk's).
+    ViewOptions seen = o.view;
+    seen.pose.reset();
+    seen.room.reset();
+    session::Session start = session;
+    const math::View eyes = frame_for(start, seen);
+    session::WalkDriver driver(session, eyes);
     std::vector<BenchPose> poses;
+    int stage = 0;
     for (std::size_t k = 0; k < file.size(); ++k) {
-        walker.step(file[k].head);
+        const double time = walk::line_time(k, fps);
+        if (!driver.step(file[k].head, std::nullopt, time).changes.empty()) {
+            ++stage;
+            if (stages) stages->push_back(driver.session());
+        }
         math::View view;
-        walk::set_walked_view(view, walker, file[k].hands);
-        poses.push_back({view.head, view.room, walk::line_time(k, fps), view.hands});
+        walk::set_walked_view(view, driver.walker(), file[k].hands);
+        poses.push_back({view.head, view.room, time, view.hands, stage});
     }
     return poses;
 }

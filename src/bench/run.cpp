@@ -59,10 +59,13 @@ struct Measurer {
     const BenchPlan& plan;
     const std::vector<BenchPose>& poses;
     const BenchOptions& options;
-    std::vector<std::unique_ptr<render::Renderer>> renderers;  // per layout variant
+    std::vector<std::vector<std::unique_ptr<render::Renderer>>> renderers;  // per stage of the walk, per layout variant
     std::vector<ConfigResult> results;
 
-    render::Renderer& renderer_of(const BenchConfig& c) { return *renderers[c.layout_variant]; }
+    // The variant's renderer with the pairing in force at the pose.
+    render::Renderer& renderer_of(const BenchConfig& c, const BenchPose& pose) {
+        return *renderers[static_cast<size_t>(pose.stage)][static_cast<size_t>(c.layout_variant)];
+    }
 
     // The sweep's kind ("samples") for a configuration of the sweep, else "".
     std::string swept(const BenchConfig& c) const {
@@ -76,7 +79,8 @@ struct Measurer {
     void probe() {
         for (ConfigResult& r : results) {
             render::FrameStats stats;
-            r.error = error_of(renderer_of(r.config).draw(frame_at(r.config, poses[0]), &stats), swept(r.config));
+            r.error =
+                error_of(renderer_of(r.config, poses[0]).draw(frame_at(r.config, poses[0]), &stats), swept(r.config));
         }
         if (!results[0].error.empty()) throw InputError(results[0].error);
     }
@@ -99,8 +103,8 @@ struct Measurer {
                     render::FrameStats stats;
                     glFinish();
                     const Clock::time_point t0 = Clock::now();
-                    r.error =
-                        error_of(renderer_of(r.config).draw(frame_at(r.config, poses[p]), &stats), swept(r.config));
+                    r.error = error_of(renderer_of(r.config, poses[p]).draw(frame_at(r.config, poses[p]), &stats),
+                                       swept(r.config));
                     const Clock::time_point t1 = Clock::now();
                     glFinish();
                     const Clock::time_point t2 = Clock::now();
@@ -134,7 +138,7 @@ struct Measurer {
                     render::FrameStats stats;
                     glFinish();
                     const Clock::time_point t0 = Clock::now();
-                    r.error = error_of(renderer_of(r.config).draw(f, &stats), swept(r.config));
+                    r.error = error_of(renderer_of(r.config, poses[p]).draw(f, &stats), swept(r.config));
                     glFinish();
                     frame_ms[c].push_back(ms_between(t0, Clock::now()));
                     for (const render::FrameStats::PortalCost& cost : stats.portal_costs) {
@@ -153,7 +157,10 @@ struct Measurer {
             for (const auto& [key, times] : portal_ms[c]) {
                 PortalResult pr;
                 pr.pose = key.first;
-                pr.portal = plan.sessions[r.config.layout_variant].layout().portals[key.second].id;
+                pr.portal = plan.session_of(r.config.layout_variant, poses[static_cast<size_t>(key.first)].stage)
+                                .layout()
+                                .portals[key.second]
+                                .id;
                 pr.ms_median = spread_of(times).median;
                 pr.fragments_per_pixel = portal_fragments[c][key];
                 r.portals.push_back(pr);
@@ -164,8 +171,12 @@ struct Measurer {
     // Each configuration's picture against the tracer's at the same pose and
     // size, with the reference depth: ids and colour PSNR, mean over poses.
     void compare_with_tracer() {
-        std::vector<trace::Scene> scenes;
-        for (const session::Session& s : plan.sessions) scenes.push_back(value_or_throw(s.make_trace_scene()));
+        // Per stage of the walk, per layout variant.
+        std::vector<std::vector<trace::Scene>> scenes(plan.stages.size() + 1);
+        for (std::size_t stage = 0; stage < scenes.size(); ++stage)
+            for (std::size_t v = 0; v < plan.sessions.size(); ++v)
+                scenes[stage].push_back(
+                    value_or_throw(plan.session_of(static_cast<int>(v), static_cast<int>(stage)).make_trace_scene()));
         // One reference per layout variant, pose, size, light depth and
         // hidden-area mask (--sweep mask).
         std::map<std::tuple<int, size_t, int, int, int, bool>, image::Image> traced;
@@ -180,10 +191,11 @@ struct Measurer {
                     trace::TraceDesc t = trace_desc_for(f);
                     t.max_depth = options.reference_depth;
                     t.samples = options.reference_samples;
-                    traced[key] = value_or_throw(trace::trace_frame(scenes[r.config.layout_variant], t));
+                    traced[key] = value_or_throw(
+                        trace::trace_frame(scenes[static_cast<size_t>(poses[p].stage)][r.config.layout_variant], t));
                 }
                 const image::Image& t = traced[key];
-                Result<render::RenderedFrame> raster = renderer_of(r.config).render(f);
+                Result<render::RenderedFrame> raster = renderer_of(r.config, poses[p]).render(f);
                 if (!raster) {
                     r.error = error_of(Result<void>(Error{raster.error()}), swept(r.config));
                     continue;
@@ -202,9 +214,11 @@ struct Measurer {
 BenchResult run_bench(const BenchPlan& plan, const std::vector<BenchPose>& poses, const BenchOptions& options,
                       gl::StateCache& state, const std::string& gl_renderer) {
     Measurer m{plan, poses, options, {}, {}};
-    for (const session::Session& s : plan.sessions) {
-        m.renderers.push_back(std::make_unique<render::Renderer>(value_or_throw(s.make_renderer(state))));
-    }
+    m.renderers.resize(plan.stages.size() + 1);
+    for (std::size_t stage = 0; stage < m.renderers.size(); ++stage)
+        for (std::size_t v = 0; v < plan.sessions.size(); ++v)
+            m.renderers[stage].push_back(std::make_unique<render::Renderer>(
+                value_or_throw(plan.session_of(static_cast<int>(v), static_cast<int>(stage)).make_renderer(state))));
     for (const BenchConfig& c : plan.configs)
         m.results.push_back({c, {}, {}, {}, 0, 0, 0, 0, 0, 0, 0, {}, false, 0, 0, 0});
     m.probe();

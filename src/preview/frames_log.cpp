@@ -65,6 +65,7 @@ std::string frame_line(const FrameRecord& r) {
     j["position"] = vec_json(r.position);
     j["forward"] = vec_json(r.forward);
     j["eye_size"] = {r.eye_width, r.eye_height};
+    if (!r.changes.empty()) j["changes"] = r.changes;
     return dump_json(j) + "\n";
 }
 

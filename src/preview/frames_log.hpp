@@ -26,6 +26,7 @@ struct FrameRecord {
     math::HeadPose physical;
     math::dvec3 position{0.0}, forward{0.0};  // the walker's, as `walk` prints them
     int eye_width = 0, eye_height = 0;
+    std::vector<std::string> changes;  // ids of the layout's changes made this frame, as `walk` prints them
 };
 
 // The JSON text of `value` as nlohmann's dump() writes it (compact), but with
@@ -35,7 +36,8 @@ struct FrameRecord {
 std::string dump_json(const nlohmann::ordered_json& value);
 
 // The record as one line of JSON, with its newline; fields in this order:
-// frame, room, teleports, pose, physical, position, forward, eye_size.
+// frame, room, teleports, pose, physical, position, forward, eye_size, and
+// changes on a frame that made some.
 std::string frame_line(const FrameRecord& record);
 
 // Where the screenshots go: --screenshots DIR, or the current directory for

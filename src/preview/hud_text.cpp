@@ -44,6 +44,7 @@ std::vector<std::string> status_lines(const PreviewOptions& o, const HudFacts& f
         "WASD/arrows Q/E move  H hud  M map  V view  [ ] depth  - = IPD  C clip  X cull  P shot  R reset"
         "  G , . hand  L shadows  9 0 exposure",
     };
+    if (!f.changes.empty()) lines.insert(lines.begin() + 3, f.changes);
     if (f.lit)
         lines.insert(lines.begin() + 3, "lights " + to_string(f.room_lights) + " in this room   light images " +
                                             to_string(f.light_images) + "   light depth " + to_string(f.light_depth) +
@@ -52,6 +53,24 @@ std::vector<std::string> status_lines(const PreviewOptions& o, const HudFacts& f
 }
 
 }  // namespace
+
+std::string changes_line(const layout::Layout& layout, const changes::ChangeWalk& walk, int seen_passes) {
+    std::string armed, made;
+    int waiting = 0;
+    for (std::size_t c = 0; c < layout.changes.size(); ++c) {
+        const changes::ChangeStatus& status = walk.status()[c];
+        const std::string& id = layout.changes[c].id;
+        if (status.made_frame >= 0)
+            made += (made.empty() ? "" : ", ") + id + " (frame " + std::to_string(status.made_frame) + ")";
+        else if (status.armed)
+            armed += (armed.empty() ? "" : ", ") + id;
+        else
+            ++waiting;
+    }
+    return "changes armed: " + (armed.empty() ? "none" : armed) + "   made: " + (made.empty() ? "none" : made) +
+           "   not armed: " + std::to_string(waiting) +
+           (seen_passes > 0 ? "   seen test " + std::to_string(seen_passes) + " passes" : "");
+}
 
 std::vector<std::string> reload_error_lines(const std::vector<std::string>& errors) {
     if (errors.empty()) return {};

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "changes/change_walk.hpp"
+#include "layout/layout.hpp"
 #include "math/pose.hpp"
 #include "preview/hud.hpp"
 #include "preview/options.hpp"
@@ -32,7 +34,15 @@ struct HudFacts {
     int light_images = 0;
     int light_depth = 0;
     double exposure = 0.0;  // EV, the frame's (--exposure, the keys 9 and 0, or the layout's)
+    std::string changes;    // changes_line; empty: the layout has none (no line)
 };
+
+// The HUD's line on a layout's changes (layout-format.md, "Changes while
+// walking"): those armed and waiting for their doors to be out of sight,
+// those made (with the walk's frame), how many are not armed yet, and the
+// portal passes of the frame's seen test (session::WalkDriver::seen_passes;
+// none when it did not run: no armed change waited).
+std::string changes_line(const layout::Layout& layout, const changes::ChangeWalk& walk, int seen_passes);
 
 inline constexpr std::size_t kMaxReloadErrors = 8;
 

@@ -79,7 +79,7 @@ double frame_time(const PreviewSession& s, long frame) {
 // otherwise the eyes are drawn at the size they have in the window.
 render::FrameDesc frame_desc(const PreviewSession& s, long frame, const PixelRect& eye) {
     render::FrameDesc desc = s.options.frame;
-    walk::set_walked_view(desc, *s.shown.walker, s.physical_hands);
+    walk::set_walked_view(desc, s.shown.driver->walker(), s.physical_hands);
     desc.time = frame_time(s, frame);
     if (!s.options.screenshots) {
         desc.eye_width = eye.width;
@@ -89,16 +89,17 @@ render::FrameDesc frame_desc(const PreviewSession& s, long frame, const PixelRec
 }
 
 FrameRecord frame_record(const PreviewSession& s, long frame, const render::FrameDesc& desc,
-                         const std::vector<int>& passed) {
-    const layout::Layout& lay = s.shown.session->layout();
+                         const session::WalkedFrame& walked) {
+    const layout::Layout& lay = s.shown.session->layout();  // as loaded: the walked frame's indices are its
     FrameRecord r;
     r.frame = frame;
     r.room = lay.rooms[desc.room].id;
-    for (int p : passed) r.teleports.push_back(lay.portals[p].id);
+    for (int p : walked.teleports) r.teleports.push_back(lay.portals[p].id);
+    for (int c : walked.changes) r.changes.push_back(lay.changes[static_cast<std::size_t>(c)].id);
     r.pose = desc.head;
     r.physical = s.physical;
-    r.position = s.shown.walker->position();
-    r.forward = s.shown.walker->forward();
+    r.position = s.shown.driver->walker().position();
+    r.forward = s.shown.driver->walker().forward();
     r.eye_width = desc.eye_width;
     r.eye_height = desc.eye_height;
     return r;
@@ -107,12 +108,12 @@ FrameRecord frame_record(const PreviewSession& s, long frame, const render::Fram
 // With --screenshots: the renderer's image and the frame's line. Returns the
 // seconds spent saving (not part of the frame time; the drawing it waits for is).
 double save_rendered_frame(PreviewSession& s, long frame, const render::FrameDesc& desc,
-                           const std::vector<int>& passed) {
+                           const session::WalkedFrame& walked) {
     if (!s.files.every_frame) return 0.0;
     glFinish();
     const Clock::time_point start = Clock::now();
     save_frame(s.files, render::read_target(*s.state, s.shown.renderer->target()),
-               frame_record(s, frame, desc, passed));
+               frame_record(s, frame, desc, walked));
     return seconds_since(start);
 }
 
@@ -160,6 +161,8 @@ HudFacts hud_facts(const PreviewSession& s, const render::FrameDesc& desc) {
     f.light_images = s.stats.light_images;
     f.light_depth = desc.light_depth.value_or(layout.light_depth);
     f.exposure = desc.exposure.value_or(layout.exposure);
+    if (const changes::ChangeWalk* walk = s.shown.driver->changes())
+        f.changes = changes_line(layout, *walk, s.shown.driver->seen_passes());
     return f;
 }
 
@@ -175,8 +178,9 @@ void draw_window(PreviewSession& s, const WindowLayout& places, const render::Fr
     add_hud(batch, fit_hud(hud_text(s.options, hud_facts(s, desc), s.reload_errors), fb_w, fb_h, scale), scale);
     if (s.options.minimap) {
         const float side = std::min(0.42f * float(fb_h), 0.3f * float(fb_w));
-        const walk::Walker& walker = *s.shown.walker;
-        const MinimapInput map{&s.shown.session->layout(), desc.room, walker.physical_to_virtual(),
+        // The layout with the pairing in force: its doors are the walker's.
+        const walk::Walker& walker = s.shown.driver->walker();
+        const MinimapInput map{&s.shown.driver->session().layout(), desc.room, walker.physical_to_virtual(),
                                &walker.links().transfer, s.physical};
         add_minimap(batch, map, {float(fb_w) - side - 8.0f, float(fb_h) - side - 8.0f}, side);
     }
@@ -204,7 +208,9 @@ bool run_frame(PreviewSession& s, long frame, std::ostream& err) {
     poll_reload(s, now);
     if (keys.reset) reset_walk(s);
     s.physical = next_physical_head(s, frame, dt);
-    const std::vector<int> passed = s.shown.walker->step(s.physical);
+    // The options' frame places the eyes of the changes' seen test.
+    const session::WalkedFrame walked =
+        walk_shown(s.shown, *s.state, s.physical, frame_time(s, frame), s.options.frame);
     s.physical_hands = physical_hands(s, frame);
 
     int fb_w = 0, fb_h = 0;
@@ -213,7 +219,7 @@ bool run_frame(PreviewSession& s, long frame, std::ostream& err) {
     const WindowLayout places = window_layout(fb_w, fb_h, eye_aspect(s.options), s.options.view);
     const render::FrameDesc desc = frame_desc(s, frame, places.eye_rects[0]);
     check(cli::with_flags(s.shown.renderer->draw(desc, &s.stats)));
-    s.clock.io_seconds = save_rendered_frame(s, frame, desc, passed);
+    s.clock.io_seconds = save_rendered_frame(s, frame, desc, walked);
     draw_window(s, places, desc, fb_w, fb_h);
     s.clock.io_seconds += save_window_files(s, frame, keys.screenshot, fb_w, fb_h, err);
     // As the renderer does: nothing stays bound between frames, so an object

@@ -9,14 +9,26 @@ namespace impossible::preview {
 
 using cli::value_or_throw;
 
-Result<Shown> build_shown(gl::StateCache& state, layout::Layout layout, const std::string& room_id) {
+Result<Shown> build_shown(gl::StateCache& state, layout::Layout layout, const std::string& room_id,
+                          const math::View& eyes) {
     Shown s;
     s.session = std::make_unique<session::Session>(std::move(layout));
     Result<render::Renderer> made = s.session->make_renderer(state);
     if (!made) return made;
     s.renderer = std::make_unique<render::Renderer>(std::move(*made));
-    s.walker = std::make_unique<walk::Walker>(s.session->make_walker(layout::find_room(s.session->layout(), room_id)));
+    s.driver = std::make_unique<session::WalkDriver>(*s.session, eyes);
+    s.driver->start_in(layout::find_room(s.session->layout(), room_id));
     return s;
+}
+
+session::WalkedFrame walk_shown(Shown& shown, gl::StateCache& state, const math::HeadPose& physical, double time,
+                                const math::View& eyes) {
+    shown.driver->set_view(eyes);
+    session::WalkedFrame f = shown.driver->step(physical, std::nullopt, time);
+    if (!f.changes.empty())
+        shown.renderer =
+            std::make_unique<render::Renderer>(value_or_throw(shown.driver->session().make_renderer(state)));
+    return f;
 }
 
 math::HeadPose start_pose(const layout::Layout& layout) {
@@ -62,7 +74,7 @@ void open_session(PreviewSession& s, PreviewOptions options) {
     s.title = "impossible preview - " + (first.name.empty() ? first.source : first.name);
     s.window = open_preview_window(o, s.title);
     s.state = std::make_unique<gl::StateCache>();
-    s.shown = value_or_throw(build_shown(*s.state, std::move(first), ""));
+    s.shown = value_or_throw(build_shown(*s.state, std::move(first), "", o.frame));
     s.overlay = value_or_throw(build_overlay_program());
     s.presenter = value_or_throw(build_presenter());
 
@@ -78,25 +90,31 @@ void poll_reload(PreviewSession& s, Clock::time_point now) {
     ReloadPoll r = poll_layout(*s.watcher);
     if (r.kind == ReloadPoll::Failed) s.reload_errors = r.errors;
     if (r.kind != ReloadPoll::Reloaded) return;
-    const walk::Walker& walker = *s.shown.walker;
+    const walk::Walker& walker = s.shown.driver->walker();
     const std::string room_id = s.shown.session->layout().rooms[walker.room()].id;
     const bool walking = walker.started();
     const math::dmat4 w = walker.physical_to_virtual();
-    Result<Shown> built = build_shown(*s.state, std::move(*r.layout), room_id);
+    Result<Shown> built = build_shown(*s.state, std::move(*r.layout), room_id, s.options.frame);
     if (!built) {
         s.reload_errors = {"the reloaded layout cannot be drawn: " + built.error()};
         return;
     }
     Shown& next = *built;
     // Walk on where the head was: same room (if it still exists) and the
-    // same physical-to-virtual mapping.
-    if (walking && layout::find_room(next.session->layout(), room_id) >= 0) next.walker->resume(w, s.physical);
+    // same physical-to-virtual mapping; the changes start over from the
+    // reloaded layout's pairing.
+    const int room = layout::find_room(next.session->layout(), room_id);
+    if (walking && room >= 0) next.driver->resume(room, w, s.physical);
     s.shown = std::move(next);
     s.reload_errors.clear();
 }
 
 void reset_walk(PreviewSession& s) {
-    s.shown.walker = std::make_unique<walk::Walker>(s.shown.session->make_walker());
+    // The changes start over too: the renderer draws the loaded pairing again.
+    const bool paired = &s.shown.driver->session() != s.shown.session.get();
+    s.shown.driver = std::make_unique<session::WalkDriver>(*s.shown.session, s.options.frame);
+    if (paired)
+        s.shown.renderer = std::make_unique<render::Renderer>(value_or_throw(s.shown.session->make_renderer(*s.state)));
     s.physical = start_pose(s.shown.session->layout());
 }
 

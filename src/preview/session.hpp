@@ -25,6 +25,7 @@
 #include "render/frame.hpp"
 #include "render/renderer.hpp"
 #include "session/session.hpp"
+#include "session/walk_driver.hpp"
 #include "walk/replay.hpp"
 #include "walk/walker.hpp"
 
@@ -35,19 +36,30 @@ using Clock = std::chrono::steady_clock;
 inline constexpr std::size_t kTimedFrames = 60;  // frames in the HUD's median
 inline constexpr double kReloadPollSeconds = 0.25;
 
-// The layout being shown (its session) and what is built from it. The walker
-// points into the session's layout, so both live on the heap and are
-// replaced together.
+// The layout being shown (its session) and what is built from it. The walk
+// driver points into the session, so both live on the heap and are replaced
+// together. The driver walks with the layout's changes (layout-format.md,
+// "Changes while walking"), and a change made swaps its session for one of
+// the new pairing: the renderer is then rebuilt from that one.
 struct Shown {
-    std::unique_ptr<session::Session> session;
-    std::unique_ptr<render::Renderer> renderer;
-    std::unique_ptr<walk::Walker> walker;
+    std::unique_ptr<session::Session> session;  // the layout as loaded
+    std::unique_ptr<session::WalkDriver> driver;
+    std::unique_ptr<render::Renderer> renderer;  // of driver->session()
 };
 
-// Builds the renderer and a walker for `layout`, in the room named `room_id`
-// if it still exists (else the start room). Needs a current GL context, whose
-// state cache is `state`.
-Result<Shown> build_shown(gl::StateCache& state, layout::Layout layout, const std::string& room_id);
+// Builds the renderer and a walk driver for `layout`, in the room named
+// `room_id` if it still exists (else the start room), whose seen test
+// places the eyes by `eyes` (the options' frame). Needs a current GL
+// context, whose state cache is `state`.
+Result<Shown> build_shown(gl::StateCache& state, layout::Layout layout, const std::string& room_id,
+                          const math::View& eyes);
+
+// One frame's walk: the physical head at `time` (the changes' `time`
+// conditions read it), the seen test on the eyes `eyes` places; when it
+// makes changes, the renderer is rebuilt for the new pairing. Returns the
+// walked frame (teleports and changes index the loaded layout's).
+session::WalkedFrame walk_shown(Shown& shown, gl::StateCache& state, const math::HeadPose& physical, double time,
+                                const math::View& eyes);
 
 // The layout's start as a physical head pose.
 math::HeadPose start_pose(const layout::Layout& layout);

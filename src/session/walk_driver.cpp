@@ -33,6 +33,13 @@ WalkDriver::WalkDriver(const Session& session, const math::View& view)
     if (!session.layout().changes.empty()) changes_.emplace(session.layout());
 }
 
+void WalkDriver::start_in(int room) { walker_ = current_->make_walker(room); }
+
+void WalkDriver::resume(int room, const math::dmat4& physical_to_virtual, const math::HeadPose& physical) {
+    walker_ = current_->make_walker(room);
+    walker_.resume(physical_to_virtual, physical);
+}
+
 std::vector<char> WalkDriver::seen_doors() {
     const auto start = std::chrono::steady_clock::now();
     math::View view = view_;
@@ -59,9 +66,7 @@ std::vector<int> WalkDriver::consider_changes(double time) {
     current_ = std::make_shared<const Session>(std::move(paired.layout));
     const math::dmat4 w = walker_.physical_to_virtual();
     const math::HeadPose physical = walker_.physical_pose();
-    const int room = walker_.room();
-    walker_ = current_->make_walker(room);
-    walker_.resume(w, physical);
+    resume(walker_.room(), w, physical);
     // Hands and props walk with the new pairing from the next frame on.
     objects_.reset();
     moving_.clear();

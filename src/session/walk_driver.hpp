@@ -62,6 +62,17 @@ public:
     WalkedFrame step(const math::HeadPose& physical, const walk::HandPoses& hands = std::nullopt,
                      std::optional<double> time = std::nullopt);
 
+    // The view options of the seen test from the next frame on (the
+    // preview's keys change the IPD and the depth while it walks).
+    void set_view(const math::View& view) { view_ = view; }
+    // Before the first step: the walk starts in `room` (the start room when
+    // -1) instead of the start room.
+    void start_in(int room);
+    // Goes on with a walk begun by another walker (e.g. before the layout
+    // was reloaded): its W and last physical pose, in `room` (as
+    // walk::Walker::resume), with the pairing in force now.
+    void resume(int room, const math::dmat4& physical_to_virtual, const math::HeadPose& physical);
+
     const walk::Walker& walker() const { return walker_; }
     // The session with the pairing in force (the one given until a change
     // is made): what a frame of the walk is drawn with.

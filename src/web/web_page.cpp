@@ -31,6 +31,9 @@ struct Page {
     std::unique_ptr<session::Session> session;
     std::unique_ptr<session::WalkDriver> driver;
     std::optional<render::Renderer> renderer;
+    // The layout the renderer draws: the session's, or the walk driver's
+    // with the pairing its changes made (docs/changes.md).
+    const layout::Layout* drawn_layout = nullptr;
     render::FrameDesc frame;
     bool drawn = false;
     std::string message;  // the last failure, for the page to show
@@ -65,6 +68,7 @@ bool open_layout(const std::string& path) {
         page.driver.reset();
         page.session = std::move(session);
         page.renderer.emplace(std::move(*renderer));
+        page.drawn_layout = &page.session->layout();
         page.driver = std::make_unique<session::WalkDriver>(*page.session);
         page.drawn = false;
         page.message.clear();
@@ -78,10 +82,30 @@ json walked_json(const session::WalkedFrame& w) {
     const layout::Layout& l = page.session->layout();
     json teleports = json::array();
     for (const int p : w.teleports) teleports.push_back(l.portals[static_cast<std::size_t>(p)].id);
-    return {{"room", l.rooms[static_cast<std::size_t>(w.room)].id},
-            {"teleports", teleports},
-            {"position", {w.position.x, w.position.y, w.position.z}},
-            {"forward", {w.forward.x, w.forward.y, w.forward.z}}};
+    json status{{"room", l.rooms[static_cast<std::size_t>(w.room)].id},
+                {"teleports", teleports},
+                {"position", {w.position.x, w.position.y, w.position.z}},
+                {"forward", {w.forward.x, w.forward.y, w.forward.z}}};
+    if (!w.changes.empty()) {
+        json changes = json::array();
+        for (const int c : w.changes) changes.push_back(l.changes[static_cast<std::size_t>(c)].id);
+        status["changes"] = changes;
+    }
+    return status;
+}
+
+// A renderer for the walk driver's session once a change has given it a
+// new pairing (or a reset has gone back to the loaded one).
+bool follow_pairing() {
+    const session::Session& walked = page.driver->session();
+    if (&walked.layout() == page.drawn_layout) return true;
+    page.context->state().invalidate();
+    Result<render::Renderer> renderer = walked.make_renderer(page.context->state());
+    if (!renderer) return fail(renderer.error());
+    page.renderer.reset();
+    page.renderer.emplace(std::move(*renderer));
+    page.drawn_layout = &walked.layout();
+    return true;
 }
 
 // One frame (web_view.hpp has the request's fields): walk, draw, show.
@@ -90,7 +114,10 @@ bool draw_frame(const std::string& request_text) {
     try {
         const FrameRequest request = parse_frame_request(json::parse(request_text), page.session->layout());
         const auto started = std::chrono::steady_clock::now();
+        // The seen test of the changes looks with this frame's eyes.
+        page.driver->set_view(request.frame);
         const session::WalkedFrame walked = page.driver->step(request.physical_head, request.hands, request.time);
+        if (!follow_pairing()) return false;
         const auto walked_at = std::chrono::steady_clock::now();
         render::FrameDesc frame = request.frame;
         frame.head = walked.virtual_pose;
@@ -184,9 +211,11 @@ EMSCRIPTEN_KEEPALIVE const char* impossible_page_view_options(const char* reques
     return text.c_str();
 }
 EMSCRIPTEN_KEEPALIVE void impossible_page_reset() {
-    if (impossible::web::page.session)
+    if (impossible::web::page.session) {
         impossible::web::page.driver =
             std::make_unique<impossible::session::WalkDriver>(*impossible::web::page.session);
+        impossible::web::follow_pairing();
+    }
 }
 EMSCRIPTEN_KEEPALIVE const char* impossible_page_message() { return impossible::web::page.message.c_str(); }
 EMSCRIPTEN_KEEPALIVE const char* impossible_page_status() { return impossible::web::page.status.c_str(); }

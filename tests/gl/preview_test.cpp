@@ -249,6 +249,45 @@ TEST_F(Preview, ReplayedHandsAndTimeMatchRenderOfThePathsFrames) {
     }
 }
 
+TEST_F(Preview, ChangesAreMadeLiveAsWalkMakesThem) {
+    // Suma's door swap walked by --path: the preview makes the swap at the
+    // frame `walk` does with the same eyes (--size), and draws every frame
+    // after it with the new pairing, as `render --path --frame` does.
+    const Xvfb x;
+    ASSERT_FALSE(x.display.empty()) << x.error;
+    const fs::path layout = fs::path(IMPOSSIBLE_SOURCE_DIR) / "layouts/door_swap.json";
+    const fs::path path = fs::path(IMPOSSIBLE_SOURCE_DIR) / "layouts/door_swap_walk.txt";
+    const std::string size = " --size " + std::to_string(kEyeW) + "x" + std::to_string(kEyeH);
+    const fs::path shots = dir_ / "shots";
+    const ProgramRun run = run_program(
+        "DISPLAY=" + x.display,
+        "preview " + q(layout) + " --path " + q(path) + " --screenshots " + q(shots) + " --frames 101" + size, dir_);
+    ASSERT_EQ(run.status, 0) << run.err;
+    const std::vector<nlohmann::json> frames = json_lines(slurp(shots / "frames.jsonl"));
+    const ProgramRun walk = run_program("", "walk " + q(layout) + " --path " + q(path) + size, dir_);
+    ASSERT_EQ(walk.status, 0) << walk.err;
+    const std::vector<nlohmann::json> walked = json_lines(walk.out);
+    ASSERT_EQ(frames.size(), 101u);
+    ASSERT_GE(walked.size(), frames.size());
+    size_t made = 0;
+    for (size_t i = 0; i < frames.size(); ++i) {
+        SCOPED_TRACE("frame " + std::to_string(i));
+        EXPECT_EQ(frames[i]["room"], walked[i]["room"]);
+        EXPECT_EQ(frames[i]["teleports"], walked[i]["teleports"]);
+        EXPECT_EQ(frames[i].contains("changes"), walked[i].contains("changes"));
+        if (!walked[i].contains("changes")) continue;
+        EXPECT_EQ(frames[i]["changes"], walked[i]["changes"]);
+        made = i;
+    }
+    ASSERT_GT(made, 0u);
+    // Before, at and after the change (frame 100: turned round, the swapped
+    // door in view).
+    for (const size_t i : {made - 1, made, size_t{100}}) {
+        SCOPED_TRACE("frame " + std::to_string(i));
+        expect_frame_equals_render("--path " + q(path) + " --frame " + std::to_string(i), i, layout, shots, dir_);
+    }
+}
+
 TEST_F(Preview, CrossSwapsTheEyesInTheWindow) {
     const Xvfb x;
     ASSERT_FALSE(x.display.empty()) << x.error;

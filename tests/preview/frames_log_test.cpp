@@ -85,6 +85,10 @@ TEST(PreviewFramesLog, LineHasTheFieldsInOrder) {
               "\"eye_size\":[160,120]}\n");
     r.teleports.clear();
     EXPECT_NE(frame_line(r).find("\"teleports\":[],"), std::string::npos);
+    // A frame that made changes ends with them, as `walk`'s line does.
+    r.changes = {"swap"};
+    const std::string line = frame_line(r);
+    EXPECT_EQ(line.substr(line.size() - 41), "\"eye_size\":[160,120],\"changes\":[\"swap\"]}\n");
 }
 
 TEST(PreviewFramesLog, SavesNumberedFilesAndTheLog) {

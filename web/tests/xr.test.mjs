@@ -47,11 +47,15 @@ function readPath(file) {
     .filter((l) => l && !l.startsWith('#')).map((l) => l.split(/\s+/).slice(0, 6).map(Number));
 }
 
+// Paths from docs/tours, or (a third element) the layouts folder: the door
+// swap changes its pairing on the way (docs/changes.md), at the frame `walk`
+// makes the change.
 const walks = [['default.json', 'default.txt'], ['four_rooms.json', 'four_rooms.txt'], ['rotated.json', 'rotated.txt'],
-               ['curved_corridor.json', 'curved_corridor.txt']];
-for (const [layoutName, pathName] of smoke ? walks.slice(0, 2) : walks) {
+               ['curved_corridor.json', 'curved_corridor.txt'], ['door_swap.json', 'door_swap_walk.txt', layouts]];
+for (const [layoutName, pathName, pathDir] of smoke ? walks.slice(0, 2) : walks) {
   test(`a walk in the emulated headset teleports as walk does: ${layoutName}`, async () => {
-    const layout = path.join(layouts, layoutName), pathFile = path.join(repoRoot, 'docs', 'tours', pathName);
+    const layout = path.join(layouts, layoutName);
+    const pathFile = path.join(pathDir ?? path.join(repoRoot, 'docs', 'tours'), pathName);
     const original = runNative(['walk', layout, '--path', pathFile]).trim().split('\n').map((l) => JSON.parse(l));
     const poses = readPath(pathFile);
     const session = await openPage({ xr: true, width: 320, height: 100 });
@@ -72,7 +76,8 @@ for (const [layoutName, pathName] of smoke ? walks.slice(0, 2) : walks) {
           if (i === 0) api.reset();
           const status = await new Promise((resolve) => { xr.onFrame = resolve; xr.hold = false; });
           xr.hold = true;
-          out.push({ room: status.room, teleports: status.teleports, physical: status.physical });
+          out.push({ room: status.room, teleports: status.teleports, physical: status.physical,
+                     changes: status.changes ?? [] });
         }
         await xr.exit();
         return out;
@@ -92,11 +97,13 @@ for (const [layoutName, pathName] of smoke ? walks.slice(0, 2) : walks) {
       const teleports = expected.reduce((n, e) => n + e.teleports.length, 0);
       assert.ok(teleports > 0, 'the path passes doors');
       for (const [i, e] of expected.entries())
-        assert.deepEqual({ room: walked[i].room, teleports: walked[i].teleports }, { room: e.room, teleports: e.teleports },
-                         `frame ${i}`);
+        assert.deepEqual({ room: walked[i].room, teleports: walked[i].teleports, changes: walked[i].changes },
+                         { room: e.room, teleports: e.teleports, changes: e.changes ?? [] }, `frame ${i}`);
       const originalTeleports = original.flatMap((e) => e.teleports), walkedTeleports = walked.flatMap((w) => w.teleports);
       assert.deepEqual(walkedTeleports, originalTeleports, 'the same doors, in order, as the path itself');
-      console.log(`${layoutName}: ${walked.length} frames, ${teleports} teleports, all as walk`);
+      const changes = expected.reduce((n, e) => n + (e.changes ?? []).length, 0);
+      if (layoutName === 'door_swap.json') assert.equal(changes, 1, 'the swap is made');
+      console.log(`${layoutName}: ${walked.length} frames, ${teleports} teleports, ${changes} changes, all as walk`);
     } finally {
       await session.close();
     }
