@@ -6,12 +6,19 @@
 
 namespace impossible::design {
 
-std::vector<char> reachable_rooms(const layout::Layout& layout, const changes::Pairing& pairing,
-                                  const std::vector<int>& from) {
+namespace {
+
+// Each room's doors (pairing-independent).
+std::vector<std::vector<int>> room_doors(const layout::Layout& layout) {
     std::vector<std::vector<int>> doors(layout.rooms.size());
     for (std::size_t p = 0; p < layout.portals.size(); ++p)
         if (layout.portals[p].kind == layout::PortalKind::Door)
             doors[static_cast<std::size_t>(layout.portals[p].room)].push_back(static_cast<int>(p));
+    return doors;
+}
+
+std::vector<char> reachable_by(const layout::Layout& layout, const std::vector<std::vector<int>>& doors,
+                               const changes::Pairing& pairing, const std::vector<int>& from) {
     std::vector<char> seen(layout.rooms.size(), 0);
     std::deque<int> queue;
     for (const int r : from)
@@ -34,12 +41,20 @@ std::vector<char> reachable_rooms(const layout::Layout& layout, const changes::P
     return seen;
 }
 
+}  // namespace
+
+std::vector<char> reachable_rooms(const layout::Layout& layout, const changes::Pairing& pairing,
+                                  const std::vector<int>& from) {
+    return reachable_by(layout, room_doors(layout), pairing, from);
+}
+
 ChangesReach changes_reach(const layout::Layout& layout) {
     ChangesReach out;
     const std::size_t rooms = layout.rooms.size();
     out.after_change.assign(rooms, -1);
     changes::Pairing pairing = changes::loaded_pairing(layout);
-    out.reachable = reachable_rooms(layout, pairing, {layout.start.room});
+    const std::vector<std::vector<int>> doors = room_doors(layout);
+    out.reachable = reachable_by(layout, doors, pairing, {layout.start.room});
     for (std::size_t c = 0; c < layout.changes.size(); ++c) {
         const layout::Change& change = layout.changes[c];
         ChangeReach reach;
@@ -56,7 +71,7 @@ ChangesReach changes_reach(const layout::Layout& layout) {
                 for (std::size_t r = 0; r < rooms; ++r)
                     if (out.reachable[r]) from.push_back(static_cast<int>(r));
             }
-            const std::vector<char> now = reachable_rooms(layout, pairing, from);
+            const std::vector<char> now = reachable_by(layout, doors, pairing, from);
             for (std::size_t r = 0; r < rooms; ++r)
                 if (now[r] && !out.reachable[r]) {
                     out.reachable[r] = 1;

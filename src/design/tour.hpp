@@ -70,7 +70,7 @@ Result<Tour> plan_tour(const layout::Layout& layout, const TourOptions& options 
 // reached, its `after` never happens, its `time` is more than
 // kMaxTourWait seconds on, or an eye sees one of its doors wherever it
 // stands and turns).
-inline constexpr double kMaxTourWait = 600.0;
+inline constexpr double kMaxTourWait = 300.0;
 Result<Tour> plan_tour_with_changes(const layout::Layout& layout, const TourOptions& options = {});
 
 // Replays poses with a walker on the layout's `links` and fills visited,

@@ -20,7 +20,9 @@ namespace impossible::design::detail {
 // What a stretch of the walk came to.
 enum class Went { Ok, Changed, Failed };
 
-inline constexpr std::size_t kMaxPoses = 100'000;  // what a path file holds (layout::kMaxPathFileBytes)
+// Poses at most (11 minutes at 90 a second): a path file of them stays within
+// layout::kMaxPathFileBytes (4 MiB) at up to 70 bytes a line.
+inline constexpr std::size_t kMaxPoses = 60'000;
 inline constexpr double kTurnDeg = 15.0;
 
 // Where each room lies on the physical floor with the pairing in force,

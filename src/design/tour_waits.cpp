@@ -156,7 +156,12 @@ Result<Tour> ChangePlanner::finish() {
     std::vector<int> missing;
     for (std::size_t r = 0; r < goal_.size(); ++r)
         if (goal_[r] && !visited(static_cast<int>(r))) missing.push_back(static_cast<int>(r));
-    const auto is_missing = [&](int r) { return std::find(missing.begin(), missing.end(), r) != missing.end(); };
+    // A room doors lead to with the pairing in force was missed on the way
+    // (a blocked door, the poses' limit), not for want of a change.
+    if (stage_.root != sim_.room()) restage(false);
+    const auto is_missing = [&](int r) {
+        return !stage_.reachable[r] && std::find(missing.begin(), missing.end(), r) != missing.end();
+    };
     const std::vector<changes::ChangeStatus>& status = sim_.changes().status();
     const ChangesReach reach = changes_reach(base_);
     // A room left out for a change that did not happen: the change it needs,
@@ -180,6 +185,10 @@ Result<Tour> ChangePlanner::finish() {
     t_.missed = missing;
     for (const int r : missing) {
         const auto why = why_.find(r);
+        if (why == why_.end() && t_.poses.size() > kMaxPoses) {
+            t_.why.push_back("the tour stopped at its limit of " + std::to_string(kMaxPoses) + " poses");
+            continue;
+        }
         t_.why.push_back(why != why_.end() ? why->second
                                            : "no door leads to it with the pairing the changes made left");
     }

@@ -118,7 +118,7 @@ TEST(TourChanges, FailsWithExitOneNamingTheChangeAndTheRoom) {
     const Ran r = run({"tour", file, "--out", out});
     EXPECT_EQ(r.status, 1) << r.out;
     EXPECT_NE(r.err.find("the tour cannot visit room \"garden\": it needs change \"swap\", which can never happen on "
-                         "its route: its time, 5000 s, is more than 600 s after the tour comes to room \"study\""),
+                         "its route: its time, 5000 s, is more than 300 s after the tour comes to room \"study\""),
               std::string::npos)
         << r.err;
     EXPECT_FALSE(std::ifstream(out).good());

@@ -349,7 +349,7 @@ TEST(ChangesTour, FailsNamingTheChangeAndTheRoomWhenTheChangeCanNeverHappen) {
     EXPECT_EQ(
         t.error(),
         "the tour cannot visit room \"vault\": it needs change \"open\", which can never happen on its route: its "
-        "time, 100000 s, is more than 600 s after the tour comes to room \"study\"");
+        "time, 100000 s, is more than 300 s after the tour comes to room \"study\"");
 }
 
 }  // namespace
