@@ -20,7 +20,10 @@ const char* kTourUsage =
     "Plans a walk through every room a door leads to, inside the play area and around props,\n"
     "and writes it as a path file of physical head poses (the walk format) for walk,\n"
     "preview --path and bench --path. Prints the physical and virtual distance walked, the\n"
-    "rooms visited (replayed with the walker) and the closest approach to the play area's edge.\n";
+    "rooms visited (replayed with the walker) and the closest approach to the play area's edge.\n"
+    "A layout with changes is walked with them (render's default eyes, 90 poses a second): the\n"
+    "path file's comments and standard error say where the tour waits for a change and where\n"
+    "each is made; a room it needs a change for that can never happen on its route is an error.\n";
 
 struct TourArgs {
     std::string out;  // required
@@ -54,6 +57,12 @@ std::string summary(const layout::Layout& layout, const design::Tour& t, std::si
     if (t.missed.empty()) out += " none";
     for (const int r : t.missed) out += " " + layout.rooms[r].id;
     out += "\n";
+    if (!layout.changes.empty()) {
+        out += "changes made:";
+        if (t.changes.empty()) out += " none";
+        for (const int c : t.changes) out += " " + layout.changes[static_cast<std::size_t>(c)].id;
+        out += "\n";
+    }
     if (std::isfinite(t.closest_edge)) {
         std::snprintf(line, sizeof line, "closest approach to the play area's edge: %.2f m\n", t.closest_edge);
         out += line;
@@ -83,9 +92,13 @@ int run_tour_command(const Args& args, std::ostream& out, std::ostream& err) {
     const std::size_t reachable = tour.visited.size() + tour.missed.size();
     const std::string report = summary(layout, tour, reachable);
     const std::string header = "impossible tour of " + layout.source + "\n" + report;
-    outputs.set(o.out, design::path_text(tour.poses, header));
+    std::vector<design::PathNote> notes;
+    for (const design::TourNote& n : tour.notes) notes.emplace_back(n.pose, n.text);
+    outputs.set(o.out, design::path_text(tour.poses, header, notes));
     outputs.commit();
     out << report;
+    for (const design::TourNote& n : tour.notes)
+        err << "note: " << (n.text.rfind("waits", 0) == 0 ? "the tour " : "") << n.text << "\n";
     for (std::size_t i = 0; i < tour.missed.size(); ++i)
         err << "warning: the tour could not reach room \"" << layout.rooms[tour.missed[i]].id << "\": " << tour.why[i]
             << "\n";

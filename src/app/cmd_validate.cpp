@@ -18,7 +18,8 @@ const char* kValidateUsage =
     "Checks a layout file; prints a summary (rooms, portals, pairs, rooms outside the play\n"
     "area, expansion ratio; door pairs, window pairs and mirrors where there are mirrors or\n"
     "windows) and the designer's report (room overlaps against Suma et al. 2012,\n"
-    "rooms no door leads to, rooms and doors outside the play area as walked), or every\n"
+    "rooms no door leads to, rooms and doors outside the play area as walked; with changes,\n"
+    "each change's condition, pairs and the rooms it makes reachable), or every\n"
     "problem as FILE:LINE:COLUMN: message (exit 1). Findings are warnings (exit 0).\n";
 
 struct ValidateOptions {

@@ -160,7 +160,7 @@ void add_labels(Drawing& d, const layout::Layout& layout, const Report& r) {
         if (!at) continue;
         PlanShape s = fill("labels", layout.rooms[i].id, {*at}, room_colour(static_cast<int>(i), Tone::Dark));
         s.kind = PlanShape::Kind::Text;
-        s.text = layout.rooms[i].id + (r.placement.rooms[i].reachable ? "" : " (unreachable)");
+        s.text = layout.rooms[i].id + reach_note(layout, r, i, " (unreachable)");
         d.shapes.push_back(s);
     }
 }
@@ -172,7 +172,7 @@ void add_floor(Drawing& d, const layout::Layout& layout, const Report& r) {
         d.shapes.push_back(stroke("play-area", "", area, {0.15, 0.45, 0.2, 1.0}, 0.04, true));
     }
     for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
-        const bool reachable = r.placement.rooms[i].reachable;
+        const bool reachable = r.placement.rooms[i].reachable || r.changes.after_change[i] >= 0;
         const int h = static_cast<int>(i);
         d.shapes.push_back(fill("rooms", layout.rooms[i].id, r.floors[i], room_colour(h, Tone::Fill)));
         d.shapes.push_back(
@@ -224,6 +224,7 @@ Drawing plan_drawing(const layout::Layout& layout, const Report& r, const std::v
     add_windows(d, layout, r);
     add_motions(d, layout, r);
     add_lights(d, layout, r);
+    add_changes(d, layout, r);
     const glm::dvec2 s{layout.start.position.x, layout.start.position.z};
     const double yaw = math::radians(layout.start.yaw_deg);
     d.shapes.push_back(fill("start", "start", circle(s, 0.12), {0.85, 0.1, 0.1, 1.0}));

@@ -115,7 +115,7 @@ void add_legend(Drawing& d, const layout::Layout& layout, const Report& r, bool 
         const int h = static_cast<int>(i);
         d.legend.push_back({Sample::Swatch, room_colour(h, Tone::Fill), room_colour(h, Tone::Line),
                             hatched ? room_hatch_angle(h) : -1.0,
-                            layout.rooms[i].id + (r.placement.rooms[i].reachable ? "" : " (unreachable, dashed)")});
+                            layout.rooms[i].id + reach_note(layout, r, i, " (unreachable, dashed)")});
     }
     if (layout.rooms.size() > rooms)
         d.legend.push_back({Sample::Swatch,
@@ -142,6 +142,8 @@ void add_legend(Drawing& d, const layout::Layout& layout, const Report& r, bool 
     if (has("windows")) d.legend.push_back({Sample::Line, {}, {0.20, 0.55, 0.90, 1.0}, -1.0, "window"});
     if (has("motion")) d.legend.push_back({Sample::Dashed, {}, kMotionColour, -1.0, "moving prop's path"});
     if (has("lights")) d.legend.push_back({Sample::Dot, {}, kLampColour, -1.0, "lamp"});
+    if (has("changes"))
+        d.legend.push_back({Sample::Dashed, {}, kChangeColour, -1.0, "a change's new pair (labelled with its id)"});
     d.legend.push_back({Sample::Dot, {}, {0.85, 0.1, 0.1, 1.0}, -1.0, "start"});
     if (path) d.legend.push_back({Sample::Line, {}, {0.1, 0.25, 0.85, 0.85}, -1.0, "walk"});
 }

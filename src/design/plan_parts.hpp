@@ -30,10 +30,16 @@ math::Polygon2 circle(glm::dvec2 c, double r);
 inline constexpr Rgba kLampColour{0.96, 0.70, 0.05, 1.0};
 inline constexpr Rgba kLampEdge{0.45, 0.28, 0.0, 1.0};
 inline constexpr Rgba kMotionColour{0.80, 0.30, 0.55, 1.0};
+inline constexpr Rgba kChangeColour{0.42, 0.12, 0.68, 1.0};
 
 void add_hatching(Drawing& d, const layout::Layout& layout, const Report& r);
 void add_motions(Drawing& d, const layout::Layout& layout, const Report& r);
 void add_lights(Drawing& d, const layout::Layout& layout, const Report& r);
+// "" for a room reachable from the start, " (after ID)" for one reachable
+// only after change ID, else `unreachable`.
+std::string reach_note(const layout::Layout& layout, const Report& r, std::size_t room, const char* unreachable);
+// Each change's new pairs (plan_changes.cpp), group "changes".
+void add_changes(Drawing& d, const layout::Layout& layout, const Report& r);
 // The legend's entries: every room (the first kMaxLegendRooms), then each
 // kind of mark the drawing holds.
 inline constexpr std::size_t kMaxLegendRooms = 24;

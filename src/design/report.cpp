@@ -140,12 +140,50 @@ void write_findings(const layout::Layout& layout, Report& r) {
                                  " (the first way is reported)");
 }
 
+// "5 of 5", and with rooms reachable only after a change "5 of 5 (2 only
+// after a change: red_corridor after reroute, library after reroute)".
+std::string reachable_text(const layout::Layout& layout, const Report& r) {
+    std::string later;
+    std::size_t count = r.placement.order.size(), after = 0;
+    for (std::size_t i = 0; i < r.changes.after_change.size(); ++i) {
+        const int c = r.changes.after_change[i];
+        if (c < 0) continue;
+        ++after;
+        later +=
+            (after > 1 ? ", " : "") + layout.rooms[i].id + " after " + layout.changes[static_cast<std::size_t>(c)].id;
+    }
+    count += after;
+    std::string out = std::to_string(count) + " of " + std::to_string(layout.rooms.size());
+    if (after > 0) out += " (" + std::to_string(after) + " only after a change: " + later + ")";
+    return out;
+}
+
+// "changes: N" and a line per change: its condition, pairs and what it
+// makes reachable (only for layouts with changes).
+std::string changes_text(const layout::Layout& layout, const Report& r) {
+    if (layout.changes.empty()) return "";
+    std::string out = "changes: " + std::to_string(layout.changes.size()) + "\n";
+    for (std::size_t c = 0; c < layout.changes.size(); ++c) {
+        const layout::Change& change = layout.changes[c];
+        const ChangeReach& reach = r.changes.changes[c];
+        out += "  " + change.id + " (when " + condition_text(layout, change) + "): pairs";
+        for (const auto& pair : change.pairs)
+            out += " " + layout.portals[static_cast<std::size_t>(pair[0])].id + "/" +
+                   layout.portals[static_cast<std::size_t>(pair[1])].id;
+        out += "; makes reachable:" + ids(layout, reach.makes_reachable);
+        if (!reach.can_happen) out += "; can never happen";
+        out += "\n";
+    }
+    return out;
+}
+
 }  // namespace
 
 Report make_report(const layout::Layout& layout) {
     Report r;
     r.summary = layout::summarize(layout);
     r.placement = place_rooms(layout);
+    r.changes = changes_reach(layout);
     // A volume's target room is seen inside the volume, never walked into
     // (layout-format.md, "Volume portals"): not unreachable, and its
     // overlap with the room it shows in is the point, not a finding.
@@ -155,7 +193,8 @@ Report make_report(const layout::Layout& layout) {
             seen_only[static_cast<std::size_t>(v.target_room)] = true;
     for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
         r.floors.push_back(physical_floor(layout.rooms[i], r.placement.rooms[i].to_physical));
-        if (!r.placement.rooms[i].reachable && !seen_only[i]) r.unreachable.push_back(static_cast<int>(i));
+        if (!r.placement.rooms[i].reachable && !r.changes.reachable[i] && !seen_only[i])
+            r.unreachable.push_back(static_cast<int>(i));
     }
     Overlaps overlaps = room_overlaps(r.floors);
     r.overlaps = std::move(overlaps.listed);
@@ -173,8 +212,7 @@ Report make_report(const layout::Layout& layout) {
 std::string report_text(const layout::Layout& layout, const Report& r) {
     std::string out;
     out += "start room: " + layout.rooms[layout.start.room].id + "\n";
-    out += "reachable rooms: " + std::to_string(r.placement.order.size()) + " of " +
-           std::to_string(layout.rooms.size()) + "\n";
+    out += "reachable rooms: " + reachable_text(layout, r) + "\n";
     out += "unreachable rooms:" + ids(layout, r.unreachable) + "\n";
     if (!r.blocked.empty()) {  // only then, so that other layouts' reports stay as they were
         std::vector<int> behind;
@@ -212,6 +250,7 @@ std::string report_text(const layout::Layout& layout, const Report& r) {
         for (const int p : r.doors_outside) out += " " + layout.portals[p].id;
         out += "\n";
     }
+    out += changes_text(layout, r);
     out += lights_text(layout, r);
     out += "findings: " + std::to_string(r.findings.size()) + "\n";
     return out;

@@ -14,6 +14,7 @@
 #include "design/obstacles.hpp"
 #include "design/overlap.hpp"
 #include "design/placement.hpp"
+#include "design/report_changes.hpp"
 #include "layout/layout.hpp"
 #include "lights/light_bound.hpp"
 #include "lights/light_images.hpp"
@@ -28,11 +29,15 @@ struct RoomFinding {
 struct Report {
     layout::Summary summary;
     Placement placement;
-    std::vector<math::Polygon2> floors;      // physical floor of each room
-    std::vector<Overlap> overlaps;           // the listed pairs, at most kMaxListedOverlaps (design/overlap.hpp)
-    std::size_t overlap_pairs = 0;           // pairs found, the listed included
-    bool overlaps_exact = true;              // false: the search stopped at its limit; overlap_pairs is a lower bound
-    std::vector<int> unreachable;            // rooms, file order
+    std::vector<math::Polygon2> floors;  // physical floor of each room
+    std::vector<Overlap> overlaps;       // the listed pairs, at most kMaxListedOverlaps (design/overlap.hpp)
+    std::size_t overlap_pairs = 0;       // pairs found, the listed included
+    bool overlaps_exact = true;          // false: the search stopped at its limit; overlap_pairs is a lower bound
+    // Rooms no door leads to from the start, file order, with every change
+    // that can happen made (design/report_changes.hpp): a room reachable
+    // only after a change is reachable.
+    std::vector<int> unreachable;
+    ChangesReach changes;                    // what the layout's changes make reachable (empty without changes)
     std::vector<RoomFinding> rooms_outside;  // with a play area: physical floors not inside it
     std::vector<int> doors_outside;          // portals whose floor line is not inside the play area
     // Doors a prop stands in the way of (design/obstacles.hpp), in portal

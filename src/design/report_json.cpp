@@ -79,7 +79,10 @@ ordered_json rooms_json(const layout::Layout& layout, const Report& r) {
         const RoomPlacement& p = r.placement.rooms[i];
         ordered_json room;
         room["id"] = layout.rooms[i].id;
-        room["reachable"] = p.reachable;
+        const int after = i < r.changes.after_change.size() ? r.changes.after_change[i] : -1;
+        room["reachable"] = p.reachable || after >= 0;
+        // Only for a room reachable only after a change: other documents stay as they were.
+        if (after >= 0) room["reachable_after_change"] = layout.changes[static_cast<std::size_t>(after)].id;
         room["doors_from_start"] = p.reachable ? ordered_json(p.doors) : ordered_json(nullptr);
         room["entered_through"] = p.via >= 0 ? ordered_json(layout.portals[p.via].id) : ordered_json(nullptr);
         room["floor_area"] = rounded(math::area(r.floors[i]));
@@ -144,6 +147,36 @@ ordered_json blocked_json(const layout::Layout& layout, const Report& r) {
     return list;
 }
 
+// Each change: its id, condition, pairs, affected doors, whether it can
+// happen and the rooms it makes reachable (design/report_changes.hpp).
+ordered_json changes_json(const layout::Layout& layout, const Report& r) {
+    ordered_json list = ordered_json::array();
+    auto portal_id = [&layout](int p) { return layout.portals[static_cast<std::size_t>(p)].id; };
+    for (std::size_t c = 0; c < layout.changes.size(); ++c) {
+        const layout::Change& change = layout.changes[c];
+        const ChangeReach& reach = r.changes.changes[c];
+        ordered_json e;
+        e["id"] = change.id;
+        ordered_json when;
+        if (change.when.enter >= 0) when["enter"] = layout.rooms[static_cast<std::size_t>(change.when.enter)].id;
+        if (change.when.after >= 0) when["after"] = layout.changes[static_cast<std::size_t>(change.when.after)].id;
+        if (change.when.time) when["time"] = *change.when.time;
+        e["when"] = when;
+        ordered_json pairs = ordered_json::array();
+        for (const auto& pair : change.pairs) pairs.push_back({portal_id(pair[0]), portal_id(pair[1])});
+        e["pairs"] = pairs;
+        ordered_json affected = ordered_json::array();
+        for (const int d : reach.affected) affected.push_back(portal_id(d));
+        e["affected_doors"] = affected;
+        e["can_happen"] = reach.can_happen;
+        ordered_json rooms = ordered_json::array();
+        for (const int room : reach.makes_reachable) rooms.push_back(layout.rooms[static_cast<std::size_t>(room)].id);
+        e["makes_reachable"] = rooms;
+        list.push_back(e);
+    }
+    return list;
+}
+
 }  // namespace
 
 ordered_json report_json(const layout::Layout& layout, const Report& r,
@@ -181,6 +214,7 @@ ordered_json report_json(const layout::Layout& layout, const Report& r,
     for (const int p : r.doors_outside) doors_outside.push_back(layout.portals[p].id);
     j["doors_outside_play_area"] = doors_outside;
     j["blocked_doors"] = blocked_json(layout, r);
+    if (!layout.changes.empty()) j["changes"] = changes_json(layout, r);  // only then
     // Only then: fixed layouts' documents stay as they were.
     if (layout.lighting == layout::Lighting::Lights) j["lighting"] = lighting_json(layout, r);
     ordered_json lines = ordered_json::array();

@@ -216,6 +216,7 @@ void replay(const layout::Layout& layout, const links::PortalLinks& links, Tour&
 }
 
 Result<Tour> plan_tour(const layout::Layout& layout, const TourOptions& options) {
+    if (!layout.changes.empty()) return plan_tour_with_changes(layout, options);
     return Planner(layout, options).run();
 }
 
