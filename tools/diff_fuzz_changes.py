@@ -10,7 +10,14 @@ Each case (seed, number) is:
           with a coincident pair of free-standing doors in two different
           rooms (normals opposite, turned by multiples of 90 degrees or at
           random, boxes 1 cm to 0.5 m deep, one or two door sizes), 0-2 box
-          props per room outside the square;
+          props per room outside the square; in 40 % of the cases a mirror
+          in a wall of one room (sometimes tinted), in 30 % a window pair in
+          walls of two rooms (random reflectance): the seen test and the
+          rays pass them, the walk never reaches them;
+  view    --size 96x64, --fov 60-110 or, in a quarter of the cases, a random
+          headset profile (--hmd; tools/diff_fuzz.py's headset_profile:
+          asymmetric angles, often a visible area), --max-depth 1-8: the
+          same for walk, render and trace;
   changes 1-3 valid changes: 1-2 pairs of doors of equal size in different
           rooms, each door at most once in a change, no pair already
           partners; `when` is an `enter` room, an `after` naming an earlier
@@ -18,7 +25,10 @@ Each case (seed, number) is:
   walk    a path file built leg by leg: from the head's virtual pose (which
           `impossible walk` prints), sometimes a look round (90 or 180
           degrees, or any turn) then a walk to 1 m in front of a door of the
-          head's room, a turn to face it and a walk 0.7 m through it. The
+          head's room (in 70 % of the legs where there is one, a door that
+          leads, with the pairing walk has made so far, into a room a
+          change not yet made names in `enter`), a turn to face it and a
+          walk 0.7 m through it; at most 10 legs or 200 frames. The
           virtual way points go through the walker's W (from the pose it
           prints) to physical poses; the path is cut after the first frame
           of a leg that teleports, and the next leg starts there. Head
@@ -63,7 +73,8 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from diff_fuzz import compare_figures, is_door_edge_pixel, is_sliver, read_grey_png, rnd_color, shell  # noqa: E402
+from diff_fuzz import (compare_figures, headset_profile, is_door_edge_pixel, is_sliver, read_grey_png,  # noqa: E402
+                       rnd_color, shell)
 
 STEP = 0.08  # metres a frame
 TURN = 12.0  # degrees a frame
@@ -96,7 +107,14 @@ class ChangeCase:
         self.rooms, self.portals, self.changes = [], [], []
         self.make_rooms()
         self.make_doors()
+        self.make_glass()
         self.make_changes()
+        # A headset profile (--hmd, tools/diff_fuzz.py's headset_profile:
+        # asymmetric angles, often a visible area) instead of --fov, in a
+        # quarter of the cases: walk's seen test and the rays then both
+        # leave the hidden pixels out.
+        self.headset = headset_profile(seed, number, self.fov) if r.random() < 0.25 else None
+        self.hmd_path = None
 
     # --- the layout ------------------------------------------------------
     def make_rooms(self):
@@ -142,7 +160,7 @@ class ChangeCase:
             self.door(fb, self.rooms[b]["id"], c, [-v for v in n], w, h, fa)
             self.slots.append(k)
         self.start_room = self.portals[0]["room"] if r.random() < 0.7 else r.choice(self.rooms)["id"]
-        for _ in range(100):  # a start clear of every door's box
+        for _ in range(100):  # a start clear of every door's box (the glass is in walls)
             p = [round(r.uniform(-3, 3), 2), HEAD_Y, round(r.uniform(-3, 3), 2)]
             if all(math.hypot(p[0] - d["center"][0], p[2] - d["center"][2]) > 1.0 for d in self.portals):
                 break
@@ -156,10 +174,47 @@ class ChangeCase:
                              "normal": [round(v, 12) for v in n], "width": w, "height": h, "target": target,
                              "depth": round(depth, 4)})
 
+    def make_glass(self):
+        """Sometimes a mirror in a wall of one room, and a window pair in
+        walls of two rooms: the seen test and the rays pass them (reflected,
+        and to the other room), the walk never reaches them."""
+        r = self.r
+
+        def in_wall(room):
+            lo, hi = room["min"], room["max"]
+            side = r.choice([0, 1, 2, 3])  # -x, +x, -z, +z
+            axis, other = (0, 2) if side < 2 else (2, 0)
+            c = [0.0, 0.0, 0.0]
+            c[axis] = lo[axis] if side % 2 == 0 else hi[axis]
+            n = [0.0, 0.0, 0.0]
+            n[axis] = 1.0 if side % 2 == 0 else -1.0
+            w, h = round(r.uniform(0.5, 2.5), 2), round(r.uniform(0.5, 1.8), 2)
+            c[other] = round(r.uniform(-1.5, 1.5), 2)  # within the wall: every room spans ±3.5 m
+            c[1] = round(r.uniform(h / 2 + 0.1, hi[1] - h / 2 - 0.1), 3)
+            return {"room": room["id"], "center": c, "normal": n, "width": w, "height": h}
+
+        free = list(self.rooms)  # the window pair's rooms: not the mirror's (their holes would overlap)
+        if r.random() < 0.4:
+            room = r.choice(self.rooms)
+            free.remove(room)
+            m = dict({"id": "mirror"}, **in_wall(room), kind="mirror")
+            if r.random() < 0.5:
+                m["tint"] = [round(r.uniform(0.3, 1), 3) for _ in range(3)]
+            self.portals.append(m)
+        if r.random() < 0.3:
+            a, b = r.sample(free, 2)
+            wa, wb = in_wall(a), in_wall(b)
+            wb["width"], wb["height"] = h = wa["width"], wa["height"]
+            wb["center"][1] = round(r.uniform(h[1] / 2 + 0.1, b["max"][1] - h[1] / 2 - 0.1), 3)
+            self.portals.append(dict({"id": "window_a"}, **wa, kind="window", target="window_b",
+                                     reflectance=round(r.uniform(0, 1), 3)))
+            self.portals.append(dict({"id": "window_b"}, **wb, kind="window", target="window_a"))
+
     def make_changes(self):
         r = self.r
-        partner = {p["id"]: p["target"] for p in self.portals}
-        by_id = {p["id"]: p for p in self.portals}
+        doors = [p for p in self.portals if p.get("kind", "door") == "door"]
+        partner = {p["id"]: p["target"] for p in doors}
+        by_id = {p["id"]: p for p in doors}
         for k in range(r.randint(1, 3)):
             used, pairs = set(), []
             for _ in range(r.choice([1, 1, 2])):
@@ -195,7 +250,8 @@ class ChangeCase:
                 "rooms": self.rooms, "portals": self.portals, "changes": self.changes}
 
     def view_args(self):
-        return ["--size", self.size, "--fov", str(self.fov), "--max-depth", str(self.max_depth)]
+        eyes = ["--hmd", self.hmd_path] if self.hmd_path else ["--fov", str(self.fov)]
+        return ["--size", self.size] + eyes + ["--max-depth", str(self.max_depth)]
 
     # --- the walk --------------------------------------------------------
     def run_walk(self, binary, layout_path, path_path, lines):
@@ -207,7 +263,19 @@ class ChangeCase:
             raise RuntimeError("walk exit %d: %s" % (p.returncode, p.stderr.strip()))
         return [json.loads(line) for line in p.stdout.splitlines() if line.strip()]
 
-    def make_walk(self, binary, layout_path, path_path, max_frames=200, max_legs=8):
+    def pairing_after(self, out):
+        """The doors' partners after the changes walk made in `out`, and the
+        ids of those changes."""
+        pairing = {p["id"]: p["target"] for p in self.portals if p.get("kind", "door") == "door"}
+        by_id = {c["id"]: c for c in self.changes}
+        made = set()
+        for line in out:
+            for cid in line.get("changes", []):
+                pairing = affected_and_apply(pairing, by_id[cid])[1]
+                made.add(cid)
+        return pairing, made
+
+    def make_walk(self, binary, layout_path, path_path, max_frames=200, max_legs=10):
         """The path's lines and walk's output for them."""
         r = self.r
         phys = [list(self.start), self.start_yaw, 0.0]  # physical position, yaw, pitch
@@ -263,7 +331,15 @@ class ChangeCase:
                 turn_to(vyaw + turn, r.choice([0, 0, -20, 15]))
                 for _ in range(r.randint(1, 4)):
                     add(to_phys(vpos), vyaw - theta, pitch)
-            doors = [p for p in self.portals if p["room"] == last["room"]]
+            doors = [p for p in self.portals if p["room"] == last["room"] and p.get("kind", "door") == "door"]
+            # Mostly a door into a room a change waits for (with the pairing
+            # walk has made so far), so that more changes are armed.
+            pairing, made = self.pairing_after(out)
+            wanted = {c["when"].get("enter") for c in self.changes if c["id"] not in made}
+            rooms = {p["id"]: p["room"] for p in self.portals}
+            toward = [p for p in doors if pairing.get(p["id"]) and rooms[pairing[p["id"]]] in wanted]
+            if toward and r.random() < 0.7:
+                doors = toward
             if doors:
                 d = r.choice(doors)
                 c, n = d["center"], d["normal"]
@@ -333,8 +409,12 @@ def compare_frame(binary, layout_path, path_path, view, base, frame, portal_rays
         ids = read_grey_png(out + "-r-ids.png"), read_grey_png(out + "-t-ids.png")
         # The doors stand on the floor: a lone pixel on a bottom edge is the
         # floor_door kind's sliver too (tools/diff_fuzz.py, is_door_edge_pixel).
-        status = "sliver" if is_sliver(*ids) or is_door_edge_pixel(*ids) else "fail"
-    detail = "frame %d: %d id mismatches (%s %%)" % (frame, mismatches, fields.get("id_mismatch_pct", "?"))
+        thin = is_sliver(*ids)
+        edge = not thin and is_door_edge_pixel(*ids)
+        status = "sliver" if thin or edge else "fail"
+    detail = "frame %d: %d id mismatches (%s %%)%s" % (
+        frame, mismatches, fields.get("id_mismatch_pct", "?"),
+        "" if status != "sliver" else ", all on features one pixel thin" if thin else ", a door's bottom edge")
     return status, detail, commands, rays
 
 
@@ -346,8 +426,13 @@ def run_case(binary, seed, number, keep):
     layout_path, path_path = base + ".json", base + "-walk.txt"
     with open(layout_path, "w") as f:
         json.dump(case.layout(), f, indent=1)
+    if case.headset:
+        case.hmd_path = base + "-hmd.json"
+        with open(case.hmd_path, "w") as f:
+            json.dump(case.headset, f)
     result = {"seed": seed, "case": number, "layout": layout_path, "path": path_path, "frames": [],
-              "made": [], "problems": []}
+              "made": [], "problems": [], "headset": bool(case.headset),
+              "glass": sorted({p["kind"] for p in case.portals if p.get("kind", "door") != "door"})}
     try:
         lines, out = case.make_walk(binary, layout_path, path_path)
     except (RuntimeError, subprocess.TimeoutExpired) as e:
@@ -355,7 +440,7 @@ def run_case(binary, seed, number, keep):
         return result
     result["length"] = len(lines)
     view = case.view_args()
-    pairing = {p["id"]: p["target"] for p in case.portals}
+    pairing = case.pairing_after([])[0]
     by_id = {c["id"]: c for c in case.changes}
     checks = []  # (frame, affected doors or None)
     for line in out:
@@ -382,8 +467,9 @@ def run_case(binary, seed, number, keep):
         if s in ("fail", "error"):
             status = "fail"
             result["problems"].append({"what": detail, "commands": commands})
-        elif s == "sliver" and status == "pass":
-            status = "sliver"
+        elif s == "sliver":
+            status = "sliver" if status == "pass" else status
+            result.setdefault("slivers", []).append(detail)
         if rays is not None:
             result.setdefault("rays", {})[frame] = rays
             seen = sorted(set(rays) & affected)
@@ -400,8 +486,9 @@ def run_case(binary, seed, number, keep):
             if name.endswith(".png") and (status == "pass" or "-f" in name):
                 os.remove(os.path.join(work, name))
         if status in ("pass", "sliver"):
-            for p in (layout_path, path_path):
-                os.remove(p)
+            for p in (layout_path, path_path, case.hmd_path):
+                if p:
+                    os.remove(p)
             if not os.listdir(work):
                 os.rmdir(work)
     return result
@@ -424,8 +511,7 @@ def main():
         for res in pool.map(lambda n: run_case(a.binary, a.seed, n, a.keep), numbers):
             results.append(res)
             if res["status"] == "sliver":
-                print("sliver seed %d case %d: frames %s, mismatches all on features one pixel thin or on a door's"
-                      " bottom edge" % (res["seed"], res["case"], res["frames"]))
+                print("sliver seed %d case %d: %s" % (res["seed"], res["case"], "; ".join(res["slivers"])))
             elif res["status"] != "pass":
                 print("FAIL seed %d case %d: %s" % (res["seed"], res["case"], res.get("detail", "%d problems" % len(
                     res["problems"]))))
@@ -443,6 +529,9 @@ def main():
           % (a.seed, len(results), sum(r.get("length", 0) for r in results), made,
              sum(1 for r in results if not r["made"]), sum(len(r["frames"]) for r in results),
              sum(len(r.get("rays", {})) for r in results), len(slivers), len(failed)))
+    print("views and glass: %d cases through a headset profile, %d with a mirror, %d with a window pair"
+          % (sum(r["headset"] for r in results), sum("mirror" in r["glass"] for r in results),
+             sum("window" in r["glass"] for r in results)))
     print("%d passed, %d failed" % (len(results) - len(failed), len(failed)))
     if a.json:
         with open(a.json, "w") as f:
