@@ -54,7 +54,7 @@ Result<Tour> plan_tour(const layout::Layout& layout, const TourOptions& options 
 
 // The tour of a layout with changes (layout-format.md, "Changes while
 // walking"; tour_changes.cpp). The walk is simulated pose by pose with
-// design::ChangeWalker (the seen test on render's default eyes, 90 poses a
+// changes::ChangeWalker (the seen test on render's default eyes, 90 poses a
 // second), so the changes are armed and made as `walk` makes them. From
 // where the head is, it walks to the nearest room not yet visited that
 // doors lead to under the pairing in force (to the door, through it, on to

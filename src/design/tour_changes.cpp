@@ -79,7 +79,7 @@ Went ChangePlanner::pose(const math::HeadPose& raw) {
     const math::dvec3 before = sim_.walker().position();
     const bool first = t_.poses.empty();
     t_.poses.push_back(p);
-    const ChangeStep s = sim_.step(p);
+    const changes::ChangeStep s = sim_.step(p);
     t_.teleports += static_cast<int>(s.teleports.size());
     if (!first) {
         t_.physical_distance += glm::distance(p.position, t_.poses[t_.poses.size() - 2].position);

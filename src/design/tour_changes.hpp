@@ -9,11 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "design/change_walker.hpp"
+#include "changes/change_walker.hpp"
 #include "design/obstacles.hpp"
 #include "design/report_changes.hpp"
 #include "design/room_grid.hpp"
 #include "design/tour.hpp"
+#include "layout/path_file.hpp"
 
 namespace impossible::design::detail {
 
@@ -47,7 +48,7 @@ public:
 private:
     const layout::Layout& base_;
     TourOptions o_;
-    ChangeWalker sim_;
+    changes::ChangeWalker sim_;
     math::Polygon2 area_;
     std::vector<char> goal_;
     std::vector<std::string> given_up_;  // per change: why it cannot happen on the route ("" while it may)

@@ -8,6 +8,9 @@ Session::Session(layout::Layout layout)
     : layout_(std::make_shared<const layout::Layout>(std::move(layout))),
       links_(std::make_shared<const links::PortalLinks>(links::link_portals(*layout_))) {}
 
+Session::Session(std::shared_ptr<const layout::Layout> layout, std::shared_ptr<const links::PortalLinks> links)
+    : layout_(std::move(layout)), links_(std::move(links)) {}
+
 scene::Scene Session::build_scene() const { return scene::build_scene(*layout_, *links_); }
 
 Result<render::Renderer> Session::make_renderer(gl::StateCache& state) const {

@@ -27,6 +27,9 @@ class Session {
 public:
     // Takes the loaded (valid) layout and links its portals.
     explicit Session(layout::Layout layout);
+    // A layout and its links made already (changes::ChangeWalker's layout of
+    // the pairing in force); `links` must be link_portals(*layout).
+    Session(std::shared_ptr<const layout::Layout> layout, std::shared_ptr<const links::PortalLinks> links);
 
     const layout::Layout& layout() const { return *layout_; }
     const links::PortalLinks& links() const { return *links_; }

@@ -1,8 +1,5 @@
 #include "session/walk_driver.hpp"
 
-#include <chrono>
-
-#include "changes/seen.hpp"
 #include "layout/path_file.hpp"
 
 namespace impossible::session {
@@ -26,52 +23,23 @@ std::shared_ptr<const Session> borrowed(const Session& session) {
 WalkDriver::WalkDriver(const Session& session, const math::View& view)
     : session_(&session),
       current_(borrowed(session)),
-      view_(view),
-      moves_(any_motion(session.layout())),
-      walker_(session.make_walker()) {
-    for (std::size_t k = 0; k < session.layout().portals.size(); ++k) base_index_.push_back(static_cast<int>(k));
-    if (!session.layout().changes.empty()) changes_.emplace(session.layout());
-}
+      head_(session.layout(), view, session.shared_links()),
+      has_changes_(!session.layout().changes.empty()),
+      moves_(any_motion(session.layout())) {}
 
-void WalkDriver::start_in(int room) { walker_ = current_->make_walker(room); }
+void WalkDriver::start_in(int room) { head_.start_in(room); }
 
 void WalkDriver::resume(int room, const math::dmat4& physical_to_virtual, const math::HeadPose& physical) {
-    walker_ = current_->make_walker(room);
-    walker_.resume(physical_to_virtual, physical);
+    head_.resume(room, physical_to_virtual, physical);
 }
 
-std::vector<char> WalkDriver::seen_doors() {
-    const auto start = std::chrono::steady_clock::now();
-    math::View view = view_;
-    walk::set_walked_view(view, walker_, std::nullopt);
-    const changes::SeenPortals seen = changes::seen_portals(current_->layout(), current_->links(), view);
-    seen_passes_ = seen.passes;
-    std::vector<char> base(session_->layout().portals.size(), 0);
-    for (std::size_t k = 0; k < seen.seen.size(); ++k)
-        if (seen.seen[k]) base[static_cast<std::size_t>(base_index_[k])] = 1;
-    seen_asked_ = true;
-    seen_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return base;
-}
-
-std::vector<int> WalkDriver::consider_changes(double time) {
-    seen_asked_ = false;
-    seen_passes_ = 0;
-    seen_seconds_ = 0.0;
-    if (!changes_ || !changes_->pending()) return {};
-    const std::vector<int> made = changes_->consider(frame_, walker_.room(), time, [this] { return seen_doors(); });
-    if (made.empty()) return made;
-    changes::PairedLayout paired = changes::paired_layout(session_->layout(), changes_->pairing());
-    base_index_ = std::move(paired.base_index);
-    current_ = std::make_shared<const Session>(std::move(paired.layout));
-    const math::dmat4 w = walker_.physical_to_virtual();
-    const math::HeadPose physical = walker_.physical_pose();
-    resume(walker_.room(), w, physical);
-    // Hands and props walk with the new pairing from the next frame on.
+void WalkDriver::follow_pairing() {
+    if (head_.generation() == generation_) return;
+    generation_ = head_.generation();
+    current_ = std::make_shared<const Session>(head_.shared_current(), head_.shared_links());
     objects_.reset();
     moving_.clear();
     prop_walks_.reset();
-    return made;
 }
 
 const walk::ObjectSet& WalkDriver::objects() {
@@ -88,17 +56,23 @@ const walk::ObjectSet& WalkDriver::objects() {
 
 WalkedFrame WalkDriver::step(const math::HeadPose& physical, const walk::HandPoses& hands, std::optional<double> time) {
     WalkedFrame f;
-    f.teleports = walker_.step(physical);
-    for (int& t : f.teleports) t = base_index_[static_cast<std::size_t>(t)];
-    f.room = walker_.room();
-    f.position = walker_.position();
-    f.forward = walker_.forward();
-    f.virtual_pose = math::head_pose_from(f.position, walker_.rotation());
+    // The head's step, then the changes. A change made leaves the head's W,
+    // room and place as they were, so the hands and props below are walked
+    // as before it, with the pairing the frame started with (objects_ is
+    // still that pairing's), as the spec orders them.
+    changes::ChangeStep step = head_.step(physical, time);
+    f.teleports = std::move(step.teleports);
+    f.changes = std::move(step.changes);
+    const walk::Walker& walker = head_.walker();
+    f.room = walker.room();
+    f.position = walker.position();
+    f.forward = walker.forward();
+    f.virtual_pose = math::head_pose_from(f.position, walker.rotation());
     if (hands) {
         const walk::ObjectSet& set = objects();
         std::array<WalkedHand, 2> placed;
         for (std::size_t h = 0; h < 2; ++h) {
-            placed[h].virtual_pose = walk::virtual_pose(walker_.physical_to_virtual(), (*hands)[h]);
+            placed[h].virtual_pose = walk::virtual_pose(walker.physical_to_virtual(), (*hands)[h]);
             placed[h].room = walk::place_hand(set, f.room, f.position, placed[h].virtual_pose).room;
         }
         f.hands = placed;
@@ -113,8 +87,7 @@ WalkedFrame WalkDriver::step(const math::HeadPose& physical, const walk::HandPos
             f.props.push_back({&layout::prop_id(prop), prop_walks_->at(m, *time).room});
         }
     }
-    f.changes = consider_changes(time.value_or(static_cast<double>(frame_) / layout::kDefaultPathFps));
-    ++frame_;
+    follow_pairing();
     return f;
 }
 

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "changes/change_walk.hpp"
+#include "changes/change_walker.hpp"
 #include "layout/path_file.hpp"
 #include "session/session.hpp"
 #include "walk/objects.hpp"
@@ -64,7 +64,7 @@ public:
 
     // The view options of the seen test from the next frame on (the
     // preview's keys change the IPD and the depth while it walks).
-    void set_view(const math::View& view) { view_ = view; }
+    void set_view(const math::View& view) { head_.set_view(view); }
     // Before the first step: the walk starts in `room` (the start room when
     // -1) instead of the start room.
     void start_in(int room);
@@ -73,36 +73,30 @@ public:
     // walk::Walker::resume), with the pairing in force now.
     void resume(int room, const math::dmat4& physical_to_virtual, const math::HeadPose& physical);
 
-    const walk::Walker& walker() const { return walker_; }
+    const walk::Walker& walker() const { return head_.walker(); }
     // The session with the pairing in force (the one given until a change
     // is made): what a frame of the walk is drawn with.
     const Session& session() const { return *current_; }
     // The changes' state; none without changes.
-    const changes::ChangeWalk* changes() const { return changes_ ? &*changes_ : nullptr; }
+    const changes::ChangeWalk* changes() const { return has_changes_ ? &head_.changes() : nullptr; }
     // The last frame's seen test: whether it was asked, its portal passes
-    // and its processor-independent cost in seconds (a monotonic clock).
-    bool seen_asked() const { return seen_asked_; }
-    int seen_passes() const { return seen_passes_; }
-    double seen_seconds() const { return seen_seconds_; }
+    // and its cost in seconds (a monotonic clock).
+    bool seen_asked() const { return head_.seen_asked(); }
+    int seen_passes() const { return head_.seen_passes(); }
+    double seen_seconds() const { return head_.seen_seconds(); }
 
 private:
     const walk::ObjectSet& objects();  // built at the first frame that needs it
-    // The changes of frame `frame`, after its step; a change made swaps
-    // current_, walker_ and the objects.
-    std::vector<int> consider_changes(double time);
-    std::vector<char> seen_doors();
+    // After a change: the session of the new pairing, hands and props
+    // walked with it from the next frame on.
+    void follow_pairing();
 
     const Session* session_;
     std::shared_ptr<const Session> current_;  // session_ itself until a change is made
-    std::vector<int> base_index_;             // current_'s portal k is the loaded layout's base_index_[k]
-    math::View view_;
-    std::optional<changes::ChangeWalk> changes_;
-    int frame_ = 0;
-    bool seen_asked_ = false;
-    int seen_passes_ = 0;
-    double seen_seconds_ = 0.0;
+    changes::ChangeWalker head_;
+    int generation_ = 0;  // head_'s pairing that current_ holds
+    bool has_changes_ = false;
     bool moves_ = false;  // any_motion(layout)
-    walk::Walker walker_;
     std::optional<walk::ObjectSet> objects_;
     std::vector<int> moving_;  // indices of objects_->props that move
     std::optional<walk::PropWalks> prop_walks_;

@@ -2,13 +2,13 @@
 // lists the changes and the rooms each makes reachable, plan draws each
 // change's pairs dashed with its id, tour walks with the changes, and the
 // rooms its poses visit are checked by walking them again with
-// design::ChangeWalker (the seen test on render's default eyes) and after
+// changes::ChangeWalker (the seen test on render's default eyes) and after
 // a round trip through the path file's text.
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "design/change_walker.hpp"
+#include "changes/change_walker.hpp"
 #include "design/path_text.hpp"
 #include "design/plan.hpp"
 #include "design/report.hpp"
@@ -191,14 +191,14 @@ TEST(ChangesPlan, CoincidentDoorsGetADashedRingAndLaterRoomsAreNotCalledUnreacha
 }
 
 // The tour's poses walked again, after a round trip through the path file.
-design::ChangeWalkResult rewalk(const layout::Layout& l, const design::Tour& t) {
+changes::ChangeWalkResult rewalk(const layout::Layout& l, const design::Tour& t) {
     const std::string text = design::path_text(t.poses, "test");
     std::istringstream in(text);
     const layout::PathFile read = layout::read_path_stream(in, "tour.txt");
     EXPECT_TRUE(read.has_value());
     const std::vector<math::HeadPose> poses = read.has_value() ? read.value() : std::vector<math::HeadPose>{};
     EXPECT_EQ(poses.size(), t.poses.size());
-    return design::walk_with_changes(l, poses);
+    return changes::walk_with_changes(l, poses);
 }
 
 TEST(ChangesTour, DoorSwapVisitsHallStudyAndGardenAndMakesTheSwap) {
@@ -208,7 +208,7 @@ TEST(ChangesTour, DoorSwapVisitsHallStudyAndGardenAndMakesTheSwap) {
     EXPECT_EQ(room_ids(l, t->visited), (std::vector<std::string>{"garden", "hall", "study"}));
     EXPECT_TRUE(t->missed.empty());
     ASSERT_EQ(t->changes, std::vector<int>{0});
-    const design::ChangeWalkResult w = rewalk(l, *t);
+    const changes::ChangeWalkResult w = rewalk(l, *t);
     EXPECT_EQ(room_ids(l, w.rooms), (std::vector<std::string>{"garden", "hall", "study"}));
     EXPECT_EQ(w.changes, std::vector<int>{0});
     ASSERT_FALSE(t->notes.empty());
@@ -230,7 +230,7 @@ TEST(ChangesTour, ReroutedCorridorVisitsAllFiveRooms) {
     EXPECT_EQ(order, (std::vector<std::string>{"lobby", "blue_corridor", "red_corridor", "library", "gallery"}));
     // blue and back, red, library and back, back to the lobby, blue again, gallery
     EXPECT_EQ(t->teleports, 8);
-    const design::ChangeWalkResult w = rewalk(l, *t);
+    const changes::ChangeWalkResult w = rewalk(l, *t);
     EXPECT_EQ(room_ids(l, w.rooms), all);
     EXPECT_EQ(w.changes, std::vector<int>{0});
 }
@@ -244,7 +244,7 @@ TEST(ChangesTour, WaitsInTheStudyForTheChangeThatOpensTheVault) {
                                    [](const design::TourNote& n) { return n.text.rfind("waits in study", 0) == 0; });
     ASSERT_NE(wait, t->notes.end());
     EXPECT_EQ(wait->text, "waits in study for change open: stands still until 20 s, then turns away from its doors");
-    const design::ChangeWalkResult w = rewalk(l, *t);
+    const changes::ChangeWalkResult w = rewalk(l, *t);
     EXPECT_EQ(room_ids(l, w.rooms), (std::vector<std::string>{"hall", "study", "vault"}));
     ASSERT_EQ(w.changes, std::vector<int>{0});
     EXPECT_GE(w.change_frames[0], 20 * 90);  // not before its time
@@ -283,7 +283,7 @@ TEST(ChangesTour, TurnsInTheStudyUntilItsNorthDoorIsOutOfSight) {
         return n.text == "waits in study for change open: turns away from its doors";
     });
     ASSERT_NE(wait, t->notes.end());
-    const design::ChangeWalkResult w = rewalk(l, *t);
+    const changes::ChangeWalkResult w = rewalk(l, *t);
     EXPECT_EQ(room_ids(l, w.rooms), (std::vector<std::string>{"attic", "hall", "study"}));
     ASSERT_EQ(w.changes, std::vector<int>{0});
     // Made while turning on the spot: after the note, where it stood, facing elsewhere.
@@ -323,7 +323,7 @@ TEST(ChangesTour, EndsByTurningUntilAnArmedChangeIsMade) {
     EXPECT_EQ(l.rooms[static_cast<std::size_t>(t->visited.back())].id, "study");  // the arming room last
     ASSERT_FALSE(t->notes.empty());
     EXPECT_EQ(t->notes[0].text, "waits in study for change open: turns away from its doors");
-    const design::ChangeWalkResult w = rewalk(l, *t);
+    const changes::ChangeWalkResult w = rewalk(l, *t);
     ASSERT_EQ(w.changes, std::vector<int>{0});
     EXPECT_GT(static_cast<std::size_t>(w.change_frames[0]), t->notes[0].pose);
 }
