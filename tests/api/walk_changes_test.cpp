@@ -12,6 +12,7 @@
 
 #include "api/api_data.hpp"
 #include "changes/change_layouts.hpp"
+#include "common/cli_walk.hpp"
 #include "impossible/impossible.hpp"
 
 #include <nlohmann/json.hpp>
@@ -132,21 +133,7 @@ TEST(ApiWalkChanges, TheTracerAndTheRendererDrawTheClosedDoorAsItsWall) {
     EXPECT_EQ(drawn->ids, closed->ids);
 }
 
-// The lines `impossible walk LAYOUT --path PATH OPTIONS` prints, parsed.
-std::vector<nlohmann::json> cli_walk(const std::string& layout, const std::string& path, const std::string& options) {
-    const std::string command =
-        std::string(IMPOSSIBLE_BINARY) + " walk '" + layout + "' --path '" + path + "' " + options;
-    std::vector<nlohmann::json> lines;
-    FILE* out = popen(command.c_str(), "r");
-    if (out == nullptr) return lines;
-    std::string text;
-    char buffer[4096];
-    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, out)) > 0;) text.append(buffer, n);
-    pclose(out);
-    for (std::size_t at = 0, end; (end = text.find('\n', at)) != std::string::npos; at = end + 1)
-        lines.push_back(nlohmann::json::parse(text.substr(at, end - at)));
-    return lines;
-}
+using test::cli_walk;
 
 TEST(ApiWalkChanges, TheExampleWalksMakeTheirChangesAtWalksFrames) {
     for (const char* name : {"door_swap", "rerouted_corridor"}) {

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "api/api_data.hpp"
+#include "common/cli_walk.hpp"
 #include "impossible/impossible.hpp"
 #include "layout/path_file.hpp"
 #include "walk/replay.hpp"
@@ -21,20 +22,7 @@ namespace {
 
 std::string source_file(const char* name) { return std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/" + name; }
 
-// The lines `impossible walk LAYOUT --path PATH` prints, parsed.
-std::vector<nlohmann::json> cli_walk(const std::string& layout, const std::string& path) {
-    const std::string command = std::string(IMPOSSIBLE_BINARY) + " walk '" + layout + "' --path '" + path + "'";
-    std::vector<nlohmann::json> lines;
-    FILE* out = popen(command.c_str(), "r");
-    if (out == nullptr) return lines;
-    std::string text;
-    char buffer[4096];
-    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, out)) > 0;) text.append(buffer, n);
-    pclose(out);
-    for (std::size_t at = 0, end; (end = text.find('\n', at)) != std::string::npos; at = end + 1)
-        lines.push_back(nlohmann::json::parse(text.substr(at, end - at)));
-    return lines;
-}
+using test::cli_walk;
 
 TEST(ApiWalkHands, StepsHoldTheHandsVirtualPosesAndRooms) {
     const Expected<Layout> l = Layout::load(source_file("hands_door.json"));
