@@ -12,6 +12,7 @@
 #include "render/frame.hpp"
 #include "render/objects/box_faces.hpp"
 #include "render/objects/frame_objects.hpp"
+#include "render/objects/instance_stream.hpp"
 #include "render/objects/multi_draw.hpp"
 #include "render/objects/object_culling.hpp"
 #include "scene/scene.hpp"
@@ -32,6 +33,8 @@ struct FrameScratch {
     std::vector<scene::DrawBatch> cull_batches;
     FrameObjects objects;  // the frame's dynamic objects (frame_objects.hpp)
     std::vector<int> visible_instances;
+    std::vector<int> instance_order;         // a level's visible instances (indices into objects.instances)
+    InstanceStream instance_records;         // their per-instance records (instance_stream.hpp)
     IndirectDraws indirect;                  // FrameDesc::multi_draw's commands
     FaceStream faces;                        // FrameDesc::cull_box_faces's indices (box_faces.hpp)
     std::vector<VisibleDraw> cull_draws;     // a level's draws with box faces culled
@@ -45,6 +48,7 @@ struct FrameScratch {
     void begin_frame() {
         stats = {};
         begin_indirect_frame(indirect);
+        begin_instance_frame(instance_records);
         faces.used = 0;
         mark_queries_used = 0;
         saved_colours_used = 0;

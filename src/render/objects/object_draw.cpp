@@ -5,17 +5,19 @@
 // The frame's objects are placed once (frame_objects.hpp): instances, each
 // a mesh, a cell, a rigid matrix from the mesh's own coordinates and up to
 // two door planes that cut it. Every level that draws a cell draws the
-// cell's instances after its own batches, each batch one instanced draw for
-// both eyes like any other, with the matrix folded into the eyes'
-// view-projections and the cuts as two more clip distances (the OBJECT_CUTS
-// variant). A cell with volumes is drawn, all of it, by the VOLUMES variant,
-// which drops its fragments inside the volumes; each volume's target room is
-// then drawn in the same level, shown only inside the volume and tinted.
+// cell's instances after its own batches (instance_draw.cpp): all their
+// plain batches in one multi-draw for both eyes, each instance's matrix and
+// cuts read from its per-instance record (instance_stream.hpp), the cuts as
+// two more clip distances (the OBJECT_CUTS variant). A cell with volumes is
+// drawn, all of it, by the VOLUMES variant, which drops its fragments inside
+// the volumes; each volume's target room is then drawn in the same level,
+// shown only inside the volume and tinted.
 #include "render/objects/object_draw.hpp"
 
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -24,85 +26,6 @@
 
 namespace impossible::render {
 namespace {
-
-// A cut as a clip distance in the mesh's coordinates (the plane in the
-// cell's through `model`, in double): a strict cut (an image keeps d > 0) is
-// moved by kStrictCutShift towards its kept side, so that a face lying in the
-// plane (a prop standing against the door) is cut away in the image as the
-// tracer cuts it, instead of being kept by the clipper at d = 0. The shift
-// covers float32's rounding of the distance the shader computes, from the
-// mesh's coordinates (measured from its origin), so it scales with the mesh
-// origin's distance from the plane and the mesh's extent, never with the
-// cell's distance from the layout's origin: 1 µm times 1254 m opened a 1.25 mm
-// gap between a hand's own part and its image at a door 1.25 km out.
-inline constexpr double kStrictCutShift = 1e-6;  // metres, times 1 + |d of the mesh origin| + extent
-math::dvec4 mesh_cut_plane(const walk::ObjectCut& cut, const math::dmat4& model, double extent) {
-    math::dvec4 plane = glm::transpose(model) * cut.plane;
-    if (cut.strict) {
-        const double unit = glm::length(math::dvec3(plane));  // metres of d per mesh unit (a model's scale)
-        plane.w -= kStrictCutShift * (1.0 + std::abs(plane.w) + extent * unit);
-    }
-    return plane;
-}
-
-// The largest coordinate of a mesh's vertices, measured from its origin.
-double mesh_extent(const scene::ObjectMesh& mesh) {
-    const math::dvec3 far = glm::max(glm::abs(mesh.lo - mesh.origin), glm::abs(mesh.hi - mesh.origin));
-    return std::max({far.x, far.y, far.z});
-}
-
-// The per-instance uniforms of a variant with kObjectCuts.
-void set_instance_uniforms(const SceneProgram& program, const walk::ObjectInstance& inst, const math::dmat4& model,
-                           double extent) {
-    float planes[2][4];
-    for (int k = 0; k < 2; ++k) {
-        const math::dvec4 plane = k < inst.cut_count ? mesh_cut_plane(inst.cuts[static_cast<size_t>(k)], model, extent)
-                                                     : math::dvec4(0.0, 0.0, 0.0, 1.0);
-        for (int c = 0; c < 4; ++c) planes[k][c] = static_cast<float>(plane[c]);
-    }
-    const glm::mat3 rotation(math::dmat3(inst.to_cell));
-    const GLuint p = program.program.get();
-    glProgramUniform4fv(p, program.cut_plane, 2, &planes[0][0]);
-    glProgramUniformMatrix3fv(p, program.object_rotation, 1, GL_FALSE, &rotation[0][0]);
-}
-
-// A batch's material uniforms and texture (portal_draw.cpp's draw_cell does
-// the same for a cell's batches).
-void set_material(const DrawContext& ctx, const SceneProgram& m, const scene::DrawBatch& b) {
-    glProgramUniform1i(m.program.get(), m.mip_level0, ctx.frame.textures_mip_level0 ? 1 : 0);
-    glProgramUniform1i(m.program.get(), m.textured, b.texture >= 0 ? 1 : 0);
-    glProgramUniform1f(m.program.get(), m.alpha_cutoff, b.alpha_cutoff);
-    const GLuint texture = b.texture >= 0 ? ctx.scene.gpu.textures[static_cast<std::size_t>(b.texture)].get() : 0;
-    ctx.state.texture(kSceneTextureUnit, texture);
-}
-
-bool has_material(const scene::DrawBatch& b) { return b.texture >= 0 || b.alpha_cutoff >= 0.0f; }
-
-void draw_instance(const DrawContext& ctx, const LevelView& view, const Scissor& scissor, int i, int id_cell,
-                   int inside) {
-    const SceneData& r = ctx.scene;
-    const walk::ObjectInstance& inst = ctx.scratch.objects.instances[static_cast<size_t>(i)];
-    const scene::ObjectMesh& mesh =
-        r.object_meshes[static_cast<size_t>(ctx.scratch.objects.mesh[static_cast<size_t>(i)])];
-    const math::dmat4 model = inst.to_cell * glm::translate(math::dmat4(1.0), mesh.origin);
-    const double extent = mesh_extent(mesh);
-    for (const scene::DrawBatch& b : mesh.batches) {
-        const SceneProgram& program =
-            cell_program(ctx, view.cell, kObjectCuts | light_flags(ctx) | (has_material(b) ? kMaterials : 0u));
-        set_model_uniforms(ctx, view, program, {view.eyes[0].rect, view.eyes[1].rect}, model, glm::vec3(0.0f));
-        set_instance_uniforms(program, inst, model, extent);
-        set_cell_id(program, static_cast<unsigned>(id_cell + 1), false);
-        // Lit in the room it is placed in, from the mesh's coordinates.
-        if (r.lighting.lit) {
-            const math::dvec3 origin = r.cell_origins[static_cast<size_t>(id_cell)].origin;
-            const glm::mat4 to_light(glm::translate(math::dmat4(1.0), -origin) * model);
-            set_light_uniforms(ctx.lights, program, id_cell, to_light);
-        }
-        set_volume_uniforms(ctx, view, program, model, inside);
-        if (has_material(b)) set_material(ctx, program, b);
-        draw_range(ctx, view, {Pass::Scene, view.level, &program, scissor, kObjectClipDistances}, b.range);
-    }
-}
 
 // Room `t`'s own batches in a level of another cell (a volume's target, in
 // the same coordinates), shown inside volume `inside` only.
@@ -126,6 +49,18 @@ void draw_volume_room(const DrawContext& ctx, const LevelView& view, const Sciss
 
 }  // namespace
 
+// A batch's material uniforms and texture (portal_draw.cpp's draw_cell does
+// the same for a cell's batches).
+void set_material(const DrawContext& ctx, const SceneProgram& m, const scene::DrawBatch& b) {
+    glProgramUniform1i(m.program.get(), m.mip_level0, ctx.frame.textures_mip_level0 ? 1 : 0);
+    glProgramUniform1i(m.program.get(), m.textured, b.texture >= 0 ? 1 : 0);
+    glProgramUniform1f(m.program.get(), m.alpha_cutoff, b.alpha_cutoff);
+    const GLuint texture = b.texture >= 0 ? ctx.scene.gpu.textures[static_cast<std::size_t>(b.texture)].get() : 0;
+    ctx.state.texture(kSceneTextureUnit, texture);
+}
+
+bool has_material(const scene::DrawBatch& b) { return b.texture >= 0 || b.alpha_cutoff >= 0.0f; }
+
 const SceneProgram& cell_program(const DrawContext& ctx, int cell, unsigned flags) {
     const SceneData& r = ctx.scene;
     if (!r.volumes[static_cast<size_t>(cell)].empty()) flags |= kVolumes;
@@ -137,24 +72,6 @@ const SceneProgram& cell_program(const DrawContext& ctx, int cell, unsigned flag
     const std::optional<SceneProgram>& variant = ctx.programs.variants[static_cast<int>(ctx.frame.stereo)][flags];
     assert(variant);  // prepare_frame built it
     return *variant;
-}
-
-void draw_cell_instances(const DrawContext& ctx, const LevelView& view, const Scissor& scissor, int cell, int inside) {
-    FrameScratch& s = ctx.scratch;
-    if (s.objects.cells.empty()) return;
-    const scene::CellObjects& objects = s.objects.cells[static_cast<size_t>(cell)];
-    if (objects.objects.empty()) return;
-    std::vector<int>& visible = s.visible_instances;
-    if (ctx.frame.cull_portals && ctx.frame.cull_objects) {
-        // Two pixels of margin, as the cell's own props.
-        visible_objects(objects, view, ctx.frame.eye_width, ctx.frame.eye_height, 2.0, s.cull, visible);
-    } else {
-        visible.resize(objects.objects.size());
-        for (size_t k = 0; k < visible.size(); ++k) visible[k] = static_cast<int>(k);
-    }
-    for (const int k : visible)
-        draw_instance(ctx, view, scissor, static_cast<int>(objects.objects[static_cast<size_t>(k)].first_batch), cell,
-                      inside);
 }
 
 namespace {

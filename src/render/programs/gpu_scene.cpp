@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstddef>
 
+#include "render/objects/instance_stream.hpp"
+
 namespace impossible::render {
 
 namespace {
@@ -59,11 +61,14 @@ GpuScene upload_scene(const scene::Scene& scene) {
     gpu.vao = gl::create_vertex_array();
     gpu.face_indices = gl::create_buffer();
     gpu.face_vao = gl::create_vertex_array();
+    gpu.instance_vao = gl::create_vertex_array();
     // The vertex arrays first: WebGL types a buffer by its first binding, and
     // an index buffer must be bound as one before its data comes
     // (gl/webgl.hpp).
     describe_vertices(gpu.vao.get(), gpu.vertices.get(), gpu.indices.get());
     describe_vertices(gpu.face_vao.get(), gpu.vertices.get(), gpu.face_indices.get());
+    describe_vertices(gpu.instance_vao.get(), gpu.vertices.get(), gpu.indices.get());
+    describe_instances(gpu.instance_vao.get());
     // Zero-size buffers are valid GL but glNamedBufferStorage rejects size 0.
     glNamedBufferStorage(gpu.vertices.get(), static_cast<GLsizeiptr>(scene.vertices.size() * sizeof(scene::Vertex) + 1),
                          nullptr, GL_DYNAMIC_STORAGE_BIT);

@@ -21,6 +21,10 @@ struct GpuScene {
     // (render/objects/box_faces.hpp): a buffer of no size until a frame writes it.
     gl::Buffer face_indices;
     gl::VertexArray face_vao;
+    // The same vertices and indices with the dynamic objects' per-instance
+    // records at binding 1 (render/objects/instance_stream.hpp), whose buffer,
+    // offset and divisor each draw of instances sets.
+    gl::VertexArray instance_vao;
     std::vector<gl::Texture> textures;  // per scene::Scene::textures, with their mipmaps
 };
 

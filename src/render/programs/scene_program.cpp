@@ -57,10 +57,6 @@ std::string variant_defines(const SceneVariant& variant) {
 }
 
 void find_variant_uniforms(const SceneVariant& variant, gl::UniformLocations& u, SceneProgram& p) {
-    if (variant.object_cuts) {
-        p.cut_plane = u.required("u_cut_plane");
-        p.object_rotation = u.required("u_object_rotation");
-    }
     if (variant.volumes) {
         p.to_volume_space = u.required("u_to_volume_space");
         p.volume_first = u.required("u_volume_first");
