@@ -35,6 +35,13 @@ layout::Layout keep_first_portals(const layout::Layout& layout, int n) {
 
 namespace {
 
+// The layout without its volume portals.
+layout::Layout without_volumes(const layout::Layout& layout) {
+    layout::Layout out = layout;
+    out.volumes.clear();
+    return out;
+}
+
 // Whether a box's footprint lies on the room's floor: always in a box room;
 // in a prism room, its corners inside the floor and no corner of the floor
 // inside the footprint.
@@ -99,6 +106,7 @@ void add_techniques(PlanBuilder& b) {
     b.add("cull=on", "cull", [](BenchConfig& c) { c.frame.cull_portals = true; });
     b.add("occlusion=on", "occlusion", [](BenchConfig& c) { c.frame.occlusion_test = true; });
     b.add("multi-draw=off", "multi-draw", [](BenchConfig& c) { c.frame.multi_draw = false; });
+    b.add("volumes=one-variant", "volumes", [](BenchConfig& c) { c.frame.split_volume_draws = false; });
     for (double scale : {0.25, 0.5, 1.0}) {
         char name[32];
         std::snprintf(name, sizeof name, "texture=%g", scale);
@@ -135,6 +143,22 @@ void add_boxes(PlanBuilder& b, const SweepItem& item) {
         c.frame.cull_objects = item.suffix != "all";
         c.frame.multi_draw = item.suffix != "separate";
         c.frame.cull_box_faces = item.suffix != "all-faces";
+    });
+}
+
+// One item of --sweep volumes: "split" (the default), "one-variant" (the
+// discarding variant over the whole level) or "none" (the layout without
+// its volumes).
+void add_volumes(PlanBuilder& b, const layout::Layout& layout, const SweepItem& item) {
+    int variant = 0;
+    if (item.suffix == "none") {
+        b.plan.sessions.emplace_back(without_volumes(layout));
+        variant = static_cast<int>(b.plan.sessions.size()) - 1;
+    }
+    const bool split = item.suffix != "one-variant";
+    b.add(item.name, item.kind, [variant, split](BenchConfig& c) {
+        c.layout_variant = variant;
+        c.frame.split_volume_draws = split;
     });
 }
 
@@ -178,6 +202,8 @@ void add_sweep_item(PlanBuilder& b, const layout::Layout& layout, const SweepIte
             if (!on)
                 for (math::EyeOptics& e : *c.frame.eye_optics) e.visible_area.clear();
         });
+    } else if (kind == "volumes") {
+        add_volumes(b, layout, item);
     } else if (kind == "depth") {
         b.add(item.name, kind, [n](BenchConfig& c) { c.frame.max_depth = n; });
     } else {

@@ -80,7 +80,8 @@ void set_instanced_uniforms(const DrawContext& ctx, const LevelView& view, const
     // that room's origin.
     if (r.lighting.lit) {
         const math::dvec3 lit_origin = r.cell_origins[static_cast<size_t>(id_cell)].origin;
-        set_light_uniforms(ctx.lights, program, id_cell, glm::mat4(glm::translate(math::dmat4(1.0), origin - lit_origin)));
+        set_light_uniforms(ctx.lights, program, id_cell,
+                           glm::mat4(glm::translate(math::dmat4(1.0), origin - lit_origin)));
     }
     set_volume_uniforms(ctx, view, program, glm::translate(math::dmat4(1.0), origin), inside);
 }
@@ -98,7 +99,8 @@ void submit_instances(const DrawContext& ctx, const LevelView& view, const Scene
     constexpr bool kBaseInstance = true;
 #endif
     if (kBaseInstance && ctx.frame.multi_draw) {
-        glVertexArrayVertexBuffer(vao, kInstanceBinding, buffer, static_cast<GLintptr>(records), sizeof(InstanceRecord));
+        glVertexArrayVertexBuffer(vao, kInstanceBinding, buffer, static_cast<GLintptr>(records),
+                                  sizeof(InstanceRecord));
         submit_queued(ctx, view, draw, vao);
         return;
     }
@@ -132,29 +134,31 @@ void draw_instances(const DrawContext& ctx, const LevelView& view, const Scissor
     const int eyes = instances_of(ctx);
     const unsigned flags = kObjectCuts | light_flags(ctx);
     // Every plain batch of every instance in one submission.
-    const SceneProgram& plain = cell_program(ctx, view.cell, flags);
+    const SceneProgram& plain = cell_program(ctx, view, flags);
     set_instanced_uniforms(ctx, view, plain, id_cell, inside);
     assert(s.indirect.pending.empty());
     for (size_t j = 0; j < order.size(); ++j)
-        for (const scene::DrawBatch& b : r.object_meshes[static_cast<size_t>(s.objects.mesh[static_cast<size_t>(order[j])])].batches) {
+        for (const scene::DrawBatch& b :
+             r.object_meshes[static_cast<size_t>(s.objects.mesh[static_cast<size_t>(order[j])])].batches) {
             if (has_material(b)) {
                 any_material = true;
                 continue;
             }
             if (b.range.count > 0)
-                s.indirect.pending.push_back({b.range.count, static_cast<std::uint32_t>(eyes), b.range.first, 0,
-                                              static_cast<std::uint32_t>(j)});
+                s.indirect.pending.push_back(
+                    {b.range.count, static_cast<std::uint32_t>(eyes), b.range.first, 0, static_cast<std::uint32_t>(j)});
         }
     submit_instances(ctx, view, {Pass::Scene, view.level, &plain, scissor, kObjectClipDistances}, records);
     if (!any_material) return;
-    const SceneProgram& with_material = cell_program(ctx, view.cell, flags | kMaterials);
+    const SceneProgram& with_material = cell_program(ctx, view, flags | kMaterials);
     set_instanced_uniforms(ctx, view, with_material, id_cell, inside);
     for (size_t j = 0; j < order.size(); ++j)
-        for (const scene::DrawBatch& b : r.object_meshes[static_cast<size_t>(s.objects.mesh[static_cast<size_t>(order[j])])].batches) {
+        for (const scene::DrawBatch& b :
+             r.object_meshes[static_cast<size_t>(s.objects.mesh[static_cast<size_t>(order[j])])].batches) {
             if (!has_material(b) || b.range.count == 0) continue;
             set_material(ctx, with_material, b);
-            s.indirect.pending.push_back({b.range.count, static_cast<std::uint32_t>(eyes), b.range.first, 0,
-                                          static_cast<std::uint32_t>(j)});
+            s.indirect.pending.push_back(
+                {b.range.count, static_cast<std::uint32_t>(eyes), b.range.first, 0, static_cast<std::uint32_t>(j)});
             submit_instances(ctx, view, {Pass::Scene, view.level, &with_material, scissor, kObjectClipDistances},
                              records);
         }

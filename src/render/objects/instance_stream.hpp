@@ -31,9 +31,9 @@ inline constexpr unsigned kInstanceBinding = 1;
 // as multi_draw.hpp's commands are.
 struct InstanceStream {
     gl::Buffer buffer;
-    std::size_t capacity = 0;              // records the buffer holds
-    std::size_t used = 0;                  // records written this frame
-    std::vector<InstanceRecord> pending;   // the next draw's, not yet written
+    std::size_t capacity = 0;             // records the buffer holds
+    std::size_t used = 0;                 // records written this frame
+    std::vector<InstanceRecord> pending;  // the next draw's, not yet written
 };
 
 // Starts writing the buffer from the beginning (made on first use).

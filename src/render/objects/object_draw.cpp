@@ -9,20 +9,24 @@
 // plain batches in one multi-draw for both eyes, each instance's matrix and
 // cuts read from its per-instance record (instance_stream.hpp), the cuts as
 // two more clip distances (the OBJECT_CUTS variant). A cell with volumes is
-// drawn, all of it, by the VOLUMES variant, which drops its fragments inside
-// the volumes; each volume's target room is then drawn in the same level,
-// shown only inside the volume and tinted.
+// drawn by the VOLUMES variant, which drops its fragments inside the
+// volumes, only within the volumes' screen bounds, and by the plain variants
+// around them (draw_level_colour); each volume's target room is then drawn
+// in the same level, shown only inside the volume and tinted.
 #include "render/objects/object_draw.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render/lights/light_draw.hpp"
 #include "render/objects/object_culling.hpp"
+#include "render/portals/portal_draw.hpp"
 
 namespace impossible::render {
 namespace {
@@ -36,8 +40,7 @@ void draw_volume_room(const DrawContext& ctx, const LevelView& view, const Sciss
     // Lit by its own room's ambient and lights (layout-format.md, "Lights").
     if (r.lighting.lit) ctx.scratch.stats.light_images += ctx.lights.count[static_cast<size_t>(t)];
     for (const scene::DrawBatch& b : r.cells[static_cast<size_t>(t)]) {
-        const SceneProgram& program =
-            cell_program(ctx, view.cell, light_flags(ctx) | (has_material(b) ? kMaterials : 0u));
+        const SceneProgram& program = cell_program(ctx, view, light_flags(ctx) | (has_material(b) ? kMaterials : 0u));
         set_model_uniforms(ctx, view, program, {view.eyes[0].rect, view.eyes[1].rect}, model, origin.checker_offset);
         set_cell_id(program, static_cast<unsigned>(t + 1), false);
         set_room_lights(ctx, program, t, false);
@@ -61,9 +64,9 @@ void set_material(const DrawContext& ctx, const SceneProgram& m, const scene::Dr
 
 bool has_material(const scene::DrawBatch& b) { return b.texture >= 0 || b.alpha_cutoff >= 0.0f; }
 
-const SceneProgram& cell_program(const DrawContext& ctx, int cell, unsigned flags) {
+const SceneProgram& cell_program(const DrawContext& ctx, const LevelView& view, unsigned flags) {
     const SceneData& r = ctx.scene;
-    if (!r.volumes[static_cast<size_t>(cell)].empty()) flags |= kVolumes;
+    if (!view.outside_volumes && !r.volumes[static_cast<size_t>(view.cell)].empty()) flags |= kVolumes;
     if (flags == 0u) return ctx.scene_program;
     if (flags == kMaterials) {
         assert(ctx.material_program != nullptr);
@@ -95,7 +98,114 @@ LevelView narrowed_to(const DrawContext& ctx, const LevelView& view, const Volum
     return narrowed;
 }
 
+// Where the volumes of view.cell may be seen, per eye: the union of their
+// rectangles (narrowed_to's), none where no volume is seen.
+std::array<NdcRect, 2> volumes_rects(const DrawContext& ctx, const LevelView& view) {
+    std::array<NdcRect, 2> all{NdcRect::none(), NdcRect::none()};
+    for (const VolumeBox& v : ctx.scene.volumes[static_cast<size_t>(view.cell)]) {
+        const LevelView narrowed = narrowed_to(ctx, view, v);
+        for (size_t e = 0; e < 2; ++e) {
+            const NdcRect& r = narrowed.eyes[e].rect;
+            if (r.empty()) continue;
+            NdcRect& a = all[e];
+            a = a.empty()
+                    ? r
+                    : NdcRect{std::min(a.x0, r.x0), std::min(a.y0, r.y0), std::max(a.x1, r.x1), std::max(a.y1, r.y1)};
+        }
+    }
+    return all;
+}
+
+gl::ScissorRect clipped(const gl::ScissorRect& r, const gl::ScissorRect& to) {
+    const int x0 = std::max(r.x, to.x), y0 = std::max(r.y, to.y);
+    const int x1 = std::min(r.x + r.width, to.x + to.width), y1 = std::min(r.y + r.height, to.y + to.height);
+    return {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
+}
+
+// The pixels of `level` outside the (disjoint) rectangles `holes`, as
+// disjoint rectangles: the rows between consecutive edges of the holes, each
+// less the holes spanning them.
+std::vector<gl::ScissorRect> outside_of(const gl::ScissorRect& level, const std::vector<gl::ScissorRect>& holes) {
+    std::vector<int> ys = {level.y, level.y + level.height};
+    for (const gl::ScissorRect& h : holes) {
+        ys.push_back(h.y);
+        ys.push_back(h.y + h.height);
+    }
+    std::sort(ys.begin(), ys.end());
+    std::vector<gl::ScissorRect> out;
+    for (size_t k = 0; k + 1 < ys.size(); ++k) {
+        const int y0 = ys[k], y1 = ys[k + 1];
+        if (y1 <= y0) continue;
+        std::vector<std::pair<int, int>> cut;  // the holes' columns over this strip
+        for (const gl::ScissorRect& h : holes)
+            if (h.y <= y0 && y1 <= h.y + h.height) cut.emplace_back(h.x, h.x + h.width);
+        std::sort(cut.begin(), cut.end());
+        int x = level.x;
+        for (const auto& [c0, c1] : cut) {
+            if (c0 > x) out.push_back({x, y0, c0 - x, y1 - y0});
+            x = std::max(x, c1);
+        }
+        if (level.x + level.width > x) out.push_back({x, y0, level.x + level.width - x, y1 - y0});
+    }
+    return out;
+}
+
+// The cell's batches and instances of a level within `scissor`, by the plain
+// variants when `outside` (no volume is seen there), else by the VOLUMES one.
+void draw_part(const DrawContext& ctx, const LevelView& view, const Scissor& scissor, bool outside, bool count_lights) {
+    LevelView part = view;
+    part.outside_volumes = outside;
+    const SceneProgram& shaded = cell_program(ctx, part, light_flags(ctx));
+    if (shaded.volume_count >= 0)
+        ctx.scratch.stats.volume_variant_pixels += scissor ? static_cast<long>(scissor->width) * scissor->height
+                                                           : 2L * ctx.frame.eye_width * ctx.frame.eye_height;
+    set_eye_uniforms(ctx, part, shaded, {part.eyes[0].rect, part.eyes[1].rect});
+    set_cell_id(shaded, static_cast<unsigned>(part.cell + 1), false);
+    set_room_lights(ctx, shaded, part.cell, count_lights);
+    draw_cell(ctx, part, {Pass::Scene, part.level, &shaded, scissor});
+    draw_cell_instances(ctx, part, scissor, part.cell, -1);
+}
+
 }  // namespace
+
+void draw_level_colour(const DrawContext& ctx, const LevelView& view, const Scissor& scissor) {
+    const bool volumes = !ctx.scene.volumes[static_cast<size_t>(view.cell)].empty();
+    if (!volumes || !ctx.frame.cull_portals || !ctx.frame.split_volume_draws) {
+        draw_part(ctx, view, scissor, false, true);
+        return;
+    }
+    // Outside the volumes' rectangles no fragment can lie in a volume: the
+    // plain variants there, which test depth before shading; the discarding
+    // one only inside. The parts are scissor rectangles of whole pixels,
+    // disjoint, and every draw keeps the level's own clip rectangles, so
+    // each pixel is drawn by one draw of the same triangles as before.
+    const std::array<NdcRect, 2> inside = volumes_rects(ctx, view);
+    const gl::ScissorRect level =
+        scissor.value_or(gl::ScissorRect{0, 0, 2 * ctx.frame.eye_width, ctx.frame.eye_height});
+    std::vector<gl::ScissorRect> holes;
+    for (size_t e = 0; e < 2; ++e) {
+        if (inside[e].empty() || !view.eyes[e].active) continue;
+        std::array<NdcRect, 2> one{NdcRect::none(), NdcRect::none()};
+        one[e] = inside[e];
+        const gl::ScissorRect hole = clipped(scissor_of(ctx, one, view), level);
+        if (hole.width > 0 && hole.height > 0) holes.push_back(hole);
+    }
+    if (holes.size() == 2 && clipped(holes[0], holes[1]).width > 0) {  // never in practice: one hole
+        const gl::ScissorRect& a = holes[0];
+        const gl::ScissorRect& b = holes[1];
+        const int x0 = std::min(a.x, b.x), y0 = std::min(a.y, b.y);
+        holes = {{x0, y0, std::max(a.x + a.width, b.x + b.width) - x0, std::max(a.y + a.height, b.y + b.height) - y0}};
+    }
+    bool first = true;
+    for (const gl::ScissorRect& r : outside_of(level, holes)) {
+        draw_part(ctx, view, r, true, first);
+        first = false;
+    }
+    for (const gl::ScissorRect& h : holes) {
+        draw_part(ctx, view, h, false, first);
+        first = false;
+    }
+}
 
 void draw_volume_rooms(const DrawContext& ctx, const LevelView& view, const Scissor& scissor) {
     const std::vector<VolumeBox>& volumes = ctx.scene.volumes[static_cast<size_t>(view.cell)];

@@ -7,9 +7,18 @@
 
 namespace impossible::render {
 
-// The program a draw of `cell` uses: the plain or material one, or the
-// variant with `flags` (and kVolumes where the cell has volumes).
-const SceneProgram& cell_program(const DrawContext& ctx, int cell, unsigned flags = 0u);
+// The program a draw of view.cell uses: the plain or material one, or the
+// variant with `flags` (and kVolumes where the cell has volumes, unless
+// view.outside_volumes).
+const SceneProgram& cell_program(const DrawContext& ctx, const LevelView& view, unsigned flags = 0u);
+
+// A level's colour pass over its cell: the cell's batches and its
+// instances. In a cell with volumes, with culling (and
+// FrameDesc::split_volume_draws), the plain variants draw the parts of the
+// level's rectangles outside the volumes' screen bounds (four bands per
+// eye) and the discarding VOLUMES variant only inside them; else the
+// VOLUMES variant everywhere.
+void draw_level_colour(const DrawContext& ctx, const LevelView& view, const Scissor& scissor);
 
 // A batch's material uniforms and texture on a kMaterials program `m`.
 void set_material(const DrawContext& ctx, const SceneProgram& m, const scene::DrawBatch& b);
