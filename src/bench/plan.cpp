@@ -183,7 +183,11 @@ void add_sweep_item(PlanBuilder& b, const layout::Layout& layout, const SweepIte
     } else if (kind == "lights") {
         b.plan.sessions.emplace_back(with_lights(b.plan.sessions[0].layout(), n));
         const int variant = static_cast<int>(b.plan.sessions.size()) - 1;
-        b.add(item.name, kind, [variant](BenchConfig& c) { c.layout_variant = variant; });
+        const bool naive = item.suffix == "naive";  // the same lights without the portal tests
+        b.add(item.name, kind, [variant, naive](BenchConfig& c) {
+            c.layout_variant = variant;
+            c.frame.naive_lights = naive;
+        });
     } else if (kind == "light-depth") {
         if (layout.lighting != impossible::layout::Lighting::Lights)
             throw cli::InputError("--sweep light-depth: the layout's lighting is \"fixed\" (try --sweep lights:...)");

@@ -48,9 +48,9 @@ SweepItem parse_item(const std::string& kind, const std::string& item) {
     } else if (kind == "samples") {
         s.n = cli::parse_samples(value);
     } else if (kind == "lights") {
-        s.n = item == "fixed"
-                  ? -1
-                  : cli::parse_int(value.name, item, 0, static_cast<int>(layout::limits::kMaxLightsPerRoom));
+        const std::string n = split_suffix(item, {"naive"}, s);
+        s.n = n == "fixed" ? -1 : cli::parse_int(value.name, n, 0, static_cast<int>(layout::limits::kMaxLightsPerRoom));
+        if (s.n < 0 && !s.suffix.empty()) throw InputError(value.name + ": 'fixed/naive' has no lights to test");
     } else if (kind == "light-depth") {
         s.n = cli::parse_light_depth(value);
     } else if (kind == "shadow-size") {
@@ -81,7 +81,7 @@ std::vector<SweepItem> parse_sweep(const std::string& sweep) {
     if (colon == std::string::npos || !known || colon + 1 == sweep.size())
         throw InputError("--sweep: '" + sweep +
                          "' is not techniques, portals:N,..., boxes:N,..., depth:N,..., size:WxH,..., samples:N,..., "
-                         "lights:fixed|N,..., light-depth:N,..., shadow-size:N,..., mask:on|off,... or "
+                         "lights:fixed|N|N/naive,..., light-depth:N,..., shadow-size:N,..., mask:on|off,... or "
                          "volumes:split|one-variant|none,...");
     std::vector<SweepItem> items;
     for (const std::string& item : split(sweep.substr(colon + 1), ',')) items.push_back(parse_item(kind, item));

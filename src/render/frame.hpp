@@ -132,6 +132,12 @@ struct Diagnostics {
     // draw_level_colour); the image is the same. Off (the VOLUMES variant
     // over the whole level) only to compare (tests, bench's volumes=one-variant).
     bool split_volume_draws = true;
+    // Under "lighting": "lights": every light image of a room added at every
+    // point of it, without the portal tests (apertures and blockers) that
+    // decide whether its light reaches the point: wrong wherever a path is
+    // closed. Only a baseline for what the exact test costs (bench's
+    // lights:N/naive), never a mode users pick.
+    bool naive_lights = false;
     // Textures read at mip level 0 with the magnification filter, as the
     // tracer reads them, instead of through their mipmaps: for comparing the
     // two (tests, bench's error), never for viewing (minified textures alias).

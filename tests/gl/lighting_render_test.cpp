@@ -176,6 +176,34 @@ TEST(LightingRender, MatchesTheLightImagesInEveryViewAndDepth) {
     }
 }
 
+TEST(LightingRender, NaiveLightsDropOnlyThePortalTests) {
+    // Issue 39's baseline (FrameDesc::naive_lights, bench's lights:N/naive):
+    // every image adds its term without the aperture and blocker tests. At
+    // light depth 0 no image has a rectangle to test: the same frame, byte for
+    // byte. Through the door at depth 2 the hall's lamp lights the whole
+    // annex instead of the pool the door frame cuts: brighter (never darker)
+    // where the exact test closes a path, the same ids.
+    for (const int depth : {0, 2}) {
+        LightingRig rig(lit_lamp_hall(depth));
+        ASSERT_TRUE(rig.renderer);
+        render::FrameDesc f = lit_frame(rig.layout, "annex", {0.0, 1.6, 1.5}, 0.0, -25.0);
+        const image::Image exact = rig.render(f);
+        f.naive_lights = true;
+        const image::Image naive = rig.render(f);
+        EXPECT_EQ(testing::count_id_differences(exact, naive), 0);
+        int brighter = 0, darker = 0;
+        for (size_t i = 0; i < exact.rgb.size(); ++i) {
+            brighter += naive.rgb[i] > exact.rgb[i];
+            darker += naive.rgb[i] < exact.rgb[i];
+        }
+        EXPECT_EQ(darker, 0) << "depth " << depth;
+        if (depth == 0)
+            EXPECT_EQ(brighter, 0);
+        else
+            EXPECT_GT(brighter, 1000);
+    }
+}
+
 // An example layout lit: every room a lamp under its ceiling's centre.
 layout::Layout lit_example(const char* name, int depth) {
     layout::Layout l = testing::example_layout(name);

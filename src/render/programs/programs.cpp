@@ -25,6 +25,7 @@ Result<void> ensure_variants(Programs& programs, StereoMode mode, const VariantN
         if ((flags & kLightsUbo) && (!(flags & kLights) || !needs.lights_ubo)) continue;
         if ((flags & kLights) && !(flags & kLightsUbo) && needs.lights_ubo) continue;
         if ((flags & kMaterials) && !needs.materials) continue;
+        if ((flags & kLightsNaive) && (!(flags & kLights) || !needs.lights_naive)) continue;
         std::optional<SceneProgram>& slot = programs.variants[mode_index(mode)][flags];
         if (slot) continue;
         Result<SceneProgram> built = build_scene_variant(mode, flags);

@@ -55,12 +55,13 @@ inline constexpr GLuint kLightRectsBinding = 5;
 
 // What a variant of the scene program adds to the plain one: bits of
 // build_scene_variant's `flags`.
-inline constexpr unsigned kMaterials = 1u;   // MATERIALS: textures and cut-outs
-inline constexpr unsigned kObjectCuts = 2u;  // OBJECT_CUTS: instances of dynamic objects, per-instance records
-inline constexpr unsigned kVolumes = 4u;     // VOLUMES: the draws of a cell with volume portals
-inline constexpr unsigned kLights = 8u;      // LIGHTS: the colour passes of a lit layout ("lighting": "lights")
-inline constexpr unsigned kLightsUbo = 16u;  // with kLights: the light buffers as uniform blocks (LIGHT_UBO)
-inline constexpr unsigned kSceneVariantCount = 32u;
+inline constexpr unsigned kMaterials = 1u;     // MATERIALS: textures and cut-outs
+inline constexpr unsigned kObjectCuts = 2u;    // OBJECT_CUTS: instances of dynamic objects, per-instance records
+inline constexpr unsigned kVolumes = 4u;       // VOLUMES: the draws of a cell with volume portals
+inline constexpr unsigned kLights = 8u;        // LIGHTS: the colour passes of a lit layout ("lighting": "lights")
+inline constexpr unsigned kLightsUbo = 16u;    // with kLights: the light buffers as uniform blocks (LIGHT_UBO)
+inline constexpr unsigned kLightsNaive = 32u;  // with kLights: no portal tests (FrameDesc::naive_lights)
+inline constexpr unsigned kSceneVariantCount = 64u;
 
 // The vec4s of each light buffer's uniform block (kLightsUbo): 64 KiB, the
 // least GL_MAX_UNIFORM_BLOCK_SIZE GL 4.5 allows. Larger light buffers are
