@@ -30,18 +30,20 @@ uniform vec4 u_clip_plane[2];
 uniform vec3 u_checker_offset;
 uniform int u_single_eye;
 // OBJECT_CUTS: instances of dynamic objects (walk/objects.hpp), many in one
-// draw (render/objects/instance_stream.hpp): per instance, from a vertex
-// buffer that advances once per instance of the stereo scheme (both eyes of
-// an object share it), the rigid map from the mesh's coordinates to the
+// draw (render/objects/instance_stream.hpp): each vertex's mesh (its slot)
+// picks its instance's record in u_records, five texels from record
+// a_slot + u_record_base: the rigid map from the mesh's coordinates to the
 // cell's (relative to the cell's origin, as the eye uniforms take them), as
 // its three rows, and the doors' planes that cut it, in the mesh's
 // coordinates (keep >= 0; (0, 0, 0, 1) cuts nothing).
 #if defined(OBJECT_CUTS)
-layout(location = 6) in vec4 a_model_row0;
-layout(location = 7) in vec4 a_model_row1;
-layout(location = 8) in vec4 a_model_row2;
-layout(location = 9) in vec4 a_cut_plane0;
-layout(location = 10) in vec4 a_cut_plane1;
+layout(location = 6) in float a_slot;
+uniform highp sampler2D u_records;
+uniform int u_record_base;
+#define RECORDS_PER_ROW 256
+vec4 record_texel(int record, int k) {
+    return texelFetch(u_records, ivec2(5 * (record % RECORDS_PER_ROW) + k, record / RECORDS_PER_ROW), 0);
+}
 #define CLIP_DISTANCE_COUNT 7
 #else
 #define CLIP_DISTANCE_COUNT 5
@@ -79,9 +81,13 @@ void main() {
     int eye = gl_InstanceID & 1;
 #endif
 #if defined(OBJECT_CUTS)
+    int record = int(a_slot) + u_record_base;
+    vec4 model_row0 = record_texel(record, 0);
+    vec4 model_row1 = record_texel(record, 1);
+    vec4 model_row2 = record_texel(record, 2);
     vec4 mesh_position = vec4(a_position, 1.0);
-    vec4 position = vec4(dot(a_model_row0, mesh_position), dot(a_model_row1, mesh_position),
-                         dot(a_model_row2, mesh_position), 1.0);
+    vec4 position = vec4(dot(model_row0, mesh_position), dot(model_row1, mesh_position),
+                         dot(model_row2, mesh_position), 1.0);
 #else
     vec4 position = vec4(a_position, 1.0);
 #endif
@@ -93,8 +99,8 @@ void main() {
     gl_ClipDistance[3] = rect.w * clip.w - clip.y;
     gl_ClipDistance[4] = dot(u_clip_plane[eye], position);
 #if defined(OBJECT_CUTS)
-    gl_ClipDistance[5] = dot(a_cut_plane0, mesh_position);
-    gl_ClipDistance[6] = dot(a_cut_plane1, mesh_position);
+    gl_ClipDistance[5] = dot(record_texel(record, 3), mesh_position);
+    gl_ClipDistance[6] = dot(record_texel(record, 4), mesh_position);
 #endif
 #if defined(VOLUMES)
     v_volume_position = (u_to_volume_space * position).xyz;
@@ -111,7 +117,7 @@ void main() {
     gl_Position = clip;
     v_checker_position = a_position + u_checker_offset;
 #if defined(OBJECT_CUTS)
-    v_normal = vec3(dot(a_model_row0.xyz, a_normal), dot(a_model_row1.xyz, a_normal), dot(a_model_row2.xyz, a_normal));
+    v_normal = vec3(dot(model_row0.xyz, a_normal), dot(model_row1.xyz, a_normal), dot(model_row2.xyz, a_normal));
 #else
     v_normal = a_normal;
 #endif

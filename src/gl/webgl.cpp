@@ -49,7 +49,6 @@ struct BufferBinding {
     GLuint buffer = 0;
     GLintptr offset = 0;
     GLsizei stride = 0;
-    GLuint divisor = 0;
 };
 struct VertexArrayState {
     std::unordered_map<GLuint, AttribFormat> attribs;
@@ -134,7 +133,6 @@ void apply_attrib(GLuint vao, GLuint index) {
         glBindBuffer(GL_ARRAY_BUFFER, b->second.buffer);
         glVertexAttribPointer(index, f.size, f.type, f.normalized, b->second.stride,
                               reinterpret_cast<const void*>(b->second.offset + f.offset));
-        glVertexAttribDivisor(index, b->second.divisor);
         const auto it = bound.buffers.find(GL_ARRAY_BUFFER);
         glBindBuffer(GL_ARRAY_BUFFER, it == bound.buffers.end() ? 0 : it->second);
     });
@@ -273,10 +271,7 @@ void bind_texture_unit(GLuint unit, GLuint texture) {
 }
 
 void vertex_array_vertex_buffer(GLuint vao, GLuint binding, GLuint buffer, GLintptr offset, GLsizei stride) {
-    BufferBinding& b = vertex_arrays[vao].bindings[binding];
-    b.buffer = buffer;
-    b.offset = offset;
-    b.stride = stride;
+    vertex_arrays[vao].bindings[binding] = {buffer, offset, stride};
     for (const auto& [index, format] : vertex_arrays[vao].attribs)
         if (format.binding == binding) apply_attrib(vao, index);
 }
@@ -299,11 +294,6 @@ void vertex_array_attrib_format(GLuint vao, GLuint index, GLint size, GLenum typ
 void vertex_array_attrib_binding(GLuint vao, GLuint index, GLuint binding) {
     vertex_arrays[vao].attribs[index].binding = binding;
     apply_attrib(vao, index);
-}
-void vertex_array_binding_divisor(GLuint vao, GLuint binding, GLuint divisor) {
-    vertex_arrays[vao].bindings[binding].divisor = divisor;
-    for (const auto& [index, format] : vertex_arrays[vao].attribs)
-        if (format.binding == binding) apply_attrib(vao, index);
 }
 
 void clip_control(GLenum origin, GLenum depth) {

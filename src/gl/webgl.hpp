@@ -104,7 +104,6 @@ void vertex_array_element_buffer(GLuint vao, GLuint buffer);
 void enable_vertex_array_attrib(GLuint vao, GLuint index);
 void vertex_array_attrib_format(GLuint vao, GLuint index, GLint size, GLenum type, GLboolean normalized, GLuint offset);
 void vertex_array_attrib_binding(GLuint vao, GLuint index, GLuint binding);
-void vertex_array_binding_divisor(GLuint vao, GLuint binding, GLuint divisor);
 
 // Storage buffers become uniform buffers of at most kUniformBufferBytes
 // (the shaders' WEBGL branches declare them so); every buffer store is at
@@ -194,7 +193,6 @@ void program_uniform(GLuint program, T&& set) {
 #define glEnableVertexArrayAttrib ::impossible::gl::webgl::enable_vertex_array_attrib
 #define glVertexArrayAttribFormat ::impossible::gl::webgl::vertex_array_attrib_format
 #define glVertexArrayAttribBinding ::impossible::gl::webgl::vertex_array_attrib_binding
-#define glVertexArrayBindingDivisor ::impossible::gl::webgl::vertex_array_binding_divisor
 #define glClipControl ::impossible::gl::webgl::clip_control
 #define glColorMaski ::impossible::gl::webgl::color_mask_i
 #define glGetQueryObjectui64v ::impossible::gl::webgl::get_query_object_ui64v
@@ -204,6 +202,4 @@ void program_uniform(GLuint program, T&& set) {
 #define glCopyImageSubData ::impossible::gl::webgl::copy_image_sub_data
 #define glBindBufferBase ::impossible::gl::webgl::bind_buffer_base
 #define glGetMultisamplefv(...) ::impossible::gl::webgl::unsupported("glGetMultisamplefv")
-#define glDrawElementsInstancedBaseInstance(...) \
-    ::impossible::gl::webgl::unsupported("glDrawElementsInstancedBaseInstance")
 #define glMultiDrawElementsIndirect(...) ::impossible::gl::webgl::unsupported("glMultiDrawElementsIndirect")

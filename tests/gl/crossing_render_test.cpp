@@ -5,6 +5,7 @@
 // with render-to-texture portals.
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include "crossing_rig.hpp"
 
@@ -196,23 +197,30 @@ TEST(CrossingRender, ManyMovingPropsAreCulledPerInstance) {
 }
 
 TEST(CrossingRender, MovingPropsAreOneDrawPerLevelAsStillPropsAre) {
-    // Issue 39: the 200 crates, all in view, moving: every instance in one
-    // multi-draw, so the frame has at most one draw more than the same crates
-    // still (in the cell's mesh), whatever their number; one draw a command
-    // without multi-draw (as the web build draws them), the same picture.
+    // Issue 39: the 200 crates, all in view, moving: their meshes' index
+    // ranges follow one another, and each vertex finds its instance's record
+    // by its mesh, so they draw as one run of the index buffer: at most one
+    // draw more than the same crates still (in the cell's mesh), whatever
+    // their number; without multi-draw (as the web build draws them), the
+    // same picture.
     const std::string moving_text = crates_layout(true), still_text = crates_layout(false);
-    CrossingRig moving(moving_text.c_str()), still(still_text.c_str());
-    ASSERT_TRUE(moving.renderer && still.renderer);
-    render::FrameDesc f = frame_at(moving.layout, "r", {0.0, 1.6, -1.0}, 180.0, -25.0);
-    f.time = 0.5;
     render::FrameStats m, st, separate;
+    render::FrameDesc f;
+    {
+        CrossingRig still(still_text.c_str());  // its own context, gone before the next
+        ASSERT_TRUE(still.renderer);
+        f = frame_at(still.layout, "r", {0.0, 1.6, -1.0}, 180.0, -25.0);
+        f.time = 0.5;
+        still.render(f, &st);
+    }
+    CrossingRig moving(moving_text.c_str());
+    ASSERT_TRUE(moving.renderer);
     const image::Image a = moving.render(f, &m);
-    still.render(f, &st);
     EXPECT_LE(m.draw_calls, st.draw_calls + 1) << m.draw_calls << " vs " << st.draw_calls;
     EXPECT_GT(m.triangles, 150 * 12 * 2);  // most crates are seen
     f.multi_draw = false;
     const image::Image b = moving.render(f, &separate);
-    EXPECT_GT(separate.draw_calls, m.draw_calls + 150);
+    EXPECT_GE(separate.draw_calls, m.draw_calls);
     EXPECT_EQ(testing::count_colour_differences(a, b), 0);
     EXPECT_EQ(testing::count_id_differences(a, b), 0);
     f.multi_draw = true;
@@ -220,6 +228,28 @@ TEST(CrossingRender, MovingPropsAreOneDrawPerLevelAsStillPropsAre) {
     for (const render::StereoMode stereo : {render::StereoMode::TwoPass, render::StereoMode::ViewportIndex}) {
         f.stereo = stereo;
         expect_agree(moving.render(f), moving.trace(f), std::string("200 moving crates, ") + stereo_name(stereo));
+    }
+}
+
+TEST(CrossingRender, AnObjectAndItsImageInOneRoom) {
+    // The endless corridor's doors lead into each other: a crate half
+    // through the north door shows its image at the south door, in the same
+    // room: one mesh twice in a cell, drawn as two layers of records.
+    layout::Layout l = testing::example_layout("corridor.json");
+    layout::BoxProp crate;
+    crate.min = {-0.2, 0.0, -4.3};
+    crate.max = {0.2, 0.6, -3.7};
+    crate.color = {0.2, 0.8, 0.3};
+    l.rooms[0].props.push_back(crate);
+    CrossingRig rig(std::move(l));
+    ASSERT_TRUE(rig.renderer);
+    for (const auto& [position, yaw] : {std::pair{math::dvec3{0.25, 1.6, 2.0}, 4.0}, {{0.1, 1.4, -2.5}, 180.0}}) {
+        render::FrameDesc f = frame_at(rig.layout, "corridor", position, yaw, -15.0);
+        const image::Image a = rig.render(f);
+        f.multi_draw = false;
+        const image::Image b = rig.render(f);
+        EXPECT_EQ(testing::count_colour_differences(a, b), 0);
+        expect_agree(a, rig.trace(f), "a crate and its image in one room");
     }
 }
 

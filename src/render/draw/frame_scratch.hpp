@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "gl/handles.hpp"
@@ -33,16 +34,16 @@ struct FrameScratch {
     std::vector<scene::DrawBatch> cull_batches;
     FrameObjects objects;  // the frame's dynamic objects (frame_objects.hpp)
     std::vector<int> visible_instances;
-    std::vector<int> instance_order;         // a level's visible instances (indices into objects.instances)
-    InstanceStream instance_records;         // their per-instance records (instance_stream.hpp)
-    IndirectDraws indirect;                  // FrameDesc::multi_draw's commands
-    FaceStream faces;                        // FrameDesc::cull_box_faces's indices (box_faces.hpp)
-    std::vector<VisibleDraw> cull_draws;     // a level's draws with box faces culled
-    std::vector<gl::Query> mark_queries;     // occlusion queries of portals, made on first use
-    size_t mark_queries_used = 0;            // of mark_queries, by this frame
-    std::vector<SavedColour> saved_colours;  // per window being drawn, made on first use
-    size_t saved_colours_used = 0;           // of saved_colours, by the windows being drawn
-    bool conditional = false;                // inside a portal's conditional rendering
+    std::vector<std::pair<int, int>> instance_order;  // a level's visible instances as (mesh, instance)
+    InstanceStream instance_records;                  // their per-instance records (instance_stream.hpp)
+    IndirectDraws indirect;                           // FrameDesc::multi_draw's commands
+    FaceStream faces;                                 // FrameDesc::cull_box_faces's indices (box_faces.hpp)
+    std::vector<VisibleDraw> cull_draws;              // a level's draws with box faces culled
+    std::vector<gl::Query> mark_queries;              // occlusion queries of portals, made on first use
+    size_t mark_queries_used = 0;                     // of mark_queries, by this frame
+    std::vector<SavedColour> saved_colours;           // per window being drawn, made on first use
+    size_t saved_colours_used = 0;                    // of saved_colours, by the windows being drawn
+    bool conditional = false;                         // inside a portal's conditional rendering
 
     // Empty counters and nothing of the pools used.
     void begin_frame() {

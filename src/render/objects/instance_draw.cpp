@@ -1,11 +1,10 @@
 // Dynamic objects' instances in the stencil recursion (object_draw.hpp,
 // draw_cell_instances): a level's visible instances of a cell, each with a
-// per-instance record (its matrix into the cell's coordinates less the
-// cell's origin, and its door cuts; instance_stream.hpp), all their plain
-// batches in one multi-draw whose commands name their records as base
-// instances, the batches with materials one draw each. In the web build
-// (no base instance in WebGL 2) each command is its own draw, its records
-// bound at their offset.
+// record (its matrix into the cell's coordinates less the cell's origin, and
+// its door cuts) in a block indexed by mesh (instance_stream.hpp), which each
+// vertex finds by its mesh's slot; their plain batches as runs of the index
+// buffer (the meshes of a layout's dynamic props lie one after another), all
+// in one multi-draw, the batches with materials one draw each.
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -86,81 +85,87 @@ void set_instanced_uniforms(const DrawContext& ctx, const LevelView& view, const
     set_volume_uniforms(ctx, view, program, glm::translate(math::dmat4(1.0), origin), inside);
 }
 
-// Submits the queued commands through the instances' vertex array, whose
-// records start at byte `records`: one multi-draw (or, without
-// FrameDesc::multi_draw, and in the web build, one draw a command).
-void submit_instances(const DrawContext& ctx, const LevelView& view, const SceneDraw& draw, std::size_t records) {
+// Queues the range, joined to the last queued one where it follows it in
+// the index buffer (consecutive meshes, as a cell's props are).
+void queue_joined(IndirectDraws& draws, const scene::IndexRange& range, int instances) {
+    if (range.count == 0) return;
+    if (!draws.pending.empty()) {
+        IndirectDraw& last = draws.pending.back();
+        if (last.first_index + last.count == range.first) {
+            last.count += range.count;
+            return;
+        }
+    }
+    queue_range(draws, range, instances);
+}
+
+// Submits the queued ranges through the instances' vertex array: one
+// multi-draw (one draw a range without FrameDesc::multi_draw, and in the
+// web build, which has no multi-draw).
+void submit_instances(const DrawContext& ctx, const LevelView& view, const SceneDraw& draw) {
     FrameScratch& s = ctx.scratch;
     const GLuint vao = ctx.scene.gpu.instance_vao.get();
-    const GLuint buffer = s.instance_records.buffer.get();
 #if defined(__EMSCRIPTEN__)
-    constexpr bool kBaseInstance = false;
+    constexpr bool kMultiDraw = false;
 #else
-    constexpr bool kBaseInstance = true;
+    constexpr bool kMultiDraw = true;
 #endif
-    if (kBaseInstance && ctx.frame.multi_draw) {
-        glVertexArrayVertexBuffer(vao, kInstanceBinding, buffer, static_cast<GLintptr>(records),
-                                  sizeof(InstanceRecord));
+    if (kMultiDraw && ctx.frame.multi_draw) {
         submit_queued(ctx, view, draw, vao);
         return;
     }
     std::vector<IndirectDraw> commands;
     commands.swap(s.indirect.pending);
-    for (IndirectDraw d : commands) {
-        const std::size_t at = records + d.base_instance * sizeof(InstanceRecord);
-        glVertexArrayVertexBuffer(vao, kInstanceBinding, buffer, static_cast<GLintptr>(at), sizeof(InstanceRecord));
-        d.base_instance = 0;
+    for (const IndirectDraw& d : commands) {
         s.indirect.pending.push_back(d);
         submit_queued(ctx, view, draw, vao);
     }
 }
 
-// The visible instances `order` (indices into the frame's instances) of a
-// level, drawn with id id_cell + 1.
+// The instances `order` (indices into the frame's instances, each mesh at
+// most once, by mesh) of a level, drawn with id id_cell + 1: their records
+// as one block indexed by mesh, their plain batches as runs of the index
+// buffer, the batches with materials one draw each.
 void draw_instances(const DrawContext& ctx, const LevelView& view, const Scissor& scissor,
                     const std::vector<int>& order, int id_cell, int inside) {
     const SceneData& r = ctx.scene;
     FrameScratch& s = ctx.scratch;
     const math::dvec3 origin = r.cell_origins[static_cast<size_t>(view.cell)].origin;
-    bool any_material = false;
+    auto mesh_of = [&](int i) { return s.objects.mesh[static_cast<size_t>(i)]; };
+    const int low = mesh_of(order.front());
+    s.instance_records.pending.assign(static_cast<size_t>(mesh_of(order.back()) - low + 1), InstanceRecord{});
     for (const int i : order) {
         const walk::ObjectInstance& inst = s.objects.instances[static_cast<size_t>(i)];
-        const scene::ObjectMesh& mesh = r.object_meshes[static_cast<size_t>(s.objects.mesh[static_cast<size_t>(i)])];
+        const scene::ObjectMesh& mesh = r.object_meshes[static_cast<size_t>(mesh_of(i))];
         const math::dmat4 model = inst.to_cell * glm::translate(math::dmat4(1.0), mesh.origin);
-        s.instance_records.pending.push_back(instance_record(inst, model, origin, mesh_extent(mesh)));
+        s.instance_records.pending[static_cast<size_t>(mesh_of(i) - low)] =
+            instance_record(inst, model, origin, mesh_extent(mesh));
     }
-    const std::size_t records = write_instances(s.instance_records);
-    glVertexArrayBindingDivisor(r.gpu.instance_vao.get(), kInstanceBinding, static_cast<GLuint>(instances_of(ctx)));
+    const int base = write_instances(s.instance_records, ctx.state) - low;
+    ctx.state.texture(kInstanceRecordUnit, s.instance_records.texture.get());
     const int eyes = instances_of(ctx);
     const unsigned flags = kObjectCuts | light_flags(ctx);
-    // Every plain batch of every instance in one submission.
     const SceneProgram& plain = cell_program(ctx, view, flags);
     set_instanced_uniforms(ctx, view, plain, id_cell, inside);
+    glProgramUniform1i(plain.program.get(), plain.record_base, base);
     assert(s.indirect.pending.empty());
-    for (size_t j = 0; j < order.size(); ++j)
-        for (const scene::DrawBatch& b :
-             r.object_meshes[static_cast<size_t>(s.objects.mesh[static_cast<size_t>(order[j])])].batches) {
-            if (has_material(b)) {
-                any_material = true;
-                continue;
-            }
-            if (b.range.count > 0)
-                s.indirect.pending.push_back(
-                    {b.range.count, static_cast<std::uint32_t>(eyes), b.range.first, 0, static_cast<std::uint32_t>(j)});
+    bool any_material = false;
+    for (const int i : order)
+        for (const scene::DrawBatch& b : r.object_meshes[static_cast<size_t>(mesh_of(i))].batches) {
+            any_material = any_material || has_material(b);
+            if (!has_material(b)) queue_joined(s.indirect, b.range, eyes);
         }
-    submit_instances(ctx, view, {Pass::Scene, view.level, &plain, scissor, kObjectClipDistances}, records);
+    submit_instances(ctx, view, {Pass::Scene, view.level, &plain, scissor, kObjectClipDistances});
     if (!any_material) return;
     const SceneProgram& with_material = cell_program(ctx, view, flags | kMaterials);
     set_instanced_uniforms(ctx, view, with_material, id_cell, inside);
-    for (size_t j = 0; j < order.size(); ++j)
-        for (const scene::DrawBatch& b :
-             r.object_meshes[static_cast<size_t>(s.objects.mesh[static_cast<size_t>(order[j])])].batches) {
+    glProgramUniform1i(with_material.program.get(), with_material.record_base, base);
+    for (const int i : order)
+        for (const scene::DrawBatch& b : r.object_meshes[static_cast<size_t>(mesh_of(i))].batches) {
             if (!has_material(b) || b.range.count == 0) continue;
             set_material(ctx, with_material, b);
-            s.indirect.pending.push_back(
-                {b.range.count, static_cast<std::uint32_t>(eyes), b.range.first, 0, static_cast<std::uint32_t>(j)});
-            submit_instances(ctx, view, {Pass::Scene, view.level, &with_material, scissor, kObjectClipDistances},
-                             records);
+            queue_range(s.indirect, b.range, eyes);
+            submit_instances(ctx, view, {Pass::Scene, view.level, &with_material, scissor, kObjectClipDistances});
         }
 }
 
@@ -180,10 +185,31 @@ void draw_cell_instances(const DrawContext& ctx, const LevelView& view, const Sc
         for (size_t k = 0; k < visible.size(); ++k) visible[k] = static_cast<int>(k);
     }
     if (visible.empty()) return;
-    std::vector<int>& order = s.instance_order;
-    order.clear();
-    for (const int k : visible) order.push_back(static_cast<int>(objects.objects[static_cast<size_t>(k)].first_batch));
-    draw_instances(ctx, view, scissor, order, cell, inside);
+    // By mesh; a mesh seen twice in the cell (an object and its image
+    // through a door into its own room) goes into a second layer, its own
+    // block of records and draws.
+    std::vector<std::pair<int, int>>& by_mesh = s.instance_order;
+    by_mesh.clear();
+    for (const int k : visible) {
+        const int i = static_cast<int>(objects.objects[static_cast<size_t>(k)].first_batch);
+        by_mesh.emplace_back(s.objects.mesh[static_cast<size_t>(i)], i);
+    }
+    std::sort(by_mesh.begin(), by_mesh.end());
+    std::vector<int>& layer = s.visible_instances;  // visible is read no further
+    for (bool more = true; more;) {
+        more = false;
+        layer.clear();
+        for (std::pair<int, int>& m : by_mesh) {
+            if (m.second < 0) continue;
+            if (!layer.empty() && s.objects.mesh[static_cast<size_t>(layer.back())] == m.first) {
+                more = true;
+                continue;
+            }
+            layer.push_back(m.second);
+            m.second = -1;
+        }
+        if (!layer.empty()) draw_instances(ctx, view, scissor, layer, cell, inside);
+    }
 }
 
 }  // namespace impossible::render

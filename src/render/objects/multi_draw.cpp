@@ -15,13 +15,9 @@ int submit_indirect(gl::StateCache& state, IndirectDraws& draws) {
     if (n == 0) return 0;
     if (n == 1) {
         const IndirectDraw& d = draws.pending[0];
-        const void* first = reinterpret_cast<const void*>(static_cast<std::uintptr_t>(d.first_index) * 4);
-        if (d.base_instance == 0)
-            glDrawElementsInstanced(GL_TRIANGLES, static_cast<GLsizei>(d.count), GL_UNSIGNED_INT, first,
-                                    static_cast<GLsizei>(d.instance_count));
-        else
-            glDrawElementsInstancedBaseInstance(GL_TRIANGLES, static_cast<GLsizei>(d.count), GL_UNSIGNED_INT, first,
-                                                static_cast<GLsizei>(d.instance_count), d.base_instance);
+        glDrawElementsInstanced(GL_TRIANGLES, static_cast<GLsizei>(d.count), GL_UNSIGNED_INT,
+                                reinterpret_cast<const void*>(static_cast<std::uintptr_t>(d.first_index) * 4),
+                                static_cast<GLsizei>(d.instance_count));
         draws.pending.clear();
         return 1;
     }

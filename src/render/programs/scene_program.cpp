@@ -7,6 +7,7 @@
 #include "base/embedded.hpp"
 #include "gl/shader.hpp"
 #include "layout/layout.hpp"
+#include "render/objects/instance_stream.hpp"
 #include "render/programs/gpu_scene.hpp"
 #include "shading/shading.hpp"
 
@@ -59,6 +60,10 @@ std::string variant_defines(const SceneVariant& variant) {
 }
 
 void find_variant_uniforms(const SceneVariant& variant, gl::UniformLocations& u, SceneProgram& p) {
+    if (variant.object_cuts) {
+        p.record_base = u.required("u_record_base");
+        glProgramUniform1i(p.program.get(), u.required("u_records"), static_cast<GLint>(kInstanceRecordUnit));
+    }
     if (variant.volumes) {
         p.to_volume_space = u.required("u_to_volume_space");
         p.volume_first = u.required("u_volume_first");

@@ -32,6 +32,7 @@ struct SceneProgram {
     GLint alpha_cutoff = -1;    // float: drop fragments whose alpha is below it; < 0: opaque (materials only)
     GLint mip_level0 = -1;      // bool: textures at mip level 0 only (materials only)
     GLint target_size = -1;     // vec2, only in the portal-texture program
+    GLint record_base = -1;     // kObjectCuts only: int, the record of slot 0 (render/objects/instance_stream.hpp)
     // kVolumes variants only (shaders/scene.frag.glsl, VOLUMES):
     GLint to_volume_space = -1;  // mat4: vertex → the cell's coordinates less its origin
     GLint volume_first = -1;     // int: the cell's first box in the buffer at kVolumeBinding
