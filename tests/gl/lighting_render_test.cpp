@@ -323,6 +323,9 @@ TEST(LightingRender, LightDepthOfTheViewReplacesTheLayouts) {
     f.max_depth = 0;  // the annex alone (its images, not the hall's seen through its door)
     render::FrameStats at0, at1;
     const image::Image dark = rig.render(f, &at0);
+    // No image reaches the annex at depth 0: its ambient alone, by the
+    // LIGHTS_AMBIENT variant (issue 39: no loop over images at all).
+    expect_lit_agree(dark, lit_cpu_frame(rig.layout, f), "the annex by its ambient alone");
     f.light_depth = 1;
     const image::Image lit = rig.render(f, &at1);
     expect_lit_agree(lit, lit_cpu_frame(rig.layout, f), "--light-depth 1 over the layout's 0");

@@ -3,8 +3,9 @@
 
 namespace impossible::render {
 
-unsigned light_flags(const DrawContext& ctx) {
+unsigned light_flags(const DrawContext& ctx, int room) {
     if (!ctx.scene.lighting.lit) return 0u;
+    if (ctx.lights.count[static_cast<size_t>(room)] == 0) return kLights | kLightsAmbient;
     return kLights | (ctx.lights.ubo ? kLightsUbo : 0u) | (ctx.frame.naive_lights ? kLightsNaive : 0u);
 }
 

@@ -144,7 +144,7 @@ void draw_instances(const DrawContext& ctx, const LevelView& view, const Scissor
     const int base = write_instances(s.instance_records, ctx.state) - low;
     ctx.state.texture(kInstanceRecordUnit, s.instance_records.texture.get());
     const int eyes = instances_of(ctx);
-    const unsigned flags = kObjectCuts | light_flags(ctx);
+    const unsigned flags = kObjectCuts | light_flags(ctx, id_cell);
     const SceneProgram& plain = cell_program(ctx, view, flags);
     set_instanced_uniforms(ctx, view, plain, id_cell, inside);
     glProgramUniform1i(plain.program.get(), plain.record_base, base);

@@ -40,7 +40,8 @@ void draw_volume_room(const DrawContext& ctx, const LevelView& view, const Sciss
     // Lit by its own room's ambient and lights (layout-format.md, "Lights").
     if (r.lighting.lit) ctx.scratch.stats.light_images += ctx.lights.count[static_cast<size_t>(t)];
     for (const scene::DrawBatch& b : r.cells[static_cast<size_t>(t)]) {
-        const SceneProgram& program = cell_program(ctx, view, light_flags(ctx) | (has_material(b) ? kMaterials : 0u));
+        const SceneProgram& program =
+            cell_program(ctx, view, light_flags(ctx, t) | (has_material(b) ? kMaterials : 0u));
         set_model_uniforms(ctx, view, program, {view.eyes[0].rect, view.eyes[1].rect}, model, origin.checker_offset);
         set_cell_id(program, static_cast<unsigned>(t + 1), false);
         set_room_lights(ctx, program, t, false);
@@ -155,7 +156,7 @@ std::vector<gl::ScissorRect> outside_of(const gl::ScissorRect& level, const std:
 void draw_part(const DrawContext& ctx, const LevelView& view, const Scissor& scissor, bool outside, bool count_lights) {
     LevelView part = view;
     part.outside_volumes = outside;
-    const SceneProgram& shaded = cell_program(ctx, part, light_flags(ctx));
+    const SceneProgram& shaded = cell_program(ctx, part, light_flags(ctx, part.cell));
     if (shaded.volume_count >= 0)
         ctx.scratch.stats.volume_variant_pixels += scissor ? static_cast<long>(scissor->width) * scissor->height
                                                            : 2L * ctx.frame.eye_width * ctx.frame.eye_height;

@@ -62,7 +62,10 @@ inline constexpr unsigned kVolumes = 4u;       // VOLUMES: the draws of a cell w
 inline constexpr unsigned kLights = 8u;        // LIGHTS: the colour passes of a lit layout ("lighting": "lights")
 inline constexpr unsigned kLightsUbo = 16u;    // with kLights: the light buffers as uniform blocks (LIGHT_UBO)
 inline constexpr unsigned kLightsNaive = 32u;  // with kLights: no portal tests (FrameDesc::naive_lights)
-inline constexpr unsigned kSceneVariantCount = 64u;
+// with kLights (alone: no kLightsUbo, no kLightsNaive): a room no light image
+// reaches, lit by its ambient alone (LIGHTS_AMBIENT)
+inline constexpr unsigned kLightsAmbient = 64u;
+inline constexpr unsigned kSceneVariantCount = 128u;
 
 // The vec4s of each light buffer's uniform block (kLightsUbo): 64 KiB, the
 // least GL_MAX_UNIFORM_BLOCK_SIZE GL 4.5 allows. Larger light buffers are
