@@ -149,13 +149,17 @@ void draw_instances(const DrawContext& ctx, const LevelView& view, const Scissor
     set_instanced_uniforms(ctx, view, plain, id_cell, inside);
     glProgramUniform1i(plain.program.get(), plain.record_base, base);
     assert(s.indirect.pending.empty());
+    // The cuts' clip distances only where some instance has a cut.
+    bool cut = false;
+    for (const int i : order) cut = cut || s.objects.instances[static_cast<size_t>(i)].cut_count > 0;
+    const int clip_distances = cut ? kObjectClipDistances : kSceneClipDistances;
     bool any_material = false;
     for (const int i : order)
         for (const scene::DrawBatch& b : r.object_meshes[static_cast<size_t>(mesh_of(i))].batches) {
             any_material = any_material || has_material(b);
             if (!has_material(b)) queue_joined(s.indirect, b.range, eyes);
         }
-    submit_instances(ctx, view, {Pass::Scene, view.level, &plain, scissor, kObjectClipDistances});
+    submit_instances(ctx, view, {Pass::Scene, view.level, &plain, scissor, clip_distances});
     if (!any_material) return;
     const SceneProgram& with_material = cell_program(ctx, view, flags | kMaterials);
     set_instanced_uniforms(ctx, view, with_material, id_cell, inside);
@@ -165,7 +169,7 @@ void draw_instances(const DrawContext& ctx, const LevelView& view, const Scissor
             if (!has_material(b) || b.range.count == 0) continue;
             set_material(ctx, with_material, b);
             queue_range(s.indirect, b.range, eyes);
-            submit_instances(ctx, view, {Pass::Scene, view.level, &with_material, scissor, kObjectClipDistances});
+            submit_instances(ctx, view, {Pass::Scene, view.level, &with_material, scissor, clip_distances});
         }
 }
 

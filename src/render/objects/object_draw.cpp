@@ -163,8 +163,10 @@ void draw_part(const DrawContext& ctx, const LevelView& view, const Scissor& sci
     set_eye_uniforms(ctx, part, shaded, {part.eyes[0].rect, part.eyes[1].rect});
     set_cell_id(shaded, static_cast<unsigned>(part.cell + 1), false);
     set_room_lights(ctx, shaded, part.cell, count_lights);
-    draw_cell(ctx, part, {Pass::Scene, part.level, &shaded, scissor});
+    // The instances first, as a cell's still props come before the faces
+    // they stand on: what they hide fails the early depth test.
     draw_cell_instances(ctx, part, scissor, part.cell, -1);
+    draw_cell(ctx, part, {Pass::Scene, part.level, &shaded, scissor});
 }
 
 }  // namespace
