@@ -84,7 +84,7 @@ closed_wall() {
 }
 
 echo "lights.sh: $(basename "$layout") ${view:-(start)}, $size per eye, $frames frames x $runs runs"
-sweep lights:fixed,0,1,8,32
+sweep lights:fixed,0,1,8,32,1/naive,8/naive
 sweep light-depth:0,1,2,4
 sweep shadow-size:0,128,256,512,1024
 closed_wall

@@ -6,7 +6,9 @@
 # crate moving (a 4 s back-and-forth path, so each is a dynamic object placed
 # by walk::place_objects each frame, some crossing the door) and with none
 # moving (all in their cells' meshes), and runs `impossible bench` on both at
-# --time 1 (--size 640x360 --frames FRAMES, RUNS runs, medians printed).
+# --time 1 (--size 640x360 --frames FRAMES, RUNS runs, still and moving
+# alternating run by run; medians printed, and the median of the per-run
+# ratios moving / still).
 #   bench/moving-props.sh [BUILD_DIR]   (default: build)
 set -eu
 build=${1:-build}
@@ -38,22 +40,31 @@ layout() {  # N MOVING(0/1) > file
 
 median() { tr ' ' '\n' | grep . | sort -g | awk '{ v[NR] = $1 } END { print NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 
+# One bench run of a layout: "frame_ms submit_ms draw_calls".
+run() {
+    "$build/impossible" bench "$1" --time 1 --size 640x360 --frames "$frames" --json "$tmp/out.json" > /dev/null
+    echo "$(grep -o '"frame_ms_median": *[-0-9.e+]*' "$tmp/out.json" | head -n 1 | sed 's/.*: *//')" \
+        "$(grep -o '"submit_ms_median": *[-0-9.e+]*' "$tmp/out.json" | head -n 1 | sed 's/.*: *//')" \
+        "$(grep -o '"draw_calls": *[0-9.]*' "$tmp/out.json" | head -n 1 | sed 's/.*: *//')"
+}
+
 for n in 100 1000; do
     for moving in 0 1; do
         layout "$n" "$moving" > "$tmp/props-$n-$moving.json"
         "$build/impossible" validate "$tmp/props-$n-$moving.json" > /dev/null 2>&1
     done
-    for moving in 0 1; do
-        frame="" cpu="" draws=""
-        r=0
-        while [ $r -lt "$runs" ]; do
-            "$build/impossible" bench "$tmp/props-$n-$moving.json" --time 1 --size 640x360 --frames "$frames" \
-                --json "$tmp/out.json" > /dev/null
-            frame="$frame $(grep -o '"frame_ms_median": *[-0-9.e+]*' "$tmp/out.json" | head -n 1 | sed 's/.*: *//')"
-            cpu="$cpu $(grep -o '"submit_ms_median": *[-0-9.e+]*' "$tmp/out.json" | head -n 1 | sed 's/.*: *//')"
-            draws=$(grep -o '"draw_calls": *[0-9]*' "$tmp/out.json" | head -n 1 | sed 's/.*: *//')
-            r=$((r + 1))
-        done
-        echo "props=$n moving=$moving frame_ms=$(echo "$frame" | median) submit_ms=$(echo "$cpu" | median) draw_calls=$draws"
+    # Still and moving alternate run by run, so that the machine's load
+    # hits both alike; the ratio is taken per run, then its median.
+    frame0="" cpu0="" frame1="" cpu1="" ratios=""
+    r=0
+    while [ $r -lt "$runs" ]; do
+        set -- $(run "$tmp/props-$n-0.json") $(run "$tmp/props-$n-1.json")
+        frame0="$frame0 $1" cpu0="$cpu0 $2" draws0=$3
+        frame1="$frame1 $4" cpu1="$cpu1 $5" draws1=$6
+        ratios="$ratios $(echo "$4 $1" | awk '{ printf "%.3f", $1 / $2 }')"
+        r=$((r + 1))
     done
+    echo "props=$n moving=0 frame_ms=$(echo "$frame0" | median) submit_ms=$(echo "$cpu0" | median) draw_calls=$draws0"
+    echo "props=$n moving=1 frame_ms=$(echo "$frame1" | median) submit_ms=$(echo "$cpu1" | median) draw_calls=$draws1"
+    echo "props=$n moving/still per run:$ratios median $(echo "$ratios" | median)"
 done

@@ -114,7 +114,13 @@ vec3 light_sum(vec3 p, vec3 n, float origin_distance) {
         float spot = clamp((dot(axis.xyz, -w) - radiance.w) * axis.w, 0.0, 1.0);
         spot = radiance.w <= 1.0 ? spot * spot : 1.0;
         float amount = max(0.0, dot(n, w)) * att * spot;
+#if defined(LIGHTS_NAIVE)
+        // render::FrameDesc::naive_lights: every image reaches every point
+        // (a baseline for the cost of the test, never a mode to view).
+        bool open = true;
+#else
         bool open = light_path_open(light_images[b + 3], p, v, 1e-6 * (1.0 + origin_distance) / d);
+#endif
         sum += radiance.rgb * (open ? amount * light_visible(g, p - position.xyz, d) : 0.0);
     }
     return sum;

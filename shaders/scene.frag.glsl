@@ -61,7 +61,11 @@ void main() {
     // layout-format.md, "Lights": the room's ambient and the light paths
     // (lighting.frag.glsl) instead of the built-in light.
     float dark = checker_dark(v_checker_position, n, v_checker) ? CHECKER_DARK : 1.0;
+#if defined(LIGHTS_AMBIENT)
+    vec3 lit = u_light_ambient;  // no light image reaches the room
+#else
     vec3 lit = u_light_ambient + light_sum(v_light_position, n, length(v_light_position + u_light_origin));
+#endif
     o_color = vec4(clamp(base * dark * lit * u_exposure, 0.0, 1.0), 1.0);
 #else
     float lambert = max(0.0, dot(n, LIGHT_DIR));

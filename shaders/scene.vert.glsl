@@ -29,12 +29,21 @@ uniform vec4 u_clip_plane[2];
 // this offset.
 uniform vec3 u_checker_offset;
 uniform int u_single_eye;
-// OBJECT_CUTS: a dynamic object's instance (walk/objects.hpp): the doors'
-// planes that cut it, in the mesh's coordinates (keep >= 0; (0, 0, 0, 1)
-// cuts nothing), and the rotation of its normals into the cell's.
+// OBJECT_CUTS: instances of dynamic objects (walk/objects.hpp), many in one
+// draw (render/objects/instance_stream.hpp): each vertex's mesh (its slot)
+// picks its instance's record in u_records, five texels from record
+// a_slot + u_record_base: the rigid map from the mesh's coordinates to the
+// cell's (relative to the cell's origin, as the eye uniforms take them), as
+// its three rows, and the doors' planes that cut it, in the mesh's
+// coordinates (keep >= 0; (0, 0, 0, 1) cuts nothing).
 #if defined(OBJECT_CUTS)
-uniform vec4 u_cut_plane[2];
-uniform mat3 u_object_rotation;
+layout(location = 6) in float a_slot;
+uniform highp sampler2D u_records;
+uniform int u_record_base;
+#define RECORDS_PER_ROW 256
+vec4 record_texel(int record, int k) {
+    return texelFetch(u_records, ivec2(5 * (record % RECORDS_PER_ROW) + k, record / RECORDS_PER_ROW), 0);
+}
 #define CLIP_DISTANCE_COUNT 7
 #else
 #define CLIP_DISTANCE_COUNT 5
@@ -71,22 +80,33 @@ void main() {
 #else
     int eye = gl_InstanceID & 1;
 #endif
-    vec4 clip = u_view_proj[eye] * vec4(a_position, 1.0);
+#if defined(OBJECT_CUTS)
+    int record = int(a_slot) + u_record_base;
+    vec4 model_row0 = record_texel(record, 0);
+    vec4 model_row1 = record_texel(record, 1);
+    vec4 model_row2 = record_texel(record, 2);
+    vec4 mesh_position = vec4(a_position, 1.0);
+    vec4 position = vec4(dot(model_row0, mesh_position), dot(model_row1, mesh_position),
+                         dot(model_row2, mesh_position), 1.0);
+#else
+    vec4 position = vec4(a_position, 1.0);
+#endif
+    vec4 clip = u_view_proj[eye] * position;
     vec4 rect = u_eye_rect[eye];
     gl_ClipDistance[0] = clip.x - rect.x * clip.w;
     gl_ClipDistance[1] = rect.z * clip.w - clip.x;
     gl_ClipDistance[2] = clip.y - rect.y * clip.w;
     gl_ClipDistance[3] = rect.w * clip.w - clip.y;
-    gl_ClipDistance[4] = dot(u_clip_plane[eye], vec4(a_position, 1.0));
+    gl_ClipDistance[4] = dot(u_clip_plane[eye], position);
 #if defined(OBJECT_CUTS)
-    gl_ClipDistance[5] = dot(u_cut_plane[0], vec4(a_position, 1.0));
-    gl_ClipDistance[6] = dot(u_cut_plane[1], vec4(a_position, 1.0));
+    gl_ClipDistance[5] = dot(record_texel(record, 3), mesh_position);
+    gl_ClipDistance[6] = dot(record_texel(record, 4), mesh_position);
 #endif
 #if defined(VOLUMES)
-    v_volume_position = (u_to_volume_space * vec4(a_position, 1.0)).xyz;
+    v_volume_position = (u_to_volume_space * position).xyz;
 #endif
 #if defined(LIGHTS)
-    v_light_position = (u_to_light_space * vec4(a_position, 1.0)).xyz;
+    v_light_position = (u_to_light_space * position).xyz;
 #endif
 #if defined(STEREO_VIEWPORT_INDEX)
     gl_ViewportIndex = eye;
@@ -97,7 +117,7 @@ void main() {
     gl_Position = clip;
     v_checker_position = a_position + u_checker_offset;
 #if defined(OBJECT_CUTS)
-    v_normal = u_object_rotation * a_normal;
+    v_normal = vec3(dot(model_row0.xyz, a_normal), dot(model_row1.xyz, a_normal), dot(model_row2.xyz, a_normal));
 #else
     v_normal = a_normal;
 #endif

@@ -37,6 +37,13 @@ layout::Layout keep_first_portals(const layout::Layout& layout, int n) {
 
 namespace {
 
+// The layout without its volume portals.
+layout::Layout without_volumes(const layout::Layout& layout) {
+    layout::Layout out = layout;
+    out.volumes.clear();
+    return out;
+}
+
 // Whether a box's footprint lies on the room's floor: always in a box room;
 // in a prism room, its corners inside the floor and no corner of the floor
 // inside the footprint.
@@ -101,6 +108,7 @@ void add_techniques(PlanBuilder& b) {
     b.add("cull=on", "cull", [](BenchConfig& c) { c.frame.cull_portals = true; });
     b.add("occlusion=on", "occlusion", [](BenchConfig& c) { c.frame.occlusion_test = true; });
     b.add("multi-draw=off", "multi-draw", [](BenchConfig& c) { c.frame.multi_draw = false; });
+    b.add("volumes=one-variant", "volumes", [](BenchConfig& c) { c.frame.split_volume_draws = false; });
     for (double scale : {0.25, 0.5, 1.0}) {
         char name[32];
         std::snprintf(name, sizeof name, "texture=%g", scale);
@@ -140,6 +148,22 @@ void add_boxes(PlanBuilder& b, const SweepItem& item) {
     });
 }
 
+// One item of --sweep volumes: "split" (the default), "one-variant" (the
+// discarding variant over the whole level) or "none" (the layout without
+// its volumes).
+void add_volumes(PlanBuilder& b, const layout::Layout& layout, const SweepItem& item) {
+    int variant = 0;
+    if (item.suffix == "none") {
+        b.plan.sessions.emplace_back(without_volumes(layout));
+        variant = static_cast<int>(b.plan.sessions.size()) - 1;
+    }
+    const bool split = item.suffix != "one-variant";
+    b.add(item.name, item.kind, [variant, split](BenchConfig& c) {
+        c.layout_variant = variant;
+        c.frame.split_volume_draws = split;
+    });
+}
+
 // One item of --sweep KIND:ITEM,... (parsed with the options, bench/sweep.hpp).
 void add_sweep_item(PlanBuilder& b, const layout::Layout& layout, const SweepItem& item) {
     const std::string& kind = item.kind;
@@ -161,7 +185,11 @@ void add_sweep_item(PlanBuilder& b, const layout::Layout& layout, const SweepIte
     } else if (kind == "lights") {
         b.plan.sessions.emplace_back(with_lights(b.plan.sessions[0].layout(), n));
         const int variant = static_cast<int>(b.plan.sessions.size()) - 1;
-        b.add(item.name, kind, [variant](BenchConfig& c) { c.layout_variant = variant; });
+        const bool naive = item.suffix == "naive";  // the same lights without the portal tests
+        b.add(item.name, kind, [variant, naive](BenchConfig& c) {
+            c.layout_variant = variant;
+            c.frame.naive_lights = naive;
+        });
     } else if (kind == "light-depth") {
         if (layout.lighting != impossible::layout::Lighting::Lights)
             throw cli::InputError("--sweep light-depth: the layout's lighting is \"fixed\" (try --sweep lights:...)");
@@ -180,6 +208,8 @@ void add_sweep_item(PlanBuilder& b, const layout::Layout& layout, const SweepIte
             if (!on)
                 for (math::EyeOptics& e : *c.frame.eye_optics) e.visible_area.clear();
         });
+    } else if (kind == "volumes") {
+        add_volumes(b, layout, item);
     } else if (kind == "depth") {
         b.add(item.name, kind, [n](BenchConfig& c) { c.frame.max_depth = n; });
     } else {

@@ -22,7 +22,7 @@ std::vector<std::string> split(const std::string& text, char sep) {
 }
 
 constexpr std::string_view kKinds[] = {"portals", "depth",       "size",        "boxes", "samples",
-                                       "lights",  "light-depth", "shadow-size", "mask"};
+                                       "lights",  "light-depth", "shadow-size", "mask",  "volumes"};
 
 // "N" or "N/SUFFIX" for one of `suffixes`: N, and the suffix found.
 std::string split_suffix(const std::string& item, std::initializer_list<const char*> suffixes, SweepItem& out) {
@@ -48,9 +48,9 @@ SweepItem parse_item(const std::string& kind, const std::string& item) {
     } else if (kind == "samples") {
         s.n = cli::parse_samples(value);
     } else if (kind == "lights") {
-        s.n = item == "fixed"
-                  ? -1
-                  : cli::parse_int(value.name, item, 0, static_cast<int>(layout::limits::kMaxLightsPerRoom));
+        const std::string n = split_suffix(item, {"naive"}, s);
+        s.n = n == "fixed" ? -1 : cli::parse_int(value.name, n, 0, static_cast<int>(layout::limits::kMaxLightsPerRoom));
+        if (s.n < 0 && !s.suffix.empty()) throw InputError(value.name + ": 'fixed/naive' has no lights to test");
     } else if (kind == "light-depth") {
         s.n = cli::parse_light_depth(value);
     } else if (kind == "shadow-size") {
@@ -58,6 +58,10 @@ SweepItem parse_item(const std::string& kind, const std::string& item) {
     } else if (kind == "mask") {
         if (item != "on" && item != "off") throw InputError(value.name + ": '" + item + "' is not on or off");
         s.on = item == "on";
+    } else if (kind == "volumes") {
+        if (item != "split" && item != "one-variant" && item != "none")
+            throw InputError(value.name + ": '" + item + "' is not split, one-variant or none");
+        s.suffix = item;
     } else if (kind == "depth") {
         s.n = cli::parse_max_depth(value);
     } else {
@@ -77,7 +81,8 @@ std::vector<SweepItem> parse_sweep(const std::string& sweep) {
     if (colon == std::string::npos || !known || colon + 1 == sweep.size())
         throw InputError("--sweep: '" + sweep +
                          "' is not techniques, portals:N,..., boxes:N,..., depth:N,..., size:WxH,..., samples:N,..., "
-                         "lights:fixed|N,..., light-depth:N,..., shadow-size:N,... or mask:on|off,...");
+                         "lights:fixed|N|N/naive,..., light-depth:N,..., shadow-size:N,..., mask:on|off,... or "
+                         "volumes:split|one-variant|none,...");
     std::vector<SweepItem> items;
     for (const std::string& item : split(sweep.substr(colon + 1), ',')) items.push_back(parse_item(kind, item));
     return items;

@@ -14,8 +14,9 @@ struct SweepItem {
     std::string name;           // "samples=4", the configuration's name
     int n = 0;                  // the count, depth, samples or size; lights: -1 for "fixed"
     int width = 0, height = 0;  // size
-    std::string suffix;         // "all", "separate", "all-faces" (boxes), "all-steps" (portals)
-    bool on = false;            // mask
+    std::string
+        suffix;  // "all", "separate", "all-faces" (boxes), "all-steps" (portals), "naive" (lights); volumes: the item
+    bool on = false;  // mask
 };
 
 // "" and "techniques" give none; throws InputError for an unknown kind or a

@@ -126,6 +126,18 @@ struct Diagnostics {
     // frame (render/objects/box_faces.hpp); the image is the same. Off only to
     // compare (bench's N/all-faces, tests).
     bool cull_box_faces = true;
+    // With culling, in a cell with volume portals: the cell drawn by the
+    // plain variants outside the volumes' screen bounds and by the discarding
+    // VOLUMES variant only inside them (render/objects/object_draw.hpp,
+    // draw_level_colour); the image is the same. Off (the VOLUMES variant
+    // over the whole level) only to compare (tests, bench's volumes=one-variant).
+    bool split_volume_draws = true;
+    // Under "lighting": "lights": every light image of a room added at every
+    // point of it, without the portal tests (apertures and blockers) that
+    // decide whether its light reaches the point: wrong wherever a path is
+    // closed. Only a baseline for what the exact test costs (bench's
+    // lights:N/naive), never a mode users pick.
+    bool naive_lights = false;
     // Textures read at mip level 0 with the magnification filter, as the
     // tracer reads them, instead of through their mipmaps: for comparing the
     // two (tests, bench's error), never for viewing (minified textures alias).
@@ -162,6 +174,10 @@ struct FrameStats {
     int max_level_reached = 0;
     int light_images = 0;       // lit layouts: light images of the cells drawn, summed over the cells' draws
     int shadow_maps_drawn = 0;  // cube shadow maps (re)drawn this frame
+    // Pixels (both eyes, each level's) of the rectangles in which a cell with
+    // volume portals is drawn by the discarding VOLUMES variant (its own
+    // batches and instances; FrameDesc::split_volume_draws).
+    long volume_variant_pixels = 0;
     // Only with FrameDesc::profile:
     long colour_fragments = 0;  // samples that passed every test in the colour passes (Scene,
                                 // PortalFill): fragments written to the colour buffer

@@ -57,6 +57,7 @@ Result<void> prepare_frame(RendererParts& parts, const FrameDesc& frame) {
                              .volumes = r.has_volumes,
                              .lit = r.lighting.lit,
                              .lights_ubo = parts.lights.buffers.ubo,
+                             .lights_naive = r.lighting.lit && frame.naive_lights,
                              .materials = r.has_materials};
     if (Result<void> made = ensure_variants(programs, frame.stereo, needs); !made) return made;
     set_exposure(programs, frame.stereo, frame.exposure.value_or(r.exposure));

@@ -21,6 +21,8 @@ ObjectMesh object_mesh(Scene& scene, MeshWriter& out, const glm::dvec3& origin, 
     bound_object(scene, first_vertex, origin, bounds);
     mesh.lo = bounds.lo;
     mesh.hi = bounds.hi;
+    mesh.first_vertex = first_vertex;
+    mesh.vertex_end = static_cast<std::uint32_t>(scene.vertices.size());
     return mesh;
 }
 

@@ -134,6 +134,8 @@ struct ObjectMesh {
     glm::dvec3 lo{0.0};  // bounds in its own coordinates, padded as CellObject's
     glm::dvec3 hi{0.0};
     glm::dvec3 origin{0.0};  // vertex position = own coordinates - origin
+    // Its vertices: [first_vertex, vertex_end) of Scene::vertices.
+    std::uint32_t first_vertex = 0, vertex_end = 0;
 };
 
 struct Scene {

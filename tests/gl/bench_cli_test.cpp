@@ -82,7 +82,7 @@ TEST_F(BenchCli, TechniqueSweepMeasuresEveryConfigurationWithItsError) {
     const nlohmann::json j = json("t.json");
     std::map<std::string, nlohmann::json> by_name;
     for (const nlohmann::json& c : j["configs"]) by_name[c["name"]] = c;
-    ASSERT_EQ(by_name.size(), 22u);
+    ASSERT_EQ(by_name.size(), 23u);
     // The seeds' techniques, each with its error: hybrid at full scale is
     // exact; z-clear draws one level (compare it with depth=1).
     for (const char* name : {"hybrid=1", "hybrid=2", "hybrid=4", "z-clear"}) {
@@ -102,6 +102,10 @@ TEST_F(BenchCli, TechniqueSweepMeasuresEveryConfigurationWithItsError) {
     EXPECT_EQ(by_name["multi-draw=off"]["id_mismatch_percent"], by_name["base"]["id_mismatch_percent"]);
     EXPECT_EQ(by_name["multi-draw=off"]["psnr_db"], by_name["base"]["psnr_db"]);
     EXPECT_GE(by_name["multi-draw=off"]["draw_calls"].get<double>(), by_name["base"]["draw_calls"].get<double>());
+    // A volume's room by the discarding variant over the whole level: the
+    // same image (this layout has no volume: the same frame).
+    EXPECT_EQ(by_name["volumes=one-variant"]["id_mismatch_percent"], by_name["base"]["id_mismatch_percent"]);
+    EXPECT_EQ(by_name["volumes=one-variant"]["group"], "volumes");
     const nlohmann::json& base = by_name["base"];
     // Two passes issue every draw once per eye.
     EXPECT_EQ(by_name["stereo=two-pass"]["draw_calls"].get<double>(), 2 * base["draw_calls"].get<double>());

@@ -176,6 +176,34 @@ TEST(LightingRender, MatchesTheLightImagesInEveryViewAndDepth) {
     }
 }
 
+TEST(LightingRender, NaiveLightsDropOnlyThePortalTests) {
+    // Issue 39's baseline (FrameDesc::naive_lights, bench's lights:N/naive):
+    // every image adds its term without the aperture and blocker tests. At
+    // light depth 0 no image has a rectangle to test: the same frame, byte for
+    // byte. Through the door at depth 2 the hall's lamp lights the whole
+    // annex instead of the pool the door frame cuts: brighter (never darker)
+    // where the exact test closes a path, the same ids.
+    for (const int depth : {0, 2}) {
+        LightingRig rig(lit_lamp_hall(depth));
+        ASSERT_TRUE(rig.renderer);
+        render::FrameDesc f = lit_frame(rig.layout, "annex", {0.0, 1.6, 1.5}, 0.0, -25.0);
+        const image::Image exact = rig.render(f);
+        f.naive_lights = true;
+        const image::Image naive = rig.render(f);
+        EXPECT_EQ(testing::count_id_differences(exact, naive), 0);
+        int brighter = 0, darker = 0;
+        for (size_t i = 0; i < exact.rgb.size(); ++i) {
+            brighter += naive.rgb[i] > exact.rgb[i];
+            darker += naive.rgb[i] < exact.rgb[i];
+        }
+        EXPECT_EQ(darker, 0) << "depth " << depth;
+        if (depth == 0)
+            EXPECT_EQ(brighter, 0);
+        else
+            EXPECT_GT(brighter, 1000);
+    }
+}
+
 // An example layout lit: every room a lamp under its ceiling's centre.
 layout::Layout lit_example(const char* name, int depth) {
     layout::Layout l = testing::example_layout(name);
@@ -295,6 +323,9 @@ TEST(LightingRender, LightDepthOfTheViewReplacesTheLayouts) {
     f.max_depth = 0;  // the annex alone (its images, not the hall's seen through its door)
     render::FrameStats at0, at1;
     const image::Image dark = rig.render(f, &at0);
+    // No image reaches the annex at depth 0: its ambient alone, by the
+    // LIGHTS_AMBIENT variant (issue 39: no loop over images at all).
+    expect_lit_agree(dark, lit_cpu_frame(rig.layout, f), "the annex by its ambient alone");
     f.light_depth = 1;
     const image::Image lit = rig.render(f, &at1);
     expect_lit_agree(lit, lit_cpu_frame(rig.layout, f), "--light-depth 1 over the layout's 0");

@@ -63,6 +63,59 @@ const VolumeView kVolumeViews[] = {
     {"in the mirror", "lab", {-1.5, 1.6, 1.5}, -75.0, -10.0},
 };
 
+TEST(VolumeRender, TheDiscardingVariantDrawsOnlyWhereTheVolumeMayBeSeen) {
+    // Issue 39: outside the volume's screen bounds the lab is drawn by the
+    // plain variant (early depth test), the discarding one only inside: the
+    // pixels it covers are a part of the image, the whole image without the
+    // split, and the two frames are the same picture (the parts are scissor
+    // rectangles of the same draws), the tracer's.
+    CrossingRig rig(kVolumeLayout);
+    ASSERT_TRUE(rig.renderer);
+    for (const VolumeView& v : kVolumeViews) {
+        render::FrameDesc f = frame_at(rig.layout, v.room, v.position, v.yaw, v.pitch);
+        render::FrameStats split, whole;
+        const image::Image a = rig.render(f, &split);
+        f.split_volume_draws = false;
+        const image::Image b = rig.render(f, &whole);
+        EXPECT_EQ(testing::count_colour_differences(a, b), 0) << v.what;
+        EXPECT_EQ(testing::count_id_differences(a, b), 0) << v.what;
+        EXPECT_LE(split.volume_variant_pixels, whole.volume_variant_pixels) << v.what;
+        const image::Image traced = rig.trace(f);
+        expect_agree(a, traced, std::string(v.what) + ", split");
+        expect_agree(b, traced, std::string(v.what) + ", one variant");
+    }
+    // Head-on: the scanner covers a part of the image; without the split
+    // the lab's draws cover all of it with the discarding variant.
+    render::FrameDesc f = frame_at(rig.layout, "lab", {0.0, 1.6, 2.0}, 0.0, -10.0);
+    render::FrameStats split, whole;
+    rig.render(f, &split);
+    f.split_volume_draws = false;
+    rig.render(f, &whole);
+    const long image = 2L * f.eye_width * f.eye_height;
+    EXPECT_GE(whole.volume_variant_pixels, image);
+    EXPECT_GT(split.volume_variant_pixels, 0);
+    EXPECT_LT(split.volume_variant_pixels, image / 2) << split.volume_variant_pixels << " of " << image;
+    // The same picture in the other stereo modes and multisampled.
+    for (const render::StereoMode stereo : {render::StereoMode::TwoPass, render::StereoMode::ViewportIndex})
+        for (const int samples : {1, 4}) {
+            f.stereo = stereo;
+            f.samples = samples;
+            f.split_volume_draws = true;
+            const image::Image a = rig.render(f);
+            f.split_volume_draws = false;
+            const image::Image b = rig.render(f);
+            EXPECT_EQ(testing::count_colour_differences(a, b), 0) << stereo_name(stereo) << " x" << samples;
+            EXPECT_EQ(testing::count_id_differences(a, b), 0) << stereo_name(stereo) << " x" << samples;
+        }
+    f.stereo = render::StereoMode::ClipShift;
+    f.samples = 1;
+    // Turned away from the scanner: none at all.
+    f = frame_at(rig.layout, "lab", {0.0, 1.6, 0.0}, 180.0, -10.0);
+    f.split_volume_draws = true;
+    rig.render(f, &split);
+    EXPECT_EQ(split.volume_variant_pixels, 0);
+}
+
 TEST(VolumeRender, MatchesTheTracerInEveryView) {
     CrossingRig rig(kVolumeLayout);
     ASSERT_TRUE(rig.renderer);

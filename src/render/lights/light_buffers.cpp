@@ -110,7 +110,7 @@ void bind_light_buffers(const LightBuffers* buffers) {
 
 void set_light_uniforms(const LightBuffers& buffers, const SceneProgram& program, int room,
                         const glm::mat4& to_light_space) {
-    if (program.light_count < 0) return;
+    if (program.light_ambient < 0) return;  // not a LIGHTS variant
     const auto c = static_cast<size_t>(room);
     const GLuint p = program.program.get();
     const glm::vec3 origin(buffers.origins[c]);

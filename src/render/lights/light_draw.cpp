@@ -3,8 +3,10 @@
 
 namespace impossible::render {
 
-unsigned light_flags(const DrawContext& ctx) {
-    return ctx.scene.lighting.lit ? kLights | (ctx.lights.ubo ? kLightsUbo : 0u) : 0u;
+unsigned light_flags(const DrawContext& ctx, int room) {
+    if (!ctx.scene.lighting.lit) return 0u;
+    if (ctx.lights.count[static_cast<size_t>(room)] == 0) return kLights | kLightsAmbient;
+    return kLights | (ctx.lights.ubo ? kLightsUbo : 0u) | (ctx.frame.naive_lights ? kLightsNaive : 0u);
 }
 
 void set_room_lights(const DrawContext& ctx, const SceneProgram& program, int room, bool count) {

@@ -6,9 +6,11 @@
 
 namespace impossible::render {
 
-// kLights under "lighting": "lights", else 0: what the colour passes add to
-// their program's flags.
-unsigned light_flags(const DrawContext& ctx);
+// kLights under "lighting": "lights", else 0: what the colour passes of
+// surfaces of `room` add to their program's flags; with kLightsAmbient where
+// no light image reaches the room (its ambient alone: no loop over images,
+// whose code llvmpipe runs, masked, even for none; bench/README.md, "Lights").
+unsigned light_flags(const DrawContext& ctx, int room);
 
 // A colour pass's light uniforms for surfaces of `room` (the identity into
 // the room's coordinates: the room's own vertices), counting the room's

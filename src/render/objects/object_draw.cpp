@@ -5,66 +5,53 @@
 // The frame's objects are placed once (frame_objects.hpp): instances, each
 // a mesh, a cell, a rigid matrix from the mesh's own coordinates and up to
 // two door planes that cut it. Every level that draws a cell draws the
-// cell's instances after its own batches, each batch one instanced draw for
-// both eyes like any other, with the matrix folded into the eyes'
-// view-projections and the cuts as two more clip distances (the OBJECT_CUTS
-// variant). A cell with volumes is drawn, all of it, by the VOLUMES variant,
-// which drops its fragments inside the volumes; each volume's target room is
-// then drawn in the same level, shown only inside the volume and tinted.
+// cell's instances after its own batches (instance_draw.cpp): all their
+// plain batches in one multi-draw for both eyes, each instance's matrix and
+// cuts read from its per-instance record (instance_stream.hpp), the cuts as
+// two more clip distances (the OBJECT_CUTS variant). A cell with volumes is
+// drawn by the VOLUMES variant, which drops its fragments inside the
+// volumes, only within the volumes' screen bounds, and by the plain variants
+// around them (draw_level_colour); each volume's target room is then drawn
+// in the same level, shown only inside the volume and tinted.
 #include "render/objects/object_draw.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render/lights/light_draw.hpp"
 #include "render/objects/object_culling.hpp"
+#include "render/portals/portal_draw.hpp"
 
 namespace impossible::render {
 namespace {
 
-// A cut as a clip distance in the mesh's coordinates (the plane in the
-// cell's through `model`, in double): a strict cut (an image keeps d > 0) is
-// moved by kStrictCutShift towards its kept side, so that a face lying in the
-// plane (a prop standing against the door) is cut away in the image as the
-// tracer cuts it, instead of being kept by the clipper at d = 0. The shift
-// covers float32's rounding of the distance the shader computes, from the
-// mesh's coordinates (measured from its origin), so it scales with the mesh
-// origin's distance from the plane and the mesh's extent, never with the
-// cell's distance from the layout's origin: 1 µm times 1254 m opened a 1.25 mm
-// gap between a hand's own part and its image at a door 1.25 km out.
-inline constexpr double kStrictCutShift = 1e-6;  // metres, times 1 + |d of the mesh origin| + extent
-math::dvec4 mesh_cut_plane(const walk::ObjectCut& cut, const math::dmat4& model, double extent) {
-    math::dvec4 plane = glm::transpose(model) * cut.plane;
-    if (cut.strict) {
-        const double unit = glm::length(math::dvec3(plane));  // metres of d per mesh unit (a model's scale)
-        plane.w -= kStrictCutShift * (1.0 + std::abs(plane.w) + extent * unit);
+// Room `t`'s own batches in a level of another cell (a volume's target, in
+// the same coordinates), shown inside volume `inside` only.
+void draw_volume_room(const DrawContext& ctx, const LevelView& view, const Scissor& scissor, int t, int inside) {
+    const SceneData& r = ctx.scene;
+    const scene::CellOrigin& origin = r.cell_origins[static_cast<size_t>(t)];
+    const math::dmat4 model = glm::translate(math::dmat4(1.0), origin.origin);
+    // Lit by its own room's ambient and lights (layout-format.md, "Lights").
+    if (r.lighting.lit) ctx.scratch.stats.light_images += ctx.lights.count[static_cast<size_t>(t)];
+    for (const scene::DrawBatch& b : r.cells[static_cast<size_t>(t)]) {
+        const SceneProgram& program =
+            cell_program(ctx, view, light_flags(ctx, t) | (has_material(b) ? kMaterials : 0u));
+        set_model_uniforms(ctx, view, program, {view.eyes[0].rect, view.eyes[1].rect}, model, origin.checker_offset);
+        set_cell_id(program, static_cast<unsigned>(t + 1), false);
+        set_room_lights(ctx, program, t, false);
+        set_volume_uniforms(ctx, view, program, model, inside);
+        if (has_material(b)) set_material(ctx, program, b);
+        draw_range(ctx, view, {Pass::Scene, view.level, &program, scissor}, b.range);
     }
-    return plane;
 }
 
-// The largest coordinate of a mesh's vertices, measured from its origin.
-double mesh_extent(const scene::ObjectMesh& mesh) {
-    const math::dvec3 far = glm::max(glm::abs(mesh.lo - mesh.origin), glm::abs(mesh.hi - mesh.origin));
-    return std::max({far.x, far.y, far.z});
-}
-
-// The per-instance uniforms of a variant with kObjectCuts.
-void set_instance_uniforms(const SceneProgram& program, const walk::ObjectInstance& inst, const math::dmat4& model,
-                           double extent) {
-    float planes[2][4];
-    for (int k = 0; k < 2; ++k) {
-        const math::dvec4 plane = k < inst.cut_count ? mesh_cut_plane(inst.cuts[static_cast<size_t>(k)], model, extent)
-                                                     : math::dvec4(0.0, 0.0, 0.0, 1.0);
-        for (int c = 0; c < 4; ++c) planes[k][c] = static_cast<float>(plane[c]);
-    }
-    const glm::mat3 rotation(math::dmat3(inst.to_cell));
-    const GLuint p = program.program.get();
-    glProgramUniform4fv(p, program.cut_plane, 2, &planes[0][0]);
-    glProgramUniformMatrix3fv(p, program.object_rotation, 1, GL_FALSE, &rotation[0][0]);
-}
+}  // namespace
 
 // A batch's material uniforms and texture (portal_draw.cpp's draw_cell does
 // the same for a cell's batches).
@@ -78,57 +65,9 @@ void set_material(const DrawContext& ctx, const SceneProgram& m, const scene::Dr
 
 bool has_material(const scene::DrawBatch& b) { return b.texture >= 0 || b.alpha_cutoff >= 0.0f; }
 
-void draw_instance(const DrawContext& ctx, const LevelView& view, const Scissor& scissor, int i, int id_cell,
-                   int inside) {
+const SceneProgram& cell_program(const DrawContext& ctx, const LevelView& view, unsigned flags) {
     const SceneData& r = ctx.scene;
-    const walk::ObjectInstance& inst = ctx.scratch.objects.instances[static_cast<size_t>(i)];
-    const scene::ObjectMesh& mesh =
-        r.object_meshes[static_cast<size_t>(ctx.scratch.objects.mesh[static_cast<size_t>(i)])];
-    const math::dmat4 model = inst.to_cell * glm::translate(math::dmat4(1.0), mesh.origin);
-    const double extent = mesh_extent(mesh);
-    for (const scene::DrawBatch& b : mesh.batches) {
-        const SceneProgram& program =
-            cell_program(ctx, view.cell, kObjectCuts | light_flags(ctx) | (has_material(b) ? kMaterials : 0u));
-        set_model_uniforms(ctx, view, program, {view.eyes[0].rect, view.eyes[1].rect}, model, glm::vec3(0.0f));
-        set_instance_uniforms(program, inst, model, extent);
-        set_cell_id(program, static_cast<unsigned>(id_cell + 1), false);
-        // Lit in the room it is placed in, from the mesh's coordinates.
-        if (r.lighting.lit) {
-            const math::dvec3 origin = r.cell_origins[static_cast<size_t>(id_cell)].origin;
-            const glm::mat4 to_light(glm::translate(math::dmat4(1.0), -origin) * model);
-            set_light_uniforms(ctx.lights, program, id_cell, to_light);
-        }
-        set_volume_uniforms(ctx, view, program, model, inside);
-        if (has_material(b)) set_material(ctx, program, b);
-        draw_range(ctx, view, {Pass::Scene, view.level, &program, scissor, kObjectClipDistances}, b.range);
-    }
-}
-
-// Room `t`'s own batches in a level of another cell (a volume's target, in
-// the same coordinates), shown inside volume `inside` only.
-void draw_volume_room(const DrawContext& ctx, const LevelView& view, const Scissor& scissor, int t, int inside) {
-    const SceneData& r = ctx.scene;
-    const scene::CellOrigin& origin = r.cell_origins[static_cast<size_t>(t)];
-    const math::dmat4 model = glm::translate(math::dmat4(1.0), origin.origin);
-    // Lit by its own room's ambient and lights (layout-format.md, "Lights").
-    if (r.lighting.lit) ctx.scratch.stats.light_images += ctx.lights.count[static_cast<size_t>(t)];
-    for (const scene::DrawBatch& b : r.cells[static_cast<size_t>(t)]) {
-        const SceneProgram& program =
-            cell_program(ctx, view.cell, light_flags(ctx) | (has_material(b) ? kMaterials : 0u));
-        set_model_uniforms(ctx, view, program, {view.eyes[0].rect, view.eyes[1].rect}, model, origin.checker_offset);
-        set_cell_id(program, static_cast<unsigned>(t + 1), false);
-        set_room_lights(ctx, program, t, false);
-        set_volume_uniforms(ctx, view, program, model, inside);
-        if (has_material(b)) set_material(ctx, program, b);
-        draw_range(ctx, view, {Pass::Scene, view.level, &program, scissor}, b.range);
-    }
-}
-
-}  // namespace
-
-const SceneProgram& cell_program(const DrawContext& ctx, int cell, unsigned flags) {
-    const SceneData& r = ctx.scene;
-    if (!r.volumes[static_cast<size_t>(cell)].empty()) flags |= kVolumes;
+    if (!view.outside_volumes && !r.volumes[static_cast<size_t>(view.cell)].empty()) flags |= kVolumes;
     if (flags == 0u) return ctx.scene_program;
     if (flags == kMaterials) {
         assert(ctx.material_program != nullptr);
@@ -137,24 +76,6 @@ const SceneProgram& cell_program(const DrawContext& ctx, int cell, unsigned flag
     const std::optional<SceneProgram>& variant = ctx.programs.variants[static_cast<int>(ctx.frame.stereo)][flags];
     assert(variant);  // prepare_frame built it
     return *variant;
-}
-
-void draw_cell_instances(const DrawContext& ctx, const LevelView& view, const Scissor& scissor, int cell, int inside) {
-    FrameScratch& s = ctx.scratch;
-    if (s.objects.cells.empty()) return;
-    const scene::CellObjects& objects = s.objects.cells[static_cast<size_t>(cell)];
-    if (objects.objects.empty()) return;
-    std::vector<int>& visible = s.visible_instances;
-    if (ctx.frame.cull_portals && ctx.frame.cull_objects) {
-        // Two pixels of margin, as the cell's own props.
-        visible_objects(objects, view, ctx.frame.eye_width, ctx.frame.eye_height, 2.0, s.cull, visible);
-    } else {
-        visible.resize(objects.objects.size());
-        for (size_t k = 0; k < visible.size(); ++k) visible[k] = static_cast<int>(k);
-    }
-    for (const int k : visible)
-        draw_instance(ctx, view, scissor, static_cast<int>(objects.objects[static_cast<size_t>(k)].first_batch), cell,
-                      inside);
 }
 
 namespace {
@@ -178,7 +99,116 @@ LevelView narrowed_to(const DrawContext& ctx, const LevelView& view, const Volum
     return narrowed;
 }
 
+// Where the volumes of view.cell may be seen, per eye: the union of their
+// rectangles (narrowed_to's), none where no volume is seen.
+std::array<NdcRect, 2> volumes_rects(const DrawContext& ctx, const LevelView& view) {
+    std::array<NdcRect, 2> all{NdcRect::none(), NdcRect::none()};
+    for (const VolumeBox& v : ctx.scene.volumes[static_cast<size_t>(view.cell)]) {
+        const LevelView narrowed = narrowed_to(ctx, view, v);
+        for (size_t e = 0; e < 2; ++e) {
+            const NdcRect& r = narrowed.eyes[e].rect;
+            if (r.empty()) continue;
+            NdcRect& a = all[e];
+            a = a.empty()
+                    ? r
+                    : NdcRect{std::min(a.x0, r.x0), std::min(a.y0, r.y0), std::max(a.x1, r.x1), std::max(a.y1, r.y1)};
+        }
+    }
+    return all;
+}
+
+gl::ScissorRect clipped(const gl::ScissorRect& r, const gl::ScissorRect& to) {
+    const int x0 = std::max(r.x, to.x), y0 = std::max(r.y, to.y);
+    const int x1 = std::min(r.x + r.width, to.x + to.width), y1 = std::min(r.y + r.height, to.y + to.height);
+    return {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
+}
+
+// The pixels of `level` outside the (disjoint) rectangles `holes`, as
+// disjoint rectangles: the rows between consecutive edges of the holes, each
+// less the holes spanning them.
+std::vector<gl::ScissorRect> outside_of(const gl::ScissorRect& level, const std::vector<gl::ScissorRect>& holes) {
+    std::vector<int> ys = {level.y, level.y + level.height};
+    for (const gl::ScissorRect& h : holes) {
+        ys.push_back(h.y);
+        ys.push_back(h.y + h.height);
+    }
+    std::sort(ys.begin(), ys.end());
+    std::vector<gl::ScissorRect> out;
+    for (size_t k = 0; k + 1 < ys.size(); ++k) {
+        const int y0 = ys[k], y1 = ys[k + 1];
+        if (y1 <= y0) continue;
+        std::vector<std::pair<int, int>> cut;  // the holes' columns over this strip
+        for (const gl::ScissorRect& h : holes)
+            if (h.y <= y0 && y1 <= h.y + h.height) cut.emplace_back(h.x, h.x + h.width);
+        std::sort(cut.begin(), cut.end());
+        int x = level.x;
+        for (const auto& [c0, c1] : cut) {
+            if (c0 > x) out.push_back({x, y0, c0 - x, y1 - y0});
+            x = std::max(x, c1);
+        }
+        if (level.x + level.width > x) out.push_back({x, y0, level.x + level.width - x, y1 - y0});
+    }
+    return out;
+}
+
+// The cell's batches and instances of a level within `scissor`, by the plain
+// variants when `outside` (no volume is seen there), else by the VOLUMES one.
+void draw_part(const DrawContext& ctx, const LevelView& view, const Scissor& scissor, bool outside, bool count_lights) {
+    LevelView part = view;
+    part.outside_volumes = outside;
+    const SceneProgram& shaded = cell_program(ctx, part, light_flags(ctx, part.cell));
+    if (shaded.volume_count >= 0)
+        ctx.scratch.stats.volume_variant_pixels += scissor ? static_cast<long>(scissor->width) * scissor->height
+                                                           : 2L * ctx.frame.eye_width * ctx.frame.eye_height;
+    set_eye_uniforms(ctx, part, shaded, {part.eyes[0].rect, part.eyes[1].rect});
+    set_cell_id(shaded, static_cast<unsigned>(part.cell + 1), false);
+    set_room_lights(ctx, shaded, part.cell, count_lights);
+    // The instances first, as a cell's still props come before the faces
+    // they stand on: what they hide fails the early depth test.
+    draw_cell_instances(ctx, part, scissor, part.cell, -1);
+    draw_cell(ctx, part, {Pass::Scene, part.level, &shaded, scissor});
+}
+
 }  // namespace
+
+void draw_level_colour(const DrawContext& ctx, const LevelView& view, const Scissor& scissor) {
+    const bool volumes = !ctx.scene.volumes[static_cast<size_t>(view.cell)].empty();
+    if (!volumes || !ctx.frame.cull_portals || !ctx.frame.split_volume_draws) {
+        draw_part(ctx, view, scissor, false, true);
+        return;
+    }
+    // Outside the volumes' rectangles no fragment can lie in a volume: the
+    // plain variants there, which test depth before shading; the discarding
+    // one only inside. The parts are scissor rectangles of whole pixels,
+    // disjoint, and every draw keeps the level's own clip rectangles, so
+    // each pixel is drawn by one draw of the same triangles as before.
+    const std::array<NdcRect, 2> inside = volumes_rects(ctx, view);
+    const gl::ScissorRect level =
+        scissor.value_or(gl::ScissorRect{0, 0, 2 * ctx.frame.eye_width, ctx.frame.eye_height});
+    std::vector<gl::ScissorRect> holes;
+    for (size_t e = 0; e < 2; ++e) {
+        if (inside[e].empty() || !view.eyes[e].active) continue;
+        std::array<NdcRect, 2> one{NdcRect::none(), NdcRect::none()};
+        one[e] = inside[e];
+        const gl::ScissorRect hole = clipped(scissor_of(ctx, one, view), level);
+        if (hole.width > 0 && hole.height > 0) holes.push_back(hole);
+    }
+    if (holes.size() == 2 && clipped(holes[0], holes[1]).width > 0) {  // never in practice: one hole
+        const gl::ScissorRect& a = holes[0];
+        const gl::ScissorRect& b = holes[1];
+        const int x0 = std::min(a.x, b.x), y0 = std::min(a.y, b.y);
+        holes = {{x0, y0, std::max(a.x + a.width, b.x + b.width) - x0, std::max(a.y + a.height, b.y + b.height) - y0}};
+    }
+    bool first = true;
+    for (const gl::ScissorRect& r : outside_of(level, holes)) {
+        draw_part(ctx, view, r, true, first);
+        first = false;
+    }
+    for (const gl::ScissorRect& h : holes) {
+        draw_part(ctx, view, h, false, first);
+        first = false;
+    }
+}
 
 void draw_volume_rooms(const DrawContext& ctx, const LevelView& view, const Scissor& scissor) {
     const std::vector<VolumeBox>& volumes = ctx.scene.volumes[static_cast<size_t>(view.cell)];

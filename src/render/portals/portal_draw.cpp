@@ -61,7 +61,7 @@ void mark_portal(const DrawContext& ctx, const LevelView& view, int p, const std
         return;
     }
     draw_portal_box(ctx, view,
-                    {Pass::PortalMark, view.level, &cell_program(ctx, view.cell), portal_scissor(ctx, view, rects)}, p,
+                    {Pass::PortalMark, view.level, &cell_program(ctx, view), portal_scissor(ctx, view, rects)}, p,
                     rects);
     clear_depth_in_portal(ctx, view, view.level + 1, rects);
 }
@@ -73,8 +73,8 @@ void unmark_portal(const DrawContext& ctx, const LevelView& view, int p, const s
         return;
     }
     draw_portal_box(ctx, view,
-                    {Pass::PortalUnmark, view.level, &cell_program(ctx, view.cell), portal_scissor(ctx, view, rects)},
-                    p, rects);
+                    {Pass::PortalUnmark, view.level, &cell_program(ctx, view), portal_scissor(ctx, view, rects)}, p,
+                    rects);
 }
 
 namespace {
@@ -118,7 +118,7 @@ void draw_cell(const DrawContext& ctx, const LevelView& view, const SceneDraw& d
     // first needed.
     SceneDraw with_materials = draw;
     const SceneProgram* material_program =
-        ctx.material_program ? &cell_program(ctx, view.cell, kMaterials | light_flags(ctx)) : nullptr;
+        ctx.material_program ? &cell_program(ctx, view, kMaterials | light_flags(ctx, view.cell)) : nullptr;
     with_materials.program = material_program;
     bool material_ready = false;
     for (const VisibleDraw& d : s.cull_draws) {
@@ -193,7 +193,7 @@ void draw_portal_box(const DrawContext& ctx, const LevelView& view, const SceneD
 
 void draw_fill(const DrawContext& ctx, const LevelView& view, int p, const std::array<NdcRect, 2>& rects,
                int stencil_ref) {
-    const SceneProgram& program = cell_program(ctx, view.cell);
+    const SceneProgram& program = cell_program(ctx, view);
     set_cell_id(program, shading::kFillId, true);
     const ColourQueryScope colour(ctx.profiler);
     draw_portal_box(ctx, view, {Pass::PortalFill, stencil_ref, &program, portal_scissor(ctx, view, rects)}, p, rects);

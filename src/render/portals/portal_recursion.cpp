@@ -61,7 +61,7 @@ std::vector<GLuint> test_portal_visibility(const DrawContext& ctx, const LevelVi
                                            const std::vector<std::array<NdcRect, 2>>& visible) {
     FrameScratch& s = ctx.scratch;
     std::vector<GLuint> queries(portals.size(), 0);
-    const SceneDraw draw{Pass::PortalTest, view.level, &cell_program(ctx, view.cell), level_scissor(ctx, view)};
+    const SceneDraw draw{Pass::PortalTest, view.level, &cell_program(ctx, view), level_scissor(ctx, view)};
     for (size_t k = 0; k < portals.size(); ++k) {
         if (visible[k][0].empty() && visible[k][1].empty()) continue;
         if (s.mark_queries_used == s.mark_queries.size())
@@ -132,18 +132,13 @@ void draw_level_surfaces(const DrawContext& ctx, const LevelView& view, const st
                          const std::vector<std::array<NdcRect, 2>>& visible) {
     const int level = view.level;
     const Scissor scissor = level_scissor(ctx, view);
-    const SceneProgram& program = cell_program(ctx, view.cell);
+    const SceneProgram& program = cell_program(ctx, view);
     const SceneDraw depth{Pass::PortalDepth, level, &program, scissor};
     for (size_t k = 0; k < portals.size(); ++k)
         if (!visible[k][0].empty() || !visible[k][1].empty()) draw_portal_box(ctx, view, depth, portals[k], visible[k]);
     // The colour pass: under "lighting": "lights" the LIGHTS variant.
-    const SceneProgram& shaded = cell_program(ctx, view.cell, light_flags(ctx));
-    set_eye_uniforms(ctx, view, shaded, {view.eyes[0].rect, view.eyes[1].rect});
-    set_cell_id(shaded, static_cast<unsigned>(view.cell + 1), false);
-    set_room_lights(ctx, shaded, view.cell, true);
     const ColourQueryScope colour(ctx.profiler);
-    draw_cell(ctx, view, {Pass::Scene, level, &shaded, scissor});
-    draw_cell_instances(ctx, view, scissor, view.cell, -1);
+    draw_level_colour(ctx, view, scissor);
     draw_volume_rooms(ctx, view, scissor);
 }
 

@@ -54,6 +54,9 @@ struct LevelView {
     // The level's surfaces set the stencil's box bit where they hide a
     // portal's box (passes.hpp): only while it has visible portals.
     bool box_bits = false;
+    // Its eyes' rectangles hold no volume of its cell (object_draw.hpp,
+    // draw_level_colour): drawn by the variants without VOLUMES.
+    bool outside_volumes = false;
     std::array<EyeView, 2> eyes;
 };
 

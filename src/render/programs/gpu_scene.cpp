@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <vector>
+
+#include "render/objects/instance_stream.hpp"
 
 namespace impossible::render {
 
@@ -50,6 +53,22 @@ void describe_vertices(GLuint vao, GLuint vertices, GLuint indices) {
     attribute(5, 1, offsetof(scene::Vertex, alpha));
 }
 
+// The slot attribute (kSlotAttribute) from `slots`, one float a vertex.
+void describe_slots(GLuint vao, GLuint slots) {
+    glVertexArrayVertexBuffer(vao, kSlotBinding, slots, 0, sizeof(float));
+    glEnableVertexArrayAttrib(vao, kSlotAttribute);
+    glVertexArrayAttribFormat(vao, kSlotAttribute, 1, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(vao, kSlotAttribute, kSlotBinding);
+}
+
+void upload_slots(GLuint slots, const scene::Scene& scene) {
+    std::vector<float> slot(scene.vertices.size() + 1, -1.0f);
+    for (std::size_t m = 0; m < scene.object_meshes.size(); ++m)
+        for (std::uint32_t v = scene.object_meshes[m].first_vertex; v < scene.object_meshes[m].vertex_end; ++v)
+            slot[v] = static_cast<float>(m);
+    glNamedBufferStorage(slots, static_cast<GLsizeiptr>(slot.size() * sizeof(float)), slot.data(), 0);
+}
+
 }  // namespace
 
 GpuScene upload_scene(const scene::Scene& scene) {
@@ -59,11 +78,15 @@ GpuScene upload_scene(const scene::Scene& scene) {
     gpu.vao = gl::create_vertex_array();
     gpu.face_indices = gl::create_buffer();
     gpu.face_vao = gl::create_vertex_array();
+    gpu.instance_vao = gl::create_vertex_array();
     // The vertex arrays first: WebGL types a buffer by its first binding, and
     // an index buffer must be bound as one before its data comes
     // (gl/webgl.hpp).
     describe_vertices(gpu.vao.get(), gpu.vertices.get(), gpu.indices.get());
     describe_vertices(gpu.face_vao.get(), gpu.vertices.get(), gpu.face_indices.get());
+    describe_vertices(gpu.instance_vao.get(), gpu.vertices.get(), gpu.indices.get());
+    gpu.object_slots = gl::create_buffer();
+    describe_slots(gpu.instance_vao.get(), gpu.object_slots.get());
     // Zero-size buffers are valid GL but glNamedBufferStorage rejects size 0.
     glNamedBufferStorage(gpu.vertices.get(), static_cast<GLsizeiptr>(scene.vertices.size() * sizeof(scene::Vertex) + 1),
                          nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -74,6 +97,7 @@ GpuScene upload_scene(const scene::Scene& scene) {
     glNamedBufferSubData(gpu.indices.get(), 0, static_cast<GLsizeiptr>(scene.indices.size() * sizeof(std::uint32_t)),
                          scene.indices.data());
 
+    upload_slots(gpu.object_slots.get(), scene);
     gpu.textures.reserve(scene.textures.size());
     for (const scene::SceneTexture& t : scene.textures) gpu.textures.push_back(upload_texture(t));
     return gpu;

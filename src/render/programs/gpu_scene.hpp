@@ -21,6 +21,12 @@ struct GpuScene {
     // (render/objects/box_faces.hpp): a buffer of no size until a frame writes it.
     gl::Buffer face_indices;
     gl::VertexArray face_vao;
+    // The same vertices and indices with each vertex's object mesh (its
+    // "slot", a float: the index into Scene::object_meshes, -1 for a cell's
+    // vertex) at binding 1, for the dynamic objects' draws
+    // (render/objects/instance_stream.hpp).
+    gl::Buffer object_slots;
+    gl::VertexArray instance_vao;
     std::vector<gl::Texture> textures;  // per scene::Scene::textures, with their mipmaps
 };
 

@@ -23,8 +23,10 @@ Result<void> ensure_variants(Programs& programs, StereoMode mode, const VariantN
         if ((flags & kLights) && !needs.lit) continue;
         // The light buffers' kind for the frame's light depth (ensure_lights).
         if ((flags & kLightsUbo) && (!(flags & kLights) || !needs.lights_ubo)) continue;
-        if ((flags & kLights) && !(flags & kLightsUbo) && needs.lights_ubo) continue;
+        if ((flags & kLightsAmbient) && (!(flags & kLights) || (flags & (kLightsUbo | kLightsNaive)))) continue;
+        if ((flags & kLights) && !(flags & (kLightsUbo | kLightsAmbient)) && needs.lights_ubo) continue;
         if ((flags & kMaterials) && !needs.materials) continue;
+        if ((flags & kLightsNaive) && (!(flags & kLights) || !needs.lights_naive)) continue;
         std::optional<SceneProgram>& slot = programs.variants[mode_index(mode)][flags];
         if (slot) continue;
         Result<SceneProgram> built = build_scene_variant(mode, flags);

@@ -44,11 +44,12 @@ Result<void> ensure_scene_program(Programs& programs, StereoMode mode, bool mate
 
 // What the variants a frame may draw with depend on.
 struct VariantNeeds {
-    bool objects = false;     // dynamic objects or hands: kObjectCuts
-    bool volumes = false;     // some room has a volume: kVolumes
-    bool lit = false;         // "lighting": "lights": kLights
-    bool lights_ubo = false;  // the frame's light buffers are uniform blocks: kLightsUbo (else storage)
-    bool materials = false;   // some batch has a texture or a cutoff: kMaterials
+    bool objects = false;       // dynamic objects or hands: kObjectCuts
+    bool volumes = false;       // some room has a volume: kVolumes
+    bool lit = false;           // "lighting": "lights": kLights
+    bool lights_ubo = false;    // the frame's light buffers are uniform blocks: kLightsUbo (else storage)
+    bool lights_naive = false;  // FrameDesc::naive_lights: kLightsNaive
+    bool materials = false;     // some batch has a texture or a cutoff: kMaterials
 };
 
 // The variants with object cuts, volumes or lights (scene_program.hpp) that

@@ -7,6 +7,7 @@
 #include "base/embedded.hpp"
 #include "gl/shader.hpp"
 #include "layout/layout.hpp"
+#include "render/objects/instance_stream.hpp"
 #include "render/programs/gpu_scene.hpp"
 #include "shading/shading.hpp"
 
@@ -35,12 +36,14 @@ namespace {
 // uses, so that the GLSL compiler keeps them.
 struct SceneVariant {
     const char* fragment = "shaders/scene.frag.glsl";
-    bool single_eye = false;   // STEREO_SINGLE_EYE: u_single_eye
-    bool materials = false;    // MATERIALS: textures and cut-outs
-    bool object_cuts = false;  // OBJECT_CUTS
-    bool volumes = false;      // VOLUMES
-    bool lights = false;       // LIGHTS
-    bool light_ubo = false;    // LIGHT_UBO
+    bool single_eye = false;     // STEREO_SINGLE_EYE: u_single_eye
+    bool materials = false;      // MATERIALS: textures and cut-outs
+    bool object_cuts = false;    // OBJECT_CUTS
+    bool volumes = false;        // VOLUMES
+    bool lights = false;         // LIGHTS
+    bool light_ubo = false;      // LIGHT_UBO
+    bool light_naive = false;    // LIGHTS_NAIVE
+    bool light_ambient = false;  // LIGHTS_AMBIENT
 };
 
 std::string variant_defines(const SceneVariant& variant) {
@@ -51,6 +54,8 @@ std::string variant_defines(const SceneVariant& variant) {
     if (variant.volumes) defines += "#define VOLUMES\n#define VOLUME_TOLERANCE 1e-6\n";
     if (variant.lights)
         defines += "#define LIGHTS\n#define LIGHT_MAX_APERTURES " + std::to_string(layout::kMaxLightDepth) + "\n";
+    if (variant.lights && variant.light_naive) defines += "#define LIGHTS_NAIVE\n";
+    if (variant.lights && variant.light_ambient) defines += "#define LIGHTS_AMBIENT\n";
     if (variant.lights && variant.light_ubo)
         defines += "#define LIGHT_UBO\n#define LIGHT_UBO_VEC4S " + std::to_string(kLightUboVec4s) + "\n";
     return defines;
@@ -58,8 +63,8 @@ std::string variant_defines(const SceneVariant& variant) {
 
 void find_variant_uniforms(const SceneVariant& variant, gl::UniformLocations& u, SceneProgram& p) {
     if (variant.object_cuts) {
-        p.cut_plane = u.required("u_cut_plane");
-        p.object_rotation = u.required("u_object_rotation");
+        p.record_base = u.required("u_record_base");
+        glProgramUniform1i(p.program.get(), u.required("u_records"), static_cast<GLint>(kInstanceRecordUnit));
     }
     if (variant.volumes) {
         p.to_volume_space = u.required("u_to_volume_space");
@@ -71,11 +76,14 @@ void find_variant_uniforms(const SceneVariant& variant, gl::UniformLocations& u,
                                                                                    : u.optional("u_volume_tint");
     }
     if (variant.lights) {
-        p.to_light_space = u.required("u_to_light_space");
-        p.light_first = u.required("u_light_first");
-        p.light_count = u.required("u_light_count");
+        // The ambient-only variant reads only the ambient; the naive one
+        // no origin (only the portal tests read it, for their tolerance).
+        auto per_image = [&](const char* name) { return variant.light_ambient ? u.optional(name) : u.required(name); };
+        p.to_light_space = per_image("u_to_light_space");
+        p.light_first = per_image("u_light_first");
+        p.light_count = per_image("u_light_count");
         p.light_ambient = u.required("u_light_ambient");
-        p.light_origin = u.required("u_light_origin");
+        p.light_origin = variant.light_naive ? u.optional("u_light_origin") : per_image("u_light_origin");
     }
 }
 
@@ -142,6 +150,8 @@ Result<SceneProgram> build_scene_variant(StereoMode mode, unsigned flags) {
     variant.volumes = (flags & kVolumes) != 0;
     variant.lights = (flags & kLights) != 0;
     variant.light_ubo = (flags & kLightsUbo) != 0;
+    variant.light_naive = (flags & kLightsNaive) != 0;
+    variant.light_ambient = (flags & kLightsAmbient) != 0;
     return link_scene_program(variant, defines);
 }
 

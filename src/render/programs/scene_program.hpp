@@ -32,9 +32,7 @@ struct SceneProgram {
     GLint alpha_cutoff = -1;    // float: drop fragments whose alpha is below it; < 0: opaque (materials only)
     GLint mip_level0 = -1;      // bool: textures at mip level 0 only (materials only)
     GLint target_size = -1;     // vec2, only in the portal-texture program
-    // kObjectCuts variants only:
-    GLint cut_plane = -1;        // vec4[2]: the door planes that cut an instance, mesh coordinates
-    GLint object_rotation = -1;  // mat3: the instance's normals into the cell's coordinates
+    GLint record_base = -1;     // kObjectCuts only: int, the record of slot 0 (render/objects/instance_stream.hpp)
     // kVolumes variants only (shaders/scene.frag.glsl, VOLUMES):
     GLint to_volume_space = -1;  // mat4: vertex → the cell's coordinates less its origin
     GLint volume_first = -1;     // int: the cell's first box in the buffer at kVolumeBinding
@@ -58,12 +56,16 @@ inline constexpr GLuint kLightRectsBinding = 5;
 
 // What a variant of the scene program adds to the plain one: bits of
 // build_scene_variant's `flags`.
-inline constexpr unsigned kMaterials = 1u;   // MATERIALS: textures and cut-outs
-inline constexpr unsigned kObjectCuts = 2u;  // OBJECT_CUTS: instances of dynamic objects
-inline constexpr unsigned kVolumes = 4u;     // VOLUMES: the draws of a cell with volume portals
-inline constexpr unsigned kLights = 8u;      // LIGHTS: the colour passes of a lit layout ("lighting": "lights")
-inline constexpr unsigned kLightsUbo = 16u;  // with kLights: the light buffers as uniform blocks (LIGHT_UBO)
-inline constexpr unsigned kSceneVariantCount = 32u;
+inline constexpr unsigned kMaterials = 1u;     // MATERIALS: textures and cut-outs
+inline constexpr unsigned kObjectCuts = 2u;    // OBJECT_CUTS: instances of dynamic objects, per-instance records
+inline constexpr unsigned kVolumes = 4u;       // VOLUMES: the draws of a cell with volume portals
+inline constexpr unsigned kLights = 8u;        // LIGHTS: the colour passes of a lit layout ("lighting": "lights")
+inline constexpr unsigned kLightsUbo = 16u;    // with kLights: the light buffers as uniform blocks (LIGHT_UBO)
+inline constexpr unsigned kLightsNaive = 32u;  // with kLights: no portal tests (FrameDesc::naive_lights)
+// with kLights (alone: no kLightsUbo, no kLightsNaive): a room no light image
+// reaches, lit by its ambient alone (LIGHTS_AMBIENT)
+inline constexpr unsigned kLightsAmbient = 64u;
+inline constexpr unsigned kSceneVariantCount = 128u;
 
 // The vec4s of each light buffer's uniform block (kLightsUbo): 64 KiB, the
 // least GL_MAX_UNIFORM_BLOCK_SIZE GL 4.5 allows. Larger light buffers are
