@@ -217,7 +217,10 @@ TEST(CrossingRender, MovingPropsAreOneDrawPerLevelAsStillPropsAre) {
     ASSERT_TRUE(moving.renderer);
     const image::Image a = moving.render(f, &m);
     EXPECT_LE(m.draw_calls, st.draw_calls + 1) << m.draw_calls << " vs " << st.draw_calls;
-    EXPECT_GT(m.triangles, 150 * 12 * 2);  // most crates are seen
+    // Most crates are seen, each by the faces an eye may see, as the still
+    // crates' (box faces culled on the CPU for both).
+    EXPECT_GT(m.triangles, 150 * 2 * 2);
+    EXPECT_LE(m.triangles, st.triangles + st.triangles / 10) << m.triangles << " vs " << st.triangles;
     f.multi_draw = false;
     const image::Image b = moving.render(f, &separate);
     EXPECT_GE(separate.draw_calls, m.draw_calls);

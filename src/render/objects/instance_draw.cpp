@@ -14,6 +14,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render/lights/light_draw.hpp"
+#include "render/objects/box_faces.hpp"
 #include "render/objects/instance_stream.hpp"
 #include "render/objects/object_culling.hpp"
 #include "render/objects/object_draw.hpp"
@@ -85,6 +86,21 @@ void set_instanced_uniforms(const DrawContext& ctx, const LevelView& view, const
     set_volume_uniforms(ctx, view, program, glm::translate(math::dmat4(1.0), origin), inside);
 }
 
+// The faces of box instance `inst` (mesh `mesh`) that an eye of `view` may
+// see from the front (box_front_faces, as a cell's still boxes; the eyes
+// moved into the mesh's own coordinates); kAllBoxFaces for other meshes.
+unsigned instance_box_faces(const LevelView& view, const BoxFaceView& bf, const walk::ObjectInstance& inst,
+                            const scene::ObjectMesh& mesh) {
+    if (!mesh.box || mesh.batches.size() != 1 || has_material(mesh.batches[0])) return kAllBoxFaces;
+    LevelView local = view;
+    const math::dmat4 from_cell = glm::inverse(inst.to_cell);
+    for (EyeView& ev : local.eyes) {
+        ev.eye.position = math::dvec3(from_cell * math::dvec4(ev.eye.position, 1.0));
+        ev.view_proj = ev.view_proj * inst.to_cell;
+    }
+    return box_front_faces(mesh.lo, mesh.hi, local, bf);
+}
+
 // Queues the range, joined to the last queued one where it follows it in
 // the index buffer (consecutive meshes, as a cell's props are).
 void queue_joined(IndirectDraws& draws, const scene::IndexRange& range, int instances) {
@@ -122,15 +138,12 @@ void submit_instances(const DrawContext& ctx, const LevelView& view, const Scene
     }
 }
 
-// The instances `order` (indices into the frame's instances, each mesh at
-// most once, by mesh) of a level, drawn with id id_cell + 1: their records
-// as one block indexed by mesh, their plain batches as runs of the index
-// buffer, the batches with materials one draw each.
-void draw_instances(const DrawContext& ctx, const LevelView& view, const Scissor& scissor,
-                    const std::vector<int>& order, int id_cell, int inside) {
+// Writes the records of the instances `order` (by mesh, each mesh once) as
+// one block indexed by mesh and binds the texture; returns the record of
+// slot 0 (u_record_base).
+int write_records(const DrawContext& ctx, const std::vector<int>& order, const math::dvec3& origin) {
     const SceneData& r = ctx.scene;
     FrameScratch& s = ctx.scratch;
-    const math::dvec3 origin = r.cell_origins[static_cast<size_t>(view.cell)].origin;
     auto mesh_of = [&](int i) { return s.objects.mesh[static_cast<size_t>(i)]; };
     const int low = mesh_of(order.front());
     s.instance_records.pending.assign(static_cast<size_t>(mesh_of(order.back()) - low + 1), InstanceRecord{});
@@ -141,8 +154,22 @@ void draw_instances(const DrawContext& ctx, const LevelView& view, const Scissor
         s.instance_records.pending[static_cast<size_t>(mesh_of(i) - low)] =
             instance_record(inst, model, origin, mesh_extent(mesh));
     }
-    const int base = write_instances(s.instance_records, ctx.state) - low;
+    const int first = write_instances(s.instance_records, ctx.state);
     ctx.state.texture(kInstanceRecordUnit, s.instance_records.texture.get());
+    return first - low;
+}
+
+// The instances `order` (indices into the frame's instances, each mesh at
+// most once, by mesh) of a level, drawn with id id_cell + 1: their records
+// as one block indexed by mesh, their plain batches as runs of the index
+// buffer, the batches with materials one draw each.
+void draw_instances(const DrawContext& ctx, const LevelView& view, const Scissor& scissor,
+                    const std::vector<int>& order, int id_cell, int inside) {
+    const SceneData& r = ctx.scene;
+    FrameScratch& s = ctx.scratch;
+    const math::dvec3 origin = r.cell_origins[static_cast<size_t>(view.cell)].origin;
+    auto mesh_of = [&](int i) { return s.objects.mesh[static_cast<size_t>(i)]; };
+    const int base = write_records(ctx, order, origin);
     const int eyes = instances_of(ctx);
     const unsigned flags = kObjectCuts | light_flags(ctx, id_cell);
     const SceneProgram& plain = cell_program(ctx, view, flags);
@@ -153,13 +180,32 @@ void draw_instances(const DrawContext& ctx, const LevelView& view, const Scissor
     bool cut = false;
     for (const int i : order) cut = cut || s.objects.instances[static_cast<size_t>(i)].cut_count > 0;
     const int clip_distances = cut ? kObjectClipDistances : kSceneClipDistances;
+    // Box props' faces an eye may see, as still boxes' (FrameDesc::cull_box_faces),
+    // through the face stream; other meshes' plain batches as runs.
+    const bool box_faces = ctx.frame.cull_portals && ctx.frame.cull_objects && ctx.frame.cull_box_faces;
+    const BoxFaceView bf = box_face_view(view, ctx.frame.eye_width, ctx.frame.eye_height, ctx.frame.samples);
+    assert(s.faces.pending.empty());
     bool any_material = false;
-    for (const int i : order)
-        for (const scene::DrawBatch& b : r.object_meshes[static_cast<size_t>(mesh_of(i))].batches) {
+    for (const int i : order) {
+        const scene::ObjectMesh& mesh = r.object_meshes[static_cast<size_t>(mesh_of(i))];
+        const unsigned faces =
+            box_faces ? instance_box_faces(view, bf, s.objects.instances[static_cast<size_t>(i)], mesh) : kAllBoxFaces;
+        if (faces != kAllBoxFaces) {
+            append_box_faces(mesh.first_vertex, faces, s.faces.pending);
+            continue;
+        }
+        for (const scene::DrawBatch& b : mesh.batches) {
             any_material = any_material || has_material(b);
             if (!has_material(b)) queue_joined(s.indirect, b.range, eyes);
         }
-    submit_instances(ctx, view, {Pass::Scene, view.level, &plain, scissor, clip_distances});
+    }
+    const SceneDraw plain_draw{Pass::Scene, view.level, &plain, scissor, clip_distances};
+    submit_instances(ctx, view, plain_draw);
+    if (!s.faces.pending.empty()) {
+        const auto count = static_cast<std::uint32_t>(s.faces.pending.size());
+        queue_range(s.indirect, {upload_faces(s.faces, r.gpu.face_indices.get()), count}, eyes);
+        submit_queued(ctx, view, plain_draw, r.gpu.instance_face_vao.get());
+    }
     if (!any_material) return;
     const SceneProgram& with_material = cell_program(ctx, view, flags | kMaterials);
     set_instanced_uniforms(ctx, view, with_material, id_cell, inside);

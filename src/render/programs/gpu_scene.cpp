@@ -79,6 +79,7 @@ GpuScene upload_scene(const scene::Scene& scene) {
     gpu.face_indices = gl::create_buffer();
     gpu.face_vao = gl::create_vertex_array();
     gpu.instance_vao = gl::create_vertex_array();
+    gpu.instance_face_vao = gl::create_vertex_array();
     // The vertex arrays first: WebGL types a buffer by its first binding, and
     // an index buffer must be bound as one before its data comes
     // (gl/webgl.hpp).
@@ -87,6 +88,8 @@ GpuScene upload_scene(const scene::Scene& scene) {
     describe_vertices(gpu.instance_vao.get(), gpu.vertices.get(), gpu.indices.get());
     gpu.object_slots = gl::create_buffer();
     describe_slots(gpu.instance_vao.get(), gpu.object_slots.get());
+    describe_vertices(gpu.instance_face_vao.get(), gpu.vertices.get(), gpu.face_indices.get());
+    describe_slots(gpu.instance_face_vao.get(), gpu.object_slots.get());
     // Zero-size buffers are valid GL but glNamedBufferStorage rejects size 0.
     glNamedBufferStorage(gpu.vertices.get(), static_cast<GLsizeiptr>(scene.vertices.size() * sizeof(scene::Vertex) + 1),
                          nullptr, GL_DYNAMIC_STORAGE_BIT);

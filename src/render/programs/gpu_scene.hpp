@@ -27,6 +27,7 @@ struct GpuScene {
     // (render/objects/instance_stream.hpp).
     gl::Buffer object_slots;
     gl::VertexArray instance_vao;
+    gl::VertexArray instance_face_vao;  // the same with the face stream as element buffer
     std::vector<gl::Texture> textures;  // per scene::Scene::textures, with their mipmaps
 };
 
