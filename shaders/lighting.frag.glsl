@@ -17,6 +17,9 @@ in vec3 v_light_position;
 //   [4] unused (the shadow lookup's)
 // LIGHT_UBO: the same as uniform blocks, which llvmpipe reads faster (where
 // they fit in LIGHT_UBO_VEC4S vec4s each).
+// LIGHTS_AMBIENT (a room no light image reaches): the ambient alone, no
+// buffers (WebGL has no storage buffers) and no loop.
+#if !defined(LIGHTS_AMBIENT)
 #if defined(LIGHT_UBO)
 layout(std140, binding = 4) uniform LightImages {
     vec4 light_images[LIGHT_UBO_VEC4S];
@@ -38,11 +41,13 @@ layout(std430, binding = 5) readonly buffer LightRects {
     vec4 light_rects[];
 };
 #endif
+#endif  // !LIGHTS_AMBIENT
 uniform int u_light_first;   // the room's first image in light_images
 uniform int u_light_count;   // its number of images
 uniform vec3 u_light_ambient;
 uniform vec3 u_light_origin;  // the room's cell origin (layout coordinates of p = origin + p)
 
+#if !defined(LIGHTS_AMBIENT)
 #if !defined(SHADOWS)
 // Without shaders/shadow_lookup.frag.glsl before this (which defines
 // SHADOWS and its own light_visible), light passes props as if they were
@@ -125,4 +130,5 @@ vec3 light_sum(vec3 p, vec3 n, float origin_distance) {
     }
     return sum;
 }
+#endif  // !LIGHTS_AMBIENT
 #endif
