@@ -74,8 +74,11 @@ TEST_F(BoundedTrace, TheSixWindowRoomTracesAtTheDefaultDepthInSeconds) {
     // times as much now and would cost about 13.5 times before; the bound is
     // 8. Under the sanitizers (several times slower, and by how much differs
     // between machines: 64 s on CI's machine for what took under 60 s here)
-    // a sixteenth of the pixels against the reference at a sixteenth of its
-    // work (640x360, 1 sample a pixel), with the same bound.
+    // a sixteenth of the pixels (a quarter of the plain build's) against the
+    // reference at a quarter of its work (640x360, 4 samples a pixel). The
+    // sanitizers slow the window room more than the reference (43.7 s
+    // against 5.8 s here: 7.5, where the plain build gives 4.5), so the
+    // bound is 16 there; before the fix it would be about 25.
     spit(dir_ / "w.json", glass_room("window", 0.5));
     const std::string size = IMPOSSIBLE_SANITIZED ? "320x180" : "640x360";
     const Outcome r =
@@ -86,12 +89,13 @@ TEST_F(BoundedTrace, TheSixWindowRoomTracesAtTheDefaultDepthInSeconds) {
     EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
     const double cpu = cpu_seconds(r.err);
     EXPECT_GT(cpu, 0.0) << r.err;
-    const std::string reference_size = IMPOSSIBLE_SANITIZED ? "640x360 --samples 1" : "1280x720 --samples 4";
+    const std::string reference_size = IMPOSSIBLE_SANITIZED ? "640x360 --samples 4" : "1280x720 --samples 4";
     const Outcome ref = run("TIMEFORMAT='cpu %U %S'; time $BIN trace --out d.png --size " + reference_size, 300);
     ASSERT_EQ(ref.status, 0) << ref.err;
     const double reference = cpu_seconds(ref.err);
     ASSERT_GT(reference, 0.0) << ref.err;
-    EXPECT_LT(cpu / reference, 8.0) << "six windows " << cpu << " s, the reference " << reference << " s";
+    EXPECT_LT(cpu / reference, IMPOSSIBLE_SANITIZED ? 16.0 : 8.0)
+        << "six windows " << cpu << " s, the reference " << reference << " s";
 }
 
 TEST_F(BoundedTrace, TenThousandMirrorsInOneWallTraceInSeconds) {
