@@ -8,23 +8,13 @@
 #include <gtest/gtest.h>
 
 #include "app/commands.hpp"
+#include "app/run_main_capture.hpp"
 
 namespace impossible::app {
 namespace {
 
-struct Dispatched {
-    int status = -1;
-    std::string out, err;
-};
-
-Dispatched dispatch(const Args& args) {
-    std::ostringstream out, err;
-    Dispatched r;
-    r.status = run_main(args, out, err);
-    r.out = out.str();
-    r.err = err.str();
-    return r;
-}
+using Dispatched = testing::Ran;
+const auto dispatch = testing::run;
 
 TEST(Commands, TheOverviewHasALineForEachCommand) {
     const std::string text = overview();

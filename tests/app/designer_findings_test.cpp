@@ -10,24 +10,14 @@
 #include <gtest/gtest.h>
 
 #include "app/commands.hpp"
+#include "app/run_main_capture.hpp"
 #include "common/temp_dir.hpp"
 
 namespace impossible::app {
 namespace {
 
-struct Ran {
-    int status = -1;
-    std::string out, err;
-};
-
-Ran run(const Args& args) {
-    std::ostringstream out, err;
-    Ran r;
-    r.status = run_main(args, out, err);
-    r.out = out.str();
-    r.err = err.str();
-    return r;
-}
+using testing::Ran;
+using testing::run;
 
 // Two rooms side by side joined by doors in their shared wall at x = 4;
 // `table` puts a table in front of the hall's door; `normal` is the hall

@@ -12,24 +12,14 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
+#include "app/run_main_capture.hpp"
 #include "common/temp_dir.hpp"
 
 namespace impossible::app::tour_changes_test {
 namespace {
 
-struct Ran {
-    int status = -1;
-    std::string out, err;
-};
-
-Ran run(const Args& args) {
-    std::ostringstream out, err;
-    Ran r;
-    r.status = run_main(args, out, err);
-    r.out = out.str();
-    r.err = err.str();
-    return r;
-}
+using testing::Ran;
+using testing::run;
 
 std::string layout_file(const std::string& name) { return std::string(IMPOSSIBLE_SOURCE_DIR) + "/layouts/" + name; }
 

@@ -9,31 +9,21 @@
 #include <gtest/gtest.h>
 
 #include "app/commands.hpp"
+#include "app/run_main_capture.hpp"
 #include "common/temp_dir.hpp"
 
 namespace impossible::app {
 namespace {
 
-struct TraceRun {
-    int status = -1;
-    std::string out, err;
-};
-
-TraceRun run_trace(const Args& args) {
-    std::ostringstream out, err;
-    TraceRun r;
-    r.status = run_main(args, out, err);
-    r.out = out.str();
-    r.err = err.str();
-    return r;
-}
+using TraceRun = testing::Ran;
+using testing::run;
 
 const std::string kLayouts = IMPOSSIBLE_SOURCE_DIR "/layouts/";
 
 TraceRun trace_frame(const test::TempDir& dir, int frame, const std::string& step = "1") {
-    return run_trace({"trace", kLayouts + "door_swap.json", "--path", kLayouts + "door_swap_walk.txt", "--frame",
-                      std::to_string(frame), "--size", "48x32", "--threads", "1", "--portal-rays", step, "--out",
-                      (dir.path() / "t.png").string()});
+    return run({"trace", kLayouts + "door_swap.json", "--path", kLayouts + "door_swap_walk.txt", "--frame",
+                std::to_string(frame), "--size", "48x32", "--threads", "1", "--portal-rays", step, "--out",
+                (dir.path() / "t.png").string()});
 }
 
 TEST(TracePortalRays, PrintsThePortalsTheRaysReachAtAFrameOfAWalk) {
@@ -56,7 +46,7 @@ TEST(TracePortalRays, PrintsThePortalsTheRaysReachAtAFrameOfAWalk) {
 TEST(TracePortalRays, WithoutTheOptionNothingIsPrintedAndZeroIsAnError) {
     const test::TempDir dir("portal_rays_none");
     const TraceRun r =
-        run_trace({"trace", kLayouts + "door_swap.json", "--size", "48x32", "--out", (dir.path() / "t.png").string()});
+        run({"trace", kLayouts + "door_swap.json", "--size", "48x32", "--out", (dir.path() / "t.png").string()});
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.err, "");
     EXPECT_NE(trace_frame(dir, 30, "0").status, 0);
