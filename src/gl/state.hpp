@@ -33,8 +33,9 @@ inline constexpr GLuint color_channels(bool r, bool g, bool b, bool a) {
 // Enough for every user here (the scene shader writes five).
 inline constexpr int kMaxClipDistances = 8;
 
-// Texture units the cache tracks (the renderer uses 0 to 2).
-inline constexpr int kTextureUnits = 4;
+// Texture units the cache tracks (the renderer uses 0 to 4: scene data,
+// shadow maps, moving-prop instance records).
+inline constexpr int kTextureUnits = 8;
 
 // Viewport indices the cache tracks: 0, which every draw uses, and 1, the
 // right eye's when the vertex shader writes gl_ViewportIndex. No shader here
@@ -155,8 +156,8 @@ private:
     GLuint draw_framebuffer_ = kUnknown;
     GLuint read_framebuffer_ = kUnknown;
     GLuint draw_indirect_buffer_ = kUnknown;
-    static_assert(kTextureUnits == 4, "one kUnknown per texture unit below");
-    GLuint textures_[kTextureUnits] = {kUnknown, kUnknown, kUnknown, kUnknown};
+    static_assert(kTextureUnits == 8, "one kUnknown per texture unit below");
+    GLuint textures_[kTextureUnits] = {kUnknown, kUnknown, kUnknown, kUnknown, kUnknown, kUnknown, kUnknown, kUnknown};
     GLenum clip_depth_ = kUnknown;
 };
 

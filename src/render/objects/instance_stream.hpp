@@ -30,6 +30,7 @@ inline constexpr int kRecordsPerRow = 256;  // the texture's width: 1,280 texels
 // The texture unit the records are read from (0, 1: portal textures; 2: a
 // batch's texture; 3: shadow maps).
 inline constexpr unsigned kInstanceRecordUnit = 4;
+static_assert(kInstanceRecordUnit < static_cast<unsigned>(gl::kTextureUnits), "the state cache tracks this unit");
 // The vertex attribute of the slot (after scene::Vertex's six), at binding 1.
 inline constexpr unsigned kSlotAttribute = 6;
 inline constexpr unsigned kSlotBinding = 1;
