@@ -44,6 +44,7 @@ layout(std430, binding = 5) readonly buffer LightRects {
 #endif  // !LIGHTS_AMBIENT
 uniform int u_light_first;   // the room's first image in light_images
 uniform int u_light_count;   // its number of images
+uniform int u_light_direct;  // its first images with no rectangles (light_sum)
 uniform vec3 u_light_ambient;
 uniform vec3 u_light_origin;  // the room's cell origin (layout coordinates of p = origin + p)
 
@@ -83,51 +84,80 @@ bool light_path_open(vec4 ranges, vec3 p, vec3 v, float t0) {
     float leg_start = 0.0;
     float block = 2.0;   // the nearest blocker crossing on this leg
     bool open = true;
-    for (int r = first; r < end; ++r) {
-        vec4 c = light_rects[4 * r];
-        float t = light_rect_crossing(r, c, p, v);
-        if (c.w > 0.5) {
-            block = t > low ? min(block, t) : block;
-        } else {
-            open = open && t > leg_start && t < 1.0 && block >= t;
-            leg_start = t;
-            low = t;
-            block = 2.0;
-        }
+    int r = first;
+    if (r < end) {
+        do {
+            vec4 c = light_rects[4 * r];
+            float t = light_rect_crossing(r, c, p, v);
+            if (c.w > 0.5) {
+                block = t > low ? min(block, t) : block;
+            } else {
+                open = open && t > leg_start && t < 1.0 && block >= t;
+                leg_start = t;
+                low = t;
+                block = 2.0;
+            }
+        } while (++r < end);
     }
     return open && block >= 1.0;
 }
 
+// One image's contribution at the point p (relative to the room's origin)
+// with unit normal n; `path`: test its rectangles (an image with none, a
+// light of the room itself seen directly, passes them all).
+vec3 light_term(int g, vec3 p, vec3 n, float origin_distance, bool path) {
+    int b = 5 * g;
+    vec4 position = light_images[b];
+    vec3 v = position.xyz - p;
+    float d = max(length(v), 1e-30);
+    vec3 w = v / d;
+    float att = 1.0 / (d * d);
+    float r = d / max(position.w, 1e-30);
+    float r2 = r * r;
+    att *= position.w > 0.0 ? clamp(1.0 - r2 * r2, 0.0, 1.0) : 1.0;
+    vec4 radiance = light_images[b + 1];
+    vec4 axis = light_images[b + 2];
+    float spot = clamp((dot(axis.xyz, -w) - radiance.w) * axis.w, 0.0, 1.0);
+    spot = radiance.w <= 1.0 ? spot * spot : 1.0;
+    float amount = max(0.0, dot(n, w)) * att * spot;
+#if defined(LIGHTS_NAIVE)
+    // render::FrameDesc::naive_lights: every image reaches every point
+    // (a baseline for the cost of the test, never a mode to view).
+    bool open = true;
+#else
+    bool open = !path || light_path_open(light_images[b + 3], p, v, 1e-6 * (1.0 + origin_distance) / d);
+#endif
+    return radiance.rgb * (open ? amount * light_visible(g, p - position.xyz, d) : 0.0);
+}
+
 // Σ contribution over the room's images, for the point p (relative to the
 // room's origin) with unit normal n; `origin_distance` is |p| in layout
-// coordinates, for the shadow ray's start tolerance.
+// coordinates, for the shadow ray's start tolerance. The room's first
+// u_light_direct images have no rectangles (its own lights, seen directly):
+// their loop has no path test. llvmpipe runs every branch of a condition,
+// taken or not (masked), and a loop's body once more after its last
+// iteration, so what a fragment costs is the code it passes, not the code it
+// takes: the loops are do-while loops, each at least one iteration long, and
+// a room with only one kind of image draws with the variant that has only
+// that loop (LIGHTS_NO_DIRECT, LIGHTS_NO_PATHS: render/lights/light_draw.cpp).
 vec3 light_sum(vec3 p, vec3 n, float origin_distance) {
     vec3 sum = vec3(0.0);
-    for (int i = 0; i < u_light_count; ++i) {
-        int g = u_light_first + i;
-        int b = 5 * g;
-        vec4 position = light_images[b];
-        vec3 v = position.xyz - p;
-        float d = max(length(v), 1e-30);
-        vec3 w = v / d;
-        float att = 1.0 / (d * d);
-        float r = d / max(position.w, 1e-30);
-        float r2 = r * r;
-        att *= position.w > 0.0 ? clamp(1.0 - r2 * r2, 0.0, 1.0) : 1.0;
-        vec4 radiance = light_images[b + 1];
-        vec4 axis = light_images[b + 2];
-        float spot = clamp((dot(axis.xyz, -w) - radiance.w) * axis.w, 0.0, 1.0);
-        spot = radiance.w <= 1.0 ? spot * spot : 1.0;
-        float amount = max(0.0, dot(n, w)) * att * spot;
-#if defined(LIGHTS_NAIVE)
-        // render::FrameDesc::naive_lights: every image reaches every point
-        // (a baseline for the cost of the test, never a mode to view).
-        bool open = true;
+    int i = 0;
+#if !defined(LIGHTS_NO_DIRECT)
+#if defined(LIGHTS_NO_PATHS)
+    int direct_end = u_light_count;
 #else
-        bool open = light_path_open(light_images[b + 3], p, v, 1e-6 * (1.0 + origin_distance) / d);
+    int direct_end = u_light_direct;
 #endif
-        sum += radiance.rgb * (open ? amount * light_visible(g, p - position.xyz, d) : 0.0);
-    }
+    do {
+        sum += light_term(u_light_first + i, p, n, origin_distance, false);
+    } while (++i < direct_end);
+#endif
+#if !defined(LIGHTS_NO_PATHS)
+    do {
+        sum += light_term(u_light_first + i, p, n, origin_distance, true);
+    } while (++i < u_light_count);
+#endif
     return sum;
 }
 #endif  // !LIGHTS_AMBIENT

@@ -58,7 +58,8 @@ Result<void> prepare_frame(RendererParts& parts, const FrameDesc& frame) {
                              .lit = r.lighting.lit,
                              .lights_ubo = parts.lights.buffers.ubo,
                              .lights_naive = r.lighting.lit && frame.naive_lights,
-                             .materials = r.has_materials};
+                             .materials = r.has_materials,
+                             .light_loops = r.lighting.lit ? light_loops_needed(parts.lights.buffers) : 0u};
     if (Result<void> made = ensure_variants(programs, frame.stereo, needs); !made) return made;
     set_exposure(programs, frame.stereo, frame.exposure.value_or(r.exposure));
     if (Result<void> made = ensure_multisampled(programs, targets, frame); !made) return made;

@@ -18,6 +18,7 @@
 #include "image/compare.hpp"
 #include "lights/light_images.hpp"
 #include "links/portal_links.hpp"
+#include "render/lights/light_buffers.hpp"
 #include "shading/lighting.hpp"
 #include "shading/shading.hpp"
 #include "trace/tracer.hpp"
@@ -172,6 +173,35 @@ TEST(LightingRender, MatchesTheLightImagesInEveryViewAndDepth) {
             const render::FrameDesc f = lit_frame(rig.layout, v.room, v.position, v.yaw, v.pitch);
             expect_lit_agree(rig.render(f), lit_cpu_frame(rig.layout, f),
                              std::string(v.what) + ", light depth " + std::to_string(depth));
+        }
+    }
+}
+
+TEST(LightingRender, EachRoomDrawsWithTheLightLoopsItsImagesNeed) {
+    // Issue 39: a room's own lights seen directly come first and skip the
+    // path test; a room with only one kind of image draws with the variant
+    // that has only that loop (llvmpipe pays for a loop it skips).
+    for (const bool annex_lamp : {false, true}) {
+        layout::Layout l = lit_lamp_hall(2);
+        if (annex_lamp) l.rooms[1].lights.push_back(lit_point({-1.0, 2.2, 1.0}, {0.9, 1.0, 0.9}, 3.0));
+        LightingRig rig(l);
+        ASSERT_TRUE(rig.renderer);
+        const std::vector<lights::RoomLights> rooms = lights::light_images(l, links::link_portals(l), 2);
+        const render::LightBuffers buffers =
+            render::upload_light_images(rooms, l, std::vector<scene::CellOrigin>(rooms.size()), 2);
+        // The hall: its lamp and spot, and with the annex's lamp its image
+        // through the door; the annex: the hall's lamp through the door, and
+        // its own; the vault: its lamp, no portal.
+        EXPECT_EQ(buffers.direct[0], 2);
+        EXPECT_EQ(render::light_loop_flags(buffers, 0), annex_lamp ? 0u : render::kLightsNoPaths);
+        EXPECT_EQ(buffers.direct[1], annex_lamp ? 1 : 0);
+        EXPECT_EQ(render::light_loop_flags(buffers, 1), annex_lamp ? 0u : render::kLightsNoDirect);
+        EXPECT_EQ(render::light_loop_flags(buffers, 2), render::kLightsNoPaths);
+        EXPECT_EQ(render::light_loops_needed(buffers), annex_lamp ? 5u : 6u);
+        for (const LitView& v : kLitViews) {
+            const render::FrameDesc f = lit_frame(rig.layout, v.room, v.position, v.yaw, v.pitch);
+            expect_lit_agree(rig.render(f), lit_cpu_frame(rig.layout, f),
+                             std::string(v.what) + (annex_lamp ? ", with the annex's lamp" : ""));
         }
     }
 }

@@ -80,6 +80,12 @@ LightBuffers upload_light_images(const std::vector<lights::RoomLights>& rooms, c
     for (size_t c = 0; c < rooms.size(); ++c) {
         out.first.push_back(out.total);
         out.count.push_back(static_cast<int>(rooms[c].images.size()));
+        int direct = 0;  // images come by path length: a room's own lights first
+        for (const lights::LightImage& image : rooms[c].images) {
+            if (!image.apertures.empty() || !image.blockers.empty()) break;
+            ++direct;
+        }
+        out.direct.push_back(direct);
         out.ambient.emplace_back(rooms[c].ambient);
         out.origins.push_back(origins[c].origin);
         out.total += out.count.back();
@@ -93,6 +99,23 @@ LightBuffers upload_light_images(const std::vector<lights::RoomLights>& rooms, c
     out.images = upload_floats(std::move(packed.images), out.ubo);
     out.rects = upload_floats(std::move(packed.rects), out.ubo);
     return out;
+}
+
+unsigned light_loop_flags(const LightBuffers& buffers, int room) {
+    const auto c = static_cast<size_t>(room);
+    if (buffers.count[c] == 0) return 0u;
+    if (buffers.direct[c] == 0) return kLightsNoDirect;
+    return buffers.direct[c] == buffers.count[c] ? kLightsNoPaths : 0u;
+}
+
+unsigned light_loops_needed(const LightBuffers& buffers) {
+    unsigned needed = 0u;
+    for (size_t c = 0; c < buffers.count.size(); ++c) {
+        if (buffers.count[c] == 0) continue;
+        const unsigned loops = light_loop_flags(buffers, static_cast<int>(c));
+        needed |= loops == 0u ? 1u : loops == kLightsNoDirect ? 2u : 4u;
+    }
+    return needed;
 }
 
 void bind_light_buffers(const LightBuffers* buffers) {
@@ -117,6 +140,7 @@ void set_light_uniforms(const LightBuffers& buffers, const SceneProgram& program
     glProgramUniformMatrix4fv(p, program.to_light_space, 1, GL_FALSE, &to_light_space[0][0]);
     glProgramUniform1i(p, program.light_first, buffers.first[c]);
     glProgramUniform1i(p, program.light_count, buffers.count[c]);
+    glProgramUniform1i(p, program.light_direct, buffers.direct[c]);
     glProgramUniform3fv(p, program.light_ambient, 1, &buffers.ambient[c][0]);
     glProgramUniform3fv(p, program.light_origin, 1, &origin[0]);
 }

@@ -26,6 +26,7 @@ struct LightBuffers {
     gl::Buffer rects;
     std::vector<int> first;           // per room
     std::vector<int> count;           // per room
+    std::vector<int> direct;          // per room: its first images with no rectangles
     std::vector<glm::vec3> ambient;   // per room
     std::vector<glm::dvec3> origins;  // per room: its cell origin
     int total = 0;                    // images of every room
@@ -48,6 +49,12 @@ PackedLights pack_light_images(const std::vector<lights::RoomLights>& rooms, con
 
 // Packs and uploads `rooms` (one per room, in room order) for `depth`; the
 // lights themselves (colour, intensity, range, cone) are the layout's.
+// The loop variant's bits (kLightsNoDirect, kLightsNoPaths) for `room`'s
+// images: 0 where it has both kinds, or none.
+unsigned light_loop_flags(const LightBuffers& buffers, int room);
+// Which loop variants the rooms need (VariantNeeds::light_loops).
+unsigned light_loops_needed(const LightBuffers& buffers);
+
 LightBuffers upload_light_images(const std::vector<lights::RoomLights>& rooms, const layout::Layout& layout,
                                  const std::vector<scene::CellOrigin>& origins, int depth);
 

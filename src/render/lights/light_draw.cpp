@@ -6,7 +6,8 @@ namespace impossible::render {
 unsigned light_flags(const DrawContext& ctx, int room) {
     if (!ctx.scene.lighting.lit) return 0u;
     if (ctx.lights.count[static_cast<size_t>(room)] == 0) return kLights | kLightsAmbient;
-    return kLights | (ctx.lights.ubo ? kLightsUbo : 0u) | (ctx.frame.naive_lights ? kLightsNaive : 0u);
+    return kLights | (ctx.lights.ubo ? kLightsUbo : 0u) | (ctx.frame.naive_lights ? kLightsNaive : 0u) |
+           light_loop_flags(ctx.lights, room);
 }
 
 void set_room_lights(const DrawContext& ctx, const SceneProgram& program, int room, bool count) {

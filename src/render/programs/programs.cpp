@@ -27,6 +27,13 @@ Result<void> ensure_variants(Programs& programs, StereoMode mode, const VariantN
         if ((flags & kLights) && !(flags & (kLightsUbo | kLightsAmbient)) && needs.lights_ubo) continue;
         if ((flags & kMaterials) && !needs.materials) continue;
         if ((flags & kLightsNaive) && (!(flags & kLights) || !needs.lights_naive)) continue;
+        if (flags & kLights && !(flags & kLightsAmbient)) {
+            const unsigned loops = flags & (kLightsNoDirect | kLightsNoPaths);
+            const unsigned bit = loops == 0u ? 1u : loops == kLightsNoDirect ? 2u : loops == kLightsNoPaths ? 4u : 0u;
+            if ((needs.light_loops & bit) == 0u) continue;
+        } else if (flags & (kLightsNoDirect | kLightsNoPaths)) {
+            continue;
+        }
         std::optional<SceneProgram>& slot = programs.variants[mode_index(mode)][flags];
         if (slot) continue;
         Result<SceneProgram> built = build_scene_variant(mode, flags);

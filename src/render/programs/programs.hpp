@@ -50,6 +50,9 @@ struct VariantNeeds {
     bool lights_ubo = false;    // the frame's light buffers are uniform blocks: kLightsUbo (else storage)
     bool lights_naive = false;  // FrameDesc::naive_lights: kLightsNaive
     bool materials = false;     // some batch has a texture or a cutoff: kMaterials
+    // The light loop variants some room draws with (light_loop_flags): bit
+    // 0 both loops, 1 kLightsNoDirect, 2 kLightsNoPaths.
+    unsigned light_loops = 0u;
 };
 
 // The variants with object cuts, volumes or lights (scene_program.hpp) that

@@ -36,14 +36,16 @@ namespace {
 // uses, so that the GLSL compiler keeps them.
 struct SceneVariant {
     const char* fragment = "shaders/scene.frag.glsl";
-    bool single_eye = false;     // STEREO_SINGLE_EYE: u_single_eye
-    bool materials = false;      // MATERIALS: textures and cut-outs
-    bool object_cuts = false;    // OBJECT_CUTS
-    bool volumes = false;        // VOLUMES
-    bool lights = false;         // LIGHTS
-    bool light_ubo = false;      // LIGHT_UBO
-    bool light_naive = false;    // LIGHTS_NAIVE
-    bool light_ambient = false;  // LIGHTS_AMBIENT
+    bool single_eye = false;       // STEREO_SINGLE_EYE: u_single_eye
+    bool materials = false;        // MATERIALS: textures and cut-outs
+    bool object_cuts = false;      // OBJECT_CUTS
+    bool volumes = false;          // VOLUMES
+    bool lights = false;           // LIGHTS
+    bool light_ubo = false;        // LIGHT_UBO
+    bool light_naive = false;      // LIGHTS_NAIVE
+    bool light_ambient = false;    // LIGHTS_AMBIENT
+    bool light_no_direct = false;  // LIGHTS_NO_DIRECT
+    bool light_no_paths = false;   // LIGHTS_NO_PATHS
 };
 
 std::string variant_defines(const SceneVariant& variant) {
@@ -56,6 +58,8 @@ std::string variant_defines(const SceneVariant& variant) {
         defines += "#define LIGHTS\n#define LIGHT_MAX_APERTURES " + std::to_string(layout::kMaxLightDepth) + "\n";
     if (variant.lights && variant.light_naive) defines += "#define LIGHTS_NAIVE\n";
     if (variant.lights && variant.light_ambient) defines += "#define LIGHTS_AMBIENT\n";
+    if (variant.lights && variant.light_no_direct) defines += "#define LIGHTS_NO_DIRECT\n";
+    if (variant.lights && variant.light_no_paths) defines += "#define LIGHTS_NO_PATHS\n";
     if (variant.lights && variant.light_ubo)
         defines += "#define LIGHT_UBO\n#define LIGHT_UBO_VEC4S " + std::to_string(kLightUboVec4s) + "\n";
     return defines;
@@ -77,13 +81,16 @@ void find_variant_uniforms(const SceneVariant& variant, gl::UniformLocations& u,
     }
     if (variant.lights) {
         // The ambient-only variant reads only the ambient; the naive one
-        // no origin (only the portal tests read it, for their tolerance).
+        // no origin (only the portal tests read it, for their tolerance), nor
+        // the variant without paths.
         auto per_image = [&](const char* name) { return variant.light_ambient ? u.optional(name) : u.required(name); };
         p.to_light_space = per_image("u_to_light_space");
         p.light_first = per_image("u_light_first");
         p.light_count = per_image("u_light_count");
+        p.light_direct = u.optional("u_light_direct");  // not read without the direct loop
         p.light_ambient = u.required("u_light_ambient");
-        p.light_origin = variant.light_naive ? u.optional("u_light_origin") : per_image("u_light_origin");
+        p.light_origin =
+            variant.light_naive || variant.light_no_paths ? u.optional("u_light_origin") : per_image("u_light_origin");
     }
 }
 
@@ -152,6 +159,8 @@ Result<SceneProgram> build_scene_variant(StereoMode mode, unsigned flags) {
     variant.light_ubo = (flags & kLightsUbo) != 0;
     variant.light_naive = (flags & kLightsNaive) != 0;
     variant.light_ambient = (flags & kLightsAmbient) != 0;
+    variant.light_no_direct = (flags & kLightsNoDirect) != 0;
+    variant.light_no_paths = (flags & kLightsNoPaths) != 0;
     return link_scene_program(variant, defines);
 }
 

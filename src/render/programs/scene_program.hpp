@@ -43,6 +43,7 @@ struct SceneProgram {
     GLint to_light_space = -1;  // mat4: vertex → the lit room's coordinates less its origin
     GLint light_first = -1;     // int: the lit room's first image in the buffer at kLightImagesBinding
     GLint light_count = -1;     // int
+    GLint light_direct = -1;    // int: of them, the first with no rectangles (no path test)
     GLint light_ambient = -1;   // vec3: the lit room's ambient
     GLint light_origin = -1;    // vec3: the lit room's cell origin
 };
@@ -65,7 +66,12 @@ inline constexpr unsigned kLightsNaive = 32u;  // with kLights: no portal tests 
 // with kLights (alone: no kLightsUbo, no kLightsNaive): a room no light image
 // reaches, lit by its ambient alone (LIGHTS_AMBIENT)
 inline constexpr unsigned kLightsAmbient = 64u;
-inline constexpr unsigned kSceneVariantCount = 128u;
+// with kLights, for a room whose images all have rectangles (LIGHTS_NO_DIRECT:
+// no loop over direct images) or none has (LIGHTS_NO_PATHS: no path test):
+// llvmpipe pays for a loop it skips (lighting.frag.glsl, light_sum).
+inline constexpr unsigned kLightsNoDirect = 128u;
+inline constexpr unsigned kLightsNoPaths = 256u;
+inline constexpr unsigned kSceneVariantCount = 512u;
 
 // The vec4s of each light buffer's uniform block (kLightsUbo): 64 KiB, the
 // least GL_MAX_UNIFORM_BLOCK_SIZE GL 4.5 allows. Larger light buffers are
