@@ -82,8 +82,8 @@ TEST_F(Hostile, GenerateOnAnLShapedFloorWritesPrismRoomsThatValidate) {
 // a core 1.4 m across holds none, and the message says that. Each run
 // within seconds (the box tests' work is bounded, design::kMaxBoxWork).
 // The sanitizer build runs the same several times slower (about 30 s a run
-// on a loaded two-core machine): its bound is kSlowdown times as wide.
-constexpr double kSlowdown = IMPOSSIBLE_SANITIZED ? 4.0 : 1.0;
+// on a loaded two-core machine): its bound is kStarSlowdown times as wide.
+constexpr double kStarSlowdown = IMPOSSIBLE_SANITIZED ? 4.0 : 1.0;
 
 TEST_F(Hostile, GenerateFitsRoomsInTheCoreOfAStarOfLongSpikes) {
     spit(dir_ / "star.json", star_polygon(10'000, 500, 2));
@@ -91,7 +91,7 @@ TEST_F(Hostile, GenerateFitsRoomsInTheCoreOfAStarOfLongSpikes) {
         const std::string n = std::to_string(rooms);
         const Outcome g = run("$BIN generate --play-area-file star.json --rooms " + n + " --seed 1 --out g.json", 240);
         ASSERT_EQ(g.status, 0) << g.err;
-        EXPECT_LT(g.seconds, 20.0 * kSlowdown);
+        EXPECT_LT(g.seconds, 20.0 * kStarSlowdown);
         const Outcome v = run("$BIN validate g.json");
         EXPECT_EQ(v.status, 0) << v.err;
         EXPECT_NE(v.out.find("reachable rooms: " + n + " of " + n), std::string::npos) << v.out;
@@ -103,14 +103,14 @@ TEST_F(Hostile, GenerateFitsRoomsInTheCoreOfAStarOfLongSpikes) {
                    "could not fit 3 rooms of at least 1.5 m, joined by doors, in this play area within the overlap "
                    "limit (its widest spot is a circle 4 m across at (0, 0); try fewer rooms, a larger floor or a "
                    "higher --max-overlap)");
-    EXPECT_LT(three.seconds, 20.0 * kSlowdown);  // 23 s without the bound on the box tests
+    EXPECT_LT(three.seconds, 20.0 * kStarSlowdown);  // 23 s without the bound on the box tests
     EXPECT_FALSE(fs::exists(dir_ / "three.json"));
     spit(dir_ / "thin.json", star_polygon(10'000, 500, 0.7));
     const Outcome thin = run("$BIN generate --play-area-file thin.json --rooms 1 --seed 1", 240);
     expect_refused(thin, 1,
                    "no room 1.5 m wide fits in this play area (1000 x 1000 m across; the widest spot found is a "
                    "circle 1.4 m across at (0, 0))");
-    EXPECT_LT(thin.seconds, 20.0 * kSlowdown);
+    EXPECT_LT(thin.seconds, 20.0 * kStarSlowdown);
 }
 
 }  // namespace
