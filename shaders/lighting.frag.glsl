@@ -44,7 +44,7 @@ layout(std430, binding = 5) readonly buffer LightRects {
 #endif  // !LIGHTS_AMBIENT
 uniform int u_light_first;   // the room's first image in light_images
 uniform int u_light_count;   // its number of images
-uniform int u_light_direct;  // its first images with no rectangles (light_sum)
+uniform int u_light_direct;  // its first images, with no apertures (light_sum)
 uniform vec3 u_light_ambient;
 uniform vec3 u_light_origin;  // the room's cell origin (layout coordinates of p = origin + p)
 
@@ -133,8 +133,9 @@ vec3 light_term(int g, vec3 p, vec3 n, float origin_distance, bool path) {
 // Σ contribution over the room's images, for the point p (relative to the
 // room's origin) with unit normal n; `origin_distance` is |p| in layout
 // coordinates, for the shadow ray's start tolerance. The room's first
-// u_light_direct images have no rectangles (its own lights, seen directly):
-// their loop has no path test. llvmpipe runs every branch of a condition,
+// u_light_direct images have no apertures (its own lights, seen directly):
+// their loop has no path test, unless one has blockers
+// (LIGHTS_DIRECT_BLOCKERS). llvmpipe runs every branch of a condition,
 // taken or not (masked), and a loop's body once more after its last
 // iteration, so what a fragment costs is the code it passes, not the code it
 // takes: the loops are do-while loops, each at least one iteration long, and
@@ -144,14 +145,13 @@ vec3 light_sum(vec3 p, vec3 n, float origin_distance) {
     vec3 sum = vec3(0.0);
     int i = 0;
 #if !defined(LIGHTS_NO_DIRECT)
-#if defined(LIGHTS_NO_PATHS)
-    int direct_end = u_light_count;
-#else
-    int direct_end = u_light_direct;
-#endif
     do {
+#if defined(LIGHTS_DIRECT_BLOCKERS)
+        sum += light_term(u_light_first + i, p, n, origin_distance, true);
+#else
         sum += light_term(u_light_first + i, p, n, origin_distance, false);
-    } while (++i < direct_end);
+#endif
+    } while (++i < u_light_direct);
 #endif
 #if !defined(LIGHTS_NO_PATHS)
     do {

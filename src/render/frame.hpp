@@ -132,6 +132,12 @@ struct Diagnostics {
     // draw_level_colour); the image is the same. Off (the VOLUMES variant
     // over the whole level) only to compare (tests, bench's volumes=one-variant).
     bool split_volume_draws = true;
+    // With culling, under "lighting": "lights", in a cell some of whose light
+    // images come through portals (and no volume): the cell drawn without the
+    // loop over those images outside their lit regions' screen bounds
+    // (lights::lit_region; render/objects/object_draw.hpp); the image is the
+    // same. Off only to compare (tests, bench's lights:N/one-part).
+    bool split_light_draws = true;
     // Under "lighting": "lights": every light image of a room added at every
     // point of it, without the portal tests (apertures and blockers) that
     // decide whether its light reaches the point: wrong wherever a path is

@@ -206,6 +206,32 @@ TEST(LightingRender, EachRoomDrawsWithTheLightLoopsItsImagesNeed) {
     }
 }
 
+TEST(LightingRender, OutsideTheLightPathsTheRoomDrawsWithoutThemAndTheSameImage) {
+    // Issue 39: where no path image's lit region (lights::lit_region) is
+    // seen, a lit room draws without the loop over its path images (or by
+    // its ambient alone): the same image, in more draws.
+    for (const bool annex_lamp : {false, true}) {
+        layout::Layout l = lit_lamp_hall(2);
+        if (annex_lamp) l.rooms[1].lights.push_back(lit_point({-1.0, 2.2, 1.0}, {0.9, 1.0, 0.9}, 3.0));
+        LightingRig rig(l);
+        ASSERT_TRUE(rig.renderer);
+        long more_draws = 0;
+        for (const LitView& v : kLitViews) {
+            render::FrameDesc f = lit_frame(rig.layout, v.room, v.position, v.yaw, v.pitch);
+            f.shadows = true;
+            render::FrameStats split_stats, whole_stats;
+            const image::Image split = rig.render(f, &split_stats);
+            f.split_light_draws = false;
+            const image::Image whole = rig.render(f, &whole_stats);
+            EXPECT_EQ(split.rgb, whole.rgb) << v.what;
+            EXPECT_EQ(split.ids, whole.ids) << v.what;
+            EXPECT_GE(split_stats.draw_calls, whole_stats.draw_calls) << v.what;
+            more_draws += split_stats.draw_calls - whole_stats.draw_calls;
+        }
+        EXPECT_GT(more_draws, 0) << "the split never happened";
+    }
+}
+
 TEST(LightingRender, NaiveLightsDropOnlyThePortalTests) {
     // Issue 39's baseline (FrameDesc::naive_lights, bench's lights:N/naive):
     // every image adds its term without the aperture and blocker tests. At

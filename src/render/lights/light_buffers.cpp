@@ -3,6 +3,7 @@
 #include <cassert>
 #include <cmath>
 
+#include "lights/lit_region.hpp"
 #include "math/portal.hpp"
 #include "render/programs/scene_program.hpp"
 
@@ -48,6 +49,19 @@ void push_image(PackedLights& out, const lights::LightImage& image, const layout
     out.images.insert(out.images.end(), {0.0f, 0.0f, 0.0f, 0.0f});
 }
 
+// The lit regions of `room`'s images from `direct` on; nullopt if one may
+// light the whole room.
+std::optional<std::vector<std::array<glm::dvec3, 8>>> path_regions(const lights::RoomLights& room, int direct,
+                                                                   const layout::Room& bounds) {
+    std::vector<std::array<glm::dvec3, 8>> out;
+    for (size_t i = static_cast<size_t>(direct); i < room.images.size(); ++i) {
+        const lights::LitRegion region = lights::lit_region(room.images[i], bounds.min, bounds.max);
+        if (region.kind == lights::LitRegion::Kind::Everywhere) return std::nullopt;
+        if (region.kind == lights::LitRegion::Kind::Pyramid) out.push_back(region.corners);
+    }
+    return out;
+}
+
 // A buffer of `data`, at least one vec4 (a buffer's storage cannot be
 // empty); for a uniform block, all of the block's kLightUboVec4s.
 gl::Buffer upload_floats(std::vector<float> data, bool ubo) {
@@ -81,11 +95,15 @@ LightBuffers upload_light_images(const std::vector<lights::RoomLights>& rooms, c
         out.first.push_back(out.total);
         out.count.push_back(static_cast<int>(rooms[c].images.size()));
         int direct = 0;  // images come by path length: a room's own lights first
+        bool blockers = false;
         for (const lights::LightImage& image : rooms[c].images) {
-            if (!image.apertures.empty() || !image.blockers.empty()) break;
+            if (!image.apertures.empty()) break;
+            blockers = blockers || !image.blockers.empty();
             ++direct;
         }
         out.direct.push_back(direct);
+        out.direct_blockers.push_back(blockers);
+        out.path_regions.push_back(path_regions(rooms[c], direct, layout.rooms[c]));
         out.ambient.emplace_back(rooms[c].ambient);
         out.origins.push_back(origins[c].origin);
         out.total += out.count.back();
@@ -105,7 +123,8 @@ unsigned light_loop_flags(const LightBuffers& buffers, int room) {
     const auto c = static_cast<size_t>(room);
     if (buffers.count[c] == 0) return 0u;
     if (buffers.direct[c] == 0) return kLightsNoDirect;
-    return buffers.direct[c] == buffers.count[c] ? kLightsNoPaths : 0u;
+    const unsigned blockers = buffers.direct_blockers[c] ? kLightsDirectBlockers : 0u;
+    return (buffers.direct[c] == buffers.count[c] ? kLightsNoPaths : 0u) | blockers;
 }
 
 unsigned light_loops_needed(const LightBuffers& buffers) {
@@ -113,7 +132,11 @@ unsigned light_loops_needed(const LightBuffers& buffers) {
     for (size_t c = 0; c < buffers.count.size(); ++c) {
         if (buffers.count[c] == 0) continue;
         const unsigned loops = light_loop_flags(buffers, static_cast<int>(c));
-        needed |= loops == 0u ? 1u : loops == kLightsNoDirect ? 2u : 4u;
+        needed |= 1u << light_loop_index(loops);
+        // A room with both kinds draws without its paths outside their lit
+        // regions (render/objects/object_draw.cpp).
+        if ((loops & (kLightsNoDirect | kLightsNoPaths)) == 0u)
+            needed |= 1u << light_loop_index(loops | kLightsNoPaths);
     }
     return needed;
 }

@@ -6,6 +6,8 @@
 // precision far from the layout's origin.
 #pragma once
 
+#include <array>
+#include <optional>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -24,15 +26,20 @@ struct LightBuffers {
     int depth = -1;  // the light depth they were made for; -1: none
     gl::Buffer images;
     gl::Buffer rects;
-    std::vector<int> first;           // per room
-    std::vector<int> count;           // per room
-    std::vector<int> direct;          // per room: its first images with no rectangles
-    std::vector<glm::vec3> ambient;   // per room
-    std::vector<glm::dvec3> origins;  // per room: its cell origin
-    int total = 0;                    // images of every room
-    std::vector<lights::RoomLights> rooms;
-    bool ubo =
-        false;  // both fit kLightUboVec4s: bound as uniform blocks (kLightsUbo variants)  // the images themselves (the shadow maps')
+    std::vector<int> first;                 // per room
+    std::vector<int> count;                 // per room
+    std::vector<int> direct;                // per room: its first images, with no apertures (its own lights)
+    std::vector<bool> direct_blockers;      // per room: some of them has blockers
+    std::vector<glm::vec3> ambient;         // per room
+    std::vector<glm::dvec3> origins;        // per room: its cell origin
+    int total = 0;                          // images of every room
+    std::vector<lights::RoomLights> rooms;  // the images themselves (the shadow maps')
+    // Per room, where its path images (after its direct ones) may light it
+    // (lights::lit_region): a truncated pyramid each (none for an image that
+    // lights nothing of it); nullopt where some path image may light all of
+    // the room.
+    std::vector<std::optional<std::vector<std::array<glm::dvec3, 8>>>> path_regions;
+    bool ubo = false;  // both fit kLightUboVec4s: bound as uniform blocks (kLightsUbo variants)
 };
 
 // The GPU layout of the images: kLightImageVec4s vec4s per image, 4 per rectangle.

@@ -3,9 +3,15 @@
 
 namespace impossible::render {
 
-unsigned light_flags(const DrawContext& ctx, int room) {
+unsigned light_flags(const DrawContext& ctx, int room, const LevelView* view) {
     if (!ctx.scene.lighting.lit) return 0u;
-    if (ctx.lights.count[static_cast<size_t>(room)] == 0) return kLights | kLightsAmbient;
+    const auto c = static_cast<size_t>(room);
+    if (ctx.lights.count[c] == 0) return kLights | kLightsAmbient;
+    if (view && view->outside_light_paths && room == view->cell) {
+        if (ctx.lights.direct[c] == 0) return kLights | kLightsAmbient;
+        return kLights | (ctx.lights.ubo ? kLightsUbo : 0u) | kLightsNoPaths |
+               (ctx.lights.direct_blockers[c] ? kLightsDirectBlockers : 0u);
+    }
     return kLights | (ctx.lights.ubo ? kLightsUbo : 0u) | (ctx.frame.naive_lights ? kLightsNaive : 0u) |
            light_loop_flags(ctx.lights, room);
 }

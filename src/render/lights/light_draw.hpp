@@ -10,7 +10,10 @@ namespace impossible::render {
 // surfaces of `room` add to their program's flags; with kLightsAmbient where
 // no light image reaches the room (its ambient alone: no loop over images,
 // whose code llvmpipe runs, masked, even for none; bench/README.md, "Lights").
-unsigned light_flags(const DrawContext& ctx, int room);
+// In a level drawn outside its cell's light paths (view.outside_light_paths),
+// the cell's own surfaces draw without the path loop (kLightsNoPaths), or by
+// the ambient variant where the cell has no direct image.
+unsigned light_flags(const DrawContext& ctx, int room, const LevelView* view = nullptr);
 
 // A colour pass's light uniforms for surfaces of `room` (the identity into
 // the room's coordinates: the room's own vertices), counting the room's

@@ -171,7 +171,7 @@ void draw_instances(const DrawContext& ctx, const LevelView& view, const Scissor
     auto mesh_of = [&](int i) { return s.objects.mesh[static_cast<size_t>(i)]; };
     const int base = write_records(ctx, order, origin);
     const int eyes = instances_of(ctx);
-    const unsigned flags = kObjectCuts | light_flags(ctx, id_cell);
+    const unsigned flags = kObjectCuts | light_flags(ctx, id_cell, &view);
     const SceneProgram& plain = cell_program(ctx, view, flags);
     set_instanced_uniforms(ctx, view, plain, id_cell, inside);
     glProgramUniform1i(plain.program.get(), plain.record_base, base);

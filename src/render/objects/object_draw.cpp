@@ -19,6 +19,7 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -151,12 +152,21 @@ std::vector<gl::ScissorRect> outside_of(const gl::ScissorRect& level, const std:
     return out;
 }
 
-// The cell's batches and instances of a level within `scissor`, by the plain
-// variants when `outside` (no volume is seen there), else by the VOLUMES one.
-void draw_part(const DrawContext& ctx, const LevelView& view, const Scissor& scissor, bool outside, bool count_lights) {
+// What a part of a level's draws leaves out: the volumes (the plain
+// variants: no volume is seen there), or the cell's light paths.
+struct PartKind {
+    bool outside_volumes = false;
+    bool outside_light_paths = false;
+};
+
+// The cell's batches and instances of a level within `scissor`, by the
+// variants `kind` picks.
+void draw_part(const DrawContext& ctx, const LevelView& view, const Scissor& scissor, PartKind kind,
+               bool count_lights) {
     LevelView part = view;
-    part.outside_volumes = outside;
-    const SceneProgram& shaded = cell_program(ctx, part, light_flags(ctx, part.cell));
+    part.outside_volumes = kind.outside_volumes;
+    part.outside_light_paths = kind.outside_light_paths;
+    const SceneProgram& shaded = cell_program(ctx, part, light_flags(ctx, part.cell, &part));
     if (shaded.volume_count >= 0)
         ctx.scratch.stats.volume_variant_pixels += scissor ? static_cast<long>(scissor->width) * scissor->height
                                                            : 2L * ctx.frame.eye_width * ctx.frame.eye_height;
@@ -169,20 +179,34 @@ void draw_part(const DrawContext& ctx, const LevelView& view, const Scissor& sci
     draw_cell(ctx, part, {Pass::Scene, part.level, &shaded, scissor});
 }
 
-}  // namespace
+// Where the path images of view.cell's lights may light it, per eye: the
+// union of their lit regions' rectangles (two pixels of margin); none where
+// none is seen. nullopt where some path image may light the whole cell.
+std::optional<std::array<NdcRect, 2>> light_paths_rects(const DrawContext& ctx, const LevelView& view) {
+    const std::optional<std::vector<std::array<math::dvec3, 8>>>& regions =
+        ctx.lights.path_regions[static_cast<size_t>(view.cell)];
+    if (!regions) return std::nullopt;
+    std::array<NdcRect, 2> all{NdcRect::none(), NdcRect::none()};
+    for (const std::array<math::dvec3, 8>& region : *regions)
+        for (size_t e = 0; e < 2; ++e) {
+            const NdcRect r = box_rect(region.data(), view.eyes[e]);
+            if (r.empty()) continue;
+            const NdcRect wide =
+                intersect(widened(r, 2.0, ctx.frame.eye_width, ctx.frame.eye_height), view.eyes[e].rect);
+            NdcRect& a = all[e];
+            a = a.empty() ? wide
+                          : NdcRect{std::min(a.x0, wide.x0), std::min(a.y0, wide.y0), std::max(a.x1, wide.x1),
+                                    std::max(a.y1, wide.y1)};
+        }
+    return all;
+}
 
-void draw_level_colour(const DrawContext& ctx, const LevelView& view, const Scissor& scissor) {
-    const bool volumes = !ctx.scene.volumes[static_cast<size_t>(view.cell)].empty();
-    if (!volumes || !ctx.frame.cull_portals || !ctx.frame.split_volume_draws) {
-        draw_part(ctx, view, scissor, false, true);
-        return;
-    }
-    // Outside the volumes' rectangles no fragment can lie in a volume: the
-    // plain variants there, which test depth before shading; the discarding
-    // one only inside. The parts are scissor rectangles of whole pixels,
-    // disjoint, and every draw keeps the level's own clip rectangles, so
-    // each pixel is drawn by one draw of the same triangles as before.
-    const std::array<NdcRect, 2> inside = volumes_rects(ctx, view);
+// The level in parts: within `inside` (per eye) as `in`, the rest as
+// `out`. The parts are scissor rectangles of whole pixels, disjoint, and
+// every draw keeps the level's own clip rectangles, so each pixel is drawn
+// by one draw of the same triangles as before.
+void draw_in_parts(const DrawContext& ctx, const LevelView& view, const Scissor& scissor,
+                   const std::array<NdcRect, 2>& inside, PartKind in, PartKind out) {
     const gl::ScissorRect level =
         scissor.value_or(gl::ScissorRect{0, 0, 2 * ctx.frame.eye_width, ctx.frame.eye_height});
     std::vector<gl::ScissorRect> holes;
@@ -201,13 +225,38 @@ void draw_level_colour(const DrawContext& ctx, const LevelView& view, const Scis
     }
     bool first = true;
     for (const gl::ScissorRect& r : outside_of(level, holes)) {
-        draw_part(ctx, view, r, true, first);
+        draw_part(ctx, view, r, out, first);
         first = false;
     }
     for (const gl::ScissorRect& h : holes) {
-        draw_part(ctx, view, h, false, first);
+        draw_part(ctx, view, h, in, first);
         first = false;
     }
+}
+
+}  // namespace
+
+void draw_level_colour(const DrawContext& ctx, const LevelView& view, const Scissor& scissor) {
+    const auto c = static_cast<size_t>(view.cell);
+    const bool volumes = !ctx.scene.volumes[c].empty();
+    if (volumes && ctx.frame.cull_portals && ctx.frame.split_volume_draws) {
+        // Outside the volumes' rectangles no fragment can lie in a volume:
+        // the plain variants there, which test depth before shading; the
+        // discarding one only inside.
+        draw_in_parts(ctx, view, scissor, volumes_rects(ctx, view), {}, {.outside_volumes = true});
+        return;
+    }
+    const bool paths = ctx.scene.lighting.lit && !ctx.frame.naive_lights && ctx.lights.count[c] > ctx.lights.direct[c];
+    if (!volumes && paths && ctx.frame.cull_portals && ctx.frame.split_light_draws) {
+        // Outside the rectangles where the cell's path images may light it,
+        // their terms are 0 at every point: the variant without their loop
+        // there (llvmpipe runs every fragment through all of a shader's code).
+        if (const std::optional<std::array<NdcRect, 2>> inside = light_paths_rects(ctx, view)) {
+            draw_in_parts(ctx, view, scissor, *inside, {}, {.outside_light_paths = true});
+            return;
+        }
+    }
+    draw_part(ctx, view, scissor, {}, true);
 }
 
 void draw_volume_rooms(const DrawContext& ctx, const LevelView& view, const Scissor& scissor) {

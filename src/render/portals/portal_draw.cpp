@@ -118,7 +118,7 @@ void draw_cell(const DrawContext& ctx, const LevelView& view, const SceneDraw& d
     // first needed.
     SceneDraw with_materials = draw;
     const SceneProgram* material_program =
-        ctx.material_program ? &cell_program(ctx, view, kMaterials | light_flags(ctx, view.cell)) : nullptr;
+        ctx.material_program ? &cell_program(ctx, view, kMaterials | light_flags(ctx, view.cell, &view)) : nullptr;
     with_materials.program = material_program;
     bool material_ready = false;
     for (const VisibleDraw& d : s.cull_draws) {

@@ -57,6 +57,10 @@ struct LevelView {
     // Its eyes' rectangles hold no volume of its cell (object_draw.hpp,
     // draw_level_colour): drawn by the variants without VOLUMES.
     bool outside_volumes = false;
+    // Its eyes' rectangles hold no point that a path image of its cell's
+    // lights may reach (draw_level_colour): drawn by the variant without the
+    // path loop, or by the ambient one where the cell has no direct image.
+    bool outside_light_paths = false;
     std::array<EyeView, 2> eyes;
 };
 

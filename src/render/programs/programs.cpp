@@ -28,10 +28,8 @@ Result<void> ensure_variants(Programs& programs, StereoMode mode, const VariantN
         if ((flags & kMaterials) && !needs.materials) continue;
         if ((flags & kLightsNaive) && (!(flags & kLights) || !needs.lights_naive)) continue;
         if (flags & kLights && !(flags & kLightsAmbient)) {
-            const unsigned loops = flags & (kLightsNoDirect | kLightsNoPaths);
-            const unsigned bit = loops == 0u ? 1u : loops == kLightsNoDirect ? 2u : loops == kLightsNoPaths ? 4u : 0u;
-            if ((needs.light_loops & bit) == 0u) continue;
-        } else if (flags & (kLightsNoDirect | kLightsNoPaths)) {
+            if ((needs.light_loops & (1u << light_loop_index(flags))) == 0u) continue;
+        } else if (flags & kLightLoopBits) {
             continue;
         }
         std::optional<SceneProgram>& slot = programs.variants[mode_index(mode)][flags];

@@ -50,8 +50,8 @@ struct VariantNeeds {
     bool lights_ubo = false;    // the frame's light buffers are uniform blocks: kLightsUbo (else storage)
     bool lights_naive = false;  // FrameDesc::naive_lights: kLightsNaive
     bool materials = false;     // some batch has a texture or a cutoff: kMaterials
-    // The light loop variants some room draws with (light_loop_flags): bit
-    // 0 both loops, 1 kLightsNoDirect, 2 kLightsNoPaths.
+    // The light loop variants some room may draw with (light_loop_flags):
+    // bit light_loop_index(flags) of each.
     unsigned light_loops = 0u;
 };
 

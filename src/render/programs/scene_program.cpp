@@ -36,16 +36,17 @@ namespace {
 // uses, so that the GLSL compiler keeps them.
 struct SceneVariant {
     const char* fragment = "shaders/scene.frag.glsl";
-    bool single_eye = false;       // STEREO_SINGLE_EYE: u_single_eye
-    bool materials = false;        // MATERIALS: textures and cut-outs
-    bool object_cuts = false;      // OBJECT_CUTS
-    bool volumes = false;          // VOLUMES
-    bool lights = false;           // LIGHTS
-    bool light_ubo = false;        // LIGHT_UBO
-    bool light_naive = false;      // LIGHTS_NAIVE
-    bool light_ambient = false;    // LIGHTS_AMBIENT
-    bool light_no_direct = false;  // LIGHTS_NO_DIRECT
-    bool light_no_paths = false;   // LIGHTS_NO_PATHS
+    bool single_eye = false;             // STEREO_SINGLE_EYE: u_single_eye
+    bool materials = false;              // MATERIALS: textures and cut-outs
+    bool object_cuts = false;            // OBJECT_CUTS
+    bool volumes = false;                // VOLUMES
+    bool lights = false;                 // LIGHTS
+    bool light_ubo = false;              // LIGHT_UBO
+    bool light_naive = false;            // LIGHTS_NAIVE
+    bool light_ambient = false;          // LIGHTS_AMBIENT
+    bool light_no_direct = false;        // LIGHTS_NO_DIRECT
+    bool light_no_paths = false;         // LIGHTS_NO_PATHS
+    bool light_direct_blockers = false;  // LIGHTS_DIRECT_BLOCKERS
 };
 
 std::string variant_defines(const SceneVariant& variant) {
@@ -60,6 +61,7 @@ std::string variant_defines(const SceneVariant& variant) {
     if (variant.lights && variant.light_ambient) defines += "#define LIGHTS_AMBIENT\n";
     if (variant.lights && variant.light_no_direct) defines += "#define LIGHTS_NO_DIRECT\n";
     if (variant.lights && variant.light_no_paths) defines += "#define LIGHTS_NO_PATHS\n";
+    if (variant.lights && variant.light_direct_blockers) defines += "#define LIGHTS_DIRECT_BLOCKERS\n";
     if (variant.lights && variant.light_ubo)
         defines += "#define LIGHT_UBO\n#define LIGHT_UBO_VEC4S " + std::to_string(kLightUboVec4s) + "\n";
     return defines;
@@ -86,11 +88,12 @@ void find_variant_uniforms(const SceneVariant& variant, gl::UniformLocations& u,
         auto per_image = [&](const char* name) { return variant.light_ambient ? u.optional(name) : u.required(name); };
         p.to_light_space = per_image("u_to_light_space");
         p.light_first = per_image("u_light_first");
-        p.light_count = per_image("u_light_count");
-        p.light_direct = u.optional("u_light_direct");  // not read without the direct loop
+        p.light_count = variant.light_no_paths ? u.optional("u_light_count") : per_image("u_light_count");
+        p.light_direct = variant.light_no_direct ? u.optional("u_light_direct") : per_image("u_light_direct");
         p.light_ambient = u.required("u_light_ambient");
+        const bool tests_paths = !variant.light_no_paths || variant.light_direct_blockers;
         p.light_origin =
-            variant.light_naive || variant.light_no_paths ? u.optional("u_light_origin") : per_image("u_light_origin");
+            variant.light_naive || !tests_paths ? u.optional("u_light_origin") : per_image("u_light_origin");
     }
 }
 
@@ -161,6 +164,7 @@ Result<SceneProgram> build_scene_variant(StereoMode mode, unsigned flags) {
     variant.light_ambient = (flags & kLightsAmbient) != 0;
     variant.light_no_direct = (flags & kLightsNoDirect) != 0;
     variant.light_no_paths = (flags & kLightsNoPaths) != 0;
+    variant.light_direct_blockers = (flags & kLightsDirectBlockers) != 0;
     return link_scene_program(variant, defines);
 }
 

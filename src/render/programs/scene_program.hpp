@@ -66,12 +66,20 @@ inline constexpr unsigned kLightsNaive = 32u;  // with kLights: no portal tests 
 // with kLights (alone: no kLightsUbo, no kLightsNaive): a room no light image
 // reaches, lit by its ambient alone (LIGHTS_AMBIENT)
 inline constexpr unsigned kLightsAmbient = 64u;
-// with kLights, for a room whose images all have rectangles (LIGHTS_NO_DIRECT:
-// no loop over direct images) or none has (LIGHTS_NO_PATHS: no path test):
-// llvmpipe pays for a loop it skips (lighting.frag.glsl, light_sum).
+// with kLights, the loops over a room's images (lighting.frag.glsl,
+// light_sum): its direct images (its own lights, no apertures) and its path
+// images (through portals). A room with no direct image (LIGHTS_NO_DIRECT)
+// or none through portals (LIGHTS_NO_PATHS) draws without that loop, since
+// llvmpipe pays for a loop it skips; LIGHTS_DIRECT_BLOCKERS: some direct
+// image has blockers (a free-standing door, a wall of an L-shaped room), so
+// the direct loop tests them.
 inline constexpr unsigned kLightsNoDirect = 128u;
 inline constexpr unsigned kLightsNoPaths = 256u;
-inline constexpr unsigned kSceneVariantCount = 512u;
+inline constexpr unsigned kLightsDirectBlockers = 512u;
+inline constexpr unsigned kLightLoopBits = kLightsNoDirect | kLightsNoPaths | kLightsDirectBlockers;
+inline constexpr unsigned kSceneVariantCount = 1024u;
+// The loop bits of `flags` as a number 0..7 (VariantNeeds::light_loops).
+inline constexpr unsigned light_loop_index(unsigned flags) { return (flags & kLightLoopBits) / kLightsNoDirect; }
 
 // The vec4s of each light buffer's uniform block (kLightsUbo): 64 KiB, the
 // least GL_MAX_UNIFORM_BLOCK_SIZE GL 4.5 allows. Larger light buffers are

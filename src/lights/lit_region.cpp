@@ -1,0 +1,42 @@
+// The truncated pyramid a light image's path may light (lit_region.hpp).
+#include "lights/lit_region.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "math/portal.hpp"
+
+namespace impossible::lights {
+
+LitRegion lit_region(const LightImage& image, const glm::dvec3& room_min, const glm::dvec3& room_max) {
+    LitRegion out;
+    if (image.apertures.empty()) return out;
+    const math::PortalRect& p1 = image.apertures.front().rect;
+    // L' must lie behind P1 (the surface is on its normal's side).
+    const double h = glm::dot(p1.normal, p1.center - image.position);
+    if (h < -kMinApertureDistance) out.kind = LitRegion::Kind::Nowhere;
+    if (!(h > kMinApertureDistance)) return out;
+    // The pyramid's point at ray parameter s (L' + s (q - L'), q on P1) lies
+    // at a distance of at least s · h from L'; every point of the room, with
+    // a margin for hands and objects reaching past its walls, is nearer than
+    // `reach`, so s = reach / h bounds the part that matters.
+    const glm::dvec3 extent = room_max - room_min;
+    double reach = 0.0;
+    for (int k = 0; k < 8; ++k) {
+        const glm::dvec3 corner((k & 1) ? room_max.x : room_min.x, (k & 2) ? room_max.y : room_min.y,
+                                (k & 4) ? room_max.z : room_min.z);
+        reach = std::max(reach, glm::length(corner - image.position));
+    }
+    reach += glm::length(extent) + 10.0;
+    const double s = reach / h;
+    math::dvec3 box[8];
+    math::box_corners(p1, box);  // 0..3: the front rectangle, at depth 0
+    out.kind = LitRegion::Kind::Pyramid;
+    for (int k = 0; k < 4; ++k) {
+        out.corners[static_cast<size_t>(k)] = box[k];
+        out.corners[static_cast<size_t>(k) + 4] = image.position + s * (box[k] - image.position);
+    }
+    return out;
+}
+
+}  // namespace impossible::lights

@@ -1,0 +1,36 @@
+// Where a light image's path can light room C at all, for the rasteriser's
+// split of a lit room's draws (render/objects/object_draw.cpp): every point
+// its light reaches lies on a ray from the image L' through the path's first
+// aperture P1 (the one nearest the surface), beyond P1. Bounded by a far
+// distance past the room, that set is a truncated pyramid: P1's four corners
+// and the same corners pushed out along their rays from L'. Conservative: the
+// path's other apertures, its blockers, the light's range and its spot cone
+// only make the lit set smaller.
+#pragma once
+
+#include <array>
+
+#include <glm/vec3.hpp>
+
+#include "lights/light_images.hpp"
+
+namespace impossible::lights {
+
+struct LitRegion {
+    enum class Kind {
+        Pyramid,     // within `corners`
+        Nowhere,     // L' lies in front of P1: no segment from C passes P1 from its front
+        Everywhere,  // no apertures (it may light all of C), or L' within kMinApertureDistance of P1's plane
+    };
+    Kind kind = Kind::Everywhere;
+    // As math::box_corners orders a box's: P1's rectangle, then the far one;
+    // in C's coordinates.
+    std::array<glm::dvec3, 8> corners{};
+};
+
+// `room_min`, `room_max`: C's bounding box.
+LitRegion lit_region(const LightImage& image, const glm::dvec3& room_min, const glm::dvec3& room_max);
+
+inline constexpr double kMinApertureDistance = 1e-6;
+
+}  // namespace impossible::lights
