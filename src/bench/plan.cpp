@@ -186,9 +186,13 @@ void add_sweep_item(PlanBuilder& b, const layout::Layout& layout, const SweepIte
         b.plan.sessions.emplace_back(with_lights(b.plan.sessions[0].layout(), n));
         const int variant = static_cast<int>(b.plan.sessions.size()) - 1;
         const bool naive = item.suffix == "naive";  // the same lights without the portal tests
-        b.add(item.name, kind, [variant, naive](BenchConfig& c) {
+        // The same lights with each lit room in one part (no split by where
+        // its path images can light it; render/objects/object_draw.hpp).
+        const bool one_part = item.suffix == "one-part";
+        b.add(item.name, kind, [variant, naive, one_part](BenchConfig& c) {
             c.layout_variant = variant;
             c.frame.naive_lights = naive;
+            c.frame.split_light_draws = !one_part;
         });
     } else if (kind == "light-depth") {
         if (layout.lighting != impossible::layout::Lighting::Lights)

@@ -48,9 +48,10 @@ SweepItem parse_item(const std::string& kind, const std::string& item) {
     } else if (kind == "samples") {
         s.n = cli::parse_samples(value);
     } else if (kind == "lights") {
-        const std::string n = split_suffix(item, {"naive"}, s);
+        const std::string n = split_suffix(item, {"naive", "one-part"}, s);
         s.n = n == "fixed" ? -1 : cli::parse_int(value.name, n, 0, static_cast<int>(layout::limits::kMaxLightsPerRoom));
-        if (s.n < 0 && !s.suffix.empty()) throw InputError(value.name + ": 'fixed/naive' has no lights to test");
+        if (s.n < 0 && !s.suffix.empty())
+            throw InputError(value.name + ": 'fixed/" + s.suffix + "' has no lights to test");
     } else if (kind == "light-depth") {
         s.n = cli::parse_light_depth(value);
     } else if (kind == "shadow-size") {
@@ -79,10 +80,11 @@ std::vector<SweepItem> parse_sweep(const std::string& sweep) {
     bool known = false;
     for (std::string_view k : kKinds) known = known || kind == k;
     if (colon == std::string::npos || !known || colon + 1 == sweep.size())
-        throw InputError("--sweep: '" + sweep +
-                         "' is not techniques, portals:N,..., boxes:N,..., depth:N,..., size:WxH,..., samples:N,..., "
-                         "lights:fixed|N|N/naive,..., light-depth:N,..., shadow-size:N,..., mask:on|off,... or "
-                         "volumes:split|one-variant|none,...");
+        throw InputError(
+            "--sweep: '" + sweep +
+            "' is not techniques, portals:N,..., boxes:N,..., depth:N,..., size:WxH,..., samples:N,..., "
+            "lights:fixed|N|N/naive|N/one-part,..., light-depth:N,..., shadow-size:N,..., mask:on|off,... or "
+            "volumes:split|one-variant|none,...");
     std::vector<SweepItem> items;
     for (const std::string& item : split(sweep.substr(colon + 1), ',')) items.push_back(parse_item(kind, item));
     return items;

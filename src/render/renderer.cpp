@@ -23,13 +23,13 @@ namespace {
 // view's or the layout's (docs/lighting.md, "Exposure").
 void set_exposure(const Programs& programs, StereoMode mode, double ev) {
     const float scale = static_cast<float>(std::exp2(ev));
-    const auto set = [scale](const std::optional<SceneProgram>& p) {
+    const auto set = [scale](const SceneProgram* p) {
         if (p && p->exposure >= 0) glProgramUniform1f(p->program.get(), p->exposure, scale);
     };
     const int m = mode_index(mode);
-    set(programs.scene[m]);
-    set(programs.material[m]);
-    for (const std::optional<SceneProgram>& variant : programs.variants[m]) set(variant);
+    set(programs.scene[m] ? &*programs.scene[m] : nullptr);
+    set(programs.material[m] ? &*programs.material[m] : nullptr);
+    for (const auto& [flags, variant] : programs.variants[m]) set(&variant);
 }
 
 // What a frame needs beyond the default program: its target, its stereo
@@ -121,13 +121,12 @@ void draw_stereo(const DrawContext& ctx) {
         draw_root(ctx, root_view(frame, ctx.projections, 3u));
         return;
     }
-    const std::optional<SceneProgram>* variants = ctx.programs.variants[mode_index(StereoMode::TwoPass)];
+    const std::map<unsigned, SceneProgram>& variants = ctx.programs.variants[mode_index(StereoMode::TwoPass)];
     for (int e = 0; e < 2; ++e) {
         glProgramUniform1i(ctx.scene_program.program.get(), ctx.scene_program.single_eye, e);
         if (ctx.material_program)
             glProgramUniform1i(ctx.material_program->program.get(), ctx.material_program->single_eye, e);
-        for (unsigned flags = 0; flags < kSceneVariantCount; ++flags)
-            if (variants[flags]) glProgramUniform1i(variants[flags]->program.get(), variants[flags]->single_eye, e);
+        for (const auto& [flags, variant] : variants) glProgramUniform1i(variant.program.get(), variant.single_eye, e);
         DrawContext one_eye = ctx;
         one_eye.eye = e;
         draw_root(one_eye, root_view(frame, ctx.projections, 1u << e));

@@ -1,6 +1,7 @@
 // keep_first_portals: closing portals for the bench's portal sweep keeps
 // pairs whole, mirrors (which have no target) and renumbers targets; the
-// sweep's N/all-steps item draws every door pass.
+// sweep's N/all-steps item draws every door pass; the light sweep's
+// baselines.
 #include <gtest/gtest.h>
 
 #include "bench/plan.hpp"
@@ -70,6 +71,31 @@ TEST(BenchPlan, AllStepsItemDrawsEveryDoorPass) {
     EXPECT_EQ(plan.sessions[plan.configs[3].layout_variant].layout().portals.size(), 2u);
     EXPECT_TRUE(plan.sessions[plan.configs[1].layout_variant].layout().portals.empty());
     EXPECT_THROW(with_sweep(o, "portals:2/some-steps"), cli::InputError);
+}
+
+// "N/naive" draws N lights per room without the portal tests, "N/one-part"
+// with every lit room in one part (FrameDesc::split_light_draws off), beside
+// "N" as users see it.
+TEST(BenchPlan, LightItemsPickTheBaselines) {
+    layout::Layout l;
+    l.rooms.resize(1);
+    l.rooms[0].min = {-2, 0, -2};
+    l.rooms[0].max = {2, 3, 2};
+    l.start.room = 0;
+    l.start.position = {0, 1.6, 0};
+    BenchOptions o;
+    with_sweep(o, "lights:2,2/naive,2/one-part");
+    const BenchPlan plan = plan_bench(session::Session(l), o);
+    ASSERT_EQ(plan.configs.size(), 4u);  // base + 3
+    for (size_t k = 1; k < 4; ++k) {
+        const BenchConfig& c = plan.configs[k];
+        EXPECT_EQ(plan.sessions[static_cast<size_t>(c.layout_variant)].layout().rooms[0].lights.size(), 2u);
+        EXPECT_EQ(c.frame.naive_lights, k == 2) << c.name;
+        EXPECT_EQ(c.frame.split_light_draws, k != 3) << c.name;
+    }
+    EXPECT_EQ(plan.configs[3].name, "lights=2/one-part");
+    EXPECT_THROW(with_sweep(o, "lights:fixed/one-part"), cli::InputError);
+    EXPECT_THROW(with_sweep(o, "lights:2/two-parts"), cli::InputError);
 }
 
 }  // namespace

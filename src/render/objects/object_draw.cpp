@@ -19,6 +19,7 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -74,9 +75,10 @@ const SceneProgram& cell_program(const DrawContext& ctx, const LevelView& view, 
         assert(ctx.material_program != nullptr);
         return *ctx.material_program;
     }
-    const std::optional<SceneProgram>& variant = ctx.programs.variants[static_cast<int>(ctx.frame.stereo)][flags];
-    assert(variant);  // prepare_frame built it
-    return *variant;
+    const std::map<unsigned, SceneProgram>& variants = ctx.programs.variants[static_cast<int>(ctx.frame.stereo)];
+    const auto variant = variants.find(flags);
+    assert(variant != variants.end());  // prepare_frame built it
+    return variant->second;
 }
 
 namespace {
@@ -201,6 +203,18 @@ std::optional<std::array<NdcRect, 2>> light_paths_rects(const DrawContext& ctx, 
     return all;
 }
 
+// Each part draws all of the cell's triangles again (the scissor only drops
+// their fragments): a cell of more than kMaxLightSplitIndices indices is not
+// split for its lights, where the vertices would cost more than the
+// fragments save (a large glTF model).
+constexpr std::uint64_t kMaxLightSplitIndices = 300'000;
+
+bool light_split_pays(const DrawContext& ctx, size_t cell) {
+    std::uint64_t indices = 0;
+    for (const scene::DrawBatch& b : ctx.scene.cells[cell]) indices += b.range.count;
+    return indices <= kMaxLightSplitIndices;
+}
+
 // The level in parts: within `inside` (per eye) as `in`, the rest as
 // `out`. The parts are scissor rectangles of whole pixels, disjoint, and
 // every draw keeps the level's own clip rectangles, so each pixel is drawn
@@ -247,7 +261,7 @@ void draw_level_colour(const DrawContext& ctx, const LevelView& view, const Scis
         return;
     }
     const bool paths = ctx.scene.lighting.lit && !ctx.frame.naive_lights && ctx.lights.count[c] > ctx.lights.direct[c];
-    if (!volumes && paths && ctx.frame.cull_portals && ctx.frame.split_light_draws) {
+    if (!volumes && paths && ctx.frame.cull_portals && ctx.frame.split_light_draws && light_split_pays(ctx, c)) {
         // Outside the rectangles where the cell's path images may light it,
         // their terms are 0 at every point: the variant without their loop
         // there (llvmpipe runs every fragment through all of a shader's code).

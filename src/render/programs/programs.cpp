@@ -32,11 +32,11 @@ Result<void> ensure_variants(Programs& programs, StereoMode mode, const VariantN
         } else if (flags & kLightLoopBits) {
             continue;
         }
-        std::optional<SceneProgram>& slot = programs.variants[mode_index(mode)][flags];
-        if (slot) continue;
+        std::map<unsigned, SceneProgram>& built_ones = programs.variants[mode_index(mode)];
+        if (built_ones.contains(flags)) continue;
         Result<SceneProgram> built = build_scene_variant(mode, flags);
         if (!built) return built;
-        slot = std::move(*built);
+        built_ones.emplace(flags, std::move(*built));
     }
     return {};
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cassert>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -30,7 +31,9 @@ struct Programs {
     std::optional<SceneProgram> portal_texture;              // render-to-texture portals
     // The variants with kObjectCuts or kVolumes (scene_program.hpp), per
     // StereoMode and flags, built before the first frame that needs them.
-    std::optional<SceneProgram> variants[kStereoModeCount][kSceneVariantCount];
+    // A map, not an array of kSceneVariantCount: a frame needs a few of them
+    // (a renderer's memory, tests/python/test_memory.py).
+    std::map<unsigned, SceneProgram> variants[kStereoModeCount];
     std::optional<SceneProgram> portal_texture_volumes;  // render-to-texture portals of a cell with volumes
     std::optional<WindowBlendProgram> window_blend[2];   // single-sample, multisample copies
     std::vector<gl::Program> id_resolve;                 // the multisample id resolve per sample count (index: count)
