@@ -12,11 +12,20 @@ build=${1:-$root/build}
 shift || true
 # valgrind runs the image decoders' test (image_decode_valgrind).
 "$root/scripts/setup.sh" valgrind
+phase() { printf 'test.sh: %s took %d min %d s\n' "$1" $(($2 / 60)) $(($2 % 60)) >&2; }
+start=$SECONDS
 "$root/scripts/build.sh" "$build" "$@"
+phase "the build" $((SECONDS - start))
 # The web build and its browser tests' packages (docs/web.md), but for the
 # sanitizer build, which has no browser tests.
 if [[ " $* " != *"IMPOSSIBLE_SANITIZE=ON"* ]]; then
+  start=$SECONDS
   "$root/scripts/web-build.sh"
+  phase "the web build" $((SECONDS - start))
 fi
 cd "$build"
-ctest --output-on-failure -j"$(nproc)" --timeout 600 -LE long
+start=$SECONDS
+status=0
+ctest --output-on-failure -j"$(nproc)" --timeout 600 -LE long || status=$?
+phase "the tests" $((SECONDS - start))
+exit "$status"
