@@ -29,7 +29,7 @@ void set_exposure(const Programs& programs, StereoMode mode, double ev) {
     const int m = mode_index(mode);
     set(programs.scene[m] ? &*programs.scene[m] : nullptr);
     set(programs.material[m] ? &*programs.material[m] : nullptr);
-    for (const auto& [flags, variant] : programs.variants[m]) set(&variant);
+    for (const auto& entry : programs.variants[m]) set(&entry.second);
 }
 
 // What a frame needs beyond the default program: its target, its stereo
@@ -126,7 +126,10 @@ void draw_stereo(const DrawContext& ctx) {
         glProgramUniform1i(ctx.scene_program.program.get(), ctx.scene_program.single_eye, e);
         if (ctx.material_program)
             glProgramUniform1i(ctx.material_program->program.get(), ctx.material_program->single_eye, e);
-        for (const auto& [flags, variant] : variants) glProgramUniform1i(variant.program.get(), variant.single_eye, e);
+        for (const auto& entry : variants) {  // no structured binding: glProgramUniform1i is a lambda on the web
+            const SceneProgram& variant = entry.second;
+            glProgramUniform1i(variant.program.get(), variant.single_eye, e);
+        }
         DrawContext one_eye = ctx;
         one_eye.eye = e;
         draw_root(one_eye, root_view(frame, ctx.projections, 1u << e));
