@@ -16,6 +16,17 @@ void with_sweep(BenchOptions& o, const std::string& sweep) {
     o.sweep_items = parse_sweep(sweep);
 }
 
+// A 4 x 3 x 4 m room, the start in its middle.
+layout::Layout one_room() {
+    layout::Layout l;
+    l.rooms.resize(1);
+    l.rooms[0].min = {-2, 0, -2};
+    l.rooms[0].max = {2, 3, 2};
+    l.start.room = 0;
+    l.start.position = {0, 1.6, 0};
+    return l;
+}
+
 layout::Portal portal(const std::string& id, int target, layout::PortalKind kind) {
     layout::Portal p;
     p.id = id;
@@ -52,12 +63,7 @@ TEST(BenchPlan, KeepFirstPortalsKeepsMirrorsAndWholePairs) {
 // "N/all-steps" keeps the same N portals with every door pass
 // (FrameDesc::portal_steps off), beside "N" with the cheaper steps.
 TEST(BenchPlan, AllStepsItemDrawsEveryDoorPass) {
-    layout::Layout l;
-    l.rooms.resize(1);
-    l.rooms[0].min = {-2, 0, -2};
-    l.rooms[0].max = {2, 3, 2};
-    l.start.room = 0;
-    l.start.position = {0, 1.6, 0};
+    layout::Layout l = one_room();
     using layout::PortalKind;
     l.portals = {portal("a", 1, PortalKind::Door), portal("b", 0, PortalKind::Door)};
     BenchOptions o;
@@ -77,12 +83,7 @@ TEST(BenchPlan, AllStepsItemDrawsEveryDoorPass) {
 // with every lit room in one part (FrameDesc::split_light_draws off), beside
 // "N" as users see it.
 TEST(BenchPlan, LightItemsPickTheBaselines) {
-    layout::Layout l;
-    l.rooms.resize(1);
-    l.rooms[0].min = {-2, 0, -2};
-    l.rooms[0].max = {2, 3, 2};
-    l.start.room = 0;
-    l.start.position = {0, 1.6, 0};
+    layout::Layout l = one_room();
     BenchOptions o;
     with_sweep(o, "lights:2,2/naive,2/one-part");
     const BenchPlan plan = plan_bench(session::Session(l), o);

@@ -75,6 +75,14 @@ layout::Layout lit_lamp_hall(int depth) {
     return l;
 }
 
+// The same at light depth 2, with a lamp of the annex's own or without
+// (then the annex is lit only through its door).
+layout::Layout lit_lamp_hall_at_depth_2(bool annex_lamp) {
+    layout::Layout l = lit_lamp_hall(2);
+    if (annex_lamp) l.rooms[1].lights.push_back(lit_point({-1.0, 2.2, 1.0}, {0.9, 1.0, 0.9}, 3.0));
+    return l;
+}
+
 // The lit colour of a surface point of room `room` with base · dark `bd`.
 glm::dvec3 lit_expected(const layout::Layout& l, const std::vector<lights::RoomLights>& rooms, int room,
                         const glm::dvec3& bd, const glm::dvec3& p, const glm::dvec3& n) {
@@ -182,8 +190,7 @@ TEST(LightingRender, EachRoomDrawsWithTheLightLoopsItsImagesNeed) {
     // path test; a room with only one kind of image draws with the variant
     // that has only that loop (llvmpipe pays for a loop it skips).
     for (const bool annex_lamp : {false, true}) {
-        layout::Layout l = lit_lamp_hall(2);
-        if (annex_lamp) l.rooms[1].lights.push_back(lit_point({-1.0, 2.2, 1.0}, {0.9, 1.0, 0.9}, 3.0));
+        const layout::Layout l = lit_lamp_hall_at_depth_2(annex_lamp);
         LightingRig rig(l);
         ASSERT_TRUE(rig.renderer);
         const std::vector<lights::RoomLights> rooms = lights::light_images(l, links::link_portals(l), 2);
@@ -211,8 +218,7 @@ TEST(LightingRender, OutsideTheLightPathsTheRoomDrawsWithoutThemAndTheSameImage)
     // seen, a lit room draws without the loop over its path images (or by
     // its ambient alone): the same image, in more draws.
     for (const bool annex_lamp : {false, true}) {
-        layout::Layout l = lit_lamp_hall(2);
-        if (annex_lamp) l.rooms[1].lights.push_back(lit_point({-1.0, 2.2, 1.0}, {0.9, 1.0, 0.9}, 3.0));
+        const layout::Layout l = lit_lamp_hall_at_depth_2(annex_lamp);
         LightingRig rig(l);
         ASSERT_TRUE(rig.renderer);
         long more_draws = 0;
