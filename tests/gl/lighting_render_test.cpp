@@ -223,16 +223,24 @@ TEST(LightingRender, OutsideTheLightPathsTheRoomDrawsWithoutThemAndTheSameImage)
         ASSERT_TRUE(rig.renderer);
         long more_draws = 0;
         for (const LitView& v : kLitViews) {
-            render::FrameDesc f = lit_frame(rig.layout, v.room, v.position, v.yaw, v.pitch);
-            f.shadows = true;
-            render::FrameStats split_stats, whole_stats;
-            const image::Image split = rig.render(f, &split_stats);
-            f.split_light_draws = false;
-            const image::Image whole = rig.render(f, &whole_stats);
-            EXPECT_EQ(split.rgb, whole.rgb) << v.what;
-            EXPECT_EQ(split.ids, whole.ids) << v.what;
-            EXPECT_GE(split_stats.draw_calls, whole_stats.draw_calls) << v.what;
-            more_draws += split_stats.draw_calls - whole_stats.draw_calls;
+            // Each stereo mode, and multisampled (the scissor parts are whole
+            // pixels, so every sample of a pixel is drawn by one part).
+            for (int mode = 0; mode < 4; ++mode) {
+                render::FrameDesc f = lit_frame(rig.layout, v.room, v.position, v.yaw, v.pitch);
+                f.shadows = true;
+                if (mode == 1) f.stereo = render::StereoMode::ViewportIndex;
+                if (mode == 2) f.stereo = render::StereoMode::TwoPass;
+                if (mode == 3) f.samples = 4;
+                const std::string what = std::string(v.what) + ", mode " + std::to_string(mode);
+                render::FrameStats split_stats, whole_stats;
+                const image::Image split = rig.render(f, &split_stats);
+                f.split_light_draws = false;
+                const image::Image whole = rig.render(f, &whole_stats);
+                EXPECT_EQ(split.rgb, whole.rgb) << what;
+                EXPECT_EQ(split.ids, whole.ids) << what;
+                EXPECT_GE(split_stats.draw_calls, whole_stats.draw_calls) << what;
+                more_draws += split_stats.draw_calls - whole_stats.draw_calls;
+            }
         }
         EXPECT_GT(more_draws, 0) << "the split never happened";
     }
