@@ -108,14 +108,7 @@ std::array<NdcRect, 2> volumes_rects(const DrawContext& ctx, const LevelView& vi
     std::array<NdcRect, 2> all{NdcRect::none(), NdcRect::none()};
     for (const VolumeBox& v : ctx.scene.volumes[static_cast<size_t>(view.cell)]) {
         const LevelView narrowed = narrowed_to(ctx, view, v);
-        for (size_t e = 0; e < 2; ++e) {
-            const NdcRect& r = narrowed.eyes[e].rect;
-            if (r.empty()) continue;
-            NdcRect& a = all[e];
-            a = a.empty()
-                    ? r
-                    : NdcRect{std::min(a.x0, r.x0), std::min(a.y0, r.y0), std::max(a.x1, r.x1), std::max(a.y1, r.y1)};
-        }
+        for (size_t e = 0; e < 2; ++e) all[e] = united(all[e], narrowed.eyes[e].rect);
     }
     return all;
 }
@@ -193,12 +186,8 @@ std::optional<std::array<NdcRect, 2>> light_paths_rects(const DrawContext& ctx, 
         for (size_t e = 0; e < 2; ++e) {
             const NdcRect r = box_rect(region.data(), view.eyes[e]);
             if (r.empty()) continue;
-            const NdcRect wide =
-                intersect(widened(r, 2.0, ctx.frame.eye_width, ctx.frame.eye_height), view.eyes[e].rect);
-            NdcRect& a = all[e];
-            a = a.empty() ? wide
-                          : NdcRect{std::min(a.x0, wide.x0), std::min(a.y0, wide.y0), std::max(a.x1, wide.x1),
-                                    std::max(a.y1, wide.y1)};
+            all[e] = united(all[e],
+                            intersect(widened(r, 2.0, ctx.frame.eye_width, ctx.frame.eye_height), view.eyes[e].rect));
         }
     return all;
 }

@@ -21,6 +21,13 @@ inline NdcRect intersect(const NdcRect& a, const NdcRect& b) {
     return {std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
 }
 
+// The bounding rectangle of both (either may be empty).
+inline NdcRect united(const NdcRect& a, const NdcRect& b) {
+    if (a.empty()) return b;
+    if (b.empty()) return a;
+    return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
+}
+
 // `r` grown by `px` pixels on every side, for an eye image of width × height
 // pixels. The margins of a level (how far its draws and its culling may
 // reach past a portal's rectangle) are in pixels, set where they are used.
