@@ -53,13 +53,17 @@ Result<void> prepare_frame(RendererParts& parts, const FrameDesc& frame) {
     if (r.has_materials)
         if (Result<void> made = ensure_scene_program(programs, frame.stereo, true); !made) return made;
     ensure_lights(parts.lights.buffers, r, frame);  // before the variants: which kind of light buffers
-    const VariantNeeds needs{.objects = !r.object_set.props.empty() || frame.hands.has_value(),
-                             .volumes = r.has_volumes,
-                             .lit = r.lighting.lit,
-                             .lights_ubo = parts.lights.buffers.ubo,
-                             .lights_naive = r.lighting.lit && frame.naive_lights,
-                             .materials = r.has_materials,
-                             .light_loops = r.lighting.lit ? light_loops_needed(parts.lights.buffers) : 0u};
+    const VariantNeeds needs{
+        .objects = !r.object_set.props.empty() || frame.hands.has_value(),
+        .volumes = r.has_volumes,
+        .lit = r.lighting.lit,
+        .lights_ubo = parts.lights.buffers.ubo,
+        .lights_naive = r.lighting.lit && frame.naive_lights,
+        .materials = r.has_materials,
+        .light_loops = r.lighting.lit
+                           ? light_loops_needed(parts.lights.buffers,
+                                                frame.split_light_draws && frame.cull_portals && !frame.naive_lights)
+                           : 0u};
     if (Result<void> made = ensure_variants(programs, frame.stereo, needs); !made) return made;
     set_exposure(programs, frame.stereo, frame.exposure.value_or(r.exposure));
     if (Result<void> made = ensure_multisampled(programs, targets, frame); !made) return made;

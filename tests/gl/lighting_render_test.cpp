@@ -204,7 +204,22 @@ TEST(LightingRender, EachRoomDrawsWithTheLightLoopsItsImagesNeed) {
         EXPECT_EQ(buffers.direct[1], annex_lamp ? 1 : 0);
         EXPECT_EQ(render::light_loop_flags(buffers, 1), annex_lamp ? 0u : render::kLightsNoDirect);
         EXPECT_EQ(render::light_loop_flags(buffers, 2), render::kLightsNoPaths);
-        EXPECT_EQ(render::light_loops_needed(buffers), annex_lamp ? 5u : 6u);
+        // Split by where paths reach, a room with both kinds needs its direct
+        // loop alone too.
+        const auto bit = [](unsigned flags) { return 1u << render::light_loop_index(flags); };
+        const unsigned one_kind = bit(render::kLightsNoPaths) | (annex_lamp ? bit(0u) : bit(render::kLightsNoDirect));
+        EXPECT_EQ(render::light_loops_needed(buffers, true), one_kind);
+        EXPECT_EQ(render::light_loops_needed(buffers, false), one_kind);
+        if (annex_lamp) {  // without the vault's lamp, only the split needs the direct loop alone
+            layout::Layout dark_vault = l;
+            dark_vault.rooms[2].lights.clear();
+            const std::vector<lights::RoomLights> r2 =
+                lights::light_images(dark_vault, links::link_portals(dark_vault), 2);
+            const render::LightBuffers b2 =
+                render::upload_light_images(r2, dark_vault, std::vector<scene::CellOrigin>(r2.size()), 2);
+            EXPECT_EQ(render::light_loops_needed(b2, false), bit(0u));
+            EXPECT_EQ(render::light_loops_needed(b2, true), bit(0u) | bit(render::kLightsNoPaths));
+        }
         for (const LitView& v : kLitViews) {
             const render::FrameDesc f = lit_frame(rig.layout, v.room, v.position, v.yaw, v.pitch);
             expect_lit_agree(rig.render(f), lit_cpu_frame(rig.layout, f),

@@ -127,7 +127,7 @@ unsigned light_loop_flags(const LightBuffers& buffers, int room) {
     return (buffers.direct[c] == buffers.count[c] ? kLightsNoPaths : 0u) | blockers;
 }
 
-unsigned light_loops_needed(const LightBuffers& buffers) {
+unsigned light_loops_needed(const LightBuffers& buffers, bool split) {
     unsigned needed = 0u;
     for (size_t c = 0; c < buffers.count.size(); ++c) {
         if (buffers.count[c] == 0) continue;
@@ -135,7 +135,7 @@ unsigned light_loops_needed(const LightBuffers& buffers) {
         needed |= 1u << light_loop_index(loops);
         // A room with both kinds draws without its paths outside their lit
         // regions (render/objects/object_draw.cpp).
-        if ((loops & (kLightsNoDirect | kLightsNoPaths)) == 0u)
+        if (split && (loops & (kLightsNoDirect | kLightsNoPaths)) == 0u)
             needed |= 1u << light_loop_index(loops | kLightsNoPaths);
     }
     return needed;

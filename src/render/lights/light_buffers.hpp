@@ -59,8 +59,9 @@ PackedLights pack_light_images(const std::vector<lights::RoomLights>& rooms, con
 // The loop variant's bits (kLightsNoDirect, kLightsNoPaths) for `room`'s
 // images: 0 where it has both kinds, or none.
 unsigned light_loop_flags(const LightBuffers& buffers, int room);
-// Which loop variants the rooms need (VariantNeeds::light_loops).
-unsigned light_loops_needed(const LightBuffers& buffers);
+// Which loop variants the rooms need (VariantNeeds::light_loops); `split`:
+// the frame's lit rooms may be split by where their paths reach.
+unsigned light_loops_needed(const LightBuffers& buffers, bool split);
 
 LightBuffers upload_light_images(const std::vector<lights::RoomLights>& rooms, const layout::Layout& layout,
                                  const std::vector<scene::CellOrigin>& origins, int depth);
