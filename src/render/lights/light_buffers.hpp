@@ -56,15 +56,16 @@ PackedLights pack_light_images(const std::vector<lights::RoomLights>& rooms, con
 
 // Packs and uploads `rooms` (one per room, in room order) for `depth`; the
 // lights themselves (colour, intensity, range, cone) are the layout's.
-// The loop variant's bits (kLightsNoDirect, kLightsNoPaths) for `room`'s
-// images: 0 where it has both kinds, or none.
+LightBuffers upload_light_images(const std::vector<lights::RoomLights>& rooms, const layout::Layout& layout,
+                                 const std::vector<scene::CellOrigin>& origins, int depth);
+
+// The loop variant's bits for `room`'s images (kLightsNoDirect,
+// kLightsNoPaths, kLightsDirectBlockers): 0 where it has both kinds and its
+// own lights meet no blocker, or where it has no image.
 unsigned light_loop_flags(const LightBuffers& buffers, int room);
 // Which loop variants the rooms need (VariantNeeds::light_loops); `split`:
 // the frame's lit rooms may be split by where their paths reach.
 unsigned light_loops_needed(const LightBuffers& buffers, bool split);
-
-LightBuffers upload_light_images(const std::vector<lights::RoomLights>& rooms, const layout::Layout& layout,
-                                 const std::vector<scene::CellOrigin>& origins, int depth);
 
 // Binds the buffers at kLightImagesBinding and kLightRectsBinding (null: unbinds).
 void bind_light_buffers(const LightBuffers* buffers);

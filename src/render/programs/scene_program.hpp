@@ -43,7 +43,7 @@ struct SceneProgram {
     GLint to_light_space = -1;  // mat4: vertex → the lit room's coordinates less its origin
     GLint light_first = -1;     // int: the lit room's first image in the buffer at kLightImagesBinding
     GLint light_count = -1;     // int
-    GLint light_direct = -1;    // int: of them, the first with no rectangles (no path test)
+    GLint light_direct = -1;    // int: of them, the first with no apertures (the room's own lights)
     GLint light_ambient = -1;   // vec3: the lit room's ambient
     GLint light_origin = -1;    // vec3: the lit room's cell origin
 };
