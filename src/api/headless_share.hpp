@@ -14,7 +14,8 @@
 // their shadow maps, until all the renderers' are within
 // render::kMaxShadowMapBytes. A released renderer makes them again at its
 // next frame (the same pixels; its maps drawn again). One renderer's own
-// buffers are bounded as its frames are.
+// buffers are bounded as its frames are. They draw with the context's
+// programs (render::SharedPrograms): each variant is compiled once for all.
 #pragma once
 
 #include <cstddef>
@@ -42,11 +43,14 @@ public:
     // OSMesa share or a new OSMesa context (the commands' fallback).
     static Result<std::shared_ptr<HeadlessShare>> of_this_thread(std::optional<gl::Backend> requested);
 
-    explicit HeadlessShare(gl::Context context) : context_(std::move(context)) {}
+    explicit HeadlessShare(gl::Context context)
+        : context_(std::move(context)), programs_(render::make_shared_programs()) {}
     HeadlessShare(const HeadlessShare&) = delete;
     HeadlessShare& operator=(const HeadlessShare&) = delete;
 
     const gl::Context& context() const { return context_; }
+    // The programs its renderers draw with.
+    const render::SharedPrograms& programs() const { return programs_; }
 
     // A renderer made in the context joins as the most recently drawn, and
     // leaves before it is destroyed.
@@ -61,6 +65,9 @@ public:
 
 private:
     gl::Context context_;
+    // After the context: freed before it, while it is current (the last
+    // renderer's RendererParts makes it so).
+    render::SharedPrograms programs_;
     // A renderer may leave from another thread (a Python object collected
     // there) while this one draws.
     std::mutex mutex_;

@@ -74,7 +74,8 @@ FrameStats stats_of(const render::FrameStats& s) {
 }
 
 Expected<void> build(RendererParts& parts, const Layout& layout) {
-    Result<render::Renderer> made = layout.data().session.make_renderer(parts.state());
+    Result<render::Renderer> made = layout.data().session.make_renderer(
+        parts.state(), parts.share ? parts.share->programs() : render::SharedPrograms{});
     if (!made) return Error{made.error()};
     parts.renderer.emplace(std::move(*made));
     return {};

@@ -215,10 +215,12 @@ BenchResult run_bench(const BenchPlan& plan, const std::vector<BenchPose>& poses
                       gl::StateCache& state, const std::string& gl_renderer) {
     Measurer m{plan, poses, options, {}, {}};
     m.renderers.resize(plan.stages.size() + 1);
+    // One context: its renderers compile each program once.
+    const render::SharedPrograms programs = render::make_shared_programs();
     for (std::size_t stage = 0; stage < m.renderers.size(); ++stage)
         for (std::size_t v = 0; v < plan.sessions.size(); ++v)
-            m.renderers[stage].push_back(std::make_unique<render::Renderer>(
-                value_or_throw(plan.session_of(static_cast<int>(v), static_cast<int>(stage)).make_renderer(state))));
+            m.renderers[stage].push_back(std::make_unique<render::Renderer>(value_or_throw(
+                plan.session_of(static_cast<int>(v), static_cast<int>(stage)).make_renderer(state, programs))));
     for (const BenchConfig& c : plan.configs)
         m.results.push_back({c, {}, {}, {}, 0, 0, 0, 0, 0, 0, 0, {}, false, 0, 0, 0});
     m.probe();

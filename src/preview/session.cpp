@@ -25,9 +25,9 @@ session::WalkedFrame walk_shown(Shown& shown, gl::StateCache& state, const math:
                                 const math::View& eyes) {
     shown.driver->set_view(eyes);
     session::WalkedFrame f = shown.driver->step(physical, std::nullopt, time);
-    if (!f.changes.empty())
-        shown.renderer =
-            std::make_unique<render::Renderer>(value_or_throw(shown.driver->session().make_renderer(state)));
+    if (!f.changes.empty())  // the same programs: the change costs no compile
+        shown.renderer = std::make_unique<render::Renderer>(
+            value_or_throw(shown.driver->session().make_renderer(state, shown.renderer->programs())));
     return f;
 }
 
@@ -114,7 +114,8 @@ void reset_walk(PreviewSession& s) {
     const bool paired = &s.shown.driver->session() != s.shown.session.get();
     s.shown.driver = std::make_unique<session::WalkDriver>(*s.shown.session, s.options.frame);
     if (paired)
-        s.shown.renderer = std::make_unique<render::Renderer>(value_or_throw(s.shown.session->make_renderer(*s.state)));
+        s.shown.renderer = std::make_unique<render::Renderer>(
+            value_or_throw(s.shown.session->make_renderer(*s.state, s.shown.renderer->programs())));
     s.physical = start_pose(s.shown.session->layout());
 }
 

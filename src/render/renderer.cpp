@@ -45,7 +45,7 @@ Result<void> prepare_frame(RendererParts& parts, const FrameDesc& frame) {
                      " samples a frame, more than the renderer's bound of " +
                      std::to_string(math::limits::kMaxFrameSamples) + " (2 x 8192 x 8192; docs/bounded-work.md)"};
     const SceneData& r = parts.scene;
-    Programs& programs = parts.programs;
+    Programs& programs = *parts.programs;
     FrameTargets& targets = parts.targets;
     if (Result<void> made = ensure_frame_target(targets, 2 * frame.eye_width, frame.eye_height, frame.depth); !made)
         return made;
@@ -166,7 +166,7 @@ Result<void> draw_frame(RendererParts& parts, const FrameDesc& frame, FrameStats
     draw_hidden_mask(state, target, parts.targets.hidden_mask, scratch.stats);
 
     FrameProfiler profiler;
-    const Programs& programs = parts.programs;
+    const Programs& programs = *parts.programs;
     const int mode = mode_index(frame.stereo);
     const DrawContext ctx{.state = state,
                           .scene = r,
@@ -200,17 +200,22 @@ Result<void> draw_frame(RendererParts& parts, const FrameDesc& frame, FrameStats
 
 }  // namespace
 
-Result<Renderer> Renderer::create(gl::StateCache& state, const scene::Scene& scene) {
+SharedPrograms make_shared_programs() { return std::make_shared<Programs>(); }
+
+Result<Renderer> Renderer::create(gl::StateCache& state, const scene::Scene& scene, SharedPrograms programs_in) {
     auto parts = std::make_unique<RendererParts>();
     parts->state = &state;
     copy_scene(parts->scene, scene);
     // RendererParts stays where it is: the walks keep a pointer to the set.
     parts->kept.prop_walks = std::make_unique<walk::PropWalks>(parts->scene.object_set);
-    Programs& programs = parts->programs;
-    programs.empty_vao = gl::create_vertex_array();
-    Result<ClearDepthProgram> clear = build_clear_depth_program();
-    if (!clear) return clear;
-    programs.clear_depth = std::move(*clear);
+    parts->programs = programs_in ? std::move(programs_in) : make_shared_programs();
+    Programs& programs = *parts->programs;
+    if (!programs.empty_vao) {  // the first renderer of these programs
+        Result<ClearDepthProgram> clear = build_clear_depth_program();
+        if (!clear) return clear;
+        programs.clear_depth = std::move(*clear);
+        programs.empty_vao = gl::create_vertex_array();
+    }
     if (Result<void> made = ensure_scene_program(programs, StereoMode::ClipShift, false); !made) return made;
     return Renderer(std::move(parts));
 }
@@ -221,6 +226,8 @@ Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 Renderer::~Renderer() = default;
 
 const Target& Renderer::target() const { return parts_->targets.target; }
+
+const SharedPrograms& Renderer::programs() const { return parts_->programs; }
 
 Result<void> Renderer::draw(const FrameDesc& frame, FrameStats* stats_out) {
     FrameDesc adjusted;

@@ -24,6 +24,17 @@
 namespace impossible::render {
 
 struct RendererParts;
+struct Programs;
+
+// The programs of one GL context (programs/programs.hpp), for the renderers
+// that draw in it to share: each is built at the first frame of any of them
+// that needs it. A program depends only on its stereo mode and variant, and
+// every uniform it reads is set before each draw or frame that uses it, so a
+// renderer finds nothing of another's in it. On llvmpipe a program's compiled
+// variants are most of what a lit renderer holds (docs/bounded-work.md).
+// Freed by its last holder, in its context (current).
+using SharedPrograms = std::shared_ptr<Programs>;
+SharedPrograms make_shared_programs();
 
 // A frame drawn and read back.
 struct RenderedFrame {
@@ -35,7 +46,9 @@ class Renderer {
 public:
     // Uploads the scene and builds the default (clip-shift) program. `state`
     // is the cache of the current context and must outlive the renderer.
-    static Result<Renderer> create(gl::StateCache& state, const scene::Scene& scene);
+    // `programs`: the context's, shared with its other renderers (none: the
+    // renderer's own).
+    static Result<Renderer> create(gl::StateCache& state, const scene::Scene& scene, SharedPrograms programs = {});
 
     Renderer(Renderer&&) noexcept;
     Renderer& operator=(Renderer&&) noexcept;
@@ -53,6 +66,10 @@ public:
     // into when multisampled (e.g. for a window to show or read back); empty
     // before the first frame.
     const Target& target() const;
+
+    // The programs it draws with, for a renderer that takes its place in the
+    // same context (a layout changed while walking) to draw with at once.
+    const SharedPrograms& programs() const;
 
     // The frame buffers it keeps between frames, remade by a frame that
     // finds them gone (kept_buffers.cpp): the samples of its targets (the

@@ -4,7 +4,9 @@
 //   its GPU buffers, and what a lit layout gives to make its light images.
 //   Made by Renderer::create; drawing a frame only reads it.
 // - Programs (programs/programs.hpp): each built before the first frame that
-//   needs it (a stereo mode's, a feature's) and never changed after.
+//   needs it (a stereo mode's, a feature's) and never changed after; shared
+//   with the other renderers of the context where the caller gave them
+//   (renderer.hpp, SharedPrograms).
 // - LightState (lights/light_state.hpp): a lit layout's light images on the
 //   GPU and the props' shadow maps, remade when a frame's light setting (its
 //   light depth, shadows, shadow map size) or its props' places differ from
@@ -22,6 +24,7 @@
 #include "render/draw/frame_scratch.hpp"
 #include "render/lights/light_state.hpp"
 #include "render/programs/programs.hpp"
+#include "render/renderer.hpp"
 #include "render/scene_data.hpp"
 #include "render/targets/frame_targets.hpp"
 #include "walk/prop_walks.hpp"
@@ -40,7 +43,7 @@ struct KeptBetweenFrames {
 struct RendererParts {
     gl::StateCache* state = nullptr;  // the context's; outlives the renderer
     SceneData scene;
-    Programs programs;
+    SharedPrograms programs;  // never null
     LightState lights;
     FrameTargets targets;
     KeptBetweenFrames kept;

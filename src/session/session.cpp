@@ -13,8 +13,8 @@ Session::Session(std::shared_ptr<const layout::Layout> layout, std::shared_ptr<c
 
 scene::Scene Session::build_scene() const { return scene::build_scene(*layout_, *links_); }
 
-Result<render::Renderer> Session::make_renderer(gl::StateCache& state) const {
-    return render::Renderer::create(state, build_scene());
+Result<render::Renderer> Session::make_renderer(gl::StateCache& state, render::SharedPrograms programs) const {
+    return render::Renderer::create(state, build_scene(), std::move(programs));
 }
 
 Result<trace::Scene> Session::make_trace_scene() const { return trace::prepare_scene(*layout_, *links_); }

@@ -39,8 +39,9 @@ public:
     // The rasteriser's cells and meshes.
     scene::Scene build_scene() const;
     // A renderer in the current GL context, whose state cache is `state`
-    // (it must outlive the renderer).
-    Result<render::Renderer> make_renderer(gl::StateCache& state) const;
+    // (it must outlive the renderer); `programs`: the context's, where its
+    // renderers share them (render::SharedPrograms).
+    Result<render::Renderer> make_renderer(gl::StateCache& state, render::SharedPrograms programs = {}) const;
     // The tracer's scene (trace::trace_frame draws from it).
     Result<trace::Scene> make_trace_scene() const;
     // A walker from the layout's start pose in `room` (the start room when

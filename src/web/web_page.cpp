@@ -54,6 +54,12 @@ bool ensure_context() {
     return true;
 }
 
+// The programs of the page's context, from the renderer it has (none before
+// the first): another layout or a change while walking costs no compile.
+render::SharedPrograms shared_programs() {
+    return page.renderer ? page.renderer->programs() : render::SharedPrograms{};
+}
+
 // Opens the layout at `path` in the module's file system ("" the built-in
 // default); on failure the one before stays open.
 bool open_layout(const std::string& path) {
@@ -62,7 +68,7 @@ bool open_layout(const std::string& path) {
         auto session = std::make_unique<session::Session>(
             cli::load_layout_or_default(path.empty() ? std::nullopt : std::optional<std::string>(path)));
         page.context->state().invalidate();
-        Result<render::Renderer> renderer = session->make_renderer(page.context->state());
+        Result<render::Renderer> renderer = session->make_renderer(page.context->state(), shared_programs());
         if (!renderer) return fail(renderer.error());
         page.renderer.reset();
         page.driver.reset();
@@ -100,7 +106,7 @@ bool follow_pairing() {
     const session::Session& walked = page.driver->session();
     if (&walked.layout() == page.drawn_layout) return true;
     page.context->state().invalidate();
-    Result<render::Renderer> renderer = walked.make_renderer(page.context->state());
+    Result<render::Renderer> renderer = walked.make_renderer(page.context->state(), shared_programs());
     if (!renderer) return fail(renderer.error());
     page.renderer.reset();
     page.renderer.emplace(std::move(*renderer));

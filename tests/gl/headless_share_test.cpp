@@ -3,7 +3,8 @@
 // the least recently drawn renderer's released first; a released renderer
 // draws its next frame with the same pixels. lamp_hall's two maps at
 // 1024² texels take 52 MiB a renderer, so the fifth renderer's frame
-// releases the first's maps.
+// releases the first's maps. Renderers that share a context's programs
+// draw what each draws alone.
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -78,6 +79,49 @@ TEST(HeadlessShare, TheRenderersOfAThreadKeepTheirShadowMapsWithinTheBound) {
     EXPECT_EQ(rig.renderers[0]->kept().shadow_map_bytes, one);
     EXPECT_EQ(rig.renderers[static_cast<std::size_t>(8 - fit)]->kept().shadow_map_bytes, 0);  // now the oldest
     EXPECT_LE(rig.maps_kept(), bound);
+}
+
+// Renderers of one context draw with its programs (render::SharedPrograms).
+// Two layouts that need different variants (lights and shadow lookups; a
+// volume), drawn in turn in every stereo mode, give the bytes each gives
+// alone in a fresh context: nothing one sets in a program is left for the
+// other.
+TEST(HeadlessShare, RenderersThatShareProgramsDrawWhatEachDrawsAlone) {
+    const layout::Layout lamp = testing::example_layout("lamp_hall.json");
+    const layout::Layout lab = testing::example_layout("scanner_lab.json");
+    render::FrameDesc lamp_frame;
+    lamp_frame.head = {{-1.6, 1.2, 1.6}, -70.0, 0.0, 0.0};
+    lamp_frame.room = layout::find_room(lamp, "hall");
+    lamp_frame.eye_width = 96;
+    lamp_frame.eye_height = 54;
+    render::FrameDesc lab_frame = lamp_frame;
+    lab_frame.head = {{0.3, 1.6, 2.0}, 10.0, 0.0, 0.0};
+    lab_frame.room = layout::find_room(lab, "lab");
+    Result<gl::Context> context = gl::create_context(gl::Backend::Egl);
+    ASSERT_TRUE(context.has_value()) << context.error();
+    Result<render::Renderer> a = render::Renderer::create(context->state(), scene::build_scene(lamp));
+    ASSERT_TRUE(a.has_value()) << a.error();
+    Result<render::Renderer> b = render::Renderer::create(context->state(), scene::build_scene(lab), a->programs());
+    ASSERT_TRUE(b.has_value()) << b.error();
+    EXPECT_EQ(a->programs().get(), b->programs().get());
+    for (const render::StereoMode mode :
+         {render::StereoMode::ClipShift, render::StereoMode::ViewportIndex, render::StereoMode::TwoPass}) {
+        lamp_frame.stereo = lab_frame.stereo = mode;
+        const image::Image lamp_alone = testing::render_once(gl::Backend::Egl, lamp, lamp_frame);
+        const image::Image lab_alone = testing::render_once(gl::Backend::Egl, lab, lab_frame);
+        ASSERT_TRUE(gl::make_current(*context).has_value());
+        context->state().invalidate();  // render_once's contexts were current
+        for (int turn = 0; turn < 2; ++turn) {
+            Result<render::RenderedFrame> lamp_drawn = a->render(lamp_frame);
+            ASSERT_TRUE(lamp_drawn.has_value()) << lamp_drawn.error();
+            Result<render::RenderedFrame> lab_drawn = b->render(lab_frame);
+            ASSERT_TRUE(lab_drawn.has_value()) << lab_drawn.error();
+            EXPECT_EQ(lamp_drawn->image.rgb, lamp_alone.rgb) << static_cast<int>(mode) << " " << turn;
+            EXPECT_EQ(lamp_drawn->image.ids, lamp_alone.ids) << static_cast<int>(mode) << " " << turn;
+            EXPECT_EQ(lab_drawn->image.rgb, lab_alone.rgb) << static_cast<int>(mode) << " " << turn;
+            EXPECT_EQ(lab_drawn->image.ids, lab_alone.ids) << static_cast<int>(mode) << " " << turn;
+        }
+    }
 }
 
 }  // namespace
