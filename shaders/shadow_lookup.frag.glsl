@@ -11,10 +11,12 @@
 // four-argument light_visible), or a fixed 2 · SHADOW_SLOPE_TEXELS without it.
 //
 // Only the LIGHTS variants compile it (it goes before lighting.frag.glsl,
-// which then uses this light_visible instead of its own, always 1); the
+// which then uses this light_visible instead of its own, always 1), and not
+// LIGHTS_NO_SHADOWS, drawn where no prop's shadow can fall
+// (render/lights/shadow_regions.hpp) or no image has a map; the
 // renderer binds the maps for every frame of a lit layout
 // (render/lights/shadow_maps.hpp, prepare_shadow_maps), with shadows off too.
-#if defined(LIGHTS)
+#if defined(LIGHTS) && !defined(LIGHTS_NO_SHADOWS)
 #define SHADOWS
 // Texels of bias per unit of tan(incidence): a nearest texel's direction is
 // within half a texel (along a diagonal, 0.71 texel) of the point's.

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/matrix.hpp>
+
 #include "math/portal.hpp"
 
 namespace impossible::lights {
@@ -37,6 +39,24 @@ LitRegion lit_region(const LightImage& image, const glm::dvec3& room_min, const 
         out.corners[static_cast<size_t>(k) + 4] = image.position + s * (box[k] - image.position);
     }
     return out;
+}
+
+bool shadow_region(const glm::dvec3& light, const glm::dmat4& to_box, const glm::dvec3& lo, const glm::dvec3& hi,
+                   double reach, std::array<glm::dvec3, 16>& corners_out) {
+    const glm::dvec3 l = glm::dvec3(to_box * glm::dvec4(light, 1.0));
+    const double dmin = glm::length(glm::max(glm::max(lo - l, l - hi), glm::dvec3(0.0)));
+    if (!(dmin > kMinApertureDistance)) return false;
+    // A point L' + t (q - L') with q in the box lies at least t · dmin from
+    // L': within `reach` only for t <= reach / dmin.
+    const double t = std::max(1.0, reach / dmin);
+    const glm::dmat4 from_box = glm::inverse(to_box);
+    for (int k = 0; k < 8; ++k) {
+        const glm::dvec3 own((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
+        const glm::dvec3 q = glm::dvec3(from_box * glm::dvec4(own, 1.0));
+        corners_out[static_cast<size_t>(k)] = q;
+        corners_out[static_cast<size_t>(k) + 8] = light + t * (q - light);
+    }
+    return true;
 }
 
 }  // namespace impossible::lights

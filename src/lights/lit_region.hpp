@@ -10,6 +10,7 @@
 
 #include <array>
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include "lights/light_images.hpp"
@@ -32,5 +33,15 @@ struct LitRegion {
 LitRegion lit_region(const LightImage& image, const glm::dvec3& room_min, const glm::dvec3& room_max);
 
 inline constexpr double kMinApertureDistance = 1e-6;
+
+// Where an occluder may shadow a point from a light at L': behind it on rays
+// from L', the box and the same box pushed away from L' far enough to pass
+// every point within `reach` of L' (the convex hull of the 16 corners holds
+// that part of its shadow). `to_box` maps the points' coordinates to the
+// box's own (a rigid map), where it is [lo, hi]; `corners_out` is in the
+// points' coordinates. False where L' lies within kMinApertureDistance of
+// the box (its shadow may be anywhere).
+bool shadow_region(const glm::dvec3& light, const glm::dmat4& to_box, const glm::dvec3& lo, const glm::dvec3& hi,
+                   double reach, std::array<glm::dvec3, 16>& corners_out);
 
 }  // namespace impossible::lights

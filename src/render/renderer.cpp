@@ -8,6 +8,7 @@
 #include "math/eyes.hpp"
 #include "math/projection.hpp"
 #include "math/view_limits.hpp"
+#include "render/lights/shadow_regions.hpp"
 #include "render/objects/frame_objects.hpp"
 #include "render/portals/passes.hpp"
 #include "render/portals/portal_glass.hpp"
@@ -61,8 +62,8 @@ Result<void> prepare_frame(RendererParts& parts, const FrameDesc& frame) {
         .lights_naive = r.lighting.lit && frame.naive_lights,
         .materials = r.has_materials,
         .light_loops = r.lighting.lit
-                           ? light_loops_needed(parts.lights.buffers,
-                                                frame.split_light_draws && frame.cull_portals && !frame.naive_lights)
+                           ? light_loops_needed(parts.lights.buffers, frame.shadows && frame.shadow_map_size > 0,
+                                                frame.split_light_draws && frame.cull_portals)
                            : 0u};
     if (Result<void> made = ensure_variants(programs, frame.stereo, needs); !made) return made;
     set_exposure(programs, frame.stereo, frame.exposure.value_or(r.exposure));
@@ -159,6 +160,8 @@ Result<void> draw_frame(RendererParts& parts, const FrameDesc& frame, FrameStats
                                                        lights.buffers.rooms, frame, scratch.stats);
             !shadows)
             return shadows;
+        lights.buffers.shadow_regions =
+            frame_shadow_regions(lights.shadow_maps, r, scratch.objects, lights.buffers.rooms, frame);
         bind_light_buffers(&lights.buffers);
     }
     const Target& target = drawing_target(parts.targets, frame);

@@ -204,12 +204,21 @@ TEST(LightingRender, EachRoomDrawsWithTheLightLoopsItsImagesNeed) {
         EXPECT_EQ(buffers.direct[1], annex_lamp ? 1 : 0);
         EXPECT_EQ(render::light_loop_flags(buffers, 1), annex_lamp ? 0u : render::kLightsNoDirect);
         EXPECT_EQ(render::light_loop_flags(buffers, 2), render::kLightsNoPaths);
-        // Split by where paths reach, a room with both kinds needs its direct
-        // loop alone too.
+        // Not split: each room's loops, with the lookups. Split: with maps,
+        // each with and without the lookups (without maps, only without),
+        // and a room with both kinds its direct loop alone too.
         const auto bit = [](unsigned flags) { return 1u << render::light_loop_index(flags); };
+        const auto no_lookups = [](unsigned loops) {
+            unsigned out = 0u;
+            for (unsigned f = 0; f < 8u; ++f)
+                if (loops & (1u << f)) out |= 1u << (f + 8u);
+            return out;
+        };
         const unsigned one_kind = bit(render::kLightsNoPaths) | (annex_lamp ? bit(0u) : bit(render::kLightsNoDirect));
-        EXPECT_EQ(render::light_loops_needed(buffers, true), one_kind);
-        EXPECT_EQ(render::light_loops_needed(buffers, false), one_kind);
+        EXPECT_EQ(render::light_loops_needed(buffers, true, false), one_kind);
+        EXPECT_EQ(render::light_loops_needed(buffers, false, false), one_kind);
+        EXPECT_EQ(render::light_loops_needed(buffers, true, true), one_kind | no_lookups(one_kind));
+        EXPECT_EQ(render::light_loops_needed(buffers, false, true), no_lookups(one_kind));
         if (annex_lamp) {  // without the vault's lamp, only the split needs the direct loop alone
             layout::Layout dark_vault = l;
             dark_vault.rooms[2].lights.clear();
@@ -217,8 +226,9 @@ TEST(LightingRender, EachRoomDrawsWithTheLightLoopsItsImagesNeed) {
                 lights::light_images(dark_vault, links::link_portals(dark_vault), 2);
             const render::LightBuffers b2 =
                 render::upload_light_images(r2, dark_vault, std::vector<scene::CellOrigin>(r2.size()), 2);
-            EXPECT_EQ(render::light_loops_needed(b2, false), bit(0u));
-            EXPECT_EQ(render::light_loops_needed(b2, true), bit(0u) | bit(render::kLightsNoPaths));
+            const unsigned both = bit(0u) | bit(render::kLightsNoPaths);
+            EXPECT_EQ(render::light_loops_needed(b2, true, false), bit(0u));
+            EXPECT_EQ(render::light_loops_needed(b2, true, true), both | no_lookups(both));
         }
         for (const LitView& v : kLitViews) {
             const render::FrameDesc f = lit_frame(rig.layout, v.room, v.position, v.yaw, v.pitch);

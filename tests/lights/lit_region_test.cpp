@@ -6,7 +6,9 @@
 // all of it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <random>
 
 #include <glm/geometric.hpp>
@@ -114,6 +116,69 @@ TEST(LitRegion, ALightInFrontOfItsFirstApertureReachesNothing) {
     // In its plane: as wide as the room.
     image.position = {2.0, 2.0, 0.3};
     EXPECT_EQ(lit_region(image, l.rooms[0].min, l.rooms[0].max).kind, LitRegion::Kind::Everywhere);
+}
+
+// Whether the segment from a to b meets the box [lo, hi] (slab test).
+bool segment_meets_box(const dvec3& a, const dvec3& b, const dvec3& lo, const dvec3& hi) {
+    double t0 = 0.0, t1 = 1.0;
+    for (int k = 0; k < 3; ++k) {
+        const double d = b[k] - a[k];
+        if (std::abs(d) < 1e-300) {
+            if (a[k] < lo[k] || a[k] > hi[k]) return false;
+            continue;
+        }
+        double u = (lo[k] - a[k]) / d, v = (hi[k] - a[k]) / d;
+        if (u > v) std::swap(u, v);
+        t0 = std::max(t0, u);
+        t1 = std::min(t1, v);
+        if (t0 > t1) return false;
+    }
+    return true;
+}
+
+bool in_hull16(const std::array<dvec3, 16>& c, const dvec3& p) {
+    // The hull of a box and the same box scaled about L' (t >= 1) is the
+    // union of the boxes scaled by every t between: p is in it when p lies
+    // in the box scaled by some t in [1, t_max] (checked on a fine grid of t
+    // and with a margin, in the box's own coordinates).
+    const dvec3 lo = glm::min(c[0], c[7]), hi = glm::max(c[0], c[7]);
+    const dvec3 flo = glm::min(c[8], c[15]), fhi = glm::max(c[8], c[15]);
+    for (int k = 0; k <= 4000; ++k) {
+        const double s = k / 4000.0;
+        const dvec3 a = glm::mix(lo, flo, s), b = glm::mix(hi, fhi, s);
+        const dvec3 m = 1e-9 + 2e-3 * (b - a);
+        if (glm::all(glm::greaterThanEqual(p, a - m)) && glm::all(glm::lessThanEqual(p, b + m))) return true;
+    }
+    return false;
+}
+
+TEST(ShadowRegion, EveryPointABoxShadowsLiesInItsHull) {
+    // Axis-aligned boxes (so the hull is easy to test from outside), lights
+    // at random places around them, points in a 10 m cube: every point whose
+    // segment to the light meets the box lies in the hull.
+    std::mt19937_64 rng(27);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int shadowed = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        const dvec3 lo(unit(rng) * 2 - 1, unit(rng), unit(rng) * 2 - 1);
+        const dvec3 hi = lo + dvec3(0.2 + unit(rng), 0.2 + unit(rng), 0.2 + unit(rng));
+        dvec3 light;
+        do {
+            light = dvec3(unit(rng) * 8 - 4, unit(rng) * 4, unit(rng) * 8 - 4);
+        } while (glm::all(glm::greaterThan(light, lo - 0.05)) && glm::all(glm::lessThan(light, hi + 0.05)));
+        std::array<dvec3, 16> hull;
+        ASSERT_TRUE(shadow_region(light, glm::dmat4(1.0), lo, hi, 20.0, hull));
+        for (int k = 0; k < 2000; ++k) {
+            const dvec3 p(unit(rng) * 10 - 5, unit(rng) * 10 - 5, unit(rng) * 10 - 5);
+            if (!segment_meets_box(light, p, lo, hi)) continue;
+            ++shadowed;
+            ASSERT_TRUE(in_hull16(hull, p)) << "trial " << trial;
+        }
+    }
+    EXPECT_GT(shadowed, 2000);
+    // A light inside the box: its shadow may be anywhere.
+    std::array<dvec3, 16> hull;
+    EXPECT_FALSE(shadow_region(dvec3(0.5), glm::dmat4(1.0), dvec3(0.0), dvec3(1.0), 20.0, hull));
 }
 
 }  // namespace

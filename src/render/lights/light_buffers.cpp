@@ -127,16 +127,22 @@ unsigned light_loop_flags(const LightBuffers& buffers, int room) {
     return (buffers.direct[c] == buffers.count[c] ? kLightsNoPaths : 0u) | blockers;
 }
 
-unsigned light_loops_needed(const LightBuffers& buffers, bool split) {
+unsigned light_loops_needed(const LightBuffers& buffers, bool shadows, bool split) {
     unsigned needed = 0u;
     for (size_t c = 0; c < buffers.count.size(); ++c) {
         if (buffers.count[c] == 0) continue;
         const unsigned loops = light_loop_flags(buffers, static_cast<int>(c));
-        needed |= 1u << light_loop_index(loops);
+        std::vector<unsigned> kinds = {loops};
         // A room with both kinds draws without its paths outside their lit
         // regions (render/objects/object_draw.cpp).
-        if (split && (loops & (kLightsNoDirect | kLightsNoPaths)) == 0u)
-            needed |= 1u << light_loop_index(loops | kLightsNoPaths);
+        if (split && (loops & (kLightsNoDirect | kLightsNoPaths)) == 0u) kinds.push_back(loops | kLightsNoPaths);
+        for (const unsigned k : kinds) {
+            // Split, the parts outside the props' shadows (and every part,
+            // without maps) skip the lookups; the rest, or every draw when
+            // not split, has them.
+            if (shadows || !split) needed |= 1u << light_loop_index(k);
+            if (split) needed |= 1u << light_loop_index(k | kLightsNoShadows);
+        }
     }
     return needed;
 }

@@ -40,6 +40,9 @@ struct LightBuffers {
     // the room.
     std::vector<std::optional<std::vector<std::array<glm::dvec3, 8>>>> path_regions;
     bool ubo = false;  // both fit kLightUboVec4s: bound as uniform blocks (kLightsUbo variants)
+    // Per room, this frame's: where its images' shadow maps may shadow a
+    // point (render/lights/shadow_regions.hpp); empty while none is known.
+    std::vector<std::optional<std::vector<std::array<glm::dvec3, 16>>>> shadow_regions;
 };
 
 // The GPU layout of the images: kLightImageVec4s vec4s per image, 4 per rectangle.
@@ -63,9 +66,11 @@ LightBuffers upload_light_images(const std::vector<lights::RoomLights>& rooms, c
 // kLightsNoPaths, kLightsDirectBlockers): 0 where it has both kinds and its
 // own lights meet no blocker, or where it has no image.
 unsigned light_loop_flags(const LightBuffers& buffers, int room);
-// Which loop variants the rooms need (VariantNeeds::light_loops); `split`:
-// the frame's lit rooms may be split by where their paths reach.
-unsigned light_loops_needed(const LightBuffers& buffers, bool split);
+// Which loop variants the rooms need (VariantNeeds::light_loops); `shadows`:
+// the frame has shadow maps; `split`: the frame's lit rooms may be split by
+// where their paths and the props' shadows reach (kLightsNoShadows drawn
+// outside the shadows, and everywhere without maps).
+unsigned light_loops_needed(const LightBuffers& buffers, bool shadows, bool split);
 
 // Binds the buffers at kLightImagesBinding and kLightRectsBinding (null: unbinds).
 void bind_light_buffers(const LightBuffers* buffers);

@@ -3,17 +3,30 @@
 
 namespace impossible::render {
 
+namespace {
+
+// No lookup can find a prop's shadow: the room's images have no maps, or
+// the part of the view's own cell lies outside their shadows' hulls.
+bool without_shadows(const DrawContext& ctx, size_t c, const LevelView* view) {
+    const std::vector<std::optional<std::vector<std::array<glm::dvec3, 16>>>>& regions = ctx.lights.shadow_regions;
+    if (c >= regions.size() || !regions[c]) return false;
+    return regions[c]->empty() || (view && view->outside_shadows && static_cast<int>(c) == view->cell);
+}
+
+}  // namespace
+
 unsigned light_flags(const DrawContext& ctx, int room, const LevelView* view) {
     if (!ctx.scene.lighting.lit) return 0u;
     const auto c = static_cast<size_t>(room);
     if (ctx.lights.count[c] == 0) return kLights | kLightsAmbient;
+    const unsigned shadows = without_shadows(ctx, c, view) ? kLightsNoShadows : 0u;
     if (view && view->outside_light_paths && room == view->cell) {
         if (ctx.lights.direct[c] == 0) return kLights | kLightsAmbient;
         return kLights | (ctx.lights.ubo ? kLightsUbo : 0u) | kLightsNoPaths |
-               (ctx.lights.direct_blockers[c] ? kLightsDirectBlockers : 0u);
+               (ctx.lights.direct_blockers[c] ? kLightsDirectBlockers : 0u) | shadows;
     }
     return kLights | (ctx.lights.ubo ? kLightsUbo : 0u) | (ctx.frame.naive_lights ? kLightsNaive : 0u) |
-           light_loop_flags(ctx.lights, room);
+           light_loop_flags(ctx.lights, room) | shadows;
 }
 
 void set_room_lights(const DrawContext& ctx, const SceneProgram& program, int room, bool count) {

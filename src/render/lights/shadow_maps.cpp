@@ -10,6 +10,7 @@
 
 #include "gl/shader.hpp"
 #include "math/projection.hpp"
+#include "render/lights/shadow_regions.hpp"
 #include "render/objects/frame_objects.hpp"
 #include "render/programs/scene_program.hpp"
 #include "render/scene_data.hpp"
@@ -309,12 +310,7 @@ void unbind_shadow_maps() { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShadowLa
 Result<void> prepare_shadow_maps(ShadowMaps& maps, gl::StateCache& state, const SceneData& r,
                                  const FrameObjects& objects, const std::vector<lights::RoomLights>& rooms,
                                  const FrameDesc& frame, FrameStats& stats) {
-    const ShadowSources sources{.gpu = &r.gpu,
-                                .objects = &r.objects,
-                                .origins = &r.cell_origins,
-                                .object_meshes = &r.object_meshes,
-                                .instances = &objects.instances,
-                                .instance_mesh = &objects.mesh};
+    const ShadowSources sources = shadow_sources(r, objects);
     Result<int> drawn = update_shadow_maps(maps, state, sources, rooms, frame);
     if (!drawn) return Error{drawn.error()};
     stats.shadow_maps_drawn = *drawn;

@@ -152,6 +152,7 @@ std::vector<gl::ScissorRect> outside_of(const gl::ScissorRect& level, const std:
 struct PartKind {
     bool outside_volumes = false;
     bool outside_light_paths = false;
+    bool outside_shadows = false;
 };
 
 // The cell's batches and instances of a level within `scissor`, by the
@@ -161,6 +162,7 @@ void draw_part(const DrawContext& ctx, const LevelView& view, const Scissor& sci
     LevelView part = view;
     part.outside_volumes = kind.outside_volumes;
     part.outside_light_paths = kind.outside_light_paths;
+    part.outside_shadows = kind.outside_shadows;
     const SceneProgram& shaded = cell_program(ctx, part, light_flags(ctx, part.cell, &part));
     if (shaded.volume_count >= 0)
         ctx.scratch.stats.volume_variant_pixels += scissor ? static_cast<long>(scissor->width) * scissor->height
@@ -204,12 +206,37 @@ bool light_split_pays(const DrawContext& ctx, size_t cell) {
     return indices <= kMaxLightSplitIndices;
 }
 
+// Where a prop's shadow may fall on view.cell, per eye: the union of its
+// images' shadow hulls' rectangles (render/lights/shadow_regions.hpp; two
+// pixels of margin). nullopt where the split does not apply: shadows
+// anywhere, or none at all (then every draw of the room skips the lookups).
+std::optional<std::array<NdcRect, 2>> shadow_rects(const DrawContext& ctx, const LevelView& view) {
+    const auto c = static_cast<size_t>(view.cell);
+    if (!ctx.scene.lighting.lit || !ctx.frame.cull_portals || !ctx.frame.split_light_draws ||
+        c >= ctx.lights.shadow_regions.size() || !ctx.lights.shadow_regions[c] ||
+        ctx.lights.shadow_regions[c]->empty() || ctx.lights.count[c] == 0 || !ctx.scene.volumes[c].empty() ||
+        !light_split_pays(ctx, c))
+        return std::nullopt;
+    std::array<NdcRect, 2> all{NdcRect::none(), NdcRect::none()};
+    for (const std::array<math::dvec3, 16>& hull : *ctx.lights.shadow_regions[c])
+        for (size_t e = 0; e < 2; ++e) {
+            const NdcRect r = hull_rect(hull.data(), 16, view.eyes[e]);
+            if (r.empty()) continue;
+            all[e] = united(all[e],
+                            intersect(widened(r, 2.0, ctx.frame.eye_width, ctx.frame.eye_height), view.eyes[e].rect));
+        }
+    return all;
+}
+
+using PartDraw = void (*)(const DrawContext&, const LevelView&, const Scissor&, PartKind, bool);
+
 // The level in parts: within `inside` (per eye) as `in`, the rest as
-// `out`. The parts are scissor rectangles of whole pixels, disjoint, and
-// every draw keeps the level's own clip rectangles, so each pixel is drawn
-// by one draw of the same triangles as before.
+// `out`, each part by `draw` (the first counting the room's light images
+// when `count`). The parts are scissor rectangles of whole pixels,
+// disjoint, and every draw keeps the level's own clip rectangles, so each
+// pixel is drawn by one draw of the same triangles as before.
 void draw_in_parts(const DrawContext& ctx, const LevelView& view, const Scissor& scissor,
-                   const std::array<NdcRect, 2>& inside, PartKind in, PartKind out) {
+                   const std::array<NdcRect, 2>& inside, PartKind in, PartKind out, bool count, PartDraw draw) {
     const gl::ScissorRect level =
         scissor.value_or(gl::ScissorRect{0, 0, 2 * ctx.frame.eye_width, ctx.frame.eye_height});
     std::vector<gl::ScissorRect> holes;
@@ -226,15 +253,27 @@ void draw_in_parts(const DrawContext& ctx, const LevelView& view, const Scissor&
         const int x0 = std::min(a.x, b.x), y0 = std::min(a.y, b.y);
         holes = {{x0, y0, std::max(a.x + a.width, b.x + b.width) - x0, std::max(a.y + a.height, b.y + b.height) - y0}};
     }
-    bool first = true;
     for (const gl::ScissorRect& r : outside_of(level, holes)) {
-        draw_part(ctx, view, r, out, first);
-        first = false;
+        draw(ctx, view, r, out, count);
+        count = false;
     }
     for (const gl::ScissorRect& h : holes) {
-        draw_part(ctx, view, h, in, first);
-        first = false;
+        draw(ctx, view, h, in, count);
+        count = false;
     }
+}
+
+// A part of a lit level, split again where the props' shadows may fall:
+// outside, without the shadow-map lookups.
+void draw_shadow_parts(const DrawContext& ctx, const LevelView& view, const Scissor& scissor, PartKind kind,
+                       bool count) {
+    if (const std::optional<std::array<NdcRect, 2>> inside = shadow_rects(ctx, view)) {
+        PartKind out = kind;
+        out.outside_shadows = true;
+        draw_in_parts(ctx, view, scissor, *inside, kind, out, count, draw_part);
+        return;
+    }
+    draw_part(ctx, view, scissor, kind, count);
 }
 
 }  // namespace
@@ -246,7 +285,7 @@ void draw_level_colour(const DrawContext& ctx, const LevelView& view, const Scis
         // Outside the volumes' rectangles no fragment can lie in a volume:
         // the plain variants there, which test depth before shading; the
         // discarding one only inside.
-        draw_in_parts(ctx, view, scissor, volumes_rects(ctx, view), {}, {.outside_volumes = true});
+        draw_in_parts(ctx, view, scissor, volumes_rects(ctx, view), {}, {.outside_volumes = true}, true, draw_part);
         return;
     }
     const bool paths = ctx.scene.lighting.lit && !ctx.frame.naive_lights && ctx.lights.count[c] > ctx.lights.direct[c];
@@ -255,11 +294,11 @@ void draw_level_colour(const DrawContext& ctx, const LevelView& view, const Scis
         // their terms are 0 at every point: the variant without their loop
         // there (llvmpipe runs every fragment through all of a shader's code).
         if (const std::optional<std::array<NdcRect, 2>> inside = light_paths_rects(ctx, view)) {
-            draw_in_parts(ctx, view, scissor, *inside, {}, {.outside_light_paths = true});
+            draw_in_parts(ctx, view, scissor, *inside, {}, {.outside_light_paths = true}, true, draw_shadow_parts);
             return;
         }
     }
-    draw_part(ctx, view, scissor, {}, true);
+    draw_shadow_parts(ctx, view, scissor, {}, true);
 }
 
 void draw_volume_rooms(const DrawContext& ctx, const LevelView& view, const Scissor& scissor) {

@@ -74,6 +74,31 @@ NdcRect portal_rect(const math::PortalRect& portal, const EyeView& view) {
     return bound_corners(corners, inner ? 8 : 4, view);
 }
 
+NdcRect hull_rect(const math::dvec3* points, int count, const EyeView& view) {
+    if (!view.active || view.rect.empty() || count <= 0 || count > 16) return count > 16 ? view.rect : NdcRect::none();
+    math::dvec4 clip[16];
+    for (int i = 0; i < count; ++i) clip[i] = view.view_proj * math::dvec4(points[i], 1.0);
+    // The hull's part in front of the eye (w >= eps) is the hull of its
+    // points there and of the crossings of w = eps by segments between its
+    // points: every pair's, a superset of its edges'.
+    const double eps = 1e-9;
+    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+    auto add = [&](const math::dvec4& c) {
+        x0 = std::min(x0, c.x / c.w);
+        x1 = std::max(x1, c.x / c.w);
+        y0 = std::min(y0, c.y / c.w);
+        y1 = std::max(y1, c.y / c.w);
+    };
+    for (int i = 0; i < count; ++i) {
+        if (clip[i].w >= eps) add(clip[i]);
+        for (int k = i + 1; k < count; ++k)
+            if ((clip[i].w >= eps) != (clip[k].w >= eps))
+                add(clip[i] + (clip[k] - clip[i]) * ((eps - clip[i].w) / (clip[k].w - clip[i].w)));
+    }
+    if (!(x0 <= x1)) return NdcRect::none();
+    return intersect(NdcRect{x0, y0, x1, y1}, view.rect);
+}
+
 NdcRect box_rect(const math::dvec3 corners[8], const EyeView& view) {
     if (!view.active || view.rect.empty()) return NdcRect::none();
     return bound_corners(corners, 8, view);

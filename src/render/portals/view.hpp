@@ -68,6 +68,9 @@ struct LevelView {
     // lights may reach (draw_level_colour): drawn by the variant without the
     // path loop, or by the ambient one where the cell has no direct image.
     bool outside_light_paths = false;
+    // Nor any point a prop's shadow may fall on (render/lights/shadow_regions.hpp):
+    // drawn without the shadow-map lookups (LIGHTS_NO_SHADOWS).
+    bool outside_shadows = false;
     std::array<EyeView, 2> eyes;
 };
 
@@ -88,5 +91,8 @@ NdcRect portal_rect(const math::PortalRect& portal, const EyeView& eye);
 // The part of an eye's image where a box (its eight corners in
 // math::box_corners's order) may be seen, within the eye's rect. Conservative.
 NdcRect box_rect(const math::dvec3 corners[8], const EyeView& eye);
+// The same for the convex hull of `count` points (every pair's segment is
+// clipped in front of the eye, so any hull will do; count <= 16).
+NdcRect hull_rect(const math::dvec3* points, int count, const EyeView& eye);
 
 }  // namespace impossible::render

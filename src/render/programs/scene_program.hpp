@@ -76,9 +76,12 @@ inline constexpr unsigned kLightsAmbient = 64u;
 inline constexpr unsigned kLightsNoDirect = 128u;
 inline constexpr unsigned kLightsNoPaths = 256u;
 inline constexpr unsigned kLightsDirectBlockers = 512u;
-inline constexpr unsigned kLightLoopBits = kLightsNoDirect | kLightsNoPaths | kLightsDirectBlockers;
-inline constexpr unsigned kSceneVariantCount = 1024u;
-// The loop bits of `flags` as a number 0..7 (VariantNeeds::light_loops).
+// with kLights: no shadow-map lookups (LIGHTS_NO_SHADOWS), where no prop's
+// shadow can fall (render/lights/shadow_regions.hpp) or no image has a map.
+inline constexpr unsigned kLightsNoShadows = 1024u;
+inline constexpr unsigned kLightLoopBits = kLightsNoDirect | kLightsNoPaths | kLightsDirectBlockers | kLightsNoShadows;
+inline constexpr unsigned kSceneVariantCount = 2048u;
+// The loop and shadow bits of `flags` as a number 0..15 (VariantNeeds::light_loops).
 inline constexpr unsigned light_loop_index(unsigned flags) { return (flags & kLightLoopBits) / kLightsNoDirect; }
 
 // The vec4s of each light buffer's uniform block (kLightsUbo): 64 KiB, the
