@@ -112,14 +112,20 @@ vec3 light_term(int g, vec3 p, vec3 n, float origin_distance, bool path) {
     float d = max(length(v), 1e-30);
     vec3 w = v / d;
     float att = 1.0 / (d * d);
+    vec4 radiance = light_images[b + 1];
+#if defined(LIGHTS_PLAIN_POINTS)
+    // Every image of the room is a point light without a range: its range
+    // and spot factors would be exactly 1 (render::kLightsPlainPoints).
+    float amount = max(0.0, dot(n, w)) * att;
+#else
     float r = d / max(position.w, 1e-30);
     float r2 = r * r;
     att *= position.w > 0.0 ? clamp(1.0 - r2 * r2, 0.0, 1.0) : 1.0;
-    vec4 radiance = light_images[b + 1];
     vec4 axis = light_images[b + 2];
     float spot = clamp((dot(axis.xyz, -w) - radiance.w) * axis.w, 0.0, 1.0);
     spot = radiance.w <= 1.0 ? spot * spot : 1.0;
     float amount = max(0.0, dot(n, w)) * att * spot;
+#endif
 #if defined(LIGHTS_NAIVE)
     // render::FrameDesc::naive_lights: every image reaches every point
     // (a baseline for the cost of the test, never a mode to view).

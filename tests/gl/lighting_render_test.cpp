@@ -203,22 +203,27 @@ TEST(LightingRender, EachRoomDrawsWithTheLightLoopsItsImagesNeed) {
         EXPECT_EQ(render::light_loop_flags(buffers, 0), annex_lamp ? 0u : render::kLightsNoPaths);
         EXPECT_EQ(buffers.direct[1], annex_lamp ? 1 : 0);
         EXPECT_EQ(render::light_loop_flags(buffers, 1), annex_lamp ? 0u : render::kLightsNoDirect);
-        EXPECT_EQ(render::light_loop_flags(buffers, 2), render::kLightsNoPaths);
+        // The vault's lamp is a point light without a range: no spot or
+        // range terms (the hall's spot and its image in the annex keep them).
+        EXPECT_EQ(render::light_loop_flags(buffers, 2), render::kLightsNoPaths | render::kLightsPlainPoints);
         // Not split: each room's loops, with the lookups. Split: with maps,
         // each with and without the lookups (without maps, only without),
         // and a room with both kinds its direct loop alone too.
         const auto bit = [](unsigned flags) { return 1u << render::light_loop_index(flags); };
         const auto no_lookups = [](unsigned loops) {
             unsigned out = 0u;
-            for (unsigned f = 0; f < 8u; ++f)
-                if (loops & (1u << f)) out |= 1u << (f + 8u);
+            for (unsigned f = 0; f < 32u; ++f)
+                if (loops & (1u << f)) out |= 1u << (f | render::light_loop_index(render::kLightsNoShadows));
             return out;
         };
-        const unsigned one_kind = bit(render::kLightsNoPaths) | (annex_lamp ? bit(0u) : bit(render::kLightsNoDirect));
-        EXPECT_EQ(render::light_loops_needed(buffers, true, false), one_kind);
-        EXPECT_EQ(render::light_loops_needed(buffers, false, false), one_kind);
-        EXPECT_EQ(render::light_loops_needed(buffers, true, true), one_kind | no_lookups(one_kind));
-        EXPECT_EQ(render::light_loops_needed(buffers, false, true), no_lookups(one_kind));
+        const unsigned vault = bit(render::kLightsNoPaths | render::kLightsPlainPoints);
+        const unsigned unsplit =
+            vault | (annex_lamp ? bit(0u) : bit(render::kLightsNoPaths) | bit(render::kLightsNoDirect));
+        const unsigned split = unsplit | (annex_lamp ? bit(render::kLightsNoPaths) : 0u);
+        EXPECT_EQ(render::light_loops_needed(buffers, true, false), unsplit);
+        EXPECT_EQ(render::light_loops_needed(buffers, false, false), unsplit);
+        EXPECT_EQ(render::light_loops_needed(buffers, true, true), split | no_lookups(split));
+        EXPECT_EQ(render::light_loops_needed(buffers, false, true), no_lookups(split));
         if (annex_lamp) {  // without the vault's lamp, only the split needs the direct loop alone
             layout::Layout dark_vault = l;
             dark_vault.rooms[2].lights.clear();
@@ -236,6 +241,47 @@ TEST(LightingRender, EachRoomDrawsWithTheLightLoopsItsImagesNeed) {
                              std::string(v.what) + (annex_lamp ? ", with the annex's lamp" : ""));
         }
     }
+}
+
+TEST(LightingRender, PlainPointLightsDrawWithoutSpotAndRangeTermsAndTheSameImage) {
+    // Issue 39: a room whose images are all point lights without a range
+    // draws with the variant whose terms have neither factor
+    // (kLightsPlainPoints). The same lights with a range of 10^6 m, whose
+    // falloff rounds to exactly 1 in float, draw with the full term: the
+    // same bytes, in every stereo mode.
+    layout::Layout points = lit_lamp_hall_at_depth_2(true);
+    for (layout::Room& room : points.rooms)
+        for (layout::Light& light : room.lights) {
+            light.spot.reset();
+            light.range = 0.0;  // none
+        }
+    layout::Layout ranged = points;
+    for (layout::Room& room : ranged.rooms)
+        for (layout::Light& light : room.lights) light.range = 1e6;
+    const auto plain_rooms = [](const layout::Layout& l) {
+        const std::vector<lights::RoomLights> rooms = lights::light_images(l, links::link_portals(l), 2);
+        const render::LightBuffers b =
+            render::upload_light_images(rooms, l, std::vector<scene::CellOrigin>(rooms.size()), 2);
+        int plain = 0;
+        for (size_t c = 0; c < rooms.size(); ++c)
+            plain += (render::light_loop_flags(b, static_cast<int>(c)) & render::kLightsPlainPoints) != 0;
+        return plain;
+    };
+    EXPECT_EQ(plain_rooms(points), 3);
+    EXPECT_EQ(plain_rooms(ranged), 0);
+    LightingRig plain_rig(points), full_rig(ranged);
+    ASSERT_TRUE(plain_rig.renderer && full_rig.renderer);
+    for (const LitView& v : kLitViews)
+        for (int mode = 0; mode < 3; ++mode) {
+            render::FrameDesc f = lit_frame(points, v.room, v.position, v.yaw, v.pitch);
+            if (mode == 1) f.stereo = render::StereoMode::ViewportIndex;
+            if (mode == 2) f.stereo = render::StereoMode::TwoPass;
+            const image::Image plain = plain_rig.render(f);
+            const image::Image full = full_rig.render(f);
+            EXPECT_EQ(plain.rgb, full.rgb) << v.what << ", mode " << mode;
+            EXPECT_EQ(plain.ids, full.ids) << v.what << ", mode " << mode;
+            if (mode == 0) expect_lit_agree(plain, lit_cpu_frame(points, f), std::string(v.what) + ", points only");
+        }
 }
 
 TEST(LightingRender, OutsideTheLightPathsTheRoomDrawsWithoutThemAndTheSameImage) {

@@ -103,6 +103,13 @@ LightBuffers upload_light_images(const std::vector<lights::RoomLights>& rooms, c
         }
         out.direct.push_back(direct);
         out.direct_blockers.push_back(blockers);
+        bool plain = true;
+        for (const lights::LightImage& image : rooms[c].images) {
+            const layout::Light& light =
+                layout.rooms[static_cast<size_t>(image.light_room)].lights[static_cast<size_t>(image.light)];
+            plain = plain && !light.spot && !(light.range > 0.0);
+        }
+        out.plain_points.push_back(plain);
         out.path_regions.push_back(path_regions(rooms[c], direct, layout.rooms[c]));
         out.ambient.emplace_back(rooms[c].ambient);
         out.origins.push_back(origins[c].origin);
@@ -122,9 +129,10 @@ LightBuffers upload_light_images(const std::vector<lights::RoomLights>& rooms, c
 unsigned light_loop_flags(const LightBuffers& buffers, int room) {
     const auto c = static_cast<size_t>(room);
     if (buffers.count[c] == 0) return 0u;
-    if (buffers.direct[c] == 0) return kLightsNoDirect;
+    const unsigned plain = buffers.plain_points[c] ? kLightsPlainPoints : 0u;
+    if (buffers.direct[c] == 0) return kLightsNoDirect | plain;
     const unsigned blockers = buffers.direct_blockers[c] ? kLightsDirectBlockers : 0u;
-    return (buffers.direct[c] == buffers.count[c] ? kLightsNoPaths : 0u) | blockers;
+    return (buffers.direct[c] == buffers.count[c] ? kLightsNoPaths : 0u) | blockers | plain;
 }
 
 unsigned light_loops_needed(const LightBuffers& buffers, bool shadows, bool split) {

@@ -30,6 +30,7 @@ struct LightBuffers {
     std::vector<int> count;                 // per room
     std::vector<int> direct;                // per room: its first images, with no apertures (its own lights)
     std::vector<bool> direct_blockers;      // per room: some of them has blockers
+    std::vector<bool> plain_points;         // per room: every image a point light without a range
     std::vector<glm::vec3> ambient;         // per room
     std::vector<glm::dvec3> origins;        // per room: its cell origin
     int total = 0;                          // images of every room
@@ -63,8 +64,9 @@ LightBuffers upload_light_images(const std::vector<lights::RoomLights>& rooms, c
                                  const std::vector<scene::CellOrigin>& origins, int depth);
 
 // The loop variant's bits for `room`'s images (kLightsNoDirect,
-// kLightsNoPaths, kLightsDirectBlockers): 0 where it has both kinds and its
-// own lights meet no blocker, or where it has no image.
+// kLightsNoPaths, kLightsDirectBlockers, kLightsPlainPoints): 0 where it has
+// both kinds, its own lights meet no blocker and some image is a spot or
+// has a range, or where it has no image.
 unsigned light_loop_flags(const LightBuffers& buffers, int room);
 // Which loop variants the rooms need (VariantNeeds::light_loops); `shadows`:
 // the frame has shadow maps; `split`: the frame's lit rooms may be split by

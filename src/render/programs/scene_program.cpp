@@ -48,6 +48,7 @@ struct SceneVariant {
     bool light_no_paths = false;         // LIGHTS_NO_PATHS
     bool light_direct_blockers = false;  // LIGHTS_DIRECT_BLOCKERS
     bool light_no_shadows = false;       // LIGHTS_NO_SHADOWS
+    bool light_plain_points = false;     // LIGHTS_PLAIN_POINTS
 };
 
 std::string variant_defines(const SceneVariant& variant) {
@@ -64,6 +65,7 @@ std::string variant_defines(const SceneVariant& variant) {
     if (variant.lights && variant.light_no_paths) defines += "#define LIGHTS_NO_PATHS\n";
     if (variant.lights && variant.light_direct_blockers) defines += "#define LIGHTS_DIRECT_BLOCKERS\n";
     if (variant.lights && variant.light_no_shadows) defines += "#define LIGHTS_NO_SHADOWS\n";
+    if (variant.lights && variant.light_plain_points) defines += "#define LIGHTS_PLAIN_POINTS\n";
     if (variant.lights && variant.light_ubo)
         defines += "#define LIGHT_UBO\n#define LIGHT_UBO_VEC4S " + std::to_string(kLightUboVec4s) + "\n";
     return defines;
@@ -168,6 +170,7 @@ Result<SceneProgram> build_scene_variant(StereoMode mode, unsigned flags) {
     variant.light_no_paths = (flags & kLightsNoPaths) != 0;
     variant.light_direct_blockers = (flags & kLightsDirectBlockers) != 0;
     variant.light_no_shadows = (flags & kLightsNoShadows) != 0;
+    variant.light_plain_points = (flags & kLightsPlainPoints) != 0;
     return link_scene_program(variant, defines);
 }
 

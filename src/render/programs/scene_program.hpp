@@ -79,9 +79,15 @@ inline constexpr unsigned kLightsDirectBlockers = 512u;
 // with kLights: no shadow-map lookups (LIGHTS_NO_SHADOWS), where no prop's
 // shadow can fall (render/lights/shadow_regions.hpp) or no image has a map.
 inline constexpr unsigned kLightsNoShadows = 1024u;
-inline constexpr unsigned kLightLoopBits = kLightsNoDirect | kLightsNoPaths | kLightsDirectBlockers | kLightsNoShadows;
-inline constexpr unsigned kSceneVariantCount = 2048u;
-// The loop and shadow bits of `flags` as a number 0..15 (VariantNeeds::light_loops).
+// with kLights: every image of the room is a point light without a range
+// (LIGHTS_PLAIN_POINTS): its term has no spot cone and no range falloff,
+// whose factors would be exactly 1.
+inline constexpr unsigned kLightsPlainPoints = 2048u;
+inline constexpr unsigned kLightLoopBits =
+    kLightsNoDirect | kLightsNoPaths | kLightsDirectBlockers | kLightsNoShadows | kLightsPlainPoints;
+inline constexpr unsigned kSceneVariantCount = 4096u;
+// The loop, shadow and light-kind bits of `flags` as a number 0..31
+// (VariantNeeds::light_loops, 32 bits).
 inline constexpr unsigned light_loop_index(unsigned flags) { return (flags & kLightLoopBits) / kLightsNoDirect; }
 
 // The vec4s of each light buffer's uniform block (kLightsUbo): 64 KiB, the
