@@ -267,10 +267,10 @@ TEST(LightingRender, PlainPointLightsDrawWithoutSpotAndRangeTermsAndTheSameImage
             plain += (render::light_loop_flags(b, static_cast<int>(c)) & render::kLightsPlainPoints) != 0;
         return plain;
     };
+    LightingRig plain_rig(points), full_rig(ranged);  // a current context for the buffers
+    ASSERT_TRUE(plain_rig.renderer && full_rig.renderer);
     EXPECT_EQ(plain_rooms(points), 3);
     EXPECT_EQ(plain_rooms(ranged), 0);
-    LightingRig plain_rig(points), full_rig(ranged);
-    ASSERT_TRUE(plain_rig.renderer && full_rig.renderer);
     for (const LitView& v : kLitViews)
         for (int mode = 0; mode < 3; ++mode) {
             render::FrameDesc f = lit_frame(points, v.room, v.position, v.yaw, v.pitch);
