@@ -102,10 +102,22 @@ bool light_path_open(vec4 ranges, vec3 p, vec3 v, float t0) {
     return open && block >= 1.0;
 }
 
+// The same for an image with one aperture and no blocker, as the loop above
+// would find it: a crossing of the aperture between p and the image.
+bool light_aperture_open(vec4 ranges, vec3 p, vec3 v) {
+    int a = int(ranges.x);
+    float t = light_rect_crossing(a, light_rects[4 * a], p, v);
+    return t > 0.0 && t < 1.0;
+}
+
+// Which test an image's term makes (a constant at each call).
+const int kNoTest = 0;        // no rectangle: a light of the room itself seen directly
+const int kPathTest = 1;      // its rectangles in order (light_path_open)
+const int kApertureTest = 2;  // its one aperture (light_aperture_open)
+
 // One image's contribution at the point p (relative to the room's origin)
-// with unit normal n; `path`: test its rectangles (an image with none, a
-// light of the room itself seen directly, passes them all).
-vec3 light_term(int g, vec3 p, vec3 n, float origin_distance, bool path) {
+// with unit normal n, with the test `test`.
+vec3 light_term(int g, vec3 p, vec3 n, float origin_distance, int test) {
     int b = 5 * g;
     vec4 position = light_images[b];
     vec3 v = position.xyz - p;
@@ -131,7 +143,9 @@ vec3 light_term(int g, vec3 p, vec3 n, float origin_distance, bool path) {
     // (a baseline for the cost of the test, never a mode to view).
     bool open = true;
 #else
-    bool open = !path || light_path_open(light_images[b + 3], p, v, 1e-6 * (1.0 + origin_distance) / d);
+    bool open = test == kNoTest ||
+                (test == kApertureTest ? light_aperture_open(light_images[b + 3], p, v)
+                                       : light_path_open(light_images[b + 3], p, v, 1e-6 * (1.0 + origin_distance) / d));
 #endif
     return radiance.rgb * (open ? amount * light_visible(g, p - position.xyz, d) : 0.0);
 }
@@ -153,15 +167,21 @@ vec3 light_sum(vec3 p, vec3 n, float origin_distance) {
 #if !defined(LIGHTS_NO_DIRECT)
     do {
 #if defined(LIGHTS_DIRECT_BLOCKERS)
-        sum += light_term(u_light_first + i, p, n, origin_distance, true);
+        sum += light_term(u_light_first + i, p, n, origin_distance, kPathTest);
 #else
-        sum += light_term(u_light_first + i, p, n, origin_distance, false);
+        sum += light_term(u_light_first + i, p, n, origin_distance, kNoTest);
 #endif
     } while (++i < u_light_direct);
 #endif
 #if !defined(LIGHTS_NO_PATHS)
     do {
-        sum += light_term(u_light_first + i, p, n, origin_distance, true);
+#if defined(LIGHTS_SINGLE_APERTURE)
+        // Every path image has one aperture and no blocker
+        // (render::kLightsSingleAperture).
+        sum += light_term(u_light_first + i, p, n, origin_distance, kApertureTest);
+#else
+        sum += light_term(u_light_first + i, p, n, origin_distance, kPathTest);
+#endif
     } while (++i < u_light_count);
 #endif
     return sum;

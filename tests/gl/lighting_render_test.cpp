@@ -8,6 +8,7 @@
 // Props cast no shadows here (no shadow maps): the CPU side ignores them too.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -200,26 +201,29 @@ TEST(LightingRender, EachRoomDrawsWithTheLightLoopsItsImagesNeed) {
         // through the door; the annex: the hall's lamp through the door, and
         // its own; the vault: its lamp, no portal.
         EXPECT_EQ(buffers.direct[0], 2);
-        EXPECT_EQ(render::light_loop_flags(buffers, 0), annex_lamp ? 0u : render::kLightsNoPaths);
+        // Every path image here passes the door alone: the one-aperture test.
+        const unsigned single = render::kLightsSingleAperture;
+        EXPECT_EQ(render::light_loop_flags(buffers, 0), annex_lamp ? single : render::kLightsNoPaths);
         EXPECT_EQ(buffers.direct[1], annex_lamp ? 1 : 0);
-        EXPECT_EQ(render::light_loop_flags(buffers, 1), annex_lamp ? 0u : render::kLightsNoDirect);
+        EXPECT_EQ(render::light_loop_flags(buffers, 1), annex_lamp ? single : render::kLightsNoDirect | single);
         // The vault's lamp is a point light without a range: no spot or
         // range terms (the hall's spot and its image in the annex keep them).
         EXPECT_EQ(render::light_loop_flags(buffers, 2), render::kLightsNoPaths | render::kLightsPlainPoints);
         // Not split: each room's loops, with the lookups. Split: with maps,
         // each with and without the lookups (without maps, only without),
         // and a room with both kinds its direct loop alone too.
-        const auto bit = [](unsigned flags) { return 1u << render::light_loop_index(flags); };
-        const auto no_lookups = [](unsigned loops) {
-            unsigned out = 0u;
-            for (unsigned f = 0; f < 32u; ++f)
-                if (loops & (1u << f)) out |= 1u << (f | render::light_loop_index(render::kLightsNoShadows));
+        const auto bit = [](unsigned flags) { return std::uint64_t{1} << render::light_loop_index(flags); };
+        const auto no_lookups = [](std::uint64_t loops) {
+            std::uint64_t out = 0u;
+            for (unsigned f = 0; f < 64u; ++f)
+                if (loops & (std::uint64_t{1} << f))
+                    out |= std::uint64_t{1} << (f | render::light_loop_index(render::kLightsNoShadows));
             return out;
         };
-        const unsigned vault = bit(render::kLightsNoPaths | render::kLightsPlainPoints);
-        const unsigned unsplit =
-            vault | (annex_lamp ? bit(0u) : bit(render::kLightsNoPaths) | bit(render::kLightsNoDirect));
-        const unsigned split = unsplit | (annex_lamp ? bit(render::kLightsNoPaths) : 0u);
+        const std::uint64_t vault = bit(render::kLightsNoPaths | render::kLightsPlainPoints);
+        const std::uint64_t unsplit =
+            vault | (annex_lamp ? bit(single) : bit(render::kLightsNoPaths) | bit(render::kLightsNoDirect | single));
+        const std::uint64_t split = unsplit | (annex_lamp ? bit(render::kLightsNoPaths) : 0u);
         EXPECT_EQ(render::light_loops_needed(buffers, true, false), unsplit);
         EXPECT_EQ(render::light_loops_needed(buffers, false, false), unsplit);
         EXPECT_EQ(render::light_loops_needed(buffers, true, true), split | no_lookups(split));
@@ -231,8 +235,8 @@ TEST(LightingRender, EachRoomDrawsWithTheLightLoopsItsImagesNeed) {
                 lights::light_images(dark_vault, links::link_portals(dark_vault), 2);
             const render::LightBuffers b2 =
                 render::upload_light_images(r2, dark_vault, std::vector<scene::CellOrigin>(r2.size()), 2);
-            const unsigned both = bit(0u) | bit(render::kLightsNoPaths);
-            EXPECT_EQ(render::light_loops_needed(b2, true, false), bit(0u));
+            const std::uint64_t both = bit(single) | bit(render::kLightsNoPaths);
+            EXPECT_EQ(render::light_loops_needed(b2, true, false), bit(single));
             EXPECT_EQ(render::light_loops_needed(b2, true, true), both | no_lookups(both));
         }
         for (const LitView& v : kLitViews) {

@@ -110,6 +110,10 @@ LightBuffers upload_light_images(const std::vector<lights::RoomLights>& rooms, c
             plain = plain && !light.spot && !(light.range > 0.0);
         }
         out.plain_points.push_back(plain);
+        bool single = true;
+        for (size_t i = static_cast<size_t>(direct); i < rooms[c].images.size(); ++i)
+            single = single && rooms[c].images[i].apertures.size() == 1 && rooms[c].images[i].blockers.empty();
+        out.single_apertures.push_back(single);
         out.path_regions.push_back(path_regions(rooms[c], direct, layout.rooms[c]));
         out.ambient.emplace_back(rooms[c].ambient);
         out.origins.push_back(origins[c].origin);
@@ -130,26 +134,31 @@ unsigned light_loop_flags(const LightBuffers& buffers, int room) {
     const auto c = static_cast<size_t>(room);
     if (buffers.count[c] == 0) return 0u;
     const unsigned plain = buffers.plain_points[c] ? kLightsPlainPoints : 0u;
-    if (buffers.direct[c] == 0) return kLightsNoDirect | plain;
+    // The one-aperture bit only for a room with path images (their loop's).
+    const unsigned single = buffers.single_apertures[c] ? kLightsSingleAperture : 0u;
+    if (buffers.direct[c] == 0) return kLightsNoDirect | plain | single;
     const unsigned blockers = buffers.direct_blockers[c] ? kLightsDirectBlockers : 0u;
-    return (buffers.direct[c] == buffers.count[c] ? kLightsNoPaths : 0u) | blockers | plain;
+    if (buffers.direct[c] == buffers.count[c]) return kLightsNoPaths | blockers | plain;
+    return blockers | plain | single;
 }
 
-unsigned light_loops_needed(const LightBuffers& buffers, bool shadows, bool split) {
-    unsigned needed = 0u;
+std::uint64_t light_loops_needed(const LightBuffers& buffers, bool shadows, bool split) {
+    std::uint64_t needed = 0u;
+    const auto bit = [](unsigned flags) { return std::uint64_t{1} << light_loop_index(flags); };
     for (size_t c = 0; c < buffers.count.size(); ++c) {
         if (buffers.count[c] == 0) continue;
         const unsigned loops = light_loop_flags(buffers, static_cast<int>(c));
         std::vector<unsigned> kinds = {loops};
         // A room with both kinds draws without its paths outside their lit
         // regions (render/objects/object_draw.cpp).
-        if (split && (loops & (kLightsNoDirect | kLightsNoPaths)) == 0u) kinds.push_back(loops | kLightsNoPaths);
+        if (split && (loops & (kLightsNoDirect | kLightsNoPaths)) == 0u)
+            kinds.push_back((loops | kLightsNoPaths) & ~kLightsSingleAperture);
         for (const unsigned k : kinds) {
             // Split, the parts outside the props' shadows (and every part,
             // without maps) skip the lookups; the rest, or every draw when
             // not split, has them.
-            if (shadows || !split) needed |= 1u << light_loop_index(k);
-            if (split) needed |= 1u << light_loop_index(k | kLightsNoShadows);
+            if (shadows || !split) needed |= bit(k);
+            if (split) needed |= bit(k | kLightsNoShadows);
         }
     }
     return needed;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -31,6 +32,7 @@ struct LightBuffers {
     std::vector<int> direct;                // per room: its first images, with no apertures (its own lights)
     std::vector<bool> direct_blockers;      // per room: some of them has blockers
     std::vector<bool> plain_points;         // per room: every image a point light without a range
+    std::vector<bool> single_apertures;     // per room: every path image one aperture, no blocker
     std::vector<glm::vec3> ambient;         // per room
     std::vector<glm::dvec3> origins;        // per room: its cell origin
     int total = 0;                          // images of every room
@@ -64,15 +66,16 @@ LightBuffers upload_light_images(const std::vector<lights::RoomLights>& rooms, c
                                  const std::vector<scene::CellOrigin>& origins, int depth);
 
 // The loop variant's bits for `room`'s images (kLightsNoDirect,
-// kLightsNoPaths, kLightsDirectBlockers, kLightsPlainPoints): 0 where it has
-// both kinds, its own lights meet no blocker and some image is a spot or
-// has a range, or where it has no image.
+// kLightsNoPaths, kLightsDirectBlockers, kLightsPlainPoints,
+// kLightsSingleAperture): 0 where it has both kinds, its own lights meet no
+// blocker, some image is a spot or has a range and some path image has more
+// than one rectangle; or where it has no image.
 unsigned light_loop_flags(const LightBuffers& buffers, int room);
 // Which loop variants the rooms need (VariantNeeds::light_loops); `shadows`:
 // the frame has shadow maps; `split`: the frame's lit rooms may be split by
 // where their paths and the props' shadows reach (kLightsNoShadows drawn
 // outside the shadows, and everywhere without maps).
-unsigned light_loops_needed(const LightBuffers& buffers, bool shadows, bool split);
+std::uint64_t light_loops_needed(const LightBuffers& buffers, bool shadows, bool split);
 
 // Binds the buffers at kLightImagesBinding and kLightRectsBinding (null: unbinds).
 void bind_light_buffers(const LightBuffers* buffers);

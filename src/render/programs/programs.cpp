@@ -28,7 +28,7 @@ Result<void> ensure_variants(Programs& programs, StereoMode mode, const VariantN
         if ((flags & kMaterials) && !needs.materials) continue;
         if ((flags & kLightsNaive) && (!(flags & kLights) || !needs.lights_naive)) continue;
         if (flags & kLights && !(flags & kLightsAmbient)) {
-            if ((needs.light_loops & (1u << light_loop_index(flags))) == 0u) continue;
+            if ((needs.light_loops & (std::uint64_t{1} << light_loop_index(flags))) == 0u) continue;
         } else if (flags & kLightLoopBits) {
             continue;
         }

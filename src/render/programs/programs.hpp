@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cassert>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <vector>
@@ -55,7 +56,7 @@ struct VariantNeeds {
     bool materials = false;     // some batch has a texture or a cutoff: kMaterials
     // The light loop variants some room may draw with (light_loop_flags):
     // bit light_loop_index(flags) of each.
-    unsigned light_loops = 0u;
+    std::uint64_t light_loops = 0u;
 };
 
 // The variants with object cuts, volumes or lights (scene_program.hpp) that

@@ -49,6 +49,7 @@ struct SceneVariant {
     bool light_direct_blockers = false;  // LIGHTS_DIRECT_BLOCKERS
     bool light_no_shadows = false;       // LIGHTS_NO_SHADOWS
     bool light_plain_points = false;     // LIGHTS_PLAIN_POINTS
+    bool light_single_aperture = false;  // LIGHTS_SINGLE_APERTURE
 };
 
 std::string variant_defines(const SceneVariant& variant) {
@@ -66,6 +67,7 @@ std::string variant_defines(const SceneVariant& variant) {
     if (variant.lights && variant.light_direct_blockers) defines += "#define LIGHTS_DIRECT_BLOCKERS\n";
     if (variant.lights && variant.light_no_shadows) defines += "#define LIGHTS_NO_SHADOWS\n";
     if (variant.lights && variant.light_plain_points) defines += "#define LIGHTS_PLAIN_POINTS\n";
+    if (variant.lights && variant.light_single_aperture) defines += "#define LIGHTS_SINGLE_APERTURE\n";
     if (variant.lights && variant.light_ubo)
         defines += "#define LIGHT_UBO\n#define LIGHT_UBO_VEC4S " + std::to_string(kLightUboVec4s) + "\n";
     return defines;
@@ -95,7 +97,9 @@ void find_variant_uniforms(const SceneVariant& variant, gl::UniformLocations& u,
         p.light_count = variant.light_no_paths ? u.optional("u_light_count") : per_image("u_light_count");
         p.light_direct = variant.light_no_direct ? u.optional("u_light_direct") : per_image("u_light_direct");
         p.light_ambient = u.required("u_light_ambient");
-        const bool tests_paths = !variant.light_no_paths || variant.light_direct_blockers;
+        // The one-aperture test has no blocker, so no tolerance either.
+        const bool tests_paths =
+            (!variant.light_no_paths && !variant.light_single_aperture) || variant.light_direct_blockers;
         p.light_origin =
             variant.light_naive || !tests_paths ? u.optional("u_light_origin") : per_image("u_light_origin");
     }
@@ -171,6 +175,7 @@ Result<SceneProgram> build_scene_variant(StereoMode mode, unsigned flags) {
     variant.light_direct_blockers = (flags & kLightsDirectBlockers) != 0;
     variant.light_no_shadows = (flags & kLightsNoShadows) != 0;
     variant.light_plain_points = (flags & kLightsPlainPoints) != 0;
+    variant.light_single_aperture = (flags & kLightsSingleAperture) != 0;
     return link_scene_program(variant, defines);
 }
 

@@ -83,11 +83,15 @@ inline constexpr unsigned kLightsNoShadows = 1024u;
 // (LIGHTS_PLAIN_POINTS): its term has no spot cone and no range falloff,
 // whose factors would be exactly 1.
 inline constexpr unsigned kLightsPlainPoints = 2048u;
-inline constexpr unsigned kLightLoopBits =
-    kLightsNoDirect | kLightsNoPaths | kLightsDirectBlockers | kLightsNoShadows | kLightsPlainPoints;
-inline constexpr unsigned kSceneVariantCount = 4096u;
-// The loop, shadow and light-kind bits of `flags` as a number 0..31
-// (VariantNeeds::light_loops, 32 bits).
+// with kLights: every path image of the room passes one aperture and meets
+// no blocker (LIGHTS_SINGLE_APERTURE, a door's light): its test is that one
+// crossing, without the loop over rectangles and the blockers' bookkeeping.
+inline constexpr unsigned kLightsSingleAperture = 4096u;
+inline constexpr unsigned kLightLoopBits = kLightsNoDirect | kLightsNoPaths | kLightsDirectBlockers | kLightsNoShadows |
+                                           kLightsPlainPoints | kLightsSingleAperture;
+inline constexpr unsigned kSceneVariantCount = 8192u;
+// The loop, shadow and light-kind bits of `flags` as a number 0..63
+// (VariantNeeds::light_loops, 64 bits).
 inline constexpr unsigned light_loop_index(unsigned flags) { return (flags & kLightLoopBits) / kLightsNoDirect; }
 
 // The vec4s of each light buffer's uniform block (kLightsUbo): 64 KiB, the
