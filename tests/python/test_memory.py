@@ -1,9 +1,10 @@
 """Many renderers in one process (docs/bounded-work.md, "Other bounds"): the
-renderers of a thread share one GL context and keep together no more frame
-buffers than one frame may use, so 100 renderers of a lit layout, each
-having drawn a frame, hold about 3.8 MB each plus the shadow maps' bound
-(256 MB); before, each held its context and its own maps, 20 MB (4.1 GB for
-200). A renderer closed or deleted gives its memory back to the system.
+renderers of a thread share one GL context and its compiled programs, and
+keep together no more frame buffers than one frame may use, so 100
+renderers of a lit layout, each having drawn a frame, hold about 1.3 MB
+each plus the shadow maps' bound (256 MB); before, each held its context,
+its programs and its own maps, 20 MB (4.1 GB for 200). A renderer closed or
+deleted gives its memory back to the system.
 Each measure runs in an interpreter of its own, so that nothing else this
 file does is in its resident set (VmRSS)."""
 import json
@@ -17,10 +18,11 @@ from helpers import SOURCE_DIR
 
 LIT = SOURCE_DIR / "layouts" / "lamp_hall.json"
 SIZE = (160, 90)
-# Context share, programs (each lit loop variant a frame draws with is
-# compiled for it: issue 39's loop variants took 100 lamp-hall renderers
-# from 568 MB to 636 MB), scene buffers, light images, targets.
-PER_RENDERER_MB = 4
+# Scene buffers, light images, targets: the programs are the context's
+# (render::SharedPrograms; when each renderer compiled the variants it drew
+# with, 100 lamp-hall renderers held 636 MB, and 768 MB with the shadow
+# lookups' variants; 388 MB now).
+PER_RENDERER_MB = 2
 SHADOW_MAPS_MB = 256  # render::kMaxShadowMapBytes: all the renderers' maps together
 
 # Makes N renderers after a first one (the driver's one-time costs: LLVM, the
