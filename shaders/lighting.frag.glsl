@@ -8,13 +8,15 @@
 // lights it), less that room's cell origin.
 in vec3 v_light_position;
 
-// Every room's light images (render/lights/light_buffers.hpp), room after room, five
+// Every room's light images (render/lights/light_buffers.hpp), room after room, six
 // vec4s each, positions relative to the room's cell origin:
 //   [0] xyz: the image L', w: range (0: none)
 //   [1] rgb: color · intensity · factor, w: cos outer (2: a point light)
 //   [2] xyz: the spot's axis in the room's coordinates, w: 1 / (cos inner - cos outer)
-//   [3] x: the first of its path's rectangles, y: their number (as floats)
-//   [4] unused (the shadow lookup's)
+//   [3] x: the first of its path's rectangles, y: their number (as floats);
+//       in a LIGHTS_SINGLE_APERTURE room's path image, z: k, w: a
+//   [4], [5]: such an image's one aperture (light_aperture_open): [4] xyz:
+//       its normal n, w: b; [5] xyz: its right axis r', w: width / height
 // LIGHT_UBO: the same as uniform blocks, which llvmpipe reads faster (where
 // they fit in LIGHT_UBO_VEC4S vec4s each).
 // LIGHTS_AMBIENT (a room no light image reaches): the ambient alone, no
@@ -102,12 +104,26 @@ bool light_path_open(vec4 ranges, vec3 p, vec3 v, float t0) {
     return open && block >= 1.0;
 }
 
-// The same for an image with one aperture and no blocker, as the loop above
-// would find it: a crossing of the aperture between p and the image.
-bool light_aperture_open(vec4 ranges, vec3 p, vec3 v) {
-    int a = int(ranges.x);
-    float t = light_rect_crossing(a, light_rects[4 * a], p, v);
-    return t > 0.0 && t < 1.0;
+// The same for an image with one aperture and no blocker: whether the
+// segment from p to the image (p + v) crosses the aperture from its front,
+// edges excluded. The aperture is stored with the image (vec4s 3 to 5, from
+// the image's side): the crossing is x = L' + s (p - L') with
+// s = k / (n · (p - L')), k = n · (c - L'), inside where
+// |a + s r' · (p - L')| < 1 and |b + s u' · (p - L')| < 1 for the right and up
+// axes over the half extents r', u' (u' = (n × r') · width / height), with
+// a = r' · (L' - c), b = u' · (L' - c); on the segment where 0 < s < 1. Three
+// reads of the image's own record, where the loop reads its rectangle's
+// index and then the rectangle.
+bool light_aperture_open(int b, vec3 v) {
+    vec4 k_a = light_images[b + 3];
+    vec4 normal_b = light_images[b + 4];
+    vec4 right_aspect = light_images[b + 5];
+    vec3 w = -v;  // p - L'
+    float dn = dot(normal_b.xyz, w);
+    float s = k_a.z / max(dn, 1e-30);
+    vec3 up = cross(normal_b.xyz, right_aspect.xyz) * right_aspect.w;
+    vec2 q = abs(vec2(k_a.w, normal_b.w) + s * vec2(dot(w, right_aspect.xyz), dot(w, up)));
+    return dn > 0.0 && s > 0.0 && s < 1.0 && max(q.x, q.y) < 1.0;
 }
 
 // Which test an image's term makes (a constant at each call).
@@ -118,7 +134,7 @@ const int kApertureTest = 2;  // its one aperture (light_aperture_open)
 // One image's contribution at the point p (relative to the room's origin)
 // with unit normal n, with the test `test`.
 vec3 light_term(int g, vec3 p, vec3 n, float origin_distance, int test) {
-    int b = 5 * g;
+    int b = 6 * g;
     vec4 position = light_images[b];
     vec3 v = position.xyz - p;
     float d = max(length(v), 1e-30);
@@ -144,7 +160,7 @@ vec3 light_term(int g, vec3 p, vec3 n, float origin_distance, int test) {
     bool open = true;
 #else
     bool open = test == kNoTest ||
-                (test == kApertureTest ? light_aperture_open(light_images[b + 3], p, v)
+                (test == kApertureTest ? light_aperture_open(b, v)
                                        : light_path_open(light_images[b + 3], p, v, 1e-6 * (1.0 + origin_distance) / d));
 #endif
     return radiance.rgb * (open ? amount * light_visible(g, p - position.xyz, d) : 0.0);

@@ -24,8 +24,28 @@ void push_rect(std::vector<float>& out, const math::PortalRect& rect, const glm:
     push4(out, rect.up / (0.5 * rect.height), 0.0);
 }
 
+// The image's one aperture as light_aperture_open reads it (image vec4s 3 to
+// 5): its plane (normal n, k = n · (c - L')), the right axis over the half
+// width r' with a = r' · (L' - c), b = u' · (L' - c) for the up axis over the
+// half height u', and width / height, from which u' = (n × r') · w / h.
+void push_aperture(PackedLights& out, const lights::LightImage& image, const glm::dvec3& origin) {
+    const math::PortalRect& rect = image.apertures.front().rect;
+    const glm::dvec3 l = image.position - origin, c = rect.center - origin;
+    const glm::dvec3 right = glm::cross(rect.up, rect.normal) / (0.5 * rect.width);
+    const glm::dvec3 up = rect.up / (0.5 * rect.height);
+    float* at = &out.images[out.images.size() - 3 * 4];
+    at[2] = static_cast<float>(glm::dot(rect.normal, c - l));
+    at[3] = static_cast<float>(glm::dot(right, l - c));
+    for (int i = 0; i < 3; ++i) {
+        at[4 + i] = static_cast<float>(rect.normal[i]);
+        at[8 + i] = static_cast<float>(right[i]);
+    }
+    at[7] = static_cast<float>(glm::dot(up, l - c));
+    at[11] = static_cast<float>(rect.width / rect.height);
+}
+
 void push_image(PackedLights& out, const lights::LightImage& image, const layout::Light& light,
-                const glm::dvec3& origin) {
+                const glm::dvec3& origin, bool one_aperture) {
     const auto rect_index = [&out] { return static_cast<double>(out.rects.size() / (4 * kLightRectVec4s)); };
     push4(out.images, image.position - origin, light.range > 0.0 ? light.range : 0.0);
     const glm::dvec3 radiance = light.color * light.intensity * image.factor;
@@ -46,7 +66,26 @@ void push_image(PackedLights& out, const lights::LightImage& image, const layout
     }
     const double count = rect_index() - first;
     out.images.insert(out.images.end(), {static_cast<float>(first), static_cast<float>(count), 0.0f, 0.0f});
-    out.images.insert(out.images.end(), {0.0f, 0.0f, 0.0f, 0.0f});
+    out.images.insert(out.images.end(), 8, 0.0f);
+    if (one_aperture) push_aperture(out, image, origin);
+}
+
+// Whether every path image of `room` (those from `direct` on) passes one
+// aperture and meets no blocker (kLightsSingleAperture).
+bool one_aperture_each(const lights::RoomLights& room, int direct) {
+    for (size_t i = static_cast<size_t>(direct); i < room.images.size(); ++i)
+        if (room.images[i].apertures.size() != 1 || !room.images[i].blockers.empty()) return false;
+    return true;
+}
+
+// A room's own lights seen directly come first: its images before the first
+// with an aperture.
+int direct_images(const lights::RoomLights& room) {
+    int direct = 0;
+    while (static_cast<size_t>(direct) < room.images.size() &&
+           room.images[static_cast<size_t>(direct)].apertures.empty())
+        ++direct;
+    return direct;
 }
 
 // The lit regions of `room`'s images from `direct` on; nullopt if one may
@@ -79,9 +118,13 @@ PackedLights pack_light_images(const std::vector<lights::RoomLights>& rooms, con
     PackedLights out;
     for (size_t c = 0; c < rooms.size(); ++c) {
         const glm::dvec3 origin = origins[c].origin;
-        for (const lights::LightImage& image : rooms[c].images) {
+        const int direct = direct_images(rooms[c]);
+        const bool one_aperture = one_aperture_each(rooms[c], direct);
+        for (size_t i = 0; i < rooms[c].images.size(); ++i) {
+            const lights::LightImage& image = rooms[c].images[i];
             const layout::Room& room = layout.rooms[static_cast<size_t>(image.light_room)];
-            push_image(out, image, room.lights[static_cast<size_t>(image.light)], origin);
+            push_image(out, image, room.lights[static_cast<size_t>(image.light)], origin,
+                       one_aperture && static_cast<int>(i) >= direct);
         }
     }
     return out;
@@ -110,10 +153,7 @@ LightBuffers upload_light_images(const std::vector<lights::RoomLights>& rooms, c
             plain = plain && !light.spot && !(light.range > 0.0);
         }
         out.plain_points.push_back(plain);
-        bool single = true;
-        for (size_t i = static_cast<size_t>(direct); i < rooms[c].images.size(); ++i)
-            single = single && rooms[c].images[i].apertures.size() == 1 && rooms[c].images[i].blockers.empty();
-        out.single_apertures.push_back(single);
+        out.single_apertures.push_back(one_aperture_each(rooms[c], direct));
         out.path_regions.push_back(path_regions(rooms[c], direct, layout.rooms[c]));
         out.ambient.emplace_back(rooms[c].ambient);
         out.origins.push_back(origins[c].origin);

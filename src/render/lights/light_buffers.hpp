@@ -49,7 +49,7 @@ struct LightBuffers {
 };
 
 // The GPU layout of the images: kLightImageVec4s vec4s per image, 4 per rectangle.
-inline constexpr int kLightImageVec4s = 5;
+inline constexpr int kLightImageVec4s = 6;
 inline constexpr int kLightRectVec4s = 4;
 
 // The images and rectangles packed as shaders/lighting.frag.glsl reads them.
