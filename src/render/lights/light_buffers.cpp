@@ -78,8 +78,8 @@ bool one_aperture_each(const lights::RoomLights& room, int direct) {
     return true;
 }
 
-// A room's own lights seen directly come first: its images before the first
-// with an aperture.
+// A room's own lights seen directly come first (images come by path length):
+// its images before the first with an aperture.
 int direct_images(const lights::RoomLights& room) {
     int direct = 0;
     while (static_cast<size_t>(direct) < room.images.size() &&
@@ -137,13 +137,10 @@ LightBuffers upload_light_images(const std::vector<lights::RoomLights>& rooms, c
     for (size_t c = 0; c < rooms.size(); ++c) {
         out.first.push_back(out.total);
         out.count.push_back(static_cast<int>(rooms[c].images.size()));
-        int direct = 0;  // images come by path length: a room's own lights first
+        const int direct = direct_images(rooms[c]);
         bool blockers = false;
-        for (const lights::LightImage& image : rooms[c].images) {
-            if (!image.apertures.empty()) break;
-            blockers = blockers || !image.blockers.empty();
-            ++direct;
-        }
+        for (int i = 0; i < direct; ++i)
+            blockers = blockers || !rooms[c].images[static_cast<size_t>(i)].blockers.empty();
         out.direct.push_back(direct);
         out.direct_blockers.push_back(blockers);
         bool plain = true;
