@@ -22,15 +22,7 @@ LitRegion lit_region(const LightImage& image, const glm::dvec3& room_min, const 
     // at a distance of at least s · h from L'; every point of the room, with
     // a margin for hands and objects reaching past its walls, is nearer than
     // `reach`, so s = reach / h bounds the part that matters.
-    const glm::dvec3 extent = room_max - room_min;
-    double reach = 0.0;
-    for (int k = 0; k < 8; ++k) {
-        const glm::dvec3 corner((k & 1) ? room_max.x : room_min.x, (k & 2) ? room_max.y : room_min.y,
-                                (k & 4) ? room_max.z : room_min.z);
-        reach = std::max(reach, glm::length(corner - image.position));
-    }
-    reach += glm::length(extent) + 10.0;
-    const double s = reach / h;
+    const double s = light_reach(image.position, room_min, room_max) / h;
     math::dvec3 box[8];
     math::box_corners(p1, box);  // 0..3: the front rectangle, at depth 0
     out.kind = LitRegion::Kind::Pyramid;
@@ -41,15 +33,27 @@ LitRegion lit_region(const LightImage& image, const glm::dvec3& room_min, const 
     return out;
 }
 
-bool shadow_region(const glm::dvec3& light, const glm::dmat4& to_box, const glm::dvec3& lo, const glm::dvec3& hi,
-                   double reach, std::array<glm::dvec3, 16>& corners_out) {
-    const glm::dvec3 l = glm::dvec3(to_box * glm::dvec4(light, 1.0));
+double light_reach(const glm::dvec3& light, const glm::dvec3& room_min, const glm::dvec3& room_max) {
+    double reach = 0.0;
+    for (int k = 0; k < 8; ++k) {
+        const glm::dvec3 corner((k & 1) ? room_max.x : room_min.x, (k & 2) ? room_max.y : room_min.y,
+                                (k & 4) ? room_max.z : room_min.z);
+        reach = std::max(reach, glm::length(corner - light));
+    }
+    return reach + glm::length(room_max - room_min) + 10.0;
+}
+
+bool shadow_region(const glm::dvec3& light, const glm::dmat4& from_box, glm::dvec3 lo, glm::dvec3 hi, double reach,
+                   double grow_angle, std::array<glm::dvec3, 16>& corners_out) {
+    const glm::dvec3 l = glm::dvec3(glm::inverse(from_box) * glm::dvec4(light, 1.0));
+    const double grow = glm::length(glm::max(glm::abs(lo - l), glm::abs(hi - l))) * grow_angle + 1e-4;
+    lo -= grow;
+    hi += grow;
     const double dmin = glm::length(glm::max(glm::max(lo - l, l - hi), glm::dvec3(0.0)));
     if (!(dmin > kMinApertureDistance)) return false;
     // A point L' + t (q - L') with q in the box lies at least t · dmin from
     // L': within `reach` only for t <= reach / dmin.
     const double t = std::max(1.0, reach / dmin);
-    const glm::dmat4 from_box = glm::inverse(to_box);
     for (int k = 0; k < 8; ++k) {
         const glm::dvec3 own((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
         const glm::dvec3 q = glm::dvec3(from_box * glm::dvec4(own, 1.0));

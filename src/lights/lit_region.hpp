@@ -32,16 +32,23 @@ struct LitRegion {
 // `room_min`, `room_max`: C's bounding box.
 LitRegion lit_region(const LightImage& image, const glm::dvec3& room_min, const glm::dvec3& room_max);
 
+// A distance from L' that every point of room C lies within, with a margin
+// for hands and objects reaching past its walls: how far lit_region's
+// pyramid and shadow_region's hull must reach.
+double light_reach(const glm::dvec3& light, const glm::dvec3& room_min, const glm::dvec3& room_max);
+
 inline constexpr double kMinApertureDistance = 1e-6;
 
 // Where an occluder may shadow a point from a light at L': behind it on rays
 // from L', the box and the same box pushed away from L' far enough to pass
 // every point within `reach` of L' (the convex hull of the 16 corners holds
-// that part of its shadow). `to_box` maps the points' coordinates to the
-// box's own (a rigid map), where it is [lo, hi]; `corners_out` is in the
-// points' coordinates. False where L' lies within kMinApertureDistance of
-// the box (its shadow may be anywhere).
-bool shadow_region(const glm::dvec3& light, const glm::dmat4& to_box, const glm::dvec3& lo, const glm::dvec3& hi,
-                   double reach, std::array<glm::dvec3, 16>& corners_out);
+// that part of its shadow). The box is [lo, hi] in its own coordinates,
+// which `from_box` maps to the points' (a rigid map), grown on every side by
+// `grow_angle` times its farthest distance from L', and 0.1 mm (a shadow
+// map's lookup reads a texel near the point's direction, not at it);
+// `corners_out` is in the points' coordinates. False where L' lies within
+// kMinApertureDistance of the grown box (its shadow may be anywhere).
+bool shadow_region(const glm::dvec3& light, const glm::dmat4& from_box, glm::dvec3 lo, glm::dvec3 hi, double reach,
+                   double grow_angle, std::array<glm::dvec3, 16>& corners_out);
 
 }  // namespace impossible::lights

@@ -167,7 +167,7 @@ TEST(ShadowRegion, EveryPointABoxShadowsLiesInItsHull) {
             light = dvec3(unit(rng) * 8 - 4, unit(rng) * 4, unit(rng) * 8 - 4);
         } while (glm::all(glm::greaterThan(light, lo - 0.05)) && glm::all(glm::lessThan(light, hi + 0.05)));
         std::array<dvec3, 16> hull;
-        ASSERT_TRUE(shadow_region(light, glm::dmat4(1.0), lo, hi, 20.0, hull));
+        ASSERT_TRUE(shadow_region(light, glm::dmat4(1.0), lo, hi, 20.0, 0.0, hull));
         for (int k = 0; k < 2000; ++k) {
             const dvec3 p(unit(rng) * 10 - 5, unit(rng) * 10 - 5, unit(rng) * 10 - 5);
             if (!segment_meets_box(light, p, lo, hi)) continue;
@@ -178,7 +178,7 @@ TEST(ShadowRegion, EveryPointABoxShadowsLiesInItsHull) {
     EXPECT_GT(shadowed, 2000);
     // A light inside the box: its shadow may be anywhere.
     std::array<dvec3, 16> hull;
-    EXPECT_FALSE(shadow_region(dvec3(0.5), glm::dmat4(1.0), dvec3(0.0), dvec3(1.0), 20.0, hull));
+    EXPECT_FALSE(shadow_region(dvec3(0.5), glm::dmat4(1.0), dvec3(0.0), dvec3(1.0), 20.0, 0.0, hull));
 }
 
 }  // namespace

@@ -15,32 +15,16 @@ namespace impossible::render {
 namespace {
 
 // One occluder's hull into `out`; false where it may shadow anywhere. `to_c`
-// maps its box's own coordinates into C's.
-bool add_occluder(const glm::dvec3& light, const glm::dmat4& to_c, glm::dvec3 lo, glm::dvec3 hi, double reach,
-                  int map_size, std::vector<std::array<glm::dvec3, 16>>& out) {
-    // A lookup reads the nearest texel, whose direction is within about a
-    // texel (2 / size radians at a face's centre, less than twice that
-    // anywhere) of the point's: grow the box by four texels at its far side.
-    const glm::dmat4 to_box = glm::inverse(to_c);
-    const glm::dvec3 l = glm::dvec3(to_box * glm::dvec4(light, 1.0));
-    const double far = glm::length(glm::max(glm::abs(lo - l), glm::abs(hi - l)));
-    const double grow = far * 8.0 / std::max(map_size, 1) + 1e-4;
-    lo -= grow;
-    hi += grow;
+// maps its box's own coordinates into C's. A lookup reads the nearest
+// texel, whose direction is within about a texel (2 / size radians at a
+// face's centre, less than twice that anywhere) of the point's: the box is
+// grown by four texels at its far side.
+bool add_occluder(const glm::dvec3& light, const glm::dmat4& to_c, const glm::dvec3& lo, const glm::dvec3& hi,
+                  double reach, int map_size, std::vector<std::array<glm::dvec3, 16>>& out) {
     std::array<glm::dvec3, 16> hull;
-    if (!lights::shadow_region(light, to_box, lo, hi, reach, hull)) return false;
+    if (!lights::shadow_region(light, to_c, lo, hi, reach, 8.0 / std::max(map_size, 1), hull)) return false;
     out.push_back(hull);
     return true;
-}
-
-double reach_of(const glm::dvec3& light, const std::pair<glm::dvec3, glm::dvec3>& box) {
-    double reach = 0.0;
-    for (int k = 0; k < 8; ++k) {
-        const glm::dvec3 corner((k & 1) ? box.second.x : box.first.x, (k & 2) ? box.second.y : box.first.y,
-                                (k & 4) ? box.second.z : box.first.z);
-        reach = std::max(reach, glm::length(corner - light));
-    }
-    return reach + glm::length(box.second - box.first) + 10.0;  // hands and objects past the walls
 }
 
 // One image's occluders (its legs' static props and the instances placed in
@@ -84,7 +68,9 @@ std::vector<RoomShadowRegions> shadow_regions(const ShadowSources& s, const std:
             const bool mapped = g < layer.size() && layer[g] >= 0;
             ++g;
             if (!mapped || !bounded) continue;
-            bounded = add_image(s, by_room, image, reach_of(image.position, bounds[c]), map_size, hulls);
+            bounded =
+                add_image(s, by_room, image, lights::light_reach(image.position, bounds[c].first, bounds[c].second),
+                          map_size, hulls);
         }
         if (bounded) out[c] = std::move(hulls);
     }
