@@ -176,22 +176,33 @@ void draw_part(const DrawContext& ctx, const LevelView& view, const Scissor& sci
     draw_cell(ctx, part, {Pass::Scene, part.level, &shaded, scissor});
 }
 
-// Where the path images of view.cell's lights may light it, per eye: the
-// union of their lit regions' rectangles (two pixels of margin); none where
-// none is seen. nullopt where some path image may light the whole cell.
-std::optional<std::array<NdcRect, 2>> light_paths_rects(const DrawContext& ctx, const LevelView& view) {
-    const std::optional<std::vector<std::array<math::dvec3, 8>>>& regions =
-        ctx.lights.path_regions[static_cast<size_t>(view.cell)];
-    if (!regions) return std::nullopt;
+// Per eye, the union of the rectangles rect_of(region, eye) of `regions`,
+// each with two pixels of margin, within the eye's rect; none where none is
+// seen.
+template <class Regions, class RectOf>
+std::array<NdcRect, 2> united_rects(const DrawContext& ctx, const LevelView& view, const Regions& regions,
+                                    RectOf rect_of) {
     std::array<NdcRect, 2> all{NdcRect::none(), NdcRect::none()};
-    for (const std::array<math::dvec3, 8>& region : *regions)
+    for (const auto& region : regions)
         for (size_t e = 0; e < 2; ++e) {
-            const NdcRect r = box_rect(region.data(), view.eyes[e]);
+            const NdcRect r = rect_of(region, view.eyes[e]);
             if (r.empty()) continue;
             all[e] = united(all[e],
                             intersect(widened(r, 2.0, ctx.frame.eye_width, ctx.frame.eye_height), view.eyes[e].rect));
         }
     return all;
+}
+
+// Where the path images of view.cell's lights may light it, per eye: the
+// union of their lit regions' rectangles. nullopt where some path image may
+// light the whole cell.
+std::optional<std::array<NdcRect, 2>> light_paths_rects(const DrawContext& ctx, const LevelView& view) {
+    const std::optional<std::vector<std::array<math::dvec3, 8>>>& regions =
+        ctx.lights.path_regions[static_cast<size_t>(view.cell)];
+    if (!regions) return std::nullopt;
+    return united_rects(ctx, view, *regions, [](const std::array<math::dvec3, 8>& region, const EyeView& eye) {
+        return box_rect(region.data(), eye);
+    });
 }
 
 // Each part draws all of the cell's triangles again (the scissor only drops
@@ -207,9 +218,9 @@ bool light_split_pays(const DrawContext& ctx, size_t cell) {
 }
 
 // Where a prop's shadow may fall on view.cell, per eye: the union of its
-// images' shadow hulls' rectangles (render/lights/shadow_regions.hpp; two
-// pixels of margin). nullopt where the split does not apply: shadows
-// anywhere, or none at all (then every draw of the room skips the lookups).
+// images' shadow hulls' rectangles (render/lights/shadow_regions.hpp).
+// nullopt where the split does not apply: shadows anywhere, or none at all
+// (then every draw of the room skips the lookups).
 std::optional<std::array<NdcRect, 2>> shadow_rects(const DrawContext& ctx, const LevelView& view) {
     const auto c = static_cast<size_t>(view.cell);
     if (!ctx.scene.lighting.lit || !ctx.frame.cull_portals || !ctx.frame.split_light_draws ||
@@ -217,15 +228,9 @@ std::optional<std::array<NdcRect, 2>> shadow_rects(const DrawContext& ctx, const
         ctx.lights.shadow_regions[c]->empty() || ctx.lights.count[c] == 0 || !ctx.scene.volumes[c].empty() ||
         !light_split_pays(ctx, c))
         return std::nullopt;
-    std::array<NdcRect, 2> all{NdcRect::none(), NdcRect::none()};
-    for (const std::array<math::dvec3, 16>& hull : *ctx.lights.shadow_regions[c])
-        for (size_t e = 0; e < 2; ++e) {
-            const NdcRect r = hull_rect(hull.data(), 16, view.eyes[e]);
-            if (r.empty()) continue;
-            all[e] = united(all[e],
-                            intersect(widened(r, 2.0, ctx.frame.eye_width, ctx.frame.eye_height), view.eyes[e].rect));
-        }
-    return all;
+    return united_rects(
+        ctx, view, *ctx.lights.shadow_regions[c],
+        [](const std::array<math::dvec3, 16>& hull, const EyeView& eye) { return hull_rect(hull.data(), 16, eye); });
 }
 
 using PartDraw = void (*)(const DrawContext&, const LevelView&, const Scissor&, PartKind, bool);

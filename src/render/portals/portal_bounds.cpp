@@ -27,19 +27,16 @@ bool covers_pixel_centre(const NdcRect& rect, int width, int height, int samples
 
 namespace {
 
-// The bound in the eye's image of the first `count` corners of a box (4: its
-// front rectangle's outline; 8: the whole box, corners as math::box_corners
-// orders them), within the eye's rect; none when all lie behind the eye.
-NdcRect bound_corners(const math::dvec3 corners[8], int count, const EyeView& view) {
-    math::dvec4 clip[8];
-    for (int i = 0; i < count; ++i) clip[i] = view.view_proj * math::dvec4(corners[i], 1.0);
-
-    // Clip the outline's edges at w = eps (just in front of the eye) and bound
-    // what remains; edges that pass near the eye project far out and simply
-    // widen the bound (an eye inside the box gets the whole parent rect).
-    static constexpr int kEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
-                                          {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
-    const int edge_count = count == 8 ? 12 : 4;
+// The bound in the eye's image of the part in front of the eye (w >= eps)
+// of the outline of `count` points (at most 16): the points there and the
+// crossings of w = eps by its edges (`each_edge(f)` calls f(i, j) for each),
+// within the eye's rect; none when all lie behind the eye. Edges that pass
+// near the eye project far out and simply widen the bound (an eye inside a
+// box gets the whole parent rect).
+template <class EachEdge>
+NdcRect bound_outline(const math::dvec3* points, int count, EachEdge each_edge, const EyeView& view) {
+    math::dvec4 clip[16];
+    for (int i = 0; i < count; ++i) clip[i] = view.view_proj * math::dvec4(points[i], 1.0);
     const double eps = 1e-9;
     double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
     auto add = [&](const math::dvec4& c) {
@@ -51,13 +48,28 @@ NdcRect bound_corners(const math::dvec3 corners[8], int count, const EyeView& vi
     };
     for (int i = 0; i < count; ++i)
         if (clip[i].w >= eps) add(clip[i]);
-    for (int k = 0; k < edge_count; ++k) {
-        const math::dvec4& a = clip[kEdges[k][0]];
-        const math::dvec4& b = clip[kEdges[k][1]];
+    each_edge([&](int i, int j) {
+        const math::dvec4& a = clip[i];
+        const math::dvec4& b = clip[j];
         if ((a.w >= eps) != (b.w >= eps)) add(a + (b - a) * ((eps - a.w) / (b.w - a.w)));
-    }
+    });
     if (!(x0 <= x1)) return NdcRect::none();  // wholly behind the eye
     return intersect(NdcRect{x0, y0, x1, y1}, view.rect);
+}
+
+// A box's edges, corners as math::box_corners orders them: the front
+// rectangle's four first.
+constexpr int kBoxEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                                  {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+
+// The bound of the first `count` corners of a box (4: its front rectangle's
+// outline; 8: the whole box).
+NdcRect bound_corners(const math::dvec3 corners[8], int count, const EyeView& view) {
+    const int edge_count = count == 8 ? 12 : 4;
+    const auto each_edge = [edge_count](const auto& f) {
+        for (int k = 0; k < edge_count; ++k) f(kBoxEdges[k][0], kBoxEdges[k][1]);
+    };
+    return bound_outline(corners, count, each_edge, view);
 }
 
 }  // namespace
@@ -76,27 +88,12 @@ NdcRect portal_rect(const math::PortalRect& portal, const EyeView& view) {
 
 NdcRect hull_rect(const math::dvec3* points, int count, const EyeView& view) {
     if (!view.active || view.rect.empty() || count <= 0 || count > 16) return count > 16 ? view.rect : NdcRect::none();
-    math::dvec4 clip[16];
-    for (int i = 0; i < count; ++i) clip[i] = view.view_proj * math::dvec4(points[i], 1.0);
-    // The hull's part in front of the eye (w >= eps) is the hull of its
-    // points there and of the crossings of w = eps by segments between its
-    // points: every pair's, a superset of its edges'.
-    const double eps = 1e-9;
-    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
-    auto add = [&](const math::dvec4& c) {
-        x0 = std::min(x0, c.x / c.w);
-        x1 = std::max(x1, c.x / c.w);
-        y0 = std::min(y0, c.y / c.w);
-        y1 = std::max(y1, c.y / c.w);
+    // Every pair's segment: a superset of the hull's edges.
+    const auto each_pair = [count](const auto& f) {
+        for (int i = 0; i < count; ++i)
+            for (int j = i + 1; j < count; ++j) f(i, j);
     };
-    for (int i = 0; i < count; ++i) {
-        if (clip[i].w >= eps) add(clip[i]);
-        for (int k = i + 1; k < count; ++k)
-            if ((clip[i].w >= eps) != (clip[k].w >= eps))
-                add(clip[i] + (clip[k] - clip[i]) * ((eps - clip[i].w) / (clip[k].w - clip[i].w)));
-    }
-    if (!(x0 <= x1)) return NdcRect::none();
-    return intersect(NdcRect{x0, y0, x1, y1}, view.rect);
+    return bound_outline(points, count, each_pair, view);
 }
 
 NdcRect box_rect(const math::dvec3 corners[8], const EyeView& view) {
