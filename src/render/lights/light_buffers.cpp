@@ -179,17 +179,22 @@ unsigned light_loop_flags(const LightBuffers& buffers, int room) {
     return blockers | plain | single;
 }
 
+unsigned direct_loop_flags(const LightBuffers& buffers, int room) {
+    return (light_loop_flags(buffers, room) | kLightsNoPaths) & ~kLightsSingleAperture;
+}
+
 std::uint64_t light_loops_needed(const LightBuffers& buffers, bool shadows, bool split) {
     std::uint64_t needed = 0u;
     const auto bit = [](unsigned flags) { return std::uint64_t{1} << light_loop_index(flags); };
     for (size_t c = 0; c < buffers.count.size(); ++c) {
         if (buffers.count[c] == 0) continue;
-        const unsigned loops = light_loop_flags(buffers, static_cast<int>(c));
+        const int room = static_cast<int>(c);
+        const unsigned loops = light_loop_flags(buffers, room);
         std::vector<unsigned> kinds = {loops};
         // A room with both kinds draws without its paths outside their lit
         // regions (render/objects/object_draw.cpp).
         if (split && (loops & (kLightsNoDirect | kLightsNoPaths)) == 0u)
-            kinds.push_back((loops | kLightsNoPaths) & ~kLightsSingleAperture);
+            kinds.push_back(direct_loop_flags(buffers, room));
         for (const unsigned k : kinds) {
             // Split, the parts outside the props' shadows (and every part,
             // without maps) skip the lookups; the rest, or every draw when

@@ -71,6 +71,9 @@ LightBuffers upload_light_images(const std::vector<lights::RoomLights>& rooms, c
 // blocker, some image is a spot or has a range and some path image has more
 // than one rectangle; or where it has no image.
 unsigned light_loop_flags(const LightBuffers& buffers, int room);
+// The same for the room's draws without its path loop (outside where its
+// path images may light it): its direct loop alone.
+unsigned direct_loop_flags(const LightBuffers& buffers, int room);
 // Which loop variants the rooms need (VariantNeeds::light_loops); `shadows`:
 // the frame has shadow maps; `split`: the frame's lit rooms may be split by
 // where their paths and the props' shadows reach (kLightsNoShadows drawn

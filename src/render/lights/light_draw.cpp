@@ -22,9 +22,7 @@ unsigned light_flags(const DrawContext& ctx, int room, const LevelView* view) {
     const unsigned shadows = without_shadows(ctx, c, view) ? kLightsNoShadows : 0u;
     if (view && view->outside_light_paths && room == view->cell) {
         if (ctx.lights.direct[c] == 0) return kLights | kLightsAmbient;
-        return kLights | (ctx.lights.ubo ? kLightsUbo : 0u) | kLightsNoPaths |
-               (ctx.lights.direct_blockers[c] ? kLightsDirectBlockers : 0u) |
-               (ctx.lights.plain_points[c] ? kLightsPlainPoints : 0u) | shadows;
+        return kLights | (ctx.lights.ubo ? kLightsUbo : 0u) | direct_loop_flags(ctx.lights, room) | shadows;
     }
     return kLights | (ctx.lights.ubo ? kLightsUbo : 0u) | (ctx.frame.naive_lights ? kLightsNaive : 0u) |
            light_loop_flags(ctx.lights, room) | shadows;
