@@ -148,9 +148,10 @@ void add_boxes(PlanBuilder& b, const SweepItem& item) {
     });
 }
 
-// One item of --sweep volumes: "split" (the default), "one-variant" (the
-// discarding variant over the whole level) or "none" (the layout without
-// its volumes).
+// One item of --sweep volumes: "split" (the default), "whole-target" (split,
+// but each volume's target room drawn whole within the volume's bounds, not
+// in pieces), "one-variant" (the discarding variant over the whole level) or
+// "none" (the layout without its volumes).
 void add_volumes(PlanBuilder& b, const layout::Layout& layout, const SweepItem& item) {
     int variant = 0;
     if (item.suffix == "none") {
@@ -158,9 +159,11 @@ void add_volumes(PlanBuilder& b, const layout::Layout& layout, const SweepItem& 
         variant = static_cast<int>(b.plan.sessions.size()) - 1;
     }
     const bool split = item.suffix != "one-variant";
-    b.add(item.name, item.kind, [variant, split](BenchConfig& c) {
+    const bool pieces = item.suffix != "whole-target";
+    b.add(item.name, item.kind, [variant, split, pieces](BenchConfig& c) {
         c.layout_variant = variant;
         c.frame.split_volume_draws = split;
+        c.frame.volume_pieces = pieces;
     });
 }
 

@@ -60,8 +60,8 @@ SweepItem parse_item(const std::string& kind, const std::string& item) {
         if (item != "on" && item != "off") throw InputError(value.name + ": '" + item + "' is not on or off");
         s.on = item == "on";
     } else if (kind == "volumes") {
-        if (item != "split" && item != "one-variant" && item != "none")
-            throw InputError(value.name + ": '" + item + "' is not split, one-variant or none");
+        if (item != "split" && item != "whole-target" && item != "one-variant" && item != "none")
+            throw InputError(value.name + ": '" + item + "' is not split, whole-target, one-variant or none");
         s.suffix = item;
     } else if (kind == "depth") {
         s.n = cli::parse_max_depth(value);
@@ -84,7 +84,7 @@ std::vector<SweepItem> parse_sweep(const std::string& sweep) {
             "--sweep: '" + sweep +
             "' is not techniques, portals:N,..., boxes:N,..., depth:N,..., size:WxH,..., samples:N,..., "
             "lights:fixed|N|N/naive|N/one-part,..., light-depth:N,..., shadow-size:N,..., mask:on|off,... or "
-            "volumes:split|one-variant|none,...");
+            "volumes:split|whole-target|one-variant|none,...");
     std::vector<SweepItem> items;
     for (const std::string& item : split(sweep.substr(colon + 1), ',')) items.push_back(parse_item(kind, item));
     return items;

@@ -132,6 +132,13 @@ struct Diagnostics {
     // draw_level_colour); the image is the same. Off (the VOLUMES variant
     // over the whole level) only to compare (tests, bench's volumes=one-variant).
     bool split_volume_draws = true;
+    // With culling and split_volume_draws: each volume's target room drawn
+    // as only its triangles that may lie inside the volume, in pieces, each
+    // within the screen bounds of where it meets the volume
+    // (scene/volume_batches.hpp); the image is the same. Off (the target's
+    // whole cell within the volume's bounds) only to compare (tests, bench's
+    // volumes=whole-target).
+    bool volume_pieces = true;
     // With culling, under "lighting": "lights", in a cell some of whose light
     // images come through portals (and no volume): the cell drawn without the
     // loop over those images outside their lit regions' screen bounds

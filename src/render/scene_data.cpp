@@ -35,13 +35,15 @@ void copy_volumes(SceneData& r, const scene::Scene& scene) {
     std::vector<float> boxes;
     for (size_t c = 0; c < scene.volumes.size(); ++c) {
         r.volume_first[c] = static_cast<int>(boxes.size() / 16);
-        for (const layout::Volume& v : scene.volumes[c]) {
+        for (size_t k = 0; k < scene.volumes[c].size(); ++k) {
+            const layout::Volume& v = scene.volumes[c][k];
             VolumeBox box;
             box.center = v.rect.center;
             box.axes = {math::portal_right(v.rect), v.rect.up, v.rect.normal};
             box.half = 0.5 * math::dvec3(v.rect.width, v.rect.height, v.rect.depth);
             box.target = v.target_room;
             box.tint = v.tint;
+            box.target_pieces = scene.volume_pieces[c][k];
             r.volumes[c].push_back(box);
             const math::dvec3 centre = box.center - scene.origins[c].origin;
             boxes.insert(boxes.end(), {float(centre.x), float(centre.y), float(centre.z), 0.0f});

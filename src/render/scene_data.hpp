@@ -26,6 +26,9 @@ struct VolumeBox {
     std::array<math::dvec3, 3> axes{};  // r, u, n: unit
     math::dvec3 half{0.0};              // half the width, height, depth
     int target = -1;                    // the room shown inside
+    // The target's triangles that may lie inside, in pieces with their
+    // bounds (scene::Scene::volume_pieces): drawn with culling.
+    std::vector<scene::VolumePiece> target_pieces;
     glm::dvec3 tint{1.0};
 };
 

@@ -17,6 +17,7 @@
 #include "scene/portal_box.hpp"
 #include "scene/room_mesh.hpp"
 #include "scene/scene.hpp"
+#include "scene/volume_batches.hpp"
 
 namespace impossible::scene {
 
@@ -123,6 +124,12 @@ Scene build_scene(const layout::Layout& layout, const links::PortalLinks& links)
     scene.batches.reserve(layout.rooms.size());
     scene.origins.reserve(layout.rooms.size());
     for (std::size_t r = 0; r < layout.rooms.size(); ++r) append_cell(scene, out, layout, r, room_portals[r], fronts);
+    scene.volume_pieces.resize(layout.rooms.size());
+    for (std::size_t r = 0; r < layout.rooms.size(); ++r)
+        for (const layout::Volume& v : scene.volumes[r]) {
+            const auto t = static_cast<std::size_t>(v.target_room);
+            scene.volume_pieces[r].push_back(volume_pieces(scene, scene.batches[t], scene.origins[t].origin, v));
+        }
 
     scene.portals.reserve(layout.portals.size());
     scene.portal_info.reserve(layout.portals.size());

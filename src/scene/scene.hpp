@@ -11,6 +11,7 @@
 // face inwards, prop boxes outwards, portal boxes as the spec's "portal box".
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -138,6 +139,16 @@ struct ObjectMesh {
     std::uint32_t first_vertex = 0, vertex_end = 0;
 };
 
+// Consecutive triangles of a volume's target room that may lie inside the
+// volume (scene/volume_batches.hpp), and where.
+struct VolumePiece {
+    DrawBatch batch;  // a run of one of the target's batches, with its state
+    // Bounds of those triangles' parts inside the (slightly grown) box, along
+    // the box's axes, as eight corners in layout coordinates
+    // (math::box_corners's order).
+    std::array<glm::dvec3, 8> corners{};
+};
+
 struct Scene {
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;
@@ -154,6 +165,9 @@ struct Scene {
     walk::ObjectSet object_set;
     std::vector<ObjectMesh> object_meshes;             // per object_set.props, then the hand (the last)
     std::vector<std::vector<layout::Volume>> volumes;  // per room: its volume portals, in file order
+    // Per room, per volume: its target room's triangles that may lie inside
+    // the volume, in pieces with their bounds (scene/volume_batches.hpp).
+    std::vector<std::vector<std::vector<VolumePiece>>> volume_pieces;
     // Under "lighting": "lights" (layout-format.md, "Lights"): every room's
     // light images at the layout's light_depth (lights::light_images), and
     // the layout with the lights that light frames (lights::light_bound),

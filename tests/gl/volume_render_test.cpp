@@ -65,10 +65,11 @@ const VolumeView kVolumeViews[] = {
 
 TEST(VolumeRender, TheDiscardingVariantDrawsOnlyWhereTheVolumeMayBeSeen) {
     // Issue 39: outside the volume's screen bounds the lab is drawn by the
-    // plain variant (early depth test), the discarding one only inside: the
-    // pixels it covers are a part of the image, the whole image without the
-    // split, and the two frames are the same picture (the parts are scissor
-    // rectangles of the same draws), the tracer's.
+    // plain variant (early depth test), the discarding one only inside, and
+    // the target room in pieces (scene/volume_batches.hpp): the pixels it
+    // covers are a part of the image, the whole image without the split, and
+    // the two frames are the same picture (the parts are scissor rectangles
+    // of the same draws), the tracer's.
     CrossingRig rig(kVolumeLayout);
     ASSERT_TRUE(rig.renderer);
     for (const VolumeView& v : kVolumeViews) {
@@ -95,6 +96,29 @@ TEST(VolumeRender, TheDiscardingVariantDrawsOnlyWhereTheVolumeMayBeSeen) {
     EXPECT_GE(whole.volume_variant_pixels, image);
     EXPECT_GT(split.volume_variant_pixels, 0);
     EXPECT_LT(split.volume_variant_pixels, image / 2) << split.volume_variant_pixels << " of " << image;
+    // The target room in pieces, each within where it meets the volume
+    // (scene/volume_batches.hpp): fewer fragments shaded, and discarded, for
+    // the same picture.
+    {
+        GLuint query = 0;
+        glGenQueries(1, &query);
+        const auto invocations = [&](bool pieces) {
+            f.split_volume_draws = true;
+            f.volume_pieces = pieces;
+            glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS, query);
+            const image::Image out = rig.render(f);
+            glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS);
+            GLuint64 n = 0;
+            glGetQueryObjectui64v(query, GL_QUERY_RESULT, &n);
+            return std::pair{out, n};
+        };
+        const auto [in_pieces, fewer] = invocations(true);
+        const auto [whole_target, more] = invocations(false);
+        glDeleteQueries(1, &query);
+        EXPECT_EQ(testing::count_colour_differences(in_pieces, whole_target), 0);
+        EXPECT_EQ(testing::count_id_differences(in_pieces, whole_target), 0);
+        EXPECT_LT(fewer + static_cast<GLuint64>(image / 20), more) << fewer << " and " << more << " invocations";
+    }
     // The same picture in the other stereo modes and multisampled.
     for (const render::StereoMode stereo : {render::StereoMode::TwoPass, render::StereoMode::ViewportIndex})
         for (const int samples : {1, 4}) {

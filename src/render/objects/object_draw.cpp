@@ -33,15 +33,27 @@
 namespace impossible::render {
 namespace {
 
+gl::ScissorRect clipped(const gl::ScissorRect& r, const gl::ScissorRect& to) {
+    const int x0 = std::max(r.x, to.x), y0 = std::max(r.y, to.y);
+    const int x1 = std::min(r.x + r.width, to.x + to.width), y1 = std::min(r.y + r.height, to.y + to.height);
+    return {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
+}
+
 // Room `t`'s own batches in a level of another cell (a volume's target, in
-// the same coordinates), shown inside volume `inside` only.
-void draw_volume_room(const DrawContext& ctx, const LevelView& view, const Scissor& scissor, int t, int inside) {
+// the same coordinates), shown inside volume `inside` only. With culling,
+// only its triangles that may lie inside, piece by piece, each within the
+// screen bounds of where it meets the volume: the same triangles in the same
+// order, with the same clip rectangles, so the same pixels; fewer fragments
+// to discard (scene/volume_batches.hpp; FrameDesc::volume_pieces).
+void draw_volume_room(const DrawContext& ctx, const LevelView& view, const Scissor& scissor, const VolumeBox& volume,
+                      int inside) {
     const SceneData& r = ctx.scene;
+    const int t = volume.target;
     const scene::CellOrigin& origin = r.cell_origins[static_cast<size_t>(t)];
     const math::dmat4 model = glm::translate(math::dmat4(1.0), origin.origin);
     // Lit by its own room's ambient and lights (layout-format.md, "Lights").
     if (r.lighting.lit) ctx.scratch.stats.light_images += ctx.lights.count[static_cast<size_t>(t)];
-    for (const scene::DrawBatch& b : r.cells[static_cast<size_t>(t)]) {
+    const auto draw = [&](const scene::DrawBatch& b, const Scissor& within) {
         const SceneProgram& program =
             cell_program(ctx, view, light_flags(ctx, t) | (has_material(b) ? kMaterials : 0u));
         set_model_uniforms(ctx, view, program, {view.eyes[0].rect, view.eyes[1].rect}, model, origin.checker_offset);
@@ -49,7 +61,21 @@ void draw_volume_room(const DrawContext& ctx, const LevelView& view, const Sciss
         set_room_lights(ctx, program, t, false);
         set_volume_uniforms(ctx, view, program, model, inside);
         if (has_material(b)) set_material(ctx, program, b);
-        draw_range(ctx, view, {Pass::Scene, view.level, &program, scissor}, b.range);
+        draw_range(ctx, view, {Pass::Scene, view.level, &program, within}, b.range);
+    };
+    if (!ctx.frame.cull_portals || !ctx.frame.split_volume_draws || !ctx.frame.volume_pieces) {
+        for (const scene::DrawBatch& b : r.cells[static_cast<size_t>(t)]) draw(b, scissor);
+        return;
+    }
+    for (const scene::VolumePiece& piece : volume.target_pieces) {
+        std::array<NdcRect, 2> rects{NdcRect::none(), NdcRect::none()};
+        for (size_t e = 0; e < 2; ++e)
+            if (view.eyes[e].active && !view.eyes[e].rect.empty())
+                rects[e] = box_rect(piece.corners.data(), view.eyes[e]);
+        if (rects[0].empty() && rects[1].empty()) continue;
+        const gl::ScissorRect within =
+            scissor ? clipped(scissor_of(ctx, rects, view), *scissor) : scissor_of(ctx, rects, view);
+        if (within.width > 0 && within.height > 0) draw(piece.batch, within);
     }
 }
 
@@ -111,12 +137,6 @@ std::array<NdcRect, 2> volumes_rects(const DrawContext& ctx, const LevelView& vi
         for (size_t e = 0; e < 2; ++e) all[e] = united(all[e], narrowed.eyes[e].rect);
     }
     return all;
-}
-
-gl::ScissorRect clipped(const gl::ScissorRect& r, const gl::ScissorRect& to) {
-    const int x0 = std::max(r.x, to.x), y0 = std::max(r.y, to.y);
-    const int x1 = std::min(r.x + r.width, to.x + to.width), y1 = std::min(r.y + r.height, to.y + to.height);
-    return {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
 }
 
 // The pixels of `level` outside the (disjoint) rectangles `holes`, as
@@ -316,7 +336,7 @@ void draw_volume_rooms(const DrawContext& ctx, const LevelView& view, const Scis
         const Scissor within = ctx.frame.cull_portals
                                    ? portal_scissor(ctx, narrowed, {narrowed.eyes[0].rect, narrowed.eyes[1].rect})
                                    : scissor;
-        draw_volume_room(ctx, narrowed, within, volumes[k].target, static_cast<int>(k));
+        draw_volume_room(ctx, narrowed, within, volumes[k], static_cast<int>(k));
         draw_cell_instances(ctx, narrowed, within, volumes[k].target, static_cast<int>(k));
     }
 }

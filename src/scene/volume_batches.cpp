@@ -1,0 +1,173 @@
+// volume_pieces (volume_batches.hpp).
+#include "scene/volume_batches.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <optional>
+
+#include "math/portal.hpp"
+
+namespace impossible::scene {
+namespace {
+
+// A triangle clipped to the box grown to `reach` (Sutherland-Hodgman, in the
+// box's coordinates): the bounds of what is left, or nullopt where nothing is.
+std::optional<std::pair<glm::dvec3, glm::dvec3>> clipped_bounds(const std::array<glm::dvec3, 3>& triangle,
+                                                                const glm::dvec3& reach) {
+    std::vector<glm::dvec3> polygon(triangle.begin(), triangle.end()), next;
+    for (int plane = 0; plane < 6 && !polygon.empty(); ++plane) {
+        const int axis = plane / 2;
+        const double sign = plane % 2 == 0 ? 1.0 : -1.0;
+        const auto inside = [&](const glm::dvec3& p) { return reach[axis] - sign * p[axis]; };
+        next.clear();
+        for (size_t k = 0; k < polygon.size(); ++k) {
+            const glm::dvec3& a = polygon[k];
+            const glm::dvec3& b = polygon[(k + 1) % polygon.size()];
+            const double sa = inside(a), sb = inside(b);
+            if (sa >= 0.0) next.push_back(a);
+            if ((sa >= 0.0) != (sb >= 0.0)) next.push_back(a + (sa / (sa - sb)) * (b - a));
+        }
+        polygon.swap(next);
+    }
+    if (polygon.empty()) return std::nullopt;
+    glm::dvec3 lo = polygon[0], hi = polygon[0];
+    for (const glm::dvec3& p : polygon) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    // Clamped: the cut points' rounding may stray past the grown box.
+    return std::pair{glm::max(lo, -reach), glm::min(hi, reach)};
+}
+
+}  // namespace
+
+namespace {
+
+// A piece before its corners: its batch and run, and its bounds in the
+// box's coordinates.
+struct Run {
+    DrawBatch batch;
+    glm::dvec3 lo{0.0}, hi{0.0};
+    size_t source = 0;  // which of the target's batches
+};
+
+double surface(const glm::dvec3& lo, const glm::dvec3& hi) {
+    const glm::dvec3 d = hi - lo;
+    return d.x * d.y + d.y * d.z + d.z * d.x;
+}
+
+// The runs of each batch's triangles that meet the box grown to `reach`,
+// one face (triangles in one plane) each, at most kVolumePieceTriangles.
+std::vector<Run> face_runs(const Scene& scene, const std::vector<DrawBatch>& target,
+                           const std::function<glm::dvec3(std::uint32_t)>& local, const glm::dvec3& reach) {
+    std::vector<Run> runs;
+    for (size_t s = 0; s < target.size(); ++s) {
+        const DrawBatch& b = target[s];
+        bool open = false;
+        glm::dvec3 plane_normal{0.0};
+        double plane_offset = 0.0;
+        for (std::uint32_t i = 0; i + 3 <= b.range.count; i += 3) {
+            const std::uint32_t first = b.range.first + i;
+            const std::array<glm::dvec3, 3> t{local(scene.indices[first]), local(scene.indices[first + 1]),
+                                              local(scene.indices[first + 2])};
+            const std::optional<std::pair<glm::dvec3, glm::dvec3>> bounds = clipped_bounds(t, reach);
+            if (!bounds) {
+                open = false;
+                continue;
+            }
+            const glm::dvec3 n = glm::cross(t[1] - t[0], t[2] - t[0]);
+            const double length = glm::length(n);
+            const glm::dvec3 unit = length > 0.0 ? n / length : glm::dvec3(0.0);
+            const bool same_plane = glm::dot(unit, plane_normal) > 1.0 - 1e-9 &&
+                                    std::abs(glm::dot(unit, t[0]) - plane_offset) <= 1e-6;
+            if (!open || !same_plane || runs.back().batch.range.count >= 3 * kVolumePieceTriangles) {
+                runs.push_back({b, bounds->first, bounds->second, s});
+                runs.back().batch.range = {first, 0};
+                plane_normal = unit;
+                plane_offset = glm::dot(unit, t[0]);
+                open = true;
+            }
+            Run& run = runs.back();
+            run.batch.range.count += 3;
+            run.lo = glm::min(run.lo, bounds->first);
+            run.hi = glm::max(run.hi, bounds->second);
+        }
+    }
+    return runs;
+}
+
+// Runs k and k + 1 of one batch as one: the triangles between them (none
+// meets the box) are drawn too, and discarded as before.
+Run joined(const Run& a, const Run& b) {
+    Run j = a;
+    j.batch.range.count = b.batch.range.first + b.batch.range.count - a.batch.range.first;
+    j.lo = glm::min(a.lo, b.lo);
+    j.hi = glm::max(a.hi, b.hi);
+    return j;
+}
+
+}  // namespace
+
+std::vector<VolumePiece> volume_pieces(const Scene& scene, const std::vector<DrawBatch>& target,
+                                       const glm::dvec3& target_origin, const layout::Volume& volume) {
+    const math::PortalRect& rect = volume.rect;
+    const std::array<glm::dvec3, 3> axes{math::portal_right(rect), rect.up, rect.normal};
+    glm::dvec3 reach{0.0};  // the grown half extents
+    for (int a = 0; a < 3; ++a) {
+        const double half = 0.5 * std::array{rect.width, rect.height, rect.depth}[static_cast<size_t>(a)];
+        reach[a] = half * (1.0 + kVolumeKeepShare) + kVolumeKeepMetres;
+    }
+    // A vertex in the box's coordinates.
+    const auto local = [&](std::uint32_t index) {
+        const glm::dvec3 p = glm::dvec3(scene.vertices[index].position) + target_origin - rect.center;
+        return glm::dvec3(glm::dot(p, axes[0]), glm::dot(p, axes[1]), glm::dot(p, axes[2]));
+    };
+    std::vector<Run> runs = face_runs(scene, target, local, reach);
+    // Fewer draws: neighbours of one batch joined, first pairwise while
+    // there are many (a large model), then the pair whose bounds grow least.
+    const auto mergeable = [&](size_t k) { return runs[k].source == runs[k + 1].source; };
+    while (runs.size() > 4 * kVolumeMostPieces) {
+        std::vector<Run> fewer;
+        for (size_t k = 0; k < runs.size(); ++k)
+            if (k + 1 < runs.size() && mergeable(k)) {
+                fewer.push_back(joined(runs[k], runs[k + 1]));
+                ++k;
+            } else {
+                fewer.push_back(runs[k]);
+            }
+        if (fewer.size() == runs.size()) break;
+        runs.swap(fewer);
+    }
+    while (runs.size() > kVolumeMostPieces) {
+        size_t best = runs.size();
+        double growth = INFINITY;
+        for (size_t k = 0; k + 1 < runs.size(); ++k) {
+            if (!mergeable(k)) continue;
+            const Run j = joined(runs[k], runs[k + 1]);
+            const double g = surface(j.lo, j.hi) - surface(runs[k].lo, runs[k].hi) -
+                             surface(runs[k + 1].lo, runs[k + 1].hi);
+            if (g < growth) {
+                growth = g;
+                best = k;
+            }
+        }
+        if (best == runs.size()) break;
+        runs[best] = joined(runs[best], runs[best + 1]);
+        runs.erase(runs.begin() + static_cast<std::ptrdiff_t>(best) + 1);
+    }
+    std::vector<VolumePiece> pieces;
+    for (const Run& run : runs) {
+        VolumePiece piece{run.batch, {}};
+        for (int k = 0; k < 8; ++k) {
+            const glm::dvec3 q(k == 0 || k == 3 || k == 4 || k == 7 ? run.lo.x : run.hi.x,
+                               k % 4 < 2 ? run.lo.y : run.hi.y, k < 4 ? run.hi.z : run.lo.z);
+            piece.corners[static_cast<size_t>(k)] = rect.center + q.x * axes[0] + q.y * axes[1] + q.z * axes[2];
+        }
+        pieces.push_back(piece);
+    }
+    return pieces;
+}
+
+}  // namespace impossible::scene
