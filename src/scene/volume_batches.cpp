@@ -80,8 +80,8 @@ std::vector<Run> face_runs(const Scene& scene, const std::vector<DrawBatch>& tar
             const glm::dvec3 n = glm::cross(t[1] - t[0], t[2] - t[0]);
             const double length = glm::length(n);
             const glm::dvec3 unit = length > 0.0 ? n / length : glm::dvec3(0.0);
-            const bool same_plane = glm::dot(unit, plane_normal) > 1.0 - 1e-9 &&
-                                    std::abs(glm::dot(unit, t[0]) - plane_offset) <= 1e-6;
+            const bool same_plane =
+                glm::dot(unit, plane_normal) > 1.0 - 1e-9 && std::abs(glm::dot(unit, t[0]) - plane_offset) <= 1e-6;
             if (!open || !same_plane || runs.back().batch.range.count >= 3 * kVolumePieceTriangles) {
                 runs.push_back({b, bounds->first, bounds->second, s});
                 runs.back().batch.range = {first, 0};
@@ -146,8 +146,8 @@ std::vector<VolumePiece> volume_pieces(const Scene& scene, const std::vector<Dra
         for (size_t k = 0; k + 1 < runs.size(); ++k) {
             if (!mergeable(k)) continue;
             const Run j = joined(runs[k], runs[k + 1]);
-            const double g = surface(j.lo, j.hi) - surface(runs[k].lo, runs[k].hi) -
-                             surface(runs[k + 1].lo, runs[k + 1].hi);
+            const double g =
+                surface(j.lo, j.hi) - surface(runs[k].lo, runs[k].hi) - surface(runs[k + 1].lo, runs[k + 1].hi);
             if (g < growth) {
                 growth = g;
                 best = k;

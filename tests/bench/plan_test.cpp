@@ -1,7 +1,7 @@
 // keep_first_portals: closing portals for the bench's portal sweep keeps
 // pairs whole, mirrors (which have no target) and renumbers targets; the
 // sweep's N/all-steps item draws every door pass; the light sweep's
-// baselines.
+// baselines; the volume sweep's ways to draw a volume.
 #include <gtest/gtest.h>
 
 #include "bench/plan.hpp"
@@ -97,6 +97,23 @@ TEST(BenchPlan, LightItemsPickTheBaselines) {
     EXPECT_EQ(plan.configs[3].name, "lights=2/one-part");
     EXPECT_THROW(with_sweep(o, "lights:fixed/one-part"), cli::InputError);
     EXPECT_THROW(with_sweep(o, "lights:2/two-parts"), cli::InputError);
+}
+
+TEST(BenchPlan, VolumeItemsPickTheWaysToDrawAVolume) {
+    layout::Layout l = one_room();
+    BenchOptions o;
+    with_sweep(o, "volumes:split,whole-target,one-variant,none");
+    const BenchPlan plan = plan_bench(session::Session(l), o);
+    ASSERT_EQ(plan.configs.size(), 5u);  // base + 4
+    EXPECT_EQ(plan.configs[2].name, "volumes=whole-target");
+    const bool split[] = {true, true, false, true}, pieces[] = {true, false, true, true};
+    for (size_t k = 0; k < 4; ++k) {
+        const BenchConfig& c = plan.configs[k + 1];
+        EXPECT_EQ(c.frame.split_volume_draws, split[k]) << c.name;
+        EXPECT_EQ(c.frame.volume_pieces, pieces[k]) << c.name;
+        EXPECT_EQ(c.layout_variant != 0, k == 3) << c.name;  // none: the layout without its volumes
+    }
+    EXPECT_THROW(with_sweep(o, "volumes:pieces"), cli::InputError);
 }
 
 }  // namespace
