@@ -124,9 +124,11 @@ void get_query_object_ui64v(GLuint query, GLenum name, GLuint64* value);
 // profile refuses the options that would reach them).
 [[noreturn]] void unsupported(const char* call);
 
+// The program in use (webgl.cpp's record of it).
+GLuint current_program();
+
 template <typename T>
 void program_uniform(GLuint program, T&& set) {
-    GLuint current_program();
     const GLuint was = current_program();
     if (was != program) use_program(program);
     set();
