@@ -125,10 +125,12 @@ Scene build_scene(const layout::Layout& layout, const links::PortalLinks& links)
     scene.origins.reserve(layout.rooms.size());
     for (std::size_t r = 0; r < layout.rooms.size(); ++r) append_cell(scene, out, layout, r, room_portals[r], fronts);
     scene.volume_pieces.resize(layout.rooms.size());
+    std::size_t volume_budget = kVolumeTriangleBudget;
     for (std::size_t r = 0; r < layout.rooms.size(); ++r)
         for (const layout::Volume& v : scene.volumes[r]) {
             const auto t = static_cast<std::size_t>(v.target_room);
-            scene.volume_pieces[r].push_back(volume_pieces(scene, scene.batches[t], scene.origins[t].origin, v));
+            scene.volume_pieces[r].push_back(
+                volume_pieces(scene, scene.batches[t], scene.origins[t].origin, v, volume_budget));
         }
 
     scene.portals.reserve(layout.portals.size());

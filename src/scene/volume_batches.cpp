@@ -7,6 +7,8 @@
 #include <functional>
 #include <optional>
 
+#include <glm/vector_relational.hpp>
+
 #include "math/portal.hpp"
 
 namespace impossible::scene {
@@ -16,26 +18,37 @@ namespace {
 // box's coordinates): the bounds of what is left, or nullopt where nothing is.
 std::optional<std::pair<glm::dvec3, glm::dvec3>> clipped_bounds(const std::array<glm::dvec3, 3>& triangle,
                                                                 const glm::dvec3& reach) {
-    std::vector<glm::dvec3> polygon(triangle.begin(), triangle.end()), next;
-    for (int plane = 0; plane < 6 && !polygon.empty(); ++plane) {
+    // Most triangles lie wholly inside or wholly beyond one side.
+    const glm::dvec3 lo0 = glm::min(triangle[0], glm::min(triangle[1], triangle[2]));
+    const glm::dvec3 hi0 = glm::max(triangle[0], glm::max(triangle[1], triangle[2]));
+    for (int a = 0; a < 3; ++a)
+        if (lo0[a] > reach[a] || hi0[a] < -reach[a]) return std::nullopt;
+    if (glm::all(glm::lessThanEqual(hi0, reach)) && glm::all(glm::greaterThanEqual(lo0, -reach)))
+        return std::pair{lo0, hi0};
+    // A triangle cut by six planes has at most nine corners.
+    std::array<glm::dvec3, 12> polygon{}, next{};
+    size_t count = 3, next_count = 0;
+    std::copy(triangle.begin(), triangle.end(), polygon.begin());
+    for (int plane = 0; plane < 6 && count > 0; ++plane) {
         const int axis = plane / 2;
         const double sign = plane % 2 == 0 ? 1.0 : -1.0;
         const auto inside = [&](const glm::dvec3& p) { return reach[axis] - sign * p[axis]; };
-        next.clear();
-        for (size_t k = 0; k < polygon.size(); ++k) {
+        next_count = 0;
+        for (size_t k = 0; k < count; ++k) {
             const glm::dvec3& a = polygon[k];
-            const glm::dvec3& b = polygon[(k + 1) % polygon.size()];
+            const glm::dvec3& b = polygon[(k + 1) % count];
             const double sa = inside(a), sb = inside(b);
-            if (sa >= 0.0) next.push_back(a);
-            if ((sa >= 0.0) != (sb >= 0.0)) next.push_back(a + (sa / (sa - sb)) * (b - a));
+            if (sa >= 0.0) next[next_count++] = a;
+            if ((sa >= 0.0) != (sb >= 0.0)) next[next_count++] = a + (sa / (sa - sb)) * (b - a);
         }
         polygon.swap(next);
+        count = next_count;
     }
-    if (polygon.empty()) return std::nullopt;
+    if (count == 0) return std::nullopt;
     glm::dvec3 lo = polygon[0], hi = polygon[0];
-    for (const glm::dvec3& p : polygon) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
+    for (size_t k = 1; k < count; ++k) {
+        lo = glm::min(lo, polygon[k]);
+        hi = glm::max(hi, polygon[k]);
     }
     // Clamped: the cut points' rounding may stray past the grown box.
     return std::pair{glm::max(lo, -reach), glm::min(hi, reach)};
@@ -111,7 +124,8 @@ Run joined(const Run& a, const Run& b) {
 }  // namespace
 
 std::vector<VolumePiece> volume_pieces(const Scene& scene, const std::vector<DrawBatch>& target,
-                                       const glm::dvec3& target_origin, const layout::Volume& volume) {
+                                       const glm::dvec3& target_origin, const layout::Volume& volume,
+                                       std::size_t& budget) {
     const math::PortalRect& rect = volume.rect;
     const std::array<glm::dvec3, 3> axes{math::portal_right(rect), rect.up, rect.normal};
     glm::dvec3 reach{0.0};  // the grown half extents
@@ -124,7 +138,16 @@ std::vector<VolumePiece> volume_pieces(const Scene& scene, const std::vector<Dra
         const glm::dvec3 p = glm::dvec3(scene.vertices[index].position) + target_origin - rect.center;
         return glm::dvec3(glm::dot(p, axes[0]), glm::dot(p, axes[1]), glm::dot(p, axes[2]));
     };
-    std::vector<Run> runs = face_runs(scene, target, local, reach);
+    std::size_t triangles = 0;
+    for (const DrawBatch& b : target) triangles += b.range.count / 3;
+    std::vector<Run> runs;
+    if (triangles <= budget) {
+        budget -= triangles;
+        runs = face_runs(scene, target, local, reach);
+    } else {
+        // Past the budget: each batch whole, within the grown box's bounds.
+        for (size_t k = 0; k < target.size(); ++k) runs.push_back({target[k], -reach, reach, k});
+    }
     // Fewer draws: neighbours of one batch joined, first pairwise while
     // there are many (a large model), then the pair whose bounds grow least.
     const auto mergeable = [&](size_t k) { return runs[k].source == runs[k + 1].source; };

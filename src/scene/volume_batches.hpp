@@ -33,7 +33,14 @@ inline constexpr std::size_t kVolumeMostPieces = 8;
 // down to kVolumeMostPieces. A joined piece also draws the triangles between
 // its runs, which meet no part of the box (their fragments are discarded, as
 // in the whole cell's draw).
+// `budget`: how many triangles the scene's volumes may still examine, less
+// the target's here; a target of more is drawn whole (a piece per batch
+// within the grown box's bounds), so that building a scene of many volumes
+// over a large room stays proportional to the scene (a hostile layout's
+// 20,000 volumes over 100,000 triangles would otherwise clip 2·10⁹).
+inline constexpr std::size_t kVolumeTriangleBudget = 2'000'000;
 std::vector<VolumePiece> volume_pieces(const Scene& scene, const std::vector<DrawBatch>& target,
-                                       const glm::dvec3& target_origin, const layout::Volume& volume);
+                                       const glm::dvec3& target_origin, const layout::Volume& volume,
+                                       std::size_t& budget);
 
 }  // namespace impossible::scene

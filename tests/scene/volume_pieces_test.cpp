@@ -157,5 +157,36 @@ TEST(VolumePieces, AFaceInsideTheVolumeIsOnePieceBoundedWhereItMeetsIt) {
     EXPECT_GE(floors, 1);
 }
 
+TEST(VolumePieces, PastTheBudgetTheTargetIsDrawnWholeWithinTheBox) {
+    const math::PortalRect rect = scanner_rect({0.0, 0.0, 1.0});
+    const layout::Layout l = volume_layout(rect);
+    const Scene s = build_scene(l);
+    std::size_t triangles = 0;
+    for (const DrawBatch& b : s.batches[1]) triangles += b.range.count / 3;
+    // Within the budget: the pieces build_scene made, and the budget spent.
+    std::size_t budget = triangles;
+    const std::vector<VolumePiece> cut = volume_pieces(s, s.batches[1], s.origins[1].origin, l.volumes[0], budget);
+    EXPECT_EQ(budget, 0u);
+    ASSERT_EQ(cut.size(), s.volume_pieces[0][0].size());
+    for (size_t k = 0; k < cut.size(); ++k)
+        EXPECT_EQ(cut[k].batch.range.first, s.volume_pieces[0][0][k].batch.range.first);
+    // Past it: each batch whole, bounded by the grown box, and nothing spent.
+    budget = triangles - 1;
+    const std::vector<VolumePiece> whole = volume_pieces(s, s.batches[1], s.origins[1].origin, l.volumes[0], budget);
+    EXPECT_EQ(budget, triangles - 1);
+    ASSERT_EQ(whole.size(), s.batches[1].size());
+    for (size_t k = 0; k < whole.size(); ++k) {
+        EXPECT_EQ(whole[k].batch.range.first, s.batches[1][k].range.first);
+        EXPECT_EQ(whole[k].batch.range.count, s.batches[1][k].range.count);
+        for (const glm::dvec3& corner : whole[k].corners) {
+            const glm::dvec3 q = in_box(rect, corner);
+            for (int axis = 0; axis < 3; ++axis) {
+                const double half = 0.5 * std::array{rect.width, rect.height, rect.depth}[static_cast<size_t>(axis)];
+                EXPECT_NEAR(std::abs(q[axis]), 1.0 + kVolumeKeepShare + kVolumeKeepMetres / half, 1e-9);
+            }
+        }
+    }
+}
+
 }  // namespace
 }  // namespace impossible::scene::test
