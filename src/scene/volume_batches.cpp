@@ -121,35 +121,10 @@ Run joined(const Run& a, const Run& b) {
     return j;
 }
 
-}  // namespace
-
-std::vector<VolumePiece> volume_pieces(const Scene& scene, const std::vector<DrawBatch>& target,
-                                       const glm::dvec3& target_origin, const layout::Volume& volume,
-                                       std::size_t& budget) {
-    const math::PortalRect& rect = volume.rect;
-    const std::array<glm::dvec3, 3> axes{math::portal_right(rect), rect.up, rect.normal};
-    glm::dvec3 reach{0.0};  // the grown half extents
-    for (int a = 0; a < 3; ++a) {
-        const double half = 0.5 * std::array{rect.width, rect.height, rect.depth}[static_cast<size_t>(a)];
-        reach[a] = half * (1.0 + kVolumeKeepShare) + kVolumeKeepMetres;
-    }
-    // A vertex in the box's coordinates.
-    const auto local = [&](std::uint32_t index) {
-        const glm::dvec3 p = glm::dvec3(scene.vertices[index].position) + target_origin - rect.center;
-        return glm::dvec3(glm::dot(p, axes[0]), glm::dot(p, axes[1]), glm::dot(p, axes[2]));
-    };
-    std::size_t triangles = 0;
-    for (const DrawBatch& b : target) triangles += b.range.count / 3;
-    std::vector<Run> runs;
-    if (triangles <= budget) {
-        budget -= triangles;
-        runs = face_runs(scene, target, local, reach);
-    } else {
-        // Past the budget: each batch whole, within the grown box's bounds.
-        for (size_t k = 0; k < target.size(); ++k) runs.push_back({target[k], -reach, reach, k});
-    }
-    // Fewer draws: neighbours of one batch joined, first pairwise while
-    // there are many (a large model), then the pair whose bounds grow least.
+// Fewer draws: neighbours of one batch joined, first pairwise while there
+// are many (a large model), then the pair whose bounds grow least, down to
+// kVolumeMostPieces.
+void join_runs(std::vector<Run>& runs) {
     const auto mergeable = [&](size_t k) { return runs[k].source == runs[k + 1].source; };
     while (runs.size() > 4 * kVolumeMostPieces) {
         std::vector<Run> fewer;
@@ -180,6 +155,36 @@ std::vector<VolumePiece> volume_pieces(const Scene& scene, const std::vector<Dra
         runs[best] = joined(runs[best], runs[best + 1]);
         runs.erase(runs.begin() + static_cast<std::ptrdiff_t>(best) + 1);
     }
+}
+
+}  // namespace
+
+std::vector<VolumePiece> volume_pieces(const Scene& scene, const std::vector<DrawBatch>& target,
+                                       const glm::dvec3& target_origin, const layout::Volume& volume,
+                                       std::size_t& budget) {
+    const math::PortalRect& rect = volume.rect;
+    const std::array<glm::dvec3, 3> axes{math::portal_right(rect), rect.up, rect.normal};
+    glm::dvec3 reach{0.0};  // the grown half extents
+    for (int a = 0; a < 3; ++a) {
+        const double half = 0.5 * std::array{rect.width, rect.height, rect.depth}[static_cast<size_t>(a)];
+        reach[a] = half * (1.0 + kVolumeKeepShare) + kVolumeKeepMetres;
+    }
+    // A vertex in the box's coordinates.
+    const auto local = [&](std::uint32_t index) {
+        const glm::dvec3 p = glm::dvec3(scene.vertices[index].position) + target_origin - rect.center;
+        return glm::dvec3(glm::dot(p, axes[0]), glm::dot(p, axes[1]), glm::dot(p, axes[2]));
+    };
+    std::size_t triangles = 0;
+    for (const DrawBatch& b : target) triangles += b.range.count / 3;
+    std::vector<Run> runs;
+    if (triangles <= budget) {
+        budget -= triangles;
+        runs = face_runs(scene, target, local, reach);
+    } else {
+        // Past the budget: each batch whole, within the grown box's bounds.
+        for (size_t k = 0; k < target.size(); ++k) runs.push_back({target[k], -reach, reach, k});
+    }
+    join_runs(runs);
     std::vector<VolumePiece> pieces;
     for (const Run& run : runs) {
         VolumePiece piece{run.batch, {}};
