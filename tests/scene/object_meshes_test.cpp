@@ -10,21 +10,14 @@
 namespace impossible::scene::test {
 namespace {
 
-layout::BoxProp crate(glm::dvec3 min, glm::dvec3 max) {
-    layout::BoxProp b;
-    b.min = min;
-    b.max = max;
-    return b;
-}
-
 TEST(ObjectMeshes, DynamicPropsLeaveTheirCells) {
     layout::Layout l = one_room_layout();
     l.rooms.push_back(make_room("other", {-2.0, 0.0, -2.0}, {2.0, 3.0, 2.0}));
     impossible::test::add_pair(l, make_portal("a", 0, {0.0, 1.0, 0.0}, {0, 0, 1}, 1.0, 2.0),
                                make_portal("b", 1, {0.0, 1.0, 0.0}, {0, 0, -1}, 1.0, 2.0));
-    l.rooms[0].props.push_back(crate({1.0, 0.0, 1.0}, {1.5, 0.5, 1.5}));    // static
-    l.rooms[0].props.push_back(crate({-0.2, 0.0, -0.2}, {0.2, 0.4, 0.2}));  // half through the door
-    layout::BoxProp moving = crate({-1.5, 0.0, 1.0}, {-1.0, 0.5, 1.5});
+    l.rooms[0].props.push_back(box_prop({1.0, 0.0, 1.0}, {1.5, 0.5, 1.5}));    // static
+    l.rooms[0].props.push_back(box_prop({-0.2, 0.0, -0.2}, {0.2, 0.4, 0.2}));  // half through the door
+    layout::BoxProp moving = box_prop({-1.5, 0.0, 1.0}, {-1.0, 0.5, 1.5});
     moving.id = "m";
     moving.motion.keys = {{0.0, {0.0, 0.0, 0.0}}, {1.0, {0.0, 0.0, -1.0}}};
     l.rooms[0].props.push_back(moving);

@@ -27,6 +27,14 @@ inline layout::Portal in_face(layout::Portal p, layout::Face face) {
     return p;
 }
 
+// A box prop from `min` to `max`.
+inline layout::BoxProp box_prop(glm::dvec3 min, glm::dvec3 max) {
+    layout::BoxProp b;
+    b.min = min;
+    b.max = max;
+    return b;
+}
+
 // The standard test room: 4 × 3 × 4, floor at y = 0, centred on the y axis.
 inline layout::Layout one_room_layout() {
     layout::Layout l;

@@ -12,13 +12,6 @@
 namespace impossible::scene::test {
 namespace {
 
-layout::BoxProp box_prop(glm::dvec3 lo, glm::dvec3 hi) {
-    layout::BoxProp p;
-    p.min = lo;
-    p.max = hi;
-    return p;
-}
-
 // "lab" (room 0) with a volume showing "past" (room 1), where one prop stands
 // inside the volume, one across its side and one far from it.
 layout::Layout volume_layout(const math::PortalRect& rect) {
