@@ -135,7 +135,7 @@ struct Diagnostics {
     // With culling and split_volume_draws: each volume's target room drawn
     // as only its triangles that may lie inside the volume, in pieces, each
     // within the screen bounds of where it meets the volume
-    // (scene/volume_batches.hpp); the image is the same. Off (the target's
+    // (scene/volume_pieces.hpp); the image is the same. Off (the target's
     // whole cell within the volume's bounds) only to compare (tests, bench's
     // volumes=whole-target).
     bool volume_pieces = true;

@@ -17,7 +17,7 @@
 #include "scene/portal_box.hpp"
 #include "scene/room_mesh.hpp"
 #include "scene/scene.hpp"
-#include "scene/volume_batches.hpp"
+#include "scene/volume_pieces.hpp"
 
 namespace impossible::scene {
 

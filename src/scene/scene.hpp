@@ -140,7 +140,7 @@ struct ObjectMesh {
 };
 
 // Consecutive triangles of a volume's target room that may lie inside the
-// volume (scene/volume_batches.hpp), and where.
+// volume (scene/volume_pieces.hpp), and where.
 struct VolumePiece {
     DrawBatch batch;  // a run of one of the target's batches, with its state
     // Bounds of those triangles' parts inside the (slightly grown) box, along
@@ -166,7 +166,7 @@ struct Scene {
     std::vector<ObjectMesh> object_meshes;             // per object_set.props, then the hand (the last)
     std::vector<std::vector<layout::Volume>> volumes;  // per room: its volume portals, in file order
     // Per room, per volume: its target room's triangles that may lie inside
-    // the volume, in pieces with their bounds (scene/volume_batches.hpp).
+    // the volume, in pieces with their bounds (scene/volume_pieces.hpp).
     std::vector<std::vector<std::vector<VolumePiece>>> volume_pieces;
     // Under "lighting": "lights" (layout-format.md, "Lights"): every room's
     // light images at the layout's light_depth (lights::light_images), and

@@ -66,7 +66,7 @@ const VolumeView kVolumeViews[] = {
 TEST(VolumeRender, TheDiscardingVariantDrawsOnlyWhereTheVolumeMayBeSeen) {
     // Issue 39: outside the volume's screen bounds the lab is drawn by the
     // plain variant (early depth test), the discarding one only inside, and
-    // the target room in pieces (scene/volume_batches.hpp): the pixels it
+    // the target room in pieces (scene/volume_pieces.hpp): the pixels it
     // covers are a part of the image, the whole image without the split, and
     // the two frames are the same picture (the parts are scissor rectangles
     // of the same draws), the tracer's.
@@ -97,7 +97,7 @@ TEST(VolumeRender, TheDiscardingVariantDrawsOnlyWhereTheVolumeMayBeSeen) {
     EXPECT_GT(split.volume_variant_pixels, 0);
     EXPECT_LT(split.volume_variant_pixels, image / 2) << split.volume_variant_pixels << " of " << image;
     // The target room in pieces, each within where it meets the volume
-    // (scene/volume_batches.hpp): fewer fragments shaded, and discarded, for
+    // (scene/volume_pieces.hpp): fewer fragments shaded, and discarded, for
     // the same picture.
     {
         GLuint query = 0;

@@ -1,4 +1,4 @@
-// A volume's target room in pieces (scene/volume_batches.hpp): the triangles
+// A volume's target room in pieces (scene/volume_pieces.hpp): the triangles
 // that may lie inside the volume, in order, each piece bounding where its
 // triangles meet the box.
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <random>
 
 #include "math/portal.hpp"
-#include "scene/volume_batches.hpp"
+#include "scene/volume_pieces.hpp"
 #include "scene_test_helpers.hpp"
 
 namespace impossible::scene::test {

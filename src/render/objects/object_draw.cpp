@@ -44,7 +44,7 @@ gl::ScissorRect clipped(const gl::ScissorRect& r, const gl::ScissorRect& to) {
 // only its triangles that may lie inside, piece by piece, each within the
 // screen bounds of where it meets the volume: the same triangles in the same
 // order, with the same clip rectangles, so the same pixels; fewer fragments
-// to discard (scene/volume_batches.hpp; FrameDesc::volume_pieces).
+// to discard (scene/volume_pieces.hpp; FrameDesc::volume_pieces).
 void draw_volume_room(const DrawContext& ctx, const LevelView& view, const Scissor& scissor, const VolumeBox& volume,
                       int inside) {
     const SceneData& r = ctx.scene;

@@ -1,10 +1,9 @@
-// volume_pieces (volume_batches.hpp).
-#include "scene/volume_batches.hpp"
+// volume_pieces (volume_pieces.hpp).
+#include "scene/volume_pieces.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <functional>
 #include <optional>
 
 #include <glm/vector_relational.hpp>
@@ -54,10 +53,6 @@ std::optional<std::pair<glm::dvec3, glm::dvec3>> clipped_bounds(const std::array
     return std::pair{glm::max(lo, -reach), glm::min(hi, reach)};
 }
 
-}  // namespace
-
-namespace {
-
 // A piece before its corners: its batch and run, and its bounds in the
 // box's coordinates.
 struct Run {
@@ -71,10 +66,23 @@ double surface(const glm::dvec3& lo, const glm::dvec3& hi) {
     return d.x * d.y + d.y * d.z + d.z * d.x;
 }
 
-// The runs of each batch's triangles that meet the box grown to `reach`,
-// one face (triangles in one plane) each, at most kVolumePieceTriangles.
-std::vector<Run> face_runs(const Scene& scene, const std::vector<DrawBatch>& target,
-                           const std::function<glm::dvec3(std::uint32_t)>& local, const glm::dvec3& reach) {
+// The volume's box: its centre, axes and grown half extents, and the
+// target's vertices in its coordinates.
+struct BoxFrame {
+    glm::dvec3 center{0.0};
+    std::array<glm::dvec3, 3> axes{};
+    glm::dvec3 reach{0.0};          // the half extents, grown
+    glm::dvec3 target_origin{0.0};  // the target's vertices are relative to it
+
+    glm::dvec3 local(const Scene& scene, std::uint32_t index) const {
+        const glm::dvec3 p = glm::dvec3(scene.vertices[index].position) + target_origin - center;
+        return {glm::dot(p, axes[0]), glm::dot(p, axes[1]), glm::dot(p, axes[2])};
+    }
+};
+
+// The runs of each batch's triangles that meet the grown box, one face
+// (triangles in one plane) each, at most kVolumePieceTriangles.
+std::vector<Run> face_runs(const Scene& scene, const std::vector<DrawBatch>& target, const BoxFrame& box) {
     std::vector<Run> runs;
     for (size_t s = 0; s < target.size(); ++s) {
         const DrawBatch& b = target[s];
@@ -83,9 +91,10 @@ std::vector<Run> face_runs(const Scene& scene, const std::vector<DrawBatch>& tar
         double plane_offset = 0.0;
         for (std::uint32_t i = 0; i + 3 <= b.range.count; i += 3) {
             const std::uint32_t first = b.range.first + i;
-            const std::array<glm::dvec3, 3> t{local(scene.indices[first]), local(scene.indices[first + 1]),
-                                              local(scene.indices[first + 2])};
-            const std::optional<std::pair<glm::dvec3, glm::dvec3>> bounds = clipped_bounds(t, reach);
+            const std::array<glm::dvec3, 3> t{box.local(scene, scene.indices[first]),
+                                              box.local(scene, scene.indices[first + 1]),
+                                              box.local(scene, scene.indices[first + 2])};
+            const std::optional<std::pair<glm::dvec3, glm::dvec3>> bounds = clipped_bounds(t, box.reach);
             if (!bounds) {
                 open = false;
                 continue;
@@ -163,26 +172,20 @@ std::vector<VolumePiece> volume_pieces(const Scene& scene, const std::vector<Dra
                                        const glm::dvec3& target_origin, const layout::Volume& volume,
                                        std::size_t& budget) {
     const math::PortalRect& rect = volume.rect;
-    const std::array<glm::dvec3, 3> axes{math::portal_right(rect), rect.up, rect.normal};
-    glm::dvec3 reach{0.0};  // the grown half extents
+    BoxFrame box{rect.center, {math::portal_right(rect), rect.up, rect.normal}, glm::dvec3(0.0), target_origin};
     for (int a = 0; a < 3; ++a) {
         const double half = 0.5 * std::array{rect.width, rect.height, rect.depth}[static_cast<size_t>(a)];
-        reach[a] = half * (1.0 + kVolumeKeepShare) + kVolumeKeepMetres;
+        box.reach[a] = half * (1.0 + kVolumeKeepShare) + kVolumeKeepMetres;
     }
-    // A vertex in the box's coordinates.
-    const auto local = [&](std::uint32_t index) {
-        const glm::dvec3 p = glm::dvec3(scene.vertices[index].position) + target_origin - rect.center;
-        return glm::dvec3(glm::dot(p, axes[0]), glm::dot(p, axes[1]), glm::dot(p, axes[2]));
-    };
     std::size_t triangles = 0;
     for (const DrawBatch& b : target) triangles += b.range.count / 3;
     std::vector<Run> runs;
     if (triangles <= budget) {
         budget -= triangles;
-        runs = face_runs(scene, target, local, reach);
+        runs = face_runs(scene, target, box);
     } else {
         // Past the budget: each batch whole, within the grown box's bounds.
-        for (size_t k = 0; k < target.size(); ++k) runs.push_back({target[k], -reach, reach, k});
+        for (size_t k = 0; k < target.size(); ++k) runs.push_back({target[k], -box.reach, box.reach, k});
     }
     join_runs(runs);
     std::vector<VolumePiece> pieces;
@@ -191,7 +194,8 @@ std::vector<VolumePiece> volume_pieces(const Scene& scene, const std::vector<Dra
         for (int k = 0; k < 8; ++k) {
             const glm::dvec3 q(k == 0 || k == 3 || k == 4 || k == 7 ? run.lo.x : run.hi.x,
                                k % 4 < 2 ? run.lo.y : run.hi.y, k < 4 ? run.hi.z : run.lo.z);
-            piece.corners[static_cast<size_t>(k)] = rect.center + q.x * axes[0] + q.y * axes[1] + q.z * axes[2];
+            piece.corners[static_cast<size_t>(k)] =
+                box.center + q.x * box.axes[0] + q.y * box.axes[1] + q.z * box.axes[2];
         }
         pieces.push_back(piece);
     }
