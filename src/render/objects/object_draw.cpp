@@ -53,13 +53,19 @@ void draw_volume_room(const DrawContext& ctx, const LevelView& view, const Sciss
     const math::dmat4 model = glm::translate(math::dmat4(1.0), origin.origin);
     // Lit by its own room's ambient and lights (layout-format.md, "Lights").
     if (r.lighting.lit) ctx.scratch.stats.light_images += ctx.lights.count[static_cast<size_t>(t)];
+    const SceneProgram* set_up = nullptr;  // the program whose per-draw uniforms are set
     const auto draw = [&](const scene::DrawBatch& b, const Scissor& within) {
         const SceneProgram& program =
             cell_program(ctx, view, light_flags(ctx, t) | (has_material(b) ? kMaterials : 0u));
-        set_model_uniforms(ctx, view, program, {view.eyes[0].rect, view.eyes[1].rect}, model, origin.checker_offset);
-        set_cell_id(program, static_cast<unsigned>(t + 1), false);
-        set_room_lights(ctx, program, t, false);
-        set_volume_uniforms(ctx, view, program, model, inside);
+        // The same for every piece of a program: set once, not per piece.
+        if (&program != set_up) {
+            set_model_uniforms(ctx, view, program, {view.eyes[0].rect, view.eyes[1].rect}, model,
+                               origin.checker_offset);
+            set_cell_id(program, static_cast<unsigned>(t + 1), false);
+            set_room_lights(ctx, program, t, false);
+            set_volume_uniforms(ctx, view, program, model, inside);
+            set_up = &program;
+        }
         if (has_material(b)) set_material(ctx, program, b);
         draw_range(ctx, view, {Pass::Scene, view.level, &program, within}, b.range);
     };
