@@ -39,6 +39,11 @@ void main() {
 #if defined(VOLUMES)
     clip_to_volumes();
 #endif
+#if defined(LIGHTS_CACHE_EDGES)
+    // The overlay keeps only its fragments in cells with per-fragment images
+    // (a whole block of them discarded ends the shader there).
+    if (texelFetch(u_light_edges, ivec2(floor(v_light_cell)), 0).r == 0u) discard;
+#endif
     o_id = u_cell_id;
     if (u_unshaded) {
         o_color = vec4(v_color, 1.0);
@@ -63,6 +68,8 @@ void main() {
     float dark = checker_dark(v_checker_position, n, v_checker) ? CHECKER_DARK : 1.0;
 #if defined(LIGHTS_AMBIENT)
     vec3 lit = u_light_ambient;  // no light image reaches the room
+#elif defined(LIGHTS_CACHED)
+    vec3 lit = u_light_ambient + cached_light_sum(v_light_position, n, length(v_light_position + u_light_origin));
 #else
     vec3 lit = u_light_ambient + light_sum(v_light_position, n, length(v_light_position + u_light_origin));
 #endif

@@ -62,6 +62,12 @@ out vec3 v_volume_position;
 uniform mat4 u_to_light_space;
 out vec3 v_light_position;
 #endif
+// LIGHTS_CACHED: the vertex's place in the light cache's atlas, in cells
+// (render/lights/light_cache.hpp).
+#if defined(LIGHTS_CACHED)
+layout(location = 7) in vec2 a_light_cell;
+out vec2 v_light_cell;
+#endif
 
 out vec3 v_checker_position;
 out vec3 v_normal;
@@ -107,6 +113,9 @@ void main() {
 #endif
 #if defined(LIGHTS)
     v_light_position = (u_to_light_space * position).xyz;
+#endif
+#if defined(LIGHTS_CACHED)
+    v_light_cell = a_light_cell;
 #endif
 #if defined(STEREO_VIEWPORT_INDEX)
     gl_ViewportIndex = eye;

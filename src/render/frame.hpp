@@ -151,6 +151,14 @@ struct Diagnostics {
     // closed. Only a baseline for what the exact test costs (bench's
     // lights:N/naive), never a mode users pick.
     bool naive_lights = false;
+    // Under "lighting": "lights": from a renderer's second frame at a light
+    // depth on, the light on still, flat surfaces read from the light cache
+    // (render/lights/light_cache.hpp; docs/lighting.md, "The light cache")
+    // in a frame that places no moving prop or hand, with only the images
+    // whose aperture edge or prop shadow may cross a cell added per fragment
+    // there. The first frame, and every frame with it off, draws exactly as
+    // before. Off only to compare (tests, bench's lights:N/no-cache).
+    bool light_cache = true;
     // Textures read at mip level 0 with the magnification filter, as the
     // tracer reads them, instead of through their mipmaps: for comparing the
     // two (tests, bench's error), never for viewing (minified textures alias).
@@ -186,6 +194,8 @@ struct FrameStats {
     int unmarks_skipped = 0;       // portals left marked after their view (PortalSteps)
     int max_level_reached = 0;
     int light_images = 0;       // lit layouts: light images of the cells drawn, summed over the cells' draws
+    int cached_levels = 0;      // lit layouts: cells' draws whose light came from the light cache
+    int overlay_triangles = 0;  // of those, the light cache's overlay triangles drawn (render/lights/light_cache.hpp)
     int shadow_maps_drawn = 0;  // cube shadow maps (re)drawn this frame
     // Pixels (both eyes, each level's) of the rectangles in which a cell with
     // volume portals is drawn by the discarding VOLUMES variant (its own

@@ -54,6 +54,7 @@ Result<void> prepare_frame(RendererParts& parts, const FrameDesc& frame) {
     if (r.has_materials)
         if (Result<void> made = ensure_scene_program(programs, frame.stereo, true); !made) return made;
     ensure_lights(parts.lights.buffers, r, frame);  // before the variants: which kind of light buffers
+    ensure_light_cache(parts.lights.buffers, r, frame);
     const VariantNeeds needs{
         .objects = !r.object_set.props.empty() || frame.hands.has_value(),
         .volumes = r.has_volumes,
@@ -64,7 +65,8 @@ Result<void> prepare_frame(RendererParts& parts, const FrameDesc& frame) {
         .light_loops = r.lighting.lit
                            ? light_loops_needed(parts.lights.buffers, frame.shadows && frame.shadow_map_size > 0,
                                                 frame.split_light_draws && frame.cull_portals)
-                           : 0u};
+                           : 0u,
+        .light_cache = r.lighting.lit && parts.lights.buffers.cache.built};
     if (Result<void> made = ensure_variants(programs, frame.stereo, needs); !made) return made;
     set_exposure(programs, frame.stereo, frame.exposure.value_or(r.exposure));
     if (Result<void> made = ensure_multisampled(programs, targets, frame); !made) return made;
@@ -141,6 +143,17 @@ void draw_stereo(const DrawContext& ctx) {
     }
 }
 
+// Whether the frame draws from the light cache, and its atlas bound: the
+// cache knows the still props' shadows only.
+void bind_light_cache(gl::StateCache& state, LightBuffers& buffers, const FrameDesc& frame,
+                      const FrameObjects& objects) {
+    const LightCacheGpu& cache = buffers.cache;
+    buffers.use_cache = cache.built && frame.light_cache && !frame.naive_lights && objects.instances.empty();
+    if (!buffers.use_cache) return;
+    state.texture(kLightCacheUnit, cache.corners.get());
+    state.texture(kLightEdgesUnit, cache.edges.get());
+}
+
 // A frame drawn, and read back into `image` unless it is null.
 Result<void> draw_frame(RendererParts& parts, const FrameDesc& frame, FrameStats* stats_out, image::Image* image) {
     const SceneData& r = parts.scene;
@@ -163,6 +176,7 @@ Result<void> draw_frame(RendererParts& parts, const FrameDesc& frame, FrameStats
         lights.buffers.shadow_regions =
             frame_shadow_regions(lights.shadow_maps, r, scratch.objects, lights.buffers.rooms, frame);
         bind_light_buffers(&lights.buffers);
+        bind_light_cache(state, lights.buffers, frame, scratch.objects);
     }
     const Target& target = drawing_target(parts.targets, frame);
     clear_target(state, target, stencil_level(frame.max_depth, 0));

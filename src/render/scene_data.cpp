@@ -77,6 +77,8 @@ void copy_scene(SceneData& r, const scene::Scene& scene) {
         lighting.max_light_depth = scene.max_light_depth;
         lighting.scene_room_lights = scene.room_lights;
         lighting.lit_layout = scene.lit_layout;
+        lighting.vertices = scene.vertices;
+        lighting.indices = scene.indices;
     }
     r.links = scene.links;
     r.portals = scene.portal_info;

@@ -46,6 +46,10 @@ struct SceneLights {
     // traced from it (lights::light_images), and every upload reads the
     // lights' colours, intensities, ranges and cones from it.
     std::shared_ptr<const layout::Layout> lit_layout;
+    // The scene's geometry, kept on the CPU for the light cache
+    // (render/lights/light_cache.hpp).
+    std::vector<scene::Vertex> vertices;
+    std::vector<std::uint32_t> indices;
 };
 
 struct SceneData {

@@ -16,6 +16,7 @@
 
 #include "gl/handles.hpp"
 #include "lights/light_images.hpp"
+#include "render/lights/light_cache_gpu.hpp"
 #include "render/programs/scene_program.hpp"
 #include "scene/scene.hpp"
 
@@ -46,6 +47,11 @@ struct LightBuffers {
     // Per room, this frame's: where its images' shadow maps may shadow a
     // point (render/lights/shadow_regions.hpp); empty while none is known.
     std::vector<std::optional<std::vector<std::array<glm::dvec3, 16>>>> shadow_regions;
+    // The light cache of these images (light_cache_gpu.hpp), and whether
+    // this frame draws with it (FrameDesc::light_cache; a frame that places
+    // no object, whose shadows the cache does not know).
+    LightCacheGpu cache;
+    bool use_cache = false;
 };
 
 // The GPU layout of the images: kLightImageVec4s vec4s per image, 4 per rectangle.

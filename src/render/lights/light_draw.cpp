@@ -28,6 +28,20 @@ unsigned light_flags(const DrawContext& ctx, int room, const LevelView* view) {
            light_loop_flags(ctx.lights, room) | shadows;
 }
 
+bool draws_cached(const DrawContext& ctx, int room) {
+    const LightCacheGpu& cache = ctx.lights.cache;
+    const auto c = static_cast<size_t>(room);
+    return ctx.lights.use_cache && c < cache.cached.size() && cache.cached[c];
+}
+
+unsigned cached_light_flags(const DrawContext& ctx, int room, bool edges) {
+    const auto c = static_cast<size_t>(room);
+    unsigned flags = kLights | kLightsCached | (ctx.lights.ubo ? kLightsUbo : 0u) |
+                     (ctx.lights.plain_points[c] ? kLightsPlainPoints : 0u);
+    if (edges) flags |= kLightsCacheEdges | (without_shadows(ctx, c, nullptr) ? kLightsNoShadows : 0u);
+    return flags;
+}
+
 void set_room_lights(const DrawContext& ctx, const SceneProgram& program, int room, bool count) {
     if (!ctx.scene.lighting.lit) return;
     set_light_uniforms(ctx.lights, program, room, glm::mat4(1.0f));

@@ -21,4 +21,11 @@ unsigned light_flags(const DrawContext& ctx, int room, const LevelView* view = n
 // fixed layout.
 void set_room_lights(const DrawContext& ctx, const SceneProgram& program, int room, bool count);
 
+// Whether the frame draws `room`'s own surfaces from the light cache
+// (LightBuffers::use_cache, and the room is cached).
+bool draws_cached(const DrawContext& ctx, int room);
+// The flags of such a room's draws: its cells' cached sums, or with `edges`
+// (the overlay) the images their bits name added per fragment.
+unsigned cached_light_flags(const DrawContext& ctx, int room, bool edges);
+
 }  // namespace impossible::render

@@ -23,4 +23,10 @@ struct LightState {
 // frame asks for another depth. Nothing for a "fixed" layout.
 void ensure_lights(LightBuffers& buffers, const SceneData& scene, const FrameDesc& frame);
 
+// The light cache of `buffers` (light_cache_gpu.hpp), made under
+// FrameDesc::light_cache from the second frame prepared with them on, and
+// again when the frame's shadow map size differs from the one it was made
+// for. Never on the web build.
+void ensure_light_cache(LightBuffers& buffers, const SceneData& scene, const FrameDesc& frame);
+
 }  // namespace impossible::render

@@ -29,7 +29,18 @@ struct GpuScene {
     gl::VertexArray instance_vao;
     gl::VertexArray instance_face_vao;  // the same with the face stream as element buffer
     std::vector<gl::Texture> textures;  // per scene::Scene::textures, with their mipmaps
+    // A lit layout's: each vertex's place in the light cache's atlas (a
+    // vec2, (-1, -1) until the cache is built: render/lights/light_cache.hpp)
+    // at kLightCellBinding of vao and face_vao, attribute kLightCellAttribute.
+    gl::Buffer light_cells;
 };
+
+inline constexpr unsigned kLightCellAttribute = 7;
+inline constexpr unsigned kLightCellBinding = 2;
+
+// Describes scene::Vertex from `vertices` (binding 0) in `vao`, with
+// `indices` as its element buffer (0: none).
+void describe_scene_vertices(GLuint vao, GLuint vertices, GLuint indices);
 
 // Uploads the vertices, indices and textures. Textures keep the sampler's
 // filters and wrap modes; a minification filter with mipmaps gets a full

@@ -27,7 +27,15 @@ Result<void> ensure_variants(Programs& programs, StereoMode mode, const VariantN
         if ((flags & kLights) && !(flags & (kLightsUbo | kLightsAmbient)) && needs.lights_ubo) continue;
         if ((flags & kMaterials) && !needs.materials) continue;
         if ((flags & kLightsNaive) && (!(flags & kLights) || !needs.lights_naive)) continue;
-        if (flags & kLights && !(flags & kLightsAmbient)) {
+        if (flags & (kLightsCached | kLightsCacheEdges)) {
+            // The cache's variants: kLightsUbo, kLightsPlainPoints, and the
+            // edges with or without the lookups.
+            constexpr unsigned kCacheBits =
+                kLights | kLightsCached | kLightsCacheEdges | kLightsUbo | kLightsPlainPoints;
+            const unsigned rest = flags & ~kCacheBits;
+            if (!needs.light_cache || !(flags & kLightsCached) || !(flags & kLights)) continue;
+            if (rest != 0u && !(rest == kLightsNoShadows && (flags & kLightsCacheEdges))) continue;
+        } else if (flags & kLights && !(flags & kLightsAmbient)) {
             if ((needs.light_loops & (std::uint64_t{1} << light_loop_index(flags))) == 0u) continue;
         } else if (flags & kLightLoopBits) {
             continue;

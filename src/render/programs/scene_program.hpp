@@ -48,6 +48,10 @@ struct SceneProgram {
     GLint light_origin = -1;    // vec3: the lit room's cell origin
 };
 
+// The texture units of the light cache's atlas (kLightsCached variants).
+inline constexpr GLuint kLightCacheUnit = 5;
+inline constexpr GLuint kLightEdgesUnit = 6;
+
 // The shader storage buffer binding of every room's volume boxes.
 inline constexpr GLuint kVolumeBinding = 3;
 // The shader storage buffer bindings of every room's light images and of
@@ -89,7 +93,14 @@ inline constexpr unsigned kLightsPlainPoints = 2048u;
 inline constexpr unsigned kLightsSingleAperture = 4096u;
 inline constexpr unsigned kLightLoopBits = kLightsNoDirect | kLightsNoPaths | kLightsDirectBlockers | kLightsNoShadows |
                                            kLightsPlainPoints | kLightsSingleAperture;
-inline constexpr unsigned kSceneVariantCount = 8192u;
+// with kLights: the light cache (render/lights/light_cache.hpp,
+// LIGHTS_CACHED): the cached sum at the fragment's cell, and with
+// kLightsCacheEdges (the overlay, LIGHTS_CACHE_EDGES) the images its cell's
+// bits name, added per fragment. Only kLightsUbo, kLightsPlainPoints and
+// (with the edges) kLightsNoShadows go with them.
+inline constexpr unsigned kLightsCached = 8192u;
+inline constexpr unsigned kLightsCacheEdges = 16384u;
+inline constexpr unsigned kSceneVariantCount = 32768u;
 // The loop, shadow and light-kind bits of `flags` as a number 0..63
 // (VariantNeeds::light_loops, 64 bits).
 inline constexpr unsigned light_loop_index(unsigned flags) { return (flags & kLightLoopBits) / kLightsNoDirect; }

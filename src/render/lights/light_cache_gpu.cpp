@@ -1,0 +1,87 @@
+// The light cache made and uploaded (light_state.hpp, ensure_light_cache).
+#include <cstddef>
+#include <cstdint>
+
+#include "render/lights/light_cache.hpp"
+#include "render/lights/light_state.hpp"
+#include "render/programs/gpu_scene.hpp"
+#include "render/scene_data.hpp"
+
+namespace impossible::render {
+#if !defined(__EMSCRIPTEN__)
+namespace {
+
+gl::Texture upload_atlas(GLenum internal, int width, int height, GLenum format, GLenum type, const void* data) {
+    gl::Texture t = gl::create_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(t.get(), 1, internal, width, height);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTextureSubImage2D(t.get(), 0, 0, 0, width, height, format, type, data);
+    glTextureParameteri(t.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(t.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    return t;
+}
+
+// The overlay's indices, into the scene's vertices and their cells.
+void upload_overlay(const LightCache& made, const GpuScene& gpu, LightCacheGpu& cache) {
+    if (made.overlay.empty()) return;
+    cache.overlay = gl::create_buffer();
+    cache.overlay_vao = gl::create_vertex_array();
+    const GLuint vao = cache.overlay_vao.get();
+    describe_scene_vertices(vao, gpu.vertices.get(), cache.overlay.get());
+    glVertexArrayVertexBuffer(vao, kLightCellBinding, gpu.light_cells.get(), 0, 2 * sizeof(float));
+    glEnableVertexArrayAttrib(vao, kLightCellAttribute);
+    glVertexArrayAttribFormat(vao, kLightCellAttribute, 2, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(vao, kLightCellAttribute, kLightCellBinding);
+    glNamedBufferStorage(cache.overlay.get(), static_cast<GLsizeiptr>(made.overlay.size() * sizeof(std::uint32_t)),
+                         made.overlay.data(), 0);
+}
+
+}  // namespace
+#endif
+
+void ensure_light_cache(LightBuffers& buffers, const SceneData& scene, const FrameDesc& frame) {
+#if defined(__EMSCRIPTEN__)
+    (void)buffers, (void)scene, (void)frame;
+#else
+    const SceneLights& l = scene.lighting;
+    if (!l.lit || buffers.depth < 0) return;
+    LightCacheGpu& cache = buffers.cache;
+    const int map_size = frame.shadows && frame.shadow_map_size > 0 ? frame.shadow_map_size : 0;
+    ++cache.frames_seen;
+    if (!frame.light_cache || cache.frames_seen < 2 || (cache.built && cache.map_size == map_size)) return;
+    const PackedLights packed = pack_light_images(buffers.rooms, *l.lit_layout, scene.cell_origins);
+    LightCacheInput in{.vertices = &l.vertices,
+                       .indices = &l.indices,
+                       .cells = &scene.cells,
+                       .objects = &scene.objects,
+                       .origins = &scene.cell_origins,
+                       .rooms = &buffers.rooms,
+                       .packed_images = &packed.images,
+                       .first = buffers.first,
+                       .excluded = {},
+                       .bounds = {},
+                       .shadow_map_size = map_size};
+    for (size_t c = 0; c < buffers.rooms.size(); ++c) {
+        in.excluded.push_back(!scene.volumes[c].empty());
+        const layout::Room& room = l.lit_layout->rooms[c];
+        in.bounds.emplace_back(room.min, room.max);
+    }
+    const LightCache made = build_light_cache(in);
+    cache = LightCacheGpu{};
+    cache.frames_seen = 2;
+    cache.map_size = map_size;
+    cache.built = true;
+    cache.cached = made.cached;
+    cache.overlay_pieces = made.overlay_pieces;
+    cache.cells = made.cell_count;
+    cache.edge_cells = made.edge_cells;
+    cache.corners = upload_atlas(GL_RGBA16F, 2 * made.width, 2 * made.height, GL_RGBA, GL_FLOAT, made.corners.data());
+    cache.edges = upload_atlas(GL_R32UI, made.width, made.height, GL_RED_INTEGER, GL_UNSIGNED_INT, made.edges.data());
+    glNamedBufferSubData(scene.gpu.light_cells.get(), 0,
+                         static_cast<GLsizeiptr>(made.vertex_cells.size() * sizeof(glm::vec2)),
+                         made.vertex_cells.data());
+    upload_overlay(made, scene.gpu, cache);
+#endif
+}
+
+}  // namespace impossible::render

@@ -1,0 +1,95 @@
+// The light cache (render/lights/light_cache.hpp; docs/lighting.md, "The
+// light cache"): a renderer's second frame at a light depth draws the light
+// of still, flat surfaces from it. Against the first frame (exact, as
+// without the cache) and the tracer: the same ids, the colour within the
+// cache's interpolation.
+#include <cstdio>
+#include <string>
+
+#include "crossing_rig.hpp"
+#include "gl_fixture.hpp"
+#include "image/compare.hpp"
+
+namespace impossible {
+namespace {
+
+using testing::CrossingRig;
+
+// The lamp hall with `n` point lights on a grid under each room's ceiling
+// (bench's lights:N), or its own lamp for n = 0.
+layout::Layout lamp_hall_with(int n) {
+    layout::Layout l = testing::example_layout("lamp_hall.json");
+    if (n == 0) return l;
+    for (layout::Room& room : l.rooms) {
+        room.lights.clear();
+        const int side = n == 1 ? 1 : n == 8 ? 3 : 2;
+        int placed = 0;
+        for (int k = 0; placed < n; ++k, ++placed) {
+            layout::Light light;
+            const double fx = (k % side + 0.5) / side, fz = (k / side % side + 0.5) / side;
+            light.position = {room.min.x + fx * (room.max.x - room.min.x), room.max.y - 0.3,
+                              room.min.z + fz * (room.max.z - room.min.z) + 0.1 * (k / (side * side))};
+            light.color = {1.0, 0.95, 0.9};
+            light.intensity = 4.0 / n;
+            room.lights.push_back(light);
+        }
+    }
+    return l;
+}
+
+struct View {
+    const char* what;
+    const char* room;
+    math::dvec3 position;
+    double yaw, pitch;
+};
+
+const View kViews[] = {
+    {"bench view", "hall", {0.2, 1.7, 1.0}, 32.0, -31.0},
+    {"start", "hall", {-1.6, 1.6, 1.2}, -70.0, -10.0},
+    {"annex floor", "annex", {1.5, 1.6, 1.5}, -150.0, -40.0},
+};
+
+TEST(LightCacheRender, TheSecondFrameDrawsFromTheCacheWithTheFirstFramesIdsAndCloseColour) {
+    // The lamp hall's own lamp and one light a room are below
+    // kLightCacheMinImages: drawn exactly, never from the cache.
+    for (const int n : {0, 1, 8}) {
+        CrossingRig rig(lamp_hall_with(n));
+        ASSERT_TRUE(rig.renderer);
+        for (const View& v : kViews) {
+            render::FrameDesc f = testing::frame_at(rig.layout, v.room, v.position, v.yaw, v.pitch);
+            f.eye_width = 320;
+            f.eye_height = 180;
+            f.shadows = true;
+            render::FrameStats exact_stats, cached_stats;
+            f.light_cache = false;
+            const image::Image exact = rig.render(f, &exact_stats);
+            f.light_cache = true;
+            (void)rig.render(f);
+            const image::Image cached = rig.render(f, &cached_stats);
+            const std::string what = std::string(v.what) + ", lights " + std::to_string(n);
+            EXPECT_EQ(exact_stats.cached_levels, 0) << what;
+            // The hall (16 images with 8 lights) is cached; the annex has a
+            // door standing in it, whose box blocks its own lights.
+            if (n == 8 && v.room == std::string("hall")) {
+                EXPECT_GT(cached_stats.cached_levels, 0) << what;
+            }
+            if (n < 8) {
+                EXPECT_EQ(cached_stats.cached_levels, 0) << what;
+            }
+            const image::Image traced = rig.trace(f);
+            const image::Comparison to_exact = image::compare_pictures(cached, exact);
+            const image::Comparison to_trace = image::compare_pictures(cached, traced);
+            const image::Comparison exact_to_trace = image::compare_pictures(exact, traced);
+            std::printf("  %-28s cached/exact %s\n  %-28s cached/trace %.2f dB, exact/trace %.2f dB, overlay %d\n",
+                        what.c_str(), image::summary_line(to_exact).c_str(), "", to_trace.interior_psnr_db,
+                        exact_to_trace.interior_psnr_db, cached_stats.overlay_triangles);
+            EXPECT_EQ(exact.ids, cached.ids) << what;
+            EXPECT_GE(to_exact.interior_psnr_db, 50.0) << what;
+            EXPECT_EQ(to_trace.id_mismatches, 0) << what;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace impossible
