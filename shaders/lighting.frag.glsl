@@ -206,9 +206,10 @@ vec3 light_sum(vec3 p, vec3 n, float origin_distance) {
 #if defined(LIGHTS_CACHED)
 // The light cache (render/lights/light_cache.hpp): per cell of the atlas,
 // the sum of the images that reach all of it, unshadowed, at its four
-// corners (texels 2x + i, 2y + j), interpolated bilinearly; and a bit for
-// each image added here per fragment instead (LIGHTS_CACHE_EDGES: the
-// overlay, drawn only over cells with such bits).
+// corners (texels 2x + i, 2y + j), interpolated bilinearly by the linear
+// filter; and a bit for each image whose aperture, blocker or prop shadow
+// may cross the cell, whose term is added here exactly. Most cells have no
+// bit: the loops then run no iteration.
 in vec2 v_light_cell;
 uniform highp sampler2D u_light_cache;
 uniform highp usampler2D u_light_edges;
@@ -216,20 +217,23 @@ uniform highp usampler2D u_light_edges;
 vec3 cached_light_sum(vec3 p, vec3 n, float origin_distance) {
     ivec2 cell = ivec2(floor(v_light_cell));
     vec2 f = clamp(v_light_cell - vec2(cell), 0.0, 1.0);
-    ivec2 t = 2 * cell;
-    vec3 low = mix(texelFetch(u_light_cache, t, 0).rgb, texelFetch(u_light_cache, t + ivec2(1, 0), 0).rgb, f.x);
-    vec3 high = mix(texelFetch(u_light_cache, t + ivec2(0, 1), 0).rgb, texelFetch(u_light_cache, t + ivec2(1, 1), 0).rgb, f.x);
-    vec3 sum = mix(low, high, f.y);
-#if defined(LIGHTS_CACHE_EDGES)
+    // Between the centres of the cell's four texels, the linear filter is
+    // the bilinear interpolation of its corners: one lookup, not four.
+    vec2 at = (2.0 * vec2(cell) + 0.5 + f) / vec2(textureSize(u_light_cache, 0));
+    vec3 sum = textureLod(u_light_cache, at, 0.0).rgb;
     uint bits = texelFetch(u_light_edges, cell, 0).r;
-    // The room's own lights (no test), then its path images (one aperture
-    // each: build_light_cache caches no other room).
+    // The room's own lights, then its path images (one aperture each and
+    // no blocker: build_light_cache caches no other room).
     uint direct = u_light_direct >= 32 ? 0xffffffffu : (1u << uint(u_light_direct)) - 1u;
     uint own = bits & direct;
     while (own != 0u) {
         int g = findLSB(own);
         own &= own - 1u;
+#if defined(LIGHTS_DIRECT_BLOCKERS)
+        sum += light_term(u_light_first + g, p, n, origin_distance, kPathTest);
+#else
         sum += light_term(u_light_first + g, p, n, origin_distance, kNoTest);
+#endif
     }
     uint paths = bits & ~direct;
     while (paths != 0u) {
@@ -237,7 +241,6 @@ vec3 cached_light_sum(vec3 p, vec3 n, float origin_distance) {
         paths &= paths - 1u;
         sum += light_term(u_light_first + g, p, n, origin_distance, kApertureTest);
     }
-#endif
     return sum;
 }
 #endif  // LIGHTS_CACHED

@@ -42,7 +42,7 @@ void main() {
 #if defined(LIGHTS_CACHE_EDGES)
     // The overlay keeps only its fragments in cells with per-fragment images
     // (a whole block of them discarded ends the shader there).
-    if (texelFetch(u_light_edges, ivec2(floor(v_light_cell)), 0).r == 0u) discard;
+    
 #endif
     o_id = u_cell_id;
     if (u_unshaded) {

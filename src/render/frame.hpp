@@ -194,8 +194,7 @@ struct FrameStats {
     int unmarks_skipped = 0;       // portals left marked after their view (PortalSteps)
     int max_level_reached = 0;
     int light_images = 0;       // lit layouts: light images of the cells drawn, summed over the cells' draws
-    int cached_levels = 0;      // lit layouts: cells' draws whose light came from the light cache
-    int overlay_triangles = 0;  // of those, the light cache's overlay triangles drawn (render/lights/light_cache.hpp)
+    int cached_levels = 0;      // lit layouts: cells' draws whose light came from the light cache (light_cache.hpp)
     int shadow_maps_drawn = 0;  // cube shadow maps (re)drawn this frame
     // Pixels (both eyes, each level's) of the rectangles in which a cell with
     // volume portals is drawn by the discarding VOLUMES variant (its own

@@ -8,7 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "render/lights/light_cache_cells.hpp"
-#include "render/lights/light_cache_overlay.hpp"
+#include "render/lights/light_cache_chart.hpp"
 
 namespace impossible::render {
 namespace {
@@ -22,7 +22,7 @@ bool cacheable_lights(const LightCacheInput& in, size_t c) {
         room.images.size() > static_cast<size_t>(kLightCacheMaxImages))
         return false;
     for (const lights::LightImage& image : room.images)
-        if (!image.blockers.empty() || image.apertures.size() > 1) return false;
+        if (image.apertures.size() > 1 || (!image.apertures.empty() && !image.blockers.empty())) return false;
     for (const scene::DrawBatch& b : (*in.cells)[c])
         if (b.texture >= 0 || b.alpha_cutoff >= 0.0f) return false;
     return true;
@@ -100,8 +100,7 @@ void size_charts(std::vector<CacheChart>& charts) {
         long total = 0;
         for (CacheChart& chart : charts) {
             const glm::dvec2 extent = chart.hi - chart.lo;
-            chart.side = std::max(chart.side * scale,
-                                  std::max(extent.x, extent.y) / (kLightCacheAtlasWidth - 3));
+            chart.side = std::max(chart.side * scale, std::max(extent.x, extent.y) / (kLightCacheAtlasWidth - 3));
             chart.cells = glm::ivec2(glm::ceil(extent / chart.side)) + 2;
             total += static_cast<long>(chart.cells.x) * chart.cells.y;
         }
@@ -167,7 +166,8 @@ void bake_chart(const LightCacheInput& in, const CacheChart& chart, LightCache& 
                     for (int b = 0; b < 2; ++b)
                         for (int a = 0; a < 2; ++a) {
                             const glm::dvec3& value = term[static_cast<size_t>((j + b) * (nx + 1) + i + a)];
-                            float* texel = &out.corners[4 * static_cast<size_t>((2 * y + b) * 2 * out.width + 2 * x + a)];
+                            float* texel =
+                                &out.corners[4 * static_cast<size_t>((2 * y + b) * 2 * out.width + 2 * x + a)];
                             for (int k = 0; k < 3; ++k) texel[k] += static_cast<float>(value[k]);
                         }
                 }
@@ -212,13 +212,13 @@ LightCache build_light_cache(const LightCacheInput& in) {
     out.edges.assign(static_cast<size_t>(out.width) * out.height, 0u);
     for (size_t v = 0; v < vertex_chart.size(); ++v)
         if (vertex_chart[v] >= 0)
-            out.vertex_cells[v] = glm::vec2(charts[static_cast<size_t>(vertex_chart[v])].atlas_point(position_of(in, static_cast<std::uint32_t>(v))));
+            out.vertex_cells[v] = glm::vec2(charts[static_cast<size_t>(vertex_chart[v])].atlas_point(
+                position_of(in, static_cast<std::uint32_t>(v))));
     for (const CacheChart& chart : charts) {
         bake_chart(in, chart, out);
         out.cell_count += static_cast<long>(chart.cells.x) * chart.cells.y;
     }
     for (const std::uint32_t bits : out.edges) out.edge_cells += bits != 0u ? 1 : 0;
-    add_overlays(in, charts, out);
     return out;
 }
 

@@ -3,11 +3,9 @@
 // room's faces and box props is a chart of square cells in one atlas; per
 // cell, the sum of the light images that reach all of it, unshadowed, at
 // its four corners (interpolated bilinearly inside it, LIGHTS_CACHED), and a
-// bit for each image whose aperture edge or prop shadow may cross it. Those
-// images are added per fragment, exactly as without the cache, by a second
-// draw of the triangles that meet such cells (the overlay,
-// LIGHTS_CACHE_EDGES), which keeps only their fragments in those cells. The
-// build is pure: no GL context.
+// bit for each image whose aperture edge, blocker edge or prop shadow may
+// cross it, whose terms the fragment adds exactly, as without the cache.
+// The build is pure: no GL context.
 #pragma once
 
 #include <array>
@@ -34,14 +32,9 @@ struct LightCacheInput {
     // each room's first image among them.
     const std::vector<float>* packed_images = nullptr;
     std::vector<int> first;
-    std::vector<bool> excluded;  // per room: never cached (a room with volumes)
+    std::vector<bool> excluded;                             // per room: never cached (a room with volumes)
     std::vector<std::pair<glm::dvec3, glm::dvec3>> bounds;  // per room: its box (the shadows' reach)
     int shadow_map_size = 0;                                // 0: no prop shadows
-};
-
-struct CacheOverlayPiece {
-    int first = 0, count = 0;
-    std::array<glm::dvec3, 8> corners{};
 };
 
 struct LightCache {
@@ -52,19 +45,8 @@ struct LightCache {
     std::vector<std::uint32_t> edges;  // per cell: bit i, image i of its room added per fragment
     // Per scene vertex: its place in the atlas, in cells; (-1, -1) where none.
     std::vector<glm::vec2> vertex_cells;
-    std::vector<bool> cached;  // per room
-    // The overlay: the cached triangles that meet cells with bits, as
-    // indices into the scene's vertices, room after room:
-    // overlay_first[room] .. overlay_first[room + 1]. Drawn again over
-    // themselves (the same vertices, so the same depth: GL_EQUAL), their
-    // fragments outside such cells discarded.
-    std::vector<std::uint32_t> overlay;
-    std::vector<int> overlay_first;
-    // Per room, its overlay by chart: a range of `overlay` and the bounds
-    // of the chart's cells with bits (a flat box: 8 corners, in the room's
-    // coordinates less the origin), the scissor of its draw.
-    std::vector<std::vector<CacheOverlayPiece>> overlay_pieces;
-    long cell_count = 0, edge_cells = 0;  // for docs and tests
+    std::vector<bool> cached;             // per room
+    long cell_count = 0, edge_cells = 0;  // cells, and those with bits
 };
 
 // A chart's cell side: a twentieth of the nearest image's distance to it
@@ -77,15 +59,14 @@ inline constexpr long kLightCacheMaxCells = 1L << 20;
 inline constexpr int kLightCacheAtlasWidth = 1024;  // cells
 inline constexpr int kLightCacheMaxImages = 32;     // a room's, for one 32-bit mask
 // A room of fewer images is drawn exactly, per fragment: on llvmpipe the
-// cache's reads and its overlay cost more than two or three images' terms
+// cache's read and its loops cost more than two or three images' terms
 // (bench/README.md, "Lights: the light cache").
 inline constexpr int kLightCacheMinImages = 4;
 
-// Which rooms can be cached, their charts, cells and overlays. A room is
-// cached when it has kLightCacheMinImages to kLightCacheMaxImages light
-// images, whose own
-// lights meet no blocker and whose path images each pass one aperture and
-// meet no blocker; no textured or cut-out batch; every triangle flat (its
+// Which rooms can be cached, their charts and cells. A room is cached when
+// it has kLightCacheMinImages to kLightCacheMaxImages light images, whose
+// path images each pass one aperture and meet no blocker (its own lights may
+// meet blockers); no textured or cut-out batch; every triangle flat (its
 // vertices' normals its face's) and no vertex shared by two planes.
 LightCache build_light_cache(const LightCacheInput& in);
 

@@ -58,8 +58,12 @@ std::vector<glm::dvec4> hull_planes(const std::array<glm::dvec3, 16>& p) {
 CellLight aperture_light(const lights::LightImage& image, const glm::dvec3& origin,
                          const std::array<glm::dvec3, 4>& corners) {
     if (image.apertures.empty()) return CellLight::Lit;
-    const math::PortalRect& rect = image.apertures.front().rect;
-    const glm::dvec3 light = image.position - origin, c = rect.center - origin;
+    return through_rect(image.apertures.front().rect, image.position, origin, corners);
+}
+
+CellLight through_rect(const math::PortalRect& rect, const glm::dvec3& position, const glm::dvec3& origin,
+                       const std::array<glm::dvec3, 4>& corners) {
+    const glm::dvec3 light = position - origin, c = rect.center - origin;
     // lighting.frag.glsl's light_aperture_open: lit where p lies beyond the
     // aperture's plane (n · (p - c) > 0), with L' before it, and within the
     // pyramid from L' through the rectangle.
@@ -135,8 +139,7 @@ bool hull_meets(const ShadowHull& hull, const std::array<glm::dvec3, 4>& q) {
 }
 
 ImageShadows image_shadows(const lights::LightImage& image, const std::vector<scene::CellObjects>& objects,
-                           const glm::dvec3& origin, const std::pair<glm::dvec3, glm::dvec3>& bounds,
-                           int map_size) {
+                           const glm::dvec3& origin, const std::pair<glm::dvec3, glm::dvec3>& bounds, int map_size) {
     ImageShadows out;
     if (map_size <= 0) return out;
     const double reach = lights::light_reach(image.position, bounds.first, bounds.second);
@@ -145,8 +148,8 @@ ImageShadows image_shadows(const lights::LightImage& image, const std::vector<sc
         const glm::dmat4 to_c = glm::inverse(image.to_room[i]);
         for (const scene::CellObject& object : objects[static_cast<size_t>(image.rooms[i])].objects) {
             std::array<glm::dvec3, 16> hull;
-            if (!lights::shadow_region(image.position, to_c, object.lo, object.hi, reach,
-                                       8.0 / std::max(map_size, 1), hull)) {
+            if (!lights::shadow_region(image.position, to_c, object.lo, object.hi, reach, 8.0 / std::max(map_size, 1),
+                                       hull)) {
                 out.anywhere = true;
                 return out;
             }
@@ -193,7 +196,16 @@ CellLight cell_light(const lights::LightImage& image, const ImageShadows& shadow
                      const std::array<glm::dvec3, 4>& corners) {
     const CellLight through = aperture_light(image, origin, corners);
     if (through != CellLight::Lit) return through;
-    if (shadows.anywhere) return CellLight::Edge;
+    // A blocker (of an image with no aperture: its one leg is the whole
+    // segment) darkens where the segment crosses it from its front, the set
+    // an aperture lets through.
+    bool blocked = false;
+    for (const lights::Blocker& b : image.blockers) {
+        const CellLight behind = through_rect(b.rect, image.position, origin, corners);
+        if (behind == CellLight::Lit) return CellLight::Dark;
+        blocked = blocked || behind == CellLight::Edge;
+    }
+    if (blocked || shadows.anywhere) return CellLight::Edge;
     const glm::dvec3 light = image.position - origin;
     bool meets = false;
     for (const ShadowHull& h : shadows.hulls) {

@@ -26,6 +26,11 @@ enum class CellLight { Lit, Dark, Edge };
 CellLight aperture_light(const lights::LightImage& image, const glm::dvec3& origin,
                          const std::array<glm::dvec3, 4>& corners);
 
+// The same for any rectangle and light position: Lit where every segment
+// from the cell to the light crosses the rectangle from its front.
+CellLight through_rect(const math::PortalRect& rect, const glm::dvec3& position, const glm::dvec3& origin,
+                       const std::array<glm::dvec3, 4>& corners);
+
 // A prop's shadow hull (lights::shadow_region's 16 corners) with its faces.
 // With the prop's box shrunk by the hull's margin (from_c maps the room's
 // coordinates less the origin into the box's; lo > hi where the margin
@@ -53,11 +58,11 @@ struct ImageShadows {
     std::vector<ShadowHull> hulls;
 };
 ImageShadows image_shadows(const lights::LightImage& image, const std::vector<scene::CellObjects>& objects,
-                           const glm::dvec3& origin, const std::pair<glm::dvec3, glm::dvec3>& bounds,
-                           int map_size);
+                           const glm::dvec3& origin, const std::pair<glm::dvec3, glm::dvec3>& bounds, int map_size);
 
-// Both tests: Lit only where the aperture lets all of the cell be lit and
-// no hull meets it; Dark where the aperture leaves all of it dark, or all
+// All tests: Lit only where the aperture lets all of the cell be lit, no
+// blocker's shadow and no hull meets it; Dark where the aperture leaves all
+// of it dark, one blocker hides all of it from the light, or all
 // of it lies in one prop's core shadow (in_core_shadow at its corners: the
 // shadow of a box from a point is convex).
 CellLight cell_light(const lights::LightImage& image, const ImageShadows& shadows, const glm::dvec3& origin,

@@ -11,29 +11,17 @@ namespace impossible::render {
 #if !defined(__EMSCRIPTEN__)
 namespace {
 
-gl::Texture upload_atlas(GLenum internal, int width, int height, GLenum format, GLenum type, const void* data) {
+gl::Texture upload_atlas(GLenum internal, int width, int height, GLenum format, GLenum type, const void* data,
+                         GLint filter) {
     gl::Texture t = gl::create_texture(GL_TEXTURE_2D);
     glTextureStorage2D(t.get(), 1, internal, width, height);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glTextureSubImage2D(t.get(), 0, 0, 0, width, height, format, type, data);
-    glTextureParameteri(t.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(t.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTextureParameteri(t.get(), GL_TEXTURE_MIN_FILTER, filter);
+    glTextureParameteri(t.get(), GL_TEXTURE_MAG_FILTER, filter);
+    glTextureParameteri(t.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(t.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     return t;
-}
-
-// The overlay's indices, into the scene's vertices and their cells.
-void upload_overlay(const LightCache& made, const GpuScene& gpu, LightCacheGpu& cache) {
-    if (made.overlay.empty()) return;
-    cache.overlay = gl::create_buffer();
-    cache.overlay_vao = gl::create_vertex_array();
-    const GLuint vao = cache.overlay_vao.get();
-    describe_scene_vertices(vao, gpu.vertices.get(), cache.overlay.get());
-    glVertexArrayVertexBuffer(vao, kLightCellBinding, gpu.light_cells.get(), 0, 2 * sizeof(float));
-    glEnableVertexArrayAttrib(vao, kLightCellAttribute);
-    glVertexArrayAttribFormat(vao, kLightCellAttribute, 2, GL_FLOAT, GL_FALSE, 0);
-    glVertexArrayAttribBinding(vao, kLightCellAttribute, kLightCellBinding);
-    glNamedBufferStorage(cache.overlay.get(), static_cast<GLsizeiptr>(made.overlay.size() * sizeof(std::uint32_t)),
-                         made.overlay.data(), 0);
 }
 
 }  // namespace
@@ -72,15 +60,15 @@ void ensure_light_cache(LightBuffers& buffers, const SceneData& scene, const Fra
     cache.map_size = map_size;
     cache.built = true;
     cache.cached = made.cached;
-    cache.overlay_pieces = made.overlay_pieces;
     cache.cells = made.cell_count;
     cache.edge_cells = made.edge_cells;
-    cache.corners = upload_atlas(GL_RGBA16F, 2 * made.width, 2 * made.height, GL_RGBA, GL_FLOAT, made.corners.data());
-    cache.edges = upload_atlas(GL_R32UI, made.width, made.height, GL_RED_INTEGER, GL_UNSIGNED_INT, made.edges.data());
+    cache.corners =
+        upload_atlas(GL_RGBA16F, 2 * made.width, 2 * made.height, GL_RGBA, GL_FLOAT, made.corners.data(), GL_LINEAR);
+    cache.edges =
+        upload_atlas(GL_R32UI, made.width, made.height, GL_RED_INTEGER, GL_UNSIGNED_INT, made.edges.data(), GL_NEAREST);
     glNamedBufferSubData(scene.gpu.light_cells.get(), 0,
                          static_cast<GLsizeiptr>(made.vertex_cells.size() * sizeof(glm::vec2)),
                          made.vertex_cells.data());
-    upload_overlay(made, scene.gpu, cache);
 #endif
 }
 

@@ -7,20 +7,16 @@
 #include <vector>
 
 #include "gl/handles.hpp"
-#include "render/lights/light_cache.hpp"
 
 namespace impossible::render {
 
 struct LightCacheGpu {
     bool built = false;
-    int map_size = -1;     // the shadow maps' size it was made for (0: no prop shadows)
-    int frames_seen = 0;   // frames prepared with these light images, the cache or not
-    gl::Texture corners;   // RGBA16F, 2 x 2 texels a cell (kLightCacheUnit)
-    gl::Texture edges;     // R32UI, a cell's images added per fragment (kLightEdgesUnit)
-    gl::Buffer overlay;    // the overlay's indices (LightCache::overlay)
-    gl::VertexArray overlay_vao;  // the scene's vertices and cells, with them
-    std::vector<bool> cached;       // per room
-    std::vector<std::vector<CacheOverlayPiece>> overlay_pieces;  // per room: its overlay's draws
+    int map_size = -1;         // the shadow maps' size it was made for (0: no prop shadows)
+    int frames_seen = 0;       // frames prepared with these light images, the cache or not
+    gl::Texture corners;       // RGBA16F, 2 x 2 texels a cell (kLightCacheUnit)
+    gl::Texture edges;         // R32UI, a cell's images added per fragment (kLightEdgesUnit)
+    std::vector<bool> cached;  // per room
     long cells = 0, edge_cells = 0;
 };
 

@@ -34,12 +34,12 @@ bool draws_cached(const DrawContext& ctx, int room) {
     return ctx.lights.use_cache && c < cache.cached.size() && cache.cached[c];
 }
 
-unsigned cached_light_flags(const DrawContext& ctx, int room, bool edges) {
+unsigned cached_light_flags(const DrawContext& ctx, int room) {
     const auto c = static_cast<size_t>(room);
-    unsigned flags = kLights | kLightsCached | (ctx.lights.ubo ? kLightsUbo : 0u) |
-                     (ctx.lights.plain_points[c] ? kLightsPlainPoints : 0u);
-    if (edges) flags |= kLightsCacheEdges | (without_shadows(ctx, c, nullptr) ? kLightsNoShadows : 0u);
-    return flags;
+    return kLights | kLightsCached | (ctx.lights.ubo ? kLightsUbo : 0u) |
+           (ctx.lights.plain_points[c] ? kLightsPlainPoints : 0u) |
+           (ctx.lights.direct_blockers[c] ? kLightsDirectBlockers : 0u) |
+           (without_shadows(ctx, c, nullptr) ? kLightsNoShadows : 0u);
 }
 
 void set_room_lights(const DrawContext& ctx, const SceneProgram& program, int room, bool count) {

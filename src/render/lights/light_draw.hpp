@@ -24,8 +24,8 @@ void set_room_lights(const DrawContext& ctx, const SceneProgram& program, int ro
 // Whether the frame draws `room`'s own surfaces from the light cache
 // (LightBuffers::use_cache, and the room is cached).
 bool draws_cached(const DrawContext& ctx, int room);
-// The flags of such a room's draws: its cells' cached sums, or with `edges`
-// (the overlay) the images their bits name added per fragment.
-unsigned cached_light_flags(const DrawContext& ctx, int room, bool edges);
+// The flags of such a room's draws: its cells' cached sums and the images
+// their bits name.
+unsigned cached_light_flags(const DrawContext& ctx, int room);
 
 }  // namespace impossible::render

@@ -307,37 +307,17 @@ void draw_shadow_parts(const DrawContext& ctx, const LevelView& view, const Scis
     draw_part(ctx, view, scissor, kind, count);
 }
 
-// A cell whose light is cached (render/lights/light_cache.hpp): its surfaces
-// with their cells' sums, then the overlay's triangles again over them (the
-// same vertices: the same depth), where some image is added per fragment.
+// A cell whose light is cached (render/lights/light_cache.hpp): one part,
+// whose fragments read their cells' sums and add only the images their
+// cells' bits name.
 void draw_cached(const DrawContext& ctx, const LevelView& view, const Scissor& scissor) {
     const int c = view.cell;
-    const auto set_up = [&](const SceneProgram& program, bool count) {
-        set_eye_uniforms(ctx, view, program, {view.eyes[0].rect, view.eyes[1].rect});
-        set_cell_id(program, static_cast<unsigned>(c + 1), false);
-        set_room_lights(ctx, program, c, count);
-    };
-    const SceneProgram& cached = cell_program(ctx, view, cached_light_flags(ctx, c, false));
-    set_up(cached, true);
+    const SceneProgram& cached = cell_program(ctx, view, cached_light_flags(ctx, c));
+    set_eye_uniforms(ctx, view, cached, {view.eyes[0].rect, view.eyes[1].rect});
+    set_cell_id(cached, static_cast<unsigned>(c + 1), false);
+    set_room_lights(ctx, cached, c, true);
     draw_cell(ctx, view, {Pass::Scene, view.level, &cached, scissor});
     ctx.scratch.stats.cached_levels += 1;
-    const LightCacheGpu& cache = ctx.lights.cache;
-    const std::vector<CacheOverlayPiece>& pieces = cache.overlay_pieces[static_cast<size_t>(c)];
-    if (pieces.empty()) return;
-    const SceneProgram& edges = cell_program(ctx, view, cached_light_flags(ctx, c, true));
-    set_up(edges, false);
-    // The room's pieces lie one after another: one draw, within the
-    // level's scissor (the discard keeps only the cells with bits).
-    const int first = pieces.front().first;
-    const int count = pieces.back().first + pieces.back().count - first;
-    bind_draw(ctx, view, SceneDraw{Pass::SceneOverlay, view.level, &edges, scissor});
-    ctx.state.vertex_array(cache.overlay_vao.get());
-    glDrawElementsInstanced(GL_TRIANGLES, count, GL_UNSIGNED_INT,
-                            reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * sizeof(std::uint32_t)),
-                            instances_of(ctx));
-    ctx.scratch.stats.draw_calls += 1;
-    ctx.scratch.stats.triangles += static_cast<long>(count / 3) * instances_of(ctx);
-    ctx.scratch.stats.overlay_triangles += count / 3 * instances_of(ctx);
 }
 
 }  // namespace

@@ -44,11 +44,6 @@ enum class Pass {
     // says a box of the level is visible, stencil → level + 1 and depth → far
     // (drawn with level).
     PortalMarkReset,
-    // The light cache's overlay (render/lights/light_cache.hpp): some of a
-    // cell's triangles drawn again over themselves, where their depth is
-    // the depth buffer's (the same vertices through the same vertex
-    // shader): colour and ids, depth and stencil kept.
-    SceneOverlay,
     Count
 };
 
@@ -118,7 +113,6 @@ inline constexpr std::array<gl::PassState, static_cast<size_t>(Pass::Count)> kPa
     region_pass(true, true, gl::Blend::Replace, GL_REPLACE),  // ClearRegion
     region_pass(false, false, gl::Blend::AddScaledTarget),    // WindowBlend
     portal_pass(true, GL_ALWAYS, kNoColor, false, GL_DECR),   // PortalMarkReset
-    portal_pass(false, GL_EQUAL, kColor, true, GL_KEEP),      // SceneOverlay
 }};
 
 // Clearing a target (glClearNamedFramebuffer* obeys the write masks and the

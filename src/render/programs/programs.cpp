@@ -27,14 +27,13 @@ Result<void> ensure_variants(Programs& programs, StereoMode mode, const VariantN
         if ((flags & kLights) && !(flags & (kLightsUbo | kLightsAmbient)) && needs.lights_ubo) continue;
         if ((flags & kMaterials) && !needs.materials) continue;
         if ((flags & kLightsNaive) && (!(flags & kLights) || !needs.lights_naive)) continue;
-        if (flags & (kLightsCached | kLightsCacheEdges)) {
-            // The cache's variants: kLightsUbo, kLightsPlainPoints, and the
-            // edges with or without the lookups.
+        if (flags & kLightsCached) {
+            // The cache's variants: with or without the lookups, and
+            // kLightsUbo, kLightsPlainPoints, kLightsDirectBlockers as the
+            // room needs.
             constexpr unsigned kCacheBits =
-                kLights | kLightsCached | kLightsCacheEdges | kLightsUbo | kLightsPlainPoints;
-            const unsigned rest = flags & ~kCacheBits;
-            if (!needs.light_cache || !(flags & kLightsCached) || !(flags & kLights)) continue;
-            if (rest != 0u && !(rest == kLightsNoShadows && (flags & kLightsCacheEdges))) continue;
+                kLights | kLightsCached | kLightsUbo | kLightsPlainPoints | kLightsNoShadows | kLightsDirectBlockers;
+            if (!needs.light_cache || !(flags & kLights) || (flags & ~kCacheBits) != 0u) continue;
         } else if (flags & kLights && !(flags & kLightsAmbient)) {
             if ((needs.light_loops & (std::uint64_t{1} << light_loop_index(flags))) == 0u) continue;
         } else if (flags & kLightLoopBits) {

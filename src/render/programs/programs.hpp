@@ -57,7 +57,7 @@ struct VariantNeeds {
     // The light loop variants some room may draw with (light_loop_flags):
     // bit light_loop_index(flags) of each.
     std::uint64_t light_loops = 0u;
-    bool light_cache = false;  // the light cache is built: kLightsCached (and kLightsCacheEdges)
+    bool light_cache = false;  // the light cache is built: kLightsCached
 };
 
 // The variants with object cuts, volumes or lights (scene_program.hpp) that

@@ -94,13 +94,11 @@ inline constexpr unsigned kLightsSingleAperture = 4096u;
 inline constexpr unsigned kLightLoopBits = kLightsNoDirect | kLightsNoPaths | kLightsDirectBlockers | kLightsNoShadows |
                                            kLightsPlainPoints | kLightsSingleAperture;
 // with kLights: the light cache (render/lights/light_cache.hpp,
-// LIGHTS_CACHED): the cached sum at the fragment's cell, and with
-// kLightsCacheEdges (the overlay, LIGHTS_CACHE_EDGES) the images its cell's
-// bits name, added per fragment. Only kLightsUbo, kLightsPlainPoints and
-// (with the edges) kLightsNoShadows go with them.
+// LIGHTS_CACHED): the cached sum at the fragment's cell, and the images its
+// bits name added exactly. Only kLightsUbo, kLightsPlainPoints,
+// kLightsNoShadows and kLightsDirectBlockers go with it.
 inline constexpr unsigned kLightsCached = 8192u;
-inline constexpr unsigned kLightsCacheEdges = 16384u;
-inline constexpr unsigned kSceneVariantCount = 32768u;
+inline constexpr unsigned kSceneVariantCount = 16384u;
 // The loop, shadow and light-kind bits of `flags` as a number 0..63
 // (VariantNeeds::light_loops, 64 bits).
 inline constexpr unsigned light_loop_index(unsigned flags) { return (flags & kLightLoopBits) / kLightsNoDirect; }

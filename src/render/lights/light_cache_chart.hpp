@@ -1,6 +1,5 @@
-// Internal to src/render: the light cache's charts (light_cache.cpp) and the
-// overlay made from them (light_cache_overlay.cpp): the cached triangles
-// that meet the cells where some image is added per fragment.
+// Internal to src/render: a chart of the light cache (light_cache.cpp):
+// one plane of a room's triangles and its cells in the atlas.
 #pragma once
 
 #include <array>
@@ -33,10 +32,5 @@ struct CacheChart {
     glm::dvec3 grid_point(int i, int j) const { return point_at(lo + side * (glm::dvec2(i, j) - 1.0)); }
     glm::dvec2 atlas_point(const glm::dvec3& p) const { return (plane_point(p) - lo) / side + 1.0 + glm::dvec2(at); }
 };
-
-// Every cached room's overlay into out.overlay and overlay_first: each
-// chart's triangles whose bounds meet a rectangle of its edge cells
-// (out.edges).
-void add_overlays(const LightCacheInput& in, const std::vector<CacheChart>& charts, LightCache& out);
 
 }  // namespace impossible::render
