@@ -91,5 +91,55 @@ TEST(LightCacheRender, TheSecondFrameDrawsFromTheCacheWithTheFirstFramesIdsAndCl
     }
 }
 
+TEST(LightCacheRender, EveryLitLayoutsSecondFrameKeepsItsIdsAndColour) {
+    // Each lit example layout at its start, with its own lights and with 6
+    // more under each room's ceiling (so that every room has images enough
+    // to be cached where it can be: all but lit_flat's L-shaped hall, whose
+    // path images meet its reflex walls).
+    for (const char* name :
+         {"lamp_hall.json", "lit_flat.json", "mirror_lamp.json", "spot_corridor.json", "tinted_window.json"}) {
+        for (const bool more : {false, true}) {
+            layout::Layout l = testing::example_layout(name);
+            if (more)
+                for (layout::Room& room : l.rooms)
+                    for (int k = 0; k < 6; ++k) {
+                        layout::Light light;
+                        light.position = {glm::mix(room.min.x, room.max.x, (k % 3 + 0.5) / 3), room.max.y - 0.25,
+                                          glm::mix(room.min.z, room.max.z, (k / 3 + 0.5) / 2)};
+                        light.color = {0.9, 0.9, 1.0};
+                        light.intensity = 0.4;
+                        room.lights.push_back(light);
+                    }
+            CrossingRig rig(l);
+            ASSERT_TRUE(rig.renderer);
+            // Every stereo mode once; the others in clip-shift stereo.
+            const int modes = more && name == std::string("tinted_window.json") ? 3 : 1;
+            for (int mode = 0; mode < modes; ++mode) {
+                render::FrameDesc f;
+                f.room = rig.layout.start.room;
+                f.head = {rig.layout.start.position, rig.layout.start.yaw_deg, -20.0, 0.0};
+                f.eye_width = 160;
+                f.eye_height = 96;
+                f.shadows = true;
+                if (mode == 1) f.stereo = render::StereoMode::ViewportIndex;
+                if (mode == 2) f.stereo = render::StereoMode::TwoPass;
+                f.light_cache = false;
+                const image::Image exact = rig.render(f);
+                f.light_cache = true;
+                (void)rig.render(f);
+                render::FrameStats stats;
+                const image::Image cached = rig.render(f, &stats);
+                const std::string what = std::string(name) + (more ? " with 6 more lights" : "") + ", mode " +
+                                         std::to_string(mode) + ", " + std::to_string(stats.cached_levels) +
+                                         " cached levels";
+                const image::Comparison cmp = image::compare_pictures(cached, exact);
+                std::printf("  %-52s %s\n", what.c_str(), image::summary_line(cmp).c_str());
+                EXPECT_EQ(cached.ids, exact.ids) << what;
+                EXPECT_GE(cmp.interior_psnr_db, 50.0) << what;
+            }
+        }
+    }
+}
+
 }  // namespace
 }  // namespace impossible
