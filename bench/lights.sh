@@ -4,7 +4,8 @@
 # layouts/lamp_hall.json), three sweeps, each measured in one run
 # (configurations interleaved frame by frame), RUNS times (default 5):
 #   lights:fixed,0,1,8,32       the fixed light, or N lights in every room
-#     (and 1/naive, 8/naive: without the portal tests; 1/one-part, 8/one-part:
+#     (and 1/naive, 8/naive: without the portal tests; 8/no-cache: without
+#     the light cache, drawn exactly every frame; 1/one-part, 8/one-part:
 #     each lit room in one part, not split by where its path images reach)
 #   light-depth:0,1,2,4         the layout's own lights, light depth K
 #   shadow-size:0,128,256,512,1024   cube shadow maps' size (0: no prop shadows)
@@ -86,7 +87,7 @@ closed_wall() {
 }
 
 echo "lights.sh: $(basename "$layout") ${view:-(start)}, $size per eye, $frames frames x $runs runs"
-sweep lights:fixed,0,1,8,32,1/naive,8/naive,1/one-part,8/one-part
+sweep lights:fixed,0,1,8,32,1/naive,8/naive,1/one-part,8/one-part,8/no-cache
 sweep light-depth:0,1,2,4
 sweep shadow-size:0,128,256,512,1024
 closed_wall

@@ -192,10 +192,14 @@ void add_sweep_item(PlanBuilder& b, const layout::Layout& layout, const SweepIte
         // The same lights with each lit room in one part (no split by where
         // its path images can light it; render/objects/object_draw.hpp).
         const bool one_part = item.suffix == "one-part";
-        b.add(item.name, kind, [variant, naive, one_part](BenchConfig& c) {
+        // The same lights drawn exactly every frame, without the light cache
+        // (render/lights/light_cache.hpp).
+        const bool no_cache = item.suffix == "no-cache";
+        b.add(item.name, kind, [variant, naive, one_part, no_cache](BenchConfig& c) {
             c.layout_variant = variant;
             c.frame.naive_lights = naive;
             c.frame.split_light_draws = !one_part;
+            c.frame.light_cache = !no_cache;
         });
     } else if (kind == "light-depth") {
         if (layout.lighting != impossible::layout::Lighting::Lights)

@@ -48,7 +48,7 @@ SweepItem parse_item(const std::string& kind, const std::string& item) {
     } else if (kind == "samples") {
         s.n = cli::parse_samples(value);
     } else if (kind == "lights") {
-        const std::string n = split_suffix(item, {"naive", "one-part"}, s);
+        const std::string n = split_suffix(item, {"naive", "one-part", "no-cache"}, s);
         s.n = n == "fixed" ? -1 : cli::parse_int(value.name, n, 0, static_cast<int>(layout::limits::kMaxLightsPerRoom));
         if (s.n < 0 && !s.suffix.empty())
             throw InputError(value.name + ": 'fixed/" + s.suffix + "' has no lights to test");

@@ -80,19 +80,20 @@ TEST(BenchPlan, AllStepsItemDrawsEveryDoorPass) {
 }
 
 // "N/naive" draws N lights per room without the portal tests, "N/one-part"
-// with every lit room in one part (FrameDesc::split_light_draws off), beside
-// "N" as users see it.
+// with every lit room in one part (FrameDesc::split_light_draws off),
+// "N/no-cache" without the light cache, beside "N" as users see it.
 TEST(BenchPlan, LightItemsPickTheBaselines) {
     layout::Layout l = one_room();
     BenchOptions o;
-    with_sweep(o, "lights:2,2/naive,2/one-part");
+    with_sweep(o, "lights:2,2/naive,2/one-part,2/no-cache");
     const BenchPlan plan = plan_bench(session::Session(l), o);
-    ASSERT_EQ(plan.configs.size(), 4u);  // base + 3
-    for (size_t k = 1; k < 4; ++k) {
+    ASSERT_EQ(plan.configs.size(), 5u);  // base + 4
+    for (size_t k = 1; k < 5; ++k) {
         const BenchConfig& c = plan.configs[k];
         EXPECT_EQ(plan.sessions[static_cast<size_t>(c.layout_variant)].layout().rooms[0].lights.size(), 2u);
         EXPECT_EQ(c.frame.naive_lights, k == 2) << c.name;
         EXPECT_EQ(c.frame.split_light_draws, k != 3) << c.name;
+        EXPECT_EQ(c.frame.light_cache, k != 4) << c.name;
     }
     EXPECT_EQ(plan.configs[3].name, "lights=2/one-part");
     EXPECT_THROW(with_sweep(o, "lights:fixed/one-part"), cli::InputError);

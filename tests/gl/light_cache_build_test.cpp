@@ -119,7 +119,8 @@ TEST(LightCacheBuild, TheCachedSumAndTheCellsImagesAreTheExactSum) {
                     const glm::dvec2 f = at - glm::dvec2(cell);
                     const auto corner = [&](int i, int j) {
                         const float* texel =
-                            &b.cache.corners[4 * static_cast<size_t>((2 * cell.y + j) * 2 * b.cache.width + 2 * cell.x + i)];
+                            &b.cache.corners[4 * static_cast<size_t>((2 * cell.y + j) * 2 * b.cache.width + 2 * cell.x +
+                                                                     i)];
                         return glm::dvec3(texel[0], texel[1], texel[2]);
                     };
                     glm::dvec3 cached = glm::mix(glm::mix(corner(0, 0), corner(1, 0), f.x),
@@ -134,8 +135,8 @@ TEST(LightCacheBuild, TheCachedSumAndTheCellsImagesAreTheExactSum) {
                         if ((bits >> g) & 1u) cached += term;
                     }
                     const double scale = std::max({exact.x, exact.y, exact.z, 0.05});
-                    EXPECT_NEAR(cached.x, exact.x, 0.01 * scale) << "room " << c << " at " << p.x << ", " << p.y
-                                                                 << ", " << p.z;
+                    EXPECT_NEAR(cached.x, exact.x, 0.01 * scale)
+                        << "room " << c << " at " << p.x << ", " << p.y << ", " << p.z;
                     ++checked;
                 }
             }
@@ -185,7 +186,8 @@ TEST(LightCacheBuild, ACellLitOrDarkForAnImageIsSoAtEveryPoint) {
                                                         glm::mix(room.min.z, room.max.z - side, unit(rng)));
                 const glm::dvec3 du = floor ? glm::dvec3(side, 0, 0) : glm::dvec3(0, side, 0);
                 const glm::dvec3 dv(0, 0, side);
-                const std::array<glm::dvec3, 4> q = {a - origin, a + du - origin, a + du + dv - origin, a + dv - origin};
+                const std::array<glm::dvec3, 4> q = {a - origin, a + du - origin, a + du + dv - origin,
+                                                     a + dv - origin};
                 const render::CellLight light = render::cell_light(image, shadows, origin, q);
                 if (light == render::CellLight::Edge) {
                     ++edge;
@@ -201,7 +203,8 @@ TEST(LightCacheBuild, ACellLitOrDarkForAnImageIsSoAtEveryPoint) {
                         for (const layout::Prop& prop : b.layout.rooms[static_cast<size_t>(image.rooms[leg])].props) {
                             const layout::BoxProp* box = std::get_if<layout::BoxProp>(&prop);
                             if (!box) continue;
-                            const glm::dvec3 pl(from_c * glm::dvec4(p, 1.0)), ll(from_c * glm::dvec4(image.position, 1.0));
+                            const glm::dvec3 pl(from_c * glm::dvec4(p, 1.0)),
+                                ll(from_c * glm::dvec4(image.position, 1.0));
                             if (segment_meets_box(pl, ll, box->min, box->max)) reaches = false;
                         }
                     }
