@@ -208,9 +208,8 @@ vec3 light_sum(vec3 p, vec3 n, float origin_distance) {
 // the sum of the images that reach all of it, unshadowed, at its four
 // corners (texels 2x + i, 2y + j), interpolated bilinearly by the linear
 // filter; and a bit for each image whose aperture, blocker or prop shadow
-// may cross the cell, whose term is added here exactly. The triangles of
-// charts none of whose cells has a bit draw without the loops
-// (LIGHTS_CACHED_ONLY): llvmpipe pays for a loop that runs no iteration.
+// may cross the cell, whose term is added here exactly. Most cells have no
+// bit: the loops then run no iteration.
 in vec2 v_light_cell;
 uniform highp sampler2D u_light_cache;
 uniform highp usampler2D u_light_edges;
@@ -222,7 +221,6 @@ vec3 cached_light_sum(vec3 p, vec3 n, float origin_distance) {
     // the bilinear interpolation of its corners: one lookup, not four.
     vec2 at = (2.0 * vec2(cell) + 0.5 + f) / vec2(textureSize(u_light_cache, 0));
     vec3 sum = textureLod(u_light_cache, at, 0.0).rgb;
-#if !defined(LIGHTS_CACHED_ONLY)
     uint bits = texelFetch(u_light_edges, cell, 0).r;
     // The room's own lights, then its path images (one aperture each and
     // no blocker: build_light_cache caches no other room).
@@ -243,7 +241,6 @@ vec3 cached_light_sum(vec3 p, vec3 n, float origin_distance) {
         paths &= paths - 1u;
         sum += light_term(u_light_first + g, p, n, origin_distance, kApertureTest);
     }
-#endif
     return sum;
 }
 #endif  // LIGHTS_CACHED

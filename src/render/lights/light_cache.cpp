@@ -175,36 +175,6 @@ void bake_chart(const LightCacheInput& in, const CacheChart& chart, LightCache& 
     }
 }
 
-// Whether any of the chart's cells has a bit.
-bool has_bits(const CacheChart& chart, const LightCache& out) {
-    for (int y = chart.at.y; y < chart.at.y + chart.cells.y; ++y)
-        for (int x = chart.at.x; x < chart.at.x + chart.cells.x; ++x)
-            if (out.edges[static_cast<size_t>(y * out.width + x)] != 0u) return true;
-    return false;
-}
-
-// Each cached room's triangles, those of charts without bits first.
-void sort_triangles(const LightCacheInput& in, const std::vector<CacheChart>& charts,
-                    const std::vector<int>& vertex_chart, LightCache& out) {
-    std::vector<bool> bits(charts.size());
-    for (size_t i = 0; i < charts.size(); ++i) bits[i] = has_bits(charts[i], out);
-    out.ranges.assign(out.cached.size(), {0, 0, 0, 0});
-    for (size_t c = 0; c < out.cached.size(); ++c) {
-        if (!out.cached[c]) continue;
-        for (const bool with_bits : {false, true}) {
-            const int first = static_cast<int>(out.triangles.size());
-            for (const scene::DrawBatch& b : (*in.cells)[c])
-                for (std::uint32_t k = b.range.first; k + 2 < b.range.first + b.range.count; k += 3) {
-                    const int chart = vertex_chart[(*in.indices)[k]];
-                    if (chart < 0 || bits[static_cast<size_t>(chart)] != with_bits) continue;
-                    out.triangles.insert(out.triangles.end(), &(*in.indices)[k], &(*in.indices)[k] + 3);
-                }
-            out.ranges[c][with_bits ? 2 : 0] = first;
-            out.ranges[c][with_bits ? 3 : 1] = static_cast<int>(out.triangles.size()) - first;
-        }
-    }
-}
-
 }  // namespace
 
 LightCache build_light_cache(const LightCacheInput& in) {
@@ -249,7 +219,6 @@ LightCache build_light_cache(const LightCacheInput& in) {
         out.cell_count += static_cast<long>(chart.cells.x) * chart.cells.y;
     }
     for (const std::uint32_t bits : out.edges) out.edge_cells += bits != 0u ? 1 : 0;
-    sort_triangles(in, charts, vertex_chart, out);
     return out;
 }
 

@@ -45,13 +45,7 @@ struct LightCache {
     std::vector<std::uint32_t> edges;  // per cell: bit i, image i of its room added per fragment
     // Per scene vertex: its place in the atlas, in cells; (-1, -1) where none.
     std::vector<glm::vec2> vertex_cells;
-    std::vector<bool> cached;  // per room
-    // The cached rooms' triangles as indices into the scene's vertices, in
-    // the scene's order, room after room: per room, first those of its
-    // charts without bits (drawn without the loops over bits), then those
-    // of its charts with some; ranges[room] = {first, count} of each.
-    std::vector<std::uint32_t> triangles;
-    std::vector<std::array<int, 4>> ranges;
+    std::vector<bool> cached;             // per room
     long cell_count = 0, edge_cells = 0;  // cells, and those with bits
 };
 

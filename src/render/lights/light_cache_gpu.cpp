@@ -24,23 +24,6 @@ gl::Texture upload_atlas(GLenum internal, int width, int height, GLenum format, 
     return t;
 }
 
-// The cached triangles' indices, with the scene's vertices and cells.
-void upload_triangles(const LightCache& made, const GpuScene& gpu, LightCacheGpu& cache) {
-    cache.triangles = gl::create_buffer();
-    cache.vao = gl::create_vertex_array();
-    const GLuint vao = cache.vao.get();
-    describe_scene_vertices(vao, gpu.vertices.get(), cache.triangles.get());
-    glVertexArrayVertexBuffer(vao, kLightCellBinding, gpu.light_cells.get(), 0, 2 * sizeof(float));
-    glEnableVertexArrayAttrib(vao, kLightCellAttribute);
-    glVertexArrayAttribFormat(vao, kLightCellAttribute, 2, GL_FLOAT, GL_FALSE, 0);
-    glVertexArrayAttribBinding(vao, kLightCellAttribute, kLightCellBinding);
-    glNamedBufferStorage(cache.triangles.get(),
-                         static_cast<GLsizeiptr>((made.triangles.size() + 1) * sizeof(std::uint32_t)), nullptr,
-                         GL_DYNAMIC_STORAGE_BIT);
-    glNamedBufferSubData(cache.triangles.get(), 0,
-                         static_cast<GLsizeiptr>(made.triangles.size() * sizeof(std::uint32_t)), made.triangles.data());
-}
-
 }  // namespace
 #endif
 
@@ -77,7 +60,6 @@ void ensure_light_cache(LightBuffers& buffers, const SceneData& scene, const Fra
     cache.map_size = map_size;
     cache.built = true;
     cache.cached = made.cached;
-    cache.ranges = made.ranges;
     cache.cells = made.cell_count;
     cache.edge_cells = made.edge_cells;
     cache.corners =
@@ -87,7 +69,6 @@ void ensure_light_cache(LightBuffers& buffers, const SceneData& scene, const Fra
     glNamedBufferSubData(scene.gpu.light_cells.get(), 0,
                          static_cast<GLsizeiptr>(made.vertex_cells.size() * sizeof(glm::vec2)),
                          made.vertex_cells.data());
-    upload_triangles(made, scene.gpu, cache);
 #endif
 }
 

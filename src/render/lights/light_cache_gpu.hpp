@@ -4,7 +4,6 @@
 // light images it was made from (LightBuffers::cache).
 #pragma once
 
-#include <array>
 #include <vector>
 
 #include "gl/handles.hpp"
@@ -13,14 +12,11 @@ namespace impossible::render {
 
 struct LightCacheGpu {
     bool built = false;
-    int map_size = -1;                       // the shadow maps' size it was made for (0: no prop shadows)
-    int frames_seen = 0;                     // frames prepared with these light images, the cache or not
-    gl::Texture corners;                     // RGBA16F, 2 x 2 texels a cell (kLightCacheUnit)
-    gl::Texture edges;                       // R32UI, a cell's images added per fragment (kLightEdgesUnit)
-    gl::Buffer triangles;                    // LightCache::triangles
-    gl::VertexArray vao;                     // the scene's vertices and their cells, with `triangles`
-    std::vector<bool> cached;                // per room
-    std::vector<std::array<int, 4>> ranges;  // per room: LightCache::ranges
+    int map_size = -1;         // the shadow maps' size it was made for (0: no prop shadows)
+    int frames_seen = 0;       // frames prepared with these light images, the cache or not
+    gl::Texture corners;       // RGBA16F, 2 x 2 texels a cell (kLightCacheUnit)
+    gl::Texture edges;         // R32UI, a cell's images added per fragment (kLightEdgesUnit)
+    std::vector<bool> cached;  // per room
     long cells = 0, edge_cells = 0;
 };
 

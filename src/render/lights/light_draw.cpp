@@ -34,9 +34,8 @@ bool draws_cached(const DrawContext& ctx, int room) {
     return ctx.lights.use_cache && c < cache.cached.size() && cache.cached[c];
 }
 
-unsigned cached_light_flags(const DrawContext& ctx, int room, bool only) {
+unsigned cached_light_flags(const DrawContext& ctx, int room) {
     const auto c = static_cast<size_t>(room);
-    if (only) return kLights | kLightsCached | kLightsCachedOnly | (ctx.lights.ubo ? kLightsUbo : 0u);
     return kLights | kLightsCached | (ctx.lights.ubo ? kLightsUbo : 0u) |
            (ctx.lights.plain_points[c] ? kLightsPlainPoints : 0u) |
            (ctx.lights.direct_blockers[c] ? kLightsDirectBlockers : 0u) |

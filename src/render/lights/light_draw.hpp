@@ -25,7 +25,7 @@ void set_room_lights(const DrawContext& ctx, const SceneProgram& program, int ro
 // (LightBuffers::use_cache, and the room is cached).
 bool draws_cached(const DrawContext& ctx, int room);
 // The flags of such a room's draws: its cells' cached sums and the images
-// their bits name, or (`only`) the sums alone.
-unsigned cached_light_flags(const DrawContext& ctx, int room, bool only);
+// their bits name.
+unsigned cached_light_flags(const DrawContext& ctx, int room);
 
 }  // namespace impossible::render

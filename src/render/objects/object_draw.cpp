@@ -307,33 +307,16 @@ void draw_shadow_parts(const DrawContext& ctx, const LevelView& view, const Scis
     draw_part(ctx, view, scissor, kind, count);
 }
 
-// A cell whose light is cached (render/lights/light_cache.hpp): its
-// triangles from the cache's list, those of charts without bits with the
-// cached sums alone, then the rest, which add the images their cells' bits
-// name. Every triangle of the cell, in the scene's order within each part:
-// no culling inside the cell (a cached room has few props).
+// A cell whose light is cached (render/lights/light_cache.hpp): one part,
+// whose fragments read their cells' sums and add only the images their
+// cells' bits name.
 void draw_cached(const DrawContext& ctx, const LevelView& view, const Scissor& scissor) {
     const int c = view.cell;
-    const LightCacheGpu& cache = ctx.lights.cache;
-    const std::array<int, 4>& range = cache.ranges[static_cast<size_t>(c)];
-    bool count_lights = true;
-    for (const bool only : {true, false}) {
-        const int first = range[only ? 0 : 2], count = range[only ? 1 : 3];
-        if (count == 0) continue;
-        const SceneProgram& program = cell_program(ctx, view, cached_light_flags(ctx, c, only));
-        set_eye_uniforms(ctx, view, program, {view.eyes[0].rect, view.eyes[1].rect});
-        set_cell_id(program, static_cast<unsigned>(c + 1), false);
-        set_room_lights(ctx, program, c, count_lights);
-        count_lights = false;
-        bind_draw(ctx, view, SceneDraw{Pass::Scene, view.level, &program, scissor});
-        ctx.state.vertex_array(cache.vao.get());
-        glDrawElementsInstanced(
-            GL_TRIANGLES, count, GL_UNSIGNED_INT,
-            reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * sizeof(std::uint32_t)),
-            instances_of(ctx));
-        ctx.scratch.stats.draw_calls += 1;
-        ctx.scratch.stats.triangles += static_cast<long>(count / 3) * instances_of(ctx);
-    }
+    const SceneProgram& cached = cell_program(ctx, view, cached_light_flags(ctx, c));
+    set_eye_uniforms(ctx, view, cached, {view.eyes[0].rect, view.eyes[1].rect});
+    set_cell_id(cached, static_cast<unsigned>(c + 1), false);
+    set_room_lights(ctx, cached, c, true);
+    draw_cell(ctx, view, {Pass::Scene, view.level, &cached, scissor});
     ctx.scratch.stats.cached_levels += 1;
 }
 

@@ -36,9 +36,8 @@ gl::Texture upload_texture(const scene::SceneTexture& t) {
     return texture;
 }
 
-}  // namespace
-
-void describe_scene_vertices(GLuint vao, GLuint vertices, GLuint indices) {
+// scene::Vertex from `vertices`, indices from `indices`.
+void describe_vertices(GLuint vao, GLuint vertices, GLuint indices) {
     glVertexArrayVertexBuffer(vao, 0, vertices, 0, sizeof(scene::Vertex));
     glVertexArrayElementBuffer(vao, indices);
     auto attribute = [vao](GLuint index, GLint size, std::size_t offset) {
@@ -53,8 +52,6 @@ void describe_scene_vertices(GLuint vao, GLuint vertices, GLuint indices) {
     attribute(4, 2, offsetof(scene::Vertex, uv));
     attribute(5, 1, offsetof(scene::Vertex, alpha));
 }
-
-namespace {
 
 // The slot attribute (kSlotAttribute) from `slots`, one float a vertex.
 void describe_slots(GLuint vao, GLuint slots) {
@@ -86,12 +83,12 @@ GpuScene upload_scene(const scene::Scene& scene) {
     // The vertex arrays first: WebGL types a buffer by its first binding, and
     // an index buffer must be bound as one before its data comes
     // (gl/webgl.hpp).
-    describe_scene_vertices(gpu.vao.get(), gpu.vertices.get(), gpu.indices.get());
-    describe_scene_vertices(gpu.face_vao.get(), gpu.vertices.get(), gpu.face_indices.get());
-    describe_scene_vertices(gpu.instance_vao.get(), gpu.vertices.get(), gpu.indices.get());
+    describe_vertices(gpu.vao.get(), gpu.vertices.get(), gpu.indices.get());
+    describe_vertices(gpu.face_vao.get(), gpu.vertices.get(), gpu.face_indices.get());
+    describe_vertices(gpu.instance_vao.get(), gpu.vertices.get(), gpu.indices.get());
     gpu.object_slots = gl::create_buffer();
     describe_slots(gpu.instance_vao.get(), gpu.object_slots.get());
-    describe_scene_vertices(gpu.instance_face_vao.get(), gpu.vertices.get(), gpu.face_indices.get());
+    describe_vertices(gpu.instance_face_vao.get(), gpu.vertices.get(), gpu.face_indices.get());
     describe_slots(gpu.instance_face_vao.get(), gpu.object_slots.get());
     // Zero-size buffers are valid GL but glNamedBufferStorage rejects size 0.
     glNamedBufferStorage(gpu.vertices.get(), static_cast<GLsizeiptr>(scene.vertices.size() * sizeof(scene::Vertex) + 1),

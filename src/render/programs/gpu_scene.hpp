@@ -38,10 +38,6 @@ struct GpuScene {
 inline constexpr unsigned kLightCellAttribute = 7;
 inline constexpr unsigned kLightCellBinding = 2;
 
-// Describes scene::Vertex from `vertices` (binding 0) in `vao`, with
-// `indices` as its element buffer.
-void describe_scene_vertices(GLuint vao, GLuint vertices, GLuint indices);
-
 // Uploads the vertices, indices and textures. Textures keep the sampler's
 // filters and wrap modes; a minification filter with mipmaps gets a full
 // chain made by glGenerateTextureMipmap.

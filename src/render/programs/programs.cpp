@@ -27,17 +27,13 @@ Result<void> ensure_variants(Programs& programs, StereoMode mode, const VariantN
         if ((flags & kLights) && !(flags & (kLightsUbo | kLightsAmbient)) && needs.lights_ubo) continue;
         if ((flags & kMaterials) && !needs.materials) continue;
         if ((flags & kLightsNaive) && (!(flags & kLights) || !needs.lights_naive)) continue;
-        if (flags & (kLightsCached | kLightsCachedOnly)) {
-            if (!(flags & kLightsCached)) continue;
+        if (flags & kLightsCached) {
             // The cache's variants: with or without the lookups, and
             // kLightsUbo, kLightsPlainPoints, kLightsDirectBlockers as the
             // room needs.
             constexpr unsigned kCacheBits =
                 kLights | kLightsCached | kLightsUbo | kLightsPlainPoints | kLightsNoShadows | kLightsDirectBlockers;
-            const bool only = (flags & kLightsCachedOnly) != 0u;
-            if (!needs.light_cache || !(flags & kLights) || (flags & ~(kCacheBits | kLightsCachedOnly)) != 0u) continue;
-            // The sum alone reads no image: only kLightsUbo goes with it.
-            if (only && (flags & (kLightsPlainPoints | kLightsNoShadows | kLightsDirectBlockers)) != 0u) continue;
+            if (!needs.light_cache || !(flags & kLights) || (flags & ~kCacheBits) != 0u) continue;
         } else if (flags & kLights && !(flags & kLightsAmbient)) {
             if ((needs.light_loops & (std::uint64_t{1} << light_loop_index(flags))) == 0u) continue;
         } else if (flags & kLightLoopBits) {

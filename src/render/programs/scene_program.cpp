@@ -51,7 +51,6 @@ struct SceneVariant {
     bool light_plain_points = false;     // LIGHTS_PLAIN_POINTS
     bool light_single_aperture = false;  // LIGHTS_SINGLE_APERTURE
     bool light_cached = false;           // LIGHTS_CACHED
-    bool light_cached_only = false;      // LIGHTS_CACHED_ONLY
 };
 
 std::string variant_defines(const SceneVariant& variant) {
@@ -71,7 +70,6 @@ std::string variant_defines(const SceneVariant& variant) {
     if (variant.lights && variant.light_plain_points) defines += "#define LIGHTS_PLAIN_POINTS\n";
     if (variant.lights && variant.light_single_aperture) defines += "#define LIGHTS_SINGLE_APERTURE\n";
     if (variant.lights && variant.light_cached) defines += "#define LIGHTS_CACHED\n";
-    if (variant.lights && variant.light_cached_only) defines += "#define LIGHTS_CACHED_ONLY\n";
     if (variant.lights && variant.light_ubo)
         defines += "#define LIGHT_UBO\n#define LIGHT_UBO_VEC4S " + std::to_string(kLightUboVec4s) + "\n";
     return defines;
@@ -95,9 +93,7 @@ void find_variant_uniforms(const SceneVariant& variant, gl::UniformLocations& u,
         // The ambient-only variant reads only the ambient; the naive one
         // no origin (only the portal tests read it, for their tolerance), nor
         // the variant without paths.
-        // The ambient-only and cached-only variants read no image.
-        const bool no_images = variant.light_ambient || variant.light_cached_only;
-        auto per_image = [&](const char* name) { return no_images ? u.optional(name) : u.required(name); };
+        auto per_image = [&](const char* name) { return variant.light_ambient ? u.optional(name) : u.required(name); };
         p.to_light_space = per_image("u_to_light_space");
         p.light_first = per_image("u_light_first");
         p.light_count =
@@ -111,8 +107,7 @@ void find_variant_uniforms(const SceneVariant& variant, gl::UniformLocations& u,
                                                                                      : per_image("u_light_origin");
         if (variant.light_cached) {
             glProgramUniform1i(p.program.get(), u.required("u_light_cache"), static_cast<GLint>(kLightCacheUnit));
-            if (!variant.light_cached_only)
-                glProgramUniform1i(p.program.get(), u.required("u_light_edges"), static_cast<GLint>(kLightEdgesUnit));
+            glProgramUniform1i(p.program.get(), u.required("u_light_edges"), static_cast<GLint>(kLightEdgesUnit));
         }
     }
 }
@@ -189,7 +184,6 @@ Result<SceneProgram> build_scene_variant(StereoMode mode, unsigned flags) {
     variant.light_plain_points = (flags & kLightsPlainPoints) != 0;
     variant.light_single_aperture = (flags & kLightsSingleAperture) != 0;
     variant.light_cached = (flags & kLightsCached) != 0;
-    variant.light_cached_only = (flags & kLightsCachedOnly) != 0;
     return link_scene_program(variant, defines);
 }
 

@@ -98,10 +98,7 @@ inline constexpr unsigned kLightLoopBits = kLightsNoDirect | kLightsNoPaths | kL
 // bits name added exactly. Only kLightsUbo, kLightsPlainPoints,
 // kLightsNoShadows and kLightsDirectBlockers go with it.
 inline constexpr unsigned kLightsCached = 8192u;
-// with kLightsCached: the cached sum alone, no loops over bits
-// (LIGHTS_CACHED_ONLY), for the triangles of charts without bits.
-inline constexpr unsigned kLightsCachedOnly = 16384u;
-inline constexpr unsigned kSceneVariantCount = 32768u;
+inline constexpr unsigned kSceneVariantCount = 16384u;
 // The loop, shadow and light-kind bits of `flags` as a number 0..63
 // (VariantNeeds::light_loops, 64 bits).
 inline constexpr unsigned light_loop_index(unsigned flags) { return (flags & kLightLoopBits) / kLightsNoDirect; }
