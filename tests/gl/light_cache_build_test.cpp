@@ -143,6 +143,21 @@ TEST(LightCacheBuild, TheCachedSumAndTheCellsImagesAreTheExactSum) {
     EXPECT_GT(checked, 100);
 }
 
+TEST(LightCacheBuild, ARoomOfManyPropsIsDrawnExactly) {
+    // 8 lights a room and 70 boxes in the hall: its 8 own lights alone
+    // have 8 x 71 shadows for its cells to be tested against, more than
+    // kLightCacheMaxTests. Without prop shadows, the same room is cached.
+    layout::Layout l = lamp_hall_with_8();
+    for (int k = 0; k < 70; ++k) {
+        layout::BoxProp box;
+        box.min = {-1.9 + 0.03 * k, 0.0, 1.7};
+        box.max = box.min + glm::dvec3(0.02, 0.1, 0.02);
+        l.rooms[0].props.emplace_back(box);
+    }
+    EXPECT_FALSE(build(l, 512).cache.cached[0]);
+    EXPECT_TRUE(build(l, 0).cache.cached[0]);
+}
+
 // Whether the segment from p to q meets the box [lo, hi].
 bool segment_meets_box(const glm::dvec3& p, const glm::dvec3& q, const glm::dvec3& lo, const glm::dvec3& hi) {
     double t0 = 0.0, t1 = 1.0;

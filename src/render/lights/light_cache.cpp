@@ -21,8 +21,16 @@ bool cacheable_lights(const LightCacheInput& in, size_t c) {
     if (room.images.size() < static_cast<size_t>(kLightCacheMinImages) ||
         room.images.size() > static_cast<size_t>(kLightCacheMaxImages))
         return false;
-    for (const lights::LightImage& image : room.images)
+    // What each cell is tested against: every image's blockers, and its
+    // legs' props' shadows where there are maps.
+    size_t tests = 0;
+    for (const lights::LightImage& image : room.images) {
         if (image.apertures.size() > 1 || (!image.apertures.empty() && !image.blockers.empty())) return false;
+        tests += image.blockers.size();
+        if (in.shadow_map_size > 0)
+            for (const int leg_room : image.rooms) tests += (*in.objects)[static_cast<size_t>(leg_room)].objects.size();
+    }
+    if (tests > static_cast<size_t>(kLightCacheMaxTests)) return false;
     for (const scene::DrawBatch& b : (*in.cells)[c])
         if (b.texture >= 0 || b.alpha_cutoff >= 0.0f) return false;
     return true;

@@ -55,18 +55,23 @@ struct LightCache {
 // kLightCacheMaxCells.
 inline constexpr double kLightCacheMinCell = 0.02;
 inline constexpr double kLightCacheMaxCell = 0.25;
-inline constexpr long kLightCacheMaxCells = 1L << 20;
+inline constexpr long kLightCacheMaxCells = 1L << 19;
 inline constexpr int kLightCacheAtlasWidth = 1024;  // cells
 inline constexpr int kLightCacheMaxImages = 32;     // a room's, for one 32-bit mask
 // A room of fewer images is drawn exactly, per fragment: on llvmpipe the
 // cache's read and its loops cost more than two or three images' terms
 // (bench/README.md, "Lights: the light cache").
 inline constexpr int kLightCacheMinImages = 4;
+// A room whose images have more blockers and prop shadows than this, all
+// together, is drawn exactly: every cell is tested against each (a bound on
+// the build's time, docs/bounded-work.md).
+inline constexpr int kLightCacheMaxTests = 512;
 
 // Which rooms can be cached, their charts and cells. A room is cached when
 // it has kLightCacheMinImages to kLightCacheMaxImages light images, whose
 // path images each pass one aperture and meet no blocker (its own lights may
-// meet blockers); no textured or cut-out batch; every triangle flat (its
+// meet blockers), at most kLightCacheMaxTests blockers and prop shadows in
+// all; no textured or cut-out batch; every triangle flat (its
 // vertices' normals its face's) and no vertex shared by two planes.
 LightCache build_light_cache(const LightCacheInput& in);
 
