@@ -188,12 +188,10 @@ void add_sweep_item(PlanBuilder& b, const layout::Layout& layout, const SweepIte
     } else if (kind == "lights") {
         b.plan.sessions.emplace_back(with_lights(b.plan.sessions[0].layout(), n));
         const int variant = static_cast<int>(b.plan.sessions.size()) - 1;
-        const bool naive = item.suffix == "naive";  // the same lights without the portal tests
-        // The same lights with each lit room in one part (no split by where
-        // its path images can light it; render/objects/object_draw.hpp).
-        const bool one_part = item.suffix == "one-part";
-        // The same lights drawn exactly every frame, without the light cache
-        // (render/lights/light_cache.hpp).
+        // The same lights without the portal tests; with each lit room in
+        // one part (not split by where its path images can light it,
+        // render/objects/object_draw.hpp); without the light cache.
+        const bool naive = item.suffix == "naive", one_part = item.suffix == "one-part";
         const bool no_cache = item.suffix == "no-cache";
         b.add(item.name, kind, [variant, naive, one_part, no_cache](BenchConfig& c) {
             c.layout_variant = variant;
