@@ -42,6 +42,25 @@ struct CrossingRig {
     }
 };
 
+// The layout's start, looking `pitch` degrees up, 160 x 96 per eye.
+inline render::FrameDesc start_frame(const layout::Layout& l, double pitch) {
+    render::FrameDesc f;
+    f.room = l.start.room;
+    f.head = {l.start.position, l.start.yaw_deg, pitch, 0.0};
+    f.eye_width = 160;
+    f.eye_height = 96;
+    return f;
+}
+
+// A view of a test: what it shows, the room, the head's position, yaw and
+// pitch (degrees).
+struct NamedView {
+    const char* what;
+    const char* room;
+    math::dvec3 position;
+    double yaw, pitch;
+};
+
 inline render::FrameDesc frame_at(const layout::Layout& l, const char* room, math::dvec3 position, double yaw,
                                   double pitch = 0.0) {
     render::FrameDesc f;

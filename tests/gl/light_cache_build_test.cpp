@@ -15,6 +15,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "common/segment_box.hpp"
 #include "gl_fixture.hpp"
 #include "lights/light_images.hpp"
 #include "links/portal_links.hpp"
@@ -158,24 +159,6 @@ TEST(LightCacheBuild, ARoomOfManyPropsIsDrawnExactly) {
     EXPECT_TRUE(build(l, 0).cache.cached[0]);
 }
 
-// Whether the segment from p to q meets the box [lo, hi].
-bool segment_meets_box(const glm::dvec3& p, const glm::dvec3& q, const glm::dvec3& lo, const glm::dvec3& hi) {
-    double t0 = 0.0, t1 = 1.0;
-    for (int i = 0; i < 3; ++i) {
-        const double d = q[i] - p[i];
-        if (std::abs(d) < 1e-15) {
-            if (p[i] < lo[i] || p[i] > hi[i]) return false;
-            continue;
-        }
-        double a = (lo[i] - p[i]) / d, z = (hi[i] - p[i]) / d;
-        if (a > z) std::swap(a, z);
-        t0 = std::max(t0, a);
-        t1 = std::min(t1, z);
-        if (t0 > t1) return false;
-    }
-    return true;
-}
-
 TEST(LightCacheBuild, ACellLitOrDarkForAnImageIsSoAtEveryPoint) {
     // Random squares on the hall's floor and walls, random points in them:
     // where cell_light says Lit, the point's segment to the image passes its
@@ -220,7 +203,7 @@ TEST(LightCacheBuild, ACellLitOrDarkForAnImageIsSoAtEveryPoint) {
                             if (!box) continue;
                             const glm::dvec3 pl(from_c * glm::dvec4(p, 1.0)),
                                 ll(from_c * glm::dvec4(image.position, 1.0));
-                            if (segment_meets_box(pl, ll, box->min, box->max)) reaches = false;
+                            if (testing::segment_meets_box(pl, ll, box->min, box->max)) reaches = false;
                         }
                     }
                     EXPECT_EQ(reaches, light == render::CellLight::Lit)

@@ -37,12 +37,7 @@ layout::Layout lamp_hall_with(int n) {
     return l;
 }
 
-struct View {
-    const char* what;
-    const char* room;
-    math::dvec3 position;
-    double yaw, pitch;
-};
+using View = testing::NamedView;
 
 const View kViews[] = {
     {"bench view", "hall", {0.2, 1.7, 1.0}, 32.0, -31.0},
@@ -115,11 +110,7 @@ TEST(LightCacheRender, EveryLitLayoutsSecondFrameKeepsItsIdsAndColour) {
             // Every stereo mode once; the others in clip-shift stereo.
             const int modes = more && name == std::string("tinted_window.json") ? 3 : 1;
             for (int mode = 0; mode < modes; ++mode) {
-                render::FrameDesc f;
-                f.room = rig.layout.start.room;
-                f.head = {rig.layout.start.position, rig.layout.start.yaw_deg, -20.0, 0.0};
-                f.eye_width = 160;
-                f.eye_height = 96;
+                render::FrameDesc f = testing::start_frame(rig.layout, -20.0);
                 f.shadows = true;
                 if (mode == 1) f.stereo = render::StereoMode::ViewportIndex;
                 if (mode == 2) f.stereo = render::StereoMode::TwoPass;

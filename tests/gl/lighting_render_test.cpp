@@ -160,12 +160,7 @@ void expect_lit_agree(const image::Image& raster, const image::Image& cpu, const
     EXPECT_GE(cmp.interior_psnr_db, 50.0) << what;
 }
 
-struct LitView {
-    const char* what;
-    const char* room;
-    math::dvec3 position;
-    double yaw, pitch;
-};
+using LitView = testing::NamedView;
 
 const LitView kLitViews[] = {
     {"the hall, lamp and spot", "hall", {-1.3, 1.6, 0.9}, -75.0, -15.0},
@@ -373,11 +368,7 @@ TEST(LightingRender, LightsMovingPropsVolumeRoomsAndMirrors) {
     for (const char* name : names) {
         LightingRig rig(lit_example(name, 1));
         ASSERT_TRUE(rig.renderer);
-        render::FrameDesc f;
-        f.room = rig.layout.start.room;
-        f.head = {rig.layout.start.position, rig.layout.start.yaw_deg, -15.0, 0.0};
-        f.eye_width = 160;
-        f.eye_height = 96;
+        render::FrameDesc f = testing::start_frame(rig.layout, -15.0);
         f.shadows = false;
         for (const double time : {0.0, 2.5}) {
             f.time = time;

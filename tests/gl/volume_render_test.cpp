@@ -47,12 +47,7 @@ const char* kVolumeLayout = R"({
   ]
 })";
 
-struct VolumeView {
-    const char* what;
-    const char* room;
-    math::dvec3 position;
-    double yaw, pitch;
-};
+using VolumeView = testing::NamedView;
 
 const VolumeView kVolumeViews[] = {
     {"head-on", "lab", {0.0, 1.6, 2.0}, 0.0, -10.0},

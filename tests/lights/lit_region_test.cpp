@@ -13,6 +13,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "common/segment_box.hpp"
 #include "lights/lights_test_layouts.hpp"
 #include "lights/lit_region.hpp"
 
@@ -118,24 +119,6 @@ TEST(LitRegion, ALightInFrontOfItsFirstApertureReachesNothing) {
     EXPECT_EQ(lit_region(image, l.rooms[0].min, l.rooms[0].max).kind, LitRegion::Kind::Everywhere);
 }
 
-// Whether the segment from a to b meets the box [lo, hi] (slab test).
-bool segment_meets_box(const dvec3& a, const dvec3& b, const dvec3& lo, const dvec3& hi) {
-    double t0 = 0.0, t1 = 1.0;
-    for (int k = 0; k < 3; ++k) {
-        const double d = b[k] - a[k];
-        if (std::abs(d) < 1e-300) {
-            if (a[k] < lo[k] || a[k] > hi[k]) return false;
-            continue;
-        }
-        double u = (lo[k] - a[k]) / d, v = (hi[k] - a[k]) / d;
-        if (u > v) std::swap(u, v);
-        t0 = std::max(t0, u);
-        t1 = std::min(t1, v);
-        if (t0 > t1) return false;
-    }
-    return true;
-}
-
 bool in_hull16(const std::array<dvec3, 16>& c, const dvec3& p) {
     // The hull of a box and the same box scaled about L' (t >= 1) is the
     // union of the boxes scaled by every t between: p is in it when p lies
@@ -170,7 +153,7 @@ TEST(ShadowRegion, EveryPointABoxShadowsLiesInItsHull) {
         ASSERT_TRUE(shadow_region(light, glm::dmat4(1.0), lo, hi, 20.0, 0.0, hull));
         for (int k = 0; k < 2000; ++k) {
             const dvec3 p(unit(rng) * 10 - 5, unit(rng) * 10 - 5, unit(rng) * 10 - 5);
-            if (!segment_meets_box(light, p, lo, hi)) continue;
+            if (!impossible::testing::segment_meets_box(light, p, lo, hi)) continue;
             ++shadowed;
             ASSERT_TRUE(in_hull16(hull, p)) << "trial " << trial;
         }
