@@ -159,6 +159,19 @@ TEST(LightCacheBuild, ARoomOfManyPropsIsDrawnExactly) {
     EXPECT_TRUE(build(l, 0).cache.cached[0]);
 }
 
+TEST(LightCacheBuild, AHugeRoomsCellsGrowToFitTheAtlas) {
+    // A hall of 1 km x 1 km: at the largest cell side its floor alone would
+    // need 16 million cells; they grow until the atlas holds at most
+    // kLightCacheMaxCells.
+    layout::Layout l = lamp_hall_with_8();
+    l.rooms[0].min = {-1000.0, 0.0, -500.0};
+    l.rooms[0].max = {0.6, 3.0, 500.0};
+    const Built b = build(l, 0);
+    ASSERT_TRUE(b.cache.cached[0]);
+    EXPECT_LE(b.cache.cell_count, render::kLightCacheMaxCells);
+    EXPECT_LE(static_cast<long>(b.cache.width) * b.cache.height, 2 * render::kLightCacheMaxCells);
+}
+
 TEST(LightCacheBuild, ACellLitOrDarkForAnImageIsSoAtEveryPoint) {
     // Random squares on the hall's floor and walls, random points in them:
     // where cell_light says Lit, the point's segment to the image passes its

@@ -216,6 +216,15 @@ LightCache build_light_cache(const LightCacheInput& in) {
     }
     size_charts(charts);
     pack_atlas(charts, out);
+    long total = 0;
+    for (const CacheChart& chart : charts) total += static_cast<long>(chart.cells.x) * chart.cells.y;
+    if (total > kLightCacheMaxCells || out.height > kLightCacheAtlasMaxHeight) {
+        // Too many charts to fit (each has at least 3 x 3 cells): no cache.
+        charts.clear();
+        out.cached.assign(rooms, false);
+        vertex_chart.assign(vertex_chart.size(), -1);
+        out.width = out.height = 1;
+    }
     out.corners.assign(4 * static_cast<size_t>(4 * out.width) * out.height, 0.0f);
     out.edges.assign(static_cast<size_t>(out.width) * out.height, 0u);
     for (size_t v = 0; v < vertex_chart.size(); ++v)

@@ -56,8 +56,9 @@ struct LightCache {
 inline constexpr double kLightCacheMinCell = 0.02;
 inline constexpr double kLightCacheMaxCell = 0.25;
 inline constexpr long kLightCacheMaxCells = 1L << 19;
-inline constexpr int kLightCacheAtlasWidth = 1024;  // cells
-inline constexpr int kLightCacheMaxImages = 32;     // a room's, for one 32-bit mask
+inline constexpr int kLightCacheAtlasWidth = 1024;      // cells
+inline constexpr int kLightCacheAtlasMaxHeight = 8192;  // cells: 16384 texels, GL 4.5's least largest texture
+inline constexpr int kLightCacheMaxImages = 32;         // a room's, for one 32-bit mask
 // A room of fewer images is drawn exactly, per fragment: on llvmpipe the
 // cache's read and its loops cost more than two or three images' terms
 // (bench/README.md, "Lights: the light cache").
