@@ -162,6 +162,7 @@ LightBuffers upload_light_images(const std::vector<lights::RoomLights>& rooms, c
     GLint block_bytes = 0;
     glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &block_bytes);
     out.ubo = fits(packed.images) && fits(packed.rects) && block_bytes >= 16 * kLightUboVec4s;
+    out.packed_images = packed.images;
     out.images = upload_floats(std::move(packed.images), out.ubo);
     out.rects = upload_floats(std::move(packed.rects), out.ubo);
     return out;

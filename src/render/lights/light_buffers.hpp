@@ -38,6 +38,7 @@ struct LightBuffers {
     std::vector<glm::dvec3> origins;        // per room: its cell origin
     int total = 0;                          // images of every room
     std::vector<lights::RoomLights> rooms;  // the images themselves (the shadow maps')
+    std::vector<float> packed_images;       // `images` as uploaded (the light cache's terms)
     // Per room, where its path images (after its direct ones) may light it
     // (lights::lit_region): a truncated pyramid each (none for an image that
     // lights nothing of it); nullopt where some path image may light all of

@@ -37,14 +37,13 @@ void ensure_light_cache(LightBuffers& buffers, const SceneData& scene, const Fra
     const int map_size = frame.shadows && frame.shadow_map_size > 0 ? frame.shadow_map_size : 0;
     ++cache.frames_seen;
     if (!frame.light_cache || cache.frames_seen < 2 || (cache.built && cache.map_size == map_size)) return;
-    const PackedLights packed = pack_light_images(buffers.rooms, *l.lit_layout, scene.cell_origins);
     LightCacheInput in{.vertices = &l.vertices,
                        .indices = &l.indices,
                        .cells = &scene.cells,
                        .objects = &scene.objects,
                        .origins = &scene.cell_origins,
                        .rooms = &buffers.rooms,
-                       .packed_images = &packed.images,
+                       .packed_images = &buffers.packed_images,
                        .first = buffers.first,
                        .excluded = {},
                        .bounds = {},
