@@ -148,7 +148,8 @@ void draw_stereo(const DrawContext& ctx) {
 void bind_light_cache(gl::StateCache& state, LightBuffers& buffers, const FrameDesc& frame,
                       const FrameObjects& objects) {
     const LightCacheGpu& cache = buffers.cache;
-    buffers.use_cache = cache.built && frame.light_cache && !frame.naive_lights && objects.instances.empty();
+    buffers.use_cache = cache.built && cache.map_size == cache_map_size(frame) && frame.light_cache &&
+                        !frame.naive_lights && objects.instances.empty();
     if (!buffers.use_cache) return;
     state.texture(kLightCacheUnit, cache.corners.get());
     state.texture(kLightEdgesUnit, cache.edges.get());

@@ -86,6 +86,27 @@ TEST(LightCacheRender, TheSecondFrameDrawsFromTheCacheWithTheFirstFramesIdsAndCl
     }
 }
 
+TEST(LightCacheRender, FramesThatAlternateShadowMapSizesDrawExactly) {
+    // A cache is made for one map size; frames that alternate sizes (bench's
+    // shadow-size sweep) draw exactly rather than remake it each frame, and
+    // two frames in a row of one size draw from a cache made for it.
+    CrossingRig rig(lamp_hall_with(8));
+    ASSERT_TRUE(rig.renderer);
+    render::FrameDesc f = testing::frame_at(rig.layout, "hall", {0.2, 1.7, 1.0}, 32.0, -31.0);
+    f.shadows = true;
+    int cached = 0;
+    for (int k = 0; k < 4; ++k) {
+        f.shadow_map_size = k % 2 == 0 ? 256 : 512;
+        render::FrameStats stats;
+        (void)rig.render(f, &stats);
+        cached += stats.cached_levels;
+    }
+    EXPECT_EQ(cached, 0);
+    render::FrameStats stats;
+    (void)rig.render(f, &stats);
+    EXPECT_GT(stats.cached_levels, 0);
+}
+
 TEST(LightCacheRender, EveryLitLayoutsSecondFrameKeepsItsIdsAndColour) {
     // Each lit example layout at its start, with its own lights and with 6
     // more under each room's ceiling (so that every room has images enough

@@ -27,6 +27,10 @@ gl::Texture upload_atlas(GLenum internal, int width, int height, GLenum format, 
 }  // namespace
 #endif
 
+int cache_map_size(const FrameDesc& frame) {
+    return frame.shadows && frame.shadow_map_size > 0 ? frame.shadow_map_size : 0;
+}
+
 void ensure_light_cache(LightBuffers& buffers, const SceneData& scene, const FrameDesc& frame) {
 #if defined(__EMSCRIPTEN__)
     (void)buffers, (void)scene, (void)frame;
@@ -34,7 +38,11 @@ void ensure_light_cache(LightBuffers& buffers, const SceneData& scene, const Fra
     const SceneLights& l = scene.lighting;
     if (!l.lit || buffers.depth < 0) return;
     LightCacheGpu& cache = buffers.cache;
-    const int map_size = frame.shadows && frame.shadow_map_size > 0 ? frame.shadow_map_size : 0;
+    const int map_size = cache_map_size(frame);
+    if (map_size != cache.seen_map_size) {
+        cache.seen_map_size = map_size;
+        cache.frames_seen = 0;
+    }
     ++cache.frames_seen;
     if (!frame.light_cache || cache.frames_seen < 2 || (cache.built && cache.map_size == map_size)) return;
     LightCacheInput in{.vertices = &l.vertices,
@@ -56,7 +64,7 @@ void ensure_light_cache(LightBuffers& buffers, const SceneData& scene, const Fra
     const LightCache made = build_light_cache(in);
     cache = LightCacheGpu{};
     cache.frames_seen = 2;
-    cache.map_size = map_size;
+    cache.seen_map_size = cache.map_size = map_size;
     cache.built = true;
     cache.cached = made.cached;
     cache.cells = made.cell_count;

@@ -13,7 +13,8 @@ namespace impossible::render {
 struct LightCacheGpu {
     bool built = false;
     int map_size = -1;         // the shadow maps' size it was made for (0: no prop shadows)
-    int frames_seen = 0;       // frames prepared with these light images, the cache or not
+    int frames_seen = 0;       // frames prepared in a row with these light images and map size, the cache or not
+    int seen_map_size = -1;    // those frames' map size
     gl::Texture corners;       // RGBA16F, 2 x 2 texels a cell (kLightCacheUnit)
     gl::Texture edges;         // R32UI, a cell's images added per fragment (kLightEdgesUnit)
     std::vector<bool> cached;  // per room

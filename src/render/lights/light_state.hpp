@@ -24,9 +24,13 @@ struct LightState {
 void ensure_lights(LightBuffers& buffers, const SceneData& scene, const FrameDesc& frame);
 
 // The light cache of `buffers` (light_cache_gpu.hpp), made under
-// FrameDesc::light_cache from the second frame prepared with them on, and
-// again when the frame's shadow map size differs from the one it was made
-// for. Never on the web build.
+// FrameDesc::light_cache from the second frame in a row prepared with them
+// and one shadow map size (cache_map_size; a frame of another size starts
+// the count again, so frames that alternate sizes draw exactly instead of
+// remaking it). Never on the web build.
 void ensure_light_cache(LightBuffers& buffers, const SceneData& scene, const FrameDesc& frame);
+
+// The shadow maps' size the frame's cache must be made for (0: no prop shadows).
+int cache_map_size(const FrameDesc& frame);
 
 }  // namespace impossible::render
