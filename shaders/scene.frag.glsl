@@ -39,11 +39,6 @@ void main() {
 #if defined(VOLUMES)
     clip_to_volumes();
 #endif
-#if defined(LIGHTS_CACHE_EDGES)
-    // The overlay keeps only its fragments in cells with per-fragment images
-    // (a whole block of them discarded ends the shader there).
-    
-#endif
     o_id = u_cell_id;
     if (u_unshaded) {
         o_color = vec4(v_color, 1.0);

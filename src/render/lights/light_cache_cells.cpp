@@ -11,19 +11,14 @@
 #include <glm/matrix.hpp>
 
 #include "lights/lit_region.hpp"
+#include "math/portal.hpp"
+#include "render/lights/shadow_regions.hpp"
 
 namespace impossible::render {
 namespace {
 
 // Off a plane by more than this (metres) counts as off it.
 constexpr double kSide = 1e-7;
-
-std::array<glm::dvec3, 4> rect_corners(const math::PortalRect& rect, const glm::dvec3& origin) {
-    const glm::dvec3 c = rect.center - origin;
-    const glm::dvec3 r = glm::cross(rect.up, rect.normal) * (0.5 * rect.width);
-    const glm::dvec3 u = rect.up * (0.5 * rect.height);
-    return {c - r - u, c + r - u, c + r + u, c - r + u};
-}
 
 // The planes of the convex hull of `p` (n · x + d <= 0 inside), by trying
 // every three of its points.
@@ -70,7 +65,9 @@ CellLight through_rect(const math::PortalRect& rect, const glm::dvec3& position,
     if (glm::dot(rect.normal, c - light) <= 0.0) return CellLight::Dark;
     std::array<glm::dvec4, 5> planes;  // n · p + d > 0 inside
     planes[4] = glm::dvec4(rect.normal, -glm::dot(rect.normal, c));
-    const std::array<glm::dvec3, 4> a = rect_corners(rect, origin);
+    math::dvec3 a[8];  // the rectangle's corners first, in order round it
+    math::box_corners(rect, a);
+    for (size_t k = 0; k < 4; ++k) a[k] -= origin;
     for (size_t k = 0; k < 4; ++k) {
         glm::dvec3 n = glm::normalize(glm::cross(a[k] - light, a[(k + 1) % 4] - light));
         if (glm::dot(n, c - light) < 0.0) n = -n;
@@ -148,7 +145,7 @@ ImageShadows image_shadows(const lights::LightImage& image, const std::vector<sc
         const glm::dmat4 to_c = glm::inverse(image.to_room[i]);
         for (const scene::CellObject& object : objects[static_cast<size_t>(image.rooms[i])].objects) {
             std::array<glm::dvec3, 16> hull;
-            if (!lights::shadow_region(image.position, to_c, object.lo, object.hi, reach, 8.0 / std::max(map_size, 1),
+            if (!lights::shadow_region(image.position, to_c, object.lo, object.hi, reach, shadow_grow_angle(map_size),
                                        hull)) {
                 out.anywhere = true;
                 return out;
@@ -163,7 +160,7 @@ ImageShadows image_shadows(const lights::LightImage& image, const std::vector<sc
                                         (k & 4) ? object.hi.z : object.lo.z);
                 far = std::max(far, glm::length(glm::dvec3(to_c * glm::dvec4(corner, 1.0)) - image.position));
             }
-            const double margin = 2.0 * (8.0 / std::max(map_size, 1) * far + 1e-4);
+            const double margin = 2.0 * (shadow_grow_angle(map_size) * far + 1e-4);
             h.from_c = glm::inverse(from_box);
             h.core_lo = object.lo + margin;
             h.core_hi = object.hi - margin;

@@ -67,8 +67,6 @@ void ensure_light_cache(LightBuffers& buffers, const SceneData& scene, const Fra
     cache.seen_map_size = cache.map_size = map_size;
     cache.built = true;
     cache.cached = made.cached;
-    cache.cells = made.cell_count;
-    cache.edge_cells = made.edge_cells;
     cache.corners =
         upload_atlas(GL_RGBA16F, 2 * made.width, 2 * made.height, GL_RGBA, GL_FLOAT, made.corners.data(), GL_LINEAR);
     cache.edges =

@@ -18,7 +18,6 @@ struct LightCacheGpu {
     gl::Texture corners;       // RGBA16F, 2 x 2 texels a cell (kLightCacheUnit)
     gl::Texture edges;         // R32UI, a cell's images added per fragment (kLightEdgesUnit)
     std::vector<bool> cached;  // per room
-    long cells = 0, edge_cells = 0;
 };
 
 }  // namespace impossible::render

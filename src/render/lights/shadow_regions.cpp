@@ -15,14 +15,11 @@ namespace impossible::render {
 namespace {
 
 // One occluder's hull into `out`; false where it may shadow anywhere. `to_c`
-// maps its box's own coordinates into C's. A lookup reads the nearest
-// texel, whose direction is within about a texel (2 / size radians at a
-// face's centre, less than twice that anywhere) of the point's: the box is
-// grown by four texels at its far side.
+// maps its box's own coordinates into C's.
 bool add_occluder(const glm::dvec3& light, const glm::dmat4& to_c, const glm::dvec3& lo, const glm::dvec3& hi,
                   double reach, int map_size, std::vector<std::array<glm::dvec3, 16>>& out) {
     std::array<glm::dvec3, 16> hull;
-    if (!lights::shadow_region(light, to_c, lo, hi, reach, 8.0 / std::max(map_size, 1), hull)) return false;
+    if (!lights::shadow_region(light, to_c, lo, hi, reach, shadow_grow_angle(map_size), hull)) return false;
     out.push_back(hull);
     return true;
 }

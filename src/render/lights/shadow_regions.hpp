@@ -19,6 +19,12 @@
 
 namespace impossible::render {
 
+// How far (radians) an occluder's box is grown for maps of `map_size`
+// texels a side: a lookup reads the nearest texel, whose direction is
+// within about a texel (2 / size radians at a face's centre, less than
+// twice that anywhere) of the point's, so four texels at its far side.
+inline double shadow_grow_angle(int map_size) { return 8.0 / (map_size > 1 ? map_size : 1); }
+
 // nullopt where some image may shadow anywhere (a light within an
 // occluder's bounds); an empty list where no image of the room has a map.
 using RoomShadowRegions = std::optional<std::vector<std::array<glm::dvec3, 16>>>;
